@@ -1,0 +1,86 @@
+#include "core/field/vector_field.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+void validate(const Box& bounds, const glm::ivec3& dims) {
+  for (int a = 0; a < 3; ++a) {
+    if (dims[a] <= 0)
+      throw Error(concat("VectorField: dimension ", "xyz"[a], " is ", dims[a],
+                         "; expected a positive point count"));
+  }
+  const double points = double(dims.x) * double(dims.y) * double(dims.z);
+  if (points > double(VectorField::kMaxPoints))
+    throw Error(concat("VectorField: ", dims.x, "x", dims.y, "x", dims.z, " = ", points,
+                       " points exceeds the limit of ", VectorField::kMaxPoints));
+  for (int a = 0; a < 3; ++a) {
+    const float extent = bounds.max[a] - bounds.min[a];
+    if (!std::isfinite(bounds.min[a]) || !std::isfinite(bounds.max[a]))
+      throw Error(concat("VectorField: bounds along ", "xyz"[a], " are not finite"));
+    if (dims[a] > 1 && !(extent > 0.0f))
+      throw Error(concat("VectorField: bounds along ", "xyz"[a], " span ", extent,
+                         " m for ", dims[a], " points; expected a positive extent"));
+  }
+}
+
+}  // namespace
+
+VectorField::VectorField(const Box& bounds, const glm::ivec3& dims)
+    : VectorField(bounds, dims, {}) {}
+
+VectorField::VectorField(const Box& bounds, const glm::ivec3& dims, std::vector<glm::vec3> values)
+    : bounds_(bounds), dims_(dims), values_(std::move(values)) {
+  validate(bounds, dims);
+  const std::size_t count = std::size_t(dims.x) * dims.y * dims.z;
+  if (values_.empty()) values_.assign(count, glm::vec3(0.0f));
+  if (values_.size() != count)
+    throw Error(concat("VectorField: ", values_.size(), " values for ", count, " grid points"));
+  for (int a = 0; a < 3; ++a)
+    indexScale_[a] = dims[a] > 1 ? float(dims[a] - 1) / (bounds.max[a] - bounds.min[a]) : 0.0f;
+}
+
+glm::vec3 VectorField::pointPosition(int i, int j, int k) const {
+  return bounds_.min + spacing() * glm::vec3(i, j, k);
+}
+
+glm::vec3 VectorField::spacing() const {
+  glm::vec3 s(0.0f);
+  for (int a = 0; a < 3; ++a)
+    if (dims_[a] > 1) s[a] = (bounds_.max[a] - bounds_.min[a]) / float(dims_[a] - 1);
+  return s;
+}
+
+glm::vec3 VectorField::sample(const glm::vec3& p) const {
+  // Mirrors fieldSample() in shaders/field_sample.glsl operation by operation.
+  const glm::vec3 last = glm::vec3(dims_ - 1);
+  const glm::vec3 u = glm::clamp((p - bounds_.min) * indexScale_, glm::vec3(0.0f), last);
+  const glm::ivec3 i0 = glm::min(glm::ivec3(glm::floor(u)), glm::max(dims_ - 2, glm::ivec3(0)));
+  const glm::ivec3 i1 = glm::min(i0 + 1, dims_ - 1);
+  const glm::vec3 f = u - glm::vec3(i0);
+
+  const glm::vec3 c000 = at(i0.x, i0.y, i0.z), c100 = at(i1.x, i0.y, i0.z);
+  const glm::vec3 c010 = at(i0.x, i1.y, i0.z), c110 = at(i1.x, i1.y, i0.z);
+  const glm::vec3 c001 = at(i0.x, i0.y, i1.z), c101 = at(i1.x, i0.y, i1.z);
+  const glm::vec3 c011 = at(i0.x, i1.y, i1.z), c111 = at(i1.x, i1.y, i1.z);
+
+  const glm::vec3 c00 = c000 + (c100 - c000) * f.x;
+  const glm::vec3 c10 = c010 + (c110 - c010) * f.x;
+  const glm::vec3 c01 = c001 + (c101 - c001) * f.x;
+  const glm::vec3 c11 = c011 + (c111 - c011) * f.x;
+  const glm::vec3 c0 = c00 + (c10 - c00) * f.y;
+  const glm::vec3 c1 = c01 + (c11 - c01) * f.y;
+  return c0 + (c1 - c0) * f.z;
+}
+
+float VectorField::maxMagnitude() const {
+  float m = 0.0f;
+  for (const glm::vec3& v : values_) m = std::max(m, glm::length(v));
+  return m;
+}
+
+}  // namespace sandstorm

@@ -1,0 +1,75 @@
+// VectorField: a dense 3D grid of vectors, the form every field takes before it
+// reaches the GPU (where it becomes a 3D texture).
+//
+// Layout, as in VTK image data and OpenGL 3D textures:
+//   - values live at grid points; point (i, j, k) sits at
+//       bounds.min + (bounds.max - bounds.min) * (i, j, k) / (dims - 1);
+//   - values are stored x-fastest: index = i + dims.x * (j + dims.y * k).
+// A dimension of 1 makes the field constant along that axis.
+//
+// Sampling is trilinear between grid points and clamps to the bounds (a point
+// outside takes the value at the nearest boundary point). sample() performs
+// exactly the operations of shaders/field_sample.glsl, in the same order, so the
+// CPU reference simulator and the GPU agree to the last bit where the hardware
+// rounds as IEEE does.
+#pragma once
+
+#include <cstddef>
+#include <span>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/field/box.h"
+
+namespace sandstorm {
+
+class VectorField {
+ public:
+  // The largest grid accepted, in points (4 GiB of vec3 at 12 bytes each would
+  // be far beyond any GPU 3D texture limit anyway).
+  static constexpr std::size_t kMaxPoints = std::size_t{1} << 28;
+
+  VectorField() = default;
+  // Throws Error when dims are not positive, the point count exceeds kMaxPoints,
+  // the bounds are empty along an axis with more than one point, or the value
+  // count differs from the point count.
+  VectorField(const Box& bounds, const glm::ivec3& dims);
+  VectorField(const Box& bounds, const glm::ivec3& dims, std::vector<glm::vec3> values);
+
+  const Box& bounds() const { return bounds_; }
+  const glm::ivec3& dims() const { return dims_; }
+  std::size_t pointCount() const { return values_.size(); }
+  bool empty() const { return values_.empty(); }
+
+  std::size_t index(int i, int j, int k) const {
+    return static_cast<std::size_t>(i) +
+           static_cast<std::size_t>(dims_.x) *
+               (static_cast<std::size_t>(j) + static_cast<std::size_t>(dims_.y) * k);
+  }
+  const glm::vec3& at(int i, int j, int k) const { return values_[index(i, j, k)]; }
+  glm::vec3& at(int i, int j, int k) { return values_[index(i, j, k)]; }
+  std::span<const glm::vec3> values() const { return values_; }
+  std::span<glm::vec3> values() { return values_; }
+
+  // World position of grid point (i, j, k).
+  glm::vec3 pointPosition(int i, int j, int k) const;
+  // Grid spacing per axis (0 along an axis of one point).
+  glm::vec3 spacing() const;
+  // (dims - 1) / extent per axis: multiplies (p - min) into index space. The GPU
+  // gets this very value as a uniform, so both sides compute the same indices.
+  glm::vec3 indexScale() const { return indexScale_; }
+
+  glm::vec3 sample(const glm::vec3& p) const;
+
+  // The largest vector length, for colour scales and summaries.
+  float maxMagnitude() const;
+
+ private:
+  Box bounds_;
+  glm::ivec3 dims_{0};
+  glm::vec3 indexScale_{0.0f};
+  std::vector<glm::vec3> values_;
+};
+
+}  // namespace sandstorm

@@ -1,0 +1,347 @@
+#include "core/sim/attribute_table.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <sstream>
+
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+// Accessors that reach one member of the state (or of emitter i).
+template <class T>
+using Ref = std::function<T&(ParticleState&, int)>;
+
+template <class T>
+AttributeInfo entry(std::string key, AttributeType type, float min, float max, std::string unit,
+                    std::string description, Ref<T> ref) {
+  AttributeInfo info;
+  info.key = std::move(key);
+  info.type = type;
+  info.min = min;
+  info.max = max;
+  info.unit = std::move(unit);
+  info.description = std::move(description);
+  info.get = [ref](const ParticleState& s, int e) {
+    return AttributeValue(ref(const_cast<ParticleState&>(s), e));
+  };
+  info.set = [ref](ParticleState& s, int e, const AttributeValue& v) { ref(s, e) = std::get<T>(v); };
+  info.defaultValue = info.get(ParticleState{}, 0);
+  return info;
+}
+
+// Enums are stored as C++ enums and exchanged as choice names.
+template <class E>
+AttributeInfo enumEntry(std::string key, std::vector<std::string> choices, std::string description,
+                        Ref<E> ref) {
+  AttributeInfo info;
+  info.key = std::move(key);
+  info.type = AttributeType::Enum;
+  info.description = std::move(description);
+  info.choices = choices;
+  info.get = [ref, choices](const ParticleState& s, int e) {
+    return AttributeValue(choices.at(std::size_t(ref(const_cast<ParticleState&>(s), e))));
+  };
+  info.set = [ref, choices](ParticleState& s, int e, const AttributeValue& v) {
+    const auto it = std::find(choices.begin(), choices.end(), std::get<std::string>(v));
+    ref(s, e) = E(it - choices.begin());
+  };
+  info.defaultValue = info.get(ParticleState{}, 0);
+  return info;
+}
+
+#define SIM(member) Ref<decltype(SimSettings::member)>([](ParticleState& s, int) -> auto& { return s.sim.member; })
+#define RENDER(member) \
+  Ref<decltype(RenderSettings::member)>([](ParticleState& s, int) -> auto& { return s.render.member; })
+#define EMITTER(member) \
+  Ref<decltype(Emitter::member)>([](ParticleState& s, int e) -> auto& { return s.emitters[std::size_t(e)].member; })
+
+constexpr float kBig = 1e6f;
+
+std::vector<AttributeInfo> makeEntries() {
+  using T = AttributeType;
+  std::vector<AttributeInfo> v;
+  // The system.
+  v.push_back(entry("sim.maximum", T::Int, 0, 1e8f, "particles",
+                    "Soft limit on live particles; the buffer capacity is the hard one", SIM(maximum)));
+  v.push_back(enumEntry("sim.motion", {"tracer", "force", "drag"},
+                        "How the field moves particles: as velocity, acceleration, or drag target",
+                        SIM(motion)));
+  v.push_back(enumEntry("sim.integrator", {"euler", "rk2", "rk4"}, "Time integration scheme",
+                        SIM(integrator)));
+  v.push_back(enumEntry("sim.boundary", {"kill", "clamp", "wrap"},
+                        "What happens to particles leaving the field's bounds", SIM(boundary)));
+  v.push_back(entry("sim.field_strength", T::Float, -100, 100, "x", "Multiplies the field",
+                    SIM(fieldStrength)));
+  v.push_back(entry("sim.time_scale", T::Float, 0, 10, "x",
+                    "Simulated seconds per wall-clock second", SIM(timeScale)));
+  v.push_back(entry("sim.drag_time", T::Float, 1e-3f, 100, "s",
+                    "Response time tau of the drag model (dust: ~0.05 s)", SIM(dragTime)));
+  v.push_back(entry("sim.gravity", T::Vec3, -100, 100, "m/s^2",
+                    "Gravity for the force and drag models", SIM(gravity)));
+  v.push_back(entry("sim.ground_collision", T::Bool, 0, 1, "",
+                    "Particles bounce off the ground or terrain", SIM(groundCollision)));
+  v.push_back(entry("sim.restitution", T::Float, 0, 1, "",
+                    "Fraction of normal speed kept when bouncing off the ground", SIM(restitution)));
+  v.push_back(entry("sim.emitting", T::Bool, 0, 1, "", "Start/stop emission (existing particles live on)",
+                    SIM(emitting)));
+  v.push_back(entry("sim.paused", T::Bool, 0, 1, "", "Pause: time stands still", SIM(paused)));
+  // How particles look.
+  v.push_back(enumEntry("render.mode", {"points", "billboards"},
+                        "Draw particles as points or lit spherical billboards", RENDER(mode)));
+  v.push_back(entry("render.size", T::Float, 1e-4f, 10, "m", "Particle diameter", RENDER(size)));
+  v.push_back(entry("render.color_birth", T::Vec3, 0, 1, "rgb", "Colour at birth", RENDER(colorBirth)));
+  v.push_back(entry("render.color_death", T::Vec3, 0, 1, "rgb", "Colour at the end of life",
+                    RENDER(colorDeath)));
+  v.push_back(entry("render.opacity_birth", T::Float, 0, 1, "", "Opacity at birth", RENDER(opacityBirth)));
+  v.push_back(entry("render.opacity_death", T::Float, 0, 1, "", "Opacity at the end of life",
+                    RENDER(opacityDeath)));
+  v.push_back(entry("render.light_direction", T::Vec3, -1, 1, "",
+                    "Direction towards the light, room space", RENDER(lightDirection)));
+  v.push_back(entry("render.ambient", T::Float, 0, 1, "", "Ambient share of particle lighting",
+                    RENDER(ambient)));
+  v.push_back(entry("render.softness", T::Float, 0, 10, "m",
+                    "Particles fade out within this distance in front of scene geometry",
+                    RENDER(softness)));
+  // Emitters.
+  v.push_back(enumEntry("emitter.*.shape", {"box", "sphere", "disc", "point"}, "Emission area shape",
+                        EMITTER(shape)));
+  v.push_back(entry("emitter.*.position", T::Vec3, -kBig, kBig, "m", "Centre of the emission area",
+                    EMITTER(position)));
+  v.push_back(entry("emitter.*.width", T::Float, 0, kBig, "m", "Box emission area along x",
+                    EMITTER(width)));
+  v.push_back(entry("emitter.*.depth", T::Float, 0, kBig, "m", "Box emission area along y",
+                    EMITTER(depth)));
+  v.push_back(entry("emitter.*.height", T::Float, 0, kBig, "m", "Box emission area along z",
+                    EMITTER(height)));
+  v.push_back(entry("emitter.*.radius", T::Float, 0, kBig, "m", "Sphere or disc radius",
+                    EMITTER(radius)));
+  v.push_back(entry("emitter.*.rate", T::Float, 0, 1e8f, "particles/s",
+                    "Mean emission rate (Reeves)", EMITTER(rate)));
+  v.push_back(entry("emitter.*.rate_variance", T::Float, 0, 1e8f, "particles/s",
+                    "Emission rate varies uniformly by +- this much (Reeves)", EMITTER(rateVariance)));
+  v.push_back(entry("emitter.*.lifetime", T::Float, 1e-3f, 1e4f, "s", "Mean particle lifetime",
+                    EMITTER(lifetime)));
+  v.push_back(entry("emitter.*.lifetime_variance", T::Float, 0, 1e4f, "s",
+                    "Lifetime varies uniformly by +- this much", EMITTER(lifetimeVariance)));
+  v.push_back(entry("emitter.*.velocity", T::Vec3, -kBig, kBig, "m/s", "Initial velocity",
+                    EMITTER(velocity)));
+  v.push_back(entry("emitter.*.spread", T::Float, 0, kBig, "m/s",
+                    "Radius of the random ball added to the initial velocity", EMITTER(spread)));
+  v.push_back(entry("emitter.*.enabled", T::Bool, 0, 1, "", "Emitter on/off", EMITTER(enabled)));
+  return v;
+}
+
+#undef SIM
+#undef RENDER
+#undef EMITTER
+
+struct Alias {
+  std::string_view name, target;
+};
+constexpr Alias kAliases[] = {
+    {"Size", "render.size"},          {"Lifetime", "emitter.0.lifetime"},
+    {"AreaWidth", "emitter.0.width"}, {"AreaDepth", "emitter.0.depth"},
+    {"Maximum", "sim.maximum"},       {"Position", "emitter.0.position"},
+};
+
+const char* typeName(AttributeType t) {
+  switch (t) {
+    case AttributeType::Bool: return "a boolean (true/false)";
+    case AttributeType::Int: return "an integer";
+    case AttributeType::Float: return "a number";
+    case AttributeType::Vec3: return "three numbers (x y z)";
+    case AttributeType::Enum: return "one of the listed choices";
+  }
+  return "?";
+}
+
+bool parseFloat(std::string_view s, float& out) {
+  while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
+  while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
+  if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
+  return ec == std::errc() && end == s.data() + s.size() && std::isfinite(out);
+}
+
+std::string joined(const std::vector<std::string>& items) {
+  std::string s;
+  for (const auto& i : items) s += (s.empty() ? "" : ", ") + i;
+  return s;
+}
+
+}  // namespace
+
+const AttributeTable& AttributeTable::instance() {
+  static const AttributeTable table;
+  return table;
+}
+
+AttributeTable::AttributeTable() : entries_(makeEntries()) {}
+
+std::string AttributeTable::canonical(std::string_view key) const {
+  for (const Alias& a : kAliases)
+    if (a.name == key) return std::string(a.target);
+  return std::string(key);
+}
+
+const AttributeInfo& AttributeTable::lookup(std::string_view rawKey, int* emitter) const {
+  const std::string key = canonical(rawKey);
+  std::string pattern = key;
+  int index = 0;
+  if (key.starts_with("emitter.")) {
+    const std::size_t dot = key.find('.', 8);
+    const std::string_view digits = std::string_view(key).substr(8, dot - 8);
+    const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
+    if (dot == std::string::npos || ec != std::errc() || end != digits.data() + digits.size() ||
+        index < 0 || index >= ParticleState::kMaxEmitters)
+      throw Error(concat("attribute '", rawKey, "': expected emitter.N.name with N in 0..",
+                         ParticleState::kMaxEmitters - 1));
+    pattern = "emitter.*." + key.substr(dot + 1);
+  }
+  for (const AttributeInfo& info : entries_) {
+    if (info.key == pattern) {
+      if (emitter) *emitter = index;
+      return info;
+    }
+  }
+  // Suggest keys that share the section, so a typo is easy to fix.
+  std::vector<std::string> close;
+  const std::string section = pattern.substr(0, pattern.rfind('.') + 1);
+  for (const AttributeInfo& info : entries_)
+    if (!section.empty() && info.key.starts_with(section)) close.push_back(info.key);
+  throw Error(concat("unknown attribute '", rawKey, "'",
+                     close.empty() ? std::string("") : "; known in this section: " + joined(close)));
+}
+
+AttributeValue AttributeTable::parse(std::string_view key, std::string_view text) const {
+  const AttributeInfo& info = lookup(key);
+  const auto fail = [&]() -> Error {
+    return Error(concat("attribute '", key, "': cannot read '", text, "' as ", typeName(info.type),
+                        info.type == AttributeType::Enum ? " (" + joined(info.choices) + ")" : ""));
+  };
+  switch (info.type) {
+    case AttributeType::Bool:
+      if (text == "true" || text == "1" || text == "on") return true;
+      if (text == "false" || text == "0" || text == "off") return false;
+      throw fail();
+    case AttributeType::Int: {
+      float f;
+      if (!parseFloat(text, f) || f != std::floor(f)) throw fail();
+      return int(std::clamp(f, -2e9f, 2e9f));
+    }
+    case AttributeType::Float: {
+      float f;
+      if (!parseFloat(text, f)) throw fail();
+      return f;
+    }
+    case AttributeType::Vec3: {
+      std::string s(text);
+      std::replace(s.begin(), s.end(), ',', ' ');
+      std::istringstream in(s);
+      std::string part[4];
+      glm::vec3 v;
+      in >> part[0] >> part[1] >> part[2] >> part[3];
+      if (!part[3].empty()) throw fail();
+      for (int i = 0; i < 3; ++i)
+        if (!parseFloat(part[i], v[i])) throw fail();
+      return v;
+    }
+    case AttributeType::Enum:
+      if (std::find(info.choices.begin(), info.choices.end(), text) == info.choices.end()) throw fail();
+      return std::string(text);
+  }
+  throw fail();
+}
+
+AttributeResult AttributeTable::validate(std::string_view key, const AttributeValue& value) const {
+  const AttributeInfo& info = lookup(key);
+  AttributeValue v = value;
+  // Accept numbers across int/float, as configs and menus mix them.
+  if (info.type == AttributeType::Float && std::holds_alternative<int>(v)) v = float(std::get<int>(v));
+  if (info.type == AttributeType::Int && std::holds_alternative<float>(v)) {
+    const float f = std::get<float>(v);
+    if (f != std::floor(f)) throw Error(concat("attribute '", key, "': expected an integer, got ", f));
+    v = int(std::clamp(f, -2e9f, 2e9f));
+  }
+  const std::size_t expected = [&] {
+    switch (info.type) {
+      case AttributeType::Bool: return std::size_t{0};
+      case AttributeType::Int: return std::size_t{1};
+      case AttributeType::Float: return std::size_t{2};
+      case AttributeType::Vec3: return std::size_t{3};
+      case AttributeType::Enum: return std::size_t{4};
+    }
+    return std::size_t{0};
+  }();
+  if (v.index() != expected)
+    throw Error(concat("attribute '", key, "': expected ", typeName(info.type), ", got ", toString(value)));
+
+  AttributeResult result{v, {}};
+  const auto clampReport = [&](float x) {
+    if (!std::isfinite(x)) throw Error(concat("attribute '", key, "': value is not finite"));
+    return std::clamp(x, info.min, info.max);
+  };
+  switch (info.type) {
+    case AttributeType::Int: {
+      const int x = std::get<int>(v);
+      result.applied = int(clampReport(float(x)));
+      break;
+    }
+    case AttributeType::Float: result.applied = clampReport(std::get<float>(v)); break;
+    case AttributeType::Vec3: {
+      glm::vec3 x = std::get<glm::vec3>(v);
+      for (int i = 0; i < 3; ++i) x[i] = clampReport(x[i]);
+      result.applied = x;
+      break;
+    }
+    case AttributeType::Enum:
+      if (std::find(info.choices.begin(), info.choices.end(), std::get<std::string>(v)) ==
+          info.choices.end())
+        throw Error(concat("attribute '", key, "': '", std::get<std::string>(v),
+                           "' is not one of: ", joined(info.choices)));
+      break;
+    case AttributeType::Bool: break;
+  }
+  if (toString(result.applied) != toString(v))
+    result.warning = concat("attribute '", key, "': ", toString(v), " is outside [", info.min, ", ",
+                            info.max, "] ", info.unit, "; clamped to ", toString(result.applied));
+  return result;
+}
+
+AttributeResult AttributeTable::set(ParticleState& state, std::string_view key,
+                                    const AttributeValue& value) const {
+  int emitter = 0;
+  const AttributeInfo& info = lookup(key, &emitter);
+  if (info.perEmitter() && emitter >= int(state.emitters.size()))
+    throw Error(concat("attribute '", key, "': there is no emitter ", emitter, " (there are ",
+                       state.emitters.size(), ")"));
+  AttributeResult result = validate(key, value);
+  info.set(state, emitter, result.applied);
+  return result;
+}
+
+AttributeValue AttributeTable::get(const ParticleState& state, std::string_view key) const {
+  int emitter = 0;
+  const AttributeInfo& info = lookup(key, &emitter);
+  if (info.perEmitter() && emitter >= int(state.emitters.size()))
+    throw Error(concat("attribute '", key, "': there is no emitter ", emitter));
+  return info.get(state, emitter);
+}
+
+std::string toString(const AttributeValue& value) {
+  std::ostringstream os;
+  std::visit(
+      [&](const auto& x) {
+        using X = std::decay_t<decltype(x)>;
+        if constexpr (std::is_same_v<X, bool>) os << (x ? "true" : "false");
+        else if constexpr (std::is_same_v<X, glm::vec3>) os << x.x << ' ' << x.y << ' ' << x.z;
+        else os << x;
+      },
+      value);
+  return os.str();
+}
+
+}  // namespace sandstorm

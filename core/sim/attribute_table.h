@@ -1,0 +1,91 @@
+// AttributeTable: the table of dynamic attributes (thesis section 5.4, Table 5.1).
+//
+// Every value of ParticleState that may change at run time has one entry here,
+// with a type, a range, a unit, a default and a one-line description. The menu,
+// the config file, the command line (--set key=value), recorded sessions and
+// C++ callers all change the state through this table, so they share one set of
+// names, one validation and one set of messages.
+//
+// Keys are dotted: "sim.maximum", "render.size", "emitter.0.rate". The thesis's
+// names are accepted as aliases of the first emitter and the system:
+// Size, Lifetime, AreaWidth, AreaDepth, Maximum, Position.
+//
+// Out-of-range numbers are clamped, and the clamp is reported in the result's
+// message; wrong types, unknown keys and unknown enum choices are refused with
+// an Error that names the key and what was expected. The table is immutable and
+// safe to share between threads.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <variant>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/sim/particle_state.h"
+
+namespace sandstorm {
+
+enum class AttributeType { Bool, Int, Float, Vec3, Enum };
+
+// Enum values travel as their choice names ("rk4"), so they print and parse as written.
+using AttributeValue = std::variant<bool, int, float, glm::vec3, std::string>;
+
+struct AttributeInfo {
+  std::string key;  // "render.size"; emitter entries use "emitter.*.rate"
+  AttributeType type;
+  float min = 0.0f;  // Int, Float and each Vec3 component
+  float max = 0.0f;
+  std::string unit;
+  AttributeValue defaultValue;
+  std::string description;
+  std::vector<std::string> choices;  // Enum only
+  std::function<AttributeValue(const ParticleState&, int emitter)> get;
+  std::function<void(ParticleState&, int emitter, const AttributeValue&)> set;
+
+  bool perEmitter() const { return key.starts_with("emitter.*."); }
+};
+
+// What set() did: the value it stored and, if it had to clamp, a message saying so.
+struct AttributeResult {
+  AttributeValue applied;
+  std::string warning;  // empty unless the value was clamped
+};
+
+class AttributeTable {
+ public:
+  static const AttributeTable& instance();
+
+  std::span<const AttributeInfo> entries() const { return entries_; }
+
+  // The entry for a key ("emitter.2.rate" finds "emitter.*.rate" and sets
+  // *emitter to 2); aliases resolve too. Throws Error for unknown keys, listing
+  // close matches.
+  const AttributeInfo& lookup(std::string_view key, int* emitter = nullptr) const;
+
+  // Converts text ("0.5", "true", "1 2 3", "rk4") to the entry's type. Throws
+  // Error naming the key and the expected form.
+  AttributeValue parse(std::string_view key, std::string_view text) const;
+
+  // Checks and clamps a value against the entry; does not touch any state.
+  AttributeResult validate(std::string_view key, const AttributeValue& value) const;
+
+  // validate(), then store. Throws for an emitter index that does not exist.
+  AttributeResult set(ParticleState& state, std::string_view key, const AttributeValue& value) const;
+  AttributeValue get(const ParticleState& state, std::string_view key) const;
+
+  // Canonical key: aliases map to their target ("Size" -> "render.size").
+  std::string canonical(std::string_view key) const;
+
+ private:
+  AttributeTable();
+  std::vector<AttributeInfo> entries_;
+};
+
+std::string toString(const AttributeValue& value);
+
+}  // namespace sandstorm

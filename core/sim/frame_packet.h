@@ -1,0 +1,37 @@
+// FramePacket: everything a render context needs for one frame, made once by
+// the main context and shared read-only by every wall (split first, thesis 5.3).
+// A context that applies the same packets in the same order holds the same
+// particles as every other: nothing else enters the simulation.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "core/field/field_placement.h"
+#include "core/field/vector_field.h"
+#include "core/sim/counter_rng.h"
+#include "core/sim/sim_step.h"
+#include "core/sim/state_change.h"
+
+namespace sandstorm {
+
+struct FieldUpdate {
+  std::shared_ptr<const VectorField> field;  // the new grid (shared, never copied per wall)
+  FieldPlacement placement;
+};
+
+struct FramePacket {
+  std::uint32_t frame = 0;
+  float dt = 0.0f;     // wall-clock seconds since the previous frame (measured once)
+  float simDt = 0.0f;  // simulated seconds: dt * time scale, 0 while paused
+  std::uint64_t seed = 0;
+  bool reset = false;                  // drop every particle before this frame
+  std::vector<StateChange> changes;    // take effect at this frame, before the update
+  std::vector<std::uint32_t> emission; // Reeves' count per emitter for this frame
+  std::shared_ptr<const FieldUpdate> fieldUpdate;  // non-null when the field changed
+
+  SimStep step() const { return SimStep{frame, simDt, Seed::from(seed), emission}; }
+};
+
+}  // namespace sandstorm

@@ -1,0 +1,133 @@
+#include "core/sim/main_context.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "core/sim/emission.h"
+#include "core/util/error.h"
+#include "core/util/log.h"
+
+namespace sandstorm {
+
+MainContext::MainContext(ParticleState initial, FieldUpdate field, Options options)
+    : initial_(initial),
+      options_(options),
+      state_(initial),
+      pending_(std::move(initial)),
+      field_(std::make_shared<const FieldUpdate>(std::move(field))) {}
+
+AttributeResult MainContext::set(std::string_view key, const AttributeValue& value) {
+  const AttributeTable& table = AttributeTable::instance();
+  std::lock_guard lock(mutex_);
+  ParticleState trial = pending_;
+  AttributeResult result = table.set(trial, key, value);  // throws before anything changes
+  if (!result.warning.empty()) log::warn(result.warning);
+  const StateChange change = StateChange::set(table.canonical(key), result.applied);
+  pending_ = std::move(trial);
+  queued_.push_back(change);
+  return result;
+}
+
+AttributeResult MainContext::setFromText(std::string_view key, std::string_view text) {
+  return set(key, AttributeTable::instance().parse(key, text));
+}
+
+void MainContext::addEmitter(const Emitter& emitter) { enqueue(StateChange::addEmitter(emitter)); }
+
+void MainContext::removeEmitter(int index) { enqueue(StateChange::removeEmitter(index)); }
+
+void MainContext::enqueue(const StateChange& change) {
+  std::lock_guard lock(mutex_);
+  ParticleState trial = pending_;
+  applyChange(trial, change);  // throws for a change that does not fit
+  pending_ = std::move(trial);
+  queued_.push_back(change);
+}
+
+void MainContext::setField(FieldUpdate field) {
+  std::lock_guard lock(mutex_);
+  field_ = std::make_shared<const FieldUpdate>(std::move(field));
+  fieldChanged_ = true;
+}
+
+void MainContext::reset() {
+  std::lock_guard lock(mutex_);
+  resetRequested_ = true;
+}
+
+void MainContext::schedule(std::uint32_t frame, const StateChange& change) {
+  std::lock_guard lock(mutex_);
+  scheduled_.emplace(frame, change);
+}
+
+FramePacket MainContext::next() {
+  // The clock is read here and only here.
+  float dt = options_.fixedDt;
+  if (dt <= 0.0f) {
+    const auto now = std::chrono::steady_clock::now();
+    dt = lastTick_ ? std::chrono::duration<float>(now - *lastTick_).count() : 1.0f / 60.0f;
+    lastTick_ = now;
+  }
+  dt = std::clamp(dt, 0.0f, options_.maxDt);
+
+  std::lock_guard lock(mutex_);
+  FramePacket packet;
+  packet.frame = frame_;
+  packet.dt = dt;
+  packet.seed = options_.seed;
+  packet.reset = std::exchange(resetRequested_, false);
+
+  // Scheduled changes for this frame (or overdue) come first, then live requests.
+  std::vector<StateChange> due;
+  for (auto it = scheduled_.begin(); it != scheduled_.end() && it->first <= frame_;)
+    due.push_back(it->second), it = scheduled_.erase(it);
+  due.insert(due.end(), queued_.begin(), queued_.end());
+  queued_.clear();
+  // Only changes that apply here travel, so walls see exactly what the main context did.
+  for (StateChange& change : due) {
+    try {
+      applyChange(state_, change);
+    } catch (const Error& e) {
+      log::error("frame ", frame_, ": ", e.what(), "; change dropped");
+      continue;
+    }
+    if (listener_) listener_(frame_, change);
+    packet.changes.push_back(std::move(change));
+  }
+  pending_ = state_;
+
+  if (fieldChanged_) packet.fieldUpdate = field_;
+  fieldChanged_ = false;
+
+  packet.simDt = state_.sim.paused ? 0.0f : dt * state_.sim.timeScale;
+  packet.emission = emissionCounts(state_, packet.simDt, Seed::from(options_.seed), frame_);
+  ++frame_;
+  return packet;
+}
+
+ParticleState MainContext::state() const {
+  std::lock_guard lock(mutex_);
+  return state_;
+}
+
+ParticleState MainContext::pendingState() const {
+  std::lock_guard lock(mutex_);
+  return pending_;
+}
+
+std::uint32_t MainContext::nextFrame() const {
+  std::lock_guard lock(mutex_);
+  return frame_;
+}
+
+std::shared_ptr<const FieldUpdate> MainContext::field() const {
+  std::lock_guard lock(mutex_);
+  return field_;
+}
+
+void MainContext::setChangeListener(ChangeListener listener) {
+  std::lock_guard lock(mutex_);
+  listener_ = std::move(listener);
+}
+
+}  // namespace sandstorm

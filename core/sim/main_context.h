@@ -1,0 +1,82 @@
+// MainContext: the one owner of everything that must be the same on every wall
+// (split first, thesis 5.3): the particle state and its table of dynamic
+// attributes, the emitters, the vector field, the random seed and the clock.
+//
+// Each frame, next() produces one FramePacket. Requests (set, addEmitter, ...)
+// are validated when made, against the state as it will be once earlier
+// requests have taken effect, and take effect together at the next packet's
+// frame, or at a frame given explicitly (for scripted runs and replays).
+// Requests are thread-safe; next() is called by one thread, the frame loop.
+#pragma once
+
+#include <chrono>
+#include <cstdint>
+#include <functional>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "core/sim/attribute_table.h"
+#include "core/sim/frame_packet.h"
+#include "core/sim/particle_state.h"
+
+namespace sandstorm {
+
+class MainContext {
+ public:
+  struct Options {
+    std::uint64_t seed = 1;
+    float fixedDt = 0.0f;  // > 0: every frame advances this much; 0: measure the clock
+    float maxDt = 0.1f;    // a measured frame longer than this (a stall) counts as this
+  };
+
+  // Called for every change with the frame it takes effect (the session recorder).
+  using ChangeListener = std::function<void(std::uint32_t frame, const StateChange&)>;
+
+  MainContext(ParticleState initial, FieldUpdate field, Options options);
+
+  // The state the walls start from (before packet 0); walls are built from it.
+  const ParticleState& initialState() const { return initial_; }
+
+  AttributeResult set(std::string_view key, const AttributeValue& value);
+  AttributeResult setFromText(std::string_view key, std::string_view text);
+  void addEmitter(const Emitter& emitter);
+  void removeEmitter(int index);
+  void setField(FieldUpdate field);
+  void reset();
+  // A validated change that takes effect at `frame` (or the next frame if that has passed).
+  void schedule(std::uint32_t frame, const StateChange& change);
+
+  FramePacket next();
+
+  // The state as of the last packet, and as it will be after pending requests.
+  ParticleState state() const;
+  ParticleState pendingState() const;
+  std::uint32_t nextFrame() const;
+  std::uint64_t seed() const { return options_.seed; }
+  std::shared_ptr<const FieldUpdate> field() const;
+
+  void setChangeListener(ChangeListener listener);
+
+ private:
+  void enqueue(const StateChange& change);
+
+  const ParticleState initial_;
+  const Options options_;
+  mutable std::mutex mutex_;
+  ParticleState state_;    // as of the last packet
+  ParticleState pending_;  // with every queued change applied
+  std::vector<StateChange> queued_;
+  std::multimap<std::uint32_t, StateChange> scheduled_;
+  std::shared_ptr<const FieldUpdate> field_;
+  bool fieldChanged_ = true;  // packet 0 always carries the field
+  bool resetRequested_ = false;
+  std::uint32_t frame_ = 0;
+  std::optional<std::chrono::steady_clock::time_point> lastTick_;
+  ChangeListener listener_;
+};
+
+}  // namespace sandstorm

@@ -1,0 +1,47 @@
+// The per-particle rules, shared word for word with the shaders:
+// birth() with shaders/particle_birth.glsl, advance() with
+// shaders/particle_physics.glsl. The reference simulator calls these; the GPU
+// backends run the GLSL twins. Keep each pair in step: the GPU/CPU agreement
+// tests compare them.
+#pragma once
+
+#include <cstdint>
+
+#include "core/field/field_placement.h"
+#include "core/field/height_map.h"
+#include "core/field/vector_field.h"
+#include "core/sim/counter_rng.h"
+#include "core/sim/emitter.h"
+#include "core/sim/particle.h"
+#include "core/sim/sim_settings.h"
+
+namespace sandstorm {
+
+// Everything advance() reads besides the particle.
+struct PhysicsInputs {
+  const VectorField* field = nullptr;
+  FieldPlacement placement;
+  const HeightMap* terrain = nullptr;
+  SimSettings settings;
+  float dt = 0.0f;  // simulated seconds this frame
+};
+
+// Particle number `index` of emitter `emitterIndex` born in frame `frame`.
+Particle birth(const Emitter& emitter, Seed seed, std::uint32_t frame, std::uint32_t emitterIndex,
+               std::uint32_t index);
+
+// Ages, moves and bounds one particle. Returns false when it dies.
+bool advance(Particle& p, const PhysicsInputs& in);
+
+// Extents at or beyond this are unbounded.
+inline constexpr float kUnbounded = 1e30f;
+
+// Where particles may go, in field coordinates: the field's bounds, unbounded
+// along axes of a single grid point (a 2D slice extends up and down).
+Box particleDomain(const VectorField& field);
+
+// The field as the particles feel it at room position x: strength * field,
+// carried through the placement. Zero when there is no field.
+glm::vec3 fieldAt(const glm::vec3& x, const PhysicsInputs& in);
+
+}  // namespace sandstorm

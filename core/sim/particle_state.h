@@ -1,0 +1,22 @@
+// ParticleState: everything that decides what the particle system does, apart
+// from the field: the simulation and render settings and the emitters.
+// The main context owns the authoritative copy; every render context holds a
+// replica that it changes only by applying the main context's frame packets.
+#pragma once
+
+#include <vector>
+
+#include "core/sim/emitter.h"
+#include "core/sim/sim_settings.h"
+
+namespace sandstorm {
+
+struct ParticleState {
+  static constexpr int kMaxEmitters = 16;
+
+  SimSettings sim;
+  RenderSettings render;
+  std::vector<Emitter> emitters{Emitter{}};
+};
+
+}  // namespace sandstorm

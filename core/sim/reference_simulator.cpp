@@ -1,0 +1,56 @@
+#include "core/sim/reference_simulator.h"
+
+#include <algorithm>
+
+#include "core/sim/particle_physics.h"
+
+namespace sandstorm {
+
+ReferenceSimulator::ReferenceSimulator(std::size_t capacity) : capacity_(capacity) {
+  particles_.reserve(capacity);
+  next_.reserve(capacity);
+}
+
+void ReferenceSimulator::setField(std::shared_ptr<const VectorField> field,
+                                  const FieldPlacement& placement) {
+  field_ = std::move(field);
+  placement_ = placement;
+}
+
+void ReferenceSimulator::setTerrain(std::shared_ptr<const HeightMap> terrain) {
+  terrain_ = std::move(terrain);
+}
+
+void ReferenceSimulator::step(const SimStep& step, const ParticleState& state) {
+  if (step.dt <= 0.0f) return;
+  PhysicsInputs in;
+  in.field = field_.get();
+  in.placement = placement_;
+  in.terrain = terrain_.get();
+  in.settings = state.sim;
+  in.dt = step.dt;
+
+  const std::size_t limit = std::min(std::size_t(std::max(state.sim.maximum, 0)), capacity_);
+  const std::vector<std::uint32_t> granted = budget_.allocate(step.emission, limit, count2_);
+  next_.clear();
+  std::uint32_t born = 0;
+  for (std::size_t e = 0; e < granted.size() && e < state.emitters.size(); ++e) {
+    for (std::uint32_t k = 0; k < granted[e]; ++k)
+      next_.push_back(birth(state.emitters[e], step.seed, step.frame, std::uint32_t(e), k));
+    born += granted[e];
+  }
+  budget_.recordEmitted(born);
+  for (Particle p : particles_)
+    if (advance(p, in)) next_.push_back(p);
+  std::swap(particles_, next_);
+  count2_ = count1_;
+  count1_ = particles_.size();
+}
+
+void ReferenceSimulator::clear() {
+  particles_.clear();
+  budget_.reset();
+  count1_ = count2_ = 0;
+}
+
+}  // namespace sandstorm

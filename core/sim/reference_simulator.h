@@ -1,0 +1,50 @@
+// ReferenceSimulator: the CPU twin of the GPU particle system.
+//
+// It performs the GPU update's steps in the GPU's order, so its buffer matches
+// the GPU's record for record. One update writes a new buffer:
+//   1. emitters, in order, write their newborn particles (birth()), as many as
+//      the EmissionBudget grants;
+//   2. every particle of the old buffer, in order, ages and moves (advance());
+//      the dead are dropped, the survivors follow the newborn in their order.
+// It exists for tests and as the readable specification of the update.
+#pragma once
+
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "core/field/field_placement.h"
+#include "core/field/height_map.h"
+#include "core/field/vector_field.h"
+#include "core/sim/particle.h"
+#include "core/sim/emission_budget.h"
+#include "core/sim/particle_state.h"
+#include "core/sim/sim_step.h"
+
+namespace sandstorm {
+
+class ReferenceSimulator {
+ public:
+  explicit ReferenceSimulator(std::size_t capacity);
+
+  void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement = {});
+  void setTerrain(std::shared_ptr<const HeightMap> terrain);
+  void step(const SimStep& step, const ParticleState& state);
+  void clear();
+
+  std::span<const Particle> particles() const { return particles_; }
+  std::size_t capacity() const { return capacity_; }
+
+ private:
+  std::size_t capacity_;
+  std::shared_ptr<const VectorField> field_;
+  FieldPlacement placement_;
+  std::shared_ptr<const HeightMap> terrain_;
+  std::vector<Particle> particles_;
+  std::vector<Particle> next_;
+  EmissionBudget budget_;
+  std::size_t count1_ = 0;  // particle count after the previous update
+  std::size_t count2_ = 0;  // ... and after the one before
+};
+
+}  // namespace sandstorm

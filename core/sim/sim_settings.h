@@ -1,0 +1,51 @@
+// SimSettings: how particles move. RenderSettings: how they look.
+// Both are plain values; the attribute table (attribute_table.h) names, ranges
+// and documents every field, and is the only way they change at run time.
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace sandstorm {
+
+// How the field drives a particle (position x, velocity v, field f at x):
+enum class MotionModel : int {
+  Tracer = 0,  // dx/dt = s f(x): f is a velocity (measured wind; VTK's tracers)
+  Force = 1,   // dv/dt = s f(x) + g, dx/dt = v: f is an acceleration (the thesis)
+  Drag = 2,    // dv/dt = (s f(x) - v) / tau + g, dx/dt = v: dust with response time tau
+};
+
+enum class Integrator : int { Euler = 0, RK2 = 1, RK4 = 2 };
+
+// What happens to a particle that leaves the field's bounds.
+enum class BoundaryMode : int { Kill = 0, Clamp = 1, Wrap = 2 };
+
+struct SimSettings {
+  int maximum = 100000;  // soft limit on live particles (the buffer capacity is the hard one)
+  MotionModel motion = MotionModel::Tracer;
+  Integrator integrator = Integrator::RK2;
+  BoundaryMode boundary = BoundaryMode::Kill;
+  float fieldStrength = 1.0f;  // s: multiplies the field
+  float timeScale = 1.0f;      // simulated seconds per wall-clock second
+  float dragTime = 0.05f;      // s: tau of the drag model
+  glm::vec3 gravity{0.0f, 0.0f, -9.81f};  // m/s^2, force and drag models
+  bool groundCollision = true;  // particles stop at the ground (z = ground height, or terrain)
+  float restitution = 0.2f;     // fraction of normal speed kept on a bounce
+  bool emitting = true;         // start/stop: emitters emit only while true
+  bool paused = false;          // pause: time stands still, nothing moves or dies
+};
+
+enum class RenderMode : int { Points = 0, Billboards = 1 };
+
+struct RenderSettings {
+  RenderMode mode = RenderMode::Billboards;
+  float size = 0.08f;  // m: billboard diameter; points use it as a projected size
+  glm::vec3 colorBirth{0.85f, 0.72f, 0.52f};
+  glm::vec3 colorDeath{0.55f, 0.45f, 0.35f};
+  float opacityBirth = 0.6f;
+  float opacityDeath = 0.0f;
+  glm::vec3 lightDirection{0.4f, -0.3f, 0.85f};  // towards the light, room space
+  float ambient = 0.35f;
+  float softness = 0.3f;  // m: particles fade out this close to scene geometry
+};
+
+}  // namespace sandstorm

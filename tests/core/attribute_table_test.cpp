@@ -1,0 +1,97 @@
+#include "core/sim/attribute_table.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+const AttributeTable& table() { return AttributeTable::instance(); }
+
+std::string errorOf(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+TEST(AttributeTable, EveryEntryIsDocumentedAndItsDefaultIsInRange) {
+  std::set<std::string> keys;
+  for (const AttributeInfo& info : table().entries()) {
+    EXPECT_TRUE(keys.insert(info.key).second) << "duplicate " << info.key;
+    EXPECT_FALSE(info.description.empty()) << info.key;
+    const AttributeResult r = table().validate(
+        info.perEmitter() ? "emitter.0." + info.key.substr(10) : info.key, info.defaultValue);
+    EXPECT_TRUE(r.warning.empty()) << info.key << ": " << r.warning;
+  }
+  // The thesis's Table 5.1 is covered.
+  for (const char* thesis : {"Size", "Lifetime", "AreaWidth", "AreaDepth", "Maximum", "Position"})
+    EXPECT_NO_THROW(table().lookup(thesis)) << thesis;
+}
+
+TEST(AttributeTable, SetsAndGetsThroughTheTable) {
+  ParticleState s;
+  table().set(s, "render.size", 0.25f);
+  EXPECT_FLOAT_EQ(s.render.size, 0.25f);
+  table().set(s, "AreaWidth", 3.0f);
+  EXPECT_FLOAT_EQ(s.emitters[0].width, 3.0f);
+  table().set(s, "sim.integrator", std::string("rk4"));
+  EXPECT_EQ(s.sim.integrator, Integrator::RK4);
+  EXPECT_EQ(std::get<std::string>(table().get(s, "sim.integrator")), "rk4");
+  table().set(s, "emitter.0.position", glm::vec3(1, 2, 3));
+  EXPECT_EQ(s.emitters[0].position, glm::vec3(1, 2, 3));
+  table().set(s, "sim.maximum", 5000.0f);  // integral floats are accepted for ints
+  EXPECT_EQ(s.sim.maximum, 5000);
+}
+
+TEST(AttributeTable, ClampsOutOfRangeValuesAndSaysSo) {
+  ParticleState s;
+  const AttributeResult r = table().set(s, "render.opacity_birth", 3.0f);
+  EXPECT_FLOAT_EQ(s.render.opacityBirth, 1.0f);
+  EXPECT_NE(r.warning.find("render.opacity_birth"), std::string::npos) << r.warning;
+  EXPECT_NE(r.warning.find("clamped to 1"), std::string::npos) << r.warning;
+  const AttributeResult v = table().set(s, "sim.gravity", glm::vec3(0, 0, -500));
+  EXPECT_EQ(s.sim.gravity, glm::vec3(0, 0, -100));
+  EXPECT_FALSE(v.warning.empty());
+  EXPECT_TRUE(table().set(s, "render.size", 0.5f).warning.empty());
+}
+
+TEST(AttributeTable, RefusesWrongTypesUnknownKeysAndChoices) {
+  ParticleState s;
+  const ParticleState before = s;
+  EXPECT_NE(errorOf([&] { table().set(s, "render.size", std::string("big")); }).find("expected a number"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { table().set(s, "sim.maximum", 2.5f); }).find("integer"), std::string::npos);
+  EXPECT_NE(errorOf([&] { table().set(s, "render.sise", 1.0f); }).find("render.size"),
+            std::string::npos);  // suggests the near key
+  EXPECT_NE(errorOf([&] { table().set(s, "sim.integrator", std::string("rk3")); }).find("euler, rk2, rk4"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { table().set(s, "emitter.5.rate", 1.0f); }).find("no emitter 5"),
+            std::string::npos);
+  EXPECT_NE(errorOf([&] { table().set(s, "emitter.x.rate", 1.0f); }).find("emitter.N"), std::string::npos);
+  EXPECT_NE(errorOf([&] { table().set(s, "render.size", std::nanf("")); }).find("not finite"),
+            std::string::npos);
+  EXPECT_EQ(s.render.size, before.render.size);
+  EXPECT_EQ(s.sim.maximum, before.sim.maximum);
+}
+
+TEST(AttributeTable, ParsesText) {
+  EXPECT_EQ(std::get<float>(table().parse("emitter.0.rate", "50000")), 50000.0f);
+  EXPECT_EQ(std::get<int>(table().parse("sim.maximum", "1e6")), 1000000);
+  EXPECT_EQ(std::get<bool>(table().parse("sim.paused", "true")), true);
+  EXPECT_EQ(std::get<glm::vec3>(table().parse("emitter.0.velocity", "1, -2 3.5")), glm::vec3(1, -2, 3.5f));
+  EXPECT_EQ(std::get<std::string>(table().parse("render.mode", "points")), "points");
+  EXPECT_THROW(table().parse("emitter.0.velocity", "1 2"), Error);
+  EXPECT_THROW(table().parse("emitter.0.velocity", "1 2 3 4"), Error);
+  EXPECT_THROW(table().parse("emitter.0.rate", "12abc"), Error);
+  EXPECT_THROW(table().parse("sim.paused", "maybe"), Error);
+  EXPECT_THROW(table().parse("sim.maximum", "1.5"), Error);
+}
+
+}  // namespace
+}  // namespace sandstorm

@@ -1,0 +1,73 @@
+#include "core/field/vector_field.h"
+
+#include <gtest/gtest.h>
+
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+// Trilinear interpolation reproduces any function linear in each coordinate
+// exactly, so a linear field checks indexing, weights and bounds mapping.
+glm::vec3 linear(const glm::vec3& p) {
+  return {2.0f * p.x - p.y + 0.5f, p.z * 3.0f + 1.0f, -p.x + 0.25f * p.y + p.z};
+}
+
+VectorField linearField() {
+  VectorField f(Box{{-1, 0, 2}, {3, 2, 4}}, {5, 3, 9});
+  for (int k = 0; k < 9; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 5; ++i) f.at(i, j, k) = linear(f.pointPosition(i, j, k));
+  return f;
+}
+
+TEST(VectorField, PointPositionsSpanTheBounds) {
+  const VectorField f = linearField();
+  EXPECT_EQ(f.pointPosition(0, 0, 0), glm::vec3(-1, 0, 2));
+  EXPECT_EQ(f.pointPosition(4, 2, 8), glm::vec3(3, 2, 4));
+  EXPECT_EQ(f.pointPosition(2, 1, 4), glm::vec3(1, 1, 3));
+  EXPECT_EQ(f.index(1, 2, 3), 1u + 5u * (2u + 3u * 3u));  // x fastest
+}
+
+TEST(VectorField, TrilinearSamplingIsExactForLinearFields) {
+  const VectorField f = linearField();
+  for (const glm::vec3 p : {glm::vec3(0.3f, 1.7f, 2.9f), glm::vec3(-0.99f, 0.01f, 3.999f),
+                            glm::vec3(2.5f, 0.5f, 2.25f), glm::vec3(1, 1, 3)}) {
+    const glm::vec3 expected = linear(p), got = f.sample(p);
+    for (int a = 0; a < 3; ++a) EXPECT_NEAR(got[a], expected[a], 1e-5f) << "at " << p.x << "," << p.y;
+  }
+}
+
+TEST(VectorField, SamplingClampsOutsideTheBounds) {
+  const VectorField f = linearField();
+  const glm::vec3 outside(10.0f, -5.0f, 3.0f);
+  const glm::vec3 edge(3.0f, 0.0f, 3.0f);
+  EXPECT_EQ(f.sample(outside), f.sample(edge));
+}
+
+TEST(VectorField, SingletonAxisIsConstantAlongIt) {
+  VectorField f(Box{{0, 0, 5}, {1, 1, 5}}, {2, 2, 1});
+  f.at(1, 1, 0) = glm::vec3(4, 0, 0);
+  EXPECT_FLOAT_EQ(f.sample({0.5f, 0.5f, 100.0f}).x, 1.0f);
+  EXPECT_FLOAT_EQ(f.sample({1.0f, 1.0f, -3.0f}).x, 4.0f);
+}
+
+TEST(VectorField, RejectsBadShapes) {
+  EXPECT_THROW(VectorField(Box{{0, 0, 0}, {1, 1, 1}}, {0, 2, 2}), Error);
+  EXPECT_THROW(VectorField(Box{{0, 0, 0}, {1, 1, 1}}, {-3, 2, 2}), Error);
+  EXPECT_THROW(VectorField(Box{{0, 0, 0}, {1, 1, 1}}, {100000, 100000, 100000}), Error);
+  EXPECT_THROW(VectorField(Box{{0, 0, 0}, {0, 1, 1}}, {2, 2, 2}), Error);  // empty extent
+  EXPECT_THROW(VectorField(Box{{0, 0, 0}, {1, 1, 1}}, {2, 2, 2}, std::vector<glm::vec3>(7)), Error);
+}
+
+TEST(VectorField, ErrorsSayWhatWasExpected) {
+  try {
+    VectorField(Box{{0, 0, 0}, {1, 1, 1}}, {2, 0, 2});
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("dimension y is 0"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace sandstorm
