@@ -15,9 +15,10 @@ namespace sandstorm {
 
 // Streams separate the independent draws made for one key.
 enum class RngStream : std::uint32_t {
-  kBirth0 = 0,     // position and lifetime of a new particle
-  kBirth1 = 1,     // velocity of a new particle
-  kEmission = 15,  // emission count of an emitter (main context)
+  kBirth = 0,          // box position and lifetime of a new particle
+  kBirthBall = 16,     // 16..31: candidates for a position in a sphere or disc
+  kVelocityBall = 32,  // 32..47: candidates for the velocity spread
+  kEmission = 255,     // emission count of an emitter (main context)
 };
 
 inline glm::uvec4 pcg4d(glm::uvec4 v) {
@@ -43,13 +44,14 @@ struct Seed {
 
 inline glm::uvec4 randomBits(Seed seed, std::uint32_t frame, std::uint32_t emitter,
                              std::uint32_t index, RngStream stream) {
-  return pcg4d(glm::uvec4(index ^ seed.hi, frame, (emitter << 4u) | std::uint32_t(stream), seed.lo));
+  return pcg4d(glm::uvec4(index ^ seed.hi, frame, (emitter << 8u) | std::uint32_t(stream), seed.lo));
 }
 
 // Four uniform numbers in [0, 1), each with 24 random bits (exact in float).
 inline glm::vec4 randomUniform(Seed seed, std::uint32_t frame, std::uint32_t emitter,
-                               std::uint32_t index, RngStream stream) {
-  return glm::vec4(randomBits(seed, frame, emitter, index, stream) >> 8u) * (1.0f / 16777216.0f);
+                               std::uint32_t index, RngStream stream, std::uint32_t offset = 0) {
+  const RngStream s = RngStream(std::uint32_t(stream) + offset);
+  return glm::vec4(randomBits(seed, frame, emitter, index, s) >> 8u) * (1.0f / 16777216.0f);
 }
 
 }  // namespace sandstorm

@@ -6,33 +6,22 @@
 namespace sandstorm {
 namespace {
 
-constexpr float kTwoPi = 6.28318530717958647692f;
 constexpr float kMinLifetime = 1e-3f;
+constexpr std::uint32_t kBallTries = 16;
 
-// A unit vector from two uniform numbers (uniform on the sphere).
-glm::vec3 unitVector(float a, float b) {
-  const float z = 2.0f * a - 1.0f;
-  const float s = std::sqrt(std::max(0.0f, 1.0f - z * z));
-  const float phi = kTwoPi * b;
-  return glm::vec3(s * std::cos(phi), s * std::sin(phi), z);
-}
-
-// A point uniform in the unit ball from three uniform numbers.
-glm::vec3 inUnitBall(const glm::vec3& u) { return std::cbrt(u.x) * unitVector(u.y, u.z); }
-
-glm::vec3 birthOffset(const Emitter& e, const glm::vec4& u) {
-  switch (e.shape) {
-    case EmitterShape::Box:
-      return (glm::vec3(u) - 0.5f) * glm::vec3(e.width, e.depth, e.height);
-    case EmitterShape::Sphere: return e.radius * inUnitBall(glm::vec3(u));
-    case EmitterShape::Disc: {
-      const float r = e.radius * std::sqrt(u.x);
-      const float phi = kTwoPi * u.y;
-      return glm::vec3(r * std::cos(phi), r * std::sin(phi), 0.0f);
-    }
-    case EmitterShape::Point: return glm::vec3(0.0f);
+// A point uniform in the unit ball (or, flat, the unit disc): the first of up
+// to 16 candidates from the cube that falls inside. Rejection needs no sin,
+// cos or cube root, whose last bits differ between GPUs and the CPU. After 16
+// misses (p < 1e-5 for the ball) the last candidate, halved, stands in.
+glm::vec3 inUnitBall(Seed seed, std::uint32_t frame, std::uint32_t e, std::uint32_t k,
+                     RngStream stream, bool flat) {
+  glm::vec3 c(0.0f);
+  for (std::uint32_t t = 0; t < kBallTries; ++t) {
+    c = 2.0f * glm::vec3(randomUniform(seed, frame, e, k, stream, t)) - 1.0f;
+    if (flat) c.z = 0.0f;
+    if (c.x * c.x + c.y * c.y + c.z * c.z <= 1.0f) return c;
   }
-  return glm::vec3(0.0f);
+  return c * 0.5f;
 }
 
 struct Slope {
@@ -99,12 +88,23 @@ glm::vec3 fieldAt(const glm::vec3& x, const PhysicsInputs& in) {
 
 Particle birth(const Emitter& e, Seed seed, std::uint32_t frame, std::uint32_t emitterIndex,
                std::uint32_t index) {
-  const glm::vec4 u = randomUniform(seed, frame, emitterIndex, index, RngStream::kBirth0);
-  const glm::vec4 w = randomUniform(seed, frame, emitterIndex, index, RngStream::kBirth1);
+  const glm::vec4 u = randomUniform(seed, frame, emitterIndex, index, RngStream::kBirth);
+  glm::vec3 offset(0.0f);
+  switch (e.shape) {
+    case EmitterShape::Box: offset = (glm::vec3(u) - 0.5f) * glm::vec3(e.width, e.depth, e.height); break;
+    case EmitterShape::Sphere:
+    case EmitterShape::Disc:
+      offset = e.radius * inUnitBall(seed, frame, emitterIndex, index, RngStream::kBirthBall,
+                                     e.shape == EmitterShape::Disc);
+      break;
+    case EmitterShape::Point: break;
+  }
+  glm::vec3 velocity = e.velocity;
+  if (e.spread > 0.0f)
+    velocity = velocity + e.spread * inUnitBall(seed, frame, emitterIndex, index,
+                                                RngStream::kVelocityBall, false);
   const float life = std::max(e.lifetime + e.lifetimeVariance * (2.0f * u.w - 1.0f), kMinLifetime);
-  const glm::vec3 position = e.position + birthOffset(e, u);
-  const glm::vec3 velocity = e.velocity + e.spread * inUnitBall(glm::vec3(w));
-  return Particle{glm::vec4(position, life), glm::vec4(velocity, life)};
+  return Particle{glm::vec4(e.position + offset, life), glm::vec4(velocity, life)};
 }
 
 bool advance(Particle& p, const PhysicsInputs& in) {

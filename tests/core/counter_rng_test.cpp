@@ -9,12 +9,12 @@ namespace {
 
 TEST(CounterRng, IsAPureFunctionOfItsKey) {
   const Seed seed = Seed::from(0x123456789abcdefull);
-  EXPECT_EQ(randomBits(seed, 7, 2, 99, RngStream::kBirth0), randomBits(seed, 7, 2, 99, RngStream::kBirth0));
-  EXPECT_NE(randomBits(seed, 7, 2, 99, RngStream::kBirth0), randomBits(seed, 7, 2, 99, RngStream::kBirth1));
-  EXPECT_NE(randomBits(seed, 7, 2, 99, RngStream::kBirth0), randomBits(seed, 8, 2, 99, RngStream::kBirth0));
-  EXPECT_NE(randomBits(seed, 7, 2, 99, RngStream::kBirth0), randomBits(seed, 7, 3, 99, RngStream::kBirth0));
-  EXPECT_NE(randomBits(seed, 7, 2, 99, RngStream::kBirth0),
-            randomBits(Seed::from(5), 7, 2, 99, RngStream::kBirth0));
+  EXPECT_EQ(randomBits(seed, 7, 2, 99, RngStream::kBirth), randomBits(seed, 7, 2, 99, RngStream::kBirth));
+  EXPECT_NE(randomBits(seed, 7, 2, 99, RngStream::kBirth), randomBits(seed, 7, 2, 99, RngStream::kVelocityBall));
+  EXPECT_NE(randomBits(seed, 7, 2, 99, RngStream::kBirth), randomBits(seed, 8, 2, 99, RngStream::kBirth));
+  EXPECT_NE(randomBits(seed, 7, 2, 99, RngStream::kBirth), randomBits(seed, 7, 3, 99, RngStream::kBirth));
+  EXPECT_NE(randomBits(seed, 7, 2, 99, RngStream::kBirth),
+            randomBits(Seed::from(5), 7, 2, 99, RngStream::kBirth));
 }
 
 TEST(CounterRng, KnownValueOfPcg4d) {
@@ -33,7 +33,7 @@ TEST(CounterRng, UniformNumbersAreUniform) {
   for (int lane = 0; lane < 4; ++lane) {
     int bins[kBins] = {};
     for (int i = 0; i < kSamples; ++i) {
-      const float u = randomUniform(Seed::from(42), 3, 1, std::uint32_t(i), RngStream::kBirth0)[lane];
+      const float u = randomUniform(Seed::from(42), 3, 1, std::uint32_t(i), RngStream::kBirth)[lane];
       ASSERT_GE(u, 0.0f);
       ASSERT_LT(u, 1.0f);
       ++bins[int(u * kBins)];
@@ -50,7 +50,7 @@ TEST(CounterRng, UniformNumbersAreUniform) {
 TEST(CounterRng, NeighbouringIndicesDoNotCollide) {
   std::set<std::uint32_t> seen;
   for (std::uint32_t i = 0; i < 10000; ++i)
-    seen.insert(randomBits(Seed::from(1), 0, 0, i, RngStream::kBirth0).x);
+    seen.insert(randomBits(Seed::from(1), 0, 0, i, RngStream::kBirth).x);
   EXPECT_GT(seen.size(), 9990u);
 }
 

@@ -1,0 +1,192 @@
+#include "contexts/particles/particle_geo_update.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <numeric>
+
+#include "contexts/particles/sim_block.h"
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+constexpr GLsizeiptr kRecord = sizeof(glm::vec4);
+
+gl::Program makeProgram(const char* vert, const char* geom) {
+  return gl::Program(
+      gl::ProgramDesc{{vert, geom}, {}, {"outPositionLife", "outVelocityKind"}});
+}
+
+void attach(GLuint vao, GLuint positionLife, GLuint velocityKind, GLintptr firstRecord) {
+  glVertexArrayVertexBuffer(vao, 0, positionLife, firstRecord * kRecord, kRecord);
+  glVertexArrayVertexBuffer(vao, 1, velocityKind, firstRecord * kRecord, kRecord);
+}
+
+}  // namespace
+
+ParticleGeoUpdate::ParticleGeoUpdate(std::size_t capacity)
+    : capacity_(capacity),
+      emptyVao_(gl::createVertexArray()),
+      simBlock_(gl::createBuffer()),
+      dummyTarget_(gl::createFramebuffer()),
+      dummyColor_(gl::createRenderbuffer()),
+      updateProgram_(makeProgram("particle_update.vert", "particle_update.geom")),
+      emitProgram_(makeProgram("particle_emit.vert", "particle_emit.geom")) {
+  if (capacity == 0 || capacity > (std::size_t{1} << 31) / kRecord)
+    throw Error(concat("ParticleGeoUpdate: capacity ", capacity, " is outside 1..", (1u << 31) / kRecord));
+  for (BufferSet& set : sets_) {
+    set.positionLife = gl::createBuffer();
+    set.velocityKind = gl::createBuffer();
+    glNamedBufferStorage(set.positionLife.id(), GLsizeiptr(capacity) * kRecord, nullptr, 0);
+    glNamedBufferStorage(set.velocityKind.id(), GLsizeiptr(capacity) * kRecord, nullptr, 0);
+    for (gl::VertexArray* vao : {&set.all, &set.survivors}) {
+      *vao = gl::createVertexArray();
+      for (GLuint a = 0; a < 2; ++a) {
+        glEnableVertexArrayAttrib(vao->id(), a);
+        glVertexArrayAttribFormat(vao->id(), a, 4, GL_FLOAT, GL_FALSE, 0);
+        glVertexArrayAttribBinding(vao->id(), a, a);
+      }
+      attach(vao->id(), set.positionLife.id(), set.velocityKind.id(), 0);
+    }
+    set.emit = gl::createTransformFeedback();
+    set.update = gl::createTransformFeedback();
+    glTransformFeedbackBufferBase(set.emit.id(), 0, set.positionLife.id());
+    glTransformFeedbackBufferBase(set.emit.id(), 1, set.velocityKind.id());
+  }
+  glNamedBufferStorage(simBlock_.id(), sizeof(SimBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedRenderbufferStorage(dummyColor_.id(), GL_R8, 1, 1);
+  glNamedFramebufferRenderbuffer(dummyTarget_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, dummyColor_.id());
+  for (gl::Query& q : survivorQueries_) q = gl::createQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+}
+
+void ParticleGeoUpdate::setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement) {
+  field_ = std::move(field);
+  placement_ = placement;
+  if (field_) fieldTexture_.upload(*field_);
+}
+
+void ParticleGeoUpdate::setTerrain(std::shared_ptr<const HeightMap> terrain) {
+  terrain_ = std::move(terrain);
+  if (terrain_) terrainTexture_.upload(*terrain_);
+}
+
+void ParticleGeoUpdate::clear() {
+  for (BufferSet& set : sets_) {
+    set.born = 0;
+    set.hasSurvivors = false;
+  }
+  budget_.reset();
+  updates_ = 0;
+  queried_.fill(false);
+  bornHistory_.fill(0);
+}
+
+std::size_t ParticleGeoUpdate::countAfter(std::uint64_t update) const {
+  const int slot = int(update % kHistory);
+  std::size_t count = bornHistory_[std::size_t(slot)];
+  if (queried_[std::size_t(slot)]) {
+    GLuint survivors = 0;
+    glGetQueryObjectuiv(survivorQueries_[std::size_t(slot)].id(), GL_QUERY_RESULT, &survivors);
+    count += survivors;
+  }
+  return count;
+}
+
+void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
+  if (step.dt <= 0.0f) return;  // paused: nothing moves, dies or is born
+
+  // Count(u - 2) was produced a whole update ago, so this rarely waits.
+  const std::size_t count2 = updates_ >= 2 ? countAfter(updates_ - 2) : 0;
+  const std::size_t limit = std::min(std::size_t(std::max(state.sim.maximum, 0)), capacity_);
+  SimBlockInputs inputs;
+  inputs.field = field_.get();
+  inputs.placement = placement_;
+  inputs.terrain = terrain_.get();
+  inputs.state = &state;
+  inputs.step = step;
+  inputs.granted = budget_.allocate(step.emission, limit, count2);
+  inputs.granted.resize(state.emitters.size(), 0);
+  const std::uint32_t born = std::accumulate(inputs.granted.begin(), inputs.granted.end(), 0u);
+  SimBlock block;
+  const int slots = fillSimBlock(inputs, block);
+  glNamedBufferSubData(simBlock_.id(), 0, sizeof(block), &block);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, simBlock_.id());
+  if (field_) fieldTexture_.bind(0);
+  if (terrain_) terrainTexture_.bind(1);
+
+  const BufferSet& in = sets_[std::size_t(current_)];
+  BufferSet& out = sets_[std::size_t(1 - current_)];
+  glBindFramebuffer(GL_FRAMEBUFFER, dummyTarget_.id());
+  glEnable(GL_RASTERIZER_DISCARD);
+
+  if (born > 0) {
+    emitProgram_.use();
+    glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, out.emit.id());
+    glBeginTransformFeedback(GL_POINTS);
+    glBindVertexArray(emptyVao_.id());
+    glDrawArrays(GL_POINTS, 0, slots);
+    glEndTransformFeedback();
+  }
+  out.born = born;
+  out.hasSurvivors = false;
+  const int slot = int(updates_ % kHistory);
+  queried_[std::size_t(slot)] = false;
+  if ((in.born > 0 || in.hasSurvivors) && born < capacity_) {
+    const GLintptr offset = GLintptr(born) * kRecord, size = GLsizeiptr(capacity_ - born) * kRecord;
+    glTransformFeedbackBufferRange(out.update.id(), 0, out.positionLife.id(), offset, size);
+    glTransformFeedbackBufferRange(out.update.id(), 1, out.velocityKind.id(), offset, size);
+    updateProgram_.use();
+    glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, out.update.id());
+    glBeginQueryIndexed(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, 0, survivorQueries_[std::size_t(slot)].id());
+    glBeginTransformFeedback(GL_POINTS);
+    drawSet(in);
+    glEndTransformFeedback();
+    glEndQueryIndexed(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, 0);
+    attach(out.survivors.id(), out.positionLife.id(), out.velocityKind.id(), GLintptr(born));
+    out.hasSurvivors = true;
+    queried_[std::size_t(slot)] = true;
+  }
+  glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, 0);
+  glDisable(GL_RASTERIZER_DISCARD);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+
+  bornHistory_[std::size_t(slot)] = born;
+  budget_.recordEmitted(born);
+  current_ = 1 - current_;
+  ++updates_;
+}
+
+void ParticleGeoUpdate::drawSet(const BufferSet& set) const {
+  if (set.born > 0) {
+    glBindVertexArray(set.all.id());
+    glDrawArrays(GL_POINTS, 0, GLsizei(set.born));
+  }
+  if (set.hasSurvivors) {
+    glBindVertexArray(set.survivors.id());
+    glDrawTransformFeedback(GL_POINTS, set.update.id());
+  }
+  glBindVertexArray(0);
+}
+
+void ParticleGeoUpdate::draw() const { drawSet(sets_[std::size_t(current_)]); }
+
+std::size_t ParticleGeoUpdate::liveCount() const {
+  if (updates_ == 0) return 0;
+  return countAfter(updates_ - 1);
+}
+
+std::vector<Particle> ParticleGeoUpdate::readBack() const {
+  const std::size_t count = liveCount();
+  const BufferSet& set = sets_[std::size_t(current_)];
+  std::vector<glm::vec4> pos(count), vel(count);
+  if (count > 0) {
+    glGetNamedBufferSubData(set.positionLife.id(), 0, GLsizeiptr(count) * kRecord, pos.data());
+    glGetNamedBufferSubData(set.velocityKind.id(), 0, GLsizeiptr(count) * kRecord, vel.data());
+  }
+  std::vector<Particle> particles(count);
+  for (std::size_t i = 0; i < count; ++i) particles[i] = Particle{pos[i], vel[i]};
+  return particles;
+}
+
+}  // namespace sandstorm

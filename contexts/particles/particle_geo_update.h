@@ -1,0 +1,94 @@
+// ParticleGeoUpdate: the thesis's particle update (5.1.1-5.1.2) on the GPU,
+// through transform feedback and geometry shaders.
+//
+// Two sets of buffers (position + remaining life, velocity + kind) take turns:
+// each update reads one set and writes the other, then they swap. An update
+// writes, in one pass after the other:
+//   1. the emission pass: emitters' newborn particles at the start of the
+//      buffer (shaders/particle_emit.*); their number is known before the pass
+//      (Reeves' counts from the main context, capped by the EmissionBudget);
+//   2. the particle pass: every particle of the other set ages and moves; the
+//      geometry stage drops the dead, and survivors follow the newborn
+//      (shaders/particle_update.*).
+// The buffer's capacity is the hard limit; Maximum is the soft one. The update
+// never waits for the GPU: the budget uses counts two updates old, read back
+// from transform-feedback queries. The CPU twin is ReferenceSimulator.
+//
+// All calls need this object's GL context current.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "contexts/gl/objects.h"
+#include "contexts/gl/program.h"
+#include "contexts/particles/field_texture.h"
+#include "core/field/field_placement.h"
+#include "core/field/height_map.h"
+#include "core/sim/emission_budget.h"
+#include "core/sim/particle.h"
+#include "core/sim/particle_state.h"
+#include "core/sim/sim_step.h"
+
+namespace sandstorm {
+
+class ParticleGeoUpdate {
+ public:
+  explicit ParticleGeoUpdate(std::size_t capacity);
+
+  void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement);
+  void setTerrain(std::shared_ptr<const HeightMap> terrain);
+  void step(const SimStep& step, const ParticleState& state);
+  void clear();
+
+  // Draws the current particles as GL_POINTS with the bound program, which
+  // reads attribute 0 (position, life) and 1 (velocity, kind).
+  void draw() const;
+
+  std::size_t capacity() const { return capacity_; }
+  // These wait for the GPU; for tests, stats and dumps, not the frame loop.
+  std::size_t liveCount() const;
+  std::vector<Particle> readBack() const;
+
+  double lastFieldUploadMs() const { return fieldTexture_.lastUploadMs(); }
+
+ private:
+  struct BufferSet {
+    gl::Buffer positionLife, velocityKind;
+    gl::VertexArray all;        // from the start: the newborn
+    gl::VertexArray survivors;  // from the first survivor, drawn through `update`'s count
+    gl::TransformFeedback emit, update;
+    std::uint32_t born = 0;
+    bool hasSurvivors = false;
+  };
+
+  static constexpr int kHistory = 3;
+
+  void drawSet(const BufferSet& set) const;
+  std::size_t countAfter(std::uint64_t update) const;
+
+  std::size_t capacity_;
+  std::array<BufferSet, 2> sets_;
+  int current_ = 0;
+  gl::VertexArray emptyVao_;
+  gl::Buffer simBlock_;
+  gl::Framebuffer dummyTarget_;  // drawing needs a framebuffer, even with rasterizer discard
+  gl::Renderbuffer dummyColor_;
+  gl::Program updateProgram_, emitProgram_;
+
+  std::shared_ptr<const VectorField> field_;
+  FieldPlacement placement_;
+  std::shared_ptr<const HeightMap> terrain_;
+  FieldTexture fieldTexture_;
+  TerrainTexture terrainTexture_;
+
+  EmissionBudget budget_;
+  std::uint64_t updates_ = 0;
+  std::array<gl::Query, kHistory> survivorQueries_;
+  std::array<std::uint32_t, kHistory> bornHistory_{};
+  std::array<bool, kHistory> queried_{};
+};
+
+}  // namespace sandstorm

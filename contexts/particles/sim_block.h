@@ -1,0 +1,62 @@
+// SimBlock: the std140 uniform block of shaders/sim_block.glsl, filled from the
+// state, the field and the step. The two declarations must stay in step; the
+// static_asserts and the GPU/CPU agreement tests guard them.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/field/field_placement.h"
+#include "core/field/height_map.h"
+#include "core/field/vector_field.h"
+#include "core/sim/particle_state.h"
+#include "core/sim/sim_step.h"
+
+namespace sandstorm {
+
+struct alignas(16) EmitterBlock {
+  glm::vec4 position;
+  glm::vec4 size;  // width, depth, height, radius
+  glm::vec4 life;  // lifetime, lifetime variance, spread
+  glm::vec4 velocity;
+  glm::ivec4 shapeCount;  // shape, granted count, first slot
+};
+
+struct alignas(16) SimBlock {
+  glm::vec4 fieldMin;
+  glm::vec4 fieldIndexScale;
+  glm::ivec4 fieldDims;
+  glm::vec4 domainMin;
+  glm::vec4 domainMax;
+  glm::vec4 placementOffset;
+  glm::vec4 placementRotation[3];
+  glm::vec4 gravity;
+  glm::vec4 stepParams;
+  glm::ivec4 modes;
+  glm::uvec4 frameSeed;
+  glm::vec4 terrainMinScale;
+  glm::ivec4 terrainDims;
+  EmitterBlock emitters[ParticleState::kMaxEmitters];
+};
+
+static_assert(sizeof(EmitterBlock) == 80);
+static_assert(sizeof(SimBlock) == 16 * 15 + 80 * ParticleState::kMaxEmitters);
+
+// Newborn particles per emission slot (one geometry-shader invocation).
+inline constexpr int kEmissionSlotSize = 64;
+
+struct SimBlockInputs {
+  const VectorField* field = nullptr;
+  FieldPlacement placement;
+  const HeightMap* terrain = nullptr;
+  const ParticleState* state = nullptr;
+  SimStep step;
+  std::vector<std::uint32_t> granted;  // newborn per emitter, after the budget
+};
+
+// Fills the block; returns the number of emission slots to draw.
+int fillSimBlock(const SimBlockInputs& in, SimBlock& block);
+
+}  // namespace sandstorm

@@ -1,0 +1,128 @@
+#include "contexts/platform/egl_context.h"
+
+#include <epoxy/egl.h>
+
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "core/util/error.h"
+#include "core/util/log.h"
+
+namespace sandstorm {
+namespace {
+
+struct Display {
+  EGLDisplay display = EGL_NO_DISPLAY;
+  std::string platform;
+};
+
+bool hasExtension(const char* list, const char* name) {
+  if (!list) return false;
+  const std::string all = std::string(" ") + list + " ";
+  return all.find(std::string(" ") + name + " ") != std::string::npos;
+}
+
+Display tryDevicePlatform(const char* clientExtensions) {
+  if (!hasExtension(clientExtensions, "EGL_EXT_platform_device") ||
+      !hasExtension(clientExtensions, "EGL_EXT_device_enumeration"))
+    return {};
+  EGLint count = 0;
+  eglQueryDevicesEXT(0, nullptr, &count);
+  std::vector<EGLDeviceEXT> devices(std::size_t(std::max(count, 0)));
+  eglQueryDevicesEXT(count, devices.data(), &count);
+  for (EGLint i = 0; i < count; ++i) {
+    EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[std::size_t(i)], nullptr);
+    EGLint major = 0, minor = 0;
+    if (d != EGL_NO_DISPLAY && eglInitialize(d, &major, &minor)) {
+      // A display must offer desktop OpenGL with surfaceless contexts to be of use.
+      const char* ext = eglQueryString(d, EGL_EXTENSIONS);
+      if (hasExtension(ext, "EGL_KHR_surfaceless_context") && eglBindAPI(EGL_OPENGL_API))
+        return {d, concat("EGL device platform, device ", i)};
+      eglTerminate(d);
+    }
+  }
+  return {};
+}
+
+Display trySurfaceless(const char* clientExtensions) {
+  if (!hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless")) return {};
+  EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  EGLint major = 0, minor = 0;
+  if (d == EGL_NO_DISPLAY || !eglInitialize(d, &major, &minor)) return {};
+  return {d, "EGL Mesa surfaceless platform"};
+}
+
+const Display& display() {
+  static std::once_flag once;
+  static Display chosen;
+  static std::string failure;
+  std::call_once(once, [] {
+    const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
+    chosen = tryDevicePlatform(client);
+    if (chosen.display == EGL_NO_DISPLAY) chosen = trySurfaceless(client);
+    if (chosen.display == EGL_NO_DISPLAY)
+      failure = concat("EglContext: no usable EGL display. Tried EGL_EXT_platform_device and ",
+                       "EGL_MESA_platform_surfaceless; client extensions: ",
+                       client ? client : "(none: is libEGL installed?)");
+  });
+  if (chosen.display == EGL_NO_DISPLAY) throw Error(failure);
+  return chosen;
+}
+
+}  // namespace
+
+EglContext::EglContext(const Options& options) {
+  const Display& d = display();
+  if (!eglBindAPI(EGL_OPENGL_API)) throw Error("EglContext: eglBindAPI(EGL_OPENGL_API) failed");
+
+  const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
+  EGLConfig config = nullptr;
+  EGLint configs = 0;
+  const bool noConfig = hasExtension(eglQueryString(d.display, EGL_EXTENSIONS), "EGL_KHR_no_config_context");
+  if (!eglChooseConfig(d.display, configAttribs, &config, 1, &configs) || configs == 0) {
+    if (!noConfig) throw Error(concat("EglContext: no EGL config with desktop OpenGL on ", d.platform));
+    config = EGL_NO_CONFIG_KHR;
+  }
+  const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
+                                   4,
+                                   EGL_CONTEXT_MINOR_VERSION,
+                                   5,
+                                   EGL_CONTEXT_OPENGL_PROFILE_MASK,
+                                   EGL_CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                                   EGL_CONTEXT_OPENGL_DEBUG,
+                                   options.debug ? EGL_TRUE : EGL_FALSE,
+                                   EGL_NONE};
+  EGLContext share = options.share ? static_cast<EGLContext>(options.share->context_) : EGL_NO_CONTEXT;
+  context_ = eglCreateContext(d.display, config, share, contextAttribs);
+  if (context_ == EGL_NO_CONTEXT)
+    throw Error(concat("EglContext: eglCreateContext for OpenGL 4.5 core failed on ", d.platform,
+                       " (EGL error 0x", std::hex, eglGetError(),
+                       "). Missing: an OpenGL 4.5 core profile driver"));
+  makeCurrent();
+  try {
+    checkGl45("EglContext (" + d.platform + ")");
+  } catch (...) {
+    releaseCurrent();
+    eglDestroyContext(d.display, context_);
+    throw;
+  }
+  description_ = d.platform + ": " + glDescription();
+}
+
+EglContext::~EglContext() {
+  const Display& d = display();
+  if (eglGetCurrentContext() == context_) releaseCurrent();
+  eglDestroyContext(d.display, context_);
+}
+
+void EglContext::makeCurrent() {
+  if (!eglMakeCurrent(display().display, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+    throw Error(concat("EglContext: eglMakeCurrent failed (EGL error 0x", std::hex, eglGetError(), ")"));
+}
+
+void EglContext::releaseCurrent() {
+  eglMakeCurrent(display().display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+}
+
+}  // namespace sandstorm

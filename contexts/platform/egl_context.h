@@ -1,0 +1,40 @@
+// EglContext: an offscreen OpenGL 4.5 core context through EGL, with no window
+// and no display server. It has no default framebuffer: draw into FBOs.
+//
+// The display is chosen once per process: the EGL device platform
+// (EGL_EXT_platform_device: NVIDIA and other GPU drivers), then Mesa's
+// surfaceless platform (llvmpipe on machines without a GPU). Contexts may share
+// objects with another EglContext.
+#pragma once
+
+#include <memory>
+
+#include "contexts/platform/gl_context.h"
+
+namespace sandstorm {
+
+class EglContext final : public GlContext {
+ public:
+  struct Options {
+    const EglContext* share = nullptr;
+    bool debug = false;
+  };
+
+  explicit EglContext(const Options& options);
+  EglContext() : EglContext(Options{}) {}
+  ~EglContext() override;
+  EglContext(const EglContext&) = delete;
+  EglContext& operator=(const EglContext&) = delete;
+
+  void makeCurrent() override;
+  void releaseCurrent() override;
+  void swapBuffers() override {}
+  glm::ivec2 framebufferSize() const override { return {0, 0}; }
+  std::string description() const override { return description_; }
+
+ private:
+  void* context_ = nullptr;  // EGLContext
+  std::string description_;
+};
+
+}  // namespace sandstorm

@@ -1,0 +1,47 @@
+#include "contexts/platform/gl_context.h"
+
+#include <epoxy/gl.h>
+
+#include "core/util/error.h"
+#include "core/util/log.h"
+
+namespace sandstorm {
+namespace {
+
+void GLAPIENTRY onDebugMessage(GLenum, GLenum type, GLuint id, GLenum severity, GLsizei,
+                               const GLchar* message, const void*) {
+  if (severity == GL_DEBUG_SEVERITY_NOTIFICATION) return;
+  if (type == GL_DEBUG_TYPE_ERROR || severity == GL_DEBUG_SEVERITY_HIGH)
+    log::error("GL (", id, "): ", message);
+  else if (severity == GL_DEBUG_SEVERITY_MEDIUM)
+    log::warn("GL (", id, "): ", message);
+  else
+    log::debug("GL (", id, "): ", message);
+}
+
+}  // namespace
+
+std::string glDescription() {
+  const auto str = [](GLenum e) {
+    const auto* s = reinterpret_cast<const char*>(glGetString(e));
+    return std::string(s ? s : "?");
+  };
+  return "OpenGL " + str(GL_VERSION) + ", " + str(GL_RENDERER);
+}
+
+void checkGl45(const std::string& provider) {
+  const int version = epoxy_gl_version();
+  if (version < 45)
+    throw Error(concat(provider, ": OpenGL 4.5 core is required, but the context offers ",
+                       version / 10, ".", version % 10, " (", glDescription(),
+                       "). Missing: OpenGL 4.5 (direct state access, transform feedback 3, ",
+                       "geometry and compute shaders). Update the driver or use Mesa's llvmpipe."));
+  GLint profile = 0;
+  glGetIntegerv(GL_CONTEXT_PROFILE_MASK, &profile);
+  if (!(profile & GL_CONTEXT_CORE_PROFILE_BIT))
+    throw Error(concat(provider, ": expected a core profile context, got ", glDescription()));
+  glEnable(GL_DEBUG_OUTPUT);
+  glDebugMessageCallback(onDebugMessage, nullptr);
+}
+
+}  // namespace sandstorm

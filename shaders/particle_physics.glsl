@@ -1,0 +1,164 @@
+// Per-particle rules: the twin of core/sim/particle_physics.cpp. Same
+// operations in the same order, all `precise`, so llvmpipe and the CPU agree to
+// the bit. Needs sim_block.glsl.
+
+vec3 fieldSample(vec3 p) {
+  // Trilinear between grid points with texelFetch (not the sampler's filter,
+  // whose weights have only 8 fractional bits on most GPUs).
+  ivec3 dims = sim.fieldDims.xyz;
+  precise vec3 u = clamp((p - sim.fieldMin.xyz) * sim.fieldIndexScale.xyz, vec3(0.0), vec3(dims - 1));
+  ivec3 i0 = min(ivec3(floor(u)), max(dims - 2, ivec3(0)));
+  ivec3 i1 = min(i0 + 1, dims - 1);
+  precise vec3 f = u - vec3(i0);
+  vec3 c000 = texelFetch(uField, ivec3(i0.x, i0.y, i0.z), 0).xyz;
+  vec3 c100 = texelFetch(uField, ivec3(i1.x, i0.y, i0.z), 0).xyz;
+  vec3 c010 = texelFetch(uField, ivec3(i0.x, i1.y, i0.z), 0).xyz;
+  vec3 c110 = texelFetch(uField, ivec3(i1.x, i1.y, i0.z), 0).xyz;
+  vec3 c001 = texelFetch(uField, ivec3(i0.x, i0.y, i1.z), 0).xyz;
+  vec3 c101 = texelFetch(uField, ivec3(i1.x, i0.y, i1.z), 0).xyz;
+  vec3 c011 = texelFetch(uField, ivec3(i0.x, i1.y, i1.z), 0).xyz;
+  vec3 c111 = texelFetch(uField, ivec3(i1.x, i1.y, i1.z), 0).xyz;
+  precise vec3 c00 = c000 + (c100 - c000) * f.x;
+  precise vec3 c10 = c010 + (c110 - c010) * f.x;
+  precise vec3 c01 = c001 + (c101 - c001) * f.x;
+  precise vec3 c11 = c011 + (c111 - c011) * f.x;
+  precise vec3 c0 = c00 + (c10 - c00) * f.y;
+  precise vec3 c1 = c01 + (c11 - c01) * f.y;
+  precise vec3 c = c0 + (c1 - c0) * f.z;
+  return c;
+}
+
+mat3 placementRotation() {
+  return mat3(sim.placementRotation[0].xyz, sim.placementRotation[1].xyz, sim.placementRotation[2].xyz);
+}
+
+vec3 toLocal(vec3 room) {
+  precise vec3 local = (transpose(placementRotation()) * (room - sim.placementOffset.xyz)) * sim.stepParams.w;
+  return local;
+}
+
+vec3 toRoom(vec3 local) {
+  precise vec3 room = sim.placementOffset.xyz + (placementRotation() * local) * sim.placementOffset.w;
+  return room;
+}
+
+vec3 fieldAt(vec3 x) {
+  if (sim.fieldDims.w == 0) return vec3(0.0);
+  precise vec3 f = sim.stepParams.y * ((placementRotation() * fieldSample(toLocal(x))) * sim.placementOffset.w);
+  return f;
+}
+
+struct Slope {
+  vec3 dx;
+  vec3 dv;
+};
+
+Slope derivative(vec3 x, vec3 v) {
+  precise vec3 f = fieldAt(x);
+  Slope s;
+  if (sim.modes.x == kMotionTracer) {
+    s.dx = f;
+    s.dv = vec3(0.0);
+  } else if (sim.modes.x == kMotionForce) {
+    s.dx = v;
+    precise vec3 a = f + sim.gravity.xyz;
+    s.dv = a;
+  } else {
+    s.dx = v;
+    precise vec3 a = (f - v) * sim.gravity.w + sim.gravity.xyz;
+    s.dv = a;
+  }
+  return s;
+}
+
+// Euler is the thesis's: velocity first, then position with the new velocity.
+void integrate(inout vec3 x, inout vec3 v) {
+  float h = sim.stepParams.x;
+  bool tracer = sim.modes.x == kMotionTracer;
+  Slope k1 = derivative(x, v);
+  if (sim.modes.y == kEuler) {
+    precise vec3 v1 = tracer ? k1.dx : v + h * k1.dv;
+    precise vec3 x1 = x + h * v1;
+    v = v1;
+    x = x1;
+    return;
+  }
+  precise float h2 = 0.5 * h;
+  precise vec3 x2 = x + h2 * k1.dx;
+  precise vec3 v2 = v + h2 * k1.dv;
+  Slope k2 = derivative(x2, v2);
+  precise vec3 dx, dv;
+  if (sim.modes.y == kRK2) {
+    dx = k2.dx;
+    dv = k2.dv;
+  } else {
+    precise vec3 x3 = x + h2 * k2.dx;
+    precise vec3 v3 = v + h2 * k2.dv;
+    Slope k3 = derivative(x3, v3);
+    precise vec3 x4 = x + h * k3.dx;
+    precise vec3 v4 = v + h * k3.dv;
+    Slope k4 = derivative(x4, v4);
+    dx = (k1.dx + 2.0 * k2.dx + 2.0 * k3.dx + k4.dx) * (1.0 / 6.0);
+    dv = (k1.dv + 2.0 * k2.dv + 2.0 * k3.dv + k4.dv) * (1.0 / 6.0);
+  }
+  precise vec3 xn = x + h * dx;
+  precise vec3 vn = tracer ? dx : v + h * dv;
+  x = xn;
+  v = vn;
+}
+
+float terrainHeight(vec2 p) {
+  ivec2 dims = sim.terrainDims.xy;
+  precise vec2 u = clamp((p - sim.terrainMinScale.xy) * sim.terrainMinScale.zw, vec2(0.0), vec2(dims - 1));
+  ivec2 i0 = min(ivec2(floor(u)), dims - 2);
+  precise vec2 f = u - vec2(i0);
+  float h00 = texelFetch(uTerrain, i0, 0).x;
+  float h10 = texelFetch(uTerrain, i0 + ivec2(1, 0), 0).x;
+  float h01 = texelFetch(uTerrain, i0 + ivec2(0, 1), 0).x;
+  float h11 = texelFetch(uTerrain, i0 + ivec2(1, 1), 0).x;
+  precise float h0 = h00 + (h10 - h00) * f.x;
+  precise float h1 = h01 + (h11 - h01) * f.x;
+  precise float h = h0 + (h1 - h0) * f.y;
+  return h;
+}
+
+// Ages, moves and bounds a particle; false when it dies.
+bool advance(inout Particle p) {
+  precise float life = p.positionLife.w - sim.stepParams.x;
+  if (life <= 0.0) return false;
+  vec3 x = p.positionLife.xyz;
+  vec3 v = p.velocityKind.xyz;
+  integrate(x, v);
+
+  if (sim.fieldDims.w != 0) {
+    vec3 bmin = sim.domainMin.xyz, bmax = sim.domainMax.xyz;
+    vec3 local = toLocal(x);
+    if (any(lessThan(local, bmin)) || any(greaterThan(local, bmax))) {
+      if (sim.modes.z == kBoundaryKill) return false;
+      if (sim.modes.z == kBoundaryClamp) {
+        x = toRoom(clamp(local, bmin, bmax));
+      } else {
+        precise vec3 wrapped = local;
+        for (int a = 0; a < 3; ++a) {
+          precise float e = bmax[a] - bmin[a];
+          precise float r = local[a] - bmin[a];
+          if (e < 1e30) wrapped[a] = bmin[a] + (r - e * floor(r / e));
+        }
+        x = toRoom(wrapped);
+      }
+    }
+  }
+  if (sim.modes.w != 0 && sim.terrainDims.z != 0) {
+    float ground = terrainHeight(x.xy);
+    if (x.z < ground) {
+      x.z = ground;
+      if (v.z < 0.0) {
+        precise float bounced = -v.z * sim.stepParams.z;
+        v.z = bounced;
+      }
+    }
+  }
+  p.positionLife = vec4(x, life);
+  p.velocityKind = vec4(v, p.velocityKind.w);
+  return true;
+}

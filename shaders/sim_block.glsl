@@ -1,0 +1,40 @@
+// The simulation's uniform block: the twin of contexts/particles/sim_block.h.
+
+const int kMaxEmitters = 16;
+const int kMotionTracer = 0, kMotionForce = 1, kMotionDrag = 2;
+const int kEuler = 0, kRK2 = 1, kRK4 = 2;
+const int kBoundaryKill = 0, kBoundaryClamp = 1, kBoundaryWrap = 2;
+const int kShapeBox = 0, kShapeSphere = 1, kShapeDisc = 2, kShapePoint = 3;
+
+struct EmitterBlock {
+  vec4 position;     // xyz
+  vec4 size;         // width, depth, height, radius
+  vec4 life;         // lifetime, lifetime variance, spread
+  vec4 velocity;     // xyz
+  ivec4 shapeCount;  // shape, granted count, first slot
+};
+
+layout(std140, binding = 0) uniform SimBlock {
+  vec4 fieldMin;
+  vec4 fieldIndexScale;
+  ivec4 fieldDims;        // xyz, w: 1 when there is a field
+  vec4 domainMin;
+  vec4 domainMax;
+  vec4 placementOffset;   // xyz, w: scale
+  vec4 placementRotation[3];
+  vec4 gravity;           // xyz, w: 1 / drag time
+  vec4 stepParams;        // dt, field strength, restitution, 1 / scale
+  ivec4 modes;            // motion, integrator, boundary, ground collision
+  uvec4 frameSeed;        // frame, seed lo, seed hi, emitter count
+  vec4 terrainMinScale;   // min xy, index scale xy
+  ivec4 terrainDims;      // xy, z: 1 when there is terrain
+  EmitterBlock emitters[kMaxEmitters];
+} sim;
+
+layout(binding = 0) uniform sampler3D uField;    // RGB32F, read with texelFetch only
+layout(binding = 1) uniform sampler2D uTerrain;  // R32F heights
+
+struct Particle {
+  vec4 positionLife;
+  vec4 velocityKind;
+};
