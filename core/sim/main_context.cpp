@@ -55,6 +55,16 @@ void MainContext::reset() {
   resetRequested_ = true;
 }
 
+void MainContext::setViewer(const Viewer& viewer) {
+  std::lock_guard lock(mutex_);
+  viewer_ = viewer;
+}
+
+double MainContext::time() const {
+  std::lock_guard lock(mutex_);
+  return time_;
+}
+
 void MainContext::schedule(std::uint32_t frame, const StateChange& change) {
   std::lock_guard lock(mutex_);
   scheduled_.emplace(frame, change);
@@ -75,6 +85,9 @@ FramePacket MainContext::next() {
   packet.frame = frame_;
   packet.dt = dt;
   packet.seed = options_.seed;
+  packet.time = time_;
+  packet.viewer = viewer_;
+  time_ += dt;
   packet.reset = std::exchange(resetRequested_, false);
 
   // Scheduled changes for this frame (or overdue) come first, then live requests.

@@ -47,6 +47,9 @@ class MainContext {
   void removeEmitter(int index);
   void setField(FieldUpdate field);
   void reset();
+  // The head and navigation the next packets carry (the app samples its trackers).
+  void setViewer(const Viewer& viewer);
+  double time() const;
   // A validated change that takes effect at `frame` (or the next frame if that has passed).
   void schedule(std::uint32_t frame, const StateChange& change);
 
@@ -75,6 +78,8 @@ class MainContext {
   bool fieldChanged_ = true;  // packet 0 always carries the field
   bool resetRequested_ = false;
   std::uint32_t frame_ = 0;
+  double time_ = 0.0;
+  Viewer viewer_;
   std::optional<std::chrono::steady_clock::time_point> lastTick_;
   ChangeListener listener_;
 };
