@@ -77,8 +77,8 @@ FramePacket MainContext::next() {
     const auto now = std::chrono::steady_clock::now();
     dt = lastTick_ ? std::chrono::duration<float>(now - *lastTick_).count() : 1.0f / 60.0f;
     lastTick_ = now;
+    dt = std::clamp(dt, 0.0f, options_.maxDt);
   }
-  dt = std::clamp(dt, 0.0f, options_.maxDt);
 
   std::lock_guard lock(mutex_);
   FramePacket packet;

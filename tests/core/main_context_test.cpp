@@ -75,6 +75,14 @@ TEST(MainContext, PauseStopsTimeAndEmission) {
   EXPECT_FLOAT_EQ(p.simDt, 0.01f);
 }
 
+TEST(MainContext, AFixedStepIsTakenAsGiven) {
+  MainContext::Options o;
+  o.fixedDt = 0.25f;  // longer than maxDt, which only bounds measured stalls
+  MainContext main(ParticleState{}, FieldUpdate{}, o);
+  EXPECT_FLOAT_EQ(main.next().dt, 0.25f);
+  EXPECT_DOUBLE_EQ(main.next().time, 0.25);
+}
+
 TEST(MainContext, RecordsEveryChangeWithItsFrame) {
   MainContext main(ParticleState{}, FieldUpdate{}, fixed());
   std::vector<std::pair<std::uint32_t, std::string>> log;
