@@ -291,15 +291,52 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
   return w;
 }
 
-AppConfig read(const toml::value& root, const std::string& file, std::optional<int> monitors) {
+toml::value parseToml(const std::string& text, const std::string& name) {
+  try {
+    std::istringstream in(text);
+    return toml::parse(in, name);
+  } catch (const toml::syntax_error& e) {
+    throw Error(concat(name, ": TOML syntax error:\n", e.what()));
+  }
+}
+
+std::string readFile(const std::filesystem::path& path, const std::string& from) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(concat(from, "cannot open the configuration file ", path.string()));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Reads `root` on top of `c` (the included file's settings, if any).
+void read(const toml::value& root, const std::string& file, std::optional<int> monitors, AppConfig& c,
+          int depth);
+
+AppConfig readWithIncludes(const toml::value& root, const std::string& file, std::optional<int> monitors,
+                           int depth) {
+  AppConfig c;
+  read(root, file, monitors, c, depth);
+  return c;
+}
+
+void read(const toml::value& root, const std::string& file, std::optional<int> monitors, AppConfig& c,
+          int depth) {
   const Reader r(file);
-  r.checkKeys(root, "", {"run", "field", "scene", "sim", "render", "emitter", "head", "navigation", "wall"});
+  r.checkKeys(root, "",
+              {"include", "run", "field", "scene", "sim", "render", "emitter", "head", "navigation", "wall"});
+  // include = "scene.toml": that file's settings first, this file's on top.
+  if (const toml::value* include = r.find(root, "include")) {
+    if (!include->is_string()) r.fail(*include, "include", "expected a file name");
+    if (depth > 4) r.fail(*include, "include", "includes nest too deeply");
+    const std::filesystem::path path = std::filesystem::path(file).parent_path() / include->as_string().str;
+    const toml::value inner = parseToml(readFile(path, r.at(*include) + ": include: "), path.string());
+    read(inner, path.string(), monitors, c, depth + 1);
+  }
   const auto section = [&](const char* name) -> const toml::value* {
     const toml::value* v = r.find(root, name);
     if (v && !v->is_table()) r.fail(*v, name, "expected a table [" + std::string(name) + "]");
     return v;
   };
-  AppConfig c;
   if (const auto* t = section("run")) readRun(r, *t, c.run);
   if (const auto* t = section("field")) readField(r, *t, c.field);
   if (const auto* t = section("scene")) readScene(r, *t, c.scene);
@@ -319,8 +356,9 @@ AppConfig read(const toml::value& root, const std::string& file, std::optional<i
     }
   }
   const toml::value* walls = r.find(root, "wall");
-  if (!walls) throw Error(concat(file, ": no [[wall]] given; expected at least one wall, window or camera"));
+  if (!walls) return;  // an included scene file, or the walls come from an include
   if (!walls->is_array()) r.fail(*walls, "wall", "expected [[wall]] tables");
+  c.walls.clear();
   std::set<std::string> names;
   for (const toml::value& w : walls->as_array()) {
     if (!w.is_table()) r.fail(w, "wall", "expected a table");
@@ -331,7 +369,6 @@ AppConfig read(const toml::value& root, const std::string& file, std::optional<i
   int menus = 0;
   for (const WallSpec& w : c.walls) menus += w.menu ? 1 : 0;
   if (menus > 1) throw Error(concat(file, ": the menu is shown on ", menus, " walls; expected at most one"));
-  return c;
 }
 
 }  // namespace
@@ -343,24 +380,15 @@ bool AppConfig::anyWindow() const {
 }
 
 AppConfig parseConfig(const std::string& text, const std::filesystem::path& name, std::optional<int> monitors) {
-  toml::value root;
-  try {
-    std::istringstream in(text);
-    root = toml::parse(in, name.string());
-  } catch (const toml::syntax_error& e) {
-    throw Error(concat(name.string(), ": TOML syntax error:\n", e.what()));
-  }
-  AppConfig c = read(root, name.string(), monitors);
+  AppConfig c = readWithIncludes(parseToml(text, name.string()), name.string(), monitors, 0);
+  if (c.walls.empty())
+    throw Error(concat(name.string(), ": no [[wall]] given; expected at least one wall, window or camera"));
   c.path = name;
   return c;
 }
 
 AppConfig loadConfig(const std::filesystem::path& path, std::optional<int> monitors) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw Error(concat(path.string(), ": cannot open the configuration file"));
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseConfig(text.str(), path, monitors);
+  return parseConfig(readFile(path, ""), path, monitors);
 }
 
 const char* toString(StereoMode mode) {
