@@ -4,7 +4,9 @@
 #include <chrono>
 #include <csignal>
 #include <cstdlib>
+#include <fstream>
 #include <memory>
+#include <mutex>
 
 #include "app/scene_setup.h"
 #include "contexts/platform/egl_context.h"
@@ -14,7 +16,9 @@
 #include "core/sim/attribute_table.h"
 #include "core/sim/main_context.h"
 #include "core/sim/particle_dump.h"
+#include "core/sim/session_log.h"
 #include "core/util/error.h"
+#include "core/util/hash.h"
 #include "core/util/log.h"
 
 namespace sandstorm {
@@ -63,6 +67,20 @@ App::App(AppConfig config, AppOptions options) : config_(std::move(config)), opt
   if (offscreenOnly && !options_.screenshotDir) options_.screenshotDir = "out";
   if (offscreenOnly && config_.run.fixedDt == 0.0f) config_.run.fixedDt = 1.0f / 60.0f;
   applySets(config_, options_.sets);
+  if (!options_.walls.empty()) {
+    std::vector<WallSpec> chosen;
+    for (const std::string& name : options_.walls) {
+      const auto it = std::find_if(config_.walls.begin(), config_.walls.end(),
+                                   [&](const WallSpec& w) { return w.name == name; });
+      if (it == config_.walls.end()) {
+        std::string known;
+        for (const WallSpec& w : config_.walls) known += (known.empty() ? "" : ", ") + w.name;
+        throw Error(concat("--walls: no wall named '", name, "' in ", config_.path.string(), "; it has ", known));
+      }
+      chosen.push_back(*it);
+    }
+    config_.walls = std::move(chosen);
+  }
 }
 
 int App::run() {
@@ -75,6 +93,13 @@ int App::run() {
   mainOptions.seed = config_.run.seed;
   mainOptions.fixedDt = config_.run.fixedDt;
   MainContext main(config_.particles, std::move(field), mainOptions);
+  std::unique_ptr<SessionRecorder> recorder;
+  if (options_.record) {
+    recorder = std::make_unique<SessionRecorder>(*options_.record);
+    main.setChangeListener([&](std::uint32_t frame, const StateChange& c) { recorder->record(frame, c); });
+  }
+  if (options_.replay)
+    for (const ScheduledChange& s : readSessionLog(*options_.replay)) main.schedule(s.frame, s.change);
   std::unique_ptr<HeadTracker> head = makeHeadTracker(config_.head);
   const Navigation navigation = Navigation::from(config_.navigation);
 
@@ -112,9 +137,18 @@ int App::run() {
   }
 
   const int lastFrame = config_.run.frames > 0 ? config_.run.frames - 1 : -1;
+  std::mutex hashMutex;
+  std::vector<std::string> hashLines;
   for (std::size_t i = 0; i < walls.size(); ++i) {
     const bool first = i == 0;
-    walls[i]->setFrameHook([this, lastFrame, first](WallRenderer& wall, const FramePacket& packet) {
+    walls[i]->setFrameHook([&, this, lastFrame, first](WallRenderer& wall, const FramePacket& packet) {
+      if (options_.hashLog) {
+        const std::vector<Particle> particles = wall.particles().update().readBack();
+        const std::string line = concat(packet.frame, " ", wall.wall().name, " ", particles.size(), " ", std::hex,
+                                        hashOf(std::span<const Particle>(particles)));
+        std::lock_guard lock(hashMutex);
+        hashLines.push_back(line);
+      }
       const int f = int(packet.frame);
       const bool last = f == lastFrame;
       if (options_.screenshotDir && (last || (options_.screenshotEvery > 0 && f % options_.screenshotEvery == 0))) {
@@ -162,6 +196,14 @@ int App::run() {
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
 
+  if (options_.hashLog) {
+    std::sort(hashLines.begin(), hashLines.end(), [](const std::string& a, const std::string& b) {
+      return std::stoul(a) != std::stoul(b) ? std::stoul(a) < std::stoul(b) : a < b;
+    });
+    std::ofstream out(*options_.hashLog);
+    for (const std::string& line : hashLines) out << line << "\n";
+    if (!out) throw Error(concat("--hash-log: cannot write ", options_.hashLog->string()));
+  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const auto& w : walls) failed = failed || w->error().has_value();
   log::info("stats: ", frames, " frames in ", seconds, " s (", frames / std::max(seconds, 1e-9), " frames/s), ",

@@ -21,6 +21,10 @@ struct AppOptions {
   std::optional<std::filesystem::path> dumpParticles;
   std::vector<std::string> sets;                  // "key=value" attribute overrides
   bool headless = false;                          // force offscreen walls
+  std::optional<std::filesystem::path> hashLog;   // per frame and wall: particle count and buffer hash
+  std::vector<std::string> walls;                 // run only these walls (empty: all)
+  std::optional<std::filesystem::path> record;    // write every change with its frame
+  std::optional<std::filesystem::path> replay;    // apply a recorded session's changes at their frames
 };
 
 // Applies --set overrides to the configuration's particle state. Throws Error.

@@ -19,6 +19,12 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   cli.add_option("--dump-particles", dumpPath, "Write the last frame's particles as VTK PolyData (.vtp)");
   cli.add_option("--set", options.sets, "Set an attribute, e.g. --set emitter.0.rate=50000 (repeatable)");
+  std::string hashLog;
+  cli.add_option("--hash-log", hashLog, "Write each frame's particle count and buffer hash per wall to FILE");
+  cli.add_option("--walls", options.walls, "Run only these walls of the configuration (by name)")->delimiter(',');
+  std::string record, replay;
+  cli.add_option("--record", record, "Record every attribute change with its frame to FILE");
+  cli.add_option("--replay", replay, "Replay a recorded session: its changes at their frames")->check(CLI::ExistingFile);
   cli.add_flag("--headless", options.headless, "Render every wall offscreen (EGL), even with a display");
   cli.add_option("--log-level", logLevel, "error, warn, info or debug")->check(CLI::IsMember({"error", "warn", "info", "debug"}));
   try {
@@ -33,6 +39,9 @@ int main(int argc, char** argv) {
   }
   if (frames >= 0) options.frames = frames;
   if (!screenshotDir.empty()) options.screenshotDir = screenshotDir;
+  if (!hashLog.empty()) options.hashLog = hashLog;
+  if (!record.empty()) options.record = record;
+  if (!replay.empty()) options.replay = replay;
   if (!dumpPath.empty()) {
     if (!dumpPath.ends_with(".vtp")) {
       log::error("--dump-particles ", dumpPath, ": expected a .vtp file name");

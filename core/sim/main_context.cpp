@@ -50,10 +50,7 @@ void MainContext::setField(FieldUpdate field) {
   fieldChanged_ = true;
 }
 
-void MainContext::reset() {
-  std::lock_guard lock(mutex_);
-  resetRequested_ = true;
-}
+void MainContext::reset() { enqueue(StateChange::reset()); }
 
 void MainContext::setViewer(const Viewer& viewer) {
   std::lock_guard lock(mutex_);
@@ -88,7 +85,6 @@ FramePacket MainContext::next() {
   packet.time = time_;
   packet.viewer = viewer_;
   time_ += dt;
-  packet.reset = std::exchange(resetRequested_, false);
 
   // Scheduled changes for this frame (or overdue) come first, then live requests.
   std::vector<StateChange> due;
@@ -105,6 +101,7 @@ FramePacket MainContext::next() {
       continue;
     }
     if (listener_) listener_(frame_, change);
+    if (change.kind == StateChange::Kind::Reset) packet.reset = true;
     packet.changes.push_back(std::move(change));
   }
   pending_ = state_;

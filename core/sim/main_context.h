@@ -76,7 +76,6 @@ class MainContext {
   std::multimap<std::uint32_t, StateChange> scheduled_;
   std::shared_ptr<const FieldUpdate> field_;
   bool fieldChanged_ = true;  // packet 0 always carries the field
-  bool resetRequested_ = false;
   std::uint32_t frame_ = 0;
   double time_ = 0.0;
   Viewer viewer_;
