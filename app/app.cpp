@@ -92,6 +92,7 @@ int App::run() {
   MainContext::Options mainOptions;
   mainOptions.seed = config_.run.seed;
   mainOptions.fixedDt = config_.run.fixedDt;
+  mainOptions.capacityLimit = config_.run.capacityLimit;
   MainContext main(config_.particles, std::move(field), mainOptions);
   std::unique_ptr<SessionRecorder> recorder;
   if (options_.record) {
@@ -131,8 +132,14 @@ int App::run() {
       context = std::make_unique<EglContext>();
     }
     log::info("wall '", spec.name, "': ", context->description());
-    WallRendererSetup setup{spec, main.initialState(), terrain, config_.run.capacity, config_.run.nearPlane,
-                            config_.run.farPlane};
+    WallRendererSetup setup{.wall = spec,
+                            .initial = main.initialState(),
+                            .terrain = terrain,
+                            .capacity = config_.run.capacity,
+                            .capacityLimit = config_.run.capacityLimit,
+                            .backend = config_.run.backend,
+                            .nearPlane = config_.run.nearPlane,
+                            .farPlane = config_.run.farPlane};
     walls.push_back(std::make_unique<RenderContext>(std::move(context), setup, channel, i, barrier));
   }
 

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "contexts/particles/particle_geo_update.h"
+#include "contexts/particles/particle_backend.h"
 #include "contexts/render/view_targets.h"
 
 namespace sandstorm {
@@ -43,7 +43,7 @@ ParticleRender::ParticleRender()
       points_(std::vector<std::string>{"particle_render.vert", "particle_render.frag"}, std::vector<std::string>{"POINTS"}),
       sprite_(makeSprite()) {}
 
-void ParticleRender::draw(const ParticleGeoUpdate& particles, const ViewTargets& targets, RenderMode mode) const {
+void ParticleRender::draw(const ParticleBackend& particles, const ViewTargets& targets, RenderMode mode) const {
   glBindFramebuffer(GL_FRAMEBUFFER, targets.particleFramebuffer());
   glViewport(0, 0, targets.size().x, targets.size().y);
   const float clear[4] = {0, 0, 0, 0};

@@ -11,14 +11,14 @@
 
 namespace sandstorm {
 
-class ParticleGeoUpdate;
+class ParticleBackend;
 class ViewTargets;
 
 class ParticleRender {
  public:
   ParticleRender();
   // Expects the view and render blocks bound (bindings 1 and 2).
-  void draw(const ParticleGeoUpdate& particles, const ViewTargets& targets, RenderMode mode) const;
+  void draw(const ParticleBackend& particles, const ViewTargets& targets, RenderMode mode) const;
 
  private:
   gl::Program billboards_, points_;

@@ -7,8 +7,9 @@
 #pragma once
 
 #include <memory>
+#include <string>
 
-#include "contexts/particles/particle_geo_update.h"
+#include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_post.h"
 #include "contexts/particles/particle_render.h"
 #include "core/sim/frame_packet.h"
@@ -20,7 +21,13 @@ class ViewTargets;
 
 class ParticleSystem {
  public:
-  ParticleSystem(const ParticleState& initial, std::size_t capacity);
+  struct Options {
+    std::size_t capacity = 1u << 20;
+    std::size_t capacityLimit = 1u << 26;  // how far raising sim.maximum may grow the buffers
+    std::string backend = "tf-gs";         // "tf-gs" or "compute"
+  };
+
+  ParticleSystem(const ParticleState& initial, const Options& options);
 
   void setTerrain(std::shared_ptr<const HeightMap> terrain);
   // Applies the packet (reset, changes, field) and runs this frame's update.
@@ -31,13 +38,14 @@ class ParticleSystem {
   void render(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const;
 
   const ParticleState& state() const { return state_; }
-  const ParticleGeoUpdate& update() const { return update_; }
+  const ParticleBackend& update() const { return *update_; }
   std::shared_ptr<const FieldUpdate> field() const { return field_; }
   std::uint32_t frame() const { return frame_; }
 
  private:
   ParticleState state_;
-  ParticleGeoUpdate update_;
+  std::size_t capacityLimit_;
+  std::unique_ptr<ParticleBackend> update_;
   ParticleRender render_;
   ParticlePost post_;
   std::shared_ptr<const FieldUpdate> field_;

@@ -10,7 +10,7 @@ WallRenderer::WallRenderer(const WallRendererSetup& s)
     : wall_(s.wall),
       near_(s.nearPlane),
       far_(s.farPlane),
-      system_(s.initial, s.capacity),
+      system_(s.initial, ParticleSystem::Options{s.capacity, s.capacityLimit, s.backend}),
       anaglyph_(std::vector<std::string>{"fullscreen.vert", "anaglyph.frag"}),
       emptyVao_(gl::createVertexArray()) {
   if (s.terrain) {

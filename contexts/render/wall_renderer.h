@@ -22,6 +22,8 @@ struct WallRendererSetup {
   ParticleState initial;
   std::shared_ptr<const HeightMap> terrain;
   std::size_t capacity = 1u << 20;
+  std::size_t capacityLimit = 1u << 26;
+  std::string backend = "tf-gs";
   float nearPlane = 0.05f;
   float farPlane = 500.0f;
 };

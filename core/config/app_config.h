@@ -90,7 +90,8 @@ struct SceneSpec {
 
 struct RunSpec {
   std::uint64_t seed = 1;
-  std::size_t capacity = 1u << 20;
+  std::size_t capacity = 1u << 20;        // initial particle buffer size
+  std::size_t capacityLimit = 1u << 26;   // raising sim.maximum grows the buffers up to this
   float fixedDt = 0.0f;  // > 0: fixed steps; 0: the main context's clock
   int frames = 0;        // 0: until a window closes
   std::string backend = "tf-gs";

@@ -143,12 +143,14 @@ void setAttributes(const Reader& r, const toml::value& table, const std::string&
 }
 
 void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
-  r.checkKeys(t, "run", {"seed", "capacity", "fixed_dt", "frames", "backend", "near", "far"});
+  r.checkKeys(t, "run", {"seed", "capacity", "capacity_limit", "fixed_dt", "frames", "backend", "near", "far"});
   if (const toml::value* seed = r.find(t, "seed")) {
     if (!seed->is_integer() || seed->as_integer() < 0) r.fail(*seed, "run.seed", "expected a non-negative integer");
     run.seed = std::uint64_t(seed->as_integer());
   }
   run.capacity = std::size_t(r.integer(t, "capacity", "run", int(run.capacity), 1, 1 << 27));
+  run.capacityLimit = std::size_t(r.integer(t, "capacity_limit", "run", int(run.capacityLimit), 1, 1 << 28));
+  if (run.capacityLimit < run.capacity) r.fail(t, "run.capacity_limit", "expected capacity_limit >= capacity");
   run.fixedDt = r.real(t, "fixed_dt", "run", run.fixedDt);
   if (run.fixedDt < 0.0f || run.fixedDt > 1.0f) r.fail(t, "run.fixed_dt", "expected 0 (real clock) to 1 s");
   run.frames = r.integer(t, "frames", "run", run.frames, 0, 100000000);

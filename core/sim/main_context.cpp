@@ -21,8 +21,15 @@ AttributeResult MainContext::set(std::string_view key, const AttributeValue& val
   std::lock_guard lock(mutex_);
   ParticleState trial = pending_;
   AttributeResult result = table.set(trial, key, value);  // throws before anything changes
+  const std::string canonical = table.canonical(key);
+  if (canonical == "sim.maximum" && std::size_t(trial.sim.maximum) > options_.capacityLimit) {
+    trial.sim.maximum = int(options_.capacityLimit);
+    result.applied = trial.sim.maximum;
+    result.warning = concat("sim.maximum: ", toString(value), " exceeds the particle buffers' limit (run.capacity_limit = ",
+                            options_.capacityLimit, "); capped to ", options_.capacityLimit);
+  }
   if (!result.warning.empty()) log::warn(result.warning);
-  const StateChange change = StateChange::set(table.canonical(key), result.applied);
+  const StateChange change = StateChange::set(canonical, result.applied);
   pending_ = std::move(trial);
   queued_.push_back(change);
   return result;

@@ -57,7 +57,12 @@ Image render(const ParticleState& state, int frames, std::shared_ptr<const Vecto
   MainContext::Options options;
   options.fixedDt = 0.25f;
   MainContext main(state, FieldUpdate{field, {}}, options);
-  WallRendererSetup setup{cameraWall(), state, std::make_shared<HeightMap>(HeightMap::flat(0.0f)), 4096, 0.1f, 100.0f};
+  WallRendererSetup setup{.wall = cameraWall(),
+                          .initial = state,
+                          .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
+                          .capacity = 4096,
+                          .nearPlane = 0.1f,
+                          .farPlane = 100.0f};
   WallRenderer wall(setup);
   for (int f = 0; f < frames; ++f) wall.frame(main.next(), {0, 0});
   return wall.capture();
@@ -94,7 +99,12 @@ TEST_F(RenderTest, TheFieldCarriesParticlesToWhereItSays) {
   MainContext::Options options;
   options.fixedDt = 0.25f;
   MainContext main(first, FieldUpdate{field, {}}, options);
-  WallRendererSetup setup{cameraWall(), first, std::make_shared<HeightMap>(HeightMap::flat(0.0f)), 4096, 0.1f, 100.0f};
+  WallRendererSetup setup{.wall = cameraWall(),
+                          .initial = first,
+                          .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
+                          .capacity = 4096,
+                          .nearPlane = 0.1f,
+                          .farPlane = 100.0f};
   WallRenderer wall(setup);
   wall.frame(main.next(), {0, 0});   // t = 0: born at x = -2
   main.set("emitter.0.rate", 0.0f);  // no more births

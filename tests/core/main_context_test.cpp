@@ -75,6 +75,17 @@ TEST(MainContext, PauseStopsTimeAndEmission) {
   EXPECT_FLOAT_EQ(p.simDt, 0.01f);
 }
 
+TEST(MainContext, MaximumIsCappedAtTheBufferLimitWithAMessage) {
+  MainContext::Options o = fixed();
+  o.capacityLimit = 50000;
+  MainContext main(ParticleState{}, FieldUpdate{}, o);
+  const AttributeResult r = main.set("sim.maximum", 80000);
+  EXPECT_EQ(std::get<int>(r.applied), 50000);
+  EXPECT_NE(r.warning.find("capped to 50000"), std::string::npos) << r.warning;
+  main.next();
+  EXPECT_EQ(main.state().sim.maximum, 50000);
+}
+
 TEST(MainContext, AFixedStepIsTakenAsGiven) {
   MainContext::Options o;
   o.fixedDt = 0.25f;  // longer than maxDt, which only bounds measured stalls
