@@ -8,6 +8,8 @@
 #include <memory>
 #include <mutex>
 
+#include "app/desktop_input.h"
+#include "app/menu/menu_host.h"
 #include "app/scene_setup.h"
 #include "contexts/platform/egl_context.h"
 #include "contexts/platform/glfw_window.h"
@@ -36,6 +38,43 @@ bool haveDisplay() {
 
 constexpr int kHeadlessFrames = 240;
 
+GlfwWindow::Options windowOptions(const std::string& title, const WindowSpec& w) {
+  GlfwWindow::Options o;
+  o.title = title;
+  o.size = w.size;
+  o.position = w.position;
+  o.monitor = w.monitor;
+  o.fullscreen = w.fullscreen;
+  o.decorated = w.decorated;
+  return o;
+}
+
+// Per frame and wall: "frame wall particles buffer-hash state-hash".
+class HashLog {
+ public:
+  void add(const WallRenderer& wall, std::uint32_t frame) {
+    const std::vector<Particle> particles = wall.particles().update().readBack();
+    const std::string state = AttributeTable::instance().describe(wall.particles().state());
+    const std::string line =
+        concat(frame, " ", wall.wall().name, " ", particles.size(), " ", std::hex,
+               hashOf(std::span<const Particle>(particles)), " ", hashOf(std::span<const char>(state)));
+    std::lock_guard lock(mutex_);
+    lines_.push_back(line);
+  }
+  void write(const std::filesystem::path& path) {
+    std::sort(lines_.begin(), lines_.end(), [](const std::string& a, const std::string& b) {
+      return std::stoul(a) != std::stoul(b) ? std::stoul(a) < std::stoul(b) : a < b;
+    });
+    std::ofstream out(path);
+    for (const std::string& line : lines_) out << line << "\n";
+    if (!out) throw Error(concat("--hash-log: cannot write ", path.string()));
+  }
+
+ private:
+  std::mutex mutex_;
+  std::vector<std::string> lines_;
+};
+
 }  // namespace
 
 void applySets(AppConfig& config, const std::vector<std::string>& sets) {
@@ -51,10 +90,9 @@ void applySets(AppConfig& config, const std::vector<std::string>& sets) {
 }
 
 App::App(AppConfig config, AppOptions options) : config_(std::move(config)), options_(std::move(options)) {
-  const bool headless = options_.headless || (config_.anyWindow() && !haveDisplay());
-  if (headless) {
-    if (config_.anyWindow() && !options_.headless)
-      log::info("no display: rendering the windows offscreen instead");
+  headless_ = options_.headless || !haveDisplay();
+  if (headless_) {
+    if (config_.anyWindow() && !options_.headless) log::info("no display: rendering the windows offscreen instead");
     for (WallSpec& w : config_.walls) {
       if (w.window) w.offscreenSize = w.window->size;
       w.window.reset();
@@ -81,6 +119,10 @@ App::App(AppConfig config, AppOptions options) : config_(std::move(config)), opt
     }
     config_.walls = std::move(chosen);
   }
+  if (options_.noMenu) {
+    config_.menu.operatorWindow.reset();
+    for (WallSpec& w : config_.walls) w.menu = false;
+  }
 }
 
 int App::run() {
@@ -102,35 +144,34 @@ int App::run() {
   if (options_.replay)
     for (const ScheduledChange& s : readSessionLog(*options_.replay)) main.schedule(s.frame, s.change);
   std::unique_ptr<HeadTracker> head = makeHeadTracker(config_.head);
-  const Navigation navigation = Navigation::from(config_.navigation);
+  Navigation navigation = Navigation::from(config_.navigation);
 
   // Contexts are made here (GLFW wants windows on the main thread), then each
   // wall's thread makes its own current.
   std::unique_ptr<GlfwLibrary> glfw;
-  if (config_.anyWindow()) glfw = std::make_unique<GlfwLibrary>();
+  const bool operatorWindow = config_.menu.operatorWindow && !headless_;
+  if (config_.anyWindow() || operatorWindow) glfw = std::make_unique<GlfwLibrary>();
   const int wallCount = int(config_.walls.size());
   FrameChannel channel(wallCount);
   RenderContext::SwapBarrier barrier(wallCount);
   std::vector<std::unique_ptr<RenderContext>> walls;
   std::vector<GlfwWindow*> windows;
+  std::vector<GlfwWindow*> wallWindows(std::size_t(wallCount), nullptr);
+  int menuWall = -1;
   for (int i = 0; i < wallCount; ++i) {
     const WallSpec& spec = config_.walls[std::size_t(i)];
     std::unique_ptr<GlContext> context;
     if (spec.window) {
-      GlfwWindow::Options o;
-      o.title = "Sandstorm: " + spec.name;
-      o.size = spec.window->size;
-      o.position = spec.window->position;
-      o.monitor = spec.window->monitor;
-      o.fullscreen = spec.window->fullscreen;
-      o.decorated = spec.window->decorated;
+      GlfwWindow::Options o = windowOptions("Sandstorm: " + spec.name, *spec.window);
       o.quadBufferStereo = spec.stereo == StereoMode::QuadBuffer;
       auto window = std::make_unique<GlfwWindow>(*glfw, o);
       windows.push_back(window.get());
+      wallWindows[std::size_t(i)] = window.get();
       context = std::move(window);
     } else {
       context = std::make_unique<EglContext>();
     }
+    if (spec.menu) menuWall = i;
     log::info("wall '", spec.name, "': ", context->description());
     WallRendererSetup setup{.wall = spec,
                             .initial = main.initialState(),
@@ -143,19 +184,33 @@ int App::run() {
     walls.push_back(std::make_unique<RenderContext>(std::move(context), setup, channel, i, barrier));
   }
 
+  std::vector<GLFWwindow*> inputWindows;
+  for (GlfwWindow* w : windows) inputWindows.push_back(w->handle());
+  DesktopInput input(inputWindows);
+  DesktopHead* desktopHead = dynamic_cast<DesktopHead*>(head.get());
+
+  std::unique_ptr<MenuHost> menu;
+  if (operatorWindow || menuWall >= 0 || options_.menuScript) {
+    std::unique_ptr<GlfwWindow> console;
+    if (operatorWindow)
+      console = std::make_unique<GlfwWindow>(*glfw, windowOptions("Sandstorm: operator", *config_.menu.operatorWindow));
+    const int shown = menuWall >= 0 ? menuWall : 0;
+    const WallSpec& wall = config_.walls[std::size_t(shown)];
+    GLFWwindow* wallWindow = wallWindows[std::size_t(shown)] ? wallWindows[std::size_t(shown)]->handle() : nullptr;
+    std::optional<MenuScript> script;
+    if (options_.menuScript) script = MenuScript::load(*options_.menuScript);
+    menu = std::make_unique<MenuHost>(
+        main, std::move(console), wallWindow, wall.window ? wall.window->size : wall.offscreenSize,
+        std::vector<std::string>{}, [&](const std::string&) {}, std::move(script));
+    if (!operatorWindow) walls[std::size_t(shown)]->setOverlay([&menu] { return menu->latest(); }, menu->font());
+  }
+
   const int lastFrame = config_.run.frames > 0 ? config_.run.frames - 1 : -1;
-  std::mutex hashMutex;
-  std::vector<std::string> hashLines;
+  HashLog hashes;
   for (std::size_t i = 0; i < walls.size(); ++i) {
     const bool first = i == 0;
     walls[i]->setFrameHook([&, this, lastFrame, first](WallRenderer& wall, const FramePacket& packet) {
-      if (options_.hashLog) {
-        const std::vector<Particle> particles = wall.particles().update().readBack();
-        const std::string line = concat(packet.frame, " ", wall.wall().name, " ", particles.size(), " ", std::hex,
-                                        hashOf(std::span<const Particle>(particles)));
-        std::lock_guard lock(hashMutex);
-        hashLines.push_back(line);
-      }
+      if (options_.hashLog) hashes.add(wall, packet.frame);
       const int f = int(packet.frame);
       const bool last = f == lastFrame;
       if (options_.screenshotDir && (last || (options_.screenshotEvery > 0 && f % options_.screenshotEvery == 0))) {
@@ -175,22 +230,34 @@ int App::run() {
   std::signal(SIGINT, onInterrupt);
   std::signal(SIGTERM, onInterrupt);
   const auto start = std::chrono::steady_clock::now();
-  auto lastReport = start;
+  auto lastReport = start, lastTick = start;
   int frames = 0;
   bool failed = false;
   while (!interrupted && (lastFrame < 0 || frames <= lastFrame)) {
+    const auto now = std::chrono::steady_clock::now();
+    const float dt = std::chrono::duration<float>(now - lastTick).count();
+    lastTick = now;
     if (glfw) {
       GlfwLibrary::pollEvents();
-      bool close = false;
+      bool close = menu && menu->operatorWindowClosed();
       for (GlfwWindow* w : windows) close = close || w->shouldClose();
       if (close) break;
+      input.update(dt, desktopHead, navigation, menu && menu->wantsMouse(), false);
     }
     for (const auto& w : walls) failed = failed || w->error().has_value();
     if (failed) break;
+    if (menu) {
+      MenuStats stats;
+      stats.frame = main.nextFrame();
+      for (const auto& w : walls) {
+        const WallStats s = w->stats();
+        stats.walls.push_back({w->name(), s.fps, s.frameMs, s.updateMs, s.renderMs, s.postMs, s.liveParticles, s.capacity});
+      }
+      menu->frame(main.nextFrame(), dt, stats);
+    }
     main.setViewer(Viewer{head->pose(main.time()), navigation});
     if (!channel.publish(std::make_shared<const FramePacket>(main.next()))) break;
     ++frames;
-    const auto now = std::chrono::steady_clock::now();
     if (now - lastReport > std::chrono::seconds(2)) {
       lastReport = now;
       const WallStats s = walls[0]->stats();
@@ -202,15 +269,9 @@ int App::run() {
   for (auto& w : walls) w->join();
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
+  if (interrupted) log::info("interrupted: stopped every wall cleanly");
+  if (options_.hashLog) hashes.write(*options_.hashLog);
 
-  if (options_.hashLog) {
-    std::sort(hashLines.begin(), hashLines.end(), [](const std::string& a, const std::string& b) {
-      return std::stoul(a) != std::stoul(b) ? std::stoul(a) < std::stoul(b) : a < b;
-    });
-    std::ofstream out(*options_.hashLog);
-    for (const std::string& line : hashLines) out << line << "\n";
-    if (!out) throw Error(concat("--hash-log: cannot write ", options_.hashLog->string()));
-  }
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   for (const auto& w : walls) failed = failed || w->error().has_value();
   log::info("stats: ", frames, " frames in ", seconds, " s (", frames / std::max(seconds, 1e-9), " frames/s), ",
@@ -221,7 +282,8 @@ int App::run() {
               s.frameMs, " ms", w->error() ? " FAILED: " + *w->error() : std::string());
   }
   if (options_.screenshotDir) log::info("images in ", options_.screenshotDir->string(), "/");
-  walls.clear();  // before the GLFW library goes
+  walls.clear();  // before the windows' library goes
+  menu.reset();
   return failed ? 1 : 0;
 }
 

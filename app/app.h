@@ -25,6 +25,8 @@ struct AppOptions {
   std::vector<std::string> walls;                 // run only these walls (empty: all)
   std::optional<std::filesystem::path> record;    // write every change with its frame
   std::optional<std::filesystem::path> replay;    // apply a recorded session's changes at their frames
+  std::optional<std::filesystem::path> menuScript;  // scripted clicks on the menu (tests, demos)
+  bool noMenu = false;
 };
 
 // Applies --set overrides to the configuration's particle state. Throws Error.
@@ -40,6 +42,7 @@ class App {
  private:
   AppConfig config_;
   AppOptions options_;
+  bool headless_ = false;
 };
 
 }  // namespace sandstorm

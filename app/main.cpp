@@ -25,6 +25,10 @@ int main(int argc, char** argv) {
   std::string record, replay;
   cli.add_option("--record", record, "Record every attribute change with its frame to FILE");
   cli.add_option("--replay", replay, "Replay a recorded session: its changes at their frames")->check(CLI::ExistingFile);
+  std::string menuScript;
+  cli.add_option("--menu-script", menuScript, "Scripted clicks on the menu panel (see app/menu/menu_script.h)")
+      ->check(CLI::ExistingFile);
+  cli.add_flag("--no-menu", options.noMenu, "Show no menu panel");
   cli.add_flag("--headless", options.headless, "Render every wall offscreen (EGL), even with a display");
   cli.add_option("--log-level", logLevel, "error, warn, info or debug")->check(CLI::IsMember({"error", "warn", "info", "debug"}));
   try {
@@ -42,6 +46,7 @@ int main(int argc, char** argv) {
   if (!hashLog.empty()) options.hashLog = hashLog;
   if (!record.empty()) options.record = record;
   if (!replay.empty()) options.replay = replay;
+  if (!menuScript.empty()) options.menuScript = menuScript;
   if (!dumpPath.empty()) {
     if (!dumpPath.ends_with(".vtp")) {
       log::error("--dump-particles ", dumpPath, ": expected a .vtp file name");

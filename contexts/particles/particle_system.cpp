@@ -38,13 +38,23 @@ void ParticleSystem::advance(const FramePacket& packet) {
     update_->setField(field_->field, field_->placement);
     log::debug("frame ", packet.frame, ": field uploaded in ", update_->lastFieldUploadMs(), " ms");
   }
+  updateTimer_.begin();
   update_->step(packet.step(), state_);
+  updateTimer_.end();
   frame_ = packet.frame;
 }
 
 void ParticleSystem::render(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const {
+  renderTimer_.begin();
   render_.draw(*update_, targets, state_.render.mode);
+  renderTimer_.end();
+  postTimer_.begin();
   post_.draw(targets, destination, origin);
+  postTimer_.end();
+}
+
+ParticleSystem::Timings ParticleSystem::timings() {
+  return {updateTimer_.lastMs(), renderTimer_.lastMs(), postTimer_.lastMs()};
 }
 
 }  // namespace sandstorm

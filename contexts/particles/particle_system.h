@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "contexts/gl/gpu_timer.h"
 #include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_post.h"
 #include "contexts/particles/particle_render.h"
@@ -42,6 +43,12 @@ class ParticleSystem {
   std::shared_ptr<const FieldUpdate> field() const { return field_; }
   std::uint32_t frame() const { return frame_; }
 
+  // GPU milliseconds of the update, render and post stages, a few frames old.
+  struct Timings {
+    double updateMs = 0, renderMs = 0, postMs = 0;
+  };
+  Timings timings();
+
  private:
   ParticleState state_;
   std::size_t capacityLimit_;
@@ -50,6 +57,8 @@ class ParticleSystem {
   ParticlePost post_;
   std::shared_ptr<const FieldUpdate> field_;
   std::uint32_t frame_ = 0;
+  gl::GpuTimer updateTimer_;
+  mutable gl::GpuTimer renderTimer_, postTimer_;
 };
 
 }  // namespace sandstorm

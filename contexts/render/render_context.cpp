@@ -30,7 +30,6 @@ WallStats RenderContext::stats() const {
 }
 
 void RenderContext::run() {
-  bool inBarrier = true;
   try {
     context_->makeCurrent();
     std::unique_ptr<WallRenderer> renderer = std::make_unique<WallRenderer>(setup_);
@@ -38,12 +37,19 @@ void RenderContext::run() {
     while (std::shared_ptr<const FramePacket> packet = channel_.take(consumer_)) {
       const auto start = std::chrono::steady_clock::now();
       renderer->frame(*packet, context_->framebufferSize());
+      if (overlay_)
+        if (const std::shared_ptr<const UiDrawData> menu = overlay_()) renderer->drawOverlay(*menu, font_);
       if (hook_) hook_(*renderer, *packet);
       const std::size_t live = countParticles_ ? renderer->particles().update().liveCount() : 0;
       const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      const ParticleSystem::Timings timings = renderer->particles().timings();
       barrier_.arrive_and_wait();  // the swap barrier: nobody presents frame f before all have drawn it
       context_->swapBuffers();
       std::lock_guard lock(mutex_);
+      stats_.capacity = renderer->particles().update().capacity();
+      stats_.updateMs = timings.updateMs;
+      stats_.renderMs = timings.renderMs;
+      stats_.postMs = timings.postMs;
       stats_.frame = packet->frame;
       stats_.frameMs = ms;
       stats_.fps = packet->dt > 0.0f ? 0.9 * stats_.fps + 0.1 / double(packet->dt) : stats_.fps;
@@ -57,8 +63,7 @@ void RenderContext::run() {
       error_ = "wall '" + name() + "': " + e.what();
     }
     log::error(*error_);
-    if (inBarrier) barrier_.arrive_and_drop();
-    inBarrier = false;
+    barrier_.arrive_and_drop();
     channel_.leave(consumer_);
     try {
       context_->releaseCurrent();

@@ -29,6 +29,8 @@ struct WallStats {
   double frameMs = 0.0;    // CPU time of the last frame on this wall's thread
   double fps = 0.0;        // smoothed
   std::size_t liveParticles = 0;
+  std::size_t capacity = 0;
+  double updateMs = 0.0, renderMs = 0.0, postMs = 0.0;  // GPU time per stage (a few frames old)
 };
 
 class RenderContext {
@@ -45,6 +47,12 @@ class RenderContext {
   RenderContext& operator=(const RenderContext&) = delete;
 
   void setFrameHook(FrameHook hook) { hook_ = std::move(hook); }
+  // The menu to draw over this wall each frame (latest wins); null: none.
+  using OverlaySource = std::function<std::shared_ptr<const UiDrawData>()>;
+  void setOverlay(OverlaySource source, UiFont font) {
+    overlay_ = std::move(source);
+    font_ = std::move(font);
+  }
   // Whether the live particle count is read back each frame for stats (a GPU wait).
   void setCountParticles(bool on) { countParticles_ = on; }
   void start();
@@ -65,6 +73,8 @@ class RenderContext {
   int consumer_;
   SwapBarrier& barrier_;
   FrameHook hook_;
+  OverlaySource overlay_;
+  UiFont font_;
   bool countParticles_ = true;
   std::thread thread_;
   std::atomic<bool> finished_{false};

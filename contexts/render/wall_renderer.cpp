@@ -75,6 +75,13 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
+void WallRenderer::drawOverlay(const UiDrawData& menu, const UiFont& font) {
+  if (!ui_) ui_ = std::make_unique<UiRenderer>(font);
+  glBindFramebuffer(GL_FRAMEBUFFER, drewOffscreen_ ? offscreen_.framebuffer() : 0);
+  ui_->draw(menu, lastSize_);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
 Image WallRenderer::capture() const {
   if (drewOffscreen_) return offscreen_.readPixels();
   return readFramebuffer(0, GL_BACK, lastSize_);

@@ -12,6 +12,7 @@
 #include "contexts/particles/particle_system.h"
 #include "contexts/render/view_renderer.h"
 #include "contexts/render/view_targets.h"
+#include "contexts/ui/ui_renderer.h"
 #include "core/config/app_config.h"
 #include "core/util/image.h"
 
@@ -35,10 +36,13 @@ class WallRenderer {
   // Applies the packet, advances the particles and draws the wall. `windowSize`
   // is the default framebuffer's size; (0, 0) draws into the offscreen image.
   void frame(const FramePacket& packet, glm::ivec2 windowSize);
+  // Draws the menu over the wall's last frame (the wall that shows the menu).
+  void drawOverlay(const UiDrawData& menu, const UiFont& font);
   // The image last drawn (offscreen) or the back buffer (window).
   Image capture() const;
 
   const ParticleSystem& particles() const { return system_; }
+  ParticleSystem& particles() { return system_; }
   const WallSpec& wall() const { return wall_; }
 
  private:
@@ -52,6 +56,7 @@ class WallRenderer {
   OutputTarget eyes_[2];  // anaglyph: each eye's image before they are combined
   gl::Program anaglyph_;
   gl::VertexArray emptyVao_;
+  std::unique_ptr<UiRenderer> ui_;
   glm::ivec2 lastSize_{0};
   bool drewOffscreen_ = false;
 };

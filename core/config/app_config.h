@@ -99,6 +99,11 @@ struct RunSpec {
   float farPlane = 500.0f;
 };
 
+// The operator's menu in a window of its own (a console monitor in a CAVE).
+struct MenuSpec {
+  std::optional<WindowSpec> operatorWindow;
+};
+
 struct AppConfig {
   std::filesystem::path path;
   ParticleState particles;
@@ -107,6 +112,7 @@ struct AppConfig {
   HeadSpec head;
   NavigationSpec navigation;
   RunSpec run;
+  MenuSpec menu;
   std::vector<WallSpec> walls;
 
   bool anyWindow() const;

@@ -231,6 +231,23 @@ void readNavigation(const Reader& r, const toml::value& t, NavigationSpec& n) {
   if (!(n.scale > 0.0f)) r.fail(t, "navigation.scale", "expected a positive scale");
 }
 
+WindowSpec readWindow(const Reader& r, const toml::value& window, const std::string& wp, std::optional<int> monitors) {
+  if (!window.is_table()) r.fail(window, wp, "expected a table");
+  r.checkKeys(window, wp, {"monitor", "position", "size", "fullscreen", "decorated"});
+  WindowSpec s;
+  s.monitor = r.integer(window, "monitor", wp, 0, 0, 63);
+  if (monitors && s.monitor >= std::max(*monitors, 1))
+    r.fail(*r.find(window, "monitor"), wp + ".monitor",
+           concat("monitor ", s.monitor, " does not exist; ", *monitors, " connected (0..", *monitors - 1, ")"));
+  s.position = glm::ivec2(r.vec<2>(window, "position", wp, glm::vec2(s.position)));
+  s.size = glm::ivec2(r.vec<2>(window, "size", wp, glm::vec2(s.size)));
+  if (s.size.x < 16 || s.size.y < 16 || s.size.x > 16384 || s.size.y > 16384)
+    r.fail(window, wp + ".size", "expected 16..16384 pixels each way");
+  s.fullscreen = r.boolean(window, "fullscreen", wp, s.fullscreen);
+  s.decorated = r.boolean(window, "decorated", wp, s.decorated);
+  return s;
+}
+
 WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optional<int> monitors) {
   const std::string path = concat("wall[", index, "]");
   r.checkKeys(t, path, {"name", "lower_left", "lower_right", "upper_left", "camera", "window", "offscreen", "stereo",
@@ -256,23 +273,7 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
   const toml::value* window = r.find(t, "window");
   const toml::value* offscreen = r.find(t, "offscreen");
   if (window && offscreen) r.fail(t, path, "give either a window or an offscreen table, not both");
-  if (window) {
-    if (!window->is_table()) r.fail(*window, path + ".window", "expected a table");
-    const std::string wp = path + ".window";
-    r.checkKeys(*window, wp, {"monitor", "position", "size", "fullscreen", "decorated"});
-    WindowSpec s;
-    s.monitor = r.integer(*window, "monitor", wp, 0, 0, 63);
-    if (monitors && s.monitor >= std::max(*monitors, 1))
-      r.fail(*r.find(*window, "monitor"), wp + ".monitor",
-             concat("monitor ", s.monitor, " does not exist; ", *monitors, " connected (0..", *monitors - 1, ")"));
-    s.position = glm::ivec2(r.vec<2>(*window, "position", wp, glm::vec2(s.position)));
-    s.size = glm::ivec2(r.vec<2>(*window, "size", wp, glm::vec2(s.size)));
-    if (s.size.x < 16 || s.size.y < 16 || s.size.x > 16384 || s.size.y > 16384)
-      r.fail(*window, wp + ".size", "expected 16..16384 pixels each way");
-    s.fullscreen = r.boolean(*window, "fullscreen", wp, s.fullscreen);
-    s.decorated = r.boolean(*window, "decorated", wp, s.decorated);
-    w.window = s;
-  }
+  if (window) w.window = readWindow(r, *window, path + ".window", monitors);
   if (offscreen) {
     if (!offscreen->is_table()) r.fail(*offscreen, path + ".offscreen", "expected a table");
     r.checkKeys(*offscreen, path + ".offscreen", {"size"});
@@ -325,7 +326,7 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
           int depth) {
   const Reader r(file);
   r.checkKeys(root, "",
-              {"include", "run", "field", "scene", "sim", "render", "emitter", "head", "navigation", "wall"});
+              {"include", "run", "field", "scene", "sim", "render", "emitter", "head", "navigation", "menu", "wall"});
   // include = "scene.toml": that file's settings first, this file's on top.
   if (const toml::value* include = r.find(root, "include")) {
     if (!include->is_string()) r.fail(*include, "include", "expected a file name");
@@ -344,6 +345,11 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
   if (const auto* t = section("scene")) readScene(r, *t, c.scene);
   if (const auto* t = section("head")) readHead(r, *t, c.head);
   if (const auto* t = section("navigation")) readNavigation(r, *t, c.navigation);
+  if (const auto* t = section("menu")) {
+    r.checkKeys(*t, "menu", {"operator_window"});
+    if (const toml::value* w = r.find(*t, "operator_window"))
+      c.menu.operatorWindow = readWindow(r, *w, "menu.operator_window", monitors);
+  }
   if (const auto* t = section("sim")) setAttributes(r, *t, "sim.", c.particles);
   if (const auto* t = section("render")) setAttributes(r, *t, "render.", c.particles);
   if (const toml::value* emitters = r.find(root, "emitter")) {

@@ -331,6 +331,19 @@ AttributeValue AttributeTable::get(const ParticleState& state, std::string_view 
   return info.get(state, emitter);
 }
 
+std::string AttributeTable::describe(const ParticleState& state) const {
+  std::string out;
+  for (const AttributeInfo& info : entries_) {
+    if (!info.perEmitter()) {
+      out += info.key + "=" + toString(info.get(state, 0)) + "\n";
+      continue;
+    }
+    for (std::size_t e = 0; e < state.emitters.size(); ++e)
+      out += "emitter." + std::to_string(e) + "." + info.key.substr(10) + "=" + toString(info.get(state, int(e))) + "\n";
+  }
+  return out;
+}
+
 std::string toString(const AttributeValue& value) {
   std::ostringstream os;
   std::visit(

@@ -78,6 +78,10 @@ class AttributeTable {
   AttributeResult set(ParticleState& state, std::string_view key, const AttributeValue& value) const;
   AttributeValue get(const ParticleState& state, std::string_view key) const;
 
+  // Every attribute as "key=value" lines, emitters included: a fingerprint of a
+  // replica's state.
+  std::string describe(const ParticleState& state) const;
+
   // Canonical key: aliases map to their target ("Size" -> "render.size").
   std::string canonical(std::string_view key) const;
 

@@ -1,0 +1,49 @@
+#include "app/menu/menu_host.h"
+
+namespace sandstorm {
+
+MenuHost::MenuHost(MainContext& main, std::unique_ptr<GlfwWindow> operatorWindow, GLFWwindow* wallWindow,
+                   glm::ivec2 wallSize, std::vector<std::string> fieldChoices, MenuPanel::FieldLoader loader,
+                   std::optional<MenuScript> script)
+    : operatorWindow_(std::move(operatorWindow)),
+      session_(operatorWindow_ ? operatorWindow_->handle() : wallWindow, wallSize),
+      panel_(main, std::move(fieldChoices), std::move(loader)),
+      script_(std::move(script)) {
+  if (operatorWindow_) {
+    operatorWindow_->makeCurrent();
+    renderer_ = std::make_unique<UiRenderer>(session_.font());
+    operatorWindow_->releaseCurrent();
+  }
+}
+
+MenuHost::~MenuHost() {
+  if (operatorWindow_) {
+    operatorWindow_->makeCurrent();
+    renderer_.reset();  // its GL objects go with their own context current
+    operatorWindow_->releaseCurrent();
+  }
+}
+
+void MenuHost::frame(std::uint32_t frame, float dt, const MenuStats& stats) {
+  if (script_) script_->inject(frame, session_, panel_);
+  session_.begin(dt);
+  panel_.build(stats);
+  std::shared_ptr<const UiDrawData> data = session_.end();
+  if (operatorWindow_) {
+    operatorWindow_->makeCurrent();
+    renderer_->drawWindow(*data, operatorWindow_->framebufferSize());
+    operatorWindow_->swapBuffers();
+    operatorWindow_->releaseCurrent();
+  }
+  std::lock_guard lock(mutex_);
+  latest_ = std::move(data);
+}
+
+std::shared_ptr<const UiDrawData> MenuHost::latest() const {
+  std::lock_guard lock(mutex_);
+  return operatorWindow_ ? nullptr : latest_;
+}
+
+bool MenuHost::operatorWindowClosed() const { return operatorWindow_ && operatorWindow_->shouldClose(); }
+
+}  // namespace sandstorm

@@ -1,0 +1,45 @@
+// MenuHost: runs the menu on the main thread each frame and puts it where it
+// is shown: its own operator window (drawn here), or over one wall (handed to
+// that wall's thread as UiDrawData). Never on every wall.
+#pragma once
+
+#include <memory>
+#include <mutex>
+#include <optional>
+
+#include "app/menu/imgui_session.h"
+#include "app/menu/menu_panel.h"
+#include "app/menu/menu_script.h"
+#include "contexts/platform/glfw_window.h"
+#include "contexts/ui/ui_renderer.h"
+
+namespace sandstorm {
+
+class MenuHost {
+ public:
+  // With `operatorWindow` the menu is drawn there; otherwise over a wall, whose
+  // window (`wallWindow`, may be null when offscreen) gives the input.
+  MenuHost(MainContext& main, std::unique_ptr<GlfwWindow> operatorWindow, GLFWwindow* wallWindow,
+           glm::ivec2 wallSize, std::vector<std::string> fieldChoices, MenuPanel::FieldLoader loader,
+           std::optional<MenuScript> script);
+  ~MenuHost();
+
+  void frame(std::uint32_t frame, float dt, const MenuStats& stats);
+
+  // For the wall that shows the menu.
+  std::shared_ptr<const UiDrawData> latest() const;
+  const UiFont& font() const { return session_.font(); }
+  bool wantsMouse() const { return session_.wantsMouse(); }
+  bool operatorWindowClosed() const;
+
+ private:
+  std::unique_ptr<GlfwWindow> operatorWindow_;
+  ImGuiSession session_;
+  MenuPanel panel_;
+  std::optional<MenuScript> script_;
+  std::unique_ptr<UiRenderer> renderer_;  // operator window only, on this thread
+  mutable std::mutex mutex_;
+  std::shared_ptr<const UiDrawData> latest_;
+};
+
+}  // namespace sandstorm

@@ -1,0 +1,215 @@
+#include "app/menu/menu_panel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/util/error.h"
+#include "core/util/log.h"
+
+namespace sandstorm {
+namespace {
+
+std::string labelOf(const std::string& key) { return key.substr(key.rfind('.') + 1); }
+
+}  // namespace
+
+MenuPanel::MenuPanel(MainContext& main, std::vector<std::string> fieldChoices, FieldLoader loader)
+    : main_(main), fieldChoices_(std::move(fieldChoices)), loader_(std::move(loader)) {}
+
+void MenuPanel::remember(const std::string& key) {
+  // The item's frame, without the label that follows it: a fraction across
+  // a slider then means that fraction of its range.
+  const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+  rects_[key] = Rect{{a.x, a.y}, {std::min(b.x, a.x + ImGui::CalcItemWidth()), b.y}};
+}
+
+void MenuPanel::apply(const std::string& key, const AttributeValue& value) {
+  try {
+    const AttributeResult r = main_.set(key, value);
+    message_ = r.warning.empty() ? key + " = " + toString(r.applied) : r.warning;
+  } catch (const Error& e) {
+    message_ = e.what();
+    log::warn("menu: ", e.what());
+  }
+}
+
+void MenuPanel::build(const MenuStats& stats) {
+  const ParticleState state = main_.pendingState();
+  const ImVec2 display = ImGui::GetIO().DisplaySize;
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_Always);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(360, 0), ImVec2(380, std::max(display.y - 16.0f, 100.0f)));
+  ImGui::Begin("Sandstorm", nullptr,
+               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize);
+  runControls(state);
+  statsSection(stats, state);
+  // The thesis's Table 5.1 first: the attributes an operator reaches for.
+  if (ImGui::CollapsingHeader("Table of dynamic attributes", ImGuiTreeNodeFlags_DefaultOpen)) {
+    const AttributeTable& table = AttributeTable::instance();
+    for (const char* key : {"render.size", "emitter.0.lifetime", "emitter.0.width", "emitter.0.depth", "sim.maximum",
+                            "emitter.0.position", "emitter.0.rate"})
+      if (std::string(key).starts_with("emitter.") && state.emitters.empty()) continue;
+      else attributeWidget(table.lookup(key), key, state);
+  }
+  if (ImGui::CollapsingHeader("System")) {
+    for (const AttributeInfo& info : AttributeTable::instance().entries())
+      if (info.key.starts_with("sim.") && info.key != "sim.emitting" && info.key != "sim.paused")
+        attributeWidget(info, info.key, state);
+  }
+  if (ImGui::CollapsingHeader("Look")) {
+    for (const AttributeInfo& info : AttributeTable::instance().entries())
+      if (info.key.starts_with("render.")) attributeWidget(info, info.key, state);
+  }
+  emitterSection(state);
+  fieldSection();
+  if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
+  ImGui::End();
+}
+
+void MenuPanel::runControls(const ParticleState& state) {
+  if (ImGui::Button(state.sim.emitting ? "Stop" : "Start")) apply("sim.emitting", !state.sim.emitting);
+  remember("button:start");
+  ImGui::SameLine();
+  if (ImGui::Button(state.sim.paused ? "Resume" : "Pause")) apply("sim.paused", !state.sim.paused);
+  remember("button:pause");
+  ImGui::SameLine();
+  if (ImGui::Button("Reset")) {
+    main_.reset();
+    message_ = "reset: every particle removed";
+  }
+  remember("button:reset");
+}
+
+void MenuPanel::statsSection(const MenuStats& stats, const ParticleState& state) {
+  if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  ImGui::Text("frame %u", stats.frame);
+  if (ImGui::BeginTable("walls", 6, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
+    for (const char* h : {"wall", "fps", "frame ms", "update", "render", "post"}) ImGui::TableSetupColumn(h);
+    ImGui::TableHeadersRow();
+    for (const MenuWallStats& w : stats.walls) {
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(w.name.c_str());
+      ImGui::TableNextColumn();
+      ImGui::Text("%.1f", w.fps);
+      for (double ms : {w.frameMs, w.updateMs, w.renderMs, w.postMs}) {
+        ImGui::TableNextColumn();
+        ImGui::Text("%.2f", ms);
+      }
+    }
+    ImGui::EndTable();
+  }
+  if (!stats.walls.empty()) {
+    const MenuWallStats& w = stats.walls.front();
+    const float fraction = state.sim.maximum > 0 ? float(w.live) / float(state.sim.maximum) : 0.0f;
+    const std::string label = std::to_string(w.live) + " / " + std::to_string(state.sim.maximum) + " (buffer " +
+                              std::to_string(w.capacity) + ")";
+    ImGui::ProgressBar(std::min(fraction, 1.0f), ImVec2(-1, 0), label.c_str());
+  }
+}
+
+void MenuPanel::emitterSection(const ParticleState& state) {
+  if (!ImGui::CollapsingHeader("Emitters")) return;
+  const int count = int(state.emitters.size());
+  selectedEmitter_ = std::clamp(selectedEmitter_, 0, std::max(count - 1, 0));
+  for (int i = 0; i < count; ++i) {
+    const std::string shape = std::get<std::string>(AttributeTable::instance().get(state, "emitter." + std::to_string(i) + ".shape"));
+    const std::string label = "emitter " + std::to_string(i) + " (" + shape + ")";
+    if (ImGui::Selectable(label.c_str(), selectedEmitter_ == i)) selectedEmitter_ = i;
+    remember("emitter:" + std::to_string(i));
+  }
+  if (ImGui::Button("Add")) {
+    try {
+      main_.addEmitter(count > 0 ? state.emitters[std::size_t(selectedEmitter_)] : Emitter{});
+      selectedEmitter_ = count;
+      message_ = "added emitter " + std::to_string(count);
+    } catch (const Error& e) {
+      message_ = e.what();
+    }
+  }
+  remember("button:add-emitter");
+  ImGui::SameLine();
+  if (ImGui::Button("Remove") && count > 0) {
+    try {
+      main_.removeEmitter(selectedEmitter_);
+      message_ = "removed emitter " + std::to_string(selectedEmitter_);
+    } catch (const Error& e) {
+      message_ = e.what();
+    }
+  }
+  remember("button:remove-emitter");
+  if (count == 0) return;
+  const std::string prefix = "emitter." + std::to_string(selectedEmitter_) + ".";
+  for (const AttributeInfo& info : AttributeTable::instance().entries())
+    if (info.perEmitter()) attributeWidget(info, prefix + info.key.substr(10), state);
+}
+
+void MenuPanel::fieldSection() {
+  if (fieldChoices_.empty() || !ImGui::CollapsingHeader("Field")) return;
+  selectedField_ = std::clamp(selectedField_, 0, int(fieldChoices_.size()) - 1);
+  if (ImGui::BeginCombo("source", fieldChoices_[std::size_t(selectedField_)].c_str())) {
+    for (int i = 0; i < int(fieldChoices_.size()); ++i)
+      if (ImGui::Selectable(fieldChoices_[std::size_t(i)].c_str(), i == selectedField_)) selectedField_ = i;
+    ImGui::EndCombo();
+  }
+  remember("field:source");
+  if (ImGui::Button("Load field")) {
+    try {
+      loader_(fieldChoices_[std::size_t(selectedField_)]);
+      message_ = "loaded " + fieldChoices_[std::size_t(selectedField_)];
+    } catch (const Error& e) {
+      message_ = e.what();
+    }
+  }
+  remember("button:load-field");
+}
+
+void MenuPanel::attributeWidget(const AttributeInfo& info, const std::string& key, const ParticleState& state) {
+  const AttributeValue value = AttributeTable::instance().get(state, key);
+  const std::string label = labelOf(key) + (info.unit.empty() || info.unit == "rgb" ? "" : " (" + info.unit + ")");
+  ImGui::PushID(key.c_str());
+  switch (info.type) {
+    case AttributeType::Bool: {
+      bool v = std::get<bool>(value);
+      if (ImGui::Checkbox(label.c_str(), &v)) apply(key, v);
+      break;
+    }
+    case AttributeType::Int: {
+      int v = std::get<int>(value);
+      if (ImGui::SliderInt(label.c_str(), &v, int(info.min), int(std::min(info.max, 1e7f)), "%d",
+                           ImGuiSliderFlags_Logarithmic))
+        apply(key, v);
+      break;
+    }
+    case AttributeType::Float: {
+      float v = std::get<float>(value);
+      const bool wide = info.max - info.min > 100.0f;
+      const float hi = wide ? std::min(info.max, std::max(1e5f, 10.0f * std::abs(v))) : info.max;
+      if (ImGui::SliderFloat(label.c_str(), &v, info.min, hi, "%.4g", wide ? ImGuiSliderFlags_Logarithmic : 0))
+        apply(key, v);
+      break;
+    }
+    case AttributeType::Vec3: {
+      glm::vec3 v = std::get<glm::vec3>(value);
+      const bool changed = info.unit == "rgb" ? ImGui::ColorEdit3(label.c_str(), &v.x)
+                                              : ImGui::DragFloat3(label.c_str(), &v.x, 0.01f, info.min, info.max);
+      if (changed) apply(key, v);
+      break;
+    }
+    case AttributeType::Enum: {
+      const std::string current = std::get<std::string>(value);
+      if (ImGui::BeginCombo(label.c_str(), current.c_str())) {
+        for (const std::string& choice : info.choices)
+          if (ImGui::Selectable(choice.c_str(), choice == current)) apply(key, choice);
+        ImGui::EndCombo();
+      }
+      break;
+    }
+  }
+  remember(key);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\n%s", key.c_str(), info.description.c_str());
+  ImGui::PopID();
+}
+
+}  // namespace sandstorm

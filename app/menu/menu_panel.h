@@ -1,0 +1,67 @@
+// MenuPanel: the operator's panel (Dear ImGui), built on the main thread each
+// frame. It edits the table of dynamic attributes (every entry gets a widget
+// from its type and range), lists and edits emitters, starts, stops, pauses and
+// resets the system (the thesis's F10), loads fields, and shows statistics.
+// Every edit goes through the MainContext, which validates it and hands it to
+// every wall at the same frame.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/sim/main_context.h"
+
+namespace sandstorm {
+
+struct MenuWallStats {
+  std::string name;
+  double fps = 0, frameMs = 0, updateMs = 0, renderMs = 0, postMs = 0;
+  std::size_t live = 0, capacity = 0;
+};
+
+struct MenuStats {
+  std::uint32_t frame = 0;
+  std::vector<MenuWallStats> walls;
+};
+
+class MenuPanel {
+ public:
+  // Loads a field by name or path and hands it to the main context; throws Error.
+  using FieldLoader = std::function<void(const std::string& source)>;
+
+  MenuPanel(MainContext& main, std::vector<std::string> fieldChoices, FieldLoader loader);
+
+  // Between ImGuiSession::begin() and end().
+  void build(const MenuStats& stats);
+
+  // Where each widget was drawn last frame, by attribute key or button name
+  // ("button:reset"): scripted input aims at these.
+  struct Rect {
+    glm::vec2 min, max;
+  };
+  const std::map<std::string, Rect>& rects() const { return rects_; }
+  const std::string& lastMessage() const { return message_; }
+
+ private:
+  void attributeWidget(const AttributeInfo& info, const std::string& key, const ParticleState& state);
+  void runControls(const ParticleState& state);
+  void emitterSection(const ParticleState& state);
+  void fieldSection();
+  void statsSection(const MenuStats& stats, const ParticleState& state);
+  void remember(const std::string& key);
+  void apply(const std::string& key, const AttributeValue& value);
+
+  MainContext& main_;
+  std::vector<std::string> fieldChoices_;
+  FieldLoader loader_;
+  int selectedEmitter_ = 0;
+  int selectedField_ = 0;
+  std::string message_;
+  std::map<std::string, Rect> rects_;
+};
+
+}  // namespace sandstorm
