@@ -64,6 +64,16 @@ VectorField readFga(const std::filesystem::path& path, const LoadOptions& option
   std::ostringstream buffer;
   buffer << in.rdbuf();
   const std::size_t size = buffer.str().size();
+  {
+    // A file cut inside its last number still parses ("12.5" -> "1"); FGA
+    // writers end the last value with a comma or a newline.
+    const std::string& text = buffer.str();
+    const auto last = text.find_last_not_of(" \t");
+    if (last != std::string::npos && (std::isdigit((unsigned char)text[last]) || text[last] == '.'))
+      throw Error(concat(file,
+                         ": ends inside a number, without a final comma or newline; the "
+                         "file is truncated (if it is complete, end it with a newline)"));
+  }
   Tokens t(buffer.str(), file);
 
   glm::ivec3 n;

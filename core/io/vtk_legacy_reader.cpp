@@ -184,6 +184,14 @@ vtkSmartPointer<vtkDataSet> readVtkLegacy(const std::filesystem::path& path,
                        points, " points exceed the memory budget of ", options.memoryBudget,
                        " bytes (12 per point, at most ", VectorField::kMaxPoints, " points)"));
   if (text.size() == size) checkCounts(text, h, file);
+  // An ASCII file cut inside its last number still parses ("12.5" -> "1"): VTK's
+  // writers end every file with a newline, so a file that ends in a digit is
+  // taken as truncated.
+  if (!h.binary && !text.empty() && text.size() == size &&
+      !std::isspace(static_cast<unsigned char>(text.back())))
+    throw Error(concat(file,
+                       ": ends inside a value, without the final newline; the file is "
+                       "truncated (if it is complete, end it with a newline)"));
   text = {};
 
   if (h.dataset == "STRUCTURED_POINTS")

@@ -85,11 +85,12 @@ TEST(CurlNoiseField, IsDivergenceFree) {
     const glm::vec3 p(0.31f * i - 4.0f, 0.17f * i + 0.05f, -0.23f * i + 1.0f);
     worstDiv = std::max(worstDiv, std::abs(divergence(f, p, 1e-2f)));
     // The size of one velocity gradient, to judge the divergence against.
-    typicalGrad += std::abs((f.evaluate(p + glm::vec3(1e-2f, 0, 0)).y -
-                             f.evaluate(p - glm::vec3(1e-2f, 0, 0)).y) / 2e-2);
+    typicalGrad += std::abs(
+        (f.evaluate(p + glm::vec3(1e-2f, 0, 0)).y - f.evaluate(p - glm::vec3(1e-2f, 0, 0)).y) /
+        2e-2);
   }
   typicalGrad /= 50.0;
-  EXPECT_GT(typicalGrad, 0.1);          // the field does vary
+  EXPECT_GT(typicalGrad, 0.1);                     // the field does vary
   EXPECT_LT(worstDiv, 1e-3 * typicalGrad * 10.0);  // and its divergence is rounding
 }
 
@@ -164,8 +165,9 @@ TEST(DownwashField, ConservesTheDiscFlowInColumnAndWallJet) {
   // Far below a high rotor the column reaches momentum theory's 2 v_h.
   DownwashParams high = q;
   high.hub.z = 2000.0f;
-  EXPECT_NEAR(-DownwashField(high).evaluate({0, 0, 1000}).z / DownwashField(high).hoverInducedSpeed(),
-              2.0, 1e-3);
+  EXPECT_NEAR(
+      -DownwashField(high).evaluate({0, 0, 1000}).z / DownwashField(high).hoverInducedSpeed(), 2.0,
+      1e-3);
 }
 
 TEST(SumField, AddsItsParts) {
@@ -196,14 +198,20 @@ TEST(AnalyticFieldFactory, BuildsEachFieldWithDefaultsAndOverrides) {
 }
 
 TEST(AnalyticFieldFactory, ListsWhatItKnowsWhenAskedForSomethingElse) {
-  test::expectError([] { makeAnalyticField("hurricane", {}); },
-                    {"hurricane", "tornado", "gravity", "wind", "curl_noise", "sphere_flow",
-                     "downwash"});
-  test::expectError([] { makeAnalyticField("wind", {{"speed", 1.0}}); },
-                    {"speed", "power", "noise_scale", "direction_x"});
+  test::expectError(
+      [] { makeAnalyticField("hurricane", {}); },
+      {"hurricane", "tornado", "gravity", "wind", "curl_noise", "sphere_flow", "downwash"});
+  test::expectError(
+      [] {
+        makeAnalyticField("wind", {{"speed", 1.0}});
+      },
+      {"speed", "power", "noise_scale", "direction_x"});
   test::expectError([] { makeAnalyticField("gravity", {{"range", -1.0}}); }, {"range"});
-  test::expectError([] { makeAnalyticField("gravity", {{"power", std::nan("")}}); },
-                    {"power", "finite"});
+  test::expectError(
+      [] {
+        makeAnalyticField("gravity", {{"power", std::nan("")}});
+      },
+      {"power", "finite"});
 }
 
 }  // namespace

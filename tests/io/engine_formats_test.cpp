@@ -53,7 +53,8 @@ std::vector<Voxel> writeVf(const std::filesystem::path& path, glm::ivec3 n, cons
     for (int j = 0; j < n.y; ++j)
       for (int i = 0; i < n.x; ++i) {
         const glm::dvec3 p = glm::dvec3(box.min) + (glm::dvec3(i, j, k) + 0.5) *
-                                                       glm::dvec3(box.max - box.min) / glm::dvec3(n);
+                                                       glm::dvec3(box.max - box.min) /
+                                                       glm::dvec3(n);
         const glm::vec3 v(asymmetric(p));
         bytes.append(reinterpret_cast<const char*>(&v), 12);
         voxels.push_back({p, glm::dvec3(v)});
@@ -70,7 +71,7 @@ TEST(EngineFormats, UnrealFgaBecomesRightHandedMetres) {
   const VectorField f = loadField(path, {}, &report);
   EXPECT_EQ(f.dims(), glm::ivec3(4, 3, 2));
   // Voxel centres in metres, y mirrored.
-  EXPECT_NEAR(f.bounds().min.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(f.bounds().min.x, -0.5f, 1e-6f);
   EXPECT_NEAR(f.bounds().max.x, 2.5f, 1e-6f);
   EXPECT_NEAR(f.bounds().min.y, -2.5f, 1e-6f);
   EXPECT_NEAR(f.bounds().max.y, -0.5f, 1e-6f);

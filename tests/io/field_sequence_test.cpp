@@ -74,8 +74,7 @@ TEST(FieldSequence, ClampsOrLoops) {
 TEST(FieldSequence, FromANumberedPattern) {
   const auto dir = test::scratch();
   writeSeries(dir, 5);
-  const FieldSequence s =
-      FieldSequence::fromPattern((dir / "step_%03d.vti").string(), 10.0, 0.25);
+  const FieldSequence s = FieldSequence::fromPattern((dir / "step_%03d.vti").string(), 10.0, 0.25);
   ASSERT_EQ(s.size(), 5u);
   EXPECT_DOUBLE_EQ(s.time(4), 11.0);
   test::expectError([&] { FieldSequence::fromPattern((dir / "step_%s.vti").string(), 0, 1); },
@@ -97,8 +96,11 @@ TEST(FieldSequence, FramesMustShareTheGrid) {
         FieldSequence({0.0, 1.0}, {frameField(1.0f), frameField(1.0f, {3, 3, 3})});
       },
       {"frame 1", "same grid"});
-  test::expectError([&] { FieldSequence({1.0, 1.0}, {frameField(1.0f), frameField(2.0f)}); },
-                    {"does not come after"});
+  test::expectError(
+      [&] {
+        FieldSequence({1.0, 1.0}, {frameField(1.0f), frameField(2.0f)});
+      },
+      {"does not come after"});
 }
 
 TEST(FieldSequence, PvdErrorsNameTheCollection) {
@@ -106,11 +108,13 @@ TEST(FieldSequence, PvdErrorsNameTheCollection) {
   const auto pvd = dir / "bad.pvd";
   test::writeText(pvd, "<VTKFile type=\"Collection\"><Collection></Collection></VTKFile>");
   test::expectError([&] { FieldSequence::fromPvd(pvd); }, {pvd.string(), "lists no <DataSet>"});
-  test::writeText(pvd, "<VTKFile type=\"Collection\"><Collection><DataSet timestep=\"x\" "
-                       "file=\"a.vti\"/></Collection></VTKFile>");
+  test::writeText(pvd,
+                  "<VTKFile type=\"Collection\"><Collection><DataSet timestep=\"x\" "
+                  "file=\"a.vti\"/></Collection></VTKFile>");
   test::expectError([&] { FieldSequence::fromPvd(pvd); }, {pvd.string(), "is not a number"});
-  test::writeText(pvd, "<VTKFile type=\"Collection\"><Collection><DataSet timestep=\"0\" "
-                       "file=\"gone.vti\"/></Collection></VTKFile>");
+  test::writeText(pvd,
+                  "<VTKFile type=\"Collection\"><Collection><DataSet timestep=\"0\" "
+                  "file=\"gone.vti\"/></Collection></VTKFile>");
   test::expectError([&] { FieldSequence::fromPvd(pvd); }, {"gone.vti", "no such file"});
   test::writeText(pvd, "<VTKFile type=\"Collection\"><Collection><DataSet");
   test::expectError([&] { FieldSequence::fromPvd(pvd); }, {pvd.string()});

@@ -78,14 +78,15 @@ TEST(StreamTracer, Rk4TrajectoriesMatchVtkStreamTracer) {
   writer->SetFileName(path.c_str());
   ASSERT_EQ(writer->Write(), 1);
 
-  const std::vector<glm::dvec3> seeds{{1.5, 0.0, 1.0}, {0.0, 2.5, 2.0}, {-2.0, -1.0, 0.5},
-                                      {1.0, 1.0, 3.0}, {-0.3, 0.4, 1.2}};
+  const std::vector<glm::dvec3> seeds{
+      {1.5, 0.0, 1.0}, {0.0, 2.5, 2.0}, {-2.0, -1.0, 0.5}, {1.0, 1.0, 3.0}, {-0.3, 0.4, 1.2}};
   // VTK's tracer on the file.
   vtkNew<vtkXMLImageDataReader> reader;
   reader->SetFileName(path.c_str());
   vtkNew<vtkPolyData> seedData;
   vtkNew<vtkPoints> seedPoints;
-  for (const auto& s : seeds) seedPoints->InsertNextPoint(s.x, s.y, s.z);
+  for (const auto& s : seeds)
+    seedPoints->InsertNextPoint(s.x, s.y, s.z);
   seedData->SetPoints(seedPoints);
   vtkNew<vtkStreamTracer> tracer;
   tracer->SetInputConnection(reader->GetOutputPort());
@@ -145,12 +146,13 @@ TEST(StreamTracer, Rk4TrajectoriesMatchVtkStreamTracer) {
     const double ourTime = ourTimes[std::size_t(end - ours.arc.begin())];
     worstTime = std::max(worstTime, std::abs(vtkTime - ourTime) / vtkTime);
   }
-  std::printf("[ measured ] max distance to vtkStreamTracer at equal arc length: %.3g m over 6 m "
-              "paths (grid spacing 0.25 m); end-time difference %.3g%%\n",
-              worst, 100.0 * worstTime);
+  std::printf(
+      "[ measured ] max distance to vtkStreamTracer at equal arc length: %.3g m over 6 m "
+      "paths (grid spacing 0.25 m); end-time difference %.3g%%\n",
+      worst, 100.0 * worstTime);
   RecordProperty("max_distance_m", std::to_string(worst));
-  EXPECT_LT(worst, 2e-3);       // 2 mm over 6 m, under 1% of a grid cell
-  EXPECT_LT(worstTime, 5e-3);   // VTK's integration time within 0.5%
+  EXPECT_LT(worst, 2e-3);      // 2 mm over 6 m, under 1% of a grid cell
+  EXPECT_LT(worstTime, 5e-3);  // VTK's integration time within 0.5%
 }
 
 }  // namespace

@@ -70,14 +70,16 @@ vtkNew<vtkStructuredGrid> structured() {
   vtkNew<vtkPoints> pts;
   for (int k = 0; k < 2; ++k)
     for (int j = 0; j < 2; ++j)
-      for (int i = 0; i < 3; ++i) pts->InsertNextPoint(i * i, j, 2 * k);
+      for (int i = 0; i < 3; ++i)
+        pts->InsertNextPoint(i * i, j, 2 * k);
   grid->SetPoints(pts);
   addVelocity(grid);
   return grid;
 }
 
 template <class Writer, class Data>
-void writeVtk(const std::filesystem::path& path, Data& data, const std::function<void(Writer*)>& set) {
+void writeVtk(const std::filesystem::path& path, Data& data,
+              const std::function<void(Writer*)>& set) {
   vtkNew<Writer> w;
   w->SetInputData(data);
   w->SetFileName(path.c_str());
@@ -89,9 +91,11 @@ void truncateEverywhere(const std::filesystem::path& full) {
   const VectorField whole = loadField(full);
   const std::string bytes = test::readAll(full);
   std::vector<std::size_t> offsets;
-  for (std::size_t i = 0; i < std::min<std::size_t>(bytes.size(), 160); ++i) offsets.push_back(i);
+  for (std::size_t i = 0; i < std::min<std::size_t>(bytes.size(), 160); ++i)
+    offsets.push_back(i);
   const std::size_t stride = std::max<std::size_t>(1, bytes.size() / 120);
-  for (std::size_t i = 160; i < bytes.size(); i += stride) offsets.push_back(i);
+  for (std::size_t i = 160; i < bytes.size(); i += stride)
+    offsets.push_back(i);
   for (std::size_t i = bytes.size() > 24 ? bytes.size() - 24 : 0; i < bytes.size(); ++i)
     offsets.push_back(i);
   const auto cut = full.parent_path() / ("cut" + full.extension().string());
@@ -117,10 +121,13 @@ void truncateEverywhere(const std::filesystem::path& full) {
 TEST(Truncation, LegacyVtkAsciiAndBinary) {
   const auto dir = test::scratch();
   auto img = image();
-  writeVtk<vtkStructuredPointsWriter>(dir / "ascii.vtk", img, [](auto* w) { w->SetFileTypeToASCII(); });
-  writeVtk<vtkStructuredPointsWriter>(dir / "binary.vtk", img, [](auto* w) { w->SetFileTypeToBinary(); });
+  writeVtk<vtkStructuredPointsWriter>(dir / "ascii.vtk", img,
+                                      [](auto* w) { w->SetFileTypeToASCII(); });
+  writeVtk<vtkStructuredPointsWriter>(dir / "binary.vtk", img,
+                                      [](auto* w) { w->SetFileTypeToBinary(); });
   auto rect = rectilinear();
-  writeVtk<vtkRectilinearGridWriter>(dir / "rect.vtk", rect, [](auto* w) { w->SetFileTypeToBinary(); });
+  writeVtk<vtkRectilinearGridWriter>(dir / "rect.vtk", rect,
+                                     [](auto* w) { w->SetFileTypeToBinary(); });
   truncateEverywhere(dir / "ascii.vtk");
   truncateEverywhere(dir / "binary.vtk");
   truncateEverywhere(dir / "rect.vtk");
@@ -131,7 +138,8 @@ TEST(Truncation, VtkXml) {
   auto img = image();
   writeVtk<vtkXMLImageDataWriter>(dir / "appended.vti", img, [](auto*) {});
   writeVtk<vtkXMLImageDataWriter>(dir / "ascii.vti", img, [](auto* w) { w->SetDataModeToAscii(); });
-  writeVtk<vtkXMLImageDataWriter>(dir / "binary.vti", img, [](auto* w) { w->SetDataModeToBinary(); });
+  writeVtk<vtkXMLImageDataWriter>(dir / "binary.vti", img,
+                                  [](auto* w) { w->SetDataModeToBinary(); });
   auto rect = rectilinear();
   writeVtk<vtkXMLRectilinearGridWriter>(dir / "grid.vtr", rect, [](auto*) {});
   auto grid = structured();
@@ -143,7 +151,8 @@ TEST(Truncation, VtkXml) {
 TEST(Truncation, OpenVdb) {
   const auto dir = test::scratch();
   VectorField f(Box{{0, 0, 0}, {1, 2, 3}}, {5, 4, 3});
-  for (std::size_t i = 0; i < f.pointCount(); ++i) f.values()[i] = glm::vec3(float(i), 1.0f, -2.0f);
+  for (std::size_t i = 0; i < f.pointCount(); ++i)
+    f.values()[i] = glm::vec3(float(i), 1.0f, -2.0f);
   writeVdb(dir / "field.vdb", f);
   truncateEverywhere(dir / "field.vdb");
 }
@@ -151,7 +160,8 @@ TEST(Truncation, OpenVdb) {
 TEST(Truncation, EngineFormats) {
   const auto dir = test::scratch();
   std::string fga = "3,2,2,\n0,0,0,\n30,20,20,\n";
-  for (int i = 0; i < 12; ++i) fga += std::to_string(i) + ".5,-1,2,\n";
+  for (int i = 0; i < 12; ++i)
+    fga += std::to_string(i) + ".5,-1,2,\n";
   test::writeText(dir / "field.fga", fga);
   truncateEverywhere(dir / "field.fga");
   std::string vf = "VF_V";

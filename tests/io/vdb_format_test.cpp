@@ -19,7 +19,9 @@ namespace {
 
 using test::asymmetric;
 
-openvdb::Vec3s toVdb(const glm::dvec3& v) { return openvdb::Vec3s(float(v.x), float(v.y), float(v.z)); }
+openvdb::Vec3s toVdb(const glm::dvec3& v) {
+  return openvdb::Vec3s(float(v.x), float(v.y), float(v.z));
+}
 
 // A Vec3 grid holding the asymmetric field at each voxel's world position.
 openvdb::Vec3SGrid::Ptr asymmetricGrid(openvdb::math::Transform::Ptr xform, openvdb::CoordBBox box,
@@ -173,9 +175,8 @@ TEST(VdbFormat, GridsAreChosenByNameAndListedWhenWrong) {
   c->tree().setValueOn(openvdb::Coord(0), 1.0f);
   const auto path = dir / "grids.vdb";
   write(path, {a, b, c});
-  test::expectError([&] { loadField(path); },
-                    {path.string(), "several Vec3 grids", "'vel' (vec3s)", "'wind' (vec3d)",
-                     "'density' (float)"});
+  test::expectError([&] { loadField(path); }, {path.string(), "several Vec3 grids", "'vel' (vec3s)",
+                                               "'wind' (vec3d)", "'density' (float)"});
   LoadOptions o;
   o.arrayName = "wind";
   EXPECT_EQ(loadField(path, o).at(0, 0, 0), glm::vec3(0, 2, 0));
@@ -221,7 +222,8 @@ TEST(VdbFormat, OurVdbReadsBackThroughOpenVdbUnchanged) {
       }
   const VectorField g = loadField(path);
   EXPECT_EQ(g.dims(), dims);
-  for (std::size_t i = 0; i < f.pointCount(); ++i) EXPECT_EQ(g.values()[i], f.values()[i]);
+  for (std::size_t i = 0; i < f.pointCount(); ++i)
+    EXPECT_EQ(g.values()[i], f.values()[i]);
 }
 
 }  // namespace
