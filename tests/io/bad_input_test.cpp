@@ -118,6 +118,24 @@ TEST(BadInput, XmlExtentsEmptyOrHuge) {
   test::writeText(xml,
                   replaced(base, "WholeExtent=\"0 2 0 3 0 1\"", "WholeExtent=\"0 2 0 -3 0 1\""));
   expectError([&] { loadField(xml); }, {xml.string()});
+  // The extent claims fewer points than the values the file holds: VTK alone
+  // would read a prefix of the data.
+  test::writeText(
+      xml, replaced(replaced(base, "WholeExtent=\"0 2 0 3 0 1\"", "WholeExtent=\"0 2 0 2 0 1\""),
+                    "Extent=\"0 2 0 3 0 1\"", "Extent=\"0 2 0 2 0 1\""));
+  expectError([&] { loadField(xml); }, {xml.string(), "holds more than the", "point count"});
+  const auto appended = dir / "appended.vti";
+  {
+    vtkNew<vtkXMLImageDataWriter> w;
+    w->SetInputData(smallImage());
+    w->SetFileName(appended.c_str());
+    w->Write();
+  }
+  test::writeText(appended,
+                  replaced(replaced(test::readAll(appended), "WholeExtent=\"0 2 0 3 0 1\"",
+                                    "WholeExtent=\"0 2 0 2 0 1\""),
+                           "Extent=\"0 2 0 3 0 1\"", "Extent=\"0 2 0 2 0 1\""));
+  expectError([&] { loadField(appended); }, {appended.string(), "holds more than the"});
 }
 
 TEST(BadInput, ScalarArrayWhereVectorsWereAsked) {
