@@ -25,6 +25,8 @@ struct ProgramDesc {
 class Program {
  public:
   explicit Program(const ProgramDesc& desc);
+  explicit Program(std::vector<std::string> files, std::vector<std::string> defines = {})
+      : Program(ProgramDesc{std::move(files), std::move(defines), {}}) {}
 
   void use() const;
   std::uint32_t id() const { return program_.id(); }

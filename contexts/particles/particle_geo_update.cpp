@@ -35,29 +35,60 @@ ParticleGeoUpdate::ParticleGeoUpdate(std::size_t capacity)
       emitProgram_(makeProgram("particle_emit.vert", "particle_emit.geom")) {
   if (capacity == 0 || capacity > (std::size_t{1} << 31) / kRecord)
     throw Error(concat("ParticleGeoUpdate: capacity ", capacity, " is outside 1..", (1u << 31) / kRecord));
-  for (BufferSet& set : sets_) {
-    set.positionLife = gl::createBuffer();
-    set.velocityKind = gl::createBuffer();
-    glNamedBufferStorage(set.positionLife.id(), GLsizeiptr(capacity) * kRecord, nullptr, 0);
-    glNamedBufferStorage(set.velocityKind.id(), GLsizeiptr(capacity) * kRecord, nullptr, 0);
-    for (gl::VertexArray* vao : {&set.all, &set.survivors}) {
-      *vao = gl::createVertexArray();
-      for (GLuint a = 0; a < 2; ++a) {
-        glEnableVertexArrayAttrib(vao->id(), a);
-        glVertexArrayAttribFormat(vao->id(), a, 4, GL_FLOAT, GL_FALSE, 0);
-        glVertexArrayAttribBinding(vao->id(), a, a);
-      }
-      attach(vao->id(), set.positionLife.id(), set.velocityKind.id(), 0);
-    }
-    set.emit = gl::createTransformFeedback();
-    set.update = gl::createTransformFeedback();
-    glTransformFeedbackBufferBase(set.emit.id(), 0, set.positionLife.id());
-    glTransformFeedbackBufferBase(set.emit.id(), 1, set.velocityKind.id());
-  }
+  for (BufferSet& set : sets_) allocate(set, capacity);
   glNamedBufferStorage(simBlock_.id(), sizeof(SimBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedRenderbufferStorage(dummyColor_.id(), GL_R8, 1, 1);
   glNamedFramebufferRenderbuffer(dummyTarget_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, dummyColor_.id());
   for (gl::Query& q : survivorQueries_) q = gl::createQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+}
+
+void ParticleGeoUpdate::allocate(BufferSet& set, std::size_t capacity) {
+  set.positionLife = gl::createBuffer();
+  set.velocityKind = gl::createBuffer();
+  glGetError();  // start clean, to tell an allocation failure apart
+  glNamedBufferStorage(set.positionLife.id(), GLsizeiptr(capacity) * kRecord, nullptr, 0);
+  glNamedBufferStorage(set.velocityKind.id(), GLsizeiptr(capacity) * kRecord, nullptr, 0);
+  if (glGetError() == GL_OUT_OF_MEMORY)
+    throw Error(concat("ParticleGeoUpdate: the GPU has no memory for ", capacity, " particles (",
+                       2 * capacity * kRecord >> 20, " MiB per buffer set); lower sim.maximum or run.capacity_limit"));
+  for (gl::VertexArray* vao : {&set.all, &set.survivors}) {
+    *vao = gl::createVertexArray();
+    for (GLuint a = 0; a < 2; ++a) {
+      glEnableVertexArrayAttrib(vao->id(), a);
+      glVertexArrayAttribFormat(vao->id(), a, 4, GL_FLOAT, GL_FALSE, 0);
+      glVertexArrayAttribBinding(vao->id(), a, a);
+    }
+    attach(vao->id(), set.positionLife.id(), set.velocityKind.id(), 0);
+  }
+  set.emit = gl::createTransformFeedback();
+  set.update = gl::createTransformFeedback();
+  glTransformFeedbackBufferBase(set.emit.id(), 0, set.positionLife.id());
+  glTransformFeedbackBufferBase(set.emit.id(), 1, set.velocityKind.id());
+  set.born = 0;
+  set.hasSurvivors = false;
+}
+
+void ParticleGeoUpdate::grow(std::size_t capacity) {
+  if (capacity <= capacity_) return;
+  const std::size_t count = liveCount();
+  std::array<BufferSet, 2> grown;
+  for (BufferSet& set : grown) allocate(set, capacity);
+  // The live particles keep their order: all of them become the new set's "newborn" range.
+  const BufferSet& from = sets_[std::size_t(current_)];
+  BufferSet& to = grown[std::size_t(current_)];
+  if (count > 0) {
+    glCopyNamedBufferSubData(from.positionLife.id(), to.positionLife.id(), 0, 0, GLsizeiptr(count) * kRecord);
+    glCopyNamedBufferSubData(from.velocityKind.id(), to.velocityKind.id(), 0, 0, GLsizeiptr(count) * kRecord);
+  }
+  to.born = std::uint32_t(count);
+  sets_ = std::move(grown);
+  capacity_ = capacity;
+  // The last update's count now lives entirely in `born`; its survivor query no longer applies.
+  const std::size_t last = std::size_t((updates_ + kHistory - 1) % kHistory);
+  if (updates_ > 0) {
+    bornHistory_[last] = std::uint32_t(count);
+    queried_[last] = false;
+  }
 }
 
 void ParticleGeoUpdate::setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement) {

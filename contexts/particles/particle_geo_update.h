@@ -25,6 +25,7 @@
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
 #include "contexts/particles/field_texture.h"
+#include "contexts/particles/particle_backend.h"
 #include "core/field/field_placement.h"
 #include "core/field/height_map.h"
 #include "core/sim/emission_budget.h"
@@ -34,25 +35,22 @@
 
 namespace sandstorm {
 
-class ParticleGeoUpdate {
+class ParticleGeoUpdate final : public ParticleBackend {
  public:
   explicit ParticleGeoUpdate(std::size_t capacity);
 
-  void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement);
-  void setTerrain(std::shared_ptr<const HeightMap> terrain);
-  void step(const SimStep& step, const ParticleState& state);
-  void clear();
+  void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement) override;
+  void setTerrain(std::shared_ptr<const HeightMap> terrain) override;
+  void step(const SimStep& step, const ParticleState& state) override;
+  void clear() override;
+  void grow(std::size_t capacity) override;
+  void draw() const override;
 
-  // Draws the current particles as GL_POINTS with the bound program, which
-  // reads attribute 0 (position, life) and 1 (velocity, kind).
-  void draw() const;
-
-  std::size_t capacity() const { return capacity_; }
-  // These wait for the GPU; for tests, stats and dumps, not the frame loop.
-  std::size_t liveCount() const;
-  std::vector<Particle> readBack() const;
-
-  double lastFieldUploadMs() const { return fieldTexture_.lastUploadMs(); }
+  std::size_t capacity() const override { return capacity_; }
+  std::size_t liveCount() const override;
+  std::vector<Particle> readBack() const override;
+  double lastFieldUploadMs() const override { return fieldTexture_.lastUploadMs(); }
+  const char* name() const override { return "tf-gs"; }
 
  private:
   struct BufferSet {
@@ -66,6 +64,7 @@ class ParticleGeoUpdate {
 
   static constexpr int kHistory = 3;
 
+  void allocate(BufferSet& set, std::size_t capacity);
   void drawSet(const BufferSet& set) const;
   std::size_t countAfter(std::uint64_t update) const;
 

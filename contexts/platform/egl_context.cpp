@@ -108,6 +108,7 @@ EglContext::EglContext(const Options& options) {
     throw;
   }
   description_ = d.platform + ": " + glDescription();
+  releaseCurrent();  // the thread that renders makes it current
 }
 
 EglContext::~EglContext() {

@@ -4,7 +4,7 @@
 // The display is chosen once per process: the EGL device platform
 // (EGL_EXT_platform_device: NVIDIA and other GPU drivers), then Mesa's
 // surfaceless platform (llvmpipe on machines without a GPU). Contexts may share
-// objects with another EglContext.
+// objects with another EglContext. A new context is not current on any thread.
 #pragma once
 
 #include <memory>

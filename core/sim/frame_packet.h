@@ -8,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/cave/viewer.h"
 #include "core/field/field_placement.h"
 #include "core/field/vector_field.h"
 #include "core/sim/counter_rng.h"
@@ -25,11 +26,13 @@ struct FramePacket {
   std::uint32_t frame = 0;
   float dt = 0.0f;     // wall-clock seconds since the previous frame (measured once)
   float simDt = 0.0f;  // simulated seconds: dt * time scale, 0 while paused
+  double time = 0.0;   // wall-clock seconds since the first frame
   std::uint64_t seed = 0;
   bool reset = false;                  // drop every particle before this frame
   std::vector<StateChange> changes;    // take effect at this frame, before the update
   std::vector<std::uint32_t> emission; // Reeves' count per emitter for this frame
   std::shared_ptr<const FieldUpdate> fieldUpdate;  // non-null when the field changed
+  Viewer viewer;  // the head and the navigation, sampled once for every wall
 
   SimStep step() const { return SimStep{frame, simDt, Seed::from(seed), emission}; }
 };

@@ -21,8 +21,15 @@ AttributeResult MainContext::set(std::string_view key, const AttributeValue& val
   std::lock_guard lock(mutex_);
   ParticleState trial = pending_;
   AttributeResult result = table.set(trial, key, value);  // throws before anything changes
+  const std::string canonical = table.canonical(key);
+  if (canonical == "sim.maximum" && std::size_t(trial.sim.maximum) > options_.capacityLimit) {
+    trial.sim.maximum = int(options_.capacityLimit);
+    result.applied = trial.sim.maximum;
+    result.warning = concat("sim.maximum: ", toString(value), " exceeds the particle buffers' limit (run.capacity_limit = ",
+                            options_.capacityLimit, "); capped to ", options_.capacityLimit);
+  }
   if (!result.warning.empty()) log::warn(result.warning);
-  const StateChange change = StateChange::set(table.canonical(key), result.applied);
+  const StateChange change = StateChange::set(canonical, result.applied);
   pending_ = std::move(trial);
   queued_.push_back(change);
   return result;
@@ -50,9 +57,16 @@ void MainContext::setField(FieldUpdate field) {
   fieldChanged_ = true;
 }
 
-void MainContext::reset() {
+void MainContext::reset() { enqueue(StateChange::reset()); }
+
+void MainContext::setViewer(const Viewer& viewer) {
   std::lock_guard lock(mutex_);
-  resetRequested_ = true;
+  viewer_ = viewer;
+}
+
+double MainContext::time() const {
+  std::lock_guard lock(mutex_);
+  return time_;
 }
 
 void MainContext::schedule(std::uint32_t frame, const StateChange& change) {
@@ -67,15 +81,17 @@ FramePacket MainContext::next() {
     const auto now = std::chrono::steady_clock::now();
     dt = lastTick_ ? std::chrono::duration<float>(now - *lastTick_).count() : 1.0f / 60.0f;
     lastTick_ = now;
+    dt = std::clamp(dt, 0.0f, options_.maxDt);
   }
-  dt = std::clamp(dt, 0.0f, options_.maxDt);
 
   std::lock_guard lock(mutex_);
   FramePacket packet;
   packet.frame = frame_;
   packet.dt = dt;
   packet.seed = options_.seed;
-  packet.reset = std::exchange(resetRequested_, false);
+  packet.time = time_;
+  packet.viewer = viewer_;
+  time_ += dt;
 
   // Scheduled changes for this frame (or overdue) come first, then live requests.
   std::vector<StateChange> due;
@@ -92,6 +108,7 @@ FramePacket MainContext::next() {
       continue;
     }
     if (listener_) listener_(frame_, change);
+    if (change.kind == StateChange::Kind::Reset) packet.reset = true;
     packet.changes.push_back(std::move(change));
   }
   pending_ = state_;

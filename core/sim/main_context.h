@@ -31,6 +31,7 @@ class MainContext {
     std::uint64_t seed = 1;
     float fixedDt = 0.0f;  // > 0: every frame advances this much; 0: measure the clock
     float maxDt = 0.1f;    // a measured frame longer than this (a stall) counts as this
+    std::size_t capacityLimit = 1u << 26;  // sim.maximum beyond this is capped (the buffers can grow no further)
   };
 
   // Called for every change with the frame it takes effect (the session recorder).
@@ -47,6 +48,9 @@ class MainContext {
   void removeEmitter(int index);
   void setField(FieldUpdate field);
   void reset();
+  // The head and navigation the next packets carry (the app samples its trackers).
+  void setViewer(const Viewer& viewer);
+  double time() const;
   // A validated change that takes effect at `frame` (or the next frame if that has passed).
   void schedule(std::uint32_t frame, const StateChange& change);
 
@@ -73,8 +77,9 @@ class MainContext {
   std::multimap<std::uint32_t, StateChange> scheduled_;
   std::shared_ptr<const FieldUpdate> field_;
   bool fieldChanged_ = true;  // packet 0 always carries the field
-  bool resetRequested_ = false;
   std::uint32_t frame_ = 0;
+  double time_ = 0.0;
+  Viewer viewer_;
   std::optional<std::chrono::steady_clock::time_point> lastTick_;
   ChangeListener listener_;
 };

@@ -2,11 +2,14 @@
 
 #include <algorithm>
 
+#include "core/sim/capacity.h"
+
 #include "core/sim/particle_physics.h"
 
 namespace sandstorm {
 
-ReferenceSimulator::ReferenceSimulator(std::size_t capacity) : capacity_(capacity) {
+ReferenceSimulator::ReferenceSimulator(std::size_t capacity, std::size_t capacityLimit)
+    : capacity_(capacity), capacityLimit_(std::max(capacity, capacityLimit)) {
   particles_.reserve(capacity);
   next_.reserve(capacity);
 }
@@ -22,6 +25,7 @@ void ReferenceSimulator::setTerrain(std::shared_ptr<const HeightMap> terrain) {
 }
 
 void ReferenceSimulator::step(const SimStep& step, const ParticleState& state) {
+  capacity_ = grownCapacity(capacity_, state.sim.maximum, capacityLimit_);
   if (step.dt <= 0.0f) return;
   PhysicsInputs in;
   in.field = field_.get();

@@ -25,7 +25,8 @@ namespace sandstorm {
 
 class ReferenceSimulator {
  public:
-  explicit ReferenceSimulator(std::size_t capacity);
+  // `capacityLimit`: how far the capacity may grow when sim.maximum exceeds it.
+  explicit ReferenceSimulator(std::size_t capacity, std::size_t capacityLimit = 0);
 
   void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement = {});
   void setTerrain(std::shared_ptr<const HeightMap> terrain);
@@ -37,6 +38,7 @@ class ReferenceSimulator {
 
  private:
   std::size_t capacity_;
+  std::size_t capacityLimit_;
   std::shared_ptr<const VectorField> field_;
   FieldPlacement placement_;
   std::shared_ptr<const HeightMap> terrain_;

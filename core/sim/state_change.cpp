@@ -26,6 +26,12 @@ StateChange StateChange::removeEmitter(int index) {
   return c;
 }
 
+StateChange StateChange::reset() {
+  StateChange c;
+  c.kind = Kind::Reset;
+  return c;
+}
+
 void applyChange(ParticleState& state, const StateChange& change) {
   switch (change.kind) {
     case StateChange::Kind::Set: AttributeTable::instance().set(state, change.key, change.value); break;
@@ -40,6 +46,7 @@ void applyChange(ParticleState& state, const StateChange& change) {
                            state.emitters.size()));
       state.emitters.erase(state.emitters.begin() + change.index);
       break;
+    case StateChange::Kind::Reset: break;  // the particles go; the state stays
   }
 }
 
@@ -48,6 +55,7 @@ std::string describe(const StateChange& change) {
     case StateChange::Kind::Set: return change.key + " = " + toString(change.value);
     case StateChange::Kind::AddEmitter: return "add emitter";
     case StateChange::Kind::RemoveEmitter: return concat("remove emitter ", change.index);
+    case StateChange::Kind::Reset: return "reset";
   }
   return "?";
 }

@@ -12,7 +12,7 @@
 namespace sandstorm {
 
 struct StateChange {
-  enum class Kind { Set, AddEmitter, RemoveEmitter };
+  enum class Kind { Set, AddEmitter, RemoveEmitter, Reset };
   Kind kind = Kind::Set;
   std::string key;        // Set: canonical attribute key
   AttributeValue value;   // Set: the validated value
@@ -22,6 +22,7 @@ struct StateChange {
   static StateChange set(std::string key, AttributeValue value);
   static StateChange addEmitter(const Emitter& emitter);
   static StateChange removeEmitter(int index);
+  static StateChange reset();  // drop every particle (the thesis's F10 reset)
 };
 
 // Applies a validated change. Throws Error for a change that does not fit the

@@ -2,6 +2,7 @@
 // CPU reference simulator: the same frame packets, ~10^4 particles, 120 frames
 // with emission, death and a field that carries particles out of its bounds.
 #include "contexts/particles/particle_geo_update.h"
+#include "contexts/particles/particle_system.h"
 
 #include <gtest/gtest.h>
 
@@ -120,6 +121,45 @@ TEST_F(ParticleGeoUpdateTest, MaximumCapsTheLiveCountAndCapacityTheBuffer) {
   EXPECT_EQ(a.frames, 40u);
   EXPECT_LE(a.peak, 3000u);
   EXPECT_GE(a.peak, 2900u);
+}
+
+TEST_F(ParticleGeoUpdateTest, RaisingMaximumGrowsTheBuffersWithoutLosingParticles) {
+  Scenario s = tornado(MotionModel::Drag, Integrator::RK2, BoundaryMode::Kill);
+  s.state.sim.maximum = 4000;
+  s.state.emitters[0].lifetime = 30.0f;
+  MainContext::Options options;
+  options.fixedDt = 1.0f / 60.0f;
+  MainContext main(s.state, FieldUpdate{s.field, s.placement}, options);
+  ParticleSystem gpu(main.initialState(), ParticleSystem::Options{.capacity = 4096, .capacityLimit = 1 << 16});
+  gpu.setTerrain(s.terrain);
+  ReferenceSimulator cpu(4096, 1 << 16);
+  cpu.setField(s.field, s.placement);
+  cpu.setTerrain(s.terrain);
+  ParticleState state = main.initialState();
+  std::vector<Particle> before;
+  for (int f = 0; f < 60; ++f) {
+    if (f == 30) {
+      before = gpu.update().readBack();
+      main.set("sim.maximum", 20000.0f);  // above the 4096 the buffers hold
+    }
+    const FramePacket packet = main.next();
+    for (const StateChange& c : packet.changes) applyChange(state, c);
+    gpu.advance(packet);
+    cpu.step(packet.step(), state);
+    const std::vector<Particle> g = gpu.update().readBack();
+    ASSERT_EQ(g.size(), cpu.particles().size()) << "frame " << f;
+    for (std::size_t i = 0; i < g.size(); ++i)
+      ASSERT_EQ(g[i].positionLife, cpu.particles()[i].positionLife) << "frame " << f << " particle " << i;
+    if (f == 30) {
+      // Every particle alive before the growth is still there, moved one step, after the newborn.
+      const std::size_t born = g.size() - before.size();
+      EXPECT_GE(g.size(), before.size());
+      for (std::size_t i = 0; i < before.size(); i += 97)
+        EXPECT_NEAR(g[born + i].life(), before[i].life() - 1.0f / 60.0f, 1e-5f);
+    }
+  }
+  EXPECT_GE(gpu.update().capacity(), 20000u);
+  EXPECT_GT(gpu.update().liveCount(), 8000u);
 }
 
 }  // namespace

@@ -75,6 +75,25 @@ TEST(MainContext, PauseStopsTimeAndEmission) {
   EXPECT_FLOAT_EQ(p.simDt, 0.01f);
 }
 
+TEST(MainContext, MaximumIsCappedAtTheBufferLimitWithAMessage) {
+  MainContext::Options o = fixed();
+  o.capacityLimit = 50000;
+  MainContext main(ParticleState{}, FieldUpdate{}, o);
+  const AttributeResult r = main.set("sim.maximum", 80000);
+  EXPECT_EQ(std::get<int>(r.applied), 50000);
+  EXPECT_NE(r.warning.find("capped to 50000"), std::string::npos) << r.warning;
+  main.next();
+  EXPECT_EQ(main.state().sim.maximum, 50000);
+}
+
+TEST(MainContext, AFixedStepIsTakenAsGiven) {
+  MainContext::Options o;
+  o.fixedDt = 0.25f;  // longer than maxDt, which only bounds measured stalls
+  MainContext main(ParticleState{}, FieldUpdate{}, o);
+  EXPECT_FLOAT_EQ(main.next().dt, 0.25f);
+  EXPECT_DOUBLE_EQ(main.next().time, 0.25);
+}
+
 TEST(MainContext, RecordsEveryChangeWithItsFrame) {
   MainContext main(ParticleState{}, FieldUpdate{}, fixed());
   std::vector<std::pair<std::uint32_t, std::string>> log;

@@ -1,0 +1,228 @@
+#include "app/app.h"
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdlib>
+#include <fstream>
+#include <memory>
+#include <mutex>
+
+#include "app/scene_setup.h"
+#include "contexts/platform/egl_context.h"
+#include "contexts/platform/glfw_window.h"
+#include "contexts/render/render_context.h"
+#include "core/cave/viewer.h"
+#include "core/sim/attribute_table.h"
+#include "core/sim/main_context.h"
+#include "core/sim/particle_dump.h"
+#include "core/sim/session_log.h"
+#include "core/util/error.h"
+#include "core/util/hash.h"
+#include "core/util/log.h"
+
+namespace sandstorm {
+namespace {
+
+std::atomic<bool> interrupted{false};
+
+void onInterrupt(int) { interrupted = true; }
+
+bool haveDisplay() {
+  const char* x = std::getenv("DISPLAY");
+  const char* wayland = std::getenv("WAYLAND_DISPLAY");
+  return (x && *x) || (wayland && *wayland);
+}
+
+constexpr int kHeadlessFrames = 240;
+
+}  // namespace
+
+void applySets(AppConfig& config, const std::vector<std::string>& sets) {
+  const AttributeTable& table = AttributeTable::instance();
+  for (const std::string& set : sets) {
+    const std::size_t eq = set.find('=');
+    if (eq == std::string::npos || eq == 0)
+      throw Error(concat("--set '", set, "': expected key=value, e.g. --set emitter.0.rate=50000"));
+    const std::string key = set.substr(0, eq);
+    const AttributeResult r = table.set(config.particles, key, table.parse(key, set.substr(eq + 1)));
+    if (!r.warning.empty()) log::warn("--set ", r.warning);
+  }
+}
+
+App::App(AppConfig config, AppOptions options) : config_(std::move(config)), options_(std::move(options)) {
+  const bool headless = options_.headless || (config_.anyWindow() && !haveDisplay());
+  if (headless) {
+    if (config_.anyWindow() && !options_.headless)
+      log::info("no display: rendering the windows offscreen instead");
+    for (WallSpec& w : config_.walls) {
+      if (w.window) w.offscreenSize = w.window->size;
+      w.window.reset();
+      if (w.stereo == StereoMode::QuadBuffer) w.stereo = StereoMode::SideBySide;
+    }
+  }
+  const bool offscreenOnly = !config_.anyWindow();
+  if (options_.frames) config_.run.frames = *options_.frames;
+  if (offscreenOnly && config_.run.frames == 0) config_.run.frames = kHeadlessFrames;
+  if (offscreenOnly && !options_.screenshotDir) options_.screenshotDir = "out";
+  if (offscreenOnly && config_.run.fixedDt == 0.0f) config_.run.fixedDt = 1.0f / 60.0f;
+  applySets(config_, options_.sets);
+  if (!options_.walls.empty()) {
+    std::vector<WallSpec> chosen;
+    for (const std::string& name : options_.walls) {
+      const auto it = std::find_if(config_.walls.begin(), config_.walls.end(),
+                                   [&](const WallSpec& w) { return w.name == name; });
+      if (it == config_.walls.end()) {
+        std::string known;
+        for (const WallSpec& w : config_.walls) known += (known.empty() ? "" : ", ") + w.name;
+        throw Error(concat("--walls: no wall named '", name, "' in ", config_.path.string(), "; it has ", known));
+      }
+      chosen.push_back(*it);
+    }
+    config_.walls = std::move(chosen);
+  }
+}
+
+int App::run() {
+  const std::filesystem::path configDir = config_.path.parent_path();
+  FieldUpdate field = makeField(config_.field, configDir);
+  const std::shared_ptr<const HeightMap> terrain = makeTerrain(config_.scene, configDir);
+  if (options_.screenshotDir) std::filesystem::create_directories(*options_.screenshotDir);
+
+  MainContext::Options mainOptions;
+  mainOptions.seed = config_.run.seed;
+  mainOptions.fixedDt = config_.run.fixedDt;
+  mainOptions.capacityLimit = config_.run.capacityLimit;
+  MainContext main(config_.particles, std::move(field), mainOptions);
+  std::unique_ptr<SessionRecorder> recorder;
+  if (options_.record) {
+    recorder = std::make_unique<SessionRecorder>(*options_.record);
+    main.setChangeListener([&](std::uint32_t frame, const StateChange& c) { recorder->record(frame, c); });
+  }
+  if (options_.replay)
+    for (const ScheduledChange& s : readSessionLog(*options_.replay)) main.schedule(s.frame, s.change);
+  std::unique_ptr<HeadTracker> head = makeHeadTracker(config_.head);
+  const Navigation navigation = Navigation::from(config_.navigation);
+
+  // Contexts are made here (GLFW wants windows on the main thread), then each
+  // wall's thread makes its own current.
+  std::unique_ptr<GlfwLibrary> glfw;
+  if (config_.anyWindow()) glfw = std::make_unique<GlfwLibrary>();
+  const int wallCount = int(config_.walls.size());
+  FrameChannel channel(wallCount);
+  RenderContext::SwapBarrier barrier(wallCount);
+  std::vector<std::unique_ptr<RenderContext>> walls;
+  std::vector<GlfwWindow*> windows;
+  for (int i = 0; i < wallCount; ++i) {
+    const WallSpec& spec = config_.walls[std::size_t(i)];
+    std::unique_ptr<GlContext> context;
+    if (spec.window) {
+      GlfwWindow::Options o;
+      o.title = "Sandstorm: " + spec.name;
+      o.size = spec.window->size;
+      o.position = spec.window->position;
+      o.monitor = spec.window->monitor;
+      o.fullscreen = spec.window->fullscreen;
+      o.decorated = spec.window->decorated;
+      o.quadBufferStereo = spec.stereo == StereoMode::QuadBuffer;
+      auto window = std::make_unique<GlfwWindow>(*glfw, o);
+      windows.push_back(window.get());
+      context = std::move(window);
+    } else {
+      context = std::make_unique<EglContext>();
+    }
+    log::info("wall '", spec.name, "': ", context->description());
+    WallRendererSetup setup{.wall = spec,
+                            .initial = main.initialState(),
+                            .terrain = terrain,
+                            .capacity = config_.run.capacity,
+                            .capacityLimit = config_.run.capacityLimit,
+                            .backend = config_.run.backend,
+                            .nearPlane = config_.run.nearPlane,
+                            .farPlane = config_.run.farPlane};
+    walls.push_back(std::make_unique<RenderContext>(std::move(context), setup, channel, i, barrier));
+  }
+
+  const int lastFrame = config_.run.frames > 0 ? config_.run.frames - 1 : -1;
+  std::mutex hashMutex;
+  std::vector<std::string> hashLines;
+  for (std::size_t i = 0; i < walls.size(); ++i) {
+    const bool first = i == 0;
+    walls[i]->setFrameHook([&, this, lastFrame, first](WallRenderer& wall, const FramePacket& packet) {
+      if (options_.hashLog) {
+        const std::vector<Particle> particles = wall.particles().update().readBack();
+        const std::string line = concat(packet.frame, " ", wall.wall().name, " ", particles.size(), " ", std::hex,
+                                        hashOf(std::span<const Particle>(particles)));
+        std::lock_guard lock(hashMutex);
+        hashLines.push_back(line);
+      }
+      const int f = int(packet.frame);
+      const bool last = f == lastFrame;
+      if (options_.screenshotDir && (last || (options_.screenshotEvery > 0 && f % options_.screenshotEvery == 0))) {
+        const std::string name = last ? wall.wall().name : concat(wall.wall().name, "_", f);
+        writePng(wall.capture(), *options_.screenshotDir / (name + ".png"));
+      }
+      if (first && last && options_.dumpParticles) {
+        const std::vector<Particle> particles = wall.particles().update().readBack();
+        writeParticlesVtp(particles, *options_.dumpParticles);
+        log::info("wrote ", particles.size(), " particles to ", options_.dumpParticles->string());
+      }
+    });
+    walls[i]->start();
+  }
+
+  interrupted = false;
+  std::signal(SIGINT, onInterrupt);
+  std::signal(SIGTERM, onInterrupt);
+  const auto start = std::chrono::steady_clock::now();
+  auto lastReport = start;
+  int frames = 0;
+  bool failed = false;
+  while (!interrupted && (lastFrame < 0 || frames <= lastFrame)) {
+    if (glfw) {
+      GlfwLibrary::pollEvents();
+      bool close = false;
+      for (GlfwWindow* w : windows) close = close || w->shouldClose();
+      if (close) break;
+    }
+    for (const auto& w : walls) failed = failed || w->error().has_value();
+    if (failed) break;
+    main.setViewer(Viewer{head->pose(main.time()), navigation});
+    if (!channel.publish(std::make_shared<const FramePacket>(main.next()))) break;
+    ++frames;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - lastReport > std::chrono::seconds(2)) {
+      lastReport = now;
+      const WallStats s = walls[0]->stats();
+      log::info("frame ", s.frame, lastFrame >= 0 ? concat("/", lastFrame + 1) : std::string(), ": ",
+                s.liveParticles, " particles, ", s.frameMs, " ms per frame on '", walls[0]->name(), "'");
+    }
+  }
+  channel.close();
+  for (auto& w : walls) w->join();
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+
+  if (options_.hashLog) {
+    std::sort(hashLines.begin(), hashLines.end(), [](const std::string& a, const std::string& b) {
+      return std::stoul(a) != std::stoul(b) ? std::stoul(a) < std::stoul(b) : a < b;
+    });
+    std::ofstream out(*options_.hashLog);
+    for (const std::string& line : hashLines) out << line << "\n";
+    if (!out) throw Error(concat("--hash-log: cannot write ", options_.hashLog->string()));
+  }
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (const auto& w : walls) failed = failed || w->error().has_value();
+  log::info("stats: ", frames, " frames in ", seconds, " s (", frames / std::max(seconds, 1e-9), " frames/s), ",
+            walls.size(), " wall(s)");
+  for (const auto& w : walls) {
+    const WallStats s = w->stats();
+    log::info("  wall '", w->name(), "': ", s.liveParticles, " live particles at frame ", s.frame, ", last frame ",
+              s.frameMs, " ms", w->error() ? " FAILED: " + *w->error() : std::string());
+  }
+  if (options_.screenshotDir) log::info("images in ", options_.screenshotDir->string(), "/");
+  walls.clear();  // before the GLFW library goes
+  return failed ? 1 : 0;
+}
+
+}  // namespace sandstorm

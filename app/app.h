@@ -1,0 +1,45 @@
+// App: the thin top of Sandstorm. It builds the main context from the
+// configuration, one render context (thread + GL context) per wall, and runs
+// the frame loop: sample input and the head, let the main context make the
+// frame packet, hand it to every wall. Windows are polled on this thread, as
+// GLFW requires.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/config/app_config.h"
+
+namespace sandstorm {
+
+struct AppOptions {
+  std::optional<int> frames;                      // overrides run.frames
+  std::optional<std::filesystem::path> screenshotDir;
+  int screenshotEvery = 0;                        // also every N frames (0: only the last)
+  std::optional<std::filesystem::path> dumpParticles;
+  std::vector<std::string> sets;                  // "key=value" attribute overrides
+  bool headless = false;                          // force offscreen walls
+  std::optional<std::filesystem::path> hashLog;   // per frame and wall: particle count and buffer hash
+  std::vector<std::string> walls;                 // run only these walls (empty: all)
+  std::optional<std::filesystem::path> record;    // write every change with its frame
+  std::optional<std::filesystem::path> replay;    // apply a recorded session's changes at their frames
+};
+
+// Applies --set overrides to the configuration's particle state. Throws Error.
+void applySets(AppConfig& config, const std::vector<std::string>& sets);
+
+class App {
+ public:
+  App(AppConfig config, AppOptions options);
+  // Runs until the frame count is reached, a window closes or Ctrl-C. Returns
+  // the process exit code (0, or 1 when a wall failed).
+  int run();
+
+ private:
+  AppConfig config_;
+  AppOptions options_;
+};
+
+}  // namespace sandstorm

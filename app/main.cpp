@@ -1,0 +1,62 @@
+// sandstorm: the application. See README.md and `sandstorm --help`.
+#include <CLI/CLI.hpp>
+
+#include "app/app.h"
+#include "core/util/error.h"
+#include "core/util/log.h"
+
+int main(int argc, char** argv) {
+  using namespace sandstorm;
+  CLI::App cli{"Sandstorm: GPU particles carried through vector fields, for CAVEs and multi-window walls"};
+  std::string configPath = "config/desktop.toml";
+  AppOptions options;
+  std::string screenshotDir, dumpPath, logLevel;
+  int frames = -1;
+  cli.add_option("-c,--config", configPath, "Configuration file (TOML)")->check(CLI::ExistingFile);
+  cli.add_option("-n,--frames", frames, "Frames to run, then exit (0: until a window closes)")->check(CLI::NonNegativeNumber);
+  cli.add_option("--screenshot", screenshotDir, "Write each wall's last frame as DIR/<wall>.png");
+  cli.add_option("--screenshot-every", options.screenshotEvery, "Also write DIR/<wall>_<frame>.png every N frames")
+      ->check(CLI::NonNegativeNumber);
+  cli.add_option("--dump-particles", dumpPath, "Write the last frame's particles as VTK PolyData (.vtp)");
+  cli.add_option("--set", options.sets, "Set an attribute, e.g. --set emitter.0.rate=50000 (repeatable)");
+  std::string hashLog;
+  cli.add_option("--hash-log", hashLog, "Write each frame's particle count and buffer hash per wall to FILE");
+  cli.add_option("--walls", options.walls, "Run only these walls of the configuration (by name)")->delimiter(',');
+  std::string record, replay;
+  cli.add_option("--record", record, "Record every attribute change with its frame to FILE");
+  cli.add_option("--replay", replay, "Replay a recorded session: its changes at their frames")->check(CLI::ExistingFile);
+  cli.add_flag("--headless", options.headless, "Render every wall offscreen (EGL), even with a display");
+  cli.add_option("--log-level", logLevel, "error, warn, info or debug")->check(CLI::IsMember({"error", "warn", "info", "debug"}));
+  try {
+    cli.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return cli.exit(e);
+  }
+  if (!logLevel.empty()) {
+    log::Level level;
+    log::parseLevel(logLevel, level);
+    log::setLevel(level);
+  }
+  if (frames >= 0) options.frames = frames;
+  if (!screenshotDir.empty()) options.screenshotDir = screenshotDir;
+  if (!hashLog.empty()) options.hashLog = hashLog;
+  if (!record.empty()) options.record = record;
+  if (!replay.empty()) options.replay = replay;
+  if (!dumpPath.empty()) {
+    if (!dumpPath.ends_with(".vtp")) {
+      log::error("--dump-particles ", dumpPath, ": expected a .vtp file name");
+      return 2;
+    }
+    options.dumpParticles = dumpPath;
+  }
+  try {
+    App app(loadConfig(configPath), options);
+    return app.run();
+  } catch (const Error& e) {
+    log::error(e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    log::error("unexpected: ", e.what());
+    return 1;
+  }
+}

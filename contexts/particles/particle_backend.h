@@ -1,0 +1,46 @@
+// ParticleBackend: one context's particle buffers and the update that advances
+// them. Two implementations keep the same semantics (ReferenceSimulator is the
+// specification): ParticleGeoUpdate (transform feedback + geometry shaders,
+// the thesis's design) and ParticleComputeUpdate (compute shaders).
+//
+// Records are ordered: the newborn of the last update first, then the
+// survivors in their previous order. All calls need the context current.
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "core/field/field_placement.h"
+#include "core/field/height_map.h"
+#include "core/field/vector_field.h"
+#include "core/sim/particle.h"
+#include "core/sim/particle_state.h"
+#include "core/sim/sim_step.h"
+
+namespace sandstorm {
+
+class ParticleBackend {
+ public:
+  virtual ~ParticleBackend() = default;
+
+  virtual void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement) = 0;
+  virtual void setTerrain(std::shared_ptr<const HeightMap> terrain) = 0;
+  virtual void step(const SimStep& step, const ParticleState& state) = 0;
+  virtual void clear() = 0;
+  // Grows the buffers, keeping every live particle in place. Waits for the GPU.
+  virtual void grow(std::size_t capacity) = 0;
+
+  // Draws the current particles as GL_POINTS with the bound program, which
+  // reads attribute 0 (position, life) and 1 (velocity, kind).
+  virtual void draw() const = 0;
+
+  virtual std::size_t capacity() const = 0;
+  // These wait for the GPU; for tests, stats and dumps, not the frame loop.
+  virtual std::size_t liveCount() const = 0;
+  virtual std::vector<Particle> readBack() const = 0;
+  virtual double lastFieldUploadMs() const = 0;
+  virtual const char* name() const = 0;
+};
+
+}  // namespace sandstorm

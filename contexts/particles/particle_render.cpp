@@ -1,0 +1,70 @@
+#include "contexts/particles/particle_render.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "contexts/particles/particle_backend.h"
+#include "contexts/render/view_targets.h"
+
+namespace sandstorm {
+namespace {
+
+// A soft puff of dust: a smooth radial falloff with a little lumpiness, so
+// overlapping billboards read as a cloud rather than as discs.
+gl::Texture makeSprite() {
+  constexpr int kSize = 64;
+  std::vector<std::uint8_t> pixels(kSize * kSize);
+  for (int y = 0; y < kSize; ++y)
+    for (int x = 0; x < kSize; ++x) {
+      const float u = (x + 0.5f) / kSize * 2.0f - 1.0f, v = (y + 0.5f) / kSize * 2.0f - 1.0f;
+      const float r = std::sqrt(u * u + v * v);
+      const float falloff = r >= 1.0f ? 0.0f : (1.0f - r * r) * (1.0f - r * r);
+      const float lumps = 0.8f + 0.2f * std::sin(9.0f * u + 3.0f * std::sin(7.0f * v)) * std::cos(8.0f * v);
+      pixels[std::size_t(y * kSize + x)] = std::uint8_t(std::clamp(falloff * lumps, 0.0f, 1.0f) * 255.0f + 0.5f);
+    }
+  gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(t.id(), 1, GL_R8, kSize, kSize);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  glTextureSubImage2D(t.id(), 0, 0, 0, kSize, kSize, GL_RED, GL_UNSIGNED_BYTE, pixels.data());
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+}  // namespace
+
+ParticleRender::ParticleRender()
+    : billboards_(std::vector<std::string>{"particle_render.vert", "particle_render.geom", "particle_render.frag"}),
+      points_(std::vector<std::string>{"particle_render.vert", "particle_render.frag"}, std::vector<std::string>{"POINTS"}),
+      sprite_(makeSprite()) {}
+
+void ParticleRender::draw(const ParticleBackend& particles, const ViewTargets& targets, RenderMode mode) const {
+  glBindFramebuffer(GL_FRAMEBUFFER, targets.particleFramebuffer());
+  glViewport(0, 0, targets.size().x, targets.size().y);
+  const float clear[4] = {0, 0, 0, 0};
+  glClearNamedFramebufferfv(targets.particleFramebuffer(), GL_COLOR, 0, clear);
+  glClearNamedFramebufferfv(targets.particleFramebuffer(), GL_COLOR, 1, clear);
+
+  glDisable(GL_DEPTH_TEST);  // the fragment stage tests against the scene's depth itself
+  glDepthMask(GL_FALSE);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glBindTextureUnit(2, sprite_.id());
+  glBindTextureUnit(3, targets.sceneDepth());
+  if (mode == RenderMode::Points) {
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    points_.use();
+  } else {
+    billboards_.use();
+  }
+  particles.draw();
+  glDisable(GL_BLEND);
+  glDisable(GL_PROGRAM_POINT_SIZE);
+}
+
+}  // namespace sandstorm

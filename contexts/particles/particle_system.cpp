@@ -1,0 +1,50 @@
+#include "contexts/particles/particle_system.h"
+
+#include "contexts/particles/particle_geo_update.h"
+#include "core/sim/capacity.h"
+#include "core/util/error.h"
+#include "core/util/log.h"
+
+namespace sandstorm {
+
+namespace {
+
+std::unique_ptr<ParticleBackend> makeBackend(const std::string& name, std::size_t capacity) {
+  if (name == "tf-gs") return std::make_unique<ParticleGeoUpdate>(capacity);
+  throw Error(concat("unknown particle backend '", name, "'; expected tf-gs"));
+}
+
+}  // namespace
+
+ParticleSystem::ParticleSystem(const ParticleState& initial, const Options& options)
+    : state_(initial),
+      capacityLimit_(std::max(options.capacity, options.capacityLimit)),
+      update_(makeBackend(options.backend, options.capacity)) {}
+
+void ParticleSystem::setTerrain(std::shared_ptr<const HeightMap> terrain) { update_->setTerrain(std::move(terrain)); }
+
+void ParticleSystem::advance(const FramePacket& packet) {
+  if (packet.reset) update_->clear();
+  // The main context validated every change; a replica applies them as they come.
+  for (const StateChange& change : packet.changes) applyChange(state_, change);
+  // Raising Maximum above the buffers grows them, at the same frame on every wall.
+  const std::size_t capacity = grownCapacity(update_->capacity(), state_.sim.maximum, capacityLimit_);
+  if (capacity > update_->capacity()) {
+    log::info("frame ", packet.frame, ": growing the particle buffers from ", update_->capacity(), " to ", capacity);
+    update_->grow(capacity);
+  }
+  if (packet.fieldUpdate) {
+    field_ = packet.fieldUpdate;
+    update_->setField(field_->field, field_->placement);
+    log::debug("frame ", packet.frame, ": field uploaded in ", update_->lastFieldUploadMs(), " ms");
+  }
+  update_->step(packet.step(), state_);
+  frame_ = packet.frame;
+}
+
+void ParticleSystem::render(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const {
+  render_.draw(*update_, targets, state_.render.mode);
+  post_.draw(targets, destination, origin);
+}
+
+}  // namespace sandstorm

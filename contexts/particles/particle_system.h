@@ -1,0 +1,55 @@
+// ParticleSystem: one render context's complete copy of the particle system
+// (split first, thesis 5.3). It changes only by applying the main context's
+// frame packets, in order, so every copy holds the same particles. It owns the
+// thesis's three stages: ParticleGeoUpdate, ParticleRender and ParticlePost.
+//
+// Needs its GL context current for every call.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "contexts/particles/particle_backend.h"
+#include "contexts/particles/particle_post.h"
+#include "contexts/particles/particle_render.h"
+#include "core/sim/frame_packet.h"
+#include "core/sim/particle_state.h"
+
+namespace sandstorm {
+
+class ViewTargets;
+
+class ParticleSystem {
+ public:
+  struct Options {
+    std::size_t capacity = 1u << 20;
+    std::size_t capacityLimit = 1u << 26;  // how far raising sim.maximum may grow the buffers
+    std::string backend = "tf-gs";         // "tf-gs" or "compute"
+  };
+
+  ParticleSystem(const ParticleState& initial, const Options& options);
+
+  void setTerrain(std::shared_ptr<const HeightMap> terrain);
+  // Applies the packet (reset, changes, field) and runs this frame's update.
+  void advance(const FramePacket& packet);
+  // Draws the particles of the view whose scene is in `targets` and composites
+  // the result into `destination` at `origin`. The view and render blocks
+  // must be bound.
+  void render(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const;
+
+  const ParticleState& state() const { return state_; }
+  const ParticleBackend& update() const { return *update_; }
+  std::shared_ptr<const FieldUpdate> field() const { return field_; }
+  std::uint32_t frame() const { return frame_; }
+
+ private:
+  ParticleState state_;
+  std::size_t capacityLimit_;
+  std::unique_ptr<ParticleBackend> update_;
+  ParticleRender render_;
+  ParticlePost post_;
+  std::shared_ptr<const FieldUpdate> field_;
+  std::uint32_t frame_ = 0;
+};
+
+}  // namespace sandstorm

@@ -1,0 +1,33 @@
+// The std140 uniform blocks every render pass shares: the twins of
+// shaders/view_block.glsl (binding 1) and shaders/render_block.glsl (binding 2).
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "core/cave/view.h"
+#include "core/sim/sim_settings.h"
+
+namespace sandstorm {
+
+struct alignas(16) ViewBlock {
+  glm::mat4 view;
+  glm::mat4 projection;
+  glm::mat4 viewProjection;
+  glm::mat4 inverseViewProjection;
+  glm::vec4 eye;
+  glm::vec4 viewport;
+};
+static_assert(sizeof(ViewBlock) == 4 * 64 + 2 * 16);
+
+struct alignas(16) RenderBlock {
+  glm::vec4 colorBirth;
+  glm::vec4 colorDeath;
+  glm::vec4 lightDirection;
+  glm::vec4 params;
+};
+static_assert(sizeof(RenderBlock) == 4 * 16);
+
+ViewBlock makeViewBlock(const View& view, glm::ivec2 size);
+RenderBlock makeRenderBlock(const RenderSettings& settings);
+
+}  // namespace sandstorm

@@ -1,0 +1,33 @@
+// ViewRenderer: one image of the room for one eye: the scene into offscreen
+// buffers, then the particle system's render and post passes on top, into a
+// region of the destination framebuffer (the whole of it, or one half for
+// side-by-side stereo).
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "contexts/gl/objects.h"
+#include "contexts/render/view_targets.h"
+#include "contexts/scene/scene_renderer.h"
+#include "core/cave/view.h"
+
+namespace sandstorm {
+
+class ParticleSystem;
+
+class ViewRenderer {
+ public:
+  ViewRenderer();
+
+  SceneRenderer& scene() { return scene_; }
+  void render(const ParticleSystem& particles, const View& view, glm::ivec2 size, std::uint32_t destination,
+              glm::ivec2 origin);
+
+ private:
+  SceneRenderer scene_;
+  ViewTargets targets_;
+  gl::Buffer viewBlock_, renderBlock_;
+};
+
+}  // namespace sandstorm

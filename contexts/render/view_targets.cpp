@@ -1,0 +1,82 @@
+#include "contexts/render/view_targets.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+
+#include "core/util/error.h"
+#include "core/util/image.h"
+
+namespace sandstorm {
+namespace {
+
+gl::Texture texture2D(GLenum format, glm::ivec2 size) {
+  gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(t.id(), 1, format, size.x, size.y);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+void checkComplete(GLuint fbo, const char* what) {
+  const GLenum status = glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE)
+    throw Error(concat("ViewTargets: the ", what, " framebuffer is incomplete (status 0x", std::hex, status, ")"));
+}
+
+}  // namespace
+
+void ViewTargets::resize(glm::ivec2 size) {
+  if (size == size_) return;
+  if (size.x <= 0 || size.y <= 0) throw Error(concat("ViewTargets: bad size ", size.x, "x", size.y));
+  size_ = size;
+  sceneColor_ = texture2D(GL_RGBA8, size);
+  sceneDepth_ = texture2D(GL_DEPTH_COMPONENT32F, size);
+  particleColor_ = texture2D(GL_RGBA16F, size);
+  particleNormal_ = texture2D(GL_RGBA16F, size);
+
+  sceneFbo_ = gl::createFramebuffer();
+  glNamedFramebufferTexture(sceneFbo_.id(), GL_COLOR_ATTACHMENT0, sceneColor_.id(), 0);
+  glNamedFramebufferTexture(sceneFbo_.id(), GL_DEPTH_ATTACHMENT, sceneDepth_.id(), 0);
+  checkComplete(sceneFbo_.id(), "scene");
+
+  particleFbo_ = gl::createFramebuffer();
+  glNamedFramebufferTexture(particleFbo_.id(), GL_COLOR_ATTACHMENT0, particleColor_.id(), 0);
+  glNamedFramebufferTexture(particleFbo_.id(), GL_COLOR_ATTACHMENT1, particleNormal_.id(), 0);
+  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+  glNamedFramebufferDrawBuffers(particleFbo_.id(), 2, buffers);
+  checkComplete(particleFbo_.id(), "particle");
+}
+
+void OutputTarget::resize(glm::ivec2 size) {
+  if (size == size_) return;
+  if (size.x <= 0 || size.y <= 0) throw Error(concat("OutputTarget: bad size ", size.x, "x", size.y));
+  size_ = size;
+  color_ = texture2D(GL_RGBA8, size);
+  depth_ = gl::createRenderbuffer();
+  glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT24, size.x, size.y);
+  fbo_ = gl::createFramebuffer();
+  glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
+  glNamedFramebufferRenderbuffer(fbo_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());
+  checkComplete(fbo_.id(), "output");
+}
+
+Image OutputTarget::readPixels() const { return readFramebuffer(fbo_.id(), GL_COLOR_ATTACHMENT0, size_); }
+
+Image readFramebuffer(std::uint32_t framebuffer, std::uint32_t buffer, glm::ivec2 size) {
+  Image image{size.x, size.y, std::vector<std::uint8_t>(std::size_t(size.x) * std::size_t(size.y) * 4)};
+  std::vector<std::uint8_t> flipped(image.rgba.size());
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
+  glReadBuffer(buffer);
+  glReadPixels(0, 0, size.x, size.y, GL_RGBA, GL_UNSIGNED_BYTE, flipped.data());
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+  const std::size_t row = std::size_t(size.x) * 4;
+  for (int y = 0; y < size.y; ++y)  // GL's first row is the bottom one
+    std::copy_n(flipped.data() + std::size_t(size.y - 1 - y) * row, row, image.rgba.data() + std::size_t(y) * row);
+  return image;
+}
+
+}  // namespace sandstorm

@@ -1,0 +1,83 @@
+#include "contexts/render/wall_renderer.h"
+
+#include <epoxy/gl.h>
+
+#include "core/cave/wall_views.h"
+
+namespace sandstorm {
+
+WallRenderer::WallRenderer(const WallRendererSetup& s)
+    : wall_(s.wall),
+      near_(s.nearPlane),
+      far_(s.farPlane),
+      system_(s.initial, ParticleSystem::Options{s.capacity, s.capacityLimit, s.backend}),
+      anaglyph_(std::vector<std::string>{"fullscreen.vert", "anaglyph.frag"}),
+      emptyVao_(gl::createVertexArray()) {
+  if (s.terrain) {
+    system_.setTerrain(s.terrain);
+    viewRenderer_.scene().setTerrain(*s.terrain);
+  }
+}
+
+void WallRenderer::frame(const FramePacket& packet, glm::ivec2 windowSize) {
+  system_.advance(packet);
+  drewOffscreen_ = windowSize.x <= 0 || windowSize.y <= 0;
+  if (drewOffscreen_) {
+    offscreen_.resize(wall_.offscreenSize);
+    drawViews(packet, offscreen_.framebuffer(), wall_.offscreenSize);
+  } else {
+    drawViews(packet, 0, windowSize);
+  }
+  lastSize_ = drewOffscreen_ ? wall_.offscreenSize : windowSize;
+}
+
+void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destination, glm::ivec2 size) {
+  const float aspect = float(size.x) / float(size.y);
+  const std::vector<View> views = wallViews(wall_, packet.viewer, aspect, near_, far_);
+  switch (wall_.stereo) {
+    case StereoMode::Mono: viewRenderer_.render(system_, views[0], size, destination, {0, 0}); break;
+    case StereoMode::SideBySide: {
+      const glm::ivec2 half(size.x / 2, size.y);
+      viewRenderer_.render(system_, views[0], half, destination, {0, 0});
+      viewRenderer_.render(system_, views[1], half, destination, {half.x, 0});
+      break;
+    }
+    case StereoMode::TopBottom: {
+      const glm::ivec2 half(size.x, size.y / 2);
+      viewRenderer_.render(system_, views[0], half, destination, {0, half.y});  // left eye on top
+      viewRenderer_.render(system_, views[1], half, destination, {0, 0});
+      break;
+    }
+    case StereoMode::QuadBuffer:
+      glNamedFramebufferDrawBuffer(0, GL_BACK_LEFT);
+      viewRenderer_.render(system_, views[0], size, 0, {0, 0});
+      glNamedFramebufferDrawBuffer(0, GL_BACK_RIGHT);
+      viewRenderer_.render(system_, views[1], size, 0, {0, 0});
+      glNamedFramebufferDrawBuffer(0, GL_BACK);
+      break;
+    case StereoMode::Anaglyph: {
+      for (int eye = 0; eye < 2; ++eye) {
+        eyes_[eye].resize(size);
+        viewRenderer_.render(system_, views[std::size_t(eye)], size, eyes_[eye].framebuffer(), {0, 0});
+      }
+      glBindFramebuffer(GL_FRAMEBUFFER, destination);
+      glViewport(0, 0, size.x, size.y);
+      glBindTextureUnit(0, eyes_[0].colorTexture());
+      glBindTextureUnit(1, eyes_[1].colorTexture());
+      anaglyph_.use();
+      glProgramUniform2i(anaglyph_.id(), 0, 0, 0);
+      glBindVertexArray(emptyVao_.id());
+      glDrawArrays(GL_TRIANGLES, 0, 3);
+      glBindVertexArray(0);
+      break;
+    }
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+Image WallRenderer::capture() const {
+  if (drewOffscreen_) return offscreen_.readPixels();
+  return readFramebuffer(0, GL_BACK, lastSize_);
+}
+
+}  // namespace sandstorm

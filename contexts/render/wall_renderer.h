@@ -1,0 +1,59 @@
+// WallRenderer: everything one wall draws with, on the wall's own GL context:
+// its copy of the particle system, the scene, and the stereo layout. Each
+// frame it applies the packet, simulates, and renders every eye's view into
+// the wall's framebuffer (the window's, or an offscreen image).
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "contexts/gl/objects.h"
+#include "contexts/gl/program.h"
+#include "contexts/particles/particle_system.h"
+#include "contexts/render/view_renderer.h"
+#include "contexts/render/view_targets.h"
+#include "core/config/app_config.h"
+#include "core/util/image.h"
+
+namespace sandstorm {
+
+struct WallRendererSetup {
+  WallSpec wall;
+  ParticleState initial;
+  std::shared_ptr<const HeightMap> terrain;
+  std::size_t capacity = 1u << 20;
+  std::size_t capacityLimit = 1u << 26;
+  std::string backend = "tf-gs";
+  float nearPlane = 0.05f;
+  float farPlane = 500.0f;
+};
+
+class WallRenderer {
+ public:
+  explicit WallRenderer(const WallRendererSetup& setup);
+
+  // Applies the packet, advances the particles and draws the wall. `windowSize`
+  // is the default framebuffer's size; (0, 0) draws into the offscreen image.
+  void frame(const FramePacket& packet, glm::ivec2 windowSize);
+  // The image last drawn (offscreen) or the back buffer (window).
+  Image capture() const;
+
+  const ParticleSystem& particles() const { return system_; }
+  const WallSpec& wall() const { return wall_; }
+
+ private:
+  void drawViews(const FramePacket& packet, std::uint32_t destination, glm::ivec2 size);
+
+  WallSpec wall_;
+  float near_, far_;
+  ParticleSystem system_;
+  ViewRenderer viewRenderer_;
+  OutputTarget offscreen_;
+  OutputTarget eyes_[2];  // anaglyph: each eye's image before they are combined
+  gl::Program anaglyph_;
+  gl::VertexArray emptyVao_;
+  glm::ivec2 lastSize_{0};
+  bool drewOffscreen_ = false;
+};
+
+}  // namespace sandstorm

@@ -1,0 +1,105 @@
+#include "contexts/scene/scene_renderer.h"
+
+#include <epoxy/gl.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <vector>
+
+namespace sandstorm {
+
+SceneRenderer::SceneRenderer()
+    : sky_(std::vector<std::string>{"fullscreen.vert", "sky.frag"}),
+      terrain_(std::vector<std::string>{"terrain.vert", "terrain.frag"}),
+      lines_(std::vector<std::string>{"lines.vert", "lines.frag"}),
+      emptyVao_(gl::createVertexArray()) {
+  setTerrain(HeightMap::flat(0.0f));
+
+  // The unit cube's 12 edges; the model matrix stretches it onto the field's box.
+  std::vector<glm::vec3> edges;
+  for (int axis = 0; axis < 3; ++axis)
+    for (int a = 0; a < 2; ++a)
+      for (int b = 0; b < 2; ++b) {
+        glm::vec3 p(0.0f);
+        p[(axis + 1) % 3] = float(a);
+        p[(axis + 2) % 3] = float(b);
+        edges.push_back(p);
+        p[axis] = 1.0f;
+        edges.push_back(p);
+      }
+  boxVertices_ = gl::createBuffer();
+  glNamedBufferStorage(boxVertices_.id(), GLsizeiptr(edges.size() * sizeof(glm::vec3)), edges.data(), 0);
+  boxVao_ = gl::createVertexArray();
+  glEnableVertexArrayAttrib(boxVao_.id(), 0);
+  glVertexArrayAttribFormat(boxVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+  glVertexArrayAttribBinding(boxVao_.id(), 0, 0);
+  glVertexArrayVertexBuffer(boxVao_.id(), 0, boxVertices_.id(), 0, sizeof(glm::vec3));
+}
+
+void SceneRenderer::setTerrain(const HeightMap& map) {
+  struct Vertex {
+    glm::vec3 position, normal;
+  };
+  const glm::ivec2 d = map.dims();
+  const glm::vec2 step = (map.max() - map.min()) / glm::vec2(d - 1);
+  std::vector<Vertex> vertices;
+  vertices.reserve(std::size_t(d.x) * std::size_t(d.y));
+  for (int j = 0; j < d.y; ++j)
+    for (int i = 0; i < d.x; ++i) {
+      const glm::vec2 xy = map.min() + step * glm::vec2(i, j);
+      vertices.push_back({glm::vec3(xy, map.at(i, j)), map.normalAt(xy)});
+    }
+  std::vector<std::uint32_t> indices;
+  for (int j = 0; j + 1 < d.y; ++j)
+    for (int i = 0; i + 1 < d.x; ++i) {
+      const std::uint32_t a = std::uint32_t(i + d.x * j), b = a + 1, c = a + std::uint32_t(d.x), e = c + 1;
+      indices.insert(indices.end(), {a, b, e, a, e, c});
+    }
+  terrainVertices_ = gl::createBuffer();
+  terrainIndices_ = gl::createBuffer();
+  glNamedBufferStorage(terrainVertices_.id(), GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(), 0);
+  glNamedBufferStorage(terrainIndices_.id(), GLsizeiptr(indices.size() * 4), indices.data(), 0);
+  terrainVao_ = gl::createVertexArray();
+  for (GLuint a = 0; a < 2; ++a) {
+    glEnableVertexArrayAttrib(terrainVao_.id(), a);
+    glVertexArrayAttribFormat(terrainVao_.id(), a, 3, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec3));
+    glVertexArrayAttribBinding(terrainVao_.id(), a, 0);
+  }
+  glVertexArrayVertexBuffer(terrainVao_.id(), 0, terrainVertices_.id(), 0, sizeof(Vertex));
+  glVertexArrayElementBuffer(terrainVao_.id(), terrainIndices_.id());
+  terrainIndexCount_ = int(indices.size());
+}
+
+void SceneRenderer::setFieldBox(std::optional<Box> bounds, const FieldPlacement& placement) {
+  box_ = bounds;
+  placement_ = placement;
+}
+
+void SceneRenderer::draw() const {
+  glDisable(GL_BLEND);
+  glDisable(GL_DEPTH_TEST);
+  glDepthMask(GL_FALSE);
+  sky_.use();
+  glBindVertexArray(emptyVao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
+  terrain_.use();
+  glBindVertexArray(terrainVao_.id());
+  glDrawElements(GL_TRIANGLES, terrainIndexCount_, GL_UNSIGNED_INT, nullptr);
+
+  if (box_) {
+    glm::mat4 model = placement_.matrix();
+    model = model * glm::translate(glm::mat4(1.0f), box_->min) * glm::scale(glm::mat4(1.0f), box_->extent());
+    lines_.use();
+    glProgramUniformMatrix4fv(lines_.id(), 0, 1, GL_FALSE, glm::value_ptr(model));
+    glProgramUniform4f(lines_.id(), 1, 0.25f, 0.25f, 0.3f, 1.0f);
+    glBindVertexArray(boxVao_.id());
+    glDrawArrays(GL_LINES, 0, 24);
+  }
+  glBindVertexArray(0);
+}
+
+}  // namespace sandstorm

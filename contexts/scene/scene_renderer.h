@@ -1,0 +1,36 @@
+// SceneRenderer: the scene particles are composited against: a sky, the
+// terrain (or flat ground) and, as a guide, the field's bounding box. It draws
+// into the bound framebuffer with depth, using the view and render blocks
+// already bound (bindings 1 and 2).
+#pragma once
+
+#include <optional>
+
+#include "contexts/gl/objects.h"
+#include "contexts/gl/program.h"
+#include "core/field/box.h"
+#include "core/field/field_placement.h"
+#include "core/field/height_map.h"
+
+namespace sandstorm {
+
+class SceneRenderer {
+ public:
+  SceneRenderer();
+
+  void setTerrain(const HeightMap& terrain);
+  // The box drawn around the field; nothing is drawn without one.
+  void setFieldBox(std::optional<Box> bounds, const FieldPlacement& placement);
+  void draw() const;
+
+ private:
+  gl::Program sky_, terrain_, lines_;
+  gl::VertexArray emptyVao_;
+  gl::VertexArray terrainVao_, boxVao_;
+  gl::Buffer terrainVertices_, terrainIndices_, boxVertices_;
+  int terrainIndexCount_ = 0;
+  std::optional<Box> box_;
+  FieldPlacement placement_;
+};
+
+}  // namespace sandstorm

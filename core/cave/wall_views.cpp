@@ -1,0 +1,42 @@
+#include "core/cave/wall_views.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace sandstorm {
+
+bool isStereo(StereoMode mode) { return mode != StereoMode::Mono; }
+
+std::vector<View> wallViews(const WallSpec& wall, const Viewer& viewer, float aspect, float nearPlane,
+                            float farPlane) {
+  const glm::mat4 worldToRoom = viewer.navigation.worldToRoom();
+  std::vector<glm::vec3> eyes;  // room coordinates
+  glm::vec3 right = viewer.head.right;
+  glm::vec3 center = viewer.head.position;
+  if (wall.camera) {
+    center = wall.camera->position;
+    const glm::vec3 forward = glm::normalize(wall.camera->target - wall.camera->position);
+    right = glm::normalize(glm::cross(forward, glm::vec3(0, 0, 1)));
+  }
+  if (isStereo(wall.stereo)) {
+    const float half = 0.5f * viewer.head.eyeSeparation;
+    eyes = {center - right * half, center + right * half};
+  } else {
+    eyes = {center};
+  }
+  std::vector<View> views;
+  for (const glm::vec3& eye : eyes) {
+    View v;
+    if (wall.camera) {
+      const glm::vec3 target = wall.camera->target + (eye - center);
+      v = perspectiveView(eye, target, {0, 0, 1}, glm::radians(wall.camera->fovDegrees), aspect, nearPlane, farPlane);
+    } else {
+      v = offAxisView(wall.corners, eye, nearPlane, farPlane);
+    }
+    v.view = v.view * worldToRoom;
+    v.eye = viewer.navigation.roomToWorld(eye);
+    views.push_back(v);
+  }
+  return views;
+}
+
+}  // namespace sandstorm

@@ -1,0 +1,123 @@
+// AppConfig: everything a run is configured with, as read from a TOML file in
+// config/ (see config/README.md for the keys). Loading validates every key
+// before anything starts: a bad file yields one Error naming the file, line
+// and key, and no half-applied configuration.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/cave/wall.h"
+#include "core/field/box.h"
+#include "core/field/field_placement.h"
+#include "core/sim/particle_state.h"
+
+namespace sandstorm {
+
+enum class StereoMode { Mono, QuadBuffer, SideBySide, TopBottom, Anaglyph };
+
+struct WindowSpec {
+  int monitor = 0;
+  glm::ivec2 position{-1, -1};  // -1: the window manager decides
+  glm::ivec2 size{1280, 720};
+  bool fullscreen = false;
+  bool decorated = true;
+};
+
+// A conventional perspective camera in place of wall corners (desktop use).
+struct CameraSpec {
+  glm::vec3 position{10.0f, -10.0f, 5.0f};
+  glm::vec3 target{0.0f, 0.0f, 3.0f};
+  float fovDegrees = 50.0f;
+};
+
+struct WallSpec {
+  std::string name;
+  WallCorners corners;
+  std::optional<CameraSpec> camera;     // set: a perspective camera, corners unused
+  std::optional<WindowSpec> window;     // set: a GLFW window; otherwise offscreen (EGL)
+  glm::ivec2 offscreenSize{960, 540};   // image size of an offscreen wall
+  StereoMode stereo = StereoMode::Mono;
+  bool menu = false;                    // show the menu panel on this wall
+  int rank = 0;                         // cluster mode: the MPI rank that drives this wall
+  int line = 0;                         // where the wall was declared, for messages
+};
+
+enum class HeadMode { Fixed, Scripted, Desktop };
+
+struct HeadKeyframe {
+  float time = 0.0f;  // s
+  glm::vec3 position{0.0f};
+};
+
+struct HeadSpec {
+  HeadMode mode = HeadMode::Fixed;
+  glm::vec3 position{0.0f, 0.0f, 1.7f};
+  float yawDegrees = 90.0f;  // the direction the head faces, counter-clockwise from +x (90: +y)
+  float eyeSeparation = 0.065f;
+  std::vector<HeadKeyframe> path;  // scripted
+  bool loop = true;
+};
+
+// Where the world (field, scene, particles) sits in the room: navigation.
+struct NavigationSpec {
+  glm::vec3 offset{0.0f};
+  float yawDegrees = 0.0f;
+  float scale = 1.0f;
+};
+
+struct FieldSpec {
+  std::string source = "analytic";  // "analytic" or a file path (resolved against the config's folder)
+  std::string name = "tornado";     // analytic field, or the array/grid name in a file
+  glm::ivec3 dims{48, 48, 32};      // baking / resampling resolution
+  Box bounds{{-6.0f, -6.0f, 0.0f}, {6.0f, 6.0f, 10.0f}};
+  std::map<std::string, double> params;  // analytic field parameters
+  FieldPlacement placement;
+};
+
+struct SceneSpec {
+  std::string terrain = "flat";  // "flat", or a height map file (16-bit PGM / PNG)
+  float groundHeight = 0.0f;
+  Box terrainBounds{{-50.0f, -50.0f, 0.0f}, {50.0f, 50.0f, 8.0f}};  // xy extent and height range of a map
+  bool helicopter = false;       // the downdraft demo's helicopter and its controls
+};
+
+struct RunSpec {
+  std::uint64_t seed = 1;
+  std::size_t capacity = 1u << 20;        // initial particle buffer size
+  std::size_t capacityLimit = 1u << 26;   // raising sim.maximum grows the buffers up to this
+  float fixedDt = 0.0f;  // > 0: fixed steps; 0: the main context's clock
+  int frames = 0;        // 0: until a window closes
+  std::string backend = "tf-gs";
+  float nearPlane = 0.05f;
+  float farPlane = 500.0f;
+};
+
+struct AppConfig {
+  std::filesystem::path path;
+  ParticleState particles;
+  FieldSpec field;
+  SceneSpec scene;
+  HeadSpec head;
+  NavigationSpec navigation;
+  RunSpec run;
+  std::vector<WallSpec> walls;
+
+  bool anyWindow() const;
+};
+
+// Reads and validates a configuration. `monitorCount` (when known) checks
+// windows' monitor indices. Throws Error: "config/cave4.toml:14: wall[1].lower_left: ...".
+AppConfig loadConfig(const std::filesystem::path& path, std::optional<int> monitorCount = std::nullopt);
+AppConfig parseConfig(const std::string& text, const std::filesystem::path& name,
+                      std::optional<int> monitorCount = std::nullopt);
+
+const char* toString(StereoMode mode);
+
+}  // namespace sandstorm

@@ -1,0 +1,407 @@
+// Reads AppConfig from TOML (toml11). Every key is checked; unknown keys,
+// wrong types and bad values throw Error with "file:line: key: what was expected".
+#include <fstream>
+#include <set>
+#include <sstream>
+
+#include <toml.hpp>
+
+#include "core/config/app_config.h"
+#include "core/sim/attribute_table.h"
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+class Reader {
+ public:
+  explicit Reader(std::string file) : file_(std::move(file)) {}
+
+  std::string at(const toml::value& v) const {
+    const toml::source_location loc = v.location();
+    return loc.line() > 0 ? concat(file_, ":", loc.line()) : file_;
+  }
+
+  [[noreturn]] void fail(const toml::value& v, const std::string& key, const std::string& what) const {
+    throw Error(concat(at(v), ": ", key, ": ", what));
+  }
+
+  void checkKeys(const toml::value& table, const std::string& path, const std::set<std::string>& known) const {
+    for (const auto& [key, value] : table.as_table()) {
+      if (known.count(key)) continue;
+      std::string list;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      fail(value, path.empty() ? key : path + "." + key, "unknown key; expected one of: " + list);
+    }
+  }
+
+  const toml::value* find(const toml::value& table, const std::string& key) const {
+    const auto& t = table.as_table();
+    const auto it = t.find(key);
+    return it == t.end() ? nullptr : &it->second;
+  }
+
+  const toml::value& require(const toml::value& table, const std::string& key, const std::string& path) const {
+    const toml::value* v = find(table, key);
+    if (!v) throw Error(concat(at(table), ": ", path, ": missing required key '", key, "'"));
+    return *v;
+  }
+
+  double number(const toml::value& v, const std::string& key) const {
+    if (v.is_integer()) return double(v.as_integer());
+    if (v.is_floating()) return v.as_floating();
+    fail(v, key, "expected a number");
+  }
+
+  float real(const toml::value& table, const std::string& key, const std::string& path, float fallback) const {
+    const toml::value* v = find(table, key);
+    return v ? float(number(*v, path + "." + key)) : fallback;
+  }
+
+  int integer(const toml::value& table, const std::string& key, const std::string& path, int fallback,
+              int min, int max) const {
+    const toml::value* v = find(table, key);
+    if (!v) return fallback;
+    if (!v->is_integer()) fail(*v, path + "." + key, "expected an integer");
+    const auto i = v->as_integer();
+    if (i < min || i > max) fail(*v, path + "." + key, concat("expected an integer in ", min, "..", max, ", got ", i));
+    return int(i);
+  }
+
+  bool boolean(const toml::value& table, const std::string& key, const std::string& path, bool fallback) const {
+    const toml::value* v = find(table, key);
+    if (!v) return fallback;
+    if (!v->is_boolean()) fail(*v, path + "." + key, "expected true or false");
+    return v->as_boolean();
+  }
+
+  std::string string(const toml::value& table, const std::string& key, const std::string& path,
+                     const std::string& fallback) const {
+    const toml::value* v = find(table, key);
+    if (!v) return fallback;
+    if (!v->is_string()) fail(*v, path + "." + key, "expected a string");
+    return v->as_string().str;
+  }
+
+  template <int N>
+  glm::vec<N, float> vec(const toml::value& v, const std::string& key) const {
+    if (!v.is_array() || v.as_array().size() != std::size_t(N)) fail(v, key, concat("expected ", N, " numbers [..]"));
+    glm::vec<N, float> out;
+    for (int i = 0; i < N; ++i) out[i] = float(number(v.as_array()[std::size_t(i)], key));
+    return out;
+  }
+
+  template <int N>
+  glm::vec<N, float> vec(const toml::value& table, const std::string& key, const std::string& path,
+                         glm::vec<N, float> fallback) const {
+    const toml::value* v = find(table, key);
+    return v ? vec<N>(*v, path + "." + key) : fallback;
+  }
+
+  template <class E>
+  E choice(const toml::value& table, const std::string& key, const std::string& path, E fallback,
+           const std::vector<std::pair<std::string, E>>& choices) const {
+    const toml::value* v = find(table, key);
+    if (!v) return fallback;
+    std::string list;
+    for (const auto& [name, e] : choices) {
+      if (v->is_string() && v->as_string().str == name) return e;
+      list += (list.empty() ? "" : ", ") + name;
+    }
+    fail(*v, path + "." + key, "expected one of: " + list);
+  }
+
+  const std::string& file() const { return file_; }
+
+ private:
+  std::string file_;
+};
+
+// A TOML value as an attribute value; the table then checks type and range.
+AttributeValue attributeValue(const Reader& r, const toml::value& v, const std::string& key) {
+  if (v.is_boolean()) return v.as_boolean();
+  if (v.is_integer()) return int(std::clamp<std::int64_t>(v.as_integer(), -2000000000, 2000000000));
+  if (v.is_floating()) return float(v.as_floating());
+  if (v.is_string()) return v.as_string().str;
+  if (v.is_array()) return r.vec<3>(v, key);
+  r.fail(v, key, "expected a number, a boolean, a string or [x, y, z]");
+}
+
+void setAttributes(const Reader& r, const toml::value& table, const std::string& prefix, ParticleState& state) {
+  const AttributeTable& attributes = AttributeTable::instance();
+  for (const auto& [key, value] : table.as_table()) {
+    const std::string full = prefix + key;
+    try {
+      const AttributeResult result = attributes.set(state, full, attributeValue(r, value, full));
+      if (!result.warning.empty()) r.fail(value, full, result.warning + " (fix the file)");
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      if (what.starts_with(r.file())) throw;
+      throw Error(concat(r.at(value), ": ", what));
+    }
+  }
+}
+
+void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
+  r.checkKeys(t, "run", {"seed", "capacity", "capacity_limit", "fixed_dt", "frames", "backend", "near", "far"});
+  if (const toml::value* seed = r.find(t, "seed")) {
+    if (!seed->is_integer() || seed->as_integer() < 0) r.fail(*seed, "run.seed", "expected a non-negative integer");
+    run.seed = std::uint64_t(seed->as_integer());
+  }
+  run.capacity = std::size_t(r.integer(t, "capacity", "run", int(run.capacity), 1, 1 << 27));
+  run.capacityLimit = std::size_t(r.integer(t, "capacity_limit", "run", int(run.capacityLimit), 1, 1 << 28));
+  if (run.capacityLimit < run.capacity) r.fail(t, "run.capacity_limit", "expected capacity_limit >= capacity");
+  run.fixedDt = r.real(t, "fixed_dt", "run", run.fixedDt);
+  if (run.fixedDt < 0.0f || run.fixedDt > 1.0f) r.fail(t, "run.fixed_dt", "expected 0 (real clock) to 1 s");
+  run.frames = r.integer(t, "frames", "run", run.frames, 0, 100000000);
+  run.backend = r.choice<std::string>(t, "backend", "run", run.backend, {{"tf-gs", "tf-gs"}, {"compute", "compute"}});
+  run.nearPlane = r.real(t, "near", "run", run.nearPlane);
+  run.farPlane = r.real(t, "far", "run", run.farPlane);
+  if (!(run.nearPlane > 0.0f) || !(run.farPlane > run.nearPlane))
+    r.fail(t, "run.near/far", "expected 0 < near < far");
+}
+
+void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
+  r.checkKeys(t, "field", {"source", "name", "dims", "bounds_min", "bounds_max", "params", "offset", "scale",
+                           "yaw_deg"});
+  f.source = r.string(t, "source", "field", f.source);
+  f.name = r.string(t, "name", "field", f.name);
+  const glm::vec3 dims = r.vec<3>(t, "dims", "field", glm::vec3(f.dims));
+  for (int a = 0; a < 3; ++a)
+    if (dims[a] < 1 || dims[a] > 2048 || dims[a] != std::floor(dims[a]))
+      r.fail(*r.find(t, "dims"), "field.dims", "expected three whole numbers in 1..2048");
+  f.dims = glm::ivec3(dims);
+  f.bounds.min = r.vec<3>(t, "bounds_min", "field", f.bounds.min);
+  f.bounds.max = r.vec<3>(t, "bounds_max", "field", f.bounds.max);
+  if (!glm::all(glm::lessThan(f.bounds.min, f.bounds.max)))
+    r.fail(t, "field.bounds_min/bounds_max", "expected bounds_min < bounds_max on every axis");
+  if (const toml::value* params = r.find(t, "params")) {
+    if (!params->is_table()) r.fail(*params, "field.params", "expected a table of numbers");
+    for (const auto& [k, v] : params->as_table()) f.params[k] = r.number(v, "field.params." + k);
+  }
+  f.placement.offset = r.vec<3>(t, "offset", "field", f.placement.offset);
+  f.placement.scale = r.real(t, "scale", "field", f.placement.scale);
+  if (!(f.placement.scale > 0.0f)) r.fail(t, "field.scale", "expected a positive scale");
+  const float yaw = glm::radians(r.real(t, "yaw_deg", "field", 0.0f));
+  f.placement.rotation = glm::mat3(std::cos(yaw), std::sin(yaw), 0, -std::sin(yaw), std::cos(yaw), 0, 0, 0, 1);
+}
+
+void readScene(const Reader& r, const toml::value& t, SceneSpec& s) {
+  r.checkKeys(t, "scene", {"terrain", "ground_height", "terrain_min", "terrain_max", "helicopter"});
+  s.terrain = r.string(t, "terrain", "scene", s.terrain);
+  s.groundHeight = r.real(t, "ground_height", "scene", s.groundHeight);
+  s.terrainBounds.min = r.vec<3>(t, "terrain_min", "scene", s.terrainBounds.min);
+  s.terrainBounds.max = r.vec<3>(t, "terrain_max", "scene", s.terrainBounds.max);
+  if (!glm::all(glm::lessThan(s.terrainBounds.min, s.terrainBounds.max)))
+    r.fail(t, "scene.terrain_min/terrain_max", "expected terrain_min < terrain_max on every axis");
+  s.helicopter = r.boolean(t, "helicopter", "scene", s.helicopter);
+}
+
+void readHead(const Reader& r, const toml::value& t, HeadSpec& h) {
+  r.checkKeys(t, "head", {"mode", "position", "yaw_deg", "eye_separation", "path", "loop"});
+  h.mode = r.choice(t, "mode", "head", h.mode,
+                    {{"fixed", HeadMode::Fixed}, {"scripted", HeadMode::Scripted}, {"desktop", HeadMode::Desktop}});
+  h.position = r.vec<3>(t, "position", "head", h.position);
+  h.yawDegrees = r.real(t, "yaw_deg", "head", h.yawDegrees);
+  h.eyeSeparation = r.real(t, "eye_separation", "head", h.eyeSeparation);
+  if (h.eyeSeparation < 0.0f || h.eyeSeparation > 0.5f) r.fail(t, "head.eye_separation", "expected 0..0.5 m");
+  h.loop = r.boolean(t, "loop", "head", h.loop);
+  if (const toml::value* path = r.find(t, "path")) {
+    if (!path->is_array()) r.fail(*path, "head.path", "expected an array of {time, position} tables");
+    float last = -1.0f;
+    for (const toml::value& k : path->as_array()) {
+      if (!k.is_table()) r.fail(k, "head.path", "expected {time = .., position = [x, y, z]}");
+      r.checkKeys(k, "head.path[]", {"time", "position"});
+      HeadKeyframe key{float(r.number(r.require(k, "time", "head.path[]"), "head.path[].time")),
+                       r.vec<3>(r.require(k, "position", "head.path[]"), "head.path[].position")};
+      if (key.time <= last) r.fail(k, "head.path[].time", "expected times that increase");
+      last = key.time;
+      h.path.push_back(key);
+    }
+  }
+  if (h.mode == HeadMode::Scripted && h.path.size() < 2)
+    r.fail(t, "head.path", "a scripted head needs at least two keyframes");
+}
+
+void readNavigation(const Reader& r, const toml::value& t, NavigationSpec& n) {
+  r.checkKeys(t, "navigation", {"offset", "yaw_deg", "scale"});
+  n.offset = r.vec<3>(t, "offset", "navigation", n.offset);
+  n.yawDegrees = r.real(t, "yaw_deg", "navigation", n.yawDegrees);
+  n.scale = r.real(t, "scale", "navigation", n.scale);
+  if (!(n.scale > 0.0f)) r.fail(t, "navigation.scale", "expected a positive scale");
+}
+
+WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optional<int> monitors) {
+  const std::string path = concat("wall[", index, "]");
+  r.checkKeys(t, path, {"name", "lower_left", "lower_right", "upper_left", "camera", "window", "offscreen", "stereo",
+                        "menu", "rank"});
+  WallSpec w;
+  w.line = int(t.location().line());
+  w.name = r.string(t, "name", path, concat("wall", index));
+  if (const toml::value* camera = r.find(t, "camera")) {
+    if (!camera->is_table()) r.fail(*camera, path + ".camera", "expected a table");
+    r.checkKeys(*camera, path + ".camera", {"position", "target", "fov_deg"});
+    CameraSpec c;
+    c.position = r.vec<3>(*camera, "position", path + ".camera", c.position);
+    c.target = r.vec<3>(*camera, "target", path + ".camera", c.target);
+    c.fovDegrees = r.real(*camera, "fov_deg", path + ".camera", c.fovDegrees);
+    if (c.fovDegrees < 1.0f || c.fovDegrees > 170.0f) r.fail(*camera, path + ".camera.fov_deg", "expected 1..170");
+    w.camera = c;
+  } else {
+    w.corners.lowerLeft = r.vec<3>(r.require(t, "lower_left", path), path + ".lower_left");
+    w.corners.lowerRight = r.vec<3>(r.require(t, "lower_right", path), path + ".lower_right");
+    w.corners.upperLeft = r.vec<3>(r.require(t, "upper_left", path), path + ".upper_left");
+    validateWall(w.corners, concat(r.at(t), ": ", path, " ('", w.name, "')"));
+  }
+  const toml::value* window = r.find(t, "window");
+  const toml::value* offscreen = r.find(t, "offscreen");
+  if (window && offscreen) r.fail(t, path, "give either a window or an offscreen table, not both");
+  if (window) {
+    if (!window->is_table()) r.fail(*window, path + ".window", "expected a table");
+    const std::string wp = path + ".window";
+    r.checkKeys(*window, wp, {"monitor", "position", "size", "fullscreen", "decorated"});
+    WindowSpec s;
+    s.monitor = r.integer(*window, "monitor", wp, 0, 0, 63);
+    if (monitors && s.monitor >= std::max(*monitors, 1))
+      r.fail(*r.find(*window, "monitor"), wp + ".monitor",
+             concat("monitor ", s.monitor, " does not exist; ", *monitors, " connected (0..", *monitors - 1, ")"));
+    s.position = glm::ivec2(r.vec<2>(*window, "position", wp, glm::vec2(s.position)));
+    s.size = glm::ivec2(r.vec<2>(*window, "size", wp, glm::vec2(s.size)));
+    if (s.size.x < 16 || s.size.y < 16 || s.size.x > 16384 || s.size.y > 16384)
+      r.fail(*window, wp + ".size", "expected 16..16384 pixels each way");
+    s.fullscreen = r.boolean(*window, "fullscreen", wp, s.fullscreen);
+    s.decorated = r.boolean(*window, "decorated", wp, s.decorated);
+    w.window = s;
+  }
+  if (offscreen) {
+    if (!offscreen->is_table()) r.fail(*offscreen, path + ".offscreen", "expected a table");
+    r.checkKeys(*offscreen, path + ".offscreen", {"size"});
+    w.offscreenSize = glm::ivec2(r.vec<2>(*offscreen, "size", path + ".offscreen", glm::vec2(w.offscreenSize)));
+    if (w.offscreenSize.x < 16 || w.offscreenSize.y < 16 || w.offscreenSize.x > 16384 || w.offscreenSize.y > 16384)
+      r.fail(*offscreen, path + ".offscreen.size", "expected 16..16384 pixels each way");
+  }
+  w.stereo = r.choice(t, "stereo", path, w.stereo,
+                      {{"mono", StereoMode::Mono},
+                       {"quad-buffer", StereoMode::QuadBuffer},
+                       {"side-by-side", StereoMode::SideBySide},
+                       {"top-bottom", StereoMode::TopBottom},
+                       {"anaglyph", StereoMode::Anaglyph}});
+  if (w.stereo == StereoMode::QuadBuffer && !w.window)
+    r.fail(t, path + ".stereo", "quad-buffer stereo needs a window; offscreen walls can use side-by-side");
+  w.menu = r.boolean(t, "menu", path, w.menu);
+  w.rank = r.integer(t, "rank", path, 0, 0, 4095);
+  return w;
+}
+
+toml::value parseToml(const std::string& text, const std::string& name) {
+  try {
+    std::istringstream in(text);
+    return toml::parse(in, name);
+  } catch (const toml::syntax_error& e) {
+    throw Error(concat(name, ": TOML syntax error:\n", e.what()));
+  }
+}
+
+std::string readFile(const std::filesystem::path& path, const std::string& from) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(concat(from, "cannot open the configuration file ", path.string()));
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// Reads `root` on top of `c` (the included file's settings, if any).
+void read(const toml::value& root, const std::string& file, std::optional<int> monitors, AppConfig& c,
+          int depth);
+
+AppConfig readWithIncludes(const toml::value& root, const std::string& file, std::optional<int> monitors,
+                           int depth) {
+  AppConfig c;
+  read(root, file, monitors, c, depth);
+  return c;
+}
+
+void read(const toml::value& root, const std::string& file, std::optional<int> monitors, AppConfig& c,
+          int depth) {
+  const Reader r(file);
+  r.checkKeys(root, "",
+              {"include", "run", "field", "scene", "sim", "render", "emitter", "head", "navigation", "wall"});
+  // include = "scene.toml": that file's settings first, this file's on top.
+  if (const toml::value* include = r.find(root, "include")) {
+    if (!include->is_string()) r.fail(*include, "include", "expected a file name");
+    if (depth > 4) r.fail(*include, "include", "includes nest too deeply");
+    const std::filesystem::path path = std::filesystem::path(file).parent_path() / include->as_string().str;
+    const toml::value inner = parseToml(readFile(path, r.at(*include) + ": include: "), path.string());
+    read(inner, path.string(), monitors, c, depth + 1);
+  }
+  const auto section = [&](const char* name) -> const toml::value* {
+    const toml::value* v = r.find(root, name);
+    if (v && !v->is_table()) r.fail(*v, name, "expected a table [" + std::string(name) + "]");
+    return v;
+  };
+  if (const auto* t = section("run")) readRun(r, *t, c.run);
+  if (const auto* t = section("field")) readField(r, *t, c.field);
+  if (const auto* t = section("scene")) readScene(r, *t, c.scene);
+  if (const auto* t = section("head")) readHead(r, *t, c.head);
+  if (const auto* t = section("navigation")) readNavigation(r, *t, c.navigation);
+  if (const auto* t = section("sim")) setAttributes(r, *t, "sim.", c.particles);
+  if (const auto* t = section("render")) setAttributes(r, *t, "render.", c.particles);
+  if (const toml::value* emitters = r.find(root, "emitter")) {
+    if (!emitters->is_array()) r.fail(*emitters, "emitter", "expected [[emitter]] tables");
+    if (emitters->as_array().size() > std::size_t(ParticleState::kMaxEmitters))
+      r.fail(*emitters, "emitter", concat("at most ", ParticleState::kMaxEmitters, " emitters"));
+    c.particles.emitters.clear();
+    for (const toml::value& e : emitters->as_array()) {
+      if (!e.is_table()) r.fail(e, "emitter", "expected a table");
+      c.particles.emitters.emplace_back();
+      setAttributes(r, e, concat("emitter.", c.particles.emitters.size() - 1, "."), c.particles);
+    }
+  }
+  const toml::value* walls = r.find(root, "wall");
+  if (!walls) return;  // an included scene file, or the walls come from an include
+  if (!walls->is_array()) r.fail(*walls, "wall", "expected [[wall]] tables");
+  c.walls.clear();
+  std::set<std::string> names;
+  for (const toml::value& w : walls->as_array()) {
+    if (!w.is_table()) r.fail(w, "wall", "expected a table");
+    c.walls.push_back(readWall(r, w, int(c.walls.size()), monitors));
+    if (!names.insert(c.walls.back().name).second) r.fail(w, "wall.name", "'" + c.walls.back().name + "' is used twice");
+  }
+  if (c.walls.empty()) throw Error(concat(file, ": [[wall]] is empty; expected at least one wall"));
+  int menus = 0;
+  for (const WallSpec& w : c.walls) menus += w.menu ? 1 : 0;
+  if (menus > 1) throw Error(concat(file, ": the menu is shown on ", menus, " walls; expected at most one"));
+}
+
+}  // namespace
+
+bool AppConfig::anyWindow() const {
+  for (const WallSpec& w : walls)
+    if (w.window) return true;
+  return false;
+}
+
+AppConfig parseConfig(const std::string& text, const std::filesystem::path& name, std::optional<int> monitors) {
+  AppConfig c = readWithIncludes(parseToml(text, name.string()), name.string(), monitors, 0);
+  if (c.walls.empty())
+    throw Error(concat(name.string(), ": no [[wall]] given; expected at least one wall, window or camera"));
+  c.path = name;
+  return c;
+}
+
+AppConfig loadConfig(const std::filesystem::path& path, std::optional<int> monitors) {
+  return parseConfig(readFile(path, ""), path, monitors);
+}
+
+const char* toString(StereoMode mode) {
+  switch (mode) {
+    case StereoMode::Mono: return "mono";
+    case StereoMode::QuadBuffer: return "quad-buffer";
+    case StereoMode::SideBySide: return "side-by-side";
+    case StereoMode::TopBottom: return "top-bottom";
+    case StereoMode::Anaglyph: return "anaglyph";
+  }
+  return "?";
+}
+
+}  // namespace sandstorm

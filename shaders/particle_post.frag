@@ -1,0 +1,27 @@
+#version 450 core
+// ParticlePost: deferred particle shading (thesis 5.1.3). The accumulated
+// particles are lit once per pixel from their accumulated billboard normals and
+// the light direction, then composited (premultiplied "over") onto the scene.
+#include "render_block.glsl"
+
+layout(binding = 0) uniform sampler2D uSceneColor;
+layout(binding = 1) uniform sampler2D uParticleColor;
+layout(binding = 2) uniform sampler2D uParticleNormal;
+layout(location = 0) uniform ivec2 uOrigin;  // this view's corner in the destination
+
+out vec4 fragColor;
+
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy) - uOrigin;
+  vec4 scene = texelFetch(uSceneColor, p, 0);
+  vec4 particles = texelFetch(uParticleColor, p, 0);
+  vec3 lit = particles.rgb;
+  if (look.params.z > 0.5 && particles.a > 0.0) {
+    vec3 accumulated = texelFetch(uParticleNormal, p, 0).xyz;
+    float len = length(accumulated);
+    vec3 n = len > 1e-6 ? accumulated / len : look.lightDirection.xyz;
+    float ambient = look.lightDirection.w;
+    lit *= ambient + (1.0 - ambient) * max(dot(n, look.lightDirection.xyz), 0.0);
+  }
+  fragColor = vec4(lit + scene.rgb * (1.0 - particles.a), 1.0);
+}

@@ -1,0 +1,20 @@
+#version 450 core
+// ParticleRender: particles from the update's buffers. Billboards are built by
+// the geometry stage; points are sized here to their projected diameter.
+#include "view_block.glsl"
+#include "render_block.glsl"
+
+layout(location = 0) in vec4 inPositionLife;
+layout(location = 1) in vec4 inVelocityKind;
+out vec3 vCenter;
+out float vAge;  // 0 at birth, 1 at death
+
+void main() {
+  vCenter = inPositionLife.xyz;
+  vAge = clamp(1.0 - inPositionLife.w / max(inVelocityKind.w, 1e-6), 0.0, 1.0);
+#ifdef POINTS
+  gl_Position = view.viewProjection * vec4(vCenter, 1.0);
+  float pixels = look.params.x * view.viewport.w * view.projection[1][1] / (2.0 * max(gl_Position.w, 1e-4));
+  gl_PointSize = clamp(pixels, 1.0, 64.0);
+#endif
+}

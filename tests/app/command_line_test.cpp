@@ -1,0 +1,59 @@
+// The command line: help, bad arguments and bad files fail cleanly with a
+// message and a non-zero exit; good runs write what they promise.
+#include <gtest/gtest.h>
+
+#include "tests/app/run_process.h"
+
+namespace sandstorm {
+namespace {
+
+using test::runSandstorm;
+
+TEST(CommandLine, HelpListsTheOptions) {
+  const auto r = runSandstorm("--help");
+  EXPECT_EQ(r.exitCode, 0);
+  for (const char* option : {"--config", "--frames", "--screenshot", "--dump-particles", "--set", "--replay"})
+    EXPECT_NE(r.output.find(option), std::string::npos) << option;
+}
+
+TEST(CommandLine, BadArgumentsFailWithAMessage) {
+  struct Case {
+    std::string args, expected;
+  };
+  for (const Case& c : {Case{"--frames -3", "--frames"}, Case{"--config nowhere.toml", "nowhere.toml"},
+                        Case{"--bogus", "bogus"}, Case{"--set render.size", "expected key=value"},
+                        Case{"--set render.sise=1", "unknown attribute 'render.sise'"},
+                        Case{"--set sim.integrator=rk3", "euler, rk2, rk4"},
+                        Case{"--dump-particles out.txt", "expected a .vtp"},
+                        Case{"--walls nowhere", "no wall named 'nowhere'"}}) {
+    const auto r = runSandstorm("--config tests/data/identity.toml --frames 1 " + c.args);
+    EXPECT_NE(r.exitCode, 0) << c.args;
+    EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << " gave:\n" << r.output;
+  }
+}
+
+TEST(CommandLine, BadConfigsNameTheirFileAndLine) {
+  const auto dir = test::scratchDir("badconfig");
+  std::ofstream(dir / "bad.toml") << "[[wall]]\nlower_left = [0, 0, 0]\nlower_right = [1, 0, 0]\n"
+                                     "upper_left = [0, 0, 1]\nstereo = \"wiggle\"\n";
+  const auto r = runSandstorm("--config " + (dir / "bad.toml").string());
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.output.find("bad.toml:5: wall[0].stereo"), std::string::npos) << r.output;
+}
+
+TEST(CommandLine, HeadlessRunsWriteImagesAndParticles) {
+  const auto dir = test::scratchDir("outputs");
+  const auto r = runSandstorm("--config tests/data/identity.toml --frames 30 --walls front,left --screenshot " +
+                              dir.string() + " --dump-particles " + (dir / "p.vtp").string() +
+                              " --set emitter.0.rate=20000");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "front.png"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "left.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir / "right.png"));
+  ASSERT_TRUE(std::filesystem::exists(dir / "p.vtp"));
+  EXPECT_GT(std::filesystem::file_size(dir / "p.vtp"), 1000u);
+  EXPECT_NE(r.output.find("stats:"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sandstorm

@@ -1,0 +1,46 @@
+// Runs the sandstorm binary as a child process, for tests of the command line
+// and of what separate processes compute.
+#pragma once
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace sandstorm::test {
+
+struct ProcessResult {
+  int exitCode = -1;
+  std::string output;  // stdout and stderr together
+};
+
+inline std::filesystem::path scratchDir(const std::string& name) {
+  const auto dir = std::filesystem::temp_directory_path() / ("sandstorm-test-" + name);
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+inline ProcessResult runSandstorm(const std::string& args) {
+  const std::string cmd = std::string("cd '") + SANDSTORM_SOURCE_DIR + "' && '" + SANDSTORM_BINARY + "' " + args + " 2>&1";
+  ProcessResult r;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
+  const int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+inline std::vector<std::string> readLines(const std::filesystem::path& path) {
+  std::ifstream in(path);
+  std::vector<std::string> lines;
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+}  // namespace sandstorm::test

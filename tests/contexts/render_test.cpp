@@ -1,0 +1,166 @@
+// Headless render tests: what the pixels show, checked against where the
+// particles must be (their projected positions), what must hide them (the
+// ground) and how premultiplied "over" blending must combine them.
+#include <gtest/gtest.h>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "contexts/render/wall_renderer.h"
+#include "core/field/analytic_field.h"
+#include "core/sim/main_context.h"
+#include "tests/contexts/gl_test.h"
+
+namespace sandstorm {
+namespace {
+
+class RenderTest : public GlTest {};
+
+constexpr glm::ivec2 kSize{96, 64};
+
+struct Uniform final : AnalyticField {
+  glm::vec3 v;
+  explicit Uniform(glm::vec3 value) : v(value) {}
+  glm::vec3 evaluate(const glm::vec3&) const override { return v; }
+};
+
+WallSpec cameraWall() {
+  WallSpec w;
+  w.name = "test";
+  w.camera = CameraSpec{{0.0f, -8.0f, 2.0f}, {0.0f, 0.0f, 2.0f}, 40.0f};
+  w.offscreenSize = kSize;
+  return w;
+}
+
+// A particle state whose emitters each emit exactly one particle per 0.25 s
+// frame (rate * dt = 1, and stochastic rounding of a whole number is exact).
+ParticleState onePerFrame(std::vector<glm::vec3> positions, float opacity) {
+  ParticleState s;
+  s.emitters.clear();
+  for (const glm::vec3& p : positions) {
+    Emitter e;
+    e.shape = EmitterShape::Point;
+    e.position = p;
+    e.rate = 4.0f;
+    e.lifetime = 100.0f;
+    s.emitters.push_back(e);
+  }
+  s.sim.groundCollision = false;
+  s.render.mode = RenderMode::Billboards;
+  s.render.size = 1.0f;
+  s.render.colorBirth = s.render.colorDeath = {0.9f, 0.1f, 0.1f};
+  s.render.opacityBirth = s.render.opacityDeath = opacity;
+  s.render.ambient = 1.0f;  // unlit: colour is exactly the attribute
+  return s;
+}
+
+Image render(const ParticleState& state, int frames, std::shared_ptr<const VectorField> field = nullptr) {
+  MainContext::Options options;
+  options.fixedDt = 0.25f;
+  MainContext main(state, FieldUpdate{field, {}}, options);
+  WallRendererSetup setup{.wall = cameraWall(),
+                          .initial = state,
+                          .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
+                          .capacity = 4096,
+                          .nearPlane = 0.1f,
+                          .farPlane = 100.0f};
+  WallRenderer wall(setup);
+  for (int f = 0; f < frames; ++f) wall.frame(main.next(), {0, 0});
+  return wall.capture();
+}
+
+glm::ivec2 project(const glm::vec3& p) {
+  const WallSpec w = cameraWall();
+  const View v = perspectiveView(w.camera->position, w.camera->target, {0, 0, 1}, glm::radians(40.0f),
+                                 float(kSize.x) / float(kSize.y), 0.1f, 100.0f);
+  const glm::vec4 clip = v.projection * v.view * glm::vec4(p, 1.0f);
+  const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+  // Image rows run top to bottom.
+  return {int((ndc.x * 0.5f + 0.5f) * kSize.x), int((0.5f - ndc.y * 0.5f) * kSize.y)};
+}
+
+float redness(glm::u8vec4 c) { return float(c.x) - 0.5f * (float(c.y) + float(c.z)); }
+
+TEST_F(RenderTest, ParticlesAppearWhereTheyAreAndNowhereElse) {
+  const glm::vec3 where(1.5f, 0.0f, 2.5f);
+  const Image empty = render(onePerFrame({}, 0.8f), 1);
+  const Image one = render(onePerFrame({where}, 0.8f), 1);
+  const glm::ivec2 px = project(where);
+  EXPECT_GT(redness(one.at(px.x, px.y)), redness(empty.at(px.x, px.y)) + 80.0f);
+  // Far from the particle, nothing changed.
+  const glm::ivec2 far = project({-2.5f, 0.0f, 1.0f});
+  EXPECT_EQ(one.at(far.x, far.y), empty.at(far.x, far.y));
+}
+
+TEST_F(RenderTest, TheFieldCarriesParticlesToWhereItSays) {
+  // Tracer in a uniform field of 1 m/s along x: born at x = -2, after 3 s at x = +1.
+  auto field = std::make_shared<VectorField>(bake(Uniform({1.0f, 0, 0}), Box{{-5, -5, 0}, {5, 5, 5}}, {2, 2, 2}));
+  ParticleState first = onePerFrame({{-2.0f, 0.0f, 2.5f}}, 0.8f);
+  first.emitters[0].lifetime = 100.0f;
+  MainContext::Options options;
+  options.fixedDt = 0.25f;
+  MainContext main(first, FieldUpdate{field, {}}, options);
+  WallRendererSetup setup{.wall = cameraWall(),
+                          .initial = first,
+                          .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
+                          .capacity = 4096,
+                          .nearPlane = 0.1f,
+                          .farPlane = 100.0f};
+  WallRenderer wall(setup);
+  wall.frame(main.next(), {0, 0});   // t = 0: born at x = -2
+  main.set("emitter.0.rate", 0.0f);  // no more births
+  for (int f = 1; f <= 12; ++f) wall.frame(main.next(), {0, 0});  // 12 x 0.25 s
+  const Image image = wall.capture();
+  const glm::ivec2 now = project({1.0f, 0.0f, 2.5f}), then = project({-2.0f, 0.0f, 2.5f});
+  EXPECT_GT(redness(image.at(now.x, now.y)), 60.0f);
+  EXPECT_LT(redness(image.at(then.x, then.y)), 20.0f);
+}
+
+TEST_F(RenderTest, TheGroundHidesParticlesBelowIt) {
+  const Image empty = render(onePerFrame({}, 0.8f), 1);
+  const Image buried = render(onePerFrame({{0.0f, 0.0f, -0.8f}}, 0.8f), 1);  // 1 m billboard, fully underground
+  EXPECT_EQ(empty.rgba, buried.rgba);
+  // A particle half in the ground shows above it and not below it.
+  const Image half = render(onePerFrame({{0.0f, 0.0f, 0.0f}}, 0.8f), 1);
+  const glm::ivec2 above = project({0.0f, 0.0f, 0.3f}), below = project({0.0f, 0.0f, -0.3f});
+  EXPECT_GT(redness(half.at(above.x, above.y)), redness(empty.at(above.x, above.y)) + 20.0f);
+  EXPECT_EQ(half.at(below.x, below.y), empty.at(below.x, below.y));
+}
+
+TEST_F(RenderTest, CoincidentParticlesBlendAsPremultipliedOver) {
+  // One layer of opacity a over background b gives p1 = c a + b (1 - a); two
+  // layers give p2 = c - (c - b)(1 - a)^2. Measure a from p1, predict p2.
+  const glm::vec3 where(0.0f, 0.0f, 2.0f);
+  const Image empty = render(onePerFrame({}, 0.4f), 1);
+  const Image one = render(onePerFrame({where}, 0.4f), 1);
+  const Image two = render(onePerFrame({where, where}, 0.4f), 1);
+  const glm::ivec2 px = project(where);
+  const glm::vec3 c = glm::vec3(0.9f, 0.1f, 0.1f) * 255.0f;
+  const glm::vec3 b(empty.at(px.x, px.y)), p1(one.at(px.x, px.y)), p2(two.at(px.x, px.y));
+  const float a = (p1.x - b.x) / (c.x - b.x);
+  ASSERT_GT(a, 0.1f);
+  ASSERT_LT(a, 0.6f);
+  for (int ch = 0; ch < 3; ++ch) {
+    const float predicted = c[ch] - (c[ch] - b[ch]) * (1.0f - a) * (1.0f - a);
+    EXPECT_NEAR(p2[ch], predicted, 3.0f) << "channel " << ch;
+  }
+}
+
+TEST_F(RenderTest, DeferredShadingLightsTheSideFacingTheLight) {
+  // A 2 m billboard lit from +x with no ambient: its +x half is bright, its -x half dark.
+  const glm::vec3 where(0.0f, 0.0f, 2.5f);
+  ParticleState s = onePerFrame({where}, 1.0f);
+  s.render.size = 2.0f;
+  s.render.ambient = 0.0f;
+  s.render.colorBirth = s.render.colorDeath = {0.8f, 0.8f, 0.8f};
+  s.render.lightDirection = {1.0f, 0.0f, 0.0f};
+  const Image lit = render(s, 1);
+  const glm::ivec2 east = project(where + glm::vec3(0.6f, 0, 0)), west = project(where - glm::vec3(0.6f, 0, 0));
+  s.render.lightDirection = {-1.0f, 0.0f, 0.0f};
+  const Image mirrored = render(s, 1);
+  // The same pixel, the same alpha: only the light moved. Each half is brighter when lit.
+  EXPECT_GT(int(lit.at(east.x, east.y).y), int(mirrored.at(east.x, east.y).y) + 20);
+  EXPECT_GT(int(mirrored.at(west.x, west.y).y), int(lit.at(west.x, west.y).y) + 20);
+}
+
+}  // namespace
+}  // namespace sandstorm

@@ -1,0 +1,128 @@
+// Configuration loading: every bundled config loads; every kind of bad config
+// fails with an error that names the file, the line and the key.
+#include "core/config/app_config.h"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+const std::string kWall = R"(
+[[wall]]
+name = "front"
+lower_left = [-1.5, 1.5, 0.0]
+lower_right = [1.5, 1.5, 0.0]
+upper_left = [-1.5, 1.5, 3.0]
+)";
+
+std::string errorOf(const std::string& text, std::optional<int> monitors = std::nullopt) {
+  try {
+    parseConfig(text, "test.toml", monitors);
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+#define EXPECT_ERROR(text, ...)                                                    \
+  do {                                                                             \
+    const std::string message = errorOf(text);                                     \
+    for (const char* part : {__VA_ARGS__})                                         \
+      EXPECT_NE(message.find(part), std::string::npos) << "missing '" << part << "' in: " << message; \
+  } while (0)
+
+TEST(Config, EveryBundledConfigLoads) {
+  int count = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(SANDSTORM_SOURCE_DIR "/config")) {
+    if (entry.path().extension() != ".toml") continue;
+    EXPECT_NO_THROW(loadConfig(entry.path())) << entry.path();
+    ++count;
+  }
+  EXPECT_GE(count, 5);
+}
+
+TEST(Config, ReadsWallsCamerasAndAttributes) {
+  const AppConfig c = parseConfig(R"(
+[sim]
+maximum = 5000
+integrator = "rk4"
+[render]
+size = 0.2
+[[emitter]]
+shape = "sphere"
+rate = 10
+[[emitter]]
+position = [1, 2, 3]
+)" + kWall + R"(
+stereo = "side-by-side"
+offscreen = { size = [320, 200] }
+[[wall]]
+name = "desk"
+camera = { position = [5, 5, 5], target = [0, 0, 0] }
+window = { size = [640, 480], monitor = 0 }
+)",
+                                  "test.toml");
+  EXPECT_EQ(c.particles.sim.maximum, 5000);
+  EXPECT_EQ(c.particles.sim.integrator, Integrator::RK4);
+  EXPECT_FLOAT_EQ(c.particles.render.size, 0.2f);
+  ASSERT_EQ(c.particles.emitters.size(), 2u);
+  EXPECT_EQ(c.particles.emitters[0].shape, EmitterShape::Sphere);
+  EXPECT_EQ(c.particles.emitters[1].position, glm::vec3(1, 2, 3));
+  ASSERT_EQ(c.walls.size(), 2u);
+  EXPECT_EQ(c.walls[0].stereo, StereoMode::SideBySide);
+  EXPECT_EQ(c.walls[0].offscreenSize, glm::ivec2(320, 200));
+  EXPECT_FALSE(c.walls[0].window);
+  EXPECT_TRUE(c.walls[1].camera);
+  EXPECT_EQ(c.walls[1].window->size, glm::ivec2(640, 480));
+}
+
+TEST(Config, UnknownKeysAreRefused) {
+  EXPECT_ERROR("[run]\nsed = 4\n" + kWall, "test.toml:2", "run.sed", "unknown key");
+  EXPECT_ERROR("[runn]\n" + kWall, "test.toml:1", "runn", "unknown key");
+  EXPECT_ERROR(kWall + "colour = 3\n", "test.toml:7", "wall[0].colour", "unknown key");
+  EXPECT_ERROR("[sim]\nmaximun = 4\n" + kWall, "test.toml:2", "sim.maximun", "sim.maximum");
+}
+
+TEST(Config, MissingCornersAreRefused) {
+  EXPECT_ERROR("[[wall]]\nname = \"w\"\nlower_left = [0, 0, 0]\nlower_right = [1, 0, 0]\n", "test.toml:1",
+               "wall[0]", "missing required key 'upper_left'");
+}
+
+TEST(Config, NonRectangularCornersAreRefused) {
+  EXPECT_ERROR("[[wall]]\nlower_left = [0, 0, 0]\nlower_right = [1, 0, 0]\nupper_left = [0.3, 0, 1]\n",
+               "test.toml:1", "wall[0]", "not a rectangle");
+}
+
+TEST(Config, ZeroSizeWallsAreRefused) {
+  EXPECT_ERROR("[[wall]]\nlower_left = [0, 0, 0]\nlower_right = [0, 0, 0]\nupper_left = [0, 0, 1]\n",
+               "test.toml:1", "wall[0]", "positive size");
+}
+
+TEST(Config, MonitorsThatDoNotExistAreRefused) {
+  const std::string text = kWall + "window = { monitor = 3 }\n";
+  const std::string message = errorOf(text, 2);
+  EXPECT_NE(message.find("test.toml:7"), std::string::npos) << message;
+  EXPECT_NE(message.find("wall[0].window.monitor"), std::string::npos) << message;
+  EXPECT_NE(message.find("monitor 3 does not exist; 2 connected"), std::string::npos) << message;
+}
+
+TEST(Config, UnknownStereoModesAreRefused) {
+  EXPECT_ERROR(kWall + "stereo = \"wiggle\"\n", "test.toml:7", "wall[0].stereo", "mono, quad-buffer, side-by-side");
+}
+
+TEST(Config, BadValuesAreRefusedWithTheirLine) {
+  EXPECT_ERROR("[sim]\nmaximum = \"lots\"\n" + kWall, "test.toml:2", "sim.maximum", "integer");
+  EXPECT_ERROR("[render]\nsize = 50.0\n" + kWall, "test.toml:2", "render.size", "clamped");
+  EXPECT_ERROR("[field]\ndims = [0, 4, 4]\n" + kWall, "test.toml:2", "field.dims");
+  EXPECT_ERROR(kWall + "lower_left = 3\n", "test.toml", "already exists");  // TOML refuses redefinition
+  EXPECT_ERROR("[run]\nseed = [1\n", "test.toml", "syntax");
+  EXPECT_ERROR("[run]\nseed = 1\n", "test.toml", "no [[wall]]");
+  EXPECT_ERROR(kWall + kWall, "test.toml:8", "'front' is used twice");
+}
+
+}  // namespace
+}  // namespace sandstorm

@@ -1,0 +1,143 @@
+// Off-axis projection (Kooima) against frusta worked out by hand, and the
+// defining property: a wall's corners project onto the image's corners.
+#include "core/cave/wall.h"
+
+#include <gtest/gtest.h>
+
+#include "core/cave/viewer.h"
+#include "core/cave/wall_views.h"
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+// The thesis's four-wall CAVE: 3 m walls, z up, the viewer facing +y.
+const WallCorners kFront{{-1.5f, 1.5f, 0.0f}, {1.5f, 1.5f, 0.0f}, {-1.5f, 1.5f, 3.0f}};
+const WallCorners kLeft{{-1.5f, -1.5f, 0.0f}, {-1.5f, 1.5f, 0.0f}, {-1.5f, -1.5f, 3.0f}};
+const WallCorners kFloor{{-1.5f, -1.5f, 0.0f}, {1.5f, -1.5f, 0.0f}, {-1.5f, 1.5f, 0.0f}};
+
+void expectFrustum(const Frustum& f, float l, float r, float b, float t) {
+  EXPECT_NEAR(f.left, l, 1e-6f);
+  EXPECT_NEAR(f.right, r, 1e-6f);
+  EXPECT_NEAR(f.bottom, b, 1e-6f);
+  EXPECT_NEAR(f.top, t, 1e-6f);
+}
+
+TEST(OffAxis, HeadInTheCentreSeesASymmetricFrustum) {
+  // Eye 1.5 m from the front wall at mid-height: extents +-1.5 m scaled by near / 1.5.
+  expectFrustum(offAxisFrustum(kFront, {0.0f, 0.0f, 1.5f}, 0.1f, 100.0f), -0.1f, 0.1f, -0.1f, 0.1f);
+}
+
+TEST(OffAxis, HeadOffCentreSeesASkewedFrustum) {
+  // Eye at (0.5, 0.5, 1.0): 1 m from the front wall; the wall spans x - 0.5 in [-2, 1]
+  // and z - 1 in [-1, 2]; scaled by near / 1 = 0.1.
+  expectFrustum(offAxisFrustum(kFront, {0.5f, 0.5f, 1.0f}, 0.1f, 100.0f), -0.2f, 0.1f, -0.1f, 0.2f);
+  // The same eye and the floor, 1 m below: x - 0.5 in [-2, 1], y - 0.5 in [-2, 1].
+  expectFrustum(offAxisFrustum(kFloor, {0.5f, 0.5f, 1.0f}, 0.1f, 100.0f), -0.2f, 0.1f, -0.2f, 0.1f);
+  // The left wall, 2 m away: its right is +y (y - 0.5 in [-2, 1]), its up +z.
+  expectFrustum(offAxisFrustum(kLeft, {0.5f, 0.5f, 1.0f}, 0.1f, 100.0f), -0.1f, 0.05f, -0.05f, 0.1f);
+}
+
+glm::vec3 ndc(const View& v, const glm::vec3& p) {
+  const glm::vec4 c = v.projection * v.view * glm::vec4(p, 1.0f);
+  return glm::vec3(c) / c.w;
+}
+
+TEST(OffAxis, WallCornersLandOnTheImageCorners) {
+  for (const glm::vec3 eye : {glm::vec3(0, 0, 1.7f), glm::vec3(-1.2f, 0.9f, 0.4f), glm::vec3(1, -1, 2.5f)}) {
+    for (const WallCorners& w : {kFront, kLeft, kFloor}) {
+      const View v = offAxisView(w, eye, 0.05f, 50.0f);
+      const glm::vec3 ll = ndc(v, w.lowerLeft), ur = ndc(v, w.upperRight());
+      const glm::vec3 lr = ndc(v, w.lowerRight), ul = ndc(v, w.upperLeft);
+      EXPECT_NEAR(ll.x, -1.0f, 1e-4f);
+      EXPECT_NEAR(ll.y, -1.0f, 1e-4f);
+      EXPECT_NEAR(ur.x, 1.0f, 1e-4f);
+      EXPECT_NEAR(ur.y, 1.0f, 1e-4f);
+      EXPECT_NEAR(lr.x, 1.0f, 1e-4f);
+      EXPECT_NEAR(lr.y, -1.0f, 1e-4f);
+      EXPECT_NEAR(ul.x, -1.0f, 1e-4f);
+      EXPECT_NEAR(ul.y, 1.0f, 1e-4f);
+    }
+  }
+}
+
+TEST(OffAxis, APointOnTheSharedEdgeProjectsOntoBothWallsEdges) {
+  // The seam between the left and front walls is the line x = -1.5, y = 1.5.
+  // Any point on the ray from the eye through a point of that edge lands on
+  // the right edge of the left wall and the left edge of the front wall, at
+  // the same height.
+  const glm::vec3 eye(0.3f, -0.2f, 1.6f);
+  const glm::vec3 edge(-1.5f, 1.5f, 2.1f);
+  const glm::vec3 beyond = eye + 2.7f * (edge - eye);
+  const glm::vec3 onFront = ndc(offAxisView(kFront, eye, 0.05f, 50.0f), beyond);
+  const glm::vec3 onLeft = ndc(offAxisView(kLeft, eye, 0.05f, 50.0f), beyond);
+  EXPECT_NEAR(onFront.x, -1.0f, 1e-4f);
+  EXPECT_NEAR(onLeft.x, 1.0f, 1e-4f);
+  EXPECT_NEAR(onFront.y, onLeft.y, 1e-4f);
+  EXPECT_NEAR(onFront.y, 2.0f * 2.1f / 3.0f - 1.0f, 1e-4f);  // the edge point's height on the 3 m wall
+}
+
+TEST(OffAxis, RejectsCornersThatAreNotARectangle) {
+  WallCorners skew = kFront;
+  skew.upperLeft.x += 0.2f;
+  EXPECT_THROW(validateWall(skew, "test"), Error);
+  WallCorners flat = kFront;
+  flat.upperLeft = flat.lowerLeft;
+  EXPECT_THROW(validateWall(flat, "test"), Error);
+  EXPECT_NO_THROW(validateWall(kLeft, "test"));
+}
+
+TEST(WallViews, StereoEyesSitAlongTheHeadsRightVector) {
+  WallSpec wall;
+  wall.corners = kFront;
+  wall.stereo = StereoMode::SideBySide;
+  Viewer viewer;
+  viewer.head.position = {0, 0, 1.7f};
+  viewer.head.right = {1, 0, 0};
+  viewer.head.eyeSeparation = 0.064f;
+  const std::vector<View> views = wallViews(wall, viewer, 1.0f, 0.05f, 50.0f);
+  ASSERT_EQ(views.size(), 2u);
+  EXPECT_NEAR(views[0].eye.x, -0.032f, 1e-6f);
+  EXPECT_NEAR(views[1].eye.x, 0.032f, 1e-6f);
+}
+
+TEST(WallViews, NavigationMovesTheWorldNotTheRoom) {
+  WallSpec wall;
+  wall.corners = kFront;
+  Viewer viewer;
+  viewer.head.position = {0, 0, 1.5f};
+  viewer.navigation.offset = {0.0f, 3.0f, 0.0f};
+  viewer.navigation.scale = 0.5f;
+  const View v = wallViews(wall, viewer, 1.0f, 0.05f, 50.0f)[0];
+  // World point (0, 0, 3) sits in the room at (0, 3, 1.5): straight ahead of the eye.
+  const glm::vec3 p = ndc(v, {0.0f, 0.0f, 3.0f});
+  EXPECT_NEAR(p.x, 0.0f, 1e-5f);
+  EXPECT_NEAR(p.y, 0.0f, 1e-5f);
+  // Billboards face the eye in world coordinates.
+  EXPECT_NEAR(glm::distance(v.eye, glm::vec3(0.0f, -6.0f, 3.0f)), 0.0f, 1e-5f);
+}
+
+TEST(HeadTrackers, ScriptedHeadInterpolatesAndLoops) {
+  HeadSpec spec;
+  spec.mode = HeadMode::Scripted;
+  spec.path = {{0.0f, {0, 0, 1}}, {2.0f, {2, 0, 1}}};
+  spec.loop = true;
+  const auto tracker = makeHeadTracker(spec);
+  EXPECT_NEAR(tracker->pose(0.5).position.x, 0.5f, 1e-6f);
+  EXPECT_NEAR(tracker->pose(2.5).position.x, 0.5f, 1e-6f);  // looped
+  spec.loop = false;
+  EXPECT_NEAR(makeHeadTracker(spec)->pose(7.0).position.x, 2.0f, 1e-6f);
+}
+
+TEST(HeadTrackers, DesktopHeadWalksWhereItFaces) {
+  DesktopHead head(HeadPose{}, glm::radians(90.0f));  // facing +y
+  head.move(1.0f, 0.0f, 0.0f);
+  EXPECT_NEAR(head.pose(0).position.y, 1.0f, 1e-6f);
+  head.turn(glm::radians(90.0f));  // now facing -x
+  head.move(1.0f, 0.0f, 0.0f);
+  EXPECT_NEAR(head.pose(0).position.x, -1.0f, 1e-5f);
+  EXPECT_NEAR(head.pose(0).right.y, 1.0f, 1e-5f);  // facing -x, the right hand points to +y
+}
+
+}  // namespace
+}  // namespace sandstorm
