@@ -1,0 +1,35 @@
+// FieldFormat: the kinds of field file loadField() reads, recognised by their
+// content (magic bytes, header), not their name.
+//
+// detectFieldFormat() reads at most the first kilobyte. checkExtension()
+// throws when a file's extension names another format than its content
+// ("wind.vti is a legacy VTK file ..."); an unknown extension is accepted.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace sandstorm {
+
+enum class FieldFormat {
+  Unknown,
+  VtkLegacy,           // .vtk
+  VtkImageData,        // .vti
+  VtkRectilinearGrid,  // .vtr
+  VtkStructuredGrid,   // .vts
+  VtkCollection,       // .pvd (a time series of the above)
+  OpenVdb,             // .vdb
+  UnrealFga,           // .fga
+  UnityVf,             // .vf
+};
+
+// Throws Error when the file cannot be opened; Unknown when nothing matches.
+FieldFormat detectFieldFormat(const std::filesystem::path& path);
+// The format an extension names (case-insensitive); Unknown for others.
+FieldFormat formatForExtension(const std::filesystem::path& path);
+// "legacy VTK file", "VTK XML image data (.vti)", ...
+std::string describe(FieldFormat format);
+// Throws Error when the extension names a known format other than `content`.
+void checkExtension(const std::filesystem::path& path, FieldFormat content);
+
+}  // namespace sandstorm

@@ -1,0 +1,106 @@
+#include "core/io/field_loader.h"
+
+#include <vtkDataSet.h>
+
+#include "core/io/fga_reader.h"
+#include "core/io/field_format.h"
+#include "core/io/pvd_file.h"
+#include "core/io/unity_vf_reader.h"
+#include "core/io/vdb_reader.h"
+#include "core/io/vtk_field_extractor.h"
+#include "core/io/vtk_legacy_reader.h"
+#include "core/io/vtk_xml_reader.h"
+#include "core/util/error.h"
+#include "core/util/log.h"
+
+namespace sandstorm {
+namespace {
+
+void checkResolution(const std::string& file, const LoadOptions& options) {
+  const glm::ivec3 r = options.resolution;
+  if (r == glm::ivec3(0)) return;
+  for (int a = 0; a < 3; ++a)
+    if (r[a] <= 0)
+      throw Error(concat(file, ": requested resolution along ", "xyz"[a], " is ", r[a],
+                         "; expected a positive point count (or 0 0 0 for the file's own)"));
+  const double points = double(r.x) * r.y * r.z;
+  if (points > double(VectorField::kMaxPoints) || points * 12.0 > double(options.memoryBudget))
+    throw Error(concat(file, ": the requested ", r.x, "x", r.y, "x", r.z, " grid needs ",
+                       points * 12.0, " bytes, beyond the memory budget of ", options.memoryBudget,
+                       " bytes; choose a lower resolution"));
+}
+
+VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
+                     const LoadOptions& options, LoadReport& report) {
+  switch (format) {
+    case FieldFormat::VtkLegacy: {
+      auto data = readVtkLegacy(path, options);
+      return extractVectorField(data, path, options, report);
+    }
+    case FieldFormat::VtkImageData:
+    case FieldFormat::VtkRectilinearGrid:
+    case FieldFormat::VtkStructuredGrid: {
+      auto data = readVtkXml(path, format, options);
+      return extractVectorField(data, path, options, report);
+    }
+    case FieldFormat::VtkCollection: {
+      const std::vector<PvdFrame> frames = readPvd(path);
+      report.notes.push_back(concat("time series of ", frames.size(),
+                                    " frames: loaded the first (t = ", frames.front().time, ", ",
+                                    frames.front().file.filename().string(), ")"));
+      LoadReport inner;
+      VectorField f = loadField(frames.front().file, options, &inner);
+      report.available = inner.available;
+      report.arrayName = inner.arrayName;
+      report.sourceDims = inner.sourceDims;
+      report.resampled = inner.resampled;
+      report.nonFinite = inner.nonFinite;
+      report.notes.insert(report.notes.end(), inner.notes.begin(), inner.notes.end());
+      return f;
+    }
+    case FieldFormat::OpenVdb:
+      return readVdb(path, options, report);
+    case FieldFormat::UnrealFga:
+      return readFga(path, options, report);
+    case FieldFormat::UnityVf:
+      return readUnityVf(path, options, report);
+    case FieldFormat::Unknown:
+      break;
+  }
+  throw Error(concat(path.string(), ": format not recognised; expected a legacy VTK (.vtk), VTK ",
+                     "XML (.vti, .vtr, .vts, .pvd), OpenVDB (.vdb), Unreal (.fga) or Unity (.vf) "
+                     "file"));
+}
+
+}  // namespace
+
+VectorField loadField(const std::filesystem::path& path, const LoadOptions& options,
+                      LoadReport* report) {
+  const std::string file = path.string();
+  std::error_code ec;
+  if (!std::filesystem::exists(path, ec)) throw Error(concat(file, ": no such file"));
+  if (!std::filesystem::is_regular_file(path, ec))
+    throw Error(concat(file, ": not a regular file"));
+  const FieldFormat format = detectFieldFormat(path);
+  checkExtension(path, format);
+  checkResolution(file, options);
+  LoadReport local;
+  LoadReport& r = report ? *report : local;
+  r = LoadReport{};
+  try {
+    VectorField field = dispatch(path, format, options, r);
+    if (r.format.empty()) r.format = describe(format);
+    log::debug("loaded ", file, " (", r.format, "): ", field.dims().x, "x", field.dims().y, "x",
+               field.dims().z, " points");
+    return field;
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    if (what.rfind(file, 0) == 0) throw;
+    throw Error(concat(file, ": ", what));
+  } catch (const std::bad_alloc&) {
+    throw Error(concat(file, ": ran out of memory while loading; lower the resolution or the ",
+                       "memory budget"));
+  }
+}
+
+}  // namespace sandstorm

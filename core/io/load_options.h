@@ -1,0 +1,55 @@
+// LoadOptions: how loadField() turns a file into a dense VectorField.
+// LoadReport: what it found there (for `sandstorm-field info` and logs).
+//
+// Axis conventions. Sandstorm is z-up and right-handed: x east, y north, z up,
+// metres, seconds. VTK and OpenVDB files are taken to be in these axes already
+// (scientific data is usually z-up). The engine formats are converted unless
+// convertEngineAxes is false:
+//   - Unity .vf (y-up, left-handed, metres): (x, y, z)_unity -> (x, z, y).
+//   - Unreal .fga (z-up, left-handed, centimetres): (x, y, z)_unreal ->
+//     0.01 * (x, -y, z), applied to both the bounds and the vectors.
+// Engine fields are 3D textures: their values sit at voxel centres, so the
+// grid points lie half a voxel inside the stated box.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/field/box.h"
+
+namespace sandstorm {
+
+struct LoadOptions {
+  // The VTK point-data array or OpenVDB grid to load. Empty: the file's only
+  // (or active) vector array or Vec3 grid; an error lists the choices otherwise.
+  std::string arrayName;
+  // Points per axis of the dense grid made. (0, 0, 0): the file's own
+  // resolution (its grid dimensions; one point per voxel of a VDB grid's active
+  // bounding box). Anything else resamples: VTK data through
+  // vtkResampleToImage, VDB grids through OpenVDB's samplers, engine formats
+  // trilinearly.
+  glm::ivec3 resolution{0};
+  // Largest dense grid accepted, in bytes (12 per point). Checked before
+  // anything large is allocated; above it loading fails saying how to fit.
+  std::size_t memoryBudget = std::size_t{2} << 30;
+  // Unity and Unreal axes and units to Sandstorm's (see above).
+  bool convertEngineAxes = true;
+  // Unity .vf files carry no bounds: the box they fill, in Unity units before
+  // conversion (Unity's VFX graph default is the unit box at the origin).
+  Box unityBounds{glm::vec3(-0.5f), glm::vec3(0.5f)};
+};
+
+struct LoadReport {
+  std::string format;                  // e.g. "VTK XML image data"
+  std::vector<std::string> available;  // arrays or grids present, e.g. "velocity (3 components)"
+  std::string arrayName;               // the array or grid loaded
+  glm::ivec3 sourceDims{0};            // the file's own grid dimensions (VDB: active bbox)
+  bool resampled = false;              // values were interpolated onto a new grid
+  std::size_t nonFinite = 0;           // NaN or Inf vectors replaced by zero
+  std::vector<std::string> notes;      // anything else worth telling the user
+};
+
+}  // namespace sandstorm

@@ -1,0 +1,203 @@
+#include "core/io/vdb_reader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+
+#include <openvdb/io/File.h>
+#include <openvdb/math/Maps.h>
+#include <openvdb/openvdb.h>
+#include <openvdb/tools/Interpolation.h>
+
+#include "core/io/vdb_file_check.h"
+#include "core/util/error.h"
+#include "core/util/log.h"
+
+namespace sandstorm {
+namespace {
+
+bool isVec3Type(const std::string& treeType) {
+  return treeType.find("vec3s") != std::string::npos || treeType.find("vec3d") != std::string::npos;
+}
+
+std::string valueType(const std::string& treeType) {
+  // "Tree_vec3s_5_4_3" -> "vec3s"
+  if (treeType.rfind("Tree_", 0) != 0) return treeType;
+  const std::string rest = treeType.substr(5);
+  return rest.substr(0, rest.find('_'));
+}
+
+std::string listGrids(const std::vector<VdbGridEntry>& grids) {
+  std::string out;
+  for (const VdbGridEntry& g : grids) {
+    if (!out.empty()) out += ", ";
+    out += concat("'", g.name, "' (", valueType(g.type), ")");
+  }
+  return out;
+}
+
+std::string chooseGrid(const std::vector<VdbGridEntry>& grids, const std::string& file,
+                       const LoadOptions& options) {
+  if (!options.arrayName.empty()) {
+    for (const VdbGridEntry& g : grids) {
+      if (g.name != options.arrayName) continue;
+      if (!isVec3Type(g.type))
+        throw Error(concat(
+            file, ": grid '", g.name, "' holds ", valueType(g.type),
+            " values; expected a Vec3 grid (vec3s or vec3d). Grids present: ", listGrids(grids)));
+      return g.name;
+    }
+    throw Error(concat(file, ": no grid named '", options.arrayName,
+                       "'; grids present: ", listGrids(grids)));
+  }
+  std::vector<std::string> vec3;
+  for (const VdbGridEntry& g : grids)
+    if (isVec3Type(g.type)) vec3.push_back(g.name);
+  if (vec3.size() == 1) return vec3.front();
+  throw Error(concat(
+      file, ": ", vec3.empty() ? "holds no Vec3 grid" : "holds several Vec3 grids",
+      "; choose one by name (LoadOptions::arrayName, --array). Grids present: ", listGrids(grids)));
+}
+
+bool axisAligned(const openvdb::math::Transform& t) {
+  const auto map = t.baseMap();
+  return map->isType<openvdb::math::ScaleMap>() ||
+         map->isType<openvdb::math::ScaleTranslateMap>() ||
+         map->isType<openvdb::math::UniformScaleMap>() ||
+         map->isType<openvdb::math::UniformScaleTranslateMap>() ||
+         map->isType<openvdb::math::TranslationMap>();
+}
+
+void checkBudget(const glm::ivec3& dims, const std::string& file, const std::string& grid,
+                 const openvdb::CoordBBox& bbox, const LoadOptions& options) {
+  const double points = double(dims.x) * dims.y * dims.z;
+  const double bytes = points * 12.0;
+  if (points <= double(VectorField::kMaxPoints) && bytes <= double(options.memoryBudget)) return;
+  const double limit = std::min(double(options.memoryBudget), 12.0 * VectorField::kMaxPoints);
+  const double f = std::cbrt(limit / bytes) * 0.99;
+  const glm::ivec3 fit = glm::max(glm::ivec3(glm::floor(glm::vec3(dims) * float(f))), 1);
+  throw Error(concat(file, ": densifying grid '", grid, "' over its active bounding box (index ",
+                     bbox.min(), " to ", bbox.max(), ") at ", dims.x, "x", dims.y, "x", dims.z,
+                     " points needs ", bytes, " bytes, beyond the memory budget of ",
+                     options.memoryBudget, " bytes. Lower the resolution (LoadOptions::resolution,",
+                     " sandstorm-field --dims), e.g. --dims ", fit.x, " ", fit.y, " ", fit.z,
+                     " fits, or raise the budget"));
+}
+
+template <class GridT>
+VectorField densify(const GridT& grid, const std::string& file, const LoadOptions& options,
+                    LoadReport& report) {
+  const openvdb::CoordBBox bbox = grid.evalActiveVoxelBoundingBox();
+  if (bbox.empty()) throw Error(concat(file, ": grid '", grid.getName(), "' has no active voxels"));
+  const openvdb::math::Transform& xform = grid.transform();
+  const bool aligned = axisAligned(xform);
+  const bool staggered = grid.getGridClass() == openvdb::GRID_STAGGERED;
+  const openvdb::Coord extent = bbox.dim();
+  report.sourceDims = glm::ivec3(extent.x(), extent.y(), extent.z());
+
+  // World-space box around the active voxels' centres.
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (int corner = 0; corner < 8; ++corner) {
+    const openvdb::Vec3d ijk(corner & 1 ? bbox.max().x() : bbox.min().x(),
+                             corner & 2 ? bbox.max().y() : bbox.min().y(),
+                             corner & 4 ? bbox.max().z() : bbox.min().z());
+    const openvdb::Vec3d w = xform.indexToWorld(ijk);
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], w[a]);
+      hi[a] = std::max(hi[a], w[a]);
+    }
+  }
+  glm::ivec3 dims = options.resolution;
+  if (dims == glm::ivec3(0)) {
+    if (aligned) {
+      dims = report.sourceDims;
+    } else {
+      // About one point per voxel along each world axis.
+      const double voxel = xform.voxelSize().length() / std::sqrt(3.0);
+      for (int a = 0; a < 3; ++a)
+        dims[a] = int(std::lround((hi[a] - lo[a]) / voxel)) + 1;
+    }
+  }
+  for (int a = 0; a < 3; ++a)
+    if (dims[a] <= 0)
+      throw Error(concat(file, ": resolution along ", "xyz"[a], " is ", dims[a],
+                         "; expected a positive point count"));
+  checkBudget(dims, file, grid.getName(), bbox, options);
+  const bool exact = aligned && !staggered && dims == report.sourceDims;
+  report.resampled = !(aligned && dims == report.sourceDims);
+
+  const Box bounds{glm::vec3(lo), glm::vec3(hi)};
+  VectorField field(bounds, dims);
+  const glm::dvec3 step((hi - lo) / glm::dvec3(glm::max(dims - 1, 1)));
+  auto accessor = grid.getConstAccessor();
+  using Accessor = decltype(accessor);
+  openvdb::tools::GridSampler<Accessor, openvdb::tools::BoxSampler> box(accessor, xform);
+  openvdb::tools::GridSampler<Accessor, openvdb::tools::StaggeredBoxSampler> stag(accessor, xform);
+  std::size_t nonFinite = 0;
+  for (int k = 0; k < dims.z; ++k)
+    for (int j = 0; j < dims.y; ++j)
+      for (int i = 0; i < dims.x; ++i) {
+        const glm::dvec3 w = lo + step * glm::dvec3(i, j, k);
+        const openvdb::Vec3d world(w.x, w.y, w.z);
+        typename GridT::ValueType v;
+        if (exact) {
+          const openvdb::Vec3d idx = xform.worldToIndex(world);
+          v = accessor.getValue(openvdb::Coord(int(std::lround(idx.x())), int(std::lround(idx.y())),
+                                               int(std::lround(idx.z()))));
+        } else if (staggered) {
+          v = stag.wsSample(world);
+        } else {
+          v = box.wsSample(world);
+        }
+        glm::vec3 out(float(v.x()), float(v.y()), float(v.z()));
+        if (!std::isfinite(out.x) || !std::isfinite(out.y) || !std::isfinite(out.z)) {
+          ++nonFinite;
+          out = glm::vec3(0.0f);
+        }
+        field.at(i, j, k) = out;
+      }
+  report.nonFinite += nonFinite;
+  if (nonFinite > 0)
+    log::warn(file, ": ", nonFinite, " vectors of grid '", grid.getName(),
+              "' are NaN or Inf; replaced by zero");
+  if (staggered) report.notes.push_back("staggered (MAC) grid: face values averaged to centres");
+  return field;
+}
+
+}  // namespace
+
+void initializeOpenVdb() {
+  static std::once_flag once;
+  std::call_once(once, [] { openvdb::initialize(); });
+}
+
+VectorField readVdb(const std::filesystem::path& path, const LoadOptions& options,
+                    LoadReport& report) {
+  initializeOpenVdb();
+  const std::string file = path.string();
+  const std::vector<VdbGridEntry> grids = checkVdbFile(path);
+  for (const VdbGridEntry& g : grids)
+    report.available.push_back(concat(g.name, " (", valueType(g.type), " grid)"));
+  const std::string name = chooseGrid(grids, file, options);
+  report.arrayName = name;
+
+  openvdb::GridBase::Ptr base;
+  try {
+    openvdb::io::File vdb(file);
+    vdb.open(false);  // no delayed loading: the file may change after we return
+    base = vdb.readGrid(name);
+    vdb.close();
+  } catch (const openvdb::Exception& e) {
+    throw Error(concat(file, ": OpenVDB could not read grid '", name, "': ", e.what()));
+  } catch (const std::exception& e) {
+    throw Error(concat(file, ": OpenVDB could not read grid '", name, "': ", e.what()));
+  }
+  if (auto g = openvdb::gridPtrCast<openvdb::Vec3SGrid>(base))
+    return densify(*g, file, options, report);
+  if (auto g = openvdb::gridPtrCast<openvdb::Vec3DGrid>(base))
+    return densify(*g, file, options, report);
+  throw Error(concat(file, ": grid '", name, "' is a ", base ? base->type() : "null",
+                     " grid; expected a Vec3 grid (vec3s or vec3d)"));
+}
+
+}  // namespace sandstorm

@@ -1,0 +1,45 @@
+#include "core/io/vti_writer.h"
+
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkXMLImageDataWriter.h>
+
+#include "core/io/vtk_message_trap.h"
+#include "core/util/error.h"
+
+namespace sandstorm {
+
+void writeVti(const std::filesystem::path& path, const VectorField& field,
+              const std::string& arrayName) {
+  if (field.empty()) throw Error(concat(path.string(), ": cannot write an empty field"));
+  const glm::ivec3 dims = field.dims();
+  const glm::vec3 spacing = field.spacing();
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(dims.x, dims.y, dims.z);
+  image->SetOrigin(field.bounds().min.x, field.bounds().min.y, field.bounds().min.z);
+  image->SetSpacing(dims.x > 1 ? spacing.x : 1.0, dims.y > 1 ? spacing.y : 1.0,
+                    dims.z > 1 ? spacing.z : 1.0);
+  vtkNew<vtkFloatArray> values;
+  values->SetName(arrayName.c_str());
+  values->SetNumberOfComponents(3);
+  values->SetNumberOfTuples(vtkIdType(field.pointCount()));
+  const auto v = field.values();
+  for (std::size_t i = 0; i < v.size(); ++i)
+    values->SetTypedTuple(vtkIdType(i), &v[i].x);
+  image->GetPointData()->SetVectors(values);
+
+  VtkMessageTrap trap(path);
+  vtkNew<vtkXMLImageDataWriter> writer;
+  trap.watch(writer);
+  writer->SetInputData(image);
+  writer->SetFileName(path.string().c_str());
+  writer->SetDataModeToAppended();
+  writer->SetCompressorTypeToZLib();
+  const int ok = writer->Write();
+  trap.throwIfFailed("writing VTK XML image data");
+  if (!ok) throw Error(concat(path.string(), ": VTK could not write the file"));
+}
+
+}  // namespace sandstorm

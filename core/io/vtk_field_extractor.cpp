@@ -1,0 +1,256 @@
+#include "core/io/vtk_field_extractor.h"
+
+#include <cmath>
+
+#include <vtkCellData.h>
+#include <vtkCellDataToPointData.h>
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
+#include <vtkImageData.h>
+#include <vtkMatrix3x3.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkRectilinearGrid.h>
+#include <vtkResampleToImage.h>
+#include <vtkSmartPointer.h>
+#include <vtkStructuredGrid.h>
+
+#include "core/io/vtk_message_trap.h"
+#include "core/util/error.h"
+#include "core/util/log.h"
+
+namespace sandstorm {
+namespace {
+
+std::string inventory(vtkDataSet* data) {
+  std::string out;
+  auto list = [&](vtkFieldData* fd, const char* where) {
+    for (int i = 0; i < fd->GetNumberOfArrays(); ++i) {
+      vtkAbstractArray* a = fd->GetAbstractArray(i);
+      if (!out.empty()) out += ", ";
+      out += concat("'", a->GetName() ? a->GetName() : "", "' (", a->GetNumberOfComponents(),
+                    a->GetNumberOfComponents() == 1 ? " component" : " components", where, ")");
+    }
+  };
+  list(data->GetPointData(), "");
+  list(data->GetCellData(), ", cell data");
+  return out.empty() ? "none" : out;
+}
+
+void listArrays(vtkDataSet* data, LoadReport& report) {
+  auto list = [&](vtkFieldData* fd, const char* where) {
+    for (int i = 0; i < fd->GetNumberOfArrays(); ++i) {
+      vtkAbstractArray* a = fd->GetAbstractArray(i);
+      report.available.push_back(concat(a->GetName() ? a->GetName() : "(unnamed)", " (",
+                                        a->GetNumberOfComponents(), " components", where, ")"));
+    }
+  };
+  list(data->GetPointData(), "");
+  list(data->GetCellData(), ", cell data");
+}
+
+std::vector<std::string> vectorArrays(vtkFieldData* fd) {
+  std::vector<std::string> names;
+  for (int i = 0; i < fd->GetNumberOfArrays(); ++i) {
+    vtkAbstractArray* a = fd->GetAbstractArray(i);
+    if (vtkDataArray::SafeDownCast(a) && a->GetNumberOfComponents() == 3 && a->GetName())
+      names.emplace_back(a->GetName());
+  }
+  return names;
+}
+
+vtkSmartPointer<vtkDataSet> cellsToPoints(vtkDataSet* data, const std::filesystem::path& path) {
+  VtkMessageTrap trap(path);
+  vtkNew<vtkCellDataToPointData> filter;
+  trap.watch(filter);
+  filter->SetInputData(data);
+  filter->PassCellDataOff();
+  filter->Update();
+  trap.throwIfFailed("moving cell data to the points (vtkCellDataToPointData)");
+  return filter->GetOutput();
+}
+
+struct Chosen {
+  vtkSmartPointer<vtkDataSet> data;  // the dataset holding the array in its point data
+  std::string name;
+};
+
+Chosen chooseArray(vtkDataSet* data, const std::filesystem::path& path, const LoadOptions& options,
+                   LoadReport& report) {
+  const std::string file = path.string();
+  vtkPointData* pd = data->GetPointData();
+  vtkCellData* cd = data->GetCellData();
+  std::string name = options.arrayName;
+  bool fromCells = false;
+  if (name.empty()) {
+    if (vtkDataArray* active = pd->GetVectors(); active && active->GetName()) {
+      name = active->GetName();
+    } else {
+      std::vector<std::string> names = vectorArrays(pd);
+      if (names.empty()) {
+        names = vectorArrays(cd);
+        fromCells = true;
+      }
+      if (names.size() != 1)
+        throw Error(concat(file, ": ",
+                           names.empty() ? "no 3-component (vector) array"
+                                         : "several vector arrays and none marked active",
+                           "; choose one by name (LoadOptions::arrayName, --array). Arrays "
+                           "present: ",
+                           inventory(data)));
+      name = names.front();
+    }
+  } else if (!pd->GetAbstractArray(name.c_str())) {
+    if (!cd->GetAbstractArray(name.c_str()))
+      throw Error(concat(file, ": no array named '", name, "'; arrays present: ", inventory(data)));
+    fromCells = true;
+  }
+  vtkAbstractArray* array =
+      fromCells ? cd->GetAbstractArray(name.c_str()) : pd->GetAbstractArray(name.c_str());
+  if (!vtkDataArray::SafeDownCast(array))
+    throw Error(concat(file, ": array '", name, "' is not numeric; expected a 3-component ",
+                       "vector array. Arrays present: ", inventory(data)));
+  if (array->GetNumberOfComponents() != 3)
+    throw Error(concat(
+        file, ": array '", name, "' has ", array->GetNumberOfComponents(),
+        " component(s); expected a 3-component vector array. Arrays present: ", inventory(data)));
+  if (fromCells) {
+    report.notes.push_back(concat("array '", name, "' is cell data: moved to the points"));
+    return {cellsToPoints(data, path), name};
+  }
+  return {data, name};
+}
+
+// Copies tuples into `out`, zeroing non-finite ones and those `mask` marks invalid.
+std::size_t copyVectors(vtkDataArray* array, vtkDataArray* mask, std::vector<glm::vec3>& out) {
+  std::size_t nonFinite = 0;
+  const vtkIdType n = array->GetNumberOfTuples();
+  out.resize(std::size_t(n));
+  double t[3];
+  for (vtkIdType i = 0; i < n; ++i) {
+    if (mask && mask->GetComponent(i, 0) == 0.0) {
+      out[std::size_t(i)] = glm::vec3(0.0f);
+      continue;
+    }
+    array->GetTuple(i, t);
+    const glm::vec3 v(static_cast<float>(t[0]), static_cast<float>(t[1]), static_cast<float>(t[2]));
+    if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
+      ++nonFinite;
+      out[std::size_t(i)] = glm::vec3(0.0f);
+    } else {
+      out[std::size_t(i)] = v;
+    }
+  }
+  return nonFinite;
+}
+
+void checkBudget(const glm::ivec3& dims, const std::filesystem::path& path,
+                 const LoadOptions& options) {
+  for (int a = 0; a < 3; ++a)
+    if (dims[a] <= 0)
+      throw Error(concat(path.string(), ": resolution along ", "xyz"[a], " is ", dims[a],
+                         "; expected a positive point count"));
+  const double points = double(dims.x) * dims.y * dims.z;
+  if (points > double(VectorField::kMaxPoints) || points * 12.0 > double(options.memoryBudget))
+    throw Error(concat(path.string(), ": a ", dims.x, "x", dims.y, "x", dims.z, " grid needs ",
+                       points * 12.0, " bytes, beyond the memory budget of ", options.memoryBudget,
+                       " bytes; choose a lower resolution (LoadOptions::resolution, --dims)"));
+}
+
+glm::ivec3 nativeDims(vtkDataSet* data) {
+  int d[3] = {0, 0, 0};
+  if (auto* image = vtkImageData::SafeDownCast(data))
+    image->GetDimensions(d);
+  else if (auto* rect = vtkRectilinearGrid::SafeDownCast(data))
+    rect->GetDimensions(d);
+  else if (auto* grid = vtkStructuredGrid::SafeDownCast(data))
+    grid->GetDimensions(d);
+  return {d[0], d[1], d[2]};
+}
+
+void reportNonFinite(std::size_t count, const std::filesystem::path& path, const std::string& name,
+                     LoadReport& report) {
+  report.nonFinite += count;
+  if (count > 0)
+    log::warn(path.string(), ": ", count, " vectors of array '", name,
+              "' are NaN or Inf; replaced by zero");
+}
+
+VectorField copyImage(vtkImageData* image, const std::string& name,
+                      const std::filesystem::path& path, LoadReport& report) {
+  const std::string file = path.string();
+  int extent[6];
+  image->GetExtent(extent);
+  double origin[3], spacing[3];
+  image->GetOrigin(origin);
+  image->GetSpacing(spacing);
+  const glm::ivec3 dims = nativeDims(image);
+  vtkMatrix3x3* direction = image->GetDirectionMatrix();
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c)
+      if (direction && direction->GetElement(r, c) != (r == c ? 1.0 : 0.0))
+        throw Error(concat(file,
+                           ": the image's Direction is not the identity; only "
+                           "axis-aligned images are read"));
+  Box bounds;
+  for (int a = 0; a < 3; ++a) {
+    if (dims[a] > 1 && !(spacing[a] > 0.0))
+      throw Error(concat(file, ": spacing along ", "xyz"[a], " is ", spacing[a],
+                         "; expected a positive spacing"));
+    bounds.min[a] = float(origin[a] + spacing[a] * extent[2 * a]);
+    bounds.max[a] = float(origin[a] + spacing[a] * extent[2 * a + 1]);
+  }
+  vtkDataArray* array = image->GetPointData()->GetArray(name.c_str());
+  if (array->GetNumberOfTuples() != image->GetNumberOfPoints())
+    throw Error(concat(file, ": array '", name, "' holds ", array->GetNumberOfTuples(),
+                       " vectors for ", image->GetNumberOfPoints(), " grid points"));
+  std::vector<glm::vec3> values;
+  reportNonFinite(copyVectors(array, nullptr, values), path, name, report);
+  return VectorField(bounds, dims, std::move(values));
+}
+
+}  // namespace
+
+VectorField extractVectorField(vtkDataSet* data, const std::filesystem::path& path,
+                               const LoadOptions& options, LoadReport& report) {
+  const std::string file = path.string();
+  listArrays(data, report);
+  const Chosen chosen = chooseArray(data, path, options, report);
+  report.arrayName = chosen.name;
+  report.sourceDims = nativeDims(data);
+
+  vtkDataArray* array = chosen.data->GetPointData()->GetArray(chosen.name.c_str());
+  if (array->GetNumberOfTuples() != chosen.data->GetNumberOfPoints())
+    throw Error(concat(file, ": array '", chosen.name, "' holds ", array->GetNumberOfTuples(),
+                       " vectors for ", chosen.data->GetNumberOfPoints(), " grid points"));
+
+  const bool keep = options.resolution == glm::ivec3(0) || options.resolution == report.sourceDims;
+  if (auto* image = vtkImageData::SafeDownCast(chosen.data); image && keep)
+    return copyImage(image, chosen.name, path, report);
+
+  const glm::ivec3 dims =
+      options.resolution == glm::ivec3(0) ? report.sourceDims : options.resolution;
+  checkBudget(dims, path, options);
+  VtkMessageTrap trap(path);
+  vtkNew<vtkResampleToImage> resample;
+  trap.watch(resample);
+  resample->SetInputDataObject(chosen.data);
+  resample->UseInputBoundsOn();
+  resample->SetSamplingDimensions(dims.x, dims.y, dims.z);
+  resample->Update();
+  trap.throwIfFailed("resampling to a uniform grid (vtkResampleToImage)");
+  vtkImageData* image = resample->GetOutput();
+  vtkDataArray* values = image ? image->GetPointData()->GetArray(chosen.name.c_str()) : nullptr;
+  if (!values || values->GetNumberOfComponents() != 3)
+    throw Error(concat(file, ": vtkResampleToImage produced no array '", chosen.name, "'"));
+  vtkDataArray* mask = image->GetPointData()->GetArray(resample->GetMaskArrayName());
+  std::vector<glm::vec3> out;
+  reportNonFinite(copyVectors(values, mask, out), path, chosen.name, report);
+  report.resampled = true;
+  double b[6];
+  image->GetBounds(b);
+  Box bounds{{float(b[0]), float(b[2]), float(b[4])}, {float(b[1]), float(b[3]), float(b[5])}};
+  return VectorField(bounds, dims, std::move(out));
+}
+
+}  // namespace sandstorm

@@ -1,0 +1,52 @@
+#!/usr/bin/env bash
+# sandstorm-field from the outside: good commands succeed and say what they
+# did, bad ones fail with a message on stderr and a non-zero status (never a
+# crash, which would show as a status above 128).
+#   field_tool_test.sh TOOL DATA_DIR SCRATCH_DIR
+set -u
+tool=$1 data=$2 tmp=$3
+mkdir -p "$tmp"
+passed=0 failed=0
+
+expect() {  # expect ok|fail PATTERN -- command args...
+  local want=$1 pattern=$2
+  shift 3
+  local out rc
+  out=$("$tool" "$@" 2>&1)
+  rc=$?
+  local ok=1
+  if [ "$want" = ok ] && [ $rc -ne 0 ]; then ok=0; fi
+  if [ "$want" = fail ] && { [ $rc -eq 0 ] || [ $rc -ge 128 ]; }; then ok=0; fi
+  if ! grep -Eq -- "$pattern" <<<"$out"; then ok=0; fi
+  if [ $ok = 1 ]; then
+    passed=$((passed + 1))
+  else
+    failed=$((failed + 1))
+    echo "FAILED: sandstorm-field $* (status $rc, expected $want and /$pattern/):" >&2
+    echo "$out" >&2
+  fi
+}
+
+expect ok "dims: +40 x 40 x 24" -- info "$data/tornado.vti"
+expect ok "vec3s grid" -- info "$data/downwash.vdb"
+expect ok "time series of 4 frames" -- info "$data/series/series.pvd"
+expect ok "wrote" -- convert "$data/downwash.vdb" "$tmp/downwash.vti"
+expect ok "dims: +40 x 40 x 16" -- info "$tmp/downwash.vti"
+expect ok "wrote" -- resample "$data/tornado.vti" "$tmp/small.vdb" --dims 10 10 6
+expect ok "dims: +10 x 10 x 6" -- info "$tmp/small.vdb"
+expect ok "wrote" -- generate gravity "$tmp/g.vti" --dims 4 4 4 --bounds -1 -1 -1 1 1 1 --param power=-2
+expect fail "no such file" -- info "$tmp/missing.vti"
+expect fail "unknown analytic field 'hurricane'.*tornado" -- generate hurricane "$tmp/x.vti" --dims 2 2 2 --bounds 0 0 0 1 1 1
+expect fail "unknown parameter 'speed'" -- generate wind "$tmp/x.vti" --dims 2 2 2 --bounds 0 0 0 1 1 1 --param speed=3
+expect fail "not a number" -- generate wind "$tmp/x.vti" --dims 2 2 2 --bounds 0 0 0 1 1 1 --param power=fast
+expect fail "dims" -- generate wind "$tmp/x.vti" --dims 0 2 2 --bounds 0 0 0 1 1 1
+expect fail "bounds" -- generate wind "$tmp/x.vti" --dims 2 2 2 --bounds 0 0 0 1 1
+expect fail "span|positive extent" -- generate wind "$tmp/x.vti" --dims 2 2 2 --bounds 0 0 0 1 0 1
+expect fail "cannot write '.vtk'" -- convert "$data/tornado.vti" "$tmp/out.vtk"
+expect fail "--dims" -- resample "$data/tornado.vti" "$tmp/out.vti"
+expect fail "subcommand|required" --
+cp "$data/tornado.vti" "$tmp/lying.vdb"
+expect fail "is a VTK XML image data file" -- info "$tmp/lying.vdb"
+
+echo "$passed passed, $failed failed"
+[ $failed -eq 0 ]

@@ -1,0 +1,63 @@
+// Helpers shared by the io tests: a scratch folder per test, the asymmetric
+// reference field, and an Error matcher.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <initializer_list>
+#include <string>
+
+#include <glm/glm.hpp>
+
+#include "core/io/vtk_message_trap.h"
+#include "core/util/error.h"
+
+namespace sandstorm::test {
+
+// v = (x, 2y, 3z) + (1, -2, 0.5): every component differs and is linear, so
+// trilinear interpolation reproduces it exactly and any swapped or flipped
+// axis shows.
+inline glm::dvec3 asymmetric(const glm::dvec3& p) {
+  return {p.x + 1.0, 2.0 * p.y - 2.0, 3.0 * p.z + 0.5};
+}
+
+// A fresh folder named after the running test.
+inline std::filesystem::path scratch() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string name = std::string(info->test_suite_name()) + "." + info->name();
+  for (char& c : name)
+    if (c == '/') c = '_';
+  const auto dir = std::filesystem::temp_directory_path() / "sandstorm_io_tests" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  VtkMessageTrap::installOutputWindow();  // keeps VTK's own console output quiet
+  return dir;
+}
+
+inline void writeText(const std::filesystem::path& p, const std::string& text) {
+  std::ofstream(p, std::ios::binary) << text;
+}
+
+inline std::string readAll(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+// Expects f() to throw sandstorm::Error whose message holds every one of `parts`.
+inline void expectError(const std::function<void()>& f, std::initializer_list<std::string> parts) {
+  try {
+    f();
+    ADD_FAILURE() << "no Error thrown; expected one mentioning '" << *parts.begin() << "'";
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    for (const std::string& part : parts)
+      EXPECT_NE(what.find(part), std::string::npos) << "'" << part << "' missing from: " << what;
+  } catch (const std::exception& e) {
+    ADD_FAILURE() << "threw a non-Error exception: " << e.what();
+  }
+}
+
+}  // namespace sandstorm::test
