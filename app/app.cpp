@@ -127,7 +127,7 @@ App::App(AppConfig config, AppOptions options) : config_(std::move(config)), opt
 
 int App::run() {
   const std::filesystem::path configDir = config_.path.parent_path();
-  FieldUpdate field = makeField(config_.field, configDir);
+  const FieldSource field = makeField(config_.field, configDir);
   const std::shared_ptr<const HeightMap> terrain = makeTerrain(config_.scene, configDir);
   if (options_.screenshotDir) std::filesystem::create_directories(*options_.screenshotDir);
 
@@ -135,7 +135,8 @@ int App::run() {
   mainOptions.seed = config_.run.seed;
   mainOptions.fixedDt = config_.run.fixedDt;
   mainOptions.capacityLimit = config_.run.capacityLimit;
-  MainContext main(config_.particles, std::move(field), mainOptions);
+  MainContext main(config_.particles, field.update, mainOptions);
+  if (field.timeline) useField(main, field);
   std::unique_ptr<SessionRecorder> recorder;
   if (options_.record) {
     recorder = std::make_unique<SessionRecorder>(*options_.record);
@@ -199,9 +200,15 @@ int App::run() {
     GLFWwindow* wallWindow = wallWindows[std::size_t(shown)] ? wallWindows[std::size_t(shown)]->handle() : nullptr;
     std::optional<MenuScript> script;
     if (options_.menuScript) script = MenuScript::load(*options_.menuScript);
+    // The project's data/ sits beside config/.
+    const std::filesystem::path root = std::filesystem::absolute(configDir).parent_path();
     menu = std::make_unique<MenuHost>(
         main, std::move(console), wallWindow, wall.window ? wall.window->size : wall.offscreenSize,
-        std::vector<std::string>{}, [&](const std::string&) {}, std::move(script));
+        fieldChoices(root / "data", root),
+        [&main, root, this](const std::string& choice) {
+          useField(main, makeField(fieldSpecFor(choice, config_.field), root));
+        },
+        std::move(script));
     if (!operatorWindow) walls[std::size_t(shown)]->setOverlay([&menu] { return menu->latest(); }, menu->font());
   }
 

@@ -1,45 +1,97 @@
 #include "app/scene_setup.h"
 
-#include "core/field/vortex_field.h"
+#include <algorithm>
+
+#include "core/field/analytic_field_factory.h"
+#include "core/io/field_loader.h"
+#include "core/io/field_sequence.h"
+#include "core/sim/main_context.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
 
 namespace sandstorm {
 namespace {
 
-double param(const FieldSpec& spec, const std::string& key, double fallback) {
-  const auto it = spec.params.find(key);
-  return it == spec.params.end() ? fallback : it->second;
-}
-
-VortexParams tornadoParams(const FieldSpec& spec) {
-  static const char* known[] = {"center_x", "center_y", "center_z", "range", "height", "core", "spin", "pull", "up"};
-  for (const auto& [key, value] : spec.params)
-    if (std::find(std::begin(known), std::end(known), key) == std::end(known))
-      throw Error(concat("field.params.", key, ": not a parameter of the tornado; expected one of center_x, center_y, "
-                         "center_z, range, height, core, spin, pull, up"));
-  VortexParams p;
-  p.center = {param(spec, "center_x", 0), param(spec, "center_y", 0), param(spec, "center_z", 0)};
-  p.range = float(param(spec, "range", p.range));
-  p.height = float(param(spec, "height", p.height));
-  p.core = float(param(spec, "core", p.core));
-  p.spin = float(param(spec, "spin", p.spin));
-  p.pull = float(param(spec, "pull", p.pull));
-  p.up = float(param(spec, "up", p.up));
-  return p;
+std::filesystem::path resolve(const std::string& source, const std::filesystem::path& baseDir) {
+  const std::filesystem::path p(source);
+  return p.is_absolute() || std::filesystem::exists(p) ? p : baseDir / p;
 }
 
 }  // namespace
 
-FieldUpdate makeField(const FieldSpec& spec, const std::filesystem::path&) {
-  if (spec.source != "analytic")
-    throw Error(concat("field.source '", spec.source, "': loading field files needs the field readers (core/io)"));
-  if (spec.name != "tornado")
-    throw Error(concat("field.name '", spec.name, "': unknown analytic field; expected tornado"));
-  auto field = std::make_shared<VectorField>(bake(VortexField(tornadoParams(spec)), spec.bounds, spec.dims));
-  log::info("field: analytic '", spec.name, "' baked to ", spec.dims.x, "x", spec.dims.y, "x", spec.dims.z,
-            ", max speed ", field->maxMagnitude(), " m/s");
-  return FieldUpdate{std::move(field), spec.placement};
+FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDir) {
+  FieldSource out;
+  if (spec.source == "analytic") {
+    FieldParams params(spec.params.begin(), spec.params.end());
+    auto field = std::make_shared<VectorField>(bake(*makeAnalyticField(spec.name, params), spec.bounds, spec.dims));
+    out.description = concat("analytic '", spec.name, "' baked to ", spec.dims.x, "x", spec.dims.y, "x", spec.dims.z);
+    out.update = FieldUpdate{.field = std::move(field), .placement = spec.placement};
+  } else {
+    const std::filesystem::path path = resolve(spec.source, baseDir);
+    LoadOptions options;
+    options.arrayName = spec.name;
+    options.resolution = spec.resolution;
+    if (path.extension() == ".pvd") {
+      const FieldSequence sequence = FieldSequence::fromPvd(path, options);
+      std::vector<double> times;
+      std::vector<std::shared_ptr<const VectorField>> frames;
+      for (std::size_t i = 0; i < sequence.size(); ++i) {
+        times.push_back(sequence.time(i));
+        frames.push_back(std::make_shared<VectorField>(sequence.frame(i)));
+      }
+      out.timeline = FieldTimeline(std::move(times), std::move(frames));
+      out.update = FieldUpdate{.field = out.timeline->frame(0), .placement = spec.placement};
+      out.description = concat(path.string(), ": ", sequence.size(), " frames over ", sequence.endTime() - sequence.startTime(), " s");
+    } else {
+      LoadReport report;
+      auto field = std::make_shared<VectorField>(loadField(path, options, &report));
+      out.description = concat(path.string(), " (", report.format, ", '", report.arrayName, "')");
+      for (const std::string& note : report.notes) log::info(path.string(), ": ", note);
+      if (report.nonFinite > 0) log::warn(path.string(), ": ", report.nonFinite, " NaN or Inf vectors set to zero");
+      out.update = FieldUpdate{.field = std::move(field), .placement = spec.placement};
+    }
+  }
+  const VectorField& f = *out.update.field;
+  log::info("field: ", out.description, ", ", f.dims().x, "x", f.dims().y, "x", f.dims().z, " over [", f.bounds().min.x,
+            ",", f.bounds().min.y, ",", f.bounds().min.z, "]..[", f.bounds().max.x, ",", f.bounds().max.y, ",",
+            f.bounds().max.z, "] m, max speed ", f.maxMagnitude(), " m/s");
+  return out;
+}
+
+void useField(MainContext& main, const FieldSource& source) {
+  if (source.timeline) main.setFieldTimeline(*source.timeline, source.update.placement);
+  else main.setField(source.update);
+}
+
+std::vector<std::string> fieldChoices(const std::filesystem::path& dataDir, const std::filesystem::path& base) {
+  std::vector<std::string> choices;
+  for (const AnalyticFieldSpec& spec : analyticFieldSpecs()) choices.push_back("analytic:" + spec.name);
+  std::error_code ec;
+  std::vector<std::string> files;
+  for (auto it = std::filesystem::recursive_directory_iterator(dataDir, ec);
+       !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
+    const std::string ext = it->path().extension().string();
+    const bool inSeries = it->path().parent_path().filename() == "series" && ext != ".pvd";
+    if (!inSeries && (ext == ".vti" || ext == ".vtk" || ext == ".vtr" || ext == ".vts" || ext == ".vdb" ||
+                      ext == ".fga" || ext == ".vf" || ext == ".pvd"))
+      files.push_back(std::filesystem::relative(it->path(), base).string());
+  }
+  std::sort(files.begin(), files.end());
+  choices.insert(choices.end(), files.begin(), files.end());
+  return choices;
+}
+
+FieldSpec fieldSpecFor(const std::string& choice, const FieldSpec& base) {
+  FieldSpec spec = base;
+  spec.params.clear();
+  if (choice.starts_with("analytic:")) {
+    spec.source = "analytic";
+    spec.name = choice.substr(9);
+  } else {
+    spec.source = choice;
+    spec.name.clear();
+  }
+  return spec;
 }
 
 std::shared_ptr<const HeightMap> makeTerrain(const SceneSpec& spec, const std::filesystem::path&) {

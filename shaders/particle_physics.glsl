@@ -2,7 +2,7 @@
 // operations in the same order, all `precise`, so llvmpipe and the CPU agree to
 // the bit. Needs sim_block.glsl.
 
-vec3 fieldSample(vec3 p) {
+vec3 fieldSample(sampler3D field, vec3 p) {
   // Trilinear between grid points with texelFetch (not the sampler's filter,
   // whose weights have only 8 fractional bits on most GPUs).
   ivec3 dims = sim.fieldDims.xyz;
@@ -10,14 +10,14 @@ vec3 fieldSample(vec3 p) {
   ivec3 i0 = min(ivec3(floor(u)), max(dims - 2, ivec3(0)));
   ivec3 i1 = min(i0 + 1, dims - 1);
   precise vec3 f = u - vec3(i0);
-  vec3 c000 = texelFetch(uField, ivec3(i0.x, i0.y, i0.z), 0).xyz;
-  vec3 c100 = texelFetch(uField, ivec3(i1.x, i0.y, i0.z), 0).xyz;
-  vec3 c010 = texelFetch(uField, ivec3(i0.x, i1.y, i0.z), 0).xyz;
-  vec3 c110 = texelFetch(uField, ivec3(i1.x, i1.y, i0.z), 0).xyz;
-  vec3 c001 = texelFetch(uField, ivec3(i0.x, i0.y, i1.z), 0).xyz;
-  vec3 c101 = texelFetch(uField, ivec3(i1.x, i0.y, i1.z), 0).xyz;
-  vec3 c011 = texelFetch(uField, ivec3(i0.x, i1.y, i1.z), 0).xyz;
-  vec3 c111 = texelFetch(uField, ivec3(i1.x, i1.y, i1.z), 0).xyz;
+  vec3 c000 = texelFetch(field, ivec3(i0.x, i0.y, i0.z), 0).xyz;
+  vec3 c100 = texelFetch(field, ivec3(i1.x, i0.y, i0.z), 0).xyz;
+  vec3 c010 = texelFetch(field, ivec3(i0.x, i1.y, i0.z), 0).xyz;
+  vec3 c110 = texelFetch(field, ivec3(i1.x, i1.y, i0.z), 0).xyz;
+  vec3 c001 = texelFetch(field, ivec3(i0.x, i0.y, i1.z), 0).xyz;
+  vec3 c101 = texelFetch(field, ivec3(i1.x, i0.y, i1.z), 0).xyz;
+  vec3 c011 = texelFetch(field, ivec3(i0.x, i1.y, i1.z), 0).xyz;
+  vec3 c111 = texelFetch(field, ivec3(i1.x, i1.y, i1.z), 0).xyz;
   precise vec3 c00 = c000 + (c100 - c000) * f.x;
   precise vec3 c10 = c010 + (c110 - c010) * f.x;
   precise vec3 c01 = c001 + (c101 - c001) * f.x;
@@ -44,7 +44,13 @@ vec3 toRoom(vec3 local) {
 
 vec3 fieldAt(vec3 x) {
   if (sim.fieldDims.w == 0) return vec3(0.0);
-  precise vec3 f = sim.stepParams.y * ((placementRotation() * fieldSample(toLocal(x))) * sim.placementOffset.w);
+  vec3 local = toLocal(x);
+  precise vec3 s = fieldSample(uField, local);
+  if (sim.fieldBlend.y != 0.0) {
+    precise vec3 n = fieldSample(uFieldNext, local);
+    s = s + (n - s) * sim.fieldBlend.x;
+  }
+  precise vec3 f = sim.stepParams.y * ((placementRotation() * s) * sim.placementOffset.w);
   return f;
 }
 

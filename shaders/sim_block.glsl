@@ -28,11 +28,13 @@ layout(std140, binding = 0) uniform SimBlock {
   uvec4 frameSeed;        // frame, seed lo, seed hi, emitter count
   vec4 terrainMinScale;   // min xy, index scale xy
   ivec4 terrainDims;      // xy, z: 1 when there is terrain
+  vec4 fieldBlend;        // x: weight towards the next frame, y: 1 when there is one
   EmitterBlock emitters[kMaxEmitters];
 } sim;
 
-layout(binding = 0) uniform sampler3D uField;    // RGB32F, read with texelFetch only
-layout(binding = 1) uniform sampler2D uTerrain;  // R32F heights
+layout(binding = 0) uniform sampler3D uField;      // RGB32F, read with texelFetch only
+layout(binding = 1) uniform sampler2D uTerrain;    // R32F heights
+layout(binding = 2) uniform sampler3D uFieldNext;  // a time-varying field's next frame
 
 struct Particle {
   vec4 positionLife;

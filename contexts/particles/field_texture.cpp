@@ -28,6 +28,12 @@ void FieldTexture::upload(const VectorField& field) {
   lastUploadMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
+void FieldTexture::show(std::shared_ptr<const VectorField> field) {
+  if (!field || field == holds_) return;
+  upload(*field);
+  holds_ = std::move(field);
+}
+
 void FieldTexture::bind(int unit) const { glBindTextureUnit(GLuint(unit), texture_.id()); }
 
 void TerrainTexture::upload(const HeightMap& terrain) {

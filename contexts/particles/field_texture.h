@@ -3,6 +3,8 @@
 // texelFetch and interpolate themselves (shaders/particle_physics.glsl).
 #pragma once
 
+#include <memory>
+
 #include "contexts/gl/objects.h"
 #include "core/field/height_map.h"
 #include "core/field/vector_field.h"
@@ -14,11 +16,15 @@ class FieldTexture {
   // Uploads; throws Error when the grid exceeds GL_MAX_3D_TEXTURE_SIZE.
   // Re-uploading a field of the same dimensions reuses the texture.
   void upload(const VectorField& field);
+  // Uploads unless this texture already holds that very field.
+  void show(std::shared_ptr<const VectorField> field);
+  const std::shared_ptr<const VectorField>& holds() const { return holds_; }
   void bind(int unit) const;
   double lastUploadMs() const { return lastUploadMs_; }
 
  private:
   gl::Texture texture_;
+  std::shared_ptr<const VectorField> holds_;
   glm::ivec3 dims_{0};
   double lastUploadMs_ = 0.0;
 };

@@ -24,7 +24,9 @@ class ParticleBackend {
  public:
   virtual ~ParticleBackend() = default;
 
-  virtual void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement) = 0;
+  // `next`: a time-varying field's next frame (same grid), blended by SimStep::fieldBlend.
+  virtual void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
+                        std::shared_ptr<const VectorField> next = nullptr) = 0;
   virtual void setTerrain(std::shared_ptr<const HeightMap> terrain) = 0;
   virtual void step(const SimStep& step, const ParticleState& state) = 0;
   virtual void clear() = 0;

@@ -91,10 +91,18 @@ void ParticleGeoUpdate::grow(std::size_t capacity) {
   }
 }
 
-void ParticleGeoUpdate::setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement) {
+void ParticleGeoUpdate::setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
+                                 std::shared_ptr<const VectorField> next) {
+  if (field && next && (field->dims() != next->dims() || field->bounds().min != next->bounds().min ||
+                        field->bounds().max != next->bounds().max))
+    throw Error("ParticleGeoUpdate: a time-varying field's frames must share one grid");
+  // A frame already on the GPU is not sent again (a sequence steps A,B -> B,C).
+  if (field && field == nextFieldTexture_.holds()) std::swap(fieldTexture_, nextFieldTexture_);
+  fieldTexture_.show(field);
+  nextFieldTexture_.show(next);
   field_ = std::move(field);
+  nextField_ = std::move(next);
   placement_ = placement;
-  if (field_) fieldTexture_.upload(*field_);
 }
 
 void ParticleGeoUpdate::setTerrain(std::shared_ptr<const HeightMap> terrain) {
@@ -132,6 +140,7 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
   const std::size_t limit = std::min(std::size_t(std::max(state.sim.maximum, 0)), capacity_);
   SimBlockInputs inputs;
   inputs.field = field_.get();
+  inputs.nextField = nextField_.get();
   inputs.placement = placement_;
   inputs.terrain = terrain_.get();
   inputs.state = &state;
@@ -144,6 +153,7 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
   glNamedBufferSubData(simBlock_.id(), 0, sizeof(block), &block);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, simBlock_.id());
   if (field_) fieldTexture_.bind(0);
+  if (nextField_) nextFieldTexture_.bind(2);
   if (terrain_) terrainTexture_.bind(1);
 
   const BufferSet& in = sets_[std::size_t(current_)];

@@ -39,7 +39,8 @@ class ParticleGeoUpdate final : public ParticleBackend {
  public:
   explicit ParticleGeoUpdate(std::size_t capacity);
 
-  void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement) override;
+  void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
+                std::shared_ptr<const VectorField> next = nullptr) override;
   void setTerrain(std::shared_ptr<const HeightMap> terrain) override;
   void step(const SimStep& step, const ParticleState& state) override;
   void clear() override;
@@ -49,7 +50,7 @@ class ParticleGeoUpdate final : public ParticleBackend {
   std::size_t capacity() const override { return capacity_; }
   std::size_t liveCount() const override;
   std::vector<Particle> readBack() const override;
-  double lastFieldUploadMs() const override { return fieldTexture_.lastUploadMs(); }
+  double lastFieldUploadMs() const override { return fieldTexture_.lastUploadMs() + nextFieldTexture_.lastUploadMs(); }
   const char* name() const override { return "tf-gs"; }
 
  private:
@@ -77,10 +78,10 @@ class ParticleGeoUpdate final : public ParticleBackend {
   gl::Renderbuffer dummyColor_;
   gl::Program updateProgram_, emitProgram_;
 
-  std::shared_ptr<const VectorField> field_;
+  std::shared_ptr<const VectorField> field_, nextField_;
   FieldPlacement placement_;
   std::shared_ptr<const HeightMap> terrain_;
-  FieldTexture fieldTexture_;
+  FieldTexture fieldTexture_, nextFieldTexture_;
   TerrainTexture terrainTexture_;
 
   EmissionBudget budget_;

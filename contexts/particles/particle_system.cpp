@@ -35,7 +35,7 @@ void ParticleSystem::advance(const FramePacket& packet) {
   }
   if (packet.fieldUpdate) {
     field_ = packet.fieldUpdate;
-    update_->setField(field_->field, field_->placement);
+    update_->setField(field_->field, field_->placement, field_->next);
     log::debug("frame ", packet.frame, ": field uploaded in ", update_->lastFieldUploadMs(), " ms");
   }
   updateTimer_.begin();

@@ -38,17 +38,19 @@ struct alignas(16) SimBlock {
   glm::uvec4 frameSeed;
   glm::vec4 terrainMinScale;
   glm::ivec4 terrainDims;
+  glm::vec4 fieldBlend;  // x: weight towards the next frame, y: 1 when there is one
   EmitterBlock emitters[ParticleState::kMaxEmitters];
 };
 
 static_assert(sizeof(EmitterBlock) == 80);
-static_assert(sizeof(SimBlock) == 16 * 15 + 80 * ParticleState::kMaxEmitters);
+static_assert(sizeof(SimBlock) == 16 * 16 + 80 * ParticleState::kMaxEmitters);
 
 // Newborn particles per emission slot (one geometry-shader invocation).
 inline constexpr int kEmissionSlotSize = 64;
 
 struct SimBlockInputs {
   const VectorField* field = nullptr;
+  const VectorField* nextField = nullptr;
   FieldPlacement placement;
   const HeightMap* terrain = nullptr;
   const ParticleState* state = nullptr;

@@ -74,8 +74,9 @@ struct NavigationSpec {
 
 struct FieldSpec {
   std::string source = "analytic";  // "analytic" or a file path (resolved against the config's folder)
-  std::string name = "tornado";     // analytic field, or the array/grid name in a file
-  glm::ivec3 dims{48, 48, 32};      // baking / resampling resolution
+  std::string name = "tornado";     // analytic field, or the array/grid name in a file (empty: the only one)
+  glm::ivec3 dims{48, 48, 32};      // baking resolution of an analytic field
+  glm::ivec3 resolution{0};         // a file's grid resampled to this; 0: the file's own
   Box bounds{{-6.0f, -6.0f, 0.0f}, {6.0f, 6.0f, 10.0f}};
   std::map<std::string, double> params;  // analytic field parameters
   FieldPlacement placement;

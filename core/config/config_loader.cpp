@@ -162,10 +162,18 @@ void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
 }
 
 void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
-  r.checkKeys(t, "field", {"source", "name", "dims", "bounds_min", "bounds_max", "params", "offset", "scale",
-                           "yaw_deg"});
+  r.checkKeys(t, "field", {"source", "name", "dims", "resolution", "bounds_min", "bounds_max", "params", "offset",
+                           "scale", "yaw_deg"});
   f.source = r.string(t, "source", "field", f.source);
-  f.name = r.string(t, "name", "field", f.name);
+  // A file's array or grid is chosen by name; without one, the file's only (or active) vector one.
+  f.name = r.string(t, "name", "field", f.source == "analytic" ? f.name : std::string());
+  if (const toml::value* res = r.find(t, "resolution")) {
+    const glm::vec3 v = r.vec<3>(*res, "field.resolution");
+    for (int a = 0; a < 3; ++a)
+      if (v[a] < 2 || v[a] > 2048 || v[a] != std::floor(v[a]))
+        r.fail(*res, "field.resolution", "expected three whole numbers in 2..2048");
+    f.resolution = glm::ivec3(v);
+  }
   const glm::vec3 dims = r.vec<3>(t, "dims", "field", glm::vec3(f.dims));
   for (int a = 0; a < 3; ++a)
     if (dims[a] < 1 || dims[a] > 2048 || dims[a] != std::floor(dims[a]))

@@ -55,6 +55,8 @@ AttributeInfo enumEntry(std::string key, std::vector<std::string> choices, std::
 #define SIM(member) Ref<decltype(SimSettings::member)>([](ParticleState& s, int) -> auto& { return s.sim.member; })
 #define RENDER(member) \
   Ref<decltype(RenderSettings::member)>([](ParticleState& s, int) -> auto& { return s.render.member; })
+#define FIELD(member) \
+  Ref<decltype(FieldPlayback::member)>([](ParticleState& s, int) -> auto& { return s.field.member; })
 #define EMITTER(member) \
   Ref<decltype(Emitter::member)>([](ParticleState& s, int e) -> auto& { return s.emitters[std::size_t(e)].member; })
 
@@ -105,6 +107,12 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("render.softness", T::Float, 0, 10, "m",
                     "Particles fade out within this distance in front of scene geometry",
                     RENDER(softness)));
+  // A time-varying field's playback.
+  v.push_back(entry("field.speed", T::Float, 0, 100, "x", "Field seconds per simulated second (time-varying fields)",
+                    FIELD(speed)));
+  v.push_back(entry("field.loop", T::Bool, 0, 1, "", "Loop a time-varying field", FIELD(loop)));
+  v.push_back(entry("field.paused", T::Bool, 0, 1, "", "Hold the time-varying field's current frame",
+                    FIELD(paused)));
   // Emitters.
   v.push_back(enumEntry("emitter.*.shape", {"box", "sphere", "disc", "point"}, "Emission area shape",
                         EMITTER(shape)));
@@ -136,6 +144,7 @@ std::vector<AttributeInfo> makeEntries() {
 
 #undef SIM
 #undef RENDER
+#undef FIELD
 #undef EMITTER
 
 struct Alias {

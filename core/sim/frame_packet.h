@@ -20,6 +20,7 @@ namespace sandstorm {
 struct FieldUpdate {
   std::shared_ptr<const VectorField> field;  // the new grid (shared, never copied per wall)
   FieldPlacement placement;
+  std::shared_ptr<const VectorField> next;   // a time-varying field's next frame, or null
 };
 
 struct FramePacket {
@@ -33,8 +34,9 @@ struct FramePacket {
   std::vector<std::uint32_t> emission; // Reeves' count per emitter for this frame
   std::shared_ptr<const FieldUpdate> fieldUpdate;  // non-null when the field changed
   Viewer viewer;  // the head and the navigation, sampled once for every wall
+  float fieldBlend = 0.0f;  // weight towards fieldUpdate's `next` frame (time-varying fields)
 
-  SimStep step() const { return SimStep{frame, simDt, Seed::from(seed), emission}; }
+  SimStep step() const { return SimStep{frame, simDt, Seed::from(seed), emission, fieldBlend}; }
 };
 
 }  // namespace sandstorm

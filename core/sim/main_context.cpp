@@ -54,6 +54,19 @@ void MainContext::enqueue(const StateChange& change) {
 void MainContext::setField(FieldUpdate field) {
   std::lock_guard lock(mutex_);
   field_ = std::make_shared<const FieldUpdate>(std::move(field));
+  timeline_.reset();
+  fieldChanged_ = true;
+}
+
+void MainContext::setFieldTimeline(FieldTimeline timeline, const FieldPlacement& placement) {
+  std::lock_guard lock(mutex_);
+  timeline_ = std::move(timeline);
+  timelinePlacement_ = placement;
+  fieldTime_ = timeline_->time(0);
+  fieldPosition_ = timeline_->at(fieldTime_, state_.field.loop);
+  field_ = std::make_shared<const FieldUpdate>(FieldUpdate{.field = timeline_->frame(fieldPosition_.first),
+                                                           .placement = placement,
+                                                           .next = timeline_->frame(fieldPosition_.second)});
   fieldChanged_ = true;
 }
 
@@ -113,10 +126,23 @@ FramePacket MainContext::next() {
   }
   pending_ = state_;
 
+  packet.simDt = state_.sim.paused ? 0.0f : dt * state_.sim.timeScale;
+  if (timeline_) {
+    // The field's clock runs on simulated time, at the playback speed.
+    const FieldTimeline::Position at = timeline_->at(fieldTime_, state_.field.loop);
+    if (at.first != fieldPosition_.first || at.second != fieldPosition_.second) {
+      field_ = std::make_shared<const FieldUpdate>(FieldUpdate{.field = timeline_->frame(at.first),
+                                                               .placement = timelinePlacement_,
+                                                               .next = timeline_->frame(at.second)});
+      fieldChanged_ = true;
+    }
+    fieldPosition_ = at;
+    packet.fieldBlend = at.weight;
+    if (!state_.field.paused) fieldTime_ += double(packet.simDt) * state_.field.speed;
+  }
   if (fieldChanged_) packet.fieldUpdate = field_;
   fieldChanged_ = false;
 
-  packet.simDt = state_.sim.paused ? 0.0f : dt * state_.sim.timeScale;
   packet.emission = emissionCounts(state_, packet.simDt, Seed::from(options_.seed), frame_);
   ++frame_;
   return packet;

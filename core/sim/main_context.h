@@ -19,6 +19,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/field/field_timeline.h"
 #include "core/sim/attribute_table.h"
 #include "core/sim/frame_packet.h"
 #include "core/sim/particle_state.h"
@@ -47,6 +48,8 @@ class MainContext {
   void addEmitter(const Emitter& emitter);
   void removeEmitter(int index);
   void setField(FieldUpdate field);
+  // A time-varying field: played by the field.* attributes (speed, loop, pause).
+  void setFieldTimeline(FieldTimeline timeline, const FieldPlacement& placement);
   void reset();
   // The head and navigation the next packets carry (the app samples its trackers).
   void setViewer(const Viewer& viewer);
@@ -76,6 +79,10 @@ class MainContext {
   std::vector<StateChange> queued_;
   std::multimap<std::uint32_t, StateChange> scheduled_;
   std::shared_ptr<const FieldUpdate> field_;
+  std::optional<FieldTimeline> timeline_;
+  FieldPlacement timelinePlacement_;
+  double fieldTime_ = 0.0;
+  FieldTimeline::Position fieldPosition_;
   bool fieldChanged_ = true;  // packet 0 always carries the field
   std::uint32_t frame_ = 0;
   double time_ = 0.0;

@@ -83,7 +83,9 @@ Box particleDomain(const VectorField& field) {
 glm::vec3 fieldAt(const glm::vec3& x, const PhysicsInputs& in) {
   if (!in.field) return glm::vec3(0.0f);
   const glm::vec3 local = in.placement.toLocal(x);
-  return in.settings.fieldStrength * in.placement.vectorToRoom(in.field->sample(local));
+  glm::vec3 f = in.field->sample(local);
+  if (in.nextField) f = f + (in.nextField->sample(local) - f) * in.blend;
+  return in.settings.fieldStrength * in.placement.vectorToRoom(f);
 }
 
 Particle birth(const Emitter& e, Seed seed, std::uint32_t frame, std::uint32_t emitterIndex,

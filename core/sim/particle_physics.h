@@ -20,6 +20,10 @@ namespace sandstorm {
 // Everything advance() reads besides the particle.
 struct PhysicsInputs {
   const VectorField* field = nullptr;
+  // A time-varying field's next frame (same grid) and the weight towards it:
+  // the field is field + (next - field) * blend.
+  const VectorField* nextField = nullptr;
+  float blend = 0.0f;
   FieldPlacement placement;
   const HeightMap* terrain = nullptr;
   SimSettings settings;

@@ -16,6 +16,7 @@ struct ParticleState {
 
   SimSettings sim;
   RenderSettings render;
+  FieldPlayback field;
   std::vector<Emitter> emitters{Emitter{}};
 };
 

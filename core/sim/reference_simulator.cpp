@@ -14,9 +14,10 @@ ReferenceSimulator::ReferenceSimulator(std::size_t capacity, std::size_t capacit
   next_.reserve(capacity);
 }
 
-void ReferenceSimulator::setField(std::shared_ptr<const VectorField> field,
-                                  const FieldPlacement& placement) {
+void ReferenceSimulator::setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
+                                  std::shared_ptr<const VectorField> next) {
   field_ = std::move(field);
+  next_field_ = std::move(next);
   placement_ = placement;
 }
 
@@ -29,6 +30,8 @@ void ReferenceSimulator::step(const SimStep& step, const ParticleState& state) {
   if (step.dt <= 0.0f) return;
   PhysicsInputs in;
   in.field = field_.get();
+  in.nextField = next_field_.get();
+  in.blend = step.fieldBlend;
   in.placement = placement_;
   in.terrain = terrain_.get();
   in.settings = state.sim;

@@ -28,7 +28,8 @@ class ReferenceSimulator {
   // `capacityLimit`: how far the capacity may grow when sim.maximum exceeds it.
   explicit ReferenceSimulator(std::size_t capacity, std::size_t capacityLimit = 0);
 
-  void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement = {});
+  void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement = {},
+                std::shared_ptr<const VectorField> next = nullptr);
   void setTerrain(std::shared_ptr<const HeightMap> terrain);
   void step(const SimStep& step, const ParticleState& state);
   void clear();
@@ -39,7 +40,7 @@ class ReferenceSimulator {
  private:
   std::size_t capacity_;
   std::size_t capacityLimit_;
-  std::shared_ptr<const VectorField> field_;
+  std::shared_ptr<const VectorField> field_, next_field_;
   FieldPlacement placement_;
   std::shared_ptr<const HeightMap> terrain_;
   std::vector<Particle> particles_;

@@ -34,6 +34,13 @@ struct SimSettings {
   bool paused = false;          // pause: time stands still, nothing moves or dies
 };
 
+// How a time-varying field plays (the main context's field clock).
+struct FieldPlayback {
+  float speed = 1.0f;  // field seconds per simulated second
+  bool loop = true;
+  bool paused = false;  // hold the current frame while particles move on
+};
+
 enum class RenderMode : int { Points = 0, Billboards = 1 };
 
 struct RenderSettings {

@@ -14,6 +14,7 @@ struct SimStep {
   float dt = 0.0f;  // simulated seconds; 0 while paused (nothing moves, dies or is born)
   Seed seed;
   std::vector<std::uint32_t> emission;  // Reeves' count per emitter (emission.h)
+  float fieldBlend = 0.0f;              // weight towards a time-varying field's next frame
 };
 
 }  // namespace sandstorm

@@ -8,6 +8,7 @@
 
 #include <cstdio>
 
+#include "core/field/field_timeline.h"
 #include "core/field/vortex_field.h"
 #include "core/sim/main_context.h"
 #include "core/sim/reference_simulator.h"
@@ -21,6 +22,7 @@ class ParticleGeoUpdateTest : public GlTest {};
 struct Scenario {
   ParticleState state;
   std::shared_ptr<const VectorField> field;
+  std::optional<FieldTimeline> timeline;
   std::shared_ptr<const HeightMap> terrain;
   FieldPlacement placement;
 };
@@ -67,12 +69,11 @@ Agreement compare(Scenario s, int frames, std::size_t capacity) {
   MainContext::Options options;
   options.fixedDt = 1.0f / 60.0f;
   options.seed = 0xC0FFEEull;
-  MainContext main(s.state, FieldUpdate{s.field, s.placement}, options);
+  MainContext main(s.state, FieldUpdate{.field = s.field, .placement = s.placement}, options);
+  if (s.timeline) main.setFieldTimeline(*s.timeline, s.placement);
   ParticleGeoUpdate gpu(capacity);
   ReferenceSimulator cpu(capacity);
-  gpu.setField(s.field, s.placement);
   gpu.setTerrain(s.terrain);
-  cpu.setField(s.field, s.placement);
   cpu.setTerrain(s.terrain);
   ParticleState state = main.initialState();
   Agreement a;
@@ -80,6 +81,10 @@ Agreement compare(Scenario s, int frames, std::size_t capacity) {
     if (f == 50) main.set("emitter.0.rate", 12000.0f);  // a mid-run change
     const FramePacket packet = main.next();
     for (const StateChange& c : packet.changes) applyChange(state, c);
+    if (const auto& u = packet.fieldUpdate) {
+      gpu.setField(u->field, u->placement, u->next);
+      cpu.setField(u->field, u->placement, u->next);
+    }
     gpu.step(packet.step(), state);
     cpu.step(packet.step(), state);
     const std::vector<Particle> g = gpu.readBack();
@@ -113,6 +118,26 @@ TEST_F(ParticleGeoUpdateTest, MatchesTheCpuReferenceWithEmissionAndDeath) {
   }
 }
 
+TEST_F(ParticleGeoUpdateTest, TimeVaryingFieldsBlendTheSameOnBothSides) {
+  // Three frames of a vortex that turns one way, then the other: the walls
+  // blend frames themselves, and must match the CPU doing the same.
+  Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, BoundaryMode::Clamp);
+  std::vector<std::shared_ptr<const VectorField>> frames;
+  for (float spin : {6.0f, -4.0f, 8.0f}) {
+    VortexParams vp;
+    vp.range = 3.0f;
+    vp.spin = spin;
+    frames.push_back(std::make_shared<VectorField>(bake(VortexField(vp), Box{{-3, -3, 0}, {3, 3, 4}}, {20, 20, 12})));
+  }
+  s.timeline = FieldTimeline({0.0, 0.5, 1.2}, frames);
+  s.state.field.loop = true;
+  s.state.field.speed = 1.5f;
+  const Agreement a = compare(s, 90, 16384);
+  EXPECT_EQ(a.frames, 90u);
+  EXPECT_LT(a.maxError, 1e-4f);
+  std::printf("time-varying: max |gpu - cpu| = %g over %zu frames\n", a.maxError, a.frames);
+}
+
 TEST_F(ParticleGeoUpdateTest, MaximumCapsTheLiveCountAndCapacityTheBuffer) {
   Scenario s = tornado(MotionModel::Tracer, Integrator::Euler, BoundaryMode::Clamp);
   s.state.emitters[0].lifetime = 100.0f;
@@ -129,7 +154,7 @@ TEST_F(ParticleGeoUpdateTest, RaisingMaximumGrowsTheBuffersWithoutLosingParticle
   s.state.emitters[0].lifetime = 30.0f;
   MainContext::Options options;
   options.fixedDt = 1.0f / 60.0f;
-  MainContext main(s.state, FieldUpdate{s.field, s.placement}, options);
+  MainContext main(s.state, FieldUpdate{.field = s.field, .placement = s.placement}, options);
   ParticleSystem gpu(main.initialState(), ParticleSystem::Options{.capacity = 4096, .capacityLimit = 1 << 16});
   gpu.setTerrain(s.terrain);
   ReferenceSimulator cpu(4096, 1 << 16);

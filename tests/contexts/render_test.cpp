@@ -56,7 +56,7 @@ ParticleState onePerFrame(std::vector<glm::vec3> positions, float opacity) {
 Image render(const ParticleState& state, int frames, std::shared_ptr<const VectorField> field = nullptr) {
   MainContext::Options options;
   options.fixedDt = 0.25f;
-  MainContext main(state, FieldUpdate{field, {}}, options);
+  MainContext main(state, FieldUpdate{.field = field}, options);
   WallRendererSetup setup{.wall = cameraWall(),
                           .initial = state,
                           .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
@@ -98,7 +98,7 @@ TEST_F(RenderTest, TheFieldCarriesParticlesToWhereItSays) {
   first.emitters[0].lifetime = 100.0f;
   MainContext::Options options;
   options.fixedDt = 0.25f;
-  MainContext main(first, FieldUpdate{field, {}}, options);
+  MainContext main(first, FieldUpdate{.field = field}, options);
   WallRendererSetup setup{.wall = cameraWall(),
                           .initial = first,
                           .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),

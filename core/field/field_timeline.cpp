@@ -1,0 +1,45 @@
+#include "core/field/field_timeline.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/util/error.h"
+
+namespace sandstorm {
+
+FieldTimeline::FieldTimeline(std::vector<double> times, std::vector<std::shared_ptr<const VectorField>> frames)
+    : times_(std::move(times)), frames_(std::move(frames)) {
+  if (frames_.empty() || frames_.size() != times_.size())
+    throw Error(concat("FieldTimeline: ", frames_.size(), " frames for ", times_.size(), " times"));
+  for (std::size_t i = 0; i < frames_.size(); ++i) {
+    if (!frames_[i]) throw Error(concat("FieldTimeline: frame ", i, " is missing"));
+    if (i > 0 && !(times_[i] > times_[i - 1]))
+      throw Error(concat("FieldTimeline: frame ", i, "'s time ", times_[i], " does not follow ", times_[i - 1]));
+    const VectorField& f = *frames_[i];
+    if (f.dims() != frames_[0]->dims() || f.bounds().min != frames_[0]->bounds().min ||
+        f.bounds().max != frames_[0]->bounds().max)
+      throw Error(concat("FieldTimeline: frame ", i, " has another grid than frame 0; frames must share dims and bounds"));
+  }
+}
+
+FieldTimeline::Position FieldTimeline::at(double t, bool loop) const {
+  const std::size_t n = frames_.size();
+  if (n == 1) return {0, 0, 0.0f};
+  const double start = times_.front(), end = times_.back();
+  if (loop) {
+    // One period holds every frame and the step from the last back to the first,
+    // which takes as long as the average step.
+    const double period = (end - start) * double(n) / double(n - 1);
+    double u = std::fmod(t - start, period);
+    if (u < 0) u += period;
+    t = start + u;
+    if (t >= end) return {n - 1, 0, float((t - end) / (period - (end - start)))};
+  }
+  if (t <= start) return {0, 1, 0.0f};  // frame 0, already paired with the next one
+  if (t >= end) return {n - 1, n - 1, 0.0f};
+  const std::size_t b = std::size_t(std::upper_bound(times_.begin(), times_.end(), t) - times_.begin());
+  const std::size_t a = b - 1;
+  return {a, b, float((t - times_[a]) / (times_[b] - times_[a]))};
+}
+
+}  // namespace sandstorm
