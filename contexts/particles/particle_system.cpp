@@ -1,5 +1,6 @@
 #include "contexts/particles/particle_system.h"
 
+#include "contexts/particles/particle_compute_update.h"
 #include "contexts/particles/particle_geo_update.h"
 #include "core/sim/capacity.h"
 #include "core/util/error.h"
@@ -7,19 +8,16 @@
 
 namespace sandstorm {
 
-namespace {
-
-std::unique_ptr<ParticleBackend> makeBackend(const std::string& name, std::size_t capacity) {
+std::unique_ptr<ParticleBackend> makeParticleBackend(const std::string& name, std::size_t capacity) {
   if (name == "tf-gs") return std::make_unique<ParticleGeoUpdate>(capacity);
-  throw Error(concat("unknown particle backend '", name, "'; expected tf-gs"));
+  if (name == "compute") return std::make_unique<ParticleComputeUpdate>(capacity);
+  throw Error(concat("unknown particle backend '", name, "'; expected tf-gs or compute"));
 }
-
-}  // namespace
 
 ParticleSystem::ParticleSystem(const ParticleState& initial, const Options& options)
     : state_(initial),
       capacityLimit_(std::max(options.capacity, options.capacityLimit)),
-      update_(makeBackend(options.backend, options.capacity)) {}
+      update_(makeParticleBackend(options.backend, options.capacity)) {}
 
 void ParticleSystem::setTerrain(std::shared_ptr<const HeightMap> terrain) { update_->setTerrain(std::move(terrain)); }
 

@@ -20,6 +20,9 @@ namespace sandstorm {
 
 class ViewTargets;
 
+// The backend of that name ("tf-gs" or "compute"); throws Error for others.
+std::unique_ptr<ParticleBackend> makeParticleBackend(const std::string& name, std::size_t capacity);
+
 class ParticleSystem {
  public:
   struct Options {

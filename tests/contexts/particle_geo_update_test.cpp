@@ -1,6 +1,7 @@
-// The GPU particle update (transform feedback + geometry shaders) against the
-// CPU reference simulator: the same frame packets, ~10^4 particles, 120 frames
-// with emission, death and a field that carries particles out of its bounds.
+// The GPU particle updates (transform feedback + geometry shaders, and compute
+// shaders) against the CPU reference simulator: the same frame packets, ~10^4
+// particles, 120 frames with emission, death and a field that carries
+// particles out of its bounds. Every test runs for each backend.
 #include "contexts/particles/particle_geo_update.h"
 #include "contexts/particles/particle_system.h"
 
@@ -17,7 +18,7 @@
 namespace sandstorm {
 namespace {
 
-class ParticleGeoUpdateTest : public GlTest {};
+class ParticleBackendTest : public GlTest, public ::testing::WithParamInterface<const char*> {};
 
 struct Scenario {
   ParticleState state;
@@ -65,13 +66,15 @@ struct Agreement {
   std::size_t peak = 0;
 };
 
-Agreement compare(Scenario s, int frames, std::size_t capacity) {
+Agreement compare(const std::string& backend, Scenario s, int frames, std::size_t capacity) {
   MainContext::Options options;
   options.fixedDt = 1.0f / 60.0f;
   options.seed = 0xC0FFEEull;
   MainContext main(s.state, FieldUpdate{.field = s.field, .placement = s.placement}, options);
   if (s.timeline) main.setFieldTimeline(*s.timeline, s.placement);
-  ParticleGeoUpdate gpu(capacity);
+  std::unique_ptr<ParticleBackend> backendPtr = makeParticleBackend(backend, capacity);
+  ParticleBackend& gpu = *backendPtr;
+  EXPECT_STREQ(gpu.name(), backend.c_str());
   ReferenceSimulator cpu(capacity);
   gpu.setTerrain(s.terrain);
   cpu.setTerrain(s.terrain);
@@ -101,14 +104,14 @@ Agreement compare(Scenario s, int frames, std::size_t capacity) {
   return a;
 }
 
-TEST_F(ParticleGeoUpdateTest, MatchesTheCpuReferenceWithEmissionAndDeath) {
+TEST_P(ParticleBackendTest, MatchesTheCpuReferenceWithEmissionAndDeath) {
   for (auto [motion, integrator, boundary] :
        {std::tuple{MotionModel::Tracer, Integrator::RK2, BoundaryMode::Kill},
         std::tuple{MotionModel::Drag, Integrator::RK4, BoundaryMode::Clamp},
         std::tuple{MotionModel::Force, Integrator::Euler, BoundaryMode::Wrap}}) {
     SCOPED_TRACE(::testing::Message() << "motion " << int(motion) << " integrator " << int(integrator)
                                       << " boundary " << int(boundary));
-    const Agreement a = compare(tornado(motion, integrator, boundary), 120, 16384);
+    const Agreement a = compare(GetParam(), tornado(motion, integrator, boundary), 120, 16384);
     EXPECT_EQ(a.frames, 120u);
     // Positions agree to rounding: the shaders mirror the C++ operation by operation.
     EXPECT_LT(a.maxError, 1e-4f);
@@ -118,7 +121,7 @@ TEST_F(ParticleGeoUpdateTest, MatchesTheCpuReferenceWithEmissionAndDeath) {
   }
 }
 
-TEST_F(ParticleGeoUpdateTest, TimeVaryingFieldsBlendTheSameOnBothSides) {
+TEST_P(ParticleBackendTest, TimeVaryingFieldsBlendTheSameOnBothSides) {
   // Three frames of a vortex that turns one way, then the other: the walls
   // blend frames themselves, and must match the CPU doing the same.
   Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, BoundaryMode::Clamp);
@@ -132,30 +135,30 @@ TEST_F(ParticleGeoUpdateTest, TimeVaryingFieldsBlendTheSameOnBothSides) {
   s.timeline = FieldTimeline({0.0, 0.5, 1.2}, frames);
   s.state.field.loop = true;
   s.state.field.speed = 1.5f;
-  const Agreement a = compare(s, 90, 16384);
+  const Agreement a = compare(GetParam(), s, 90, 16384);
   EXPECT_EQ(a.frames, 90u);
   EXPECT_LT(a.maxError, 1e-4f);
   std::printf("time-varying: max |gpu - cpu| = %g over %zu frames\n", a.maxError, a.frames);
 }
 
-TEST_F(ParticleGeoUpdateTest, MaximumCapsTheLiveCountAndCapacityTheBuffer) {
+TEST_P(ParticleBackendTest, MaximumCapsTheLiveCountAndCapacityTheBuffer) {
   Scenario s = tornado(MotionModel::Tracer, Integrator::Euler, BoundaryMode::Clamp);
   s.state.emitters[0].lifetime = 100.0f;
   s.state.sim.maximum = 3000;
-  const Agreement a = compare(s, 40, 4096);
+  const Agreement a = compare(GetParam(), s, 40, 4096);
   EXPECT_EQ(a.frames, 40u);
   EXPECT_LE(a.peak, 3000u);
   EXPECT_GE(a.peak, 2900u);
 }
 
-TEST_F(ParticleGeoUpdateTest, RaisingMaximumGrowsTheBuffersWithoutLosingParticles) {
+TEST_P(ParticleBackendTest, RaisingMaximumGrowsTheBuffersWithoutLosingParticles) {
   Scenario s = tornado(MotionModel::Drag, Integrator::RK2, BoundaryMode::Kill);
   s.state.sim.maximum = 4000;
   s.state.emitters[0].lifetime = 30.0f;
   MainContext::Options options;
   options.fixedDt = 1.0f / 60.0f;
   MainContext main(s.state, FieldUpdate{.field = s.field, .placement = s.placement}, options);
-  ParticleSystem gpu(main.initialState(), ParticleSystem::Options{.capacity = 4096, .capacityLimit = 1 << 16});
+  ParticleSystem gpu(main.initialState(), ParticleSystem::Options{.capacity = 4096, .capacityLimit = 1 << 16, .backend = GetParam()});
   gpu.setTerrain(s.terrain);
   ReferenceSimulator cpu(4096, 1 << 16);
   cpu.setField(s.field, s.placement);
@@ -186,6 +189,12 @@ TEST_F(ParticleGeoUpdateTest, RaisingMaximumGrowsTheBuffersWithoutLosingParticle
   EXPECT_GE(gpu.update().capacity(), 20000u);
   EXPECT_GT(gpu.update().liveCount(), 8000u);
 }
+
+INSTANTIATE_TEST_SUITE_P(Backends, ParticleBackendTest, ::testing::Values("tf-gs", "compute"),
+                         [](const ::testing::TestParamInfo<const char*>& info) {
+                           return std::string(info.param) == "tf-gs" ? std::string("TransformFeedback")
+                                                                     : std::string("Compute");
+                         });
 
 }  // namespace
 }  // namespace sandstorm

@@ -1,0 +1,252 @@
+#include "contexts/particles/particle_compute_update.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <numeric>
+#include <string>
+
+#include "contexts/particles/sim_block.h"
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+constexpr GLsizeiptr kRecord = sizeof(glm::vec4);
+
+// Byte offsets in the control block (shaders/particle_control.glsl).
+constexpr GLintptr kCountOffset = 0;
+constexpr GLintptr kDispatchOffset = 16;
+constexpr GLintptr kDrawOffset = 32;
+constexpr GLsizeiptr kControlSize = 64;
+
+// Binding points of the shaders' storage blocks.
+enum Binding : GLuint { kInPosition = 0, kInVelocity, kOutPosition, kOutVelocity, kControl, kTileStatus };
+
+// How often a tile reads a predecessor's status before counting that tile's
+// survivors itself. GPUs run the workgroups of a dispatch side by side, so a
+// predecessor publishes soon; a CPU rasterizer may not (and llvmpipe caps a
+// shader's loop iterations), so there the tile counts for itself at once.
+// SANDSTORM_SCAN_SPIN overrides (tests of both paths).
+std::uint32_t spinLimit() {
+  if (const char* env = std::getenv("SANDSTORM_SCAN_SPIN")) return std::uint32_t(std::stoul(env));
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  const bool software = renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe"));
+  return software ? 64u : 1u << 20;
+}
+
+}  // namespace
+
+ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity)
+    : capacity_(capacity),
+      control_(gl::createBuffer()),
+      simBlock_(gl::createBuffer()),
+      history_(gl::createBuffer()),
+      prepareProgram_(std::vector<std::string>{"particle_prepare.comp"}),
+      emitProgram_(std::vector<std::string>{"particle_emit.comp"}),
+      updateProgram_(std::vector<std::string>{"particle_update.comp"}),
+      spinLimit_(spinLimit()) {
+  if (capacity == 0 || capacity > (std::size_t{1} << 31) / kRecord)
+    throw Error(concat("ParticleComputeUpdate: capacity ", capacity, " is outside 1..",
+                       (1u << 31) / kRecord));
+  for (BufferSet& set : sets_) allocate(set, capacity);
+  allocateTiles(capacity);
+  const std::uint32_t zeros[kControlSize / 4] = {};
+  glNamedBufferStorage(control_.id(), kControlSize, zeros, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(simBlock_.id(), sizeof(SimBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  const GLbitfield mapFlags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+  glNamedBufferStorage(history_.id(), kHistory * sizeof(std::uint32_t), nullptr, mapFlags);
+  historyMap_ = static_cast<const std::uint32_t*>(
+      glMapNamedBufferRange(history_.id(), 0, kHistory * sizeof(std::uint32_t), mapFlags));
+  if (!historyMap_) throw Error("ParticleComputeUpdate: cannot map the count history buffer");
+}
+
+void ParticleComputeUpdate::allocate(BufferSet& set, std::size_t capacity) {
+  set.positionLife = gl::createBuffer();
+  set.velocityKind = gl::createBuffer();
+  glGetError();  // start clean, to tell an allocation failure apart
+  glNamedBufferStorage(set.positionLife.id(), GLsizeiptr(capacity) * kRecord, nullptr, 0);
+  glNamedBufferStorage(set.velocityKind.id(), GLsizeiptr(capacity) * kRecord, nullptr, 0);
+  if (glGetError() == GL_OUT_OF_MEMORY)
+    throw Error(concat("ParticleComputeUpdate: the GPU has no memory for ", capacity, " particles (",
+                       2 * capacity * kRecord >> 20,
+                       " MiB per buffer set); lower sim.maximum or run.capacity_limit"));
+  set.vao = gl::createVertexArray();
+  for (GLuint a = 0; a < 2; ++a) {
+    glEnableVertexArrayAttrib(set.vao.id(), a);
+    glVertexArrayAttribFormat(set.vao.id(), a, 4, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(set.vao.id(), a, a);
+  }
+  glVertexArrayVertexBuffer(set.vao.id(), 0, set.positionLife.id(), 0, kRecord);
+  glVertexArrayVertexBuffer(set.vao.id(), 1, set.velocityKind.id(), 0, kRecord);
+}
+
+void ParticleComputeUpdate::allocateTiles(std::size_t capacity) {
+  tileStatus_ = gl::createBuffer();
+  const std::size_t tiles = (capacity + kTile - 1) / kTile + 1;
+  glNamedBufferStorage(tileStatus_.id(), GLsizeiptr(tiles * sizeof(std::uint32_t)), nullptr, 0);
+}
+
+void ParticleComputeUpdate::setCount(int set, std::uint32_t count) {
+  const std::uint32_t draw[4] = {count, 1, 0, 0};
+  glNamedBufferSubData(control_.id(), kCountOffset + set * 4, 4, &count);
+  glNamedBufferSubData(control_.id(), kDrawOffset + set * 16, 16, draw);
+}
+
+void ParticleComputeUpdate::grow(std::size_t capacity) {
+  if (capacity <= capacity_) return;
+  const std::size_t count = liveCount();
+  std::array<BufferSet, 2> grown;
+  for (BufferSet& set : grown) allocate(set, capacity);
+  // The live particles keep their place and order; the counts stay as they are.
+  const BufferSet& from = sets_[std::size_t(current_)];
+  BufferSet& to = grown[std::size_t(current_)];
+  if (count > 0) {
+    glCopyNamedBufferSubData(from.positionLife.id(), to.positionLife.id(), 0, 0,
+                             GLsizeiptr(count) * kRecord);
+    glCopyNamedBufferSubData(from.velocityKind.id(), to.velocityKind.id(), 0, 0,
+                             GLsizeiptr(count) * kRecord);
+  }
+  sets_ = std::move(grown);
+  allocateTiles(capacity);
+  capacity_ = capacity;
+}
+
+void ParticleComputeUpdate::setField(std::shared_ptr<const VectorField> field,
+                                     const FieldPlacement& placement,
+                                     std::shared_ptr<const VectorField> next) {
+  if (field && next &&
+      (field->dims() != next->dims() || field->bounds().min != next->bounds().min ||
+       field->bounds().max != next->bounds().max))
+    throw Error("ParticleComputeUpdate: a time-varying field's frames must share one grid");
+  if (field && field == nextFieldTexture_.holds()) std::swap(fieldTexture_, nextFieldTexture_);
+  fieldTexture_.show(field);
+  nextFieldTexture_.show(next);
+  field_ = std::move(field);
+  nextField_ = std::move(next);
+  placement_ = placement;
+}
+
+void ParticleComputeUpdate::setTerrain(std::shared_ptr<const HeightMap> terrain) {
+  terrain_ = std::move(terrain);
+  if (terrain_) terrainTexture_.upload(*terrain_);
+}
+
+void ParticleComputeUpdate::clear() {
+  setCount(0, 0);
+  setCount(1, 0);
+  budget_.reset();
+  updates_ = 0;
+}
+
+std::size_t ParticleComputeUpdate::countAfter(std::uint64_t update) const {
+  const gl::Sync& fence = historyFence_[std::size_t(update % kHistory)];
+  if (fence) {
+    const GLsync sync = reinterpret_cast<GLsync>(fence.handle());
+    while (glClientWaitSync(sync, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000) == GL_TIMEOUT_EXPIRED) {
+    }
+  }
+  return historyMap_[update % kHistory];
+}
+
+void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state) {
+  if (step.dt <= 0.0f) return;  // paused: nothing moves, dies or is born
+
+  // Count(u - 2) was produced a whole update ago, so this rarely waits.
+  const std::size_t count2 = updates_ >= 2 ? countAfter(updates_ - 2) : 0;
+  const std::size_t limit = std::min(std::size_t(std::max(state.sim.maximum, 0)), capacity_);
+  SimBlockInputs inputs;
+  inputs.field = field_.get();
+  inputs.nextField = nextField_.get();
+  inputs.placement = placement_;
+  inputs.terrain = terrain_.get();
+  inputs.state = &state;
+  inputs.step = step;
+  inputs.granted = budget_.allocate(step.emission, limit, count2);
+  inputs.granted.resize(state.emitters.size(), 0);
+  const std::uint32_t born =
+      std::accumulate(inputs.granted.begin(), inputs.granted.end(), 0u);
+  SimBlock block;
+  fillSimBlock(inputs, block);
+  glNamedBufferSubData(simBlock_.id(), 0, sizeof(block), &block);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, simBlock_.id());
+  if (field_) fieldTexture_.bind(0);
+  if (nextField_) nextFieldTexture_.bind(2);
+  if (terrain_) terrainTexture_.bind(1);
+
+  const BufferSet& in = sets_[std::size_t(current_)];
+  const BufferSet& out = sets_[std::size_t(1 - current_)];
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInPosition, in.positionLife.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInVelocity, in.velocityKind.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOutPosition, out.positionLife.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOutVelocity, out.velocityKind.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kControl, control_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileStatus, tileStatus_.id());
+  const GLuint zero = 0;
+  glClearNamedBufferData(tileStatus_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+
+  prepareProgram_.use();
+  glProgramUniform1i(prepareProgram_.id(), 0, current_);
+  glProgramUniform1ui(prepareProgram_.id(), 1, born);
+  glDispatchCompute(1, 1, 1);
+
+  if (born > 0) {
+    emitProgram_.use();
+    glProgramUniform1ui(emitProgram_.id(), 1, born);
+    glDispatchCompute((born + 255) / 256, 1, 1);
+  }
+
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  updateProgram_.use();
+  glProgramUniform1i(updateProgram_.id(), 0, current_);
+  glProgramUniform1ui(updateProgram_.id(), 1, born);
+  glProgramUniform1ui(updateProgram_.id(), 2, std::uint32_t(capacity_));
+  glProgramUniform1ui(updateProgram_.id(), 3, spinLimit_);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, control_.id());
+  glDispatchComputeIndirect(kDispatchOffset);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+
+  // Drawing, the next update and the count's copy all read what this wrote.
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
+                  GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  const std::size_t slot = std::size_t(updates_ % kHistory);
+  glCopyNamedBufferSubData(control_.id(), history_.id(), kCountOffset + (1 - current_) * 4,
+                           GLintptr(slot * sizeof(std::uint32_t)), sizeof(std::uint32_t));
+  historyFence_[slot] = gl::createFence();
+
+  budget_.recordEmitted(born);
+  current_ = 1 - current_;
+  ++updates_;
+}
+
+void ParticleComputeUpdate::draw() const {
+  glBindVertexArray(sets_[std::size_t(current_)].vao.id());
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, control_.id());
+  glDrawArraysIndirect(GL_POINTS, reinterpret_cast<const void*>(kDrawOffset + current_ * 16));
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+  glBindVertexArray(0);
+}
+
+std::size_t ParticleComputeUpdate::liveCount() const {
+  if (updates_ == 0) return 0;
+  std::uint32_t count = 0;
+  glGetNamedBufferSubData(control_.id(), kCountOffset + current_ * 4, 4, &count);
+  return count;
+}
+
+std::vector<Particle> ParticleComputeUpdate::readBack() const {
+  const std::size_t count = liveCount();
+  const BufferSet& set = sets_[std::size_t(current_)];
+  std::vector<glm::vec4> pos(count), vel(count);
+  if (count > 0) {
+    glGetNamedBufferSubData(set.positionLife.id(), 0, GLsizeiptr(count) * kRecord, pos.data());
+    glGetNamedBufferSubData(set.velocityKind.id(), 0, GLsizeiptr(count) * kRecord, vel.data());
+  }
+  std::vector<Particle> particles(count);
+  for (std::size_t i = 0; i < count; ++i) particles[i] = Particle{pos[i], vel[i]};
+  return particles;
+}
+
+}  // namespace sandstorm

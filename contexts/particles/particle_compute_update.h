@@ -1,0 +1,97 @@
+// ParticleComputeUpdate: the particle update of ParticleGeoUpdate with compute
+// shaders, record for record the same (ReferenceSimulator is the
+// specification).
+//
+// Two sets of shader-storage buffers (position + remaining life, velocity +
+// kind) take turns, as in the transform-feedback path. One update:
+//   1. prepare (one invocation, shaders/particle_prepare.comp): reads the input
+//      set's live count, which only the GPU knows, and writes the update's
+//      indirect dispatch size, the output's provisional count (the newborn)
+//      and its indirect draw command;
+//   2. emit (shaders/particle_emit.comp): thread g writes newborn g at record g;
+//   3. update (shaders/particle_update.comp, indirect): tiles of kTile input
+//      records advance their particles; survivors are compacted IN ORDER after
+//      the newborn by a prefix sum over the tiles (a single-pass scan with
+//      decoupled look-back: tiles take their index from an atomic ticket, so a
+//      tile only ever waits for tiles that are already running; one that
+//      waits too long counts the slow tile's survivors itself, so no schedule
+//      changes the result). The last tile writes the output's live count and
+//      draw command.
+// Nothing is read back in the frame loop: draw() uses glDrawArraysIndirect, and
+// the EmissionBudget gets count(u-2) from a persistently mapped ring that each
+// update copies its count into, behind a fence.
+//
+// All calls need this object's GL context current.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "contexts/gl/objects.h"
+#include "contexts/gl/program.h"
+#include "contexts/particles/field_texture.h"
+#include "contexts/particles/particle_backend.h"
+#include "core/sim/emission_budget.h"
+
+namespace sandstorm {
+
+class ParticleComputeUpdate final : public ParticleBackend {
+ public:
+  // Input records per tile of the update pass (256 invocations x 4).
+  static constexpr std::uint32_t kTile = 1024;
+
+  explicit ParticleComputeUpdate(std::size_t capacity);
+
+  void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
+                std::shared_ptr<const VectorField> next = nullptr) override;
+  void setTerrain(std::shared_ptr<const HeightMap> terrain) override;
+  void step(const SimStep& step, const ParticleState& state) override;
+  void clear() override;
+  void grow(std::size_t capacity) override;
+  void draw() const override;
+
+  std::size_t capacity() const override { return capacity_; }
+  std::size_t liveCount() const override;
+  std::vector<Particle> readBack() const override;
+  double lastFieldUploadMs() const override {
+    return fieldTexture_.lastUploadMs() + nextFieldTexture_.lastUploadMs();
+  }
+  const char* name() const override { return "compute"; }
+
+ private:
+  struct BufferSet {
+    gl::Buffer positionLife, velocityKind;
+    gl::VertexArray vao;
+  };
+  static constexpr int kHistory = 3;
+
+  void allocate(BufferSet& set, std::size_t capacity);
+  void allocateTiles(std::size_t capacity);
+  std::size_t countAfter(std::uint64_t update) const;
+  void setCount(int set, std::uint32_t count);
+
+  std::size_t capacity_;
+  std::array<BufferSet, 2> sets_;
+  int current_ = 0;
+  gl::Buffer control_;     // counts, ticket, dispatch and draw commands (particle_prepare.comp)
+  gl::Buffer tileStatus_;  // the scan's per-tile status words
+  gl::Buffer simBlock_;
+  gl::Buffer history_;  // kHistory counts, persistently mapped for reading
+  const std::uint32_t* historyMap_ = nullptr;
+  std::array<gl::Sync, kHistory> historyFence_;
+  gl::Program prepareProgram_, emitProgram_, updateProgram_;
+  std::uint32_t spinLimit_;
+
+  std::shared_ptr<const VectorField> field_, nextField_;
+  FieldPlacement placement_;
+  std::shared_ptr<const HeightMap> terrain_;
+  FieldTexture fieldTexture_, nextFieldTexture_;
+  TerrainTexture terrainTexture_;
+
+  EmissionBudget budget_;
+  std::uint64_t updates_ = 0;
+};
+
+}  // namespace sandstorm

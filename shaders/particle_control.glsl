@@ -1,0 +1,12 @@
+// ParticleComputeUpdate's control block: the twin of the offsets in
+// contexts/particles/particle_compute_update.cpp.
+layout(std430, binding = 4) coherent restrict buffer Control {
+  uint count[2];  // live records of each buffer set
+  uint ticket;    // the update pass's next tile
+  uint tiles;     // tiles of this update
+  uvec4 dispatch; // glDispatchComputeIndirect: x, y, z, (unused)
+  uvec4 draw[2];  // glDrawArraysIndirect per set: count, instances, first, base instance
+} ctl;
+
+const uint kTile = 1024u;           // input records per tile: 256 invocations x 4
+const uint kGroupsPerRow = 32768u;  // the update's dispatch is 2D beyond this many tiles

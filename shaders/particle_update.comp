@@ -1,0 +1,136 @@
+#version 450 core
+// ParticleComputeUpdate, step 3: every input record ages and moves (advance(),
+// the same function as the transform-feedback path's particle_update.geom);
+// the survivors are written after the newborn in their input order.
+//
+// Order-preserving compaction by a single-pass prefix sum with decoupled
+// look-back (Merrill & Garland 2016): a workgroup takes its tile index from an
+// atomic ticket, so tile t starts only after tiles 0..t-1 have started and
+// waiting on them cannot deadlock; it scans its own survivors in shared
+// memory, publishes its count, adds up its predecessors' published counts
+// (stopping at the first that published an inclusive prefix), then publishes
+// its own inclusive prefix and writes its survivors. A tile that waits too long
+// for a predecessor counts that tile's survivors itself instead, so the result
+// never depends on how workgroups are scheduled.
+#include "sim_block.glsl"
+#include "particle_physics.glsl"
+#include "particle_control.glsl"
+
+layout(local_size_x = 256) in;
+layout(std430, binding = 0) readonly restrict buffer InPositionLife { vec4 inPositionLife[]; };
+layout(std430, binding = 1) readonly restrict buffer InVelocityKind { vec4 inVelocityKind[]; };
+layout(std430, binding = 2) writeonly restrict buffer OutPositionLife { vec4 outPositionLife[]; };
+layout(std430, binding = 3) writeonly restrict buffer OutVelocityKind { vec4 outVelocityKind[]; };
+layout(std430, binding = 5) coherent volatile restrict buffer TileStatus { uint status[]; };
+
+layout(location = 0) uniform int uIn;
+layout(location = 1) uniform uint uBorn;
+layout(location = 2) uniform uint uCapacity;
+layout(location = 3) uniform uint uSpinLimit;  // reads of a predecessor's status before counting it here
+
+const uint kAggregate = 0x40000000u;  // status: this tile's own count is published
+const uint kPrefix = 0x80000000u;     // status: the count of tiles 0..t is published
+const uint kValue = 0x3fffffffu;
+const int kItems = 4;                 // records per invocation: kTile / 256
+
+shared uint sTicket;
+shared uint sStatus;
+shared uint sCount;
+shared uvec2 sScan[256];
+
+void main() {
+  uint lid = gl_LocalInvocationIndex;
+  if (lid == 0u) sTicket = atomicAdd(ctl.ticket, 1u);
+  barrier();
+  uint tile = sTicket;
+  uint tiles = ctl.tiles;
+  if (tile >= tiles) return;  // the whole workgroup: a spare of the 2D dispatch
+  uint inCount = ctl.count[uIn];
+
+  // Record k * 256 + lid of the tile: neighbouring invocations read neighbouring records.
+  Particle p[kItems];
+  bool alive[kItems];
+  for (int k = 0; k < kItems; ++k) {
+    uint i = tile * kTile + uint(k) * 256u + lid;
+    alive[k] = false;
+    if (i < inCount) {
+      p[k].positionLife = inPositionLife[i];
+      p[k].velocityKind = inVelocityKind[i];
+      alive[k] = advance(p[k]);
+    }
+  }
+
+  // Inclusive scan over the invocations of the four rows' survivor flags, two
+  // 16-bit counters per word (a row has at most 256 survivors).
+  uvec2 mine = uvec2((alive[0] ? 1u : 0u) | (alive[1] ? 0x10000u : 0u),
+                     (alive[2] ? 1u : 0u) | (alive[3] ? 0x10000u : 0u));
+  sScan[lid] = mine;
+  barrier();
+  for (uint offset = 1u; offset < 256u; offset <<= 1u) {
+    uvec2 add = lid >= offset ? sScan[lid - offset] : uvec2(0u);
+    barrier();
+    sScan[lid] += add;
+    barrier();
+  }
+  uvec2 before = sScan[lid] - mine;
+  uvec2 total = sScan[255];
+  uint row0 = total.x & 0xffffu, row1 = total.x >> 16u, row2 = total.y & 0xffffu, row3 = total.y >> 16u;
+  uint aggregate = row0 + row1 + row2 + row3;
+
+  if (lid == 0u) atomicExchange(status[tile], (tile == 0u ? kPrefix : kAggregate) | aggregate);
+
+  // Look back, the whole workgroup in step (the loop is uniform: it follows shared values).
+  uint prefix = 0u;
+  for (int j = int(tile) - 1; j >= 0; --j) {
+    if (lid == 0u) {
+      uint s = 0u;
+      for (uint spin = 0u; spin < uSpinLimit && (s & (kAggregate | kPrefix)) == 0u; ++spin)
+        s = atomicOr(status[j], 0u);  // a coherent read; 0 while tile j has not published
+      sStatus = s;
+    }
+    barrier();
+    uint s = sStatus;
+    barrier();  // everyone has read sStatus before it changes
+    if ((s & (kAggregate | kPrefix)) != 0u) {
+      prefix += s & kValue;
+      if ((s & kPrefix) != 0u) break;
+    } else {
+      // Tile j is slow to publish: count its survivors here (the same advance(),
+      // so the same count). Needed where workgroups need not progress together
+      // (llvmpipe, which also ends any shader's loops after 65535 iterations).
+      if (lid == 0u) sCount = 0u;
+      barrier();
+      for (int k = 0; k < kItems; ++k) {
+        uint i = uint(j) * kTile + uint(k) * 256u + lid;
+        if (i < inCount) {
+          Particle q;
+          q.positionLife = inPositionLife[i];
+          q.velocityKind = inVelocityKind[i];
+          if (advance(q)) atomicAdd(sCount, 1u);
+        }
+      }
+      barrier();
+      prefix += sCount;
+      barrier();
+    }
+  }
+  if (lid == 0u) {
+    if (tile > 0u) atomicExchange(status[tile], kPrefix | (prefix + aggregate));
+    if (tile == tiles - 1u) {
+      uint live = min(uBorn + prefix + aggregate, uCapacity);
+      ctl.count[1 - uIn] = live;
+      ctl.draw[1 - uIn] = uvec4(live, 1u, 0u, 0u);
+    }
+  }
+
+  uint base = uBorn + prefix;
+  uint rowStart[kItems] = uint[](0u, row0, row0 + row1, row0 + row1 + row2);
+  uint rank[kItems] = uint[](before.x & 0xffffu, before.x >> 16u, before.y & 0xffffu, before.y >> 16u);
+  for (int k = 0; k < kItems; ++k) {
+    uint o = base + rowStart[k] + rank[k];
+    if (alive[k] && o < uCapacity) {
+      outPositionLife[o] = p[k].positionLife;
+      outVelocityKind[o] = p[k].velocityKind;
+    }
+  }
+}
