@@ -17,7 +17,8 @@ std::unique_ptr<ParticleBackend> makeParticleBackend(const std::string& name, st
 ParticleSystem::ParticleSystem(const ParticleState& initial, const Options& options)
     : state_(initial),
       capacityLimit_(std::max(options.capacity, options.capacityLimit)),
-      update_(makeParticleBackend(options.backend, options.capacity)) {}
+      update_(makeParticleBackend(options.backend, options.capacity)),
+      stageTimers_(options.stageTimers) {}
 
 void ParticleSystem::setTerrain(std::shared_ptr<const HeightMap> terrain) { update_->setTerrain(std::move(terrain)); }
 
@@ -36,19 +37,27 @@ void ParticleSystem::advance(const FramePacket& packet) {
     update_->setField(field_->field, field_->placement, field_->next);
     log::debug("frame ", packet.frame, ": field uploaded in ", update_->lastFieldUploadMs(), " ms");
   }
-  updateTimer_.begin();
+  if (stageTimers_) updateTimer_.begin();
   update_->step(packet.step(), state_);
-  updateTimer_.end();
+  if (stageTimers_) updateTimer_.end();
   frame_ = packet.frame;
 }
 
 void ParticleSystem::render(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const {
-  renderTimer_.begin();
+  if (stageTimers_) renderTimer_.begin();
+  renderParticles(targets);
+  if (stageTimers_) renderTimer_.end();
+  if (stageTimers_) postTimer_.begin();
+  composite(targets, destination, origin);
+  if (stageTimers_) postTimer_.end();
+}
+
+void ParticleSystem::renderParticles(const ViewTargets& targets) const {
   render_.draw(*update_, targets, state_.render.mode);
-  renderTimer_.end();
-  postTimer_.begin();
+}
+
+void ParticleSystem::composite(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const {
   post_.draw(targets, destination, origin);
-  postTimer_.end();
 }
 
 ParticleSystem::Timings ParticleSystem::timings() {

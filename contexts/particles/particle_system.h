@@ -29,6 +29,7 @@ class ParticleSystem {
     std::size_t capacity = 1u << 20;
     std::size_t capacityLimit = 1u << 26;  // how far raising sim.maximum may grow the buffers
     std::string backend = "tf-gs";         // "tf-gs" or "compute"
+    bool stageTimers = true;               // timings(); off where the caller times the stages itself
   };
 
   ParticleSystem(const ParticleState& initial, const Options& options);
@@ -40,6 +41,10 @@ class ParticleSystem {
   // the result into `destination` at `origin`. The view and render blocks
   // must be bound.
   void render(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const;
+  // render()'s two halves, for callers that time them apart (sandstorm-bench):
+  // the particles into the view's particle buffers, then the lit composite.
+  void renderParticles(const ViewTargets& targets) const;
+  void composite(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const;
 
   const ParticleState& state() const { return state_; }
   const ParticleBackend& update() const { return *update_; }
@@ -60,6 +65,7 @@ class ParticleSystem {
   ParticlePost post_;
   std::shared_ptr<const FieldUpdate> field_;
   std::uint32_t frame_ = 0;
+  bool stageTimers_;
   gl::GpuTimer updateTimer_;
   mutable gl::GpuTimer renderTimer_, postTimer_;
 };

@@ -20,7 +20,7 @@ RenderBlock makeRenderBlock(const RenderSettings& s) {
   const float len = glm::length(s.lightDirection);
   const glm::vec3 light = len > 0.0f ? s.lightDirection / len : glm::vec3(0, 0, 1);
   b.lightDirection = glm::vec4(light, s.ambient);
-  b.params = glm::vec4(s.size, s.softness, s.mode == RenderMode::Billboards ? 1.0f : 0.0f, 0.0f);
+  b.params = glm::vec4(s.size, s.softness, s.mode != RenderMode::Points ? 1.0f : 0.0f, 0.0f);
   return b;
 }
 

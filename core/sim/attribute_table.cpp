@@ -91,8 +91,10 @@ std::vector<AttributeInfo> makeEntries() {
                     SIM(emitting)));
   v.push_back(entry("sim.paused", T::Bool, 0, 1, "", "Pause: time stands still", SIM(paused)));
   // How particles look.
-  v.push_back(enumEntry("render.mode", {"points", "billboards"},
-                        "Draw particles as points or lit spherical billboards", RENDER(mode)));
+  v.push_back(enumEntry("render.mode", {"points", "billboards", "splat", "auto"},
+                        "Draw particles as points, lit spherical billboards, splats (billboards' look, "
+                        "by compute: for small particles) or auto (splats where particles are small)",
+                        RENDER(mode)));
   v.push_back(entry("render.size", T::Float, 1e-4f, 10, "m", "Particle diameter", RENDER(size)));
   v.push_back(entry("render.color_birth", T::Vec3, 0, 1, "rgb", "Colour at birth", RENDER(colorBirth)));
   v.push_back(entry("render.color_death", T::Vec3, 0, 1, "rgb", "Colour at the end of life",
@@ -107,6 +109,9 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("render.softness", T::Float, 0, 10, "m",
                     "Particles fade out within this distance in front of scene geometry",
                     RENDER(softness)));
+  v.push_back(entry("render.splat_pixels", T::Float, 0, 64, "px",
+                    "Auto mode: views where particles cover at most this many pixels use splats",
+                    RENDER(splatPixels)));
   // A time-varying field's playback.
   v.push_back(entry("field.speed", T::Float, 0, 100, "x", "Field seconds per simulated second (time-varying fields)",
                     FIELD(speed)));

@@ -41,7 +41,10 @@ struct FieldPlayback {
   bool paused = false;  // hold the current frame while particles move on
 };
 
-enum class RenderMode : int { Points = 0, Billboards = 1 };
+// Splat: billboards' look, drawn by a compute pass for small particles.
+// Auto: per view, splats when a particle at the field's centre covers at most
+// RenderSettings::splatPixels pixels, billboards otherwise.
+enum class RenderMode : int { Points = 0, Billboards = 1, Splat = 2, Auto = 3 };
 
 struct RenderSettings {
   RenderMode mode = RenderMode::Billboards;
@@ -53,6 +56,7 @@ struct RenderSettings {
   glm::vec3 lightDirection{0.4f, -0.3f, 0.85f};  // towards the light, room space
   float ambient = 0.35f;
   float softness = 0.3f;  // m: particles fade out this close to scene geometry
+  float splatPixels = 4.0f;  // Auto mode: splat particles up to this projected diameter
 };
 
 }  // namespace sandstorm

@@ -1,0 +1,145 @@
+#include "app/bench/bench_options.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+
+#include "core/util/error.h"
+
+namespace sandstorm::bench {
+namespace {
+
+const char* kUsage = R"(sandstorm-bench: GPU particle benchmark (headless EGL)
+
+  sandstorm-bench [--quick] [--json FILE] [--frames N] [--warmup N] [--size WxH]
+                  [--sections ceilings,update,render,walls]
+                  [--particles 1e4,1e5,...] [--backends tf-gs,compute]
+                  [--fields texture,equation] [--renderers billboards,points,splat]
+                  [--billboard-limit N] [--walls 1,2,4,8] [--wall-particles N]
+                  [--wall-sims per-wall,shared] [--wall-renderers billboards,splat]
+                  [--wall-backend compute] [--particle-size M] [--memory-gib G]
+
+A fixed scene (a tornado, particles in steady state at each count) timed over
+fixed frames. Sections:
+  ceilings  buffer-copy bandwidth, a bare transform-feedback pass, a bare point draw
+  update    the particle update per backend and field type
+  render    scene, particles and composite of one view per renderer
+  walls     whole frames of 1..8 views, each wall simulating or one shared simulation
+Prints a table (each stage as a ratio to its ceiling) and writes JSON.
+--quick: tiny sizes and few frames (seconds on llvmpipe; structure, not speed).
+)";
+
+std::vector<std::string> split(const std::string& text) {
+  std::vector<std::string> out;
+  std::stringstream in(text);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+double number(const std::string& text, const std::string& option) {
+  char* end = nullptr;
+  const double v = std::strtod(text.c_str(), &end);
+  if (end == text.c_str() || *end != '\0') throw Error(concat(option, ": '", text, "' is not a number"));
+  return v;
+}
+
+std::size_t count(const std::string& text, const std::string& option) {
+  const double v = number(text, option);
+  if (!(v >= 1.0)) throw Error(concat(option, ": ", text, " must be at least 1"));
+  return std::size_t(v + 0.5);
+}
+
+void checkChoices(const std::vector<std::string>& values, const std::vector<std::string>& known,
+                  const std::string& option) {
+  for (const std::string& v : values) {
+    bool ok = false;
+    for (const std::string& k : known) ok = ok || v == k;
+    if (!ok) {
+      std::string list;
+      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      throw Error(concat(option, ": unknown '", v, "'; expected some of ", list));
+    }
+  }
+}
+
+}  // namespace
+
+BenchOptions parseBenchOptions(int argc, char** argv) {
+  BenchOptions o;
+  std::vector<std::string> args(argv + 1, argv + argc);
+  // --quick first, so options after it may still override its sizes.
+  for (const std::string& a : args)
+    if (a == "--quick") {
+      o.quick = true;
+      o.warmup = 1;
+      o.frames = 3;
+      o.size = {160, 90};
+      o.particles = {1000, 4000};
+      o.billboardLimit = 4000;
+      o.walls = {1, 2};
+      o.wallParticles = 2000;
+      o.particleSize = 0.2f;
+    }
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a == "--quick") continue;
+    if (a == "--help" || a == "-h") {
+      std::fputs(kUsage, stdout);
+      std::exit(0);
+    }
+    if (i + 1 >= args.size()) throw Error(concat(a, ": expected a value (see --help)"));
+    const std::string v = args[++i];
+    if (a == "--json") {
+      o.json = v;
+    } else if (a == "--frames") {
+      o.frames = int(count(v, a));
+    } else if (a == "--warmup") {
+      o.warmup = int(number(v, a));
+    } else if (a == "--size") {
+      const auto x = v.find('x');
+      if (x == std::string::npos) throw Error(concat(a, ": expected WxH, got '", v, "'"));
+      o.size = {int(count(v.substr(0, x), a)), int(count(v.substr(x + 1), a))};
+    } else if (a == "--sections") {
+      o.sections = split(v);
+      checkChoices(o.sections, {"ceilings", "update", "render", "walls"}, a);
+    } else if (a == "--particles") {
+      o.particles.clear();
+      for (const std::string& p : split(v)) o.particles.push_back(count(p, a));
+    } else if (a == "--backends") {
+      o.backends = split(v);
+      checkChoices(o.backends, {"tf-gs", "compute"}, a);
+    } else if (a == "--fields") {
+      o.fields = split(v);
+      checkChoices(o.fields, {"texture", "equation"}, a);
+    } else if (a == "--renderers") {
+      o.renderers = split(v);
+      checkChoices(o.renderers, {"billboards", "points", "splat"}, a);
+    } else if (a == "--billboard-limit") {
+      o.billboardLimit = count(v, a);
+    } else if (a == "--walls") {
+      o.walls.clear();
+      for (const std::string& w : split(v)) o.walls.push_back(int(count(w, a)));
+    } else if (a == "--wall-particles") {
+      o.wallParticles = count(v, a);
+    } else if (a == "--wall-sims") {
+      o.wallSims = split(v);
+      checkChoices(o.wallSims, {"per-wall", "shared"}, a);
+    } else if (a == "--wall-renderers") {
+      o.wallRenderers = split(v);
+      checkChoices(o.wallRenderers, {"billboards", "points", "splat"}, a);
+    } else if (a == "--wall-backend") {
+      o.wallBackend = v;
+      checkChoices({v}, {"tf-gs", "compute"}, a);
+    } else if (a == "--particle-size") {
+      o.particleSize = float(number(v, a));
+    } else if (a == "--memory-gib") {
+      o.memoryGiB = number(v, a);
+    } else {
+      throw Error(concat("unknown option '", a, "' (see --help)"));
+    }
+  }
+  return o;
+}
+
+}  // namespace sandstorm::bench

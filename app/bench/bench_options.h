@@ -1,0 +1,36 @@
+// sandstorm-bench's command line: what to sweep and how long to time it.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+namespace sandstorm::bench {
+
+struct BenchOptions {
+  bool quick = false;
+  std::string json = "sandstorm-bench.json";
+  int warmup = 5;   // untimed frames after the particles are in place
+  int frames = 20;  // timed frames; each stage's median is reported
+  glm::ivec2 size{1920, 1080};
+  float particleSize = 0.045f;  // m: about 3 pixels across at the views' distance
+  std::vector<std::string> sections{"ceilings", "update", "render", "walls"};
+  std::vector<std::size_t> particles{10000, 100000, 1000000, 10000000, 30000000, 100000000};
+  std::vector<std::string> backends{"tf-gs", "compute"};
+  std::vector<std::string> fields{"texture", "equation"};
+  std::vector<std::string> renderers{"billboards", "points", "splat"};
+  std::size_t billboardLimit = 30000000;  // billboards beyond this many particles take too long
+  std::vector<int> walls{1, 2, 4, 8};
+  std::size_t wallParticles = 10000000;
+  std::vector<std::string> wallSims{"per-wall", "shared"};
+  std::vector<std::string> wallRenderers{"billboards", "splat"};
+  std::string wallBackend = "compute";
+  double memoryGiB = 0;  // 0: what the driver reports, else unlimited
+};
+
+// Parses argv; throws Error on a bad option. `--help` prints usage and exits 0.
+BenchOptions parseBenchOptions(int argc, char** argv);
+
+}  // namespace sandstorm::bench

@@ -1,0 +1,72 @@
+#include "app/bench/bench_scene.h"
+
+#include <cmath>
+#include <numbers>
+
+#include "core/field/vortex_field.h"
+#include "core/util/error.h"
+
+namespace sandstorm::bench {
+
+ParticleState benchState(const SceneChoice& c) {
+  ParticleState s;
+  s.sim.maximum = int(c.particles);
+  s.sim.motion = MotionModel::Tracer;
+  s.sim.integrator = Integrator::RK2;
+  s.sim.boundary = BoundaryMode::Clamp;
+  Emitter& e = s.emitters[0];
+  e.shape = EmitterShape::Disc;
+  e.position = {0.0f, 0.0f, 0.5f};
+  e.radius = 3.5f;
+  e.velocity = {0.0f, 0.0f, 1.0f};
+  e.spread = 0.5f;
+  e.lifetime = 1000.0f;  // no particle dies during a run
+  e.lifetimeVariance = 0.0f;
+  e.rate = 0.0f;  // the packets carry the counts
+  if (c.renderer == "points")
+    s.render.mode = RenderMode::Points;
+  else if (c.renderer == "splat")
+    s.render.mode = RenderMode::Splat;
+  else if (c.renderer == "billboards")
+    s.render.mode = RenderMode::Billboards;
+  else
+    throw Error(concat("sandstorm-bench: unknown renderer '", c.renderer, "'"));
+  s.render.size = c.particleSize;
+  return s;
+}
+
+std::shared_ptr<const FieldUpdate> benchField(const std::string& mode) {
+  VortexParams vp;
+  vp.range = 5.0f;
+  vp.height = 9.0f;
+  const Box box{{-6.0f, -6.0f, 0.0f}, {6.0f, 6.0f, 10.0f}};
+  auto update = std::make_shared<FieldUpdate>();
+  update->field = std::make_shared<VectorField>(bake(VortexField(vp), box, {64, 64, 48}));
+  if (mode == "equation") {
+    throw Error("sandstorm-bench: equation fields are not built yet");
+  } else if (mode != "texture") {
+    throw Error(concat("sandstorm-bench: unknown field mode '", mode, "'"));
+  }
+  return update;
+}
+
+FramePacket benchPacket(std::uint32_t frame, const SceneChoice& c,
+                        const std::shared_ptr<const FieldUpdate>& field) {
+  FramePacket p;
+  p.frame = frame;
+  p.dt = p.simDt = 1.0f / 60.0f;
+  p.time = frame / 60.0;
+  p.seed = 0x5A4D5700ull;
+  p.emission = {frame == 0 ? std::uint32_t(c.particles) : 0u};
+  if (frame == 0) p.fieldUpdate = field;
+  return p;
+}
+
+View benchView(int index, int count, glm::ivec2 size) {
+  const float a = 2.0f * std::numbers::pi_v<float> * float(index) / float(std::max(count, 1)) - 0.5f * std::numbers::pi_v<float>;
+  const glm::vec3 eye(14.0f * std::cos(a), 14.0f * std::sin(a), 3.5f);
+  return perspectiveView(eye, {0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, 1.0f}, glm::radians(60.0f),
+                         float(size.x) / float(size.y), 0.1f, 200.0f);
+}
+
+}  // namespace sandstorm::bench

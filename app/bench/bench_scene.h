@@ -1,0 +1,33 @@
+// sandstorm-bench's fixed scene: a tornado (texture or equation), one disc
+// emitter at its foot, tracer particles that live longer than the run and are
+// clamped to the field's box, so a run holds exactly N particles from its
+// first frame (all born then) to its last. Views circle the tornado at 14 m.
+#pragma once
+
+#include <cstddef>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "core/cave/view.h"
+#include "core/sim/frame_packet.h"
+#include "core/sim/particle_state.h"
+
+namespace sandstorm::bench {
+
+struct SceneChoice {
+  std::size_t particles = 0;
+  std::string field = "texture";       // texture | equation
+  std::string renderer = "billboards";  // billboards | points | splat
+  float particleSize = 0.045f;
+};
+
+ParticleState benchState(const SceneChoice& choice);
+std::shared_ptr<const FieldUpdate> benchField(const std::string& mode);
+// Packet `frame` of the run: frame 0 carries the field and all the particles.
+FramePacket benchPacket(std::uint32_t frame, const SceneChoice& choice,
+                        const std::shared_ptr<const FieldUpdate>& field);
+// `count` cameras evenly around the tornado; view `index` of them.
+View benchView(int index, int count, glm::ivec2 size);
+
+}  // namespace sandstorm::bench

@@ -1,0 +1,383 @@
+// sandstorm-bench: the particle system's stages timed on the GPU against the
+// hardware's own ceilings, measured in the same run (see --help and
+// docs/PERFORMANCE.md). Headless: an EGL context, no window, no files read.
+#include <chrono>
+#include <cstdio>
+#include <exception>
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/bench/bench_options.h"
+#include "app/bench/bench_report.h"
+#include "app/bench/bench_scene.h"
+#include "contexts/bench/bench_view.h"
+#include "contexts/bench/ceilings.h"
+#include "contexts/bench/gpu_info.h"
+#include "contexts/particles/particle_system.h"
+#include "contexts/platform/egl_context.h"
+#include "contexts/render/view_targets.h"
+#include "core/util/error.h"
+
+namespace sandstorm::bench {
+namespace {
+
+constexpr double kRecordBytes = 32.0;  // position + life, velocity + kind
+
+class Bench {
+ public:
+  Bench(const BenchOptions& options, Report& report, std::size_t memory)
+      : o_(options), report_(report), memory_(memory) {}
+
+  void run() {
+    const auto has = [&](const char* s) {
+      for (const std::string& x : o_.sections)
+        if (x == s) return true;
+      return false;
+    };
+    plan(has("ceilings"), has("update"), has("render"), has("walls"));
+    copyBandwidth();
+    if (has("ceilings"))
+      for (std::size_t n : o_.particles) {
+        bareTf(n);
+        barePoints(n);
+      }
+    if (has("update"))
+      for (std::size_t n : o_.particles)
+        for (const std::string& backend : o_.backends)
+          for (const std::string& field : o_.fields) update(n, backend, field);
+    if (has("render"))
+      for (std::size_t n : o_.particles)
+        for (const std::string& renderer : o_.renderers)
+          if (renderer != "billboards" || n <= o_.billboardLimit) render(n, renderer);
+    if (has("walls"))
+      for (int w : o_.walls)
+        for (const std::string& sim : o_.wallSims)
+          for (const std::string& renderer : o_.wallRenderers) walls(w, sim, renderer);
+  }
+
+ private:
+  void plan(bool ceilings, bool update, bool render, bool walls) {
+    total_ = 1;
+    if (ceilings) total_ += 2 * int(o_.particles.size());
+    if (update) total_ += int(o_.particles.size() * o_.backends.size() * o_.fields.size());
+    if (render)
+      for (std::size_t n : o_.particles)
+        for (const std::string& r : o_.renderers) total_ += (r != "billboards" || n <= o_.billboardLimit) ? 1 : 0;
+    if (walls) total_ += int(o_.walls.size() * o_.wallSims.size() * o_.wallRenderers.size());
+  }
+
+  void progress(const std::string& what) {
+    ++done_;
+    std::fprintf(stderr, "[%d/%d] %s\n", done_, total_, what.c_str());
+    std::fflush(stderr);
+  }
+
+  bool fits(double bytes, const std::string& what) {
+    if (bytes <= double(memory_)) return true;
+    std::fprintf(stderr, "  skipped %s: needs %.1f GiB, the budget is %.1f GiB\n", what.c_str(), bytes / 1073741824.0,
+                 double(memory_) / 1073741824.0);
+    return false;
+  }
+
+  // Runs `body` and reports an Error (out of memory, say) without ending the run.
+  void guarded(const std::string& what, const std::function<void()>& body) {
+    try {
+      body();
+    } catch (const std::exception& e) {
+      std::fprintf(stderr, "  %s failed: %s\n", what.c_str(), e.what());
+    }
+  }
+
+  void copyBandwidth() {
+    std::size_t bytes = o_.quick ? (16u << 20) : (std::size_t(1) << 30);
+    bytes = std::min(bytes, memory_ / 3);
+    progress(concat("ceiling: buffer copy of ", bytes >> 20, " MiB"));
+    report_.copyBytesPerS = bench::copyBandwidth(bytes, o_.frames);
+    Row row{.section = "ceilings", .stage = "copy"};
+    row.ms = report_.copyBytesPerS > 0 ? 2.0 * double(bytes) / report_.copyBytesPerS * 1e3 : 0;
+    row.bytesPerS = report_.copyBytesPerS;
+    report_.rows.push_back(row);
+  }
+
+  double bareTf(std::size_t n) {
+    if (auto it = bareTfMs_.find(n); it != bareTfMs_.end()) return it->second;
+    double ms = 0;
+    if (!bareTfMs_.contains(n)) progress(concat("ceiling: bare transform feedback, ", n, " records"));
+    if (fits(4 * n * 16.0, "bare transform feedback"))
+      guarded("bare transform feedback", [&] {
+        BareTransformFeedback tf(n);
+        ms = tf.passMs(o_.frames);
+      });
+    bareTfMs_[n] = ms;
+    if (ms > 0) {
+      Row row{.section = "ceilings", .stage = "bare-tf", .particles = n};
+      row.ms = ms;
+      row.particlesPerS = double(n) / (ms * 1e-3);
+      row.bytesPerS = 2 * kRecordBytes * double(n) / (ms * 1e-3);
+      row.ceiling = "copy";
+      row.ratio = ratio(row.bytesPerS, report_.copyBytesPerS);
+      report_.rows.push_back(row);
+    }
+    return ms;
+  }
+
+  double barePoints(std::size_t n) {
+    if (auto it = barePointsMs_.find(n); it != barePointsMs_.end()) return it->second;
+    progress(concat("ceiling: bare point draw, ", n, " points"));
+    double ms = 0;
+    if (fits(2 * n * 16.0, "bare point draw"))
+      guarded("bare point draw", [&] {
+        BarePointDraw draw(n, o_.size);
+        ms = draw.drawMs(o_.frames);
+      });
+    barePointsMs_[n] = ms;
+    if (ms > 0) {
+      Row row{.section = "ceilings", .stage = "bare-points", .particles = n, .width = o_.size.x, .height = o_.size.y};
+      row.ms = ms;
+      row.particlesPerS = double(n) / (ms * 1e-3);
+      row.bytesPerS = kRecordBytes * double(n) / (ms * 1e-3);
+      report_.rows.push_back(row);
+    }
+    return ms;
+  }
+
+  static double ratio(double rate, double ceiling) { return ceiling > 0 ? rate / ceiling : 0.0; }
+
+  std::unique_ptr<ParticleSystem> makeSystem(const SceneChoice& c, const std::string& backend) {
+    auto system = std::make_unique<ParticleSystem>(
+        benchState(c), ParticleSystem::Options{.capacity = c.particles, .capacityLimit = c.particles, .backend = backend, .stageTimers = false});
+    system->setTerrain(terrain_);
+    return system;
+  }
+
+  void update(std::size_t n, const std::string& backend, const std::string& field) {
+    progress(concat("update: ", backend, ", ", field, " field, ", n, " particles"));
+    if (!fits(4 * n * 16.0, "update")) return;
+    guarded("update", [&] {
+      const SceneChoice c{.particles = n, .field = field, .particleSize = o_.particleSize};
+      const auto fieldUpdate = benchField(field);
+      auto system = makeSystem(c, backend);
+      GpuStopwatch watch;
+      const int frames = 1 + o_.warmup + o_.frames;
+      for (int f = 0; f < frames; ++f) {
+        const bool timed = f >= frames - o_.frames;
+        if (timed) watch.begin();
+        system->advance(benchPacket(std::uint32_t(f), c, fieldUpdate));
+        if (timed) watch.end();
+      }
+      const double ms = median(watch.intervalsMs());
+      const std::size_t live = system->update().liveCount();
+      Row row{.section = "update", .stage = "update", .backend = backend, .field = field, .particles = live};
+      row.ms = ms;
+      row.particlesPerS = double(live) / (ms * 1e-3);
+      row.bytesPerS = 2 * kRecordBytes * double(live) / (ms * 1e-3);
+      if (backend == "compute") {
+        row.ceiling = "copy";
+        row.ratio = ratio(row.bytesPerS, report_.copyBytesPerS);
+      } else {
+        const double bare = bareTf(n);
+        row.ceiling = "bare-tf";
+        row.ratio = bare > 0 && ms > 0 ? bare / ms : 0;
+      }
+      report_.rows.push_back(row);
+    });
+  }
+
+  void render(std::size_t n, const std::string& renderer) {
+    const double bare = barePoints(n);
+    progress(concat("render: ", renderer, ", ", n, " particles, one ", o_.size.x, "x", o_.size.y, " view"));
+    if (!fits(4 * n * 16.0, "render")) return;
+    guarded("render", [&] {
+      const SceneChoice c{.particles = n, .renderer = renderer, .particleSize = o_.particleSize};
+      const auto fieldUpdate = benchField("texture");
+      auto system = makeSystem(c, o_.wallBackend);
+      BenchView view;
+      view.scene().setTerrain(*terrain_);
+      OutputTarget out;
+      out.resize(o_.size);
+      StageWatches watches;
+      const View camera = benchView(0, 1, o_.size);
+      const int frames = 1 + o_.warmup + o_.frames;
+      for (int f = 0; f < frames; ++f) {
+        system->advance(benchPacket(std::uint32_t(f), c, fieldUpdate));
+        if (f == frames - o_.frames) {
+          watches.scene.clear();
+          watches.particles.clear();
+          watches.post.clear();
+        }
+        view.render(*system, camera, o_.size, out.framebuffer(), watches);
+      }
+      const std::size_t live = system->update().liveCount();
+      const double pixels = double(o_.size.x) * double(o_.size.y);
+      auto row = [&](const char* stage, GpuStopwatch& watch) {
+        Row r{.section = "render", .stage = stage, .backend = o_.wallBackend, .field = "texture", .renderer = renderer,
+              .particles = live, .walls = 1, .width = o_.size.x, .height = o_.size.y};
+        r.ms = median(watch.intervalsMs());
+        return r;
+      };
+      report_.rows.push_back(row("scene", watches.scene));
+      Row particles = row("particles", watches.particles);
+      particles.particlesPerS = double(live) / (particles.ms * 1e-3);
+      particles.bytesPerS = kRecordBytes * double(live) / (particles.ms * 1e-3);
+      particles.ceiling = "bare-points";
+      particles.ratio = bare > 0 ? bare / particles.ms : 0;
+      report_.rows.push_back(particles);
+      Row post = row("post", watches.post);
+      post.bytesPerS = 24.0 * pixels / (post.ms * 1e-3);  // reads 4 + 8 + 8 bytes a pixel, writes 4
+      post.ceiling = "copy";
+      post.ratio = ratio(post.bytesPerS, report_.copyBytesPerS);
+      report_.rows.push_back(post);
+    });
+  }
+
+  void walls(int count, const std::string& sim, const std::string& renderer) {
+    const std::size_t n = o_.wallParticles;
+    progress(concat("walls: ", count, " views of ", o_.size.x, "x", o_.size.y, ", ", sim, " simulation, ", renderer,
+                    ", ", n, " particles"));
+    const int systems = sim == "shared" ? 1 : count;
+    if (!fits(4 * n * 16.0 * systems, "walls")) return;
+    guarded("walls", [&] {
+      const SceneChoice c{.particles = n, .renderer = renderer, .particleSize = o_.particleSize};
+      const auto fieldUpdate = benchField("texture");
+      std::vector<std::unique_ptr<ParticleSystem>> sims;
+      for (int s = 0; s < systems; ++s) sims.push_back(makeSystem(c, o_.wallBackend));
+      std::vector<std::unique_ptr<BenchView>> views;
+      std::vector<View> cameras;
+      for (int w = 0; w < count; ++w) {
+        views.push_back(std::make_unique<BenchView>());
+        views.back()->scene().setTerrain(*terrain_);
+        cameras.push_back(benchView(w, count, o_.size));
+      }
+      OutputTarget out;
+      out.resize(o_.size);
+      GpuStopwatch updates;
+      StageWatches watches;
+      std::vector<double> wallMs;
+      const int frames = 1 + o_.warmup + o_.frames;
+      for (int f = 0; f < frames; ++f) {
+        const bool timed = f >= frames - o_.frames;
+        if (f == frames - o_.frames) {
+          updates.clear();
+          watches.scene.clear();
+          watches.particles.clear();
+          watches.post.clear();
+          finishGpu();
+        }
+        const auto start = std::chrono::steady_clock::now();
+        const FramePacket packet = benchPacket(std::uint32_t(f), c, fieldUpdate);
+        for (auto& system : sims) {
+          updates.begin();
+          system->advance(packet);
+          updates.end();
+        }
+        for (int w = 0; w < count; ++w)
+          views[std::size_t(w)]->render(*sims[std::size_t(sim == "shared" ? 0 : w)], cameras[std::size_t(w)], o_.size,
+                                        out.framebuffer(), watches);
+        if (timed) {
+          finishGpu();
+          wallMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+        }
+      }
+      // Per frame: the sum of its intervals (systems updates, `count` of each view stage).
+      auto perFrame = [&](GpuStopwatch& watch, int perFrameCount) {
+        const std::vector<double> all = watch.intervalsMs();
+        std::vector<double> sums(std::size_t(o_.frames), 0.0);
+        for (std::size_t i = 0; i < all.size(); ++i) sums[i / std::size_t(perFrameCount)] += all[i];
+        return sums;
+      };
+      const std::vector<double> u = perFrame(updates, systems), s = perFrame(watches.scene, count),
+                                p = perFrame(watches.particles, count), q = perFrame(watches.post, count);
+      std::vector<double> total(u.size()), viewsMs(u.size());
+      for (std::size_t i = 0; i < u.size(); ++i) {
+        viewsMs[i] = s[i] + p[i] + q[i];
+        total[i] = u[i] + viewsMs[i];
+      }
+      const std::size_t live = sims[0]->update().liveCount();
+      auto row = [&](const char* stage, const std::vector<double>& ms) {
+        Row r{.section = "walls", .stage = stage, .backend = o_.wallBackend, .field = "texture", .renderer = renderer,
+              .sim = sim, .particles = live, .walls = count, .width = o_.size.x, .height = o_.size.y};
+        r.ms = median(ms);
+        r.particlesPerS = double(live) * (std::string(stage) == "update" ? systems : count) / (r.ms * 1e-3);
+        return r;
+      };
+      report_.rows.push_back(row("update", u));
+      report_.rows.push_back(row("views", viewsMs));
+      Row frame = row("frame", total);
+      frame.wallMs = median(wallMs);
+      frame.ceiling = "60 fps";
+      frame.ratio = frame.ms > 0 ? (1000.0 / frame.ms) / 60.0 : 0;
+      report_.rows.push_back(frame);
+    });
+  }
+
+  const BenchOptions& o_;
+  Report& report_;
+  std::size_t memory_;
+  int total_ = 0, done_ = 0;
+  std::map<std::size_t, double> bareTfMs_, barePointsMs_;
+  std::shared_ptr<const HeightMap> terrain_ = std::make_shared<HeightMap>(HeightMap::flat(0.0f));
+};
+
+// The targets, from the rows (largest particle count measured for each).
+void printTargets(const Report& r) {
+  auto largest = [&](const std::function<bool(const Row&)>& match) {
+    const Row* best = nullptr;
+    for (const Row& row : r.rows)
+      if (match(row) && (!best || row.particles >= best->particles)) best = &row;
+    return best;
+  };
+  std::printf("\nTargets (largest N measured):\n");
+  if (const Row* c = largest([](const Row& x) { return x.section == "update" && x.backend == "compute" && x.field == "texture"; }))
+    std::printf("  compute update, %zu particles: %.1f GB/s = %.2f of copy bandwidth %.1f GB/s (target >= 0.60)\n",
+                c->particles, c->bytesPerS * 1e-9, c->ratio, r.copyBytesPerS * 1e-9);
+  if (const Row* t = largest([](const Row& x) { return x.section == "update" && x.backend == "tf-gs" && x.field == "texture"; }))
+    std::printf("  tf-gs update, %zu particles: %.3f ms = %.2f of the bare transform-feedback pass's speed (target >= 0.80)\n",
+                t->particles, t->ms, t->ratio);
+  const Row* b = largest([](const Row& x) { return x.section == "render" && x.stage == "particles" && x.renderer == "billboards"; });
+  if (b) {
+    const Row* s = nullptr;
+    for (const Row& row : r.rows)
+      if (row.section == "render" && row.stage == "particles" && row.renderer == "splat" && row.particles == b->particles) s = &row;
+    if (s)
+      std::printf("  splat vs billboards, %zu particles: %.1f vs %.1f Mparticles/s = %.1fx (target >= 10x)\n",
+                  b->particles, s->particlesPerS * 1e-6, b->particlesPerS * 1e-6, s->particlesPerS / b->particlesPerS);
+  }
+  for (const Row& row : r.rows)
+    if (row.section == "walls" && row.stage == "frame")
+      std::printf("  %d views, %s simulation, %s, %zu particles: %.2f ms GPU (%.1f fps), %.2f ms wall clock\n", row.walls,
+                  row.sim.c_str(), row.renderer.c_str(), row.particles, row.ms, 1000.0 / row.ms, row.wallMs);
+}
+
+}  // namespace
+}  // namespace sandstorm::bench
+
+int main(int argc, char** argv) {
+  using namespace sandstorm;
+  using namespace sandstorm::bench;
+  try {
+    const BenchOptions options = parseBenchOptions(argc, argv);
+    EglContext context;
+    context.makeCurrent();
+    Report report;
+    report.device = context.description() + " | " + glRenderer();
+    for (int i = 0; i < argc; ++i) report.command += (i ? " " : "") + std::string(argv[i]);
+    std::size_t memory = std::size_t(-1) / 2;
+    if (options.memoryGiB > 0)
+      memory = std::size_t(options.memoryGiB * 1073741824.0);
+    else if (const auto gpu = gpuMemoryBytes())
+      memory = *gpu / 10 * 8;  // leave room for the driver, textures and the ceilings' buffers
+    std::fprintf(stderr, "sandstorm-bench on %s\n", report.device.c_str());
+    Bench(options, report, memory).run();
+    printTable(report);
+    printTargets(report);
+    writeJson(report, options.json);
+    std::printf("\nwrote %s\n", options.json.c_str());
+    return 0;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "sandstorm-bench: %s\n", e.what());
+    return 1;
+  }
+}

@@ -1,0 +1,89 @@
+// sandstorm-bench --quick: runs in seconds on llvmpipe and produces the table
+// and the JSON with every section and stage. Structure only: no timing is
+// asserted (speed belongs in the benchmark, not in tests).
+#include <gtest/gtest.h>
+
+#include <set>
+#include <string>
+
+#include "tests/app/run_process.h"
+
+namespace sandstorm {
+namespace {
+
+test::ProcessResult runBench(const std::string& args) {
+  const std::string cmd = std::string("'") + SANDSTORM_BENCH + "' " + args + " 2>&1";
+  test::ProcessResult r;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
+  const int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+// The value of "key": "..." or "key": number in one JSON row line.
+std::string field(const std::string& line, const std::string& key) {
+  const std::string tag = "\"" + key + "\": ";
+  const auto at = line.find(tag);
+  if (at == std::string::npos) return "<missing>";
+  auto from = at + tag.size();
+  if (line[from] == '"') {
+    const auto to = line.find('"', from + 1);
+    return line.substr(from + 1, to - from - 1);
+  }
+  const auto to = line.find_first_of(",}", from);
+  return line.substr(from, to - from);
+}
+
+TEST(BenchQuick, PrintsTheTableAndWritesEverySectionToJson) {
+  const auto dir = test::scratchDir("bench");
+  const auto json = dir / "bench.json";
+  const test::ProcessResult r = runBench("--quick --json '" + json.string() + "'");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  // Progress, the table and the targets.
+  EXPECT_NE(r.output.find("[1/"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("ratio to ceiling"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("Targets"), std::string::npos) << r.output;
+
+  const auto lines = test::readLines(json);
+  ASSERT_FALSE(lines.empty());
+  std::set<std::string> seen;
+  int rows = 0;
+  for (const std::string& line : lines) {
+    if (line.find("\"section\"") == std::string::npos) continue;
+    ++rows;
+    const std::string section = field(line, "section"), stage = field(line, "stage");
+    seen.insert(section + "/" + stage);
+    for (const char* key : {"backend", "field", "renderer", "sim", "particles", "walls", "gpu_ms", "particles_per_s",
+                            "bytes_per_s", "ceiling", "ratio", "wall_clock_ms"})
+      EXPECT_NE(field(line, key), "<missing>") << key << " in " << line;
+    EXPECT_GE(std::stod(field(line, "gpu_ms")), 0.0) << line;
+    if (section == "update") {
+      // Every update row says what it is compared with.
+      EXPECT_TRUE(field(line, "ceiling") == "copy" || field(line, "ceiling") == "bare-tf") << line;
+      EXPECT_GT(std::stod(field(line, "particles")), 0.0) << line;
+    }
+  }
+  for (const char* expected : {"ceilings/copy", "ceilings/bare-tf", "ceilings/bare-points", "update/update",
+                               "render/scene", "render/particles", "render/post", "walls/update", "walls/views",
+                               "walls/frame"})
+    EXPECT_TRUE(seen.count(expected)) << expected;
+  // 2 particle counts x 2 backends x 2 fields of updates; 3 renderers x 2 counts x 3 stages.
+  EXPECT_GE(rows, 1 + 4 + 8 + 18 + 2 * 2 * 2 * 3);
+  for (const char* key : {"\"device\"", "\"command\"", "\"copy_bytes_per_s\""})
+    EXPECT_NE(lines[1].find(key) == std::string::npos && lines[2].find(key) == std::string::npos &&
+                  lines[3].find(key) == std::string::npos,
+              true)
+        << key;
+}
+
+TEST(BenchQuick, RefusesUnknownOptions) {
+  const test::ProcessResult r = runBench("--quick --renderers sprites");
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.output.find("unknown 'sprites'"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace sandstorm
