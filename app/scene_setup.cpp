@@ -23,9 +23,11 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
   FieldSource out;
   if (spec.source == "analytic") {
     FieldParams params(spec.params.begin(), spec.params.end());
-    auto field = std::make_shared<VectorField>(bake(*makeAnalyticField(spec.name, params), spec.bounds, spec.dims));
+    const auto analytic = makeAnalyticField(spec.name, params);
+    auto field = std::make_shared<VectorField>(bake(*analytic, spec.bounds, spec.dims));
     out.description = concat("analytic '", spec.name, "' baked to ", spec.dims.x, "x", spec.dims.y, "x", spec.dims.z);
     out.update = FieldUpdate{.field = std::move(field), .placement = spec.placement};
+    if (auto equation = fieldEquation(*analytic)) out.update.equation = std::make_shared<FieldEquation>(*equation);
   } else {
     const std::filesystem::path path = resolve(spec.source, baseDir);
     LoadOptions options;

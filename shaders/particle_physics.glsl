@@ -1,6 +1,9 @@
 // Per-particle rules: the twin of core/sim/particle_physics.cpp. Same
 // operations in the same order, all `precise`, so llvmpipe and the CPU agree to
-// the bit. Needs sim_block.glsl.
+// the bit. Needs sim_block.glsl. FIELD_EQUATION programs evaluate the analytic
+// field (field_equation.glsl) in place of the texture.
+
+#include "field_equation.glsl"
 
 vec3 fieldSample(sampler3D field, vec3 p) {
   // Trilinear between grid points with texelFetch (not the sampler's filter,
@@ -45,11 +48,15 @@ vec3 toRoom(vec3 local) {
 vec3 fieldAt(vec3 x) {
   if (sim.fieldDims.w == 0) return vec3(0.0);
   vec3 local = toLocal(x);
+#ifdef FIELD_EQUATION
+  vec3 s = equationAt(local);  // the analytic field itself (field_equation.glsl), not its grid
+#else
   precise vec3 s = fieldSample(uField, local);
   if (sim.fieldBlend.y != 0.0) {
     precise vec3 n = fieldSample(uFieldNext, local);
     s = s + (n - s) * sim.fieldBlend.x;
   }
+#endif
   precise vec3 f = sim.stepParams.y * ((placementRotation() * s) * sim.placementOffset.w);
   return f;
 }

@@ -32,6 +32,7 @@ ParticleState benchState(const SceneChoice& c) {
   else
     throw Error(concat("sandstorm-bench: unknown renderer '", c.renderer, "'"));
   s.render.size = c.particleSize;
+  s.field.mode = c.field == "equation" ? FieldMode::Equation : FieldMode::Texture;
   return s;
 }
 
@@ -43,7 +44,7 @@ std::shared_ptr<const FieldUpdate> benchField(const std::string& mode) {
   auto update = std::make_shared<FieldUpdate>();
   update->field = std::make_shared<VectorField>(bake(VortexField(vp), box, {64, 64, 48}));
   if (mode == "equation") {
-    throw Error("sandstorm-bench: equation fields are not built yet");
+    update->equation = std::make_shared<FieldEquation>(*fieldEquation(VortexField(vp)));
   } else if (mode != "texture") {
     throw Error(concat("sandstorm-bench: unknown field mode '", mode, "'"));
   }

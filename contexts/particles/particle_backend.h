@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "core/field/field_equation.h"
 #include "core/field/field_placement.h"
 #include "core/field/height_map.h"
 #include "core/field/vector_field.h"
@@ -27,6 +28,9 @@ class ParticleBackend {
   // `next`: a time-varying field's next frame (same grid), blended by SimStep::fieldBlend.
   virtual void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
                         std::shared_ptr<const VectorField> next = nullptr) = 0;
+  // An analytic field's equation: while state.field.mode is Equation, updates
+  // evaluate it in place of the field's grid (whose bounds still apply). Null: none.
+  virtual void setEquation(std::shared_ptr<const FieldEquation> equation) = 0;
   virtual void setTerrain(std::shared_ptr<const HeightMap> terrain) = 0;
   virtual void step(const SimStep& step, const ParticleState& state) = 0;
   virtual void clear() = 0;

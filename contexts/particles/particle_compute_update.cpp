@@ -175,6 +175,11 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   if (field_) fieldTexture_.bind(0);
   if (nextField_) nextFieldTexture_.bind(2);
   if (terrain_) terrainTexture_.bind(1);
+  const bool equation = equation_.bindIfUsed(state);
+  if (equation && !updateEquationProgram_)
+    updateEquationProgram_ = std::make_unique<gl::Program>(
+        gl::ProgramDesc{{"particle_update.comp"}, {"FIELD_EQUATION"}, {}});
+  const gl::Program& update = equation ? *updateEquationProgram_ : updateProgram_;
 
   const BufferSet& in = sets_[std::size_t(current_)];
   const BufferSet& out = sets_[std::size_t(1 - current_)];
@@ -199,11 +204,11 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   }
 
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-  updateProgram_.use();
-  glProgramUniform1i(updateProgram_.id(), 0, current_);
-  glProgramUniform1ui(updateProgram_.id(), 1, born);
-  glProgramUniform1ui(updateProgram_.id(), 2, std::uint32_t(capacity_));
-  glProgramUniform1ui(updateProgram_.id(), 3, spinLimit_);
+  update.use();
+  glProgramUniform1i(update.id(), 0, current_);
+  glProgramUniform1ui(update.id(), 1, born);
+  glProgramUniform1ui(update.id(), 2, std::uint32_t(capacity_));
+  glProgramUniform1ui(update.id(), 3, spinLimit_);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, control_.id());
   glDispatchComputeIndirect(kDispatchOffset);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);

@@ -31,6 +31,7 @@
 
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
+#include "contexts/particles/field_equation_buffer.h"
 #include "contexts/particles/field_texture.h"
 #include "contexts/particles/particle_backend.h"
 #include "core/sim/emission_budget.h"
@@ -46,6 +47,7 @@ class ParticleComputeUpdate final : public ParticleBackend {
 
   void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
                 std::shared_ptr<const VectorField> next = nullptr) override;
+  void setEquation(std::shared_ptr<const FieldEquation> equation) override { equation_.set(std::move(equation)); }
   void setTerrain(std::shared_ptr<const HeightMap> terrain) override;
   void step(const SimStep& step, const ParticleState& state) override;
   void clear() override;
@@ -82,6 +84,7 @@ class ParticleComputeUpdate final : public ParticleBackend {
   const std::uint32_t* historyMap_ = nullptr;
   std::array<gl::Sync, kHistory> historyFence_;
   gl::Program prepareProgram_, emitProgram_, updateProgram_;
+  std::unique_ptr<gl::Program> updateEquationProgram_;  // FIELD_EQUATION, made on first use
   std::uint32_t spinLimit_;
 
   std::shared_ptr<const VectorField> field_, nextField_;
@@ -89,6 +92,7 @@ class ParticleComputeUpdate final : public ParticleBackend {
   std::shared_ptr<const HeightMap> terrain_;
   FieldTexture fieldTexture_, nextFieldTexture_;
   TerrainTexture terrainTexture_;
+  FieldEquationBuffer equation_;
 
   EmissionBudget budget_;
   std::uint64_t updates_ = 0;

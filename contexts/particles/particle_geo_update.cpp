@@ -13,9 +13,9 @@ namespace {
 
 constexpr GLsizeiptr kRecord = sizeof(glm::vec4);
 
-gl::Program makeProgram(const char* vert, const char* geom) {
+gl::Program makeProgram(const char* vert, const char* geom, std::vector<std::string> defines = {}) {
   return gl::Program(
-      gl::ProgramDesc{{vert, geom}, {}, {"outPositionLife", "outVelocityKind"}});
+      gl::ProgramDesc{{vert, geom}, std::move(defines), {"outPositionLife", "outVelocityKind"}});
 }
 
 void attach(GLuint vao, GLuint positionLife, GLuint velocityKind, GLintptr firstRecord) {
@@ -155,6 +155,10 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
   if (field_) fieldTexture_.bind(0);
   if (nextField_) nextFieldTexture_.bind(2);
   if (terrain_) terrainTexture_.bind(1);
+  const bool equation = equation_.bindIfUsed(state);
+  if (equation && !updateEquationProgram_)
+    updateEquationProgram_ = std::make_unique<gl::Program>(
+        makeProgram("particle_update.vert", "particle_update.geom", {"FIELD_EQUATION"}));
 
   const BufferSet& in = sets_[std::size_t(current_)];
   BufferSet& out = sets_[std::size_t(1 - current_)];
@@ -177,7 +181,7 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
     const GLintptr offset = GLintptr(born) * kRecord, size = GLsizeiptr(capacity_ - born) * kRecord;
     glTransformFeedbackBufferRange(out.update.id(), 0, out.positionLife.id(), offset, size);
     glTransformFeedbackBufferRange(out.update.id(), 1, out.velocityKind.id(), offset, size);
-    updateProgram_.use();
+    (equation ? *updateEquationProgram_ : updateProgram_).use();
     glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, out.update.id());
     glBeginQueryIndexed(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, 0, survivorQueries_[std::size_t(slot)].id());
     glBeginTransformFeedback(GL_POINTS);

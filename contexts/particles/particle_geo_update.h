@@ -24,6 +24,7 @@
 
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
+#include "contexts/particles/field_equation_buffer.h"
 #include "contexts/particles/field_texture.h"
 #include "contexts/particles/particle_backend.h"
 #include "core/field/field_placement.h"
@@ -41,6 +42,7 @@ class ParticleGeoUpdate final : public ParticleBackend {
 
   void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
                 std::shared_ptr<const VectorField> next = nullptr) override;
+  void setEquation(std::shared_ptr<const FieldEquation> equation) override { equation_.set(std::move(equation)); }
   void setTerrain(std::shared_ptr<const HeightMap> terrain) override;
   void step(const SimStep& step, const ParticleState& state) override;
   void clear() override;
@@ -77,12 +79,14 @@ class ParticleGeoUpdate final : public ParticleBackend {
   gl::Framebuffer dummyTarget_;  // drawing needs a framebuffer, even with rasterizer discard
   gl::Renderbuffer dummyColor_;
   gl::Program updateProgram_, emitProgram_;
+  std::unique_ptr<gl::Program> updateEquationProgram_;  // FIELD_EQUATION, made on first use
 
   std::shared_ptr<const VectorField> field_, nextField_;
   FieldPlacement placement_;
   std::shared_ptr<const HeightMap> terrain_;
   FieldTexture fieldTexture_, nextFieldTexture_;
   TerrainTexture terrainTexture_;
+  FieldEquationBuffer equation_;
 
   EmissionBudget budget_;
   std::uint64_t updates_ = 0;

@@ -35,6 +35,7 @@ void ParticleSystem::advance(const FramePacket& packet) {
   if (packet.fieldUpdate) {
     field_ = packet.fieldUpdate;
     update_->setField(field_->field, field_->placement, field_->next);
+    update_->setEquation(field_->equation);
     log::debug("frame ", packet.frame, ": field uploaded in ", update_->lastFieldUploadMs(), " ms");
   }
   if (stageTimers_) updateTimer_.begin();

@@ -18,6 +18,7 @@ class SumField final : public AnalyticField {
   // Adds a part (not null). Returns *this for chaining.
   SumField& add(std::unique_ptr<AnalyticField> part);
   std::size_t size() const { return parts_.size(); }
+  const AnalyticField& part(std::size_t i) const { return *parts_.at(i); }
 
   glm::vec3 evaluate(const glm::vec3& p) const override;
 

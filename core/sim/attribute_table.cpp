@@ -116,6 +116,10 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("field.speed", T::Float, 0, 100, "x", "Field seconds per simulated second (time-varying fields)",
                     FIELD(speed)));
   v.push_back(entry("field.loop", T::Bool, 0, 1, "", "Loop a time-varying field", FIELD(loop)));
+  v.push_back(enumEntry("field.mode", {"texture", "equation"},
+                        "Sample the field's grid (3D texture) or evaluate an analytic field's equation in the "
+                        "shader (analytic fields only; others stay on the texture)",
+                        FIELD(mode)));
   v.push_back(entry("field.paused", T::Bool, 0, 1, "", "Hold the time-varying field's current frame",
                     FIELD(paused)));
   // Emitters.

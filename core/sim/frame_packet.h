@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/cave/viewer.h"
+#include "core/field/field_equation.h"
 #include "core/field/field_placement.h"
 #include "core/field/vector_field.h"
 #include "core/sim/counter_rng.h"
@@ -21,6 +22,9 @@ struct FieldUpdate {
   std::shared_ptr<const VectorField> field;  // the new grid (shared, never copied per wall)
   FieldPlacement placement;
   std::shared_ptr<const VectorField> next;   // a time-varying field's next frame, or null
+  // An analytic field's equation (field.mode = equation evaluates it in place of
+  // `field`, whose bounds still bound the particles), or null.
+  std::shared_ptr<const FieldEquation> equation;
 };
 
 struct FramePacket {

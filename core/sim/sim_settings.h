@@ -34,11 +34,16 @@ struct SimSettings {
   bool paused = false;          // pause: time stands still, nothing moves or dies
 };
 
+// How the particle update reads the field: the baked grid (a 3D texture) or,
+// for analytic fields, their equations evaluated in the shader.
+enum class FieldMode : int { Texture = 0, Equation = 1 };
+
 // How a time-varying field plays (the main context's field clock).
 struct FieldPlayback {
   float speed = 1.0f;  // field seconds per simulated second
   bool loop = true;
   bool paused = false;  // hold the current frame while particles move on
+  FieldMode mode = FieldMode::Texture;  // Equation: only where the field has one (FieldUpdate::equation)
 };
 
 // Splat: billboards' look, drawn by a compute pass for small particles.
