@@ -34,7 +34,7 @@ void BenchView::render(const ParticleSystem& particles, const View& view, glm::i
   watches.scene.end();
 
   watches.particles.begin();
-  particles.renderParticles(targets_);
+  particles.renderParticles(targets_, &view);
   watches.particles.end();
   watches.post.begin();
   particles.composite(targets_, destination, {0, 0});

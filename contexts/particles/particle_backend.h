@@ -41,6 +41,17 @@ class ParticleBackend {
   // reads attribute 0 (position, life) and 1 (velocity, kind).
   virtual void draw() const = 0;
 
+  // The current records for compute passes (ParticleSplat), without reading
+  // anything back: records 0 .. count-1 of the two buffers, where count is the
+  // uint at byte `countOffset` of `countBuffer` plus `countAdd`.
+  struct Records {
+    std::uint32_t positionLife = 0, velocityKind = 0;
+    std::uint32_t countBuffer = 0;
+    std::uint32_t countOffset = 0;
+    std::uint32_t countAdd = 0;
+  };
+  virtual Records records() const = 0;
+
   virtual std::size_t capacity() const = 0;
   // These wait for the GPU; for tests, stats and dumps, not the frame loop.
   virtual std::size_t liveCount() const = 0;

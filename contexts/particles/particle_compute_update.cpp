@@ -234,6 +234,11 @@ void ParticleComputeUpdate::draw() const {
   glBindVertexArray(0);
 }
 
+ParticleBackend::Records ParticleComputeUpdate::records() const {
+  const BufferSet& set = sets_[std::size_t(current_)];
+  return {set.positionLife.id(), set.velocityKind.id(), control_.id(), std::uint32_t(kCountOffset + current_ * 4), 0};
+}
+
 std::size_t ParticleComputeUpdate::liveCount() const {
   if (updates_ == 0) return 0;
   std::uint32_t count = 0;

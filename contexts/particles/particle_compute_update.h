@@ -53,6 +53,7 @@ class ParticleComputeUpdate final : public ParticleBackend {
   void clear() override;
   void grow(std::size_t capacity) override;
   void draw() const override;
+  Records records() const override;
 
   std::size_t capacity() const override { return capacity_; }
   std::size_t liveCount() const override;

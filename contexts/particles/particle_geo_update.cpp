@@ -29,6 +29,7 @@ ParticleGeoUpdate::ParticleGeoUpdate(std::size_t capacity)
     : capacity_(capacity),
       emptyVao_(gl::createVertexArray()),
       simBlock_(gl::createBuffer()),
+      survivorCounts_(gl::createBuffer()),
       dummyTarget_(gl::createFramebuffer()),
       dummyColor_(gl::createRenderbuffer()),
       updateProgram_(makeProgram("particle_update.vert", "particle_update.geom")),
@@ -37,6 +38,8 @@ ParticleGeoUpdate::ParticleGeoUpdate(std::size_t capacity)
     throw Error(concat("ParticleGeoUpdate: capacity ", capacity, " is outside 1..", (1u << 31) / kRecord));
   for (BufferSet& set : sets_) allocate(set, capacity);
   glNamedBufferStorage(simBlock_.id(), sizeof(SimBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  const std::uint32_t zeros[2] = {0, 0};
+  glNamedBufferStorage(survivorCounts_.id(), sizeof(zeros), zeros, GL_DYNAMIC_STORAGE_BIT);
   glNamedRenderbufferStorage(dummyColor_.id(), GL_R8, 1, 1);
   glNamedFramebufferRenderbuffer(dummyTarget_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, dummyColor_.id());
   for (gl::Query& q : survivorQueries_) q = gl::createQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
@@ -82,6 +85,8 @@ void ParticleGeoUpdate::grow(std::size_t capacity) {
   }
   to.born = std::uint32_t(count);
   sets_ = std::move(grown);
+  const std::uint32_t zeros[2] = {0, 0};
+  glNamedBufferSubData(survivorCounts_.id(), 0, sizeof(zeros), zeros);
   capacity_ = capacity;
   // The last update's count now lives entirely in `born`; its survivor query no longer applies.
   const std::size_t last = std::size_t((updates_ + kHistory - 1) % kHistory);
@@ -117,6 +122,8 @@ void ParticleGeoUpdate::clear() {
   }
   budget_.reset();
   updates_ = 0;
+  const std::uint32_t zeros[2] = {0, 0};
+  glNamedBufferSubData(survivorCounts_.id(), 0, sizeof(zeros), zeros);
   queried_.fill(false);
   bornHistory_.fill(0);
 }
@@ -191,6 +198,12 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
     attach(out.survivors.id(), out.positionLife.id(), out.velocityKind.id(), GLintptr(born));
     out.hasSurvivors = true;
     queried_[std::size_t(slot)] = true;
+    // The GPU copies the count into survivorCounts_ when the query ends: no wait here.
+    glGetQueryBufferObjectuiv(survivorQueries_[std::size_t(slot)].id(), survivorCounts_.id(), GL_QUERY_RESULT,
+                              GLintptr(1 - current_) * 4);
+  } else {
+    const std::uint32_t zero = 0;
+    glNamedBufferSubData(survivorCounts_.id(), GLintptr(1 - current_) * 4, 4, &zero);
   }
   glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, 0);
   glDisable(GL_RASTERIZER_DISCARD);
@@ -215,6 +228,12 @@ void ParticleGeoUpdate::drawSet(const BufferSet& set) const {
 }
 
 void ParticleGeoUpdate::draw() const { drawSet(sets_[std::size_t(current_)]); }
+
+ParticleBackend::Records ParticleGeoUpdate::records() const {
+  const BufferSet& set = sets_[std::size_t(current_)];
+  return {set.positionLife.id(), set.velocityKind.id(), survivorCounts_.id(), std::uint32_t(current_ * 4),
+          set.born};
+}
 
 std::size_t ParticleGeoUpdate::liveCount() const {
   if (updates_ == 0) return 0;

@@ -48,6 +48,7 @@ class ParticleGeoUpdate final : public ParticleBackend {
   void clear() override;
   void grow(std::size_t capacity) override;
   void draw() const override;
+  Records records() const override;
 
   std::size_t capacity() const override { return capacity_; }
   std::size_t liveCount() const override;
@@ -76,6 +77,7 @@ class ParticleGeoUpdate final : public ParticleBackend {
   int current_ = 0;
   gl::VertexArray emptyVao_;
   gl::Buffer simBlock_;
+  gl::Buffer survivorCounts_;  // per set: its survivors, written by the GPU from the query (records())
   gl::Framebuffer dummyTarget_;  // drawing needs a framebuffer, even with rasterizer discard
   gl::Renderbuffer dummyColor_;
   gl::Program updateProgram_, emitProgram_;

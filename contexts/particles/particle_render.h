@@ -19,6 +19,8 @@ class ParticleRender {
   ParticleRender();
   // Expects the view and render blocks bound (bindings 1 and 2).
   void draw(const ParticleBackend& particles, const ViewTargets& targets, RenderMode mode) const;
+  // The soft puff billboards are textured with (ParticleSplat draws with it too).
+  std::uint32_t sprite() const { return sprite_.id(); }
 
  private:
   gl::Program billboards_, points_;

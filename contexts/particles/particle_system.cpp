@@ -2,6 +2,7 @@
 
 #include "contexts/particles/particle_compute_update.h"
 #include "contexts/particles/particle_geo_update.h"
+#include "contexts/render/view_targets.h"
 #include "core/sim/capacity.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
@@ -44,17 +45,34 @@ void ParticleSystem::advance(const FramePacket& packet) {
   frame_ = packet.frame;
 }
 
-void ParticleSystem::render(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const {
+void ParticleSystem::render(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin,
+                            const View* view) const {
   if (stageTimers_) renderTimer_.begin();
-  renderParticles(targets);
+  renderParticles(targets, view);
   if (stageTimers_) renderTimer_.end();
   if (stageTimers_) postTimer_.begin();
   composite(targets, destination, origin);
   if (stageTimers_) postTimer_.end();
 }
 
-void ParticleSystem::renderParticles(const ViewTargets& targets) const {
-  render_.draw(*update_, targets, state_.render.mode);
+bool ParticleSystem::splats(const View* view, glm::ivec2 size) const {
+  const RenderSettings& r = state_.render;
+  if (r.mode == RenderMode::Splat) return true;
+  if (r.mode != RenderMode::Auto || !view) return false;
+  // A particle where the field is (or the first emitter, without a field).
+  glm::vec3 where = state_.emitters.empty() ? glm::vec3(0.0f) : state_.emitters[0].position;
+  if (field_ && field_->field) where = field_->placement.toRoom(field_->field->bounds().center());
+  const glm::vec4 eye = view->view * glm::vec4(where, 1.0f);
+  const float distance = std::max(-eye.z, 1e-3f);
+  const float pixels = r.size * view->projection[1][1] * 0.5f * float(size.y) / distance;
+  return pixels <= r.splatPixels;
+}
+
+void ParticleSystem::renderParticles(const ViewTargets& targets, const View* view) const {
+  if (splats(view, targets.size()))
+    splat_.draw(*update_, targets, render_.sprite());
+  else
+    render_.draw(*update_, targets, state_.render.mode);
 }
 
 void ParticleSystem::composite(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const {

@@ -13,6 +13,8 @@
 #include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_post.h"
 #include "contexts/particles/particle_render.h"
+#include "contexts/particles/particle_splat.h"
+#include "core/cave/view.h"
 #include "core/sim/frame_packet.h"
 #include "core/sim/particle_state.h"
 
@@ -40,10 +42,16 @@ class ParticleSystem {
   // Draws the particles of the view whose scene is in `targets` and composites
   // the result into `destination` at `origin`. The view and render blocks
   // must be bound.
-  void render(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const;
+  // `view` (the one the bound view block describes) lets render.mode = auto
+  // choose splats or billboards; without it auto draws billboards.
+  void render(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin,
+              const View* view = nullptr) const;
   // render()'s two halves, for callers that time them apart (sandstorm-bench):
   // the particles into the view's particle buffers, then the lit composite.
-  void renderParticles(const ViewTargets& targets) const;
+  void renderParticles(const ViewTargets& targets, const View* view = nullptr) const;
+  // Whether this view draws splats (render.mode splat, or auto and particles
+  // at the field's centre cover at most render.splat_pixels pixels).
+  bool splats(const View* view, glm::ivec2 size) const;
   void composite(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const;
 
   const ParticleState& state() const { return state_; }
@@ -62,6 +70,7 @@ class ParticleSystem {
   std::size_t capacityLimit_;
   std::unique_ptr<ParticleBackend> update_;
   ParticleRender render_;
+  ParticleSplat splat_;
   ParticlePost post_;
   std::shared_ptr<const FieldUpdate> field_;
   std::uint32_t frame_ = 0;

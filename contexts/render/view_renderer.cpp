@@ -31,7 +31,7 @@ void ViewRenderer::render(const ParticleSystem& particles, const View& view, glm
     scene_.setFieldBox(field->field->bounds(), field->placement);
   scene_.draw();
 
-  particles.render(targets_, destination, origin);
+  particles.render(targets_, destination, origin, &view);
 }
 
 }  // namespace sandstorm

@@ -1,0 +1,20 @@
+#version 450 core
+// ParticleSplat, step 1: one invocation turns the backend's live count (on the
+// GPU: ParticleBackend::records()) into the splat pass's dispatch size.
+layout(local_size_x = 1) in;
+layout(std430, binding = 4) readonly buffer Counts { uint counts[]; };
+layout(std430, binding = 5) writeonly buffer Dispatch {
+  uvec4 dispatch;  // x, y, z, (unused)
+  uint count;
+} args;
+layout(location = 0) uniform uint uCountIndex;
+layout(location = 1) uniform uint uCountAdd;
+
+const uint kGroupsPerRow = 32768u;
+
+void main() {
+  uint count = counts[uCountIndex] + uCountAdd;
+  uint groups = (count + 255u) / 256u;
+  args.dispatch = uvec4(min(groups, kGroupsPerRow), (groups + kGroupsPerRow - 1u) / kGroupsPerRow, 1u, 0u);
+  args.count = count;
+}
