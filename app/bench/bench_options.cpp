@@ -12,7 +12,7 @@ namespace {
 const char* kUsage = R"(sandstorm-bench: GPU particle benchmark (headless EGL)
 
   sandstorm-bench [--quick] [--json FILE] [--frames N] [--warmup N] [--size WxH]
-                  [--sections ceilings,update,render,walls]
+                  [--sections verify,ceilings,update,render,walls] [--verify-particles N]
                   [--particles 1e4,1e5,...] [--backends tf-gs,compute]
                   [--fields texture,equation] [--renderers billboards,points,splat]
                   [--billboard-limit N] [--walls 1,2,4,8] [--wall-particles N]
@@ -21,6 +21,8 @@ const char* kUsage = R"(sandstorm-bench: GPU particle benchmark (headless EGL)
 
 A fixed scene (a tornado, particles in steady state at each count) timed over
 fixed frames. Sections:
+  verify    the compute and transform-feedback backends on this GPU: the same
+            records, bit for bit, through births, deaths and compaction
   ceilings  buffer-copy bandwidth, a bare transform-feedback pass, a bare point draw
   update    the particle update per backend and field type
   render    scene, particles and composite of one view per renderer
@@ -80,6 +82,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       o.walls = {1, 2};
       o.wallParticles = 2000;
       o.particleSize = 0.2f;
+      o.verifyParticles = 3000;
     }
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -102,7 +105,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       o.size = {int(count(v.substr(0, x), a)), int(count(v.substr(x + 1), a))};
     } else if (a == "--sections") {
       o.sections = split(v);
-      checkChoices(o.sections, {"ceilings", "update", "render", "walls"}, a);
+      checkChoices(o.sections, {"verify", "ceilings", "update", "render", "walls"}, a);
     } else if (a == "--particles") {
       o.particles.clear();
       for (const std::string& p : split(v)) o.particles.push_back(count(p, a));
@@ -115,6 +118,8 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
     } else if (a == "--renderers") {
       o.renderers = split(v);
       checkChoices(o.renderers, {"billboards", "points", "splat"}, a);
+    } else if (a == "--verify-particles") {
+      o.verifyParticles = count(v, a);
     } else if (a == "--billboard-limit") {
       o.billboardLimit = count(v, a);
     } else if (a == "--walls") {

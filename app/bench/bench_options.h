@@ -16,7 +16,8 @@ struct BenchOptions {
   int frames = 20;  // timed frames; each stage's median is reported
   glm::ivec2 size{1920, 1080};
   float particleSize = 0.045f;  // m: about 3 pixels across at the views' distance
-  std::vector<std::string> sections{"ceilings", "update", "render", "walls"};
+  std::vector<std::string> sections{"verify", "ceilings", "update", "render", "walls"};
+  std::size_t verifyParticles = 1000000;
   std::vector<std::size_t> particles{10000, 100000, 1000000, 10000000, 30000000, 100000000};
   std::vector<std::string> backends{"tf-gs", "compute"};
   std::vector<std::string> fields{"texture", "equation"};

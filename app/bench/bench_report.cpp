@@ -39,8 +39,9 @@ void printTable(const Report& r) {
   std::printf("%-8s %-11s %-8s %-8s %-10s %-8s %6s %5s %10s %10s %9s  %s\n", "section", "stage", "backend",
               "field", "renderer", "sim", "N", "walls", "GPU ms", "Mpart/s", "GB/s", "ratio to ceiling");
   for (const Row& row : r.rows) {
-    char ratio[64] = "";
+    char ratio[200] = "";
     if (row.ratio > 0) std::snprintf(ratio, sizeof ratio, "%.2f of %s", row.ratio, row.ceiling.c_str());
+    if (!row.note.empty()) std::snprintf(ratio, sizeof ratio, "%s", row.note.c_str());
     char rate[32] = "-", bytes[32] = "-";
     if (row.particlesPerS > 0) std::snprintf(rate, sizeof rate, "%.1f", row.particlesPerS * 1e-6);
     if (row.bytesPerS > 0) std::snprintf(bytes, sizeof bytes, "%.1f", row.bytesPerS * 1e-9);
@@ -67,7 +68,7 @@ void writeJson(const Report& r, const std::filesystem::path& path) {
         << ", \"height\": " << row.height << ", \"gpu_ms\": " << row.ms
         << ", \"particles_per_s\": " << row.particlesPerS << ", \"bytes_per_s\": " << row.bytesPerS
         << ", \"ceiling\": " << quoted(row.ceiling) << ", \"ratio\": " << row.ratio
-        << ", \"wall_clock_ms\": " << row.wallMs << "}" << (i + 1 < r.rows.size() ? "," : "") << "\n";
+        << ", \"wall_clock_ms\": " << row.wallMs << ", \"note\": " << quoted(row.note) << "}" << (i + 1 < r.rows.size() ? "," : "") << "\n";
   }
   out << "  ]\n}\n";
   if (!out) throw Error(concat("sandstorm-bench: writing ", path.string(), " failed"));

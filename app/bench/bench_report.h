@@ -22,6 +22,7 @@ struct Row {
   std::string ceiling;        // what `ratio` compares with
   double ratio = 0;           // this stage's rate over the ceiling's (0: none)
   double wallMs = 0;          // walls: wall-clock milliseconds per frame (CPU included)
+  std::string note;
 };
 
 struct Report {

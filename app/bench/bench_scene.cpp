@@ -33,6 +33,11 @@ ParticleState benchState(const SceneChoice& c) {
     throw Error(concat("sandstorm-bench: unknown renderer '", c.renderer, "'"));
   s.render.size = c.particleSize;
   s.field.mode = c.field == "equation" ? FieldMode::Equation : FieldMode::Texture;
+  if (c.turnover) {
+    s.sim.boundary = BoundaryMode::Kill;
+    e.lifetime = 0.3f;
+    e.lifetimeVariance = 0.2f;
+  }
   return s;
 }
 
@@ -58,7 +63,7 @@ FramePacket benchPacket(std::uint32_t frame, const SceneChoice& c,
   p.dt = p.simDt = 1.0f / 60.0f;
   p.time = frame / 60.0;
   p.seed = 0x5A4D5700ull;
-  p.emission = {frame == 0 ? std::uint32_t(c.particles) : 0u};
+  p.emission = {frame == 0 ? std::uint32_t(c.particles) : c.turnover ? std::uint32_t(c.particles / 8) : 0u};
   if (frame == 0) p.fieldUpdate = field;
   return p;
 }

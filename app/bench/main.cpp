@@ -38,6 +38,10 @@ class Bench {
       return false;
     };
     plan(has("ceilings"), has("update"), has("render"), has("walls"));
+    if (has("verify")) {
+      ++total_;
+      for (const std::string& field : o_.fields) verify(field);
+    }
     copyBandwidth();
     if (has("ceilings"))
       for (std::size_t n : o_.particles) {
@@ -61,7 +65,10 @@ class Bench {
  private:
   void plan(bool ceilings, bool update, bool render, bool walls) {
     total_ = 1;
-    if (ceilings) total_ += 2 * int(o_.particles.size());
+    bool tf = false;
+    for (const std::string& b : o_.backends) tf = tf || b == "tf-gs";
+    if (ceilings || (update && tf)) total_ += int(o_.particles.size());  // bare transform feedback
+    if (ceilings || render) total_ += int(o_.particles.size());          // bare point draw
     if (update) total_ += int(o_.particles.size() * o_.backends.size() * o_.fields.size());
     if (render)
       for (std::size_t n : o_.particles)
@@ -70,6 +77,7 @@ class Bench {
   }
 
   void progress(const std::string& what) {
+    writeJson(report_, o_.json);  // what is measured so far survives a run cut short
     ++done_;
     std::fprintf(stderr, "[%d/%d] %s\n", done_, total_, what.c_str());
     std::fflush(stderr);
@@ -89,6 +97,42 @@ class Bench {
     } catch (const std::exception& e) {
       std::fprintf(stderr, "  %s failed: %s\n", what.c_str(), e.what());
     }
+  }
+
+  // Both backends through the same packets on this GPU: identical records?
+  void verify(const std::string& field) {
+    const std::size_t n = o_.verifyParticles;
+    progress(concat("verify: compute against tf-gs, ", field, " field, ", n, " particles with turnover"));
+    if (!fits(8 * n * 16.0, "verify")) return;
+    guarded("verify", [&] {
+      const SceneChoice c{.particles = n, .field = field, .particleSize = o_.particleSize, .turnover = true};
+      const auto fieldUpdate = benchField(field);
+      auto tf = makeSystem(c, "tf-gs");
+      auto compute = makeSystem(c, "compute");
+      std::size_t compared = 0, identical = 0, frames = 0, countsEqual = 0;
+      float worst = 0.0f;
+      for (int f = 0; f < 40; ++f) {
+        const FramePacket packet = benchPacket(std::uint32_t(f), c, fieldUpdate);
+        tf->advance(packet);
+        compute->advance(packet);
+        if (f % 8 != 7) continue;
+        const std::vector<Particle> a = tf->update().readBack(), b = compute->update().readBack();
+        ++frames;
+        countsEqual += a.size() == b.size() ? 1 : 0;
+        for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
+          ++compared;
+          const bool same = a[i].positionLife == b[i].positionLife && a[i].velocityKind == b[i].velocityKind;
+          identical += same ? 1 : 0;
+          worst = std::max(worst, glm::length(a[i].position() - b[i].position()));
+        }
+      }
+      Row row{.section = "verify", .stage = "agreement", .backend = "compute", .field = field, .particles = n};
+      row.ceiling = "tf-gs";
+      row.ratio = compared ? double(identical) / double(compared) : 0.0;
+      row.note = concat(identical, " of ", compared, " records identical over ", frames, " frames (", countsEqual,
+                        " with equal counts), max |dx| ", worst, " m");
+      report_.rows.push_back(row);
+    });
   }
 
   void copyBandwidth() {
@@ -330,6 +374,9 @@ void printTargets(const Report& r) {
     return best;
   };
   std::printf("\nTargets (largest N measured):\n");
+  for (const Row& row : r.rows)
+    if (row.section == "verify")
+      std::printf("  compute = tf-gs on this GPU (%s field): %s\n", row.field.c_str(), row.note.c_str());
   if (const Row* c = largest([](const Row& x) { return x.section == "update" && x.backend == "compute" && x.field == "texture"; }))
     std::printf("  compute update, %zu particles: %.1f GB/s = %.2f of copy bandwidth %.1f GB/s (target >= 0.60)\n",
                 c->particles, c->bytesPerS * 1e-9, c->ratio, r.copyBytesPerS * 1e-9);

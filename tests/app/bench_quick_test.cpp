@@ -66,12 +66,12 @@ TEST(BenchQuick, PrintsTheTableAndWritesEverySectionToJson) {
       EXPECT_GT(std::stod(field(line, "particles")), 0.0) << line;
     }
   }
-  for (const char* expected : {"ceilings/copy", "ceilings/bare-tf", "ceilings/bare-points", "update/update",
+  for (const char* expected : {"verify/agreement", "ceilings/copy", "ceilings/bare-tf", "ceilings/bare-points", "update/update",
                                "render/scene", "render/particles", "render/post", "walls/update", "walls/views",
                                "walls/frame"})
     EXPECT_TRUE(seen.count(expected)) << expected;
   // 2 particle counts x 2 backends x 2 fields of updates; 3 renderers x 2 counts x 3 stages.
-  EXPECT_GE(rows, 1 + 4 + 8 + 18 + 2 * 2 * 2 * 3);
+  EXPECT_GE(rows, 2 + 1 + 4 + 8 + 18 + 2 * 2 * 2 * 3);
   for (const char* key : {"\"device\"", "\"command\"", "\"copy_bytes_per_s\""})
     EXPECT_NE(lines[1].find(key) == std::string::npos && lines[2].find(key) == std::string::npos &&
                   lines[3].find(key) == std::string::npos,
