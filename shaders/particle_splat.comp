@@ -49,7 +49,6 @@ void main() {
 
   float particleDistance = clip.w;  // camera-space distance of the centre
   float opacity = mix(look.colorBirth.a, look.colorDeath.a, age);
-  vec3 color = mix(look.colorBirth.rgb, look.colorDeath.rgb, age);
   ivec2 lo = max(ivec2(floor(pixel - radiusPx)), ivec2(0));
   ivec2 hi = min(ivec2(ceil(pixel + radiusPx)), ivec2(size) - 1);
   for (int y = lo.y; y <= hi.y; ++y)
@@ -63,16 +62,13 @@ void main() {
       float alpha = opacity * shape * fade;
       if (alpha < 1.0 / 512.0) continue;
       vec3 normal = normalize(corner.x * right + corner.y * up + sqrt(1.0 - r2) * n);
-      uint base = (uint(y) * uint(size.x) + uint(x)) * kSplatChannels;
-      vec3 c = alpha * color * kSplatScale + 0.5;
-      atomicAdd(accum[base + 0u], uint(c.r));
-      atomicAdd(accum[base + 1u], uint(c.g));
-      atomicAdd(accum[base + 2u], uint(c.b));
-      atomicAdd(accum[base + 3u], uint(alpha * kSplatScale + 0.5));
-      atomicAdd(accum[base + 4u], uint(-log(1.0 - min(alpha, 0.999)) * kSplatScale + 0.5));
+      uint base = (uint(y) * uint(size.x) + uint(x)) * kSplatStride;
+      atomicAdd(accum[base + 0u], uint(alpha * kSplatScale + 0.5));
+      atomicAdd(accum[base + 1u], uint(alpha * age * kSplatScale + 0.5));
+      atomicAdd(accum[base + 2u], uint(-log(1.0 - min(alpha, 0.999)) * kSplatScale + 0.5));
       ivec3 nn = ivec3(round(alpha * normal * kSplatScale));
-      atomicAdd(accum[base + 5u], uint(nn.x));
-      atomicAdd(accum[base + 6u], uint(nn.y));
-      atomicAdd(accum[base + 7u], uint(nn.z));
+      atomicAdd(accum[base + 3u], uint(nn.x));
+      atomicAdd(accum[base + 4u], uint(nn.y));
+      atomicAdd(accum[base + 5u], uint(nn.z));
     }
 }

@@ -18,6 +18,7 @@ const char* kUsage = R"(sandstorm-bench: GPU particle benchmark (headless EGL)
                   [--billboard-limit N] [--walls 1,2,4,8] [--wall-particles N]
                   [--wall-sims per-wall,shared] [--wall-renderers billboards,splat]
                   [--wall-backend compute] [--particle-size M] [--memory-gib G]
+                  [--integrator euler|rk2|rk4]
 
 A fixed scene (a tornado, particles in steady state at each count) timed over
 fixed frames. Sections:
@@ -138,6 +139,9 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       checkChoices({v}, {"tf-gs", "compute"}, a);
     } else if (a == "--particle-size") {
       o.particleSize = float(number(v, a));
+    } else if (a == "--integrator") {
+      o.integrator = v;
+      checkChoices({v}, {"euler", "rk2", "rk4"}, a);
     } else if (a == "--memory-gib") {
       o.memoryGiB = number(v, a);
     } else {

@@ -28,6 +28,7 @@ struct BenchOptions {
   std::vector<std::string> wallSims{"per-wall", "shared"};
   std::vector<std::string> wallRenderers{"billboards", "splat"};
   std::string wallBackend = "compute";
+  std::string integrator = "rk2";  // euler | rk2 | rk4 (tracer particles)
   double memoryGiB = 0;  // 0: what the driver reports, else unlimited
 };
 

@@ -58,7 +58,8 @@ void writeJson(const Report& r, const std::filesystem::path& path) {
   std::ofstream out(path);
   if (!out) throw Error(concat("sandstorm-bench: cannot write ", path.string()));
   out << "{\n  \"device\": " << quoted(r.device) << ",\n  \"command\": " << quoted(r.command)
-      << ",\n  \"copy_bytes_per_s\": " << r.copyBytesPerS << ",\n  \"rows\": [\n";
+      << ",\n  \"copy_bytes_per_s\": " << r.copyBytesPerS << ",\n  \"shader_copy_bytes_per_s\": "
+      << r.shaderCopyBytesPerS << ",\n  \"rows\": [\n";
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
     const Row& row = r.rows[i];
     out << "    {\"section\": " << quoted(row.section) << ", \"stage\": " << quoted(row.stage)

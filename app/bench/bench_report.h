@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstddef>
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -28,7 +29,11 @@ struct Row {
 struct Report {
   std::string device;
   std::string command;
-  double copyBytesPerS = 0;
+  double copyBytesPerS = 0;        // glCopyNamedBufferSubData
+  double shaderCopyBytesPerS = 0;  // a compute shader's copy
+  // The bandwidth ceiling stages are compared with: the larger of the two.
+  double bandwidth() const { return std::max(copyBytesPerS, shaderCopyBytesPerS); }
+  std::string bandwidthName() const { return shaderCopyBytesPerS > copyBytesPerS ? "copy-shader" : "copy"; }
   std::vector<Row> rows;
 };
 

@@ -12,7 +12,7 @@ ParticleState benchState(const SceneChoice& c) {
   ParticleState s;
   s.sim.maximum = int(c.particles);
   s.sim.motion = MotionModel::Tracer;
-  s.sim.integrator = Integrator::RK2;
+  s.sim.integrator = c.integrator == "euler" ? Integrator::Euler : c.integrator == "rk4" ? Integrator::RK4 : Integrator::RK2;
   s.sim.boundary = BoundaryMode::Clamp;
   Emitter& e = s.emitters[0];
   e.shape = EmitterShape::Disc;

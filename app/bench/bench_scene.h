@@ -20,6 +20,7 @@ struct SceneChoice {
   std::string field = "texture";       // texture | equation
   std::string renderer = "billboards";  // billboards | points | splat
   float particleSize = 0.045f;
+  std::string integrator = "rk2";
   bool turnover = false;  // short lives, deaths at the box: every frame births, deaths and compaction
 };
 

@@ -46,6 +46,7 @@ class Bench {
     if (has("ceilings"))
       for (std::size_t n : o_.particles) {
         bareTf(n);
+        bareCompute(n);
         barePoints(n);
       }
     if (has("update"))
@@ -69,6 +70,7 @@ class Bench {
     for (const std::string& b : o_.backends) tf = tf || b == "tf-gs";
     if (ceilings || (update && tf)) total_ += int(o_.particles.size());  // bare transform feedback
     if (ceilings || render) total_ += int(o_.particles.size());          // bare point draw
+    if (ceilings || update) total_ += int(o_.particles.size());          // bare compute update
     if (update) total_ += int(o_.particles.size() * o_.backends.size() * o_.fields.size());
     if (render)
       for (std::size_t n : o_.particles)
@@ -105,7 +107,7 @@ class Bench {
     progress(concat("verify: compute against tf-gs, ", field, " field, ", n, " particles with turnover"));
     if (!fits(8 * n * 16.0, "verify")) return;
     guarded("verify", [&] {
-      const SceneChoice c{.particles = n, .field = field, .particleSize = o_.particleSize, .turnover = true};
+      const SceneChoice c{.particles = n, .field = field, .particleSize = o_.particleSize, .integrator = o_.integrator, .turnover = true};
       const auto fieldUpdate = benchField(field);
       auto tf = makeSystem(c, "tf-gs");
       auto compute = makeSystem(c, "compute");
@@ -138,12 +140,37 @@ class Bench {
   void copyBandwidth() {
     std::size_t bytes = o_.quick ? (16u << 20) : (std::size_t(1) << 30);
     bytes = std::min(bytes, memory_ / 3);
-    progress(concat("ceiling: buffer copy of ", bytes >> 20, " MiB"));
+    progress(concat("ceiling: buffer copy of ", bytes >> 20, " MiB (glCopyNamedBufferSubData and a compute shader)"));
     report_.copyBytesPerS = bench::copyBandwidth(bytes, o_.frames);
-    Row row{.section = "ceilings", .stage = "copy"};
-    row.ms = report_.copyBytesPerS > 0 ? 2.0 * double(bytes) / report_.copyBytesPerS * 1e3 : 0;
-    row.bytesPerS = report_.copyBytesPerS;
-    report_.rows.push_back(row);
+    report_.shaderCopyBytesPerS = bench::shaderCopyBandwidth(bytes, o_.frames);
+    for (const auto& [stage, rate] : {std::pair{"copy", report_.copyBytesPerS}, {"copy-shader", report_.shaderCopyBytesPerS}}) {
+      Row row{.section = "ceilings", .stage = stage};
+      row.ms = rate > 0 ? 2.0 * double(bytes) / rate * 1e3 : 0;
+      row.bytesPerS = rate;
+      report_.rows.push_back(row);
+    }
+  }
+
+  double bareCompute(std::size_t n) {
+    if (auto it = bareComputeMs_.find(n); it != bareComputeMs_.end()) return it->second;
+    progress(concat("ceiling: bare compute update (no physics), ", n, " records"));
+    double ms = 0;
+    if (fits(4 * n * 16.0, "bare compute update"))
+      guarded("bare compute update", [&] {
+        BareComputeUpdate bare(n);
+        ms = bare.passMs(o_.frames);
+      });
+    bareComputeMs_[n] = ms;
+    if (ms > 0) {
+      Row row{.section = "ceilings", .stage = "bare-compute", .particles = n};
+      row.ms = ms;
+      row.particlesPerS = double(n) / (ms * 1e-3);
+      row.bytesPerS = 2 * kRecordBytes * double(n) / (ms * 1e-3);
+      row.ceiling = report_.bandwidthName();
+      row.ratio = ratio(row.bytesPerS, report_.bandwidth());
+      report_.rows.push_back(row);
+    }
+    return ms;
   }
 
   double bareTf(std::size_t n) {
@@ -161,8 +188,8 @@ class Bench {
       row.ms = ms;
       row.particlesPerS = double(n) / (ms * 1e-3);
       row.bytesPerS = 2 * kRecordBytes * double(n) / (ms * 1e-3);
-      row.ceiling = "copy";
-      row.ratio = ratio(row.bytesPerS, report_.copyBytesPerS);
+      row.ceiling = report_.bandwidthName();
+      row.ratio = ratio(row.bytesPerS, report_.bandwidth());
       report_.rows.push_back(row);
     }
     return ms;
@@ -201,7 +228,7 @@ class Bench {
     progress(concat("update: ", backend, ", ", field, " field, ", n, " particles"));
     if (!fits(4 * n * 16.0, "update")) return;
     guarded("update", [&] {
-      const SceneChoice c{.particles = n, .field = field, .particleSize = o_.particleSize};
+      const SceneChoice c{.particles = n, .field = field, .particleSize = o_.particleSize, .integrator = o_.integrator};
       const auto fieldUpdate = benchField(field);
       auto system = makeSystem(c, backend);
       GpuStopwatch watch;
@@ -219,8 +246,10 @@ class Bench {
       row.particlesPerS = double(live) / (ms * 1e-3);
       row.bytesPerS = 2 * kRecordBytes * double(live) / (ms * 1e-3);
       if (backend == "compute") {
-        row.ceiling = "copy";
-        row.ratio = ratio(row.bytesPerS, report_.copyBytesPerS);
+        row.ceiling = report_.bandwidthName();
+        row.ratio = ratio(row.bytesPerS, report_.bandwidth());
+        const double bare = bareCompute(n);
+        if (bare > 0) row.note = concat(row.ratio, " of ", row.ceiling, "; ", bare / ms, " of bare-compute");
       } else {
         const double bare = bareTf(n);
         row.ceiling = "bare-tf";
@@ -235,7 +264,7 @@ class Bench {
     progress(concat("render: ", renderer, ", ", n, " particles, one ", o_.size.x, "x", o_.size.y, " view"));
     if (!fits(4 * n * 16.0, "render")) return;
     guarded("render", [&] {
-      const SceneChoice c{.particles = n, .renderer = renderer, .particleSize = o_.particleSize};
+      const SceneChoice c{.particles = n, .renderer = renderer, .particleSize = o_.particleSize, .integrator = o_.integrator};
       const auto fieldUpdate = benchField("texture");
       auto system = makeSystem(c, o_.wallBackend);
       BenchView view;
@@ -271,8 +300,8 @@ class Bench {
       report_.rows.push_back(particles);
       Row post = row("post", watches.post);
       post.bytesPerS = 24.0 * pixels / (post.ms * 1e-3);  // reads 4 + 8 + 8 bytes a pixel, writes 4
-      post.ceiling = "copy";
-      post.ratio = ratio(post.bytesPerS, report_.copyBytesPerS);
+      post.ceiling = report_.bandwidthName();
+      post.ratio = ratio(post.bytesPerS, report_.bandwidth());
       report_.rows.push_back(post);
     });
   }
@@ -284,7 +313,7 @@ class Bench {
     const int systems = sim == "shared" ? 1 : count;
     if (!fits(4 * n * 16.0 * systems, "walls")) return;
     guarded("walls", [&] {
-      const SceneChoice c{.particles = n, .renderer = renderer, .particleSize = o_.particleSize};
+      const SceneChoice c{.particles = n, .renderer = renderer, .particleSize = o_.particleSize, .integrator = o_.integrator};
       const auto fieldUpdate = benchField("texture");
       std::vector<std::unique_ptr<ParticleSystem>> sims;
       for (int s = 0; s < systems; ++s) sims.push_back(makeSystem(c, o_.wallBackend));
@@ -361,7 +390,7 @@ class Bench {
   Report& report_;
   std::size_t memory_;
   int total_ = 0, done_ = 0;
-  std::map<std::size_t, double> bareTfMs_, barePointsMs_;
+  std::map<std::size_t, double> bareTfMs_, barePointsMs_, bareComputeMs_;
   std::shared_ptr<const HeightMap> terrain_ = std::make_shared<HeightMap>(HeightMap::flat(0.0f));
 };
 
@@ -378,8 +407,10 @@ void printTargets(const Report& r) {
     if (row.section == "verify")
       std::printf("  compute = tf-gs on this GPU (%s field): %s\n", row.field.c_str(), row.note.c_str());
   if (const Row* c = largest([](const Row& x) { return x.section == "update" && x.backend == "compute" && x.field == "texture"; }))
-    std::printf("  compute update, %zu particles: %.1f GB/s = %.2f of copy bandwidth %.1f GB/s (target >= 0.60)\n",
-                c->particles, c->bytesPerS * 1e-9, c->ratio, r.copyBytesPerS * 1e-9);
+    std::printf("  compute update, %zu particles: %.1f GB/s = %.2f of %s bandwidth %.1f GB/s (target >= 0.60); "
+                "glCopyNamedBufferSubData %.1f GB/s\n",
+                c->particles, c->bytesPerS * 1e-9, c->ratio, r.bandwidthName().c_str(), r.bandwidth() * 1e-9,
+                r.copyBytesPerS * 1e-9);
   if (const Row* t = largest([](const Row& x) { return x.section == "update" && x.backend == "tf-gs" && x.field == "texture"; }))
     std::printf("  tf-gs update, %zu particles: %.3f ms = %.2f of the bare transform-feedback pass's speed (target >= 0.80)\n",
                 t->particles, t->ms, t->ratio);

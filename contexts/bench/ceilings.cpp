@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "contexts/bench/gpu_stopwatch.h"
@@ -51,6 +52,69 @@ double copyBandwidth(std::size_t bytes, int repeats) {
   }
   const double ms = median(watch.intervalsMs());
   return ms > 0.0 ? 2.0 * double(bytes) / (ms * 1e-3) : 0.0;
+}
+
+double shaderCopyBandwidth(std::size_t bytes, int repeats) {
+  const std::size_t records = bytes / 16;
+  gl::Buffer from = recordBuffer(records, 1.0f), to = recordBuffer(records, 0.0f);
+  gl::Program copy(std::vector<std::string>{"bench_copy.comp"});
+  copy.use();
+  glProgramUniform1ui(copy.id(), 0, GLuint(records));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, from.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, to.id());
+  const std::size_t groups = (records + 255) / 256;
+  const GLuint x = GLuint(std::min<std::size_t>(groups, 32768)), y = GLuint((groups + 32767) / 32768);
+  GpuStopwatch watch;
+  for (int r = -1; r < repeats; ++r) {
+    if (r >= 0) watch.begin();
+    glDispatchCompute(x, y, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    if (r >= 0) watch.end();
+  }
+  const double ms = median(watch.intervalsMs());
+  return ms > 0.0 ? 2.0 * double(records * 16) / (ms * 1e-3) : 0.0;
+}
+
+BareComputeUpdate::BareComputeUpdate(std::size_t records)
+    : records_(records),
+      in_{recordBuffer(records, 0.5f), recordBuffer(records, 0.25f)},
+      out_{recordBuffer(records, 0.0f), recordBuffer(records, 0.0f)},
+      control_(gl::createBuffer()),
+      tiles_(gl::createBuffer()),
+      simBlock_(gl::createBuffer()),
+      program_(gl::ProgramDesc{{"particle_update.comp"}, {"BARE_UPDATE"}, {}}) {
+  glNamedBufferStorage(control_.id(), 64, nullptr, GL_DYNAMIC_STORAGE_BIT);
+  glNamedBufferStorage(tiles_.id(), GLsizeiptr((records / 1024 + 2) * 4), nullptr, 0);
+  glNamedBufferStorage(simBlock_.id(), 4096, nullptr, 0);
+}
+
+double BareComputeUpdate::passMs(int repeats) {
+  const std::uint32_t tiles = std::uint32_t((records_ + 1023) / 1024);
+  const std::uint32_t control[16] = {std::uint32_t(records_), 0, 0, tiles};  // count[0], count[1], ticket, tiles
+  program_.use();
+  glProgramUniform1i(program_.id(), 0, 0);
+  glProgramUniform1ui(program_.id(), 1, 0);
+  glProgramUniform1ui(program_.id(), 2, GLuint(records_));
+  glProgramUniform1ui(program_.id(), 3, 1u << 20);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, simBlock_.id());
+  for (GLuint b = 0; b < 2; ++b) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, b, in_[b].id());
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2 + b, out_[b].id());
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, control_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, tiles_.id());
+  const GLuint zero = 0;
+  GpuStopwatch watch;
+  for (int r = -1; r < repeats; ++r) {
+    glNamedBufferSubData(control_.id(), 0, sizeof(control), control);
+    glClearNamedBufferData(tiles_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    if (r >= 0) watch.begin();
+    glDispatchCompute(std::min(tiles, 32768u), (tiles + 32767) / 32768, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    if (r >= 0) watch.end();
+  }
+  return median(watch.intervalsMs());
 }
 
 BareTransformFeedback::BareTransformFeedback(std::size_t records)

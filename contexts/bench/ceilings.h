@@ -5,6 +5,7 @@
 //   - BareTransformFeedback: a pass-through vertex stage captured by transform
 //     feedback, records laid out as the particle buffers (two vec4 streams in,
 //     two out), no geometry stage;
+//   - shaderCopyBandwidth, BareComputeUpdate: the same from compute shaders;
 //   - BarePointDraw: the same records drawn as one-pixel points with a trivial
 //     vertex and fragment stage into an RGBA16F target.
 // All need a current GL context.
@@ -21,6 +22,23 @@ namespace sandstorm::bench {
 
 // Bytes per second (read + written), the median of `repeats` copies of `bytes`.
 double copyBandwidth(std::size_t bytes, int repeats);
+// The same through a compute shader (vec4 loads and stores), which a driver
+// cannot hand to a copy engine: the bandwidth shaders themselves see.
+double shaderCopyBandwidth(std::size_t bytes, int repeats);
+
+// The compute update's own kernel (particle_update.comp) with the physics left
+// out (BARE_UPDATE: every record survives unchanged): its data movement and
+// scan over `records` records, the ceiling of the compute backend's structure.
+class BareComputeUpdate {
+ public:
+  explicit BareComputeUpdate(std::size_t records);
+  double passMs(int repeats);
+
+ private:
+  std::size_t records_;
+  gl::Buffer in_[2], out_[2], control_, tiles_, simBlock_;
+  gl::Program program_;
+};
 
 class BareTransformFeedback {
  public:

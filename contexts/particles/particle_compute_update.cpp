@@ -8,6 +8,7 @@
 #include <numeric>
 #include <string>
 
+#include "contexts/particles/record_readback.h"
 #include "contexts/particles/sim_block.h"
 #include "core/util/error.h"
 
@@ -240,20 +241,15 @@ ParticleBackend::Records ParticleComputeUpdate::records() const {
 }
 
 std::size_t ParticleComputeUpdate::liveCount() const {
-  if (updates_ == 0) return 0;
-  std::uint32_t count = 0;
-  glGetNamedBufferSubData(control_.id(), kCountOffset + current_ * 4, 4, &count);
-  return count;
+  // From the mapped history, never from the control block (record_readback.h says why).
+  return updates_ == 0 ? 0 : countAfter(updates_ - 1);
 }
 
 std::vector<Particle> ParticleComputeUpdate::readBack() const {
   const std::size_t count = liveCount();
   const BufferSet& set = sets_[std::size_t(current_)];
-  std::vector<glm::vec4> pos(count), vel(count);
-  if (count > 0) {
-    glGetNamedBufferSubData(set.positionLife.id(), 0, GLsizeiptr(count) * kRecord, pos.data());
-    glGetNamedBufferSubData(set.velocityKind.id(), 0, GLsizeiptr(count) * kRecord, vel.data());
-  }
+  const std::vector<glm::vec4> pos = readRecords(set.positionLife.id(), count);
+  const std::vector<glm::vec4> vel = readRecords(set.velocityKind.id(), count);
   std::vector<Particle> particles(count);
   for (std::size_t i = 0; i < count; ++i) particles[i] = Particle{pos[i], vel[i]};
   return particles;

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "contexts/particles/record_readback.h"
 #include "contexts/particles/sim_block.h"
 #include "core/util/error.h"
 
@@ -243,11 +244,8 @@ std::size_t ParticleGeoUpdate::liveCount() const {
 std::vector<Particle> ParticleGeoUpdate::readBack() const {
   const std::size_t count = liveCount();
   const BufferSet& set = sets_[std::size_t(current_)];
-  std::vector<glm::vec4> pos(count), vel(count);
-  if (count > 0) {
-    glGetNamedBufferSubData(set.positionLife.id(), 0, GLsizeiptr(count) * kRecord, pos.data());
-    glGetNamedBufferSubData(set.velocityKind.id(), 0, GLsizeiptr(count) * kRecord, vel.data());
-  }
+  const std::vector<glm::vec4> pos = readRecords(set.positionLife.id(), count);
+  const std::vector<glm::vec4> vel = readRecords(set.velocityKind.id(), count);
   std::vector<Particle> particles(count);
   for (std::size_t i = 0; i < count; ++i) particles[i] = Particle{pos[i], vel[i]};
   return particles;

@@ -9,7 +9,7 @@
 namespace sandstorm {
 namespace {
 
-constexpr std::size_t kChannels = 8;  // splat_common.glsl
+constexpr std::size_t kChannels = 8;  // kSplatStride of splat_common.glsl
 
 // Storage-buffer bindings of the splat shaders.
 enum Binding : GLuint { kPositionLife = 0, kVelocityKind = 1, kCounts = 4, kDispatch = 5, kAccumulation = 6 };
