@@ -62,7 +62,7 @@ double shaderCopyBandwidth(std::size_t bytes, int repeats) {
   glProgramUniform1ui(copy.id(), 0, GLuint(records));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, from.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, to.id());
-  const std::size_t groups = (records + 255) / 256;
+  const std::size_t groups = (records + 1023) / 1024;
   const GLuint x = GLuint(std::min<std::size_t>(groups, 32768)), y = GLuint((groups + 32767) / 32768);
   GpuStopwatch watch;
   for (int r = -1; r < repeats; ++r) {

@@ -3,6 +3,8 @@
 #include <epoxy/gl.h>
 
 #include <chrono>
+#include <cstdlib>
+#include <string_view>
 
 #include "core/util/error.h"
 
@@ -18,7 +20,11 @@ void FieldTexture::upload(const VectorField& field) {
                        "texture limit of ", maxSize, " per axis; resample it to a coarser grid"));
   if (!texture_ || dims_ != d) {
     texture_ = gl::createTexture(GL_TEXTURE_3D);
-    glTextureStorage3D(texture_.id(), 1, GL_RGB32F, d.x, d.y, d.z);
+    // RGBA32F, not RGB32F: the same values (the shaders read .xyz with texelFetch),
+    // but a format GPUs fetch natively. SANDSTORM_FIELD_FORMAT=rgb32f measures the other.
+    const char* format = std::getenv("SANDSTORM_FIELD_FORMAT");
+    const GLenum internal = format && std::string_view(format) == "rgb32f" ? GL_RGB32F : GL_RGBA32F;
+    glTextureStorage3D(texture_.id(), 1, internal, d.x, d.y, d.z);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     dims_ = d;
