@@ -90,6 +90,17 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("sim.emitting", T::Bool, 0, 1, "", "Start/stop emission (existing particles live on)",
                     SIM(emitting)));
   v.push_back(entry("sim.paused", T::Bool, 0, 1, "", "Pause: time stands still", SIM(paused)));
+  v.push_back(entry("sim.lod", T::Bool, 0, 1, "",
+                    "Level of detail (Reeves): emit fewer particles when the system covers little of the view "
+                    "or frames exceed the budget",
+                    SIM(lod)));
+  v.push_back(entry("sim.lod_coverage", T::Float, 0, 1, "",
+                    "Level of detail: view coverage (fraction of a 90-degree cone) from which emission is full",
+                    SIM(lodCoverage)));
+  v.push_back(entry("sim.lod_budget_ms", T::Float, 0, 1000, "ms",
+                    "Level of detail: frame-time budget; longer frames lower emission (0: off)", SIM(lodBudgetMs)));
+  v.push_back(entry("sim.lod_min_scale", T::Float, 0, 1, "",
+                    "Level of detail: emission never drops below this fraction of the rates", SIM(lodMinScale)));
   // How particles look.
   v.push_back(enumEntry("render.mode", {"points", "billboards", "splat", "auto"},
                         "Draw particles as points, lit spherical billboards, splats (billboards' look, "

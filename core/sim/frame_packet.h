@@ -39,6 +39,7 @@ struct FramePacket {
   std::shared_ptr<const FieldUpdate> fieldUpdate;  // non-null when the field changed
   Viewer viewer;  // the head and the navigation, sampled once for every wall
   float fieldBlend = 0.0f;  // weight towards fieldUpdate's `next` frame (time-varying fields)
+  float lodScale = 1.0f;    // the level of detail's emission scale, already in `emission` (for display)
 
   SimStep step() const { return SimStep{frame, simDt, Seed::from(seed), emission, fieldBlend}; }
 };

@@ -77,6 +77,11 @@ void MainContext::setViewer(const Viewer& viewer) {
   viewer_ = viewer;
 }
 
+void MainContext::reportFrameTime(double ms) {
+  std::lock_guard lock(mutex_);
+  reportedFrameMs_ = ms;
+}
+
 double MainContext::time() const {
   std::lock_guard lock(mutex_);
   return time_;
@@ -96,6 +101,11 @@ FramePacket MainContext::next() {
     lastTick_ = now;
     dt = std::clamp(dt, 0.0f, options_.maxDt);
   }
+
+  const auto now = std::chrono::steady_clock::now();
+  std::optional<double> measuredMs;
+  if (lastFrame_) measuredMs = std::chrono::duration<double, std::milli>(now - *lastFrame_).count();
+  lastFrame_ = now;
 
   std::lock_guard lock(mutex_);
   FramePacket packet;
@@ -143,7 +153,20 @@ FramePacket MainContext::next() {
   if (fieldChanged_) packet.fieldUpdate = field_;
   fieldChanged_ = false;
 
-  packet.emission = emissionCounts(state_, packet.simDt, Seed::from(options_.seed), frame_);
+  // Level of detail: the rates scaled before Reeves' draw, here and only here.
+  const float coverage =
+      field_ && field_->field ? viewCoverage(field_->field->bounds(), field_->placement, viewer_) : 1.0f;
+  packet.lodScale = lod_.update(state_.sim, coverage, reportedFrameMs_ ? reportedFrameMs_ : measuredMs);
+  if (packet.lodScale < 1.0f) {
+    ParticleState scaled = state_;
+    for (Emitter& e : scaled.emitters) {
+      e.rate *= packet.lodScale;
+      e.rateVariance *= packet.lodScale;
+    }
+    packet.emission = emissionCounts(scaled, packet.simDt, Seed::from(options_.seed), frame_);
+  } else {
+    packet.emission = emissionCounts(state_, packet.simDt, Seed::from(options_.seed), frame_);
+  }
   ++frame_;
   return packet;
 }

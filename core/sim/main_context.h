@@ -22,6 +22,7 @@
 #include "core/field/field_timeline.h"
 #include "core/sim/attribute_table.h"
 #include "core/sim/frame_packet.h"
+#include "core/sim/level_of_detail.h"
 #include "core/sim/particle_state.h"
 
 namespace sandstorm {
@@ -53,6 +54,10 @@ class MainContext {
   void reset();
   // The head and navigation the next packets carry (the app samples its trackers).
   void setViewer(const Viewer& viewer);
+  // How long the last frame took, for the level of detail's budget (the app
+  // may report its slowest wall); without reports, the interval between
+  // next() calls, which the slowest wall paces through the FrameChannel.
+  void reportFrameTime(double ms);
   double time() const;
   // A validated change that takes effect at `frame` (or the next frame if that has passed).
   void schedule(std::uint32_t frame, const StateChange& change);
@@ -87,6 +92,9 @@ class MainContext {
   std::uint32_t frame_ = 0;
   double time_ = 0.0;
   Viewer viewer_;
+  LevelOfDetail lod_;
+  std::optional<double> reportedFrameMs_;
+  std::optional<std::chrono::steady_clock::time_point> lastFrame_;
   std::optional<std::chrono::steady_clock::time_point> lastTick_;
   ChangeListener listener_;
 };

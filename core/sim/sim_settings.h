@@ -32,6 +32,11 @@ struct SimSettings {
   float restitution = 0.2f;     // fraction of normal speed kept on a bounce
   bool emitting = true;         // start/stop: emitters emit only while true
   bool paused = false;          // pause: time stands still, nothing moves or dies
+  // Level of detail (Reeves; core/sim/level_of_detail.h): the main context scales emission down
+  bool lod = false;
+  float lodCoverage = 0.2f;   // view coverage (fraction of a 90-degree cone) at and above which emission is full
+  float lodBudgetMs = 0.0f;   // frame-time budget; over it emission drops (0: coverage only)
+  float lodMinScale = 0.1f;   // emission never drops below this fraction of the rates
 };
 
 // How the particle update reads the field: the baked grid (a 3D texture) or,
