@@ -24,7 +24,7 @@ struct WallRendererSetup {
   std::shared_ptr<const HeightMap> terrain;
   std::size_t capacity = 1u << 20;
   std::size_t capacityLimit = 1u << 26;
-  std::string backend = "tf-gs";
+  std::string backend = "compute";
   float nearPlane = 0.05f;
   float farPlane = 500.0f;
 };

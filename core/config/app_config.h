@@ -95,7 +95,7 @@ struct RunSpec {
   std::size_t capacityLimit = 1u << 26;   // raising sim.maximum grows the buffers up to this
   float fixedDt = 0.0f;  // > 0: fixed steps; 0: the main context's clock
   int frames = 0;        // 0: until a window closes
-  std::string backend = "tf-gs";
+  std::string backend = "compute";  // or "tf-gs" (the thesis's); compute is faster (docs/PERFORMANCE.md)
   float nearPlane = 0.05f;
   float farPlane = 500.0f;
 };

@@ -163,7 +163,7 @@ void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
 
 void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   r.checkKeys(t, "field", {"source", "name", "dims", "resolution", "bounds_min", "bounds_max", "params", "offset",
-                           "scale", "yaw_deg"});
+                           "scale", "yaw_deg", "mode"});
   f.source = r.string(t, "source", "field", f.source);
   // A file's array or grid is chosen by name; without one, the file's only (or active) vector one.
   f.name = r.string(t, "name", "field", f.source == "analytic" ? f.name : std::string());
@@ -349,7 +349,15 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
     return v;
   };
   if (const auto* t = section("run")) readRun(r, *t, c.run);
-  if (const auto* t = section("field")) readField(r, *t, c.field);
+  if (const auto* t = section("field")) {
+    readField(r, *t, c.field);
+    // field.mode (texture | equation) is an attribute: the menu and --set change it too.
+    if (const toml::value* mode = r.find(*t, "mode")) {
+      toml::table one;
+      one["mode"] = *mode;
+      setAttributes(r, toml::value(one), "field.", c.particles);
+    }
+  }
   if (const auto* t = section("scene")) readScene(r, *t, c.scene);
   if (const auto* t = section("head")) readHead(r, *t, c.head);
   if (const auto* t = section("navigation")) readNavigation(r, *t, c.navigation);
