@@ -1,5 +1,4 @@
-// ParticleSplat's accumulation buffer: kSplatStride uints per pixel (32
-// bytes, one memory sector), kSplatChannels of them used, fixed point with
+// ParticleSplat's per-pixel sums: kSplatChannels uints, fixed point with
 // kSplatScale steps per unit, added to with atomicAdd (integer addition is
 // associative, so the sums do not depend on the order particles arrive in, and
 // signed values add as two's complement):
@@ -7,8 +6,9 @@
 //   3-5 sum of alpha * normal (signed).
 // Colour is linear in age (mix of the birth and death colours), so alpha * age
 // carries the colour sums in one channel instead of three.
+// The atomic pass keeps them in a buffer, kSplatStride uints (32 bytes, one
+// memory sector) a pixel; the tiled pass in shared memory, a tile at a time.
 const uint kSplatStride = 8u;
 const uint kSplatChannels = 6u;
 const float kSplatScale = 4096.0;
-
-layout(std430, binding = 6) coherent restrict buffer SplatAccumulation { uint accum[]; };
+const int kSplatTile = 16;  // the tiled pass: pixels per tile side (one workgroup a tile)

@@ -2,6 +2,7 @@
 // hardware's own ceilings, measured in the same run (see --help and
 // docs/PERFORMANCE.md). Headless: an EGL context, no window, no files read.
 #include <chrono>
+#include <cstdlib>
 #include <cstdio>
 #include <exception>
 #include <functional>
@@ -218,6 +219,11 @@ class Bench {
   static double ratio(double rate, double ceiling) { return ceiling > 0 ? rate / ceiling : 0.0; }
 
   std::unique_ptr<ParticleSystem> makeSystem(const SceneChoice& c, const std::string& backend) {
+    // ParticleSplat reads its variant when it is made.
+    if (c.renderer == "splat-atomic")
+      setenv("SANDSTORM_SPLAT", "atomic", 1);
+    else
+      unsetenv("SANDSTORM_SPLAT");
     auto system = std::make_unique<ParticleSystem>(
         benchState(c), ParticleSystem::Options{.capacity = c.particles, .capacityLimit = c.particles, .backend = backend, .stageTimers = false});
     system->setTerrain(terrain_);

@@ -3,11 +3,16 @@
 // premultiplied colour and normal that ParticlePost lights), without the
 // raster pipeline, which on datacenter GPUs tops out far below their compute.
 //
-// Three passes (shaders/splat_*.comp, particle_splat*.comp): size the splat
-// pass from the backend's GPU-side count; one invocation per particle adds its
-// billboard's footprint (same size, sprite, normal, colour, soft depth test
-// against the scene) to order-independent fixed-point sums per pixel; the
-// resolve turns the sums into the particle buffers and zeroes them. The result
+// Each particle adds its billboard's footprint (same size, sprite, normal,
+// colour, soft depth test against the scene: shaders/splat_footprint.glsl) to
+// order-independent fixed-point sums per pixel, which a resolve turns into the
+// particle buffers. Two variants add the same integers, so give the same image:
+//   tiled (the default): bin the particles by 16x16-pixel tile (count, prefix
+//     sum, scatter of indices), then one workgroup a tile adds its particles
+//     in shared memory and resolves its pixels: a few global atomics a particle;
+//   atomic: one invocation a particle adds to a buffer of sums with global
+//     atomics (six a pixel), then a resolve pass: simpler, slower.
+// SANDSTORM_SPLAT=atomic picks the second (for the benchmark). The result
 // matches blending "over" exactly in alpha and, where overlapping particles
 // share a colour, in colour (tests/contexts/particle_splat_test.cpp states the
 // image tolerance). Particles wider than 32 pixels are drawn 32 pixels wide:
@@ -16,6 +21,8 @@
 // Expects the view and render blocks bound (bindings 1 and 2); needs the GL
 // context current.
 #pragma once
+
+#include <optional>
 
 #include <glm/glm.hpp>
 
@@ -35,10 +42,18 @@ class ParticleSplat {
   void draw(const ParticleBackend& particles, const ViewTargets& targets, std::uint32_t sprite) const;
 
  private:
-  gl::Program prepare_, splat_, resolve_;
+  void drawAtomic(const ViewTargets& targets) const;
+  void drawTiled(const ViewTargets& targets, std::size_t capacity) const;
+
+  bool tiled_;
+  gl::Program prepare_;
+  std::optional<gl::Program> splat_, resolve_;               // atomic
+  std::optional<gl::Program> count_, scatter_, scan_, tile_;  // tiled
   gl::Buffer dispatch_;
-  mutable gl::Buffer accumulation_;
+  mutable gl::Buffer accumulation_;  // atomic: the sums
   mutable std::size_t pixels_ = 0;
+  mutable gl::Buffer tileCounts_, tileStarts_, tileLists_;  // tiled: the bins
+  mutable std::size_t tiles_ = 0, listCapacity_ = 0;
 };
 
 }  // namespace sandstorm

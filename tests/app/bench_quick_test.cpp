@@ -70,8 +70,9 @@ TEST(BenchQuick, PrintsTheTableAndWritesEverySectionToJson) {
                                "render/scene", "render/particles", "render/post", "walls/update", "walls/views",
                                "walls/frame"})
     EXPECT_TRUE(seen.count(expected)) << expected;
-  // 2 particle counts x 2 backends x 2 fields of updates; 3 renderers x 2 counts x 3 stages.
-  EXPECT_GE(rows, 2 + 1 + 4 + 8 + 18 + 2 * 2 * 2 * 3);
+  // 2 verify; 2 copies + 3 ceilings x 2 counts; 2 particle counts x 2 backends x 2 fields of updates;
+  // 4 renderers x 2 counts x 3 stages; 2 wall counts x 2 sims x 2 renderers x 3 stages.
+  EXPECT_GE(rows, 2 + 2 + 6 + 8 + 24 + 2 * 2 * 2 * 3);
   for (const char* key : {"\"device\"", "\"command\"", "\"copy_bytes_per_s\""})
     EXPECT_NE(lines[1].find(key) == std::string::npos && lines[2].find(key) == std::string::npos &&
                   lines[3].find(key) == std::string::npos,

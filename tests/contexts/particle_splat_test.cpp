@@ -118,6 +118,15 @@ TEST_P(ParticleSplatTest, SplatsLookLikeBillboardsForSmallParticles) {
   }
 }
 
+TEST_P(ParticleSplatTest, TiledAndAtomicSplatsAddTheSameSumsSoDrawTheSameImage) {
+  const ParticleState state = cloud(RenderMode::Splat, 0.25f, true);
+  const Image tiled = render(state, GetParam());
+  setenv("SANDSTORM_SPLAT", "atomic", 1);
+  const Image atomic = render(state, GetParam());
+  unsetenv("SANDSTORM_SPLAT");
+  EXPECT_TRUE(tiled.rgba == atomic.rgba);
+}
+
 TEST_P(ParticleSplatTest, AutoSplatsSmallParticlesAndDrawsLargeOnesAsBillboards) {
   const Image smallAuto = render(cloud(RenderMode::Auto, 0.18f, true), GetParam());
   const Image smallSplat = render(cloud(RenderMode::Splat, 0.18f, true), GetParam());

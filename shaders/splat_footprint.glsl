@@ -1,0 +1,82 @@
+// A particle's splat: the pixels its billboard (particle_render.geom) covers
+// and what it adds to each, shared by the atomic and the tiled splat passes
+// so both add exactly the same numbers. Needs view_block.glsl,
+// render_block.glsl, splat_common.glsl and the sampler bindings below.
+
+layout(binding = 2) uniform sampler2D uSprite;      // R8 puff, as ParticleRender's
+layout(binding = 3) uniform sampler2D uSceneDepth;  // the scene's depth, this view's size
+
+const float kMaxRadius = 16.0;  // pixels: larger particles are drawn this large (use billboards for them)
+
+struct Splat {
+  vec2 pixel;     // window coordinates of the centre
+  vec2 radius;    // pixels
+  vec3 right, up, toEye;
+  float distance; // camera-space distance of the centre
+  float opacity;
+  float age;
+  ivec2 lo, hi;   // the pixels it may cover (inclusive, inside the view)
+};
+
+// False when the particle shows nowhere in this view.
+bool makeSplat(vec4 positionLife, vec4 velocityKind, out Splat s) {
+  vec3 center = positionLife.xyz;
+  s.age = clamp(1.0 - positionLife.w / max(velocityKind.w, 1e-6), 0.0, 1.0);
+  vec4 clip = view.viewProjection * vec4(center, 1.0);
+  if (clip.w <= 1e-4) return false;
+  vec2 size = view.viewport.zw;
+  s.pixel = (clip.xy / clip.w * 0.5 + 0.5) * size;
+  float radius = 0.5 * look.params.x;
+  s.radius = min(radius * vec2(view.projection[0][0], view.projection[1][1]) * 0.5 * size / clip.w, vec2(kMaxRadius));
+  if (s.pixel.x + s.radius.x < 0.0 || s.pixel.y + s.radius.y < 0.0 || s.pixel.x - s.radius.x > size.x ||
+      s.pixel.y - s.radius.y > size.y)
+    return false;
+  // The billboard's frame, as particle_render.geom builds it.
+  vec3 toEye = view.eye.xyz - center;
+  float distance = length(toEye);
+  if (distance < 1e-4) return false;
+  s.toEye = toEye / distance;
+  vec3 worldUp = abs(s.toEye.z) < 0.999 ? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
+  s.right = normalize(cross(worldUp, s.toEye));
+  s.up = cross(s.toEye, s.right);
+  s.distance = clip.w;
+  s.opacity = mix(look.colorBirth.a, look.colorDeath.a, s.age);
+  s.lo = max(ivec2(floor(s.pixel - s.radius)), ivec2(0));
+  s.hi = min(ivec2(ceil(s.pixel + s.radius)), ivec2(size) - 1);
+  return s.lo.x <= s.hi.x && s.lo.y <= s.hi.y;
+}
+
+// What the splat adds to pixel p, as kSplatChannels fixed-point values
+// (splat_common.glsl); false where it adds nothing.
+bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
+  vec2 corner = (vec2(p) + 0.5 - s.pixel) / s.radius;
+  float r2 = dot(corner, corner);
+  if (r2 > 1.0) return false;
+  float shape = textureLod(uSprite, 0.5 * corner + 0.5, 0.0).r;
+  float sceneDistance = viewDistance(texelFetch(uSceneDepth, p, 0).r);
+  float fade = clamp((sceneDistance - s.distance) / max(look.params.y, 1e-4), 0.0, 1.0);
+  float alpha = s.opacity * shape * fade;
+  if (alpha < 1.0 / 512.0) return false;
+  vec3 normal = normalize(corner.x * s.right + corner.y * s.up + sqrt(1.0 - r2) * s.toEye);
+  v[0] = uint(alpha * kSplatScale + 0.5);
+  v[1] = uint(alpha * s.age * kSplatScale + 0.5);
+  v[2] = uint(-log(1.0 - min(alpha, 0.999)) * kSplatScale + 0.5);
+  ivec3 nn = ivec3(round(alpha * normal * kSplatScale));
+  v[3] = uint(nn.x);
+  v[4] = uint(nn.y);
+  v[5] = uint(nn.z);
+  return true;
+}
+
+// The particle buffers' values from a pixel's sums: alpha is "over"'s,
+// 1 - prod(1 - alpha_i); colour and normal are alpha-weighted means times it.
+void resolveSplat(uint sums[kSplatChannels], out vec4 color, out vec4 normal) {
+  color = vec4(0.0);
+  normal = vec4(0.0);
+  float weight = float(sums[0]);
+  if (weight <= 0.0) return;
+  float alpha = 1.0 - exp(-float(sums[2]) / kSplatScale);
+  float age = float(sums[1]) / weight;  // alpha-weighted mean age: the mean colour, colour being linear in age
+  color = vec4(mix(look.colorBirth.rgb, look.colorDeath.rgb, age) * alpha, alpha);
+  normal = vec4(vec3(int(sums[3]), int(sums[4]), int(sums[5])) / weight * alpha, alpha);
+}
