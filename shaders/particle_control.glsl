@@ -8,5 +8,9 @@ layout(std430, binding = 4) coherent restrict buffer Control {
   uvec4 draw[2];  // glDrawArraysIndirect per set: count, instances, first, base instance
 } ctl;
 
-const uint kTile = 1024u;           // input records per tile: 256 invocations x 4
+#ifndef ITEMS
+#define ITEMS 4
+#endif
+const int kItems = ITEMS;                 // records per invocation of the update: 1, 2, 4 or 8
+const uint kTile = 256u * uint(ITEMS);    // input records per tile: 256 invocations x kItems
 const uint kGroupsPerRow = 32768u;  // the update's dispatch is 2D beyond this many tiles

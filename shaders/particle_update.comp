@@ -31,12 +31,11 @@ layout(location = 3) uniform uint uSpinLimit;  // reads of a predecessor's statu
 const uint kAggregate = 0x40000000u;  // status: this tile's own count is published
 const uint kPrefix = 0x80000000u;     // status: the count of tiles 0..t is published
 const uint kValue = 0x3fffffffu;
-const int kItems = 4;                 // records per invocation: kTile / 256
 
 shared uint sTicket;
 shared uint sStatus;
 shared uint sCount;
-shared uvec2 sScan[256];
+shared uvec4 sScan[256];
 
 void main() {
   uint lid = gl_LocalInvocationIndex;
@@ -64,22 +63,28 @@ void main() {
     }
   }
 
-  // Inclusive scan over the invocations of the four rows' survivor flags, two
-  // 16-bit counters per word (a row has at most 256 survivors).
-  uvec2 mine = uvec2((alive[0] ? 1u : 0u) | (alive[1] ? 0x10000u : 0u),
-                     (alive[2] ? 1u : 0u) | (alive[3] ? 0x10000u : 0u));
+  // Inclusive scan over the invocations of the rows' survivor flags (row k:
+  // records k * 256 .. k * 256 + 255 of the tile), two 16-bit counters per
+  // word (a row has at most 256 survivors).
+  uvec4 mine = uvec4(0u);
+  for (int k = 0; k < kItems; ++k)
+    if (alive[k]) mine[k / 2] += (k % 2 == 0) ? 1u : 0x10000u;
   sScan[lid] = mine;
   barrier();
   for (uint offset = 1u; offset < 256u; offset <<= 1u) {
-    uvec2 add = lid >= offset ? sScan[lid - offset] : uvec2(0u);
+    uvec4 add = lid >= offset ? sScan[lid - offset] : uvec4(0u);
     barrier();
     sScan[lid] += add;
     barrier();
   }
-  uvec2 before = sScan[lid] - mine;
-  uvec2 total = sScan[255];
-  uint row0 = total.x & 0xffffu, row1 = total.x >> 16u, row2 = total.y & 0xffffu, row3 = total.y >> 16u;
-  uint aggregate = row0 + row1 + row2 + row3;
+  uvec4 before = sScan[lid] - mine;
+  uvec4 total = sScan[255];
+  uint rowStart[kItems];
+  uint aggregate = 0u;
+  for (int k = 0; k < kItems; ++k) {
+    rowStart[k] = aggregate;
+    aggregate += (total[k / 2] >> (16u * uint(k % 2))) & 0xffffu;
+  }
 
   if (lid == 0u) atomicExchange(status[tile], (tile == 0u ? kPrefix : kAggregate) | aggregate);
 
@@ -132,10 +137,8 @@ void main() {
   }
 
   uint base = uBorn + prefix;
-  uint rowStart[kItems] = uint[](0u, row0, row0 + row1, row0 + row1 + row2);
-  uint rank[kItems] = uint[](before.x & 0xffffu, before.x >> 16u, before.y & 0xffffu, before.y >> 16u);
   for (int k = 0; k < kItems; ++k) {
-    uint o = base + rowStart[k] + rank[k];
+    uint o = base + rowStart[k] + ((before[k / 2] >> (16u * uint(k % 2))) & 0xffffu);
     if (alive[k] && o < uCapacity) {
       outPositionLife[o] = p[k].positionLife;
       outVelocityKind[o] = p[k].velocityKind;

@@ -25,7 +25,7 @@ ParticleState benchState(const SceneChoice& c) {
   e.rate = 0.0f;  // the packets carry the counts
   if (c.renderer == "points")
     s.render.mode = RenderMode::Points;
-  else if (c.renderer == "splat" || c.renderer == "splat-atomic")
+  else if (c.renderer == "splat" || c.renderer == "splat-tiled")
     s.render.mode = RenderMode::Splat;
   else if (c.renderer == "billboards")
     s.render.mode = RenderMode::Billboards;

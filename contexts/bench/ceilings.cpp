@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "contexts/bench/gpu_stopwatch.h"
+#include "contexts/particles/particle_compute_update.h"
 #include "core/util/error.h"
 
 namespace sandstorm::bench {
@@ -82,14 +83,17 @@ BareComputeUpdate::BareComputeUpdate(std::size_t records)
       control_(gl::createBuffer()),
       tiles_(gl::createBuffer()),
       simBlock_(gl::createBuffer()),
-      program_(gl::ProgramDesc{{"particle_update.comp"}, {"BARE_UPDATE"}, {}}) {
+      program_(gl::ProgramDesc{{"particle_update.comp"},
+                               {"BARE_UPDATE", concat("ITEMS ", ParticleComputeUpdate::itemsPerInvocation())},
+                               {}}) {
   glNamedBufferStorage(control_.id(), 64, nullptr, GL_DYNAMIC_STORAGE_BIT);
-  glNamedBufferStorage(tiles_.id(), GLsizeiptr((records / 1024 + 2) * 4), nullptr, 0);
+  glNamedBufferStorage(tiles_.id(), GLsizeiptr((records / 256 + 2) * 4), nullptr, 0);
   glNamedBufferStorage(simBlock_.id(), 4096, nullptr, 0);
 }
 
 double BareComputeUpdate::passMs(int repeats) {
-  const std::uint32_t tiles = std::uint32_t((records_ + 1023) / 1024);
+  const std::uint32_t tile = 256u * std::uint32_t(ParticleComputeUpdate::itemsPerInvocation());
+  const std::uint32_t tiles = std::uint32_t((records_ + tile - 1) / tile);
   const std::uint32_t control[16] = {std::uint32_t(records_), 0, 0, tiles};  // count[0], count[1], ticket, tiles
   program_.use();
   glProgramUniform1i(program_.id(), 0, 0);

@@ -20,10 +20,11 @@ void FieldTexture::upload(const VectorField& field) {
                        "texture limit of ", maxSize, " per axis; resample it to a coarser grid"));
   if (!texture_ || dims_ != d) {
     texture_ = gl::createTexture(GL_TEXTURE_3D);
-    // RGBA32F, not RGB32F: the same values (the shaders read .xyz with texelFetch),
-    // but a format GPUs fetch natively. SANDSTORM_FIELD_FORMAT=rgb32f measures the other.
+    // RGB32F; SANDSTORM_FIELD_FORMAT=rgba32f stores the same values padded to
+    // four (measured on an H200: no faster for the compute update, slower for
+    // transform feedback; docs/PERFORMANCE.md).
     const char* format = std::getenv("SANDSTORM_FIELD_FORMAT");
-    const GLenum internal = format && std::string_view(format) == "rgb32f" ? GL_RGB32F : GL_RGBA32F;
+    const GLenum internal = format && std::string_view(format) == "rgba32f" ? GL_RGBA32F : GL_RGB32F;
     glTextureStorage3D(texture_.id(), 1, internal, d.x, d.y, d.z);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);

@@ -1,4 +1,4 @@
-// FieldTexture: a VectorField on the GPU as an RGBA32F 3D texture (thesis 5.2),
+// FieldTexture: a VectorField on the GPU as an RGB32F 3D texture (thesis 5.2),
 // and TerrainTexture: a HeightMap as an R32F 2D texture. Shaders read both with
 // texelFetch and interpolate themselves (shaders/particle_physics.glsl).
 #pragma once

@@ -38,17 +38,28 @@ std::uint32_t spinLimit() {
   return software ? 64u : 1u << 20;
 }
 
+std::vector<std::string> itemDefines() {
+  return {concat("ITEMS ", ParticleComputeUpdate::itemsPerInvocation())};
+}
+
 }  // namespace
+
+int ParticleComputeUpdate::itemsPerInvocation() {
+  const char* env = std::getenv("SANDSTORM_UPDATE_ITEMS");
+  const int items = env ? std::atoi(env) : 4;
+  return items == 1 || items == 2 || items == 8 ? items : 4;
+}
 
 ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity)
     : capacity_(capacity),
       control_(gl::createBuffer()),
       simBlock_(gl::createBuffer()),
       history_(gl::createBuffer()),
-      prepareProgram_(std::vector<std::string>{"particle_prepare.comp"}),
+      prepareProgram_(std::vector<std::string>{"particle_prepare.comp"}, itemDefines()),
       emitProgram_(std::vector<std::string>{"particle_emit.comp"}),
-      updateProgram_(std::vector<std::string>{"particle_update.comp"}),
-      spinLimit_(spinLimit()) {
+      updateProgram_(std::vector<std::string>{"particle_update.comp"}, itemDefines()),
+      spinLimit_(spinLimit()),
+      tile_(256u * std::uint32_t(itemsPerInvocation())) {
   if (capacity == 0 || capacity > (std::size_t{1} << 31) / kRecord)
     throw Error(concat("ParticleComputeUpdate: capacity ", capacity, " is outside 1..",
                        (1u << 31) / kRecord));
@@ -86,7 +97,7 @@ void ParticleComputeUpdate::allocate(BufferSet& set, std::size_t capacity) {
 
 void ParticleComputeUpdate::allocateTiles(std::size_t capacity) {
   tileStatus_ = gl::createBuffer();
-  const std::size_t tiles = (capacity + kTile - 1) / kTile + 1;
+  const std::size_t tiles = (capacity + tile_ - 1) / tile_ + 1;
   glNamedBufferStorage(tileStatus_.id(), GLsizeiptr(tiles * sizeof(std::uint32_t)), nullptr, 0);
 }
 
@@ -179,7 +190,7 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   const bool equation = equation_.bindIfUsed(state);
   if (equation && !updateEquationProgram_)
     updateEquationProgram_ = std::make_unique<gl::Program>(
-        gl::ProgramDesc{{"particle_update.comp"}, {"FIELD_EQUATION"}, {}});
+        gl::ProgramDesc{{"particle_update.comp"}, {"FIELD_EQUATION", itemDefines()[0]}, {}});
   const gl::Program& update = equation ? *updateEquationProgram_ : updateProgram_;
 
   const BufferSet& in = sets_[std::size_t(current_)];

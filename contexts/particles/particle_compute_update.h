@@ -9,7 +9,7 @@
 //      indirect dispatch size, the output's provisional count (the newborn)
 //      and its indirect draw command;
 //   2. emit (shaders/particle_emit.comp): thread g writes newborn g at record g;
-//   3. update (shaders/particle_update.comp, indirect): tiles of kTile input
+//   3. update (shaders/particle_update.comp, indirect): tiles of 256 x items input
 //      records advance their particles; survivors are compacted IN ORDER after
 //      the newborn by a prefix sum over the tiles (a single-pass scan with
 //      decoupled look-back: tiles take their index from an atomic ticket, so a
@@ -40,8 +40,9 @@ namespace sandstorm {
 
 class ParticleComputeUpdate final : public ParticleBackend {
  public:
-  // Input records per tile of the update pass (256 invocations x 4).
-  static constexpr std::uint32_t kTile = 1024;
+  // Records per invocation of the update pass (a tile is 256 invocations):
+  // 4 by default; SANDSTORM_UPDATE_ITEMS = 1, 2, 4 or 8 picks another (the benchmark).
+  static int itemsPerInvocation();
 
   explicit ParticleComputeUpdate(std::size_t capacity);
 
@@ -87,6 +88,7 @@ class ParticleComputeUpdate final : public ParticleBackend {
   gl::Program prepareProgram_, emitProgram_, updateProgram_;
   std::unique_ptr<gl::Program> updateEquationProgram_;  // FIELD_EQUATION, made on first use
   std::uint32_t spinLimit_;
+  std::uint32_t tile_;  // records per tile
 
   std::shared_ptr<const VectorField> field_, nextField_;
   FieldPlacement placement_;

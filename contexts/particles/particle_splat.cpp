@@ -31,7 +31,7 @@ enum Binding : GLuint {
 }  // namespace
 
 ParticleSplat::ParticleSplat()
-    : tiled_(!(std::getenv("SANDSTORM_SPLAT") && std::string_view(std::getenv("SANDSTORM_SPLAT")) == "atomic")),
+    : tiled_(std::getenv("SANDSTORM_SPLAT") && std::string_view(std::getenv("SANDSTORM_SPLAT")) == "tiled"),
       prepare_(std::vector<std::string>{"splat_prepare.comp"}),
       dispatch_(gl::createBuffer()) {
   glNamedBufferStorage(dispatch_.id(), 32, nullptr, 0);

@@ -120,9 +120,9 @@ TEST_P(ParticleSplatTest, SplatsLookLikeBillboardsForSmallParticles) {
 
 TEST_P(ParticleSplatTest, TiledAndAtomicSplatsAddTheSameSumsSoDrawTheSameImage) {
   const ParticleState state = cloud(RenderMode::Splat, 0.25f, true);
-  const Image tiled = render(state, GetParam());
-  setenv("SANDSTORM_SPLAT", "atomic", 1);
   const Image atomic = render(state, GetParam());
+  setenv("SANDSTORM_SPLAT", "tiled", 1);
+  const Image tiled = render(state, GetParam());
   unsetenv("SANDSTORM_SPLAT");
   EXPECT_TRUE(tiled.rgba == atomic.rgba);
 }
