@@ -22,8 +22,9 @@ namespace sandstorm::bench {
 
 // Bytes per second (read + written), the median of `repeats` copies of `bytes`.
 double copyBandwidth(std::size_t bytes, int repeats);
-// The same through a compute shader (vec4 loads and stores), which a driver
-// cannot hand to a copy engine: the bandwidth shaders themselves see.
+// The same through a compute shader (vec4 loads and stores, 1 to 16 records an
+// invocation: the fastest), which a driver cannot hand to a copy engine: the
+// bandwidth shaders themselves see.
 double shaderCopyBandwidth(std::size_t bytes, int repeats);
 
 // The compute update's own kernel (particle_update.comp) with the physics left
