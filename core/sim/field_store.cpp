@@ -20,7 +20,9 @@ std::uint64_t FieldStore::identify(const std::shared_ptr<const VectorField>& gri
   return hash;
 }
 
-bool FieldStore::contains(std::uint64_t hash) const { return find(hash) != nullptr; }
+bool FieldStore::contains(std::uint64_t hash) const {
+  return find(hash) != nullptr;
+}
 
 std::shared_ptr<const VectorField> FieldStore::find(std::uint64_t hash) const {
   if (const auto it = pinned_.find(hash); it != pinned_.end()) return it->second;
@@ -37,18 +39,21 @@ void FieldStore::pin(std::uint64_t hash, std::shared_ptr<const VectorField> grid
 void FieldStore::use(std::span<const std::uint64_t> hashes, const Grids& incoming) {
   for (const std::uint64_t hash : hashes) {
     if (hash == 0 || pinned_.count(hash)) continue;
-    const auto held = std::find_if(recent_.begin(), recent_.end(), [&](const auto& e) { return e.first == hash; });
+    const auto held = std::find_if(recent_.begin(), recent_.end(),
+                                   [&](const auto& e) { return e.first == hash; });
     if (held != recent_.end()) {
       recent_.splice(recent_.begin(), recent_, held);
       continue;
     }
     const auto it = incoming.find(hash);
     if (it == incoming.end() || !it->second)
-      throw Error(concat("field grid ", std::hex, hash, " is neither held nor arrived with this packet"));
+      throw Error(
+          concat("field grid ", std::hex, hash, " is neither held nor arrived with this packet"));
     recent_.emplace_front(hash, it->second);
   }
   // The grids just used are at the front, so with capacity >= 2 they stay.
-  while (recent_.size() > capacity_) recent_.pop_back();
+  while (recent_.size() > capacity_)
+    recent_.pop_back();
 }
 
 }  // namespace sandstorm

@@ -47,7 +47,8 @@ class FieldStore {
  private:
   std::size_t capacity_;
   Grids pinned_;
-  std::list<std::pair<std::uint64_t, std::shared_ptr<const VectorField>>> recent_;  // most recent first
+  std::list<std::pair<std::uint64_t, std::shared_ptr<const VectorField>>>
+      recent_;  // most recent first
   std::map<const VectorField*, std::pair<std::weak_ptr<const VectorField>, std::uint64_t>> hashes_;
 };
 

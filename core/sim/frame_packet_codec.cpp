@@ -20,7 +20,8 @@ constexpr std::size_t kMaxString = 4096;
 
 enum class ValueTag : std::uint8_t { Bool = 0, Int = 1, Float = 2, Vec3 = 3, Text = 4 };
 static_assert(std::is_same_v<std::variant_alternative_t<3, AttributeValue>, glm::vec3> &&
-              std::variant_size_v<AttributeValue> == 5, "AttributeValue changed: update ValueTag and value()");
+                  std::variant_size_v<AttributeValue> == 5,
+              "AttributeValue changed: update ValueTag and value()");
 
 // A member added to a type that travels must travel too: these sizes make the
 // build fail until the codec (and its test) learn the new member.
@@ -51,11 +52,16 @@ void value(ByteWriter& w, const AttributeValue& v) {
   std::visit(
       [&](const auto& x) {
         using T = std::decay_t<decltype(x)>;
-        if constexpr (std::is_same_v<T, bool>) w.boolean(x);
-        else if constexpr (std::is_same_v<T, int>) w.i32(x);
-        else if constexpr (std::is_same_v<T, float>) w.f32(x);
-        else if constexpr (std::is_same_v<T, glm::vec3>) vec3(w, x);
-        else w.str(x);
+        if constexpr (std::is_same_v<T, bool>)
+          w.boolean(x);
+        else if constexpr (std::is_same_v<T, int>)
+          w.i32(x);
+        else if constexpr (std::is_same_v<T, float>)
+          w.f32(x);
+        else if constexpr (std::is_same_v<T, glm::vec3>)
+          vec3(w, x);
+        else
+          w.str(x);
       },
       v);
 }
@@ -63,13 +69,19 @@ void value(ByteWriter& w, const AttributeValue& v) {
 AttributeValue value(ByteReader& r) {
   const std::uint8_t tag = r.u8("change.value type");
   switch (ValueTag(tag)) {
-    case ValueTag::Bool: return r.boolean("change.value");
-    case ValueTag::Int: return int(r.i32("change.value"));
-    case ValueTag::Float: return r.f32("change.value");
-    case ValueTag::Vec3: return vec3(r, "change.value");
-    case ValueTag::Text: return r.str("change.value", kMaxString);
+    case ValueTag::Bool:
+      return r.boolean("change.value");
+    case ValueTag::Int:
+      return int(r.i32("change.value"));
+    case ValueTag::Float:
+      return r.f32("change.value");
+    case ValueTag::Vec3:
+      return vec3(r, "change.value");
+    case ValueTag::Text:
+      return r.str("change.value", kMaxString);
   }
-  r.fail("change.value type", concat("expected 0..4 (bool, int, float, vec3, text), got ", int(tag)));
+  r.fail("change.value type",
+         concat("expected 0..4 (bool, int, float, vec3, text), got ", int(tag)));
 }
 
 void emitter(ByteWriter& w, const Emitter& e) {
@@ -122,7 +134,8 @@ StateChange change(ByteReader& r) {
   StateChange c;
   const std::uint8_t kind = r.u8("change.kind");
   if (kind > std::uint8_t(StateChange::Kind::Reset))
-    r.fail("change.kind", concat("expected 0..3 (set, add-emitter, remove-emitter, reset), got ", int(kind)));
+    r.fail("change.kind",
+           concat("expected 0..3 (set, add-emitter, remove-emitter, reset), got ", int(kind)));
   c.kind = StateChange::Kind(kind);
   c.key = r.str("change.key", kMaxString);
   c.value = value(r);
@@ -134,27 +147,32 @@ StateChange change(ByteReader& r) {
 void placement(ByteWriter& w, const FieldPlacement& p) {
   vec3(w, p.offset);
   w.f32(p.scale);
-  for (int c = 0; c < 3; ++c) vec3(w, p.rotation[c]);
+  for (int c = 0; c < 3; ++c)
+    vec3(w, p.rotation[c]);
 }
 
 FieldPlacement placement(ByteReader& r) {
   FieldPlacement p;
   p.offset = vec3(r, "field.placement.offset");
   p.scale = r.f32("field.placement.scale");
-  for (int c = 0; c < 3; ++c) p.rotation[c] = vec3(r, "field.placement.rotation");
+  for (int c = 0; c < 3; ++c)
+    p.rotation[c] = vec3(r, "field.placement.rotation");
   return p;
 }
 
 void header(ByteReader& r, std::uint32_t magic, const char* what) {
   const std::uint32_t m = r.u32("magic");
-  if (m != magic) r.fail("magic", concat("not a ", what, " (magic ", std::hex, m, ", expected ", magic, ")"));
+  if (m != magic)
+    r.fail("magic", concat("not a ", what, " (magic ", std::hex, m, ", expected ", magic, ")"));
   const std::uint16_t version = r.u16("version");
   if (version != kVersion) r.fail("version", concat("version ", version, ", expected ", kVersion));
 }
 
 }  // namespace
 
-std::uint64_t fieldHash(const VectorField& grid) { return fnv1a64(encodeField(grid)); }
+std::uint64_t fieldHash(const VectorField& grid) {
+  return fnv1a64(encodeField(grid));
+}
 
 std::vector<std::byte> encodeField(const VectorField& grid) {
   ByteWriter w;
@@ -162,7 +180,8 @@ std::vector<std::byte> encodeField(const VectorField& grid) {
   w.u16(kVersion);
   vec3(w, grid.bounds().min);
   vec3(w, grid.bounds().max);
-  for (int a = 0; a < 3; ++a) w.i32(grid.dims()[a]);
+  for (int a = 0; a < 3; ++a)
+    w.i32(grid.dims()[a]);
   const std::span<const glm::vec3> values = grid.values();
   w.f32s(std::span<const float>(&values.data()->x, values.size() * 3));
   return w.take();
@@ -175,16 +194,19 @@ VectorField decodeField(std::span<const std::byte> bytes, std::string_view name)
   bounds.min = vec3(r, "bounds_min");
   bounds.max = vec3(r, "bounds_max");
   glm::ivec3 dims;
-  for (int a = 0; a < 3; ++a) dims[a] = r.i32("dims");
+  for (int a = 0; a < 3; ++a)
+    dims[a] = r.i32("dims");
   std::uint64_t points = 1;
   for (int a = 0; a < 3; ++a) {
-    if (dims[a] < 1) r.fail("dims", concat("expected positive dims, got ", dims.x, "x", dims.y, "x", dims.z));
+    if (dims[a] < 1)
+      r.fail("dims", concat("expected positive dims, got ", dims.x, "x", dims.y, "x", dims.z));
     points *= std::uint64_t(dims[a]);
   }
-  if (points > VectorField::kMaxPoints) r.fail("dims", concat(points, " points exceed the limit of ", VectorField::kMaxPoints));
+  if (points > VectorField::kMaxPoints)
+    r.fail("dims", concat(points, " points exceed the limit of ", VectorField::kMaxPoints));
   if (points * 12 != r.remaining())
-    r.fail("values", concat("expected ", points * 12, " bytes of vectors for ", dims.x, "x", dims.y, "x", dims.z, ", got ",
-                            r.remaining()));
+    r.fail("values", concat("expected ", points * 12, " bytes of vectors for ", dims.x, "x", dims.y,
+                            "x", dims.z, ", got ", r.remaining()));
   std::vector<glm::vec3> values(points);
   r.f32s(std::span<float>(&values.data()->x, values.size() * 3), "values");
   r.finish();
@@ -206,9 +228,11 @@ std::vector<std::byte> encodePacket(const FramePacket& p, const FieldRefs& refs)
   w.u64(p.seed);
   w.boolean(p.reset);
   w.u32(std::uint32_t(p.changes.size()));
-  for (const StateChange& c : p.changes) change(w, c);
+  for (const StateChange& c : p.changes)
+    change(w, c);
   w.u32(std::uint32_t(p.emission.size()));
-  for (const std::uint32_t n : p.emission) w.u32(n);
+  for (const std::uint32_t n : p.emission)
+    w.u32(n);
   w.boolean(p.fieldUpdate != nullptr);
   if (p.fieldUpdate) {
     w.u64(refs.field);
@@ -236,11 +260,15 @@ FramePacket decodePacket(std::span<const std::byte> bytes, FieldRefs* refs) {
   p.seed = r.u64("seed");
   p.reset = r.boolean("reset");
   const std::uint32_t changes = r.u32("change count");
-  if (changes > kMaxChanges) r.fail("change count", concat(changes, " exceeds the limit of ", kMaxChanges));
-  for (std::uint32_t i = 0; i < changes; ++i) p.changes.push_back(change(r));
+  if (changes > kMaxChanges)
+    r.fail("change count", concat(changes, " exceeds the limit of ", kMaxChanges));
+  for (std::uint32_t i = 0; i < changes; ++i)
+    p.changes.push_back(change(r));
   const std::uint32_t emission = r.u32("emission count");
-  if (emission > kMaxEmission) r.fail("emission count", concat(emission, " exceeds the limit of ", kMaxEmission));
-  for (std::uint32_t i = 0; i < emission; ++i) p.emission.push_back(r.u32("emission"));
+  if (emission > kMaxEmission)
+    r.fail("emission count", concat(emission, " exceeds the limit of ", kMaxEmission));
+  for (std::uint32_t i = 0; i < emission; ++i)
+    p.emission.push_back(r.u32("emission"));
   FieldRefs found;
   if (r.boolean("field update")) {
     found.field = r.u64("field hash");

@@ -18,7 +18,8 @@ namespace sandstorm {
 
 class ByteReader {
  public:
-  ByteReader(std::span<const std::byte> bytes, std::string name) : bytes_(bytes), name_(std::move(name)) {}
+  ByteReader(std::span<const std::byte> bytes, std::string name)
+      : bytes_(bytes), name_(std::move(name)) {}
 
   std::uint8_t u8(std::string_view what) { return std::uint8_t(little(1, what)); }
   std::uint16_t u16(std::string_view what) { return std::uint16_t(little(2, what)); }
@@ -50,7 +51,8 @@ class ByteReader {
       std::memcpy(out.data(), b.data(), b.size());
     } else {
       ByteReader inner(b, name_);
-      for (float& v : out) v = inner.f32(what);
+      for (float& v : out)
+        v = inner.f32(what);
     }
   }
 
@@ -58,7 +60,9 @@ class ByteReader {
   std::size_t remaining() const { return bytes_.size() - offset_; }
   // Throws unless every byte was read: trailing bytes mean a mismatched format.
   void finish() const {
-    if (remaining() != 0) throw Error(concat(name_, ": ", remaining(), " unexpected bytes after the end at offset ", offset_));
+    if (remaining() != 0)
+      throw Error(
+          concat(name_, ": ", remaining(), " unexpected bytes after the end at offset ", offset_));
   }
   [[noreturn]] void fail(std::string_view what, const std::string& why) const {
     throw Error(concat(name_, ": ", what, " at offset ", offset_, ": ", why));
@@ -67,12 +71,15 @@ class ByteReader {
  private:
   void need(std::size_t n, std::string_view what) const {
     if (n > remaining())
-      fail(what, concat("truncated: needs ", n, " bytes, ", remaining(), " left of ", bytes_.size()));
+      fail(what,
+           concat("truncated: needs ", n, " bytes, ", remaining(), " left of ", bytes_.size()));
   }
   std::uint64_t little(int n, std::string_view what) {
     need(std::size_t(n), what);
     std::uint64_t v = 0;
-    for (int i = 0; i < n; ++i) v |= std::uint64_t(std::to_integer<std::uint8_t>(bytes_[offset_ + std::size_t(i)])) << (8 * i);
+    for (int i = 0; i < n; ++i)
+      v |= std::uint64_t(std::to_integer<std::uint8_t>(bytes_[offset_ + std::size_t(i)]))
+           << (8 * i);
     offset_ += std::size_t(n);
     return v;
   }

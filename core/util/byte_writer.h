@@ -35,7 +35,8 @@ class ByteWriter {
     if constexpr (std::endian::native == std::endian::little) {
       raw(std::as_bytes(values));
     } else {
-      for (const float v : values) f32(v);
+      for (const float v : values)
+        f32(v);
     }
   }
 
@@ -45,7 +46,8 @@ class ByteWriter {
 
  private:
   void little(std::uint64_t v, int n) {
-    for (int i = 0; i < n; ++i) bytes_.push_back(std::byte(static_cast<std::uint8_t>(v >> (8 * i))));
+    for (int i = 0; i < n; ++i)
+      bytes_.push_back(std::byte(static_cast<std::uint8_t>(v >> (8 * i))));
   }
 
   std::vector<std::byte> bytes_;

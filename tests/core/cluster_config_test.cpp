@@ -68,18 +68,25 @@ TEST(ClusterConfig, BadValuesNameTheirLineAndKey) {
   struct Case {
     std::string text, expected[2];
   };
-  for (const Case& c : {Case{"[cluster]\ntimeout_s = 0\n", {"test.toml:2", "cluster.timeout_s: expected 0.1..3600"}},
-                        Case{"[cluster]\nfield = \"mail\"\n", {"test.toml:2", "broadcast, read"}},
-                        Case{"[cluster]\nranks = { front = -1 }\n", {"test.toml:2", "cluster.ranks.front"}},
-                        Case{"[cluster]\nranks = { back = 1 }\n", {"test.toml:2", "no wall named 'back'; the walls are front, left"}},
-                        Case{"[cluster]\nhosts = { left = 7 }\n", {"test.toml:2", "cluster.hosts.left: expected a host name"}},
-                        Case{"[cluster]\nspeed = 7\n", {"test.toml:2", "cluster.speed: unknown key"}}}) {
+  for (const Case& c :
+       {Case{"[cluster]\ntimeout_s = 0\n",
+             {"test.toml:2", "cluster.timeout_s: expected 0.1..3600"}},
+        Case{"[cluster]\nfield = \"mail\"\n", {"test.toml:2", "broadcast, read"}},
+        Case{"[cluster]\nranks = { front = -1 }\n", {"test.toml:2", "cluster.ranks.front"}},
+        Case{"[cluster]\nranks = { back = 1 }\n",
+             {"test.toml:2", "no wall named 'back'; the walls are front, left"}},
+        Case{"[cluster]\nhosts = { left = 7 }\n",
+             {"test.toml:2", "cluster.hosts.left: expected a host name"}},
+        Case{"[cluster]\nspeed = 7\n", {"test.toml:2", "cluster.speed: unknown key"}}}) {
     const std::string message = errorOf(c.text + kWalls);
-    for (const std::string& part : c.expected) EXPECT_NE(message.find(part), std::string::npos) << message;
+    for (const std::string& part : c.expected)
+      EXPECT_NE(message.find(part), std::string::npos) << message;
   }
   std::string badRank = kWalls;
   badRank.replace(badRank.find("rank = 2"), 8, "rank = 5000");
-  EXPECT_NE(errorOf(badRank).find("wall[1].rank: expected an integer in 0..4095"), std::string::npos) << errorOf(badRank);
+  EXPECT_NE(errorOf(badRank).find("wall[1].rank: expected an integer in 0..4095"),
+            std::string::npos)
+      << errorOf(badRank);
 }
 
 }  // namespace

@@ -22,7 +22,8 @@ std::shared_ptr<const VectorField> grid(float scale, glm::ivec3 dims = {5, 4, 3}
   auto f = std::make_shared<VectorField>(Box{{-1, -2, 0}, {1, 2, 3}}, dims);
   for (int k = 0; k < dims.z; ++k)
     for (int j = 0; j < dims.y; ++j)
-      for (int i = 0; i < dims.x; ++i) f->at(i, j, k) = scale * glm::vec3(i, j - 0.5f, std::sin(float(k)));
+      for (int i = 0; i < dims.x; ++i)
+        f->at(i, j, k) = scale * glm::vec3(i, j - 0.5f, std::sin(float(k)));
   return f;
 }
 
@@ -61,9 +62,12 @@ FramePacket fullPacket() {
                StateChange::removeEmitter(3),
                StateChange::reset()};
   p.emission = {0, 7, 4000000000u};
-  p.fieldUpdate = std::make_shared<const FieldUpdate>(FieldUpdate{
-      .field = grid(1), .placement = {.offset = {1, 2, 3}, .scale = 0.35f, .rotation = glm::mat3(0, 1, 0, -1, 0, 0, 0, 0, 1)},
-      .next = grid(2)});
+  p.fieldUpdate = std::make_shared<const FieldUpdate>(
+      FieldUpdate{.field = grid(1),
+                  .placement = {.offset = {1, 2, 3},
+                                .scale = 0.35f,
+                                .rotation = glm::mat3(0, 1, 0, -1, 0, 0, 0, 0, 1)},
+                  .next = grid(2)});
   p.viewer.head.position = {0.1f, 0.2f, 1.7f};
   p.viewer.head.right = {0, -1, 0};
   p.viewer.head.eyeSeparation = 0.063f;
@@ -191,8 +195,10 @@ TEST(FramePacketCodec, FieldGridsRoundTripAndHashByContent) {
 
 void expectError(std::span<const std::byte> bytes, bool packet, const std::string& expected) {
   try {
-    if (packet) decodePacket(bytes);
-    else decodeField(bytes);
+    if (packet)
+      decodePacket(bytes);
+    else
+      decodeField(bytes);
     ADD_FAILURE() << "no error; expected one mentioning '" << expected << "'";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
@@ -204,9 +210,11 @@ TEST(FramePacketCodec, EveryTruncationIsAClearError) {
   const FramePacket p = fullPacket();
   const std::vector<std::byte> bytes =
       encodePacket(p, {store.identify(p.fieldUpdate->field), store.identify(p.fieldUpdate->next)});
-  for (std::size_t n = 0; n < bytes.size(); ++n) expectError(std::span(bytes).first(n), true, "truncated");
+  for (std::size_t n = 0; n < bytes.size(); ++n)
+    expectError(std::span(bytes).first(n), true, "truncated");
   const std::vector<std::byte> field = encodeField(*grid(1));
-  for (std::size_t n = 0; n < 40; ++n) expectError(std::span(field).first(n), false, "truncated");
+  for (std::size_t n = 0; n < 40; ++n)
+    expectError(std::span(field).first(n), false, "truncated");
   expectError(std::span(field).first(field.size() - 1), false, "bytes of vectors");
 }
 
@@ -220,7 +228,8 @@ TEST(FramePacketCodec, CorruptBuffersAreClearErrors) {
   expectError(with(0, 'X'), true, "not a frame packet");
   expectError(with(4, 9), true, "version 9");
   expectError(with(34, 7), true, "reset");  // the reset flag: 0 or 1
-  expectError(with(38, 0xff), true, "change count");  // a huge count is refused before any allocation
+  expectError(with(38, 0xff), true,
+              "change count");  // a huge count is refused before any allocation
   expectError(with(39, 9), true, "change.kind");
   std::vector<std::byte> padded = good;
   padded.push_back(std::byte{0});
@@ -240,19 +249,24 @@ TEST(FieldStore, SenderAndReceiverHoldTheSameGridsWithoutTalking) {
   // A timeline of five frames played as (0,1), (1,2), ... (4,0): the sender ships
   // a grid only when the mirror says the receiver lacks it.
   std::vector<std::shared_ptr<const VectorField>> frames;
-  for (int i = 0; i < 5; ++i) frames.push_back(grid(float(i + 1)));
+  for (int i = 0; i < 5; ++i)
+    frames.push_back(grid(float(i + 1)));
   FieldStore sender(3), receiver(3);
   int shipped = 0;
   for (int round = 0; round < 3; ++round) {
     for (int i = 0; i < 5; ++i) {
-      const std::uint64_t used[2] = {sender.identify(frames[std::size_t(i)]), sender.identify(frames[std::size_t((i + 1) % 5)])};
+      const std::uint64_t used[2] = {sender.identify(frames[std::size_t(i)]),
+                                     sender.identify(frames[std::size_t((i + 1) % 5)])};
       FieldStore::Grids incoming;
       for (int u = 0; u < 2; ++u)
         if (!sender.contains(used[u])) {
-          incoming[used[u]] = std::make_shared<VectorField>(decodeField(encodeField(*frames[std::size_t((i + u) % 5)])));
+          incoming[used[u]] = std::make_shared<VectorField>(
+              decodeField(encodeField(*frames[std::size_t((i + u) % 5)])));
           ++shipped;
         }
-      sender.use(used, incoming);  // the sender's mirror (it could hold its own grids; the same calls suffice)
+      sender.use(
+          used,
+          incoming);  // the sender's mirror (it could hold its own grids; the same calls suffice)
       receiver.use(used, incoming);
       for (const std::uint64_t h : used) {
         ASSERT_TRUE(receiver.contains(h));
@@ -261,7 +275,8 @@ TEST(FieldStore, SenderAndReceiverHoldTheSameGridsWithoutTalking) {
       EXPECT_EQ(receiver.size(), sender.size());
     }
   }
-  EXPECT_EQ(shipped, 2 + 4 + 5 + 5);  // the first round needs every frame; each later wrap only the new ones
+  EXPECT_EQ(shipped,
+            2 + 4 + 5 + 5);  // the first round needs every frame; each later wrap only the new ones
   EXPECT_LE(receiver.size(), 3u);
 }
 
