@@ -123,9 +123,16 @@ bool MpiCluster::start(const AppConfig* config, const std::string& fingerprint,
   owner_.clear();
   std::vector<std::string> problems;
   for (const WallSpec& w : config->walls) {
-    const std::string where = concat(config->path.string(), ":", w.line, ": wall '", w.name, "'");
+    // Name the [cluster] entry that placed the wall, if one did (the wall may come from an
+    // include).
+    std::string where = concat(config->path.string(), ": wall '", w.name, "'");
+    for (const ClusterSpec::Placement& p : config->cluster.placements)
+      if (p.wall == w.name && (p.rank || !p.host.empty()))
+        where = concat(p.where, " (wall '", w.name, "')");
     int owner = w.rank;
-    if (!w.host.empty()) {
+    if (config->cluster.roundRobin) {
+      owner = int(owner_.size()) % size;
+    } else if (!w.host.empty()) {
       const auto it = std::find_if(hellos.begin(), hellos.end(),
                                    [&](const Hello& h) { return h.host == w.host; });
       if (it == hellos.end()) {
@@ -180,7 +187,7 @@ void MpiCluster::localize(AppConfig& config, AppOptions& options) {
   if (owner_.empty() || owner_[0] != rank()) options.dumpParticles.reset();
   if (options.hashLog) options.hashLog = perRank(*options.hashLog, rank());
   if (root()) {
-    if (!menuWall.empty() &&
+    if (!menuWall.empty() && !config.menu.operatorWindow &&
         std::none_of(mine.begin(), mine.end(), [](const WallSpec& w) { return w.menu; }))
       log::warn("cluster: the menu runs on rank 0 only; wall '", menuWall,
                 "' is on another rank, so it shows no menu (give rank 0 a [menu] operator_window)");

@@ -76,8 +76,9 @@ double MpiSession::wait(MPI_Request& request, std::string_view what) {
       if (!interruptedAt)
         interruptedAt = now;
       else if (now - *interruptedAt > std::chrono::milliseconds(500))
-        abort(concat("stopped by a signal while waiting for ", what,
-                     " (mpirun stops every rank when one dies or on Ctrl-C)"));
+        abort(concat(
+            "mpirun is stopping the job (a rank died, or Ctrl-C) while this rank waited for ",
+            what));
     }
     // Spin briefly (the answer is usually microseconds away), then sleep: the
     // render threads on this machine need the cores more than we do.

@@ -107,6 +107,7 @@ struct ClusterSpec {
   bool readField = false;        // field = "read": every rank loads the field itself (checked by hash)
   int chunkKiB = 4096;           // field grids travel in chunks of this size
   int fieldCache = 4;            // grids each rank keeps (a time-varying field's frames)
+  bool roundRobin = false;       // walls = "round-robin": wall i on rank i % ranks, whatever rank/host say
   // [cluster] ranks = {front = 1}, hosts = {front = "node-a"}: placement of
   // walls defined elsewhere (an included file); applied once every file is read.
   struct Placement {

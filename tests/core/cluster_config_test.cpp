@@ -51,6 +51,7 @@ timeout_s = 2.5
 field = "read"
 chunk_kib = 64
 field_cache = 8
+walls = "round-robin"
 ranks = { front = 3, left = 1 }
 hosts = { front = "node-a" }
 )" + kWalls,
@@ -59,6 +60,7 @@ hosts = { front = "node-a" }
   EXPECT_TRUE(c.cluster.readField);
   EXPECT_EQ(c.cluster.chunkKiB, 64);
   EXPECT_EQ(c.cluster.fieldCache, 8);
+  EXPECT_TRUE(c.cluster.roundRobin);
   EXPECT_EQ(c.walls[0].rank, 3);
   EXPECT_EQ(c.walls[0].host, "node-a");
   EXPECT_EQ(c.walls[1].rank, 1);
