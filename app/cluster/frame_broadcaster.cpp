@@ -91,7 +91,7 @@ FrameBroadcaster::Message FrameBroadcaster::take(const std::string& what, bool p
     seconds += mpi_.wait(request, what);
     moved += n;
   }
-  if (perFrame && m.kind != Kind::Grid) {
+  if (perFrame && m.kind == Kind::Packet) {
     stats_.broadcastBytes += moved;
     stats_.broadcastSeconds += seconds;
     stats_.maxBroadcastSeconds = std::max(stats_.maxBroadcastSeconds, seconds);
@@ -131,7 +131,7 @@ void FrameBroadcaster::send(const FramePacket& packet) {
 }
 
 void FrameBroadcaster::sendStop() {
-  post(Kind::Stop, {}, true);
+  post(Kind::Stop, {}, false);  // not a frame: kept out of the per-frame figures
 }
 
 std::shared_ptr<const FramePacket> FrameBroadcaster::receive() {
