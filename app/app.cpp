@@ -9,6 +9,7 @@
 #include <mutex>
 
 #include "app/desktop_input.h"
+#include "app/helicopter_controller.h"
 #include "app/menu/menu_host.h"
 #include "app/scene_setup.h"
 #include "contexts/platform/egl_context.h"
@@ -144,6 +145,8 @@ int App::run() {
   }
   if (options_.replay)
     for (const ScheduledChange& s : readSessionLog(*options_.replay)) main.schedule(s.frame, s.change);
+  HelicopterController helicopter(terrain);
+  helicopter.update(main);  // the configured helicopter's field and dust, before packet 0
   std::unique_ptr<HeadTracker> head = makeHeadTracker(config_.head);
   Navigation navigation = Navigation::from(config_.navigation);
 
@@ -264,6 +267,7 @@ int App::run() {
     }
     main.setViewer(Viewer{head->pose(main.time()), navigation});
     if (!channel.publish(std::make_shared<const FramePacket>(main.next()))) break;
+    helicopter.update(main);
     ++frames;
     if (now - lastReport > std::chrono::seconds(2)) {
       lastReport = now;
