@@ -120,6 +120,8 @@ App::App(AppConfig config, AppOptions options) : config_(std::move(config)), opt
     }
     config_.walls = std::move(chosen);
   }
+  // Offscreen there is nobody to use the menu: it only shows when a script drives it.
+  if (headless_ && !options_.menuScript) options_.noMenu = true;
   if (options_.noMenu) {
     config_.menu.operatorWindow.reset();
     for (WallSpec& w : config_.walls) w.menu = false;
@@ -249,6 +251,7 @@ int App::run() {
     lastTick = now;
     if (glfw) {
       GlfwLibrary::pollEvents();
+      if (menu && menu->scriptCloses(main.nextFrame()) && !windows.empty()) windows.front()->requestClose();
       bool close = menu && menu->operatorWindowClosed();
       for (GlfwWindow* w : windows) close = close || w->shouldClose();
       if (close) break;
@@ -281,6 +284,7 @@ int App::run() {
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
   if (interrupted) log::info("interrupted: stopped every wall cleanly");
+  else if (lastFrame < 0 || frames <= lastFrame) log::info("a window closed: stopped every wall cleanly");
   if (options_.hashLog) hashes.write(*options_.hashLog);
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

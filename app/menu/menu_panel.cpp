@@ -44,6 +44,10 @@ void MenuPanel::build(const MenuStats& stats) {
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize);
   runControls(state);
   statsSection(stats, state);
+  if (state.helicopter.enabled && ImGui::CollapsingHeader("Helicopter", ImGuiTreeNodeFlags_DefaultOpen)) {
+    for (const char* key : {"helicopter.throttle", "helicopter.altitude", "helicopter.x", "helicopter.y"})
+      attributeWidget(AttributeTable::instance().lookup(key), key, state);
+  }
   // The thesis's Table 5.1 first: the attributes an operator reaches for.
   if (ImGui::CollapsingHeader("Table of dynamic attributes", ImGuiTreeNodeFlags_DefaultOpen)) {
     const AttributeTable& table = AttributeTable::instance();
@@ -63,6 +67,10 @@ void MenuPanel::build(const MenuStats& stats) {
   }
   emitterSection(state);
   fieldSection();
+  if (ImGui::CollapsingHeader("Field playback")) {
+    for (const AttributeInfo& info : AttributeTable::instance().entries())
+      if (info.key.starts_with("field.")) attributeWidget(info, info.key, state);
+  }
   if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
   ImGui::End();
 }
