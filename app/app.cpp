@@ -156,7 +156,17 @@ int App::run() {
   // wall's thread makes its own current.
   std::unique_ptr<GlfwLibrary> glfw;
   const bool operatorWindow = config_.menu.operatorWindow && !headless_;
-  if (config_.anyWindow() || operatorWindow) glfw = std::make_unique<GlfwLibrary>();
+  if (config_.anyWindow() || operatorWindow) {
+    glfw = std::make_unique<GlfwLibrary>();
+    // Every window's monitor exists, or nothing starts.
+    const int monitors = glfw->monitorCount();
+    for (std::size_t i = 0; i < config_.walls.size(); ++i) {
+      const WallSpec& w = config_.walls[i];
+      if (w.window && w.window->monitor >= std::max(monitors, 1))
+        throw Error(concat(config_.path.string(), ":", w.line, ": wall[", i, "].window.monitor: monitor ",
+                           w.window->monitor, " does not exist; ", monitors, " connected"));
+    }
+  }
   const int wallCount = int(config_.walls.size());
   FrameChannel channel(wallCount);
   RenderContext::SwapBarrier barrier(wallCount);
