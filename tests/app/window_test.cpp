@@ -87,6 +87,17 @@ TEST(Windows, ASliderInTheMenuChangesEveryWallAtTheSameFrame) {
   EXPECT_TRUE(std::filesystem::exists(dir / "front.png"));
 }
 
+TEST(Windows, AMonitorThatDoesNotExistStopsEverythingBeforeAnyWindowOpens) {
+  if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
+  // cave4.toml puts its walls on monitors 0-3; Xvfb has one.
+  const auto r = runUnderXvfb("--config config/cave4.toml --frames 1");
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.output.find("config/cave4.toml:25: wall[1].window.monitor: monitor 1 does not exist; 1 connected"),
+            std::string::npos)
+      << r.output;
+  EXPECT_EQ(r.output.find("GLFW window"), std::string::npos) << "a window opened before the check";
+}
+
 TEST(Windows, ClosingAWindowStopsEveryWallCleanly) {
   if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
   const auto r = runUnderXvfb("--config tests/data/windows.toml --frames 0 --menu-script tests/data/close.script");
