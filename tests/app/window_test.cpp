@@ -87,6 +87,19 @@ TEST(Windows, ASliderInTheMenuChangesEveryWallAtTheSameFrame) {
   EXPECT_TRUE(std::filesystem::exists(dir / "front.png"));
 }
 
+TEST(Windows, TheMenuCanLiveInAnOperatorWindowOfItsOwn) {
+  if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
+  const auto dir = test::scratchDir("operator");
+  const auto r = runUnderXvfb("--config tests/data/operator.toml --menu-script tests/data/slider.script --record " +
+                              (dir / "s.session").string() + " --hash-log " + (dir / "h.txt").string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  bool sized = false;
+  for (const std::string& line : readLines(dir / "s.session")) sized = sized || line.find("render.size") != std::string::npos;
+  EXPECT_TRUE(sized) << "the click in the operator window did not change render.size";
+  // The walls stay offscreen: the operator window is the only window.
+  EXPECT_EQ(r.output.find("GLFW window"), std::string::npos) << r.output;
+}
+
 TEST(Windows, AMonitorThatDoesNotExistStopsEverythingBeforeAnyWindowOpens) {
   if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
   // cave4.toml puts its walls on monitors 0-3; Xvfb has one.
