@@ -274,7 +274,8 @@ int App::run() {
       stats.frame = main.nextFrame();
       for (const auto& w : walls) {
         const WallStats s = w->stats();
-        stats.walls.push_back({w->name(), s.fps, s.frameMs, s.updateMs, s.renderMs, s.postMs, s.liveParticles, s.capacity});
+        stats.walls.push_back({w->name(), s.fps, s.frameMs, s.updateMs, s.renderMs, s.postMs, s.fieldUploadMs,
+                               s.liveParticles, s.capacity});
       }
       menu->frame(main.nextFrame(), dt, stats);
     }
@@ -304,7 +305,8 @@ int App::run() {
   for (const auto& w : walls) {
     const WallStats s = w->stats();
     log::info("  wall '", w->name(), "': ", s.liveParticles, " live particles at frame ", s.frame, ", last frame ",
-              s.frameMs, " ms", w->error() ? " FAILED: " + *w->error() : std::string());
+              s.frameMs, " ms; ", s.fieldUploads, " field upload(s), the last ", s.fieldUploadMs, " ms",
+              w->error() ? " FAILED: " + *w->error() : std::string());
   }
   if (options_.screenshotDir) log::info("images in ", options_.screenshotDir->string(), "/");
   walls.clear();  // before the windows' library goes

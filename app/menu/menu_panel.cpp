@@ -92,8 +92,8 @@ void MenuPanel::runControls(const ParticleState& state) {
 void MenuPanel::statsSection(const MenuStats& stats, const ParticleState& state) {
   if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::Text("frame %u", stats.frame);
-  if (ImGui::BeginTable("walls", 6, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
-    for (const char* h : {"wall", "fps", "frame ms", "update", "render", "post"}) ImGui::TableSetupColumn(h);
+  if (ImGui::BeginTable("walls", 7, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
+    for (const char* h : {"wall", "fps", "frame ms", "update", "render", "post", "field"}) ImGui::TableSetupColumn(h);
     ImGui::TableHeadersRow();
     for (const MenuWallStats& w : stats.walls) {
       ImGui::TableNextRow();
@@ -101,7 +101,7 @@ void MenuPanel::statsSection(const MenuStats& stats, const ParticleState& state)
       ImGui::TextUnformatted(w.name.c_str());
       ImGui::TableNextColumn();
       ImGui::Text("%.1f", w.fps);
-      for (double ms : {w.frameMs, w.updateMs, w.renderMs, w.postMs}) {
+      for (double ms : {w.frameMs, w.updateMs, w.renderMs, w.postMs, w.uploadMs}) {
         ImGui::TableNextColumn();
         ImGui::Text("%.2f", ms);
       }

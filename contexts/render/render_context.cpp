@@ -56,6 +56,10 @@ void RenderContext::run() {
       stats_.updateMs = timings.updateMs;
       stats_.renderMs = timings.renderMs;
       stats_.postMs = timings.postMs;
+      if (packet->fieldUpdate) {
+        stats_.fieldUploadMs = renderer->particles().update().lastFieldUploadMs();
+        ++stats_.fieldUploads;
+      }
       stats_.frame = packet->frame;
       stats_.frameMs = ms;
       if (interval > 0.0) stats_.fps = stats_.fps > 0.0 ? 0.9 * stats_.fps + 0.1 / interval : 1.0 / interval;
