@@ -10,6 +10,7 @@
 
 #include "app/cluster/cluster_link.h"
 #include "app/desktop_input.h"
+#include "app/helicopter_controller.h"
 #include "app/menu/menu_host.h"
 #include "app/scene_setup.h"
 #include "contexts/platform/egl_context.h"
@@ -121,6 +122,8 @@ App::App(AppConfig config, AppOptions options, ClusterLink* cluster)
     }
     config_.walls = std::move(chosen);
   }
+  // Offscreen there is nobody to use the menu: it only shows when a script drives it.
+  if (headless_ && !options_.menuScript) options_.noMenu = true;
   if (options_.noMenu) {
     config_.menu.operatorWindow.reset();
     for (WallSpec& w : config_.walls) w.menu = false;
@@ -148,6 +151,9 @@ int App::run() {
   }
   if (options_.replay)
     for (const ScheduledChange& s : readSessionLog(*options_.replay)) main.schedule(s.frame, s.change);
+  HelicopterController helicopter(terrain);
+  if (!cluster_ || cluster_->root())
+    helicopter.update(main);  // the configured helicopter's field and dust, before packet 0
   std::unique_ptr<HeadTracker> head = makeHeadTracker(config_.head);
   Navigation navigation = Navigation::from(config_.navigation);
 
@@ -155,7 +161,17 @@ int App::run() {
   // wall's thread makes its own current.
   std::unique_ptr<GlfwLibrary> glfw;
   const bool operatorWindow = config_.menu.operatorWindow && !headless_;
-  if (config_.anyWindow() || operatorWindow) glfw = std::make_unique<GlfwLibrary>();
+  if (config_.anyWindow() || operatorWindow) {
+    glfw = std::make_unique<GlfwLibrary>();
+    // Every window's monitor exists, or nothing starts.
+    const int monitors = glfw->monitorCount();
+    for (std::size_t i = 0; i < config_.walls.size(); ++i) {
+      const WallSpec& w = config_.walls[i];
+      if (w.window && w.window->monitor >= std::max(monitors, 1))
+        throw Error(concat(config_.path.string(), ":", w.line, ": wall[", i, "].window.monitor: monitor ",
+                           w.window->monitor, " does not exist; ", monitors, " connected"));
+    }
+  }
   const int wallCount = int(config_.walls.size());
   FrameChannel channel(wallCount);
   // Cluster mode: the main thread joins the swap barrier, to hold the walls until every rank drew.
@@ -258,7 +274,8 @@ int App::run() {
     stats.frame = main.nextFrame();
     for (const auto& w : walls) {
       const WallStats s = w->stats();
-      stats.walls.push_back({w->name(), s.fps, s.frameMs, s.updateMs, s.renderMs, s.postMs, s.liveParticles, s.capacity});
+      stats.walls.push_back({w->name(), s.fps, s.frameMs, s.updateMs, s.renderMs, s.postMs, s.fieldUploadMs,
+                             s.liveParticles, s.capacity});
     }
     menu->frame(main.nextFrame(), dt, stats);
   };
@@ -281,6 +298,7 @@ int App::run() {
       const float dt = std::chrono::duration<float>(now - lastTick).count();
       lastTick = now;
       int stop = interrupted ? ClusterLink::kInterrupted : 0;
+      if (cluster_->root() && menu && menu->scriptCloses(main.nextFrame())) stop |= ClusterLink::kClosed;
       if (glfw) {
         GlfwLibrary::pollEvents();
         bool close = menu && menu->operatorWindowClosed();
@@ -296,6 +314,7 @@ int App::run() {
         main.setViewer(Viewer{head->pose(main.time()), navigation});
         packet = std::make_shared<const FramePacket>(main.next());
         cluster_->send(*packet);
+        helicopter.update(main);
       } else {
         cluster_->sendStop();
       }
@@ -320,6 +339,7 @@ int App::run() {
     lastTick = now;
     if (glfw) {
       GlfwLibrary::pollEvents();
+      if (menu && menu->scriptCloses(main.nextFrame()) && !windows.empty()) windows.front()->requestClose();
       bool close = menu && menu->operatorWindowClosed();
       for (GlfwWindow* w : windows) close = close || w->shouldClose();
       if (close) break;
@@ -330,6 +350,7 @@ int App::run() {
     if (menu) showMenu(dt);
     main.setViewer(Viewer{head->pose(main.time()), navigation});
     if (!channel.publish(std::make_shared<const FramePacket>(main.next()))) break;
+    helicopter.update(main);
     ++frames;
     reportProgress(now);
   }
@@ -338,6 +359,7 @@ int App::run() {
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
   if (interrupted) log::info("interrupted: stopped every wall cleanly");
+  else if (lastFrame < 0 || frames <= lastFrame) log::info("a window closed: stopped every wall cleanly");
   if (cluster_) cluster_->finish();
   if (options_.hashLog) hashes.write(*options_.hashLog);
 
@@ -348,7 +370,8 @@ int App::run() {
   for (const auto& w : walls) {
     const WallStats s = w->stats();
     log::info("  wall '", w->name(), "': ", s.liveParticles, " live particles at frame ", s.frame, ", last frame ",
-              s.frameMs, " ms", w->error() ? " FAILED: " + *w->error() : std::string());
+              s.frameMs, " ms; ", s.fieldUploads, " field upload(s), the last ", s.fieldUploadMs, " ms",
+              w->error() ? " FAILED: " + *w->error() : std::string());
   }
   if (options_.screenshotDir) log::info("images in ", options_.screenshotDir->string(), "/");
   walls.clear();  // before the windows' library goes

@@ -12,7 +12,7 @@
 int main(int argc, char** argv) {
   using namespace sandstorm;
   CLI::App cli{"Sandstorm: GPU particles carried through vector fields, for CAVEs and multi-window walls"};
-  std::string configPath = "config/desktop.toml";
+  std::string configPath = "config/downdraft.toml";
   AppOptions options;
   std::string screenshotDir, dumpPath, logLevel;
   int frames = -1;

@@ -162,10 +162,18 @@ void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
     r.fail(t, "run.near/far", "expected 0 < near < far");
 }
 
+// A file named in a config is relative to that config file's folder (so an
+// included scene finds its data wherever it is included from).
+std::string relativeTo(const Reader& r, const std::string& path) {
+  if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
+  return (std::filesystem::path(r.file()).parent_path() / path).lexically_normal().string();
+}
+
 void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   r.checkKeys(t, "field", {"source", "name", "dims", "resolution", "bounds_min", "bounds_max", "params", "offset",
                            "scale", "yaw_deg"});
   f.source = r.string(t, "source", "field", f.source);
+  if (f.source != "analytic") f.source = relativeTo(r, f.source);
   // A file's array or grid is chosen by name; without one, the file's only (or active) vector one.
   f.name = r.string(t, "name", "field", f.source == "analytic" ? f.name : std::string());
   if (const toml::value* res = r.find(t, "resolution")) {
@@ -198,6 +206,7 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
 void readScene(const Reader& r, const toml::value& t, SceneSpec& s) {
   r.checkKeys(t, "scene", {"terrain", "ground_height", "terrain_min", "terrain_max", "helicopter"});
   s.terrain = r.string(t, "terrain", "scene", s.terrain);
+  if (s.terrain != "flat") s.terrain = relativeTo(r, s.terrain);
   s.groundHeight = r.real(t, "ground_height", "scene", s.groundHeight);
   s.terrainBounds.min = r.vec<3>(t, "terrain_min", "scene", s.terrainBounds.min);
   s.terrainBounds.max = r.vec<3>(t, "terrain_max", "scene", s.terrainBounds.max);
@@ -378,8 +387,8 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
           int depth) {
   const Reader r(file);
   r.checkKeys(root, "",
-              {"include", "run", "field", "scene", "sim", "render", "emitter", "head", "navigation", "menu", "cluster",
-               "wall"});
+              {"include", "run", "field", "scene", "sim", "render", "field_playback", "helicopter", "emitter", "head",
+               "navigation", "menu", "cluster", "wall"});
   // include = "scene.toml": that file's settings first, this file's on top.
   if (const toml::value* include = r.find(root, "include")) {
     if (!include->is_string()) r.fail(*include, "include", "expected a file name");
@@ -406,6 +415,8 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
   if (const auto* t = section("cluster")) readCluster(r, *t, c.cluster);
   if (const auto* t = section("sim")) setAttributes(r, *t, "sim.", c.particles);
   if (const auto* t = section("render")) setAttributes(r, *t, "render.", c.particles);
+  if (const auto* t = section("field_playback")) setAttributes(r, *t, "field.", c.particles);
+  if (const auto* t = section("helicopter")) setAttributes(r, *t, "helicopter.", c.particles);
   if (const toml::value* emitters = r.find(root, "emitter")) {
     if (!emitters->is_array()) r.fail(*emitters, "emitter", "expected [[emitter]] tables");
     if (emitters->as_array().size() > std::size_t(ParticleState::kMaxEmitters))

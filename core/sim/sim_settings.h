@@ -53,6 +53,7 @@ struct RenderSettings {
   glm::vec3 lightDirection{0.4f, -0.3f, 0.85f};  // towards the light, room space
   float ambient = 0.35f;
   float softness = 0.3f;  // m: particles fade out this close to scene geometry
+  bool fieldBox = true;   // outline the field's bounds
 };
 
 }  // namespace sandstorm
