@@ -38,6 +38,9 @@ int main(int argc, char** argv) {
   ClusterOptions clusterOptions;
   cli.add_flag("--cluster", cluster, "Cluster mode (MPI), as when started by mpirun (which is detected)");
   cli.add_flag("--cluster-stats", clusterOptions.stats, "Cluster mode: log broadcast bytes and times per frame at the end");
+  cli.add_option("--cluster-bench", clusterOptions.benchFrames,
+                 "Cluster mode: N frames of packets and swap barriers only (no walls); use with --cluster-stats")
+      ->check(CLI::NonNegativeNumber);
   // Fault injection for the cluster tests; hidden from --help.
   cli.add_option("--debug-rank", clusterOptions.debugRank)->group("");
   cli.add_option("--debug-die-at-frame", clusterOptions.dieAtFrame)->group("");

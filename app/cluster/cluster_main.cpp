@@ -2,6 +2,7 @@
 
 #include <optional>
 
+#include "app/cluster/cluster_bench.h"
 #include "app/cluster/config_fingerprint.h"
 #include "app/cluster/mpi_cluster.h"
 #include "core/util/error.h"
@@ -36,6 +37,8 @@ int runCluster(const std::filesystem::path& configPath, const AppOptions& option
     error = e.what();
   }
   if (!cluster.start(app ? &app->config() : nullptr, fingerprint, error)) return 1;
+  if (clusterOptions.benchFrames > 0)
+    return runClusterBench(cluster, app->config(), clusterOptions.benchFrames);
   try {
     return app->run();
   } catch (const std::exception& e) {
