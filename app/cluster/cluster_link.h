@@ -55,6 +55,7 @@ class ClusterLink {
   // succeeded; otherwise rank 0 has said what failed where, and all stop.
   virtual bool ready(const std::string& error) = 0;
   // cluster.field = "read": every rank's field checked against rank 0's by hash.
+  // The last step of start-up: from here on waits are bounded by cluster.timeout_s.
   virtual void shareField(const FieldSource& field) = 0;
   // SIGINT/SIGTERM: waits end soon once this flag is set.
   virtual void watchInterrupt(const std::atomic<bool>* flag) = 0;

@@ -84,7 +84,7 @@ std::vector<std::string> MpiCluster::gather(const std::string& record, const std
 
 bool MpiCluster::start(const AppConfig* config, const std::string& fingerprint,
                        const std::string& error) {
-  if (config) mpi_.setTimeout(config->cluster.timeoutSeconds);
+  if (config) mpi_.setTimeout(config->cluster.startupTimeoutSeconds);
   // Rank 0's fingerprint, so a rank with another configuration can say where it differs.
   std::uint64_t length = fingerprint.size();
   MPI_Request request;
@@ -160,6 +160,7 @@ bool MpiCluster::start(const AppConfig* config, const std::string& fingerprint,
   }
 
   readField_ = config->cluster.readField;
+  frameTimeout_ = config->cluster.timeoutSeconds;
   broadcaster_ = std::make_unique<FrameBroadcaster>(
       mpi_, std::size_t(config->cluster.chunkKiB) * 1024, std::size_t(config->cluster.fieldCache));
   if (root()) {
@@ -220,6 +221,13 @@ bool MpiCluster::ready(const std::string& error) {
 }
 
 void MpiCluster::shareField(const FieldSource& field) {
+  // Start-up waits allow cluster.startup_timeout_s (loading a field, opening windows); frames allow
+  // timeout_s.
+  struct FrameTimeout {
+    MpiSession& mpi;
+    double seconds;
+    ~FrameTimeout() { mpi.setTimeout(seconds); }
+  } frameTimeout{mpi_, frameTimeout_};
   if (!readField_) return;
   std::vector<std::shared_ptr<const VectorField>> grids;
   if (field.timeline)

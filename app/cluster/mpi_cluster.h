@@ -57,6 +57,7 @@ class MpiCluster final : public ClusterLink {
   ClusterOptions options_;
   std::vector<int> owner_;  // per configured wall: the rank that drives it
   bool readField_ = false;
+  double frameTimeout_ = 10.0;  // cluster.timeout_s, from the first frame on
   bool ready_ = false;
   bool finished_ = false;
   std::unique_ptr<FrameBroadcaster> broadcaster_;

@@ -53,7 +53,7 @@ class MpiSession {
   int rank_ = 0;
   int size_ = 1;
   std::string host_;
-  double timeout_ = 10.0;
+  double timeout_ = 120.0;  // start-up; the frame loop's is set once it begins
   const std::atomic<bool>* interrupt_ = nullptr;
 };
 

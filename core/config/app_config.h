@@ -104,6 +104,7 @@ struct RunSpec {
 // Cluster mode (mpirun, app/cluster/): how rank 0 feeds the other ranks.
 struct ClusterSpec {
   float timeoutSeconds = 10.0f;  // a rank that does not answer this long stops the run
+  float startupTimeoutSeconds = 120.0f;  // the same before the first frame (loading fields, opening windows)
   bool readField = false;        // field = "read": every rank loads the field itself (checked by hash)
   int chunkKiB = 4096;           // field grids travel in chunks of this size
   int fieldCache = 4;            // grids each rank keeps (a time-varying field's frames)

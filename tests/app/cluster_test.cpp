@@ -218,5 +218,14 @@ TEST(Cluster, RanksWithAnotherConfigurationAreRefused) {
   EXPECT_TRUE(has(r.output, "render.size")) << r.output;
 }
 
+TEST(Cluster, TheBenchReportsOneSlotPerFrame) {
+  const MpiRun r =
+      ranks(2, "--config tests/data/cluster-bench.toml --cluster-bench 300 --cluster-stats");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(has(r.output, "cluster bench: 300 frames")) << r.output;
+  EXPECT_EQ(count(r.output, "300 packets"), 2) << r.output;
+  EXPECT_EQ(count(r.output, " 512 B/frame broadcast"), 2) << r.output;
+}
+
 }  // namespace
 }  // namespace sandstorm

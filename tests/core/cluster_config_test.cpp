@@ -48,6 +48,7 @@ TEST(ClusterConfig, PlacementsApplyToWallsFromAnyFile) {
   const AppConfig c = parseConfig(R"(
 [cluster]
 timeout_s = 2.5
+startup_timeout_s = 30
 field = "read"
 chunk_kib = 64
 field_cache = 8
@@ -57,6 +58,7 @@ hosts = { front = "node-a" }
 )" + kWalls,
                                   "test.toml");
   EXPECT_FLOAT_EQ(c.cluster.timeoutSeconds, 2.5f);
+  EXPECT_FLOAT_EQ(c.cluster.startupTimeoutSeconds, 30.0f);
   EXPECT_TRUE(c.cluster.readField);
   EXPECT_EQ(c.cluster.chunkKiB, 64);
   EXPECT_EQ(c.cluster.fieldCache, 8);
