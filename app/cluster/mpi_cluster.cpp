@@ -161,6 +161,7 @@ bool MpiCluster::start(const AppConfig* config, const std::string& fingerprint,
 
   readField_ = config->cluster.readField;
   frameTimeout_ = config->cluster.timeoutSeconds;
+  startupTimeout_ = config->cluster.startupTimeoutSeconds;
   broadcaster_ = std::make_unique<FrameBroadcaster>(
       mpi_, std::size_t(config->cluster.chunkKiB) * 1024, std::size_t(config->cluster.fieldCache));
   if (root()) {
@@ -283,6 +284,8 @@ void MpiCluster::misbehave(std::uint32_t frame) {
 ClusterLink::Verdict MpiCluster::swap(std::uint32_t frame, int stop,
                                       const std::function<bool()>& wallFailed) {
   misbehave(frame);
+  // Frame 0 is when walls compile their shaders and upload the field: it gets the start-up bound.
+  mpi_.setTimeout(frame == 0 ? startupTimeout_ : frameTimeout_);
   const Clock::time_point start = Clock::now();
   const auto limit =
       std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(mpi_.timeout()));
@@ -308,6 +311,7 @@ ClusterLink::Verdict MpiCluster::swap(std::uint32_t frame, int stop,
   ++swaps_;
   swapSeconds_ += seconds;
   maxSwapSeconds_ = std::max(maxSwapSeconds_, seconds);
+  mpi_.setTimeout(frameTimeout_);
   if (all[0] == 0 && all[1] == 0 && all[2] == 0) return {};
   if (root()) {
     if (all[2])

@@ -57,7 +57,8 @@ class MpiCluster final : public ClusterLink {
   ClusterOptions options_;
   std::vector<int> owner_;  // per configured wall: the rank that drives it
   bool readField_ = false;
-  double frameTimeout_ = 10.0;  // cluster.timeout_s, from the first frame on
+  double frameTimeout_ = 10.0;     // cluster.timeout_s, from the first frame on
+  double startupTimeout_ = 120.0;  // cluster.startup_timeout_s, until frame 0 was drawn everywhere
   bool ready_ = false;
   bool finished_ = false;
   std::unique_ptr<FrameBroadcaster> broadcaster_;
