@@ -8,6 +8,7 @@
 #include <toml.hpp>
 
 #include "core/config/app_config.h"
+#include "core/config/pvx_import.h"
 #include "core/sim/attribute_table.h"
 #include "core/util/error.h"
 
@@ -391,7 +392,7 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
   const Reader r(file);
   r.checkKeys(root, "",
               {"include", "run", "field", "scene", "sim", "render", "field_playback", "helicopter", "emitter", "head",
-               "navigation", "menu", "cluster", "wall"});
+               "navigation", "menu", "cluster", "wall", "pvx", "pvx_up"});
   // include = "scene.toml": that file's settings first, this file's on top.
   if (const toml::value* include = r.find(root, "include")) {
     if (!include->is_string()) r.fail(*include, "include", "expected a file name");
@@ -430,6 +431,15 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
       c.particles.emitters.emplace_back();
       setAttributes(r, e, concat("emitter.", c.particles.emitters.size() - 1, "."), c.particles);
     }
+  }
+  // Walls from a ParaView CAVE file: pvx = "cave.pvx", pvx_up = "y" (ParaView's usual) or "z".
+  if (const toml::value* pvx = r.find(root, "pvx")) {
+    if (!pvx->is_string()) r.fail(*pvx, "pvx", "expected the name of a .pvx file");
+    if (r.find(root, "wall")) r.fail(*pvx, "pvx", "give walls either as [[wall]] or from a .pvx file, not both");
+    const std::string up = r.string(root, "pvx_up", "pvx_up", "y");
+    if (up != "y" && up != "z") r.fail(*r.find(root, "pvx_up"), "pvx_up", "expected \"y\" or \"z\"");
+    c.walls = readPvx(relativeTo(r, pvx->as_string().str), up == "y");
+    return;
   }
   const toml::value* walls = r.find(root, "wall");
   if (!walls) return;  // an included scene file, or the walls come from an include
