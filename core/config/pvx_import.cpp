@@ -56,6 +56,7 @@ std::vector<WallSpec> parsePvx(const std::string& text, const std::string& name,
     const auto a = attributes(tag, concat(name, ":", line));
     WallSpec w;
     w.line = line;
+    w.rank = int(walls.size());  // as ParaView does: machine i is rank i (cluster mode)
     w.name = a.count("Name") ? a.at("Name") : concat("machine", walls.size());
     const std::string where = concat(name, ":", line, ": machine '", w.name, "'");
     w.corners.lowerLeft = corner(a, "LowerLeft", where, yUp);

@@ -1,6 +1,7 @@
 // ParaView's CAVE files (.pvx): one <Machine> per display, with its screen as
 // LowerLeft / LowerRight / UpperRight corners (UpperLeft is derived) and,
-// optionally, Geometry="WxH+X+Y" and FullScreen. ParaView CAVEs are usually
+// optionally, Geometry="WxH+X+Y" and FullScreen. Machine i is driven by MPI
+// rank i in cluster mode, as in ParaView. ParaView CAVEs are usually
 // y-up; `yUp` turns them into Sandstorm's z-up room (x, y, z) -> (x, -z, y),
 // so a front wall at z = -1.5 lands at y = +1.5, ahead of the user.
 #pragma once
