@@ -8,7 +8,9 @@
 #include <memory>
 #include <mutex>
 
+#include "app/cluster/cluster_link.h"
 #include "app/desktop_input.h"
+#include "app/helicopter_controller.h"
 #include "app/menu/menu_host.h"
 #include "app/scene_setup.h"
 #include "contexts/platform/egl_context.h"
@@ -89,7 +91,8 @@ void applySets(AppConfig& config, const std::vector<std::string>& sets) {
   }
 }
 
-App::App(AppConfig config, AppOptions options) : config_(std::move(config)), options_(std::move(options)) {
+App::App(AppConfig config, AppOptions options, ClusterLink* cluster)
+    : config_(std::move(config)), options_(std::move(options)), cluster_(cluster) {
   headless_ = options_.headless || !haveDisplay();
   if (headless_) {
     if (config_.anyWindow() && !options_.headless) log::info("no display: rendering the windows offscreen instead");
@@ -119,6 +122,8 @@ App::App(AppConfig config, AppOptions options) : config_(std::move(config)), opt
     }
     config_.walls = std::move(chosen);
   }
+  // Offscreen there is nobody to use the menu: it only shows when a script drives it.
+  if (headless_ && !options_.menuScript) options_.noMenu = true;
   if (options_.noMenu) {
     config_.menu.operatorWindow.reset();
     for (WallSpec& w : config_.walls) w.menu = false;
@@ -126,8 +131,10 @@ App::App(AppConfig config, AppOptions options) : config_(std::move(config)), opt
 }
 
 int App::run() {
+  if (cluster_) cluster_->localize(config_, options_);  // this rank's walls and outputs
   const std::filesystem::path configDir = config_.path.parent_path();
-  const FieldSource field = makeField(config_.field, configDir);
+  // In cluster mode only rank 0 makes the field (unless every rank reads it): it travels in packets.
+  const FieldSource field = !cluster_ || cluster_->makesField() ? makeField(config_.field, configDir) : FieldSource{};
   const std::shared_ptr<const HeightMap> terrain = makeTerrain(config_.scene, configDir);
   if (options_.screenshotDir) std::filesystem::create_directories(*options_.screenshotDir);
 
@@ -144,6 +151,9 @@ int App::run() {
   }
   if (options_.replay)
     for (const ScheduledChange& s : readSessionLog(*options_.replay)) main.schedule(s.frame, s.change);
+  HelicopterController helicopter(terrain);
+  if (!cluster_ || cluster_->root())
+    helicopter.update(main);  // the configured helicopter's field and dust, before packet 0
   std::unique_ptr<HeadTracker> head = makeHeadTracker(config_.head);
   Navigation navigation = Navigation::from(config_.navigation);
 
@@ -151,10 +161,21 @@ int App::run() {
   // wall's thread makes its own current.
   std::unique_ptr<GlfwLibrary> glfw;
   const bool operatorWindow = config_.menu.operatorWindow && !headless_;
-  if (config_.anyWindow() || operatorWindow) glfw = std::make_unique<GlfwLibrary>();
+  if (config_.anyWindow() || operatorWindow) {
+    glfw = std::make_unique<GlfwLibrary>();
+    // Every window's monitor exists, or nothing starts.
+    const int monitors = glfw->monitorCount();
+    for (std::size_t i = 0; i < config_.walls.size(); ++i) {
+      const WallSpec& w = config_.walls[i];
+      if (w.window && w.window->monitor >= std::max(monitors, 1))
+        throw Error(concat(config_.path.string(), ":", w.line, ": wall[", i, "].window.monitor: monitor ",
+                           w.window->monitor, " does not exist; ", monitors, " connected"));
+    }
+  }
   const int wallCount = int(config_.walls.size());
   FrameChannel channel(wallCount);
-  RenderContext::SwapBarrier barrier(wallCount);
+  // Cluster mode: the main thread joins the swap barrier, to hold the walls until every rank drew.
+  RenderContext::SwapBarrier barrier(wallCount + (cluster_ ? 1 : 0));
   std::vector<std::unique_ptr<RenderContext>> walls;
   std::vector<GlfwWindow*> windows;
   std::vector<GlfwWindow*> wallWindows(std::size_t(wallCount), nullptr);
@@ -196,8 +217,10 @@ int App::run() {
     if (operatorWindow)
       console = std::make_unique<GlfwWindow>(*glfw, windowOptions("Sandstorm: operator", *config_.menu.operatorWindow));
     const int shown = menuWall >= 0 ? menuWall : 0;
-    const WallSpec& wall = config_.walls[std::size_t(shown)];
-    GLFWwindow* wallWindow = wallWindows[std::size_t(shown)] ? wallWindows[std::size_t(shown)]->handle() : nullptr;
+    // (A cluster's rank 0 may drive no wall: then only its operator window shows the menu.)
+    const WallSpec wall = wallCount > 0 ? config_.walls[std::size_t(shown)] : WallSpec{};
+    GLFWwindow* wallWindow =
+        wallCount > 0 && wallWindows[std::size_t(shown)] ? wallWindows[std::size_t(shown)]->handle() : nullptr;
     std::optional<MenuScript> script;
     if (options_.menuScript) script = MenuScript::load(*options_.menuScript);
     // The project's data/ sits beside config/.
@@ -209,14 +232,19 @@ int App::run() {
           useField(main, makeField(fieldSpecFor(choice, config_.field), root));
         },
         std::move(script));
-    if (!operatorWindow) walls[std::size_t(shown)]->setOverlay([&menu] { return menu->latest(); }, menu->font());
+    if (!operatorWindow && wallCount > 0) walls[std::size_t(shown)]->setOverlay([&menu] { return menu->latest(); }, menu->font());
+  }
+
+  if (cluster_) {
+    if (!cluster_->ready("")) return 1;  // some rank could not open its walls; rank 0 said why
+    cluster_->shareField(field);
   }
 
   const int lastFrame = config_.run.frames > 0 ? config_.run.frames - 1 : -1;
   HashLog hashes;
   for (std::size_t i = 0; i < walls.size(); ++i) {
     const bool first = i == 0;
-    walls[i]->setFrameHook([&, this, lastFrame, first](WallRenderer& wall, const FramePacket& packet) {
+    walls[i]->setFrameHook([&, this, lastFrame, first, i](WallRenderer& wall, const FramePacket& packet) {
       if (options_.hashLog) hashes.add(wall, packet.frame);
       const int f = int(packet.frame);
       const bool last = f == lastFrame;
@@ -229,6 +257,7 @@ int App::run() {
         writeParticlesVtp(particles, *options_.dumpParticles);
         log::info("wrote ", particles.size(), " particles to ", options_.dumpParticles->string());
       }
+      if (cluster_) cluster_->drawn(int(i), packet.frame);  // the main thread holds the swap for every rank
     });
     walls[i]->start();
   }
@@ -240,12 +269,77 @@ int App::run() {
   auto lastReport = start, lastTick = start;
   int frames = 0;
   bool failed = false;
+  const auto showMenu = [&](float dt) {
+    MenuStats stats;
+    stats.frame = main.nextFrame();
+    for (const auto& w : walls) {
+      const WallStats s = w->stats();
+      stats.walls.push_back({w->name(), s.fps, s.frameMs, s.updateMs, s.renderMs, s.postMs, s.fieldUploadMs,
+                             s.liveParticles, s.capacity});
+    }
+    menu->frame(main.nextFrame(), dt, stats);
+  };
+  const auto reportProgress = [&](std::chrono::steady_clock::time_point now) {
+    if (now - lastReport <= std::chrono::seconds(2) || walls.empty()) return;
+    lastReport = now;
+    const WallStats s = walls[0]->stats();
+    log::info("frame ", s.frame, lastFrame >= 0 ? concat("/", lastFrame + 1) : std::string(), ": ",
+              s.liveParticles, " particles, ", s.frameMs, " ms per frame on '", walls[0]->name(), "'");
+  };
+  if (cluster_) {
+    // Cluster mode: rank 0 makes and broadcasts each packet, the other ranks
+    // receive it. Frame f's packet travels while the walls draw frame f - 1;
+    // then swap() waits for this rank's walls and every other rank, and only
+    // then do the walls present f - 1. Stop requests travel with the swap, so
+    // every rank stops at the same frame.
+    cluster_->watchInterrupt(&interrupted);
+    for (;;) {
+      const auto now = std::chrono::steady_clock::now();
+      const float dt = std::chrono::duration<float>(now - lastTick).count();
+      lastTick = now;
+      int stop = interrupted ? ClusterLink::kInterrupted : 0;
+      if (cluster_->root() && menu && menu->scriptCloses(main.nextFrame())) stop |= ClusterLink::kClosed;
+      if (glfw) {
+        GlfwLibrary::pollEvents();
+        bool close = menu && menu->operatorWindowClosed();
+        for (GlfwWindow* w : windows) close = close || w->shouldClose();
+        if (close) stop |= ClusterLink::kClosed;
+        if (cluster_->root()) input.update(dt, desktopHead, navigation, menu && menu->wantsMouse(), false);
+      }
+      std::shared_ptr<const FramePacket> packet;
+      if (!cluster_->root()) {
+        packet = cluster_->receive();  // null: rank 0 sent the last frame
+      } else if (lastFrame < 0 || frames <= lastFrame) {
+        if (menu) showMenu(dt);
+        main.setViewer(Viewer{head->pose(main.time()), navigation});
+        packet = std::make_shared<const FramePacket>(main.next());
+        cluster_->send(*packet);
+        helicopter.update(main);
+      } else {
+        cluster_->sendStop();
+      }
+      if (packet) channel.publish(packet);
+      if (frames > 0) {
+        const ClusterLink::Verdict verdict = cluster_->swap(std::uint32_t(frames - 1), stop, [&] {
+          return std::any_of(walls.begin(), walls.end(), [](const auto& w) { return w->error().has_value(); });
+        });
+        failed = failed || verdict.failed;
+        if (!verdict.go) break;
+        barrier.arrive_and_wait();  // every rank drew frame f - 1: present it
+      }
+      if (!packet) break;
+      ++frames;
+      reportProgress(now);
+    }
+    barrier.arrive_and_drop();  // walls finish what was published without the main thread
+  } else
   while (!interrupted && (lastFrame < 0 || frames <= lastFrame)) {
     const auto now = std::chrono::steady_clock::now();
     const float dt = std::chrono::duration<float>(now - lastTick).count();
     lastTick = now;
     if (glfw) {
       GlfwLibrary::pollEvents();
+      if (menu && menu->scriptCloses(main.nextFrame()) && !windows.empty()) windows.front()->requestClose();
       bool close = menu && menu->operatorWindowClosed();
       for (GlfwWindow* w : windows) close = close || w->shouldClose();
       if (close) break;
@@ -253,30 +347,20 @@ int App::run() {
     }
     for (const auto& w : walls) failed = failed || w->error().has_value();
     if (failed) break;
-    if (menu) {
-      MenuStats stats;
-      stats.frame = main.nextFrame();
-      for (const auto& w : walls) {
-        const WallStats s = w->stats();
-        stats.walls.push_back({w->name(), s.fps, s.frameMs, s.updateMs, s.renderMs, s.postMs, s.liveParticles, s.capacity});
-      }
-      menu->frame(main.nextFrame(), dt, stats);
-    }
+    if (menu) showMenu(dt);
     main.setViewer(Viewer{head->pose(main.time()), navigation});
     if (!channel.publish(std::make_shared<const FramePacket>(main.next()))) break;
+    helicopter.update(main);
     ++frames;
-    if (now - lastReport > std::chrono::seconds(2)) {
-      lastReport = now;
-      const WallStats s = walls[0]->stats();
-      log::info("frame ", s.frame, lastFrame >= 0 ? concat("/", lastFrame + 1) : std::string(), ": ",
-                s.liveParticles, " particles, ", s.frameMs, " ms per frame on '", walls[0]->name(), "'");
-    }
+    reportProgress(now);
   }
   channel.close();
   for (auto& w : walls) w->join();
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
   if (interrupted) log::info("interrupted: stopped every wall cleanly");
+  else if (lastFrame < 0 || frames <= lastFrame) log::info("a window closed: stopped every wall cleanly");
+  if (cluster_) cluster_->finish();
   if (options_.hashLog) hashes.write(*options_.hashLog);
 
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -286,7 +370,8 @@ int App::run() {
   for (const auto& w : walls) {
     const WallStats s = w->stats();
     log::info("  wall '", w->name(), "': ", s.liveParticles, " live particles at frame ", s.frame, ", last frame ",
-              s.frameMs, " ms", w->error() ? " FAILED: " + *w->error() : std::string());
+              s.frameMs, " ms; ", s.fieldUploads, " field upload(s), the last ", s.fieldUploadMs, " ms",
+              w->error() ? " FAILED: " + *w->error() : std::string());
   }
   if (options_.screenshotDir) log::info("images in ", options_.screenshotDir->string(), "/");
   walls.clear();  // before the windows' library goes

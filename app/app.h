@@ -14,6 +14,8 @@
 
 namespace sandstorm {
 
+class ClusterLink;
+
 struct AppOptions {
   std::optional<int> frames;                      // overrides run.frames
   std::optional<std::filesystem::path> screenshotDir;
@@ -34,14 +36,18 @@ void applySets(AppConfig& config, const std::vector<std::string>& sets);
 
 class App {
  public:
-  App(AppConfig config, AppOptions options);
+  // `cluster`: cluster mode (app/cluster/), this rank's link to the others; null: one process.
+  App(AppConfig config, AppOptions options, ClusterLink* cluster = nullptr);
   // Runs until the frame count is reached, a window closes or Ctrl-C. Returns
   // the process exit code (0, or 1 when a wall failed).
   int run();
 
+  const AppConfig& config() const { return config_; }
+
  private:
   AppConfig config_;
   AppOptions options_;
+  ClusterLink* cluster_ = nullptr;
   bool headless_ = false;
 };
 

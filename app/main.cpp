@@ -2,13 +2,17 @@
 #include <CLI/CLI.hpp>
 
 #include "app/app.h"
+#include "app/cluster/cluster_link.h"
+#ifdef SANDSTORM_MPI
+#include "app/cluster/cluster_main.h"
+#endif
 #include "core/util/error.h"
 #include "core/util/log.h"
 
 int main(int argc, char** argv) {
   using namespace sandstorm;
   CLI::App cli{"Sandstorm: GPU particles carried through vector fields, for CAVEs and multi-window walls"};
-  std::string configPath = "config/desktop.toml";
+  std::string configPath = "config/downdraft.toml";
   AppOptions options;
   std::string screenshotDir, dumpPath, logLevel;
   int frames = -1;
@@ -30,6 +34,17 @@ int main(int argc, char** argv) {
       ->check(CLI::ExistingFile);
   cli.add_flag("--no-menu", options.noMenu, "Show no menu panel");
   cli.add_flag("--headless", options.headless, "Render every wall offscreen (EGL), even with a display");
+  bool cluster = false;
+  ClusterOptions clusterOptions;
+  cli.add_flag("--cluster", cluster, "Cluster mode (MPI), as when started by mpirun (which is detected)");
+  cli.add_flag("--cluster-stats", clusterOptions.stats, "Cluster mode: log broadcast bytes and times per frame at the end");
+  cli.add_option("--cluster-bench", clusterOptions.benchFrames,
+                 "Cluster mode: N frames of packets and swap barriers only (no walls); use with --cluster-stats")
+      ->check(CLI::NonNegativeNumber);
+  // Fault injection for the cluster tests; hidden from --help.
+  cli.add_option("--debug-rank", clusterOptions.debugRank)->group("");
+  cli.add_option("--debug-die-at-frame", clusterOptions.dieAtFrame)->group("");
+  cli.add_option("--debug-hang-at-frame", clusterOptions.hangAtFrame)->group("");
   cli.add_option("--log-level", logLevel, "error, warn, info or debug")->check(CLI::IsMember({"error", "warn", "info", "debug"}));
   try {
     cli.parse(argc, argv);
@@ -54,6 +69,14 @@ int main(int argc, char** argv) {
     }
     options.dumpParticles = dumpPath;
   }
+#ifdef SANDSTORM_MPI
+  if (cluster || launchedByMpirun()) return runCluster(configPath, options, clusterOptions);
+#else
+  if (cluster) {
+    log::error("--cluster: this sandstorm was built without MPI (scripts/setup installs Open MPI; rebuild)");
+    return 1;
+  }
+#endif
   try {
     App app(loadConfig(configPath), options);
     return app.run();

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/field/analytic_field_factory.h"
+#include "core/field/height_map_io.h"
 #include "core/io/field_loader.h"
 #include "core/io/field_sequence.h"
 #include "core/sim/main_context.h"
@@ -12,6 +13,7 @@
 namespace sandstorm {
 namespace {
 
+// Config paths arrive resolved against their config file; menu choices against `baseDir`.
 std::filesystem::path resolve(const std::string& source, const std::filesystem::path& baseDir) {
   const std::filesystem::path p(source);
   return p.is_absolute() || std::filesystem::exists(p) ? p : baseDir / p;
@@ -96,9 +98,15 @@ FieldSpec fieldSpecFor(const std::string& choice, const FieldSpec& base) {
   return spec;
 }
 
-std::shared_ptr<const HeightMap> makeTerrain(const SceneSpec& spec, const std::filesystem::path&) {
+std::shared_ptr<const HeightMap> makeTerrain(const SceneSpec& spec, const std::filesystem::path& baseDir) {
   if (spec.terrain == "flat") return std::make_shared<HeightMap>(HeightMap::flat(spec.groundHeight));
-  throw Error(concat("scene.terrain '", spec.terrain, "': expected \"flat\""));
+  if (!spec.terrain.ends_with(".pgm"))
+    throw Error(concat("scene.terrain '", spec.terrain, "': expected \"flat\" or a 16-bit height map (.pgm)"));
+  auto map = std::make_shared<HeightMap>(readHeightMapPgm(resolve(spec.terrain, baseDir), spec.terrainBounds));
+  log::info("terrain: ", spec.terrain, ", ", map->dims().x, "x", map->dims().y, " over ",
+            spec.terrainBounds.max.x - spec.terrainBounds.min.x, " m, heights ", map->minHeight(), "..",
+            map->maxHeight(), " m");
+  return map;
 }
 
 }  // namespace sandstorm

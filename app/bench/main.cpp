@@ -274,7 +274,7 @@ class Bench {
       const auto fieldUpdate = benchField("texture");
       auto system = makeSystem(c, o_.wallBackend);
       BenchView view;
-      view.scene().setTerrain(*terrain_);
+      view.scene().setTerrain(terrain_);
       OutputTarget out;
       out.resize(o_.size);
       StageWatches watches;
@@ -327,7 +327,7 @@ class Bench {
       std::vector<View> cameras;
       for (int w = 0; w < count; ++w) {
         views.push_back(std::make_unique<BenchView>());
-        views.back()->scene().setTerrain(*terrain_);
+        views.back()->scene().setTerrain(terrain_);
         cameras.push_back(benchView(w, count, o_.size));
       }
       OutputTarget out;

@@ -16,6 +16,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/field/height_map_io.h"
 #include "core/field/analytic_field.h"
 #include "core/field/analytic_field_factory.h"
 #include "core/io/field_loader.h"
@@ -164,6 +165,16 @@ int main(int argc, char** argv) {
   generateCmd->add_option("--param", gparams, "a field parameter KEY=VALUE (repeatable)");
   generateCmd->footer(fieldList());
 
+  std::string tout;
+  int tsize = 257;
+  double textent = 200.0;
+  unsigned tseed = 7;
+  auto* terrainCmd = app.add_subcommand("terrain", "make a desert dune height map (16-bit PGM)");
+  terrainCmd->add_option("OUT", tout, "output file (.pgm)")->required();
+  terrainCmd->add_option("--size", tsize, "samples per side")->check(CLI::Range(2, 8193));
+  terrainCmd->add_option("--extent", textent, "metres per side (for the dunes' wavelength)")->check(CLI::PositiveNumber);
+  terrainCmd->add_option("--seed", tseed, "noise seed");
+
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -174,6 +185,12 @@ int main(int argc, char** argv) {
     if (*infoCmd) info(infoFile, infoOpts);
     if (*convertCmd) convert(in, out, convertOpts);
     if (*resampleCmd) convert(rin, rout, resampleOpts);
+    if (*terrainCmd) {
+      const HeightMap dunes = duneTerrain({tsize, tsize}, glm::vec2(float(textent)), tseed);
+      writeHeightMapPgm(dunes, tout, 0.0f, 1.0f);
+      std::cerr << "wrote " << tout << " (" << tsize << "x" << tsize << " dunes over " << textent
+                << " m; heights 0..1, scaled by the config's terrain_min/max)\n";
+    }
     if (*generateCmd) {
       const auto field = makeAnalyticField(name, parseParams(gparams));
       const Box box{{float(gbounds[0]), float(gbounds[1]), float(gbounds[2])},

@@ -31,6 +31,8 @@ class MenuHost {
   const UiFont& font() const { return session_.font(); }
   bool wantsMouse() const { return session_.wantsMouse(); }
   bool operatorWindowClosed() const;
+  // The menu script asked for the windows to close (tests of closing a window).
+  bool scriptCloses(std::uint32_t frame) const { return script_ && script_->closesBy(frame); }
 
  private:
   std::unique_ptr<GlfwWindow> operatorWindow_;

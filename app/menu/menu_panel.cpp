@@ -44,6 +44,10 @@ void MenuPanel::build(const MenuStats& stats) {
                ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize);
   runControls(state);
   statsSection(stats, state);
+  if (state.helicopter.enabled && ImGui::CollapsingHeader("Helicopter", ImGuiTreeNodeFlags_DefaultOpen)) {
+    for (const char* key : {"helicopter.throttle", "helicopter.altitude", "helicopter.x", "helicopter.y"})
+      attributeWidget(AttributeTable::instance().lookup(key), key, state);
+  }
   // The thesis's Table 5.1 first: the attributes an operator reaches for.
   if (ImGui::CollapsingHeader("Table of dynamic attributes", ImGuiTreeNodeFlags_DefaultOpen)) {
     const AttributeTable& table = AttributeTable::instance();
@@ -63,6 +67,10 @@ void MenuPanel::build(const MenuStats& stats) {
   }
   emitterSection(state);
   fieldSection();
+  if (ImGui::CollapsingHeader("Field playback")) {
+    for (const AttributeInfo& info : AttributeTable::instance().entries())
+      if (info.key.starts_with("field.")) attributeWidget(info, info.key, state);
+  }
   if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
   ImGui::End();
 }
@@ -84,8 +92,8 @@ void MenuPanel::runControls(const ParticleState& state) {
 void MenuPanel::statsSection(const MenuStats& stats, const ParticleState& state) {
   if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::Text("frame %u", stats.frame);
-  if (ImGui::BeginTable("walls", 6, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
-    for (const char* h : {"wall", "fps", "frame ms", "update", "render", "post"}) ImGui::TableSetupColumn(h);
+  if (ImGui::BeginTable("walls", 7, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
+    for (const char* h : {"wall", "fps", "frame ms", "update", "render", "post", "field"}) ImGui::TableSetupColumn(h);
     ImGui::TableHeadersRow();
     for (const MenuWallStats& w : stats.walls) {
       ImGui::TableNextRow();
@@ -93,7 +101,7 @@ void MenuPanel::statsSection(const MenuStats& stats, const ParticleState& state)
       ImGui::TextUnformatted(w.name.c_str());
       ImGui::TableNextColumn();
       ImGui::Text("%.1f", w.fps);
-      for (double ms : {w.frameMs, w.updateMs, w.renderMs, w.postMs}) {
+      for (double ms : {w.frameMs, w.updateMs, w.renderMs, w.postMs, w.uploadMs}) {
         ImGui::TableNextColumn();
         ImGui::Text("%.2f", ms);
       }

@@ -19,7 +19,7 @@ namespace sandstorm {
 
 struct MenuWallStats {
   std::string name;
-  double fps = 0, frameMs = 0, updateMs = 0, renderMs = 0, postMs = 0;
+  double fps = 0, frameMs = 0, updateMs = 0, renderMs = 0, postMs = 0, uploadMs = 0;
   std::size_t live = 0, capacity = 0;
 };
 

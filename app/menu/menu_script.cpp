@@ -25,8 +25,13 @@ MenuScript MenuScript::parse(const std::string& text, const std::string& name) {
     } catch (...) {
       throw Error(concat(name, ":", lineNo, ": expected a frame number, got '", first, "'"));
     }
-    if (!(words >> action >> c.widget) || action != "click")
-      throw Error(concat(name, ":", lineNo, ": expected 'FRAME click WIDGET [FRACTION]'"));
+    if (!(words >> action) || (action != "click" && action != "close") ||
+        (action == "click" && !(words >> c.widget)))
+      throw Error(concat(name, ":", lineNo, ": expected 'FRAME click WIDGET [FRACTION]' or 'FRAME close'"));
+    if (action == "close") {
+      script.clicks_.push_back(c);
+      continue;
+    }
     if (std::string f; words >> f) {
       try {
         c.across = std::stof(f);
@@ -49,9 +54,15 @@ MenuScript MenuScript::load(const std::filesystem::path& path) {
   return parse(text.str(), path.string());
 }
 
+bool MenuScript::closesBy(std::uint32_t frame) const {
+  for (const Click& c : clicks_)
+    if (c.widget.empty() && frame >= c.frame) return true;
+  return false;
+}
+
 void MenuScript::inject(std::uint32_t frame, ImGuiSession& session, const MenuPanel& panel) const {
   for (const Click& c : clicks_) {
-    if (frame < c.frame || frame > c.frame + 2) continue;
+    if (c.widget.empty() || frame < c.frame || frame > c.frame + 2) continue;
     const auto it = panel.rects().find(c.widget);
     if (it == panel.rects().end()) {
       if (frame == c.frame) log::warn("menu script: no widget '", c.widget, "' on the panel at frame ", frame);

@@ -6,6 +6,7 @@
 //   # frame  action  widget          where across it (0..1, default 0.5)
 //   30       click   render.size     0.8
 //   60       click   button:pause
+//   90       close                        (as if the user closed a window)
 //
 // A click hovers at its frame, presses at the next and releases at the one after.
 #pragma once
@@ -24,7 +25,7 @@ class MenuScript {
  public:
   struct Click {
     std::uint32_t frame = 0;
-    std::string widget;
+    std::string widget;  // empty: close
     float across = 0.5f;
   };
 
@@ -33,6 +34,8 @@ class MenuScript {
 
   // Before ImGuiSession::begin() of `frame`: injects this frame's input.
   void inject(std::uint32_t frame, ImGuiSession& session, const MenuPanel& panel) const;
+  // Whether the script closes the window at or before `frame`.
+  bool closesBy(std::uint32_t frame) const;
   const std::vector<Click>& clicks() const { return clicks_; }
 
  private:

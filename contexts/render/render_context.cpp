@@ -34,6 +34,9 @@ void RenderContext::run() {
     context_->makeCurrent();
     std::unique_ptr<WallRenderer> renderer = std::make_unique<WallRenderer>(setup_);
     log::debug("wall '", name(), "': ", context_->description());
+    // Wall-clock time on this thread is for the statistics only; the
+    // simulation's time comes from the packets.
+    std::optional<std::chrono::steady_clock::time_point> lastSwap;
     while (std::shared_ptr<const FramePacket> packet = channel_.take(consumer_)) {
       const auto start = std::chrono::steady_clock::now();
       renderer->frame(*packet, context_->framebufferSize());
@@ -45,14 +48,21 @@ void RenderContext::run() {
       const ParticleSystem::Timings timings = renderer->particles().timings();
       barrier_.arrive_and_wait();  // the swap barrier: nobody presents frame f before all have drawn it
       context_->swapBuffers();
+      const auto swapped = std::chrono::steady_clock::now();
+      const double interval = lastSwap ? std::chrono::duration<double>(swapped - *lastSwap).count() : 0.0;
+      lastSwap = swapped;
       std::lock_guard lock(mutex_);
       stats_.capacity = renderer->particles().update().capacity();
       stats_.updateMs = timings.updateMs;
       stats_.renderMs = timings.renderMs;
       stats_.postMs = timings.postMs;
+      if (packet->fieldUpdate) {
+        stats_.fieldUploadMs = renderer->particles().update().lastFieldUploadMs();
+        ++stats_.fieldUploads;
+      }
       stats_.frame = packet->frame;
       stats_.frameMs = ms;
-      stats_.fps = packet->dt > 0.0f ? 0.9 * stats_.fps + 0.1 / double(packet->dt) : stats_.fps;
+      if (interval > 0.0) stats_.fps = stats_.fps > 0.0 ? 0.9 * stats_.fps + 0.1 / interval : 1.0 / interval;
       stats_.liveParticles = live;
     }
     renderer.reset();  // GL objects go with their own context current

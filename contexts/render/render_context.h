@@ -31,6 +31,8 @@ struct WallStats {
   std::size_t liveParticles = 0;
   std::size_t capacity = 0;
   double updateMs = 0.0, renderMs = 0.0, postMs = 0.0;  // GPU time per stage (a few frames old)
+  double fieldUploadMs = 0.0;  // CPU time of the last field upload to this wall's GPU
+  int fieldUploads = 0;        // how many field grids this wall has received
 };
 
 class RenderContext {

@@ -27,8 +27,11 @@ void ViewRenderer::render(const ParticleSystem& particles, const View& view, glm
   glDepthMask(GL_TRUE);
   const float depth = 1.0f;
   glClearNamedFramebufferfv(targets_.sceneFramebuffer(), GL_DEPTH, 0, &depth);
-  if (const auto field = particles.field(); field && field->field)
+  if (const auto field = particles.field(); field && field->field && particles.state().render.fieldBox)
     scene_.setFieldBox(field->field->bounds(), field->placement);
+  else
+    scene_.setFieldBox(std::nullopt, {});
+  scene_.setHelicopter(particles.state().helicopter, HelicopterModel{}.rotorRadius);
   scene_.draw();
 
   particles.render(targets_, destination, origin, &view);

@@ -15,7 +15,7 @@ WallRenderer::WallRenderer(const WallRendererSetup& s)
       emptyVao_(gl::createVertexArray()) {
   if (s.terrain) {
     system_.setTerrain(s.terrain);
-    viewRenderer_.scene().setTerrain(*s.terrain);
+    viewRenderer_.scene().setTerrain(s.terrain);
   }
 }
 

@@ -12,8 +12,34 @@ SceneRenderer::SceneRenderer()
     : sky_(std::vector<std::string>{"fullscreen.vert", "sky.frag"}),
       terrain_(std::vector<std::string>{"terrain.vert", "terrain.frag"}),
       lines_(std::vector<std::string>{"lines.vert", "lines.frag"}),
+      mesh_(std::vector<std::string>{"mesh.vert", "mesh.frag"}),
       emptyVao_(gl::createVertexArray()) {
-  setTerrain(HeightMap::flat(0.0f));
+  setTerrain(std::make_shared<HeightMap>(HeightMap::flat(0.0f)));
+
+  // A unit cube (-0.5..0.5) with face normals: the helicopter proxy is made of stretched cubes.
+  struct Vertex {
+    glm::vec3 position, normal;
+  };
+  std::vector<Vertex> cube;
+  for (int axis = 0; axis < 3; ++axis)
+    for (float side : {-1.0f, 1.0f}) {
+      glm::vec3 n(0.0f);
+      n[axis] = side;
+      const glm::vec3 u = glm::vec3(n.y, n.z, n.x) * side, v = glm::cross(n, u);
+      const glm::vec3 c = 0.5f * n;
+      const glm::vec3 q[4] = {c - 0.5f * u - 0.5f * v, c + 0.5f * u - 0.5f * v, c + 0.5f * u + 0.5f * v,
+                              c - 0.5f * u + 0.5f * v};
+      for (int i : {0, 1, 2, 0, 2, 3}) cube.push_back({q[i], n});
+    }
+  cubeVertices_ = gl::createBuffer();
+  glNamedBufferStorage(cubeVertices_.id(), GLsizeiptr(cube.size() * sizeof(Vertex)), cube.data(), 0);
+  cubeVao_ = gl::createVertexArray();
+  for (GLuint a = 0; a < 2; ++a) {
+    glEnableVertexArrayAttrib(cubeVao_.id(), a);
+    glVertexArrayAttribFormat(cubeVao_.id(), a, 3, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec3));
+    glVertexArrayAttribBinding(cubeVao_.id(), a, 0);
+  }
+  glVertexArrayVertexBuffer(cubeVao_.id(), 0, cubeVertices_.id(), 0, sizeof(Vertex));
 
   // The unit cube's 12 edges; the model matrix stretches it onto the field's box.
   std::vector<glm::vec3> edges;
@@ -36,7 +62,14 @@ SceneRenderer::SceneRenderer()
   glVertexArrayVertexBuffer(boxVao_.id(), 0, boxVertices_.id(), 0, sizeof(glm::vec3));
 }
 
-void SceneRenderer::setTerrain(const HeightMap& map) {
+void SceneRenderer::setHelicopter(const HelicopterSettings& helicopter, float rotorRadius) {
+  helicopter_ = helicopter;
+  rotorRadius_ = rotorRadius;
+}
+
+void SceneRenderer::setTerrain(std::shared_ptr<const HeightMap> terrain) {
+  ground_ = std::move(terrain);
+  const HeightMap& map = *ground_;
   struct Vertex {
     glm::vec3 position, normal;
   };
@@ -89,6 +122,31 @@ void SceneRenderer::draw() const {
   terrain_.use();
   glBindVertexArray(terrainVao_.id());
   glDrawElements(GL_TRIANGLES, terrainIndexCount_, GL_UNSIGNED_INT, nullptr);
+
+  if (helicopter_.enabled) {
+    // Hub at the rotor; the fuselage hangs below it, the boom runs aft (-x).
+    const float r = rotorRadius_;
+    const glm::vec3 hub(helicopter_.x, helicopter_.y, ground_->heightAt({helicopter_.x, helicopter_.y}) + helicopter_.altitude);
+    struct Part {
+      glm::vec3 center, size, color;
+    };
+    const Part parts[] = {
+        {{0.1f * r, 0.0f, -0.33f * r}, {1.6f * r, 0.34f * r, 0.32f * r}, {0.22f, 0.25f, 0.2f}},  // fuselage
+        {{-1.2f * r, 0.0f, -0.2f * r}, {1.5f * r, 0.08f * r, 0.1f * r}, {0.22f, 0.25f, 0.2f}},   // tail boom
+        {{-1.9f * r, 0.0f, -0.05f * r}, {0.12f * r, 0.04f * r, 0.35f * r}, {0.22f, 0.25f, 0.2f}}, // fin
+        {{0.0f, 0.0f, -0.08f * r}, {0.05f * r, 0.05f * r, 0.16f * r}, {0.1f, 0.1f, 0.1f}},       // mast
+        {{0.0f, 0.0f, 0.0f}, {2.0f * r, 0.07f * r, 0.015f * r}, {0.08f, 0.08f, 0.08f}},           // blades
+        {{0.0f, 0.0f, 0.0f}, {0.07f * r, 2.0f * r, 0.015f * r}, {0.08f, 0.08f, 0.08f}},
+    };
+    mesh_.use();
+    glBindVertexArray(cubeVao_.id());
+    for (const Part& p : parts) {
+      const glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), hub + p.center), p.size);
+      glProgramUniformMatrix4fv(mesh_.id(), 0, 1, GL_FALSE, glm::value_ptr(model));
+      glProgramUniform4f(mesh_.id(), 1, p.color.x, p.color.y, p.color.z, 1.0f);
+      glDrawArrays(GL_TRIANGLES, 0, 36);
+    }
+  }
 
   if (box_) {
     glm::mat4 model = placement_.matrix();

@@ -1,9 +1,11 @@
 // SceneRenderer: the scene particles are composited against: a sky, the
-// terrain (or flat ground) and, as a guide, the field's bounding box. It draws
+// terrain (or flat ground), the downdraft demo's helicopter and, as a guide,
+// the field's bounding box. It draws
 // into the bound framebuffer with depth, using the view and render blocks
 // already bound (bindings 1 and 2).
 #pragma once
 
+#include <memory>
 #include <optional>
 
 #include "contexts/gl/objects.h"
@@ -11,6 +13,7 @@
 #include "core/field/box.h"
 #include "core/field/field_placement.h"
 #include "core/field/height_map.h"
+#include "core/sim/helicopter.h"
 
 namespace sandstorm {
 
@@ -18,16 +21,22 @@ class SceneRenderer {
  public:
   SceneRenderer();
 
-  void setTerrain(const HeightMap& terrain);
+  void setTerrain(std::shared_ptr<const HeightMap> terrain);
   // The box drawn around the field; nothing is drawn without one.
   void setFieldBox(std::optional<Box> bounds, const FieldPlacement& placement);
+  // A simple helicopter proxy (fuselage, tail boom, rotor) at the hub the settings give.
+  void setHelicopter(const HelicopterSettings& helicopter, float rotorRadius);
   void draw() const;
 
  private:
-  gl::Program sky_, terrain_, lines_;
+  gl::Program sky_, terrain_, lines_, mesh_;
   gl::VertexArray emptyVao_;
   gl::VertexArray terrainVao_, boxVao_;
-  gl::Buffer terrainVertices_, terrainIndices_, boxVertices_;
+  gl::Buffer terrainVertices_, terrainIndices_, boxVertices_, cubeVertices_;
+  gl::VertexArray cubeVao_;
+  std::shared_ptr<const HeightMap> ground_;
+  HelicopterSettings helicopter_;
+  float rotorRadius_ = 7.0f;
   int terrainIndexCount_ = 0;
   std::optional<Box> box_;
   FieldPlacement placement_;

@@ -46,6 +46,7 @@ struct WallSpec {
   StereoMode stereo = StereoMode::Mono;
   bool menu = false;                    // show the menu panel on this wall
   int rank = 0;                         // cluster mode: the MPI rank that drives this wall
+  std::string host;                     // cluster mode: or the first rank on this host (overrides rank)
   int line = 0;                         // where the wall was declared, for messages
 };
 
@@ -100,6 +101,25 @@ struct RunSpec {
   float farPlane = 500.0f;
 };
 
+// Cluster mode (mpirun, app/cluster/): how rank 0 feeds the other ranks.
+struct ClusterSpec {
+  float timeoutSeconds = 10.0f;  // a rank that does not answer this long stops the run
+  float startupTimeoutSeconds = 120.0f;  // the same before the first frame (loading fields, opening windows)
+  bool readField = false;        // field = "read": every rank loads the field itself (checked by hash)
+  int chunkKiB = 4096;           // field grids travel in chunks of this size
+  int fieldCache = 4;            // grids each rank keeps (a time-varying field's frames)
+  bool roundRobin = false;       // walls = "round-robin": wall i on rank i % ranks, whatever rank/host say
+  // [cluster] ranks = {front = 1}, hosts = {front = "node-a"}: placement of
+  // walls defined elsewhere (an included file); applied once every file is read.
+  struct Placement {
+    std::string wall;
+    std::optional<int> rank;
+    std::string host;
+    std::string where;  // "file:line: cluster.ranks.front", for messages
+  };
+  std::vector<Placement> placements;
+};
+
 // The operator's menu in a window of its own (a console monitor in a CAVE).
 struct MenuSpec {
   std::optional<WindowSpec> operatorWindow;
@@ -114,6 +134,7 @@ struct AppConfig {
   NavigationSpec navigation;
   RunSpec run;
   MenuSpec menu;
+  ClusterSpec cluster;
   std::vector<WallSpec> walls;
 
   bool anyWindow() const;

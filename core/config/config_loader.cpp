@@ -1,5 +1,6 @@
 // Reads AppConfig from TOML (toml11). Every key is checked; unknown keys,
 // wrong types and bad values throw Error with "file:line: key: what was expected".
+#include <algorithm>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -7,6 +8,7 @@
 #include <toml.hpp>
 
 #include "core/config/app_config.h"
+#include "core/config/pvx_import.h"
 #include "core/sim/attribute_table.h"
 #include "core/util/error.h"
 
@@ -161,10 +163,18 @@ void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
     r.fail(t, "run.near/far", "expected 0 < near < far");
 }
 
+// A file named in a config is relative to that config file's folder (so an
+// included scene finds its data wherever it is included from).
+std::string relativeTo(const Reader& r, const std::string& path) {
+  if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
+  return (std::filesystem::path(r.file()).parent_path() / path).lexically_normal().string();
+}
+
 void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   r.checkKeys(t, "field", {"source", "name", "dims", "resolution", "bounds_min", "bounds_max", "params", "offset",
                            "scale", "yaw_deg", "mode"});
   f.source = r.string(t, "source", "field", f.source);
+  if (f.source != "analytic") f.source = relativeTo(r, f.source);
   // A file's array or grid is chosen by name; without one, the file's only (or active) vector one.
   f.name = r.string(t, "name", "field", f.source == "analytic" ? f.name : std::string());
   if (const toml::value* res = r.find(t, "resolution")) {
@@ -197,6 +207,7 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
 void readScene(const Reader& r, const toml::value& t, SceneSpec& s) {
   r.checkKeys(t, "scene", {"terrain", "ground_height", "terrain_min", "terrain_max", "helicopter"});
   s.terrain = r.string(t, "terrain", "scene", s.terrain);
+  if (s.terrain != "flat") s.terrain = relativeTo(r, s.terrain);
   s.groundHeight = r.real(t, "ground_height", "scene", s.groundHeight);
   s.terrainBounds.min = r.vec<3>(t, "terrain_min", "scene", s.terrainBounds.min);
   s.terrainBounds.max = r.vec<3>(t, "terrain_max", "scene", s.terrainBounds.max);
@@ -259,7 +270,7 @@ WindowSpec readWindow(const Reader& r, const toml::value& window, const std::str
 WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optional<int> monitors) {
   const std::string path = concat("wall[", index, "]");
   r.checkKeys(t, path, {"name", "lower_left", "lower_right", "upper_left", "camera", "window", "offscreen", "stereo",
-                        "menu", "rank"});
+                        "menu", "rank", "host"});
   WallSpec w;
   w.line = int(t.location().line());
   w.name = r.string(t, "name", path, concat("wall", index));
@@ -299,7 +310,53 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
     r.fail(t, path + ".stereo", "quad-buffer stereo needs a window; offscreen walls can use side-by-side");
   w.menu = r.boolean(t, "menu", path, w.menu);
   w.rank = r.integer(t, "rank", path, 0, 0, 4095);
+  w.host = r.string(t, "host", path, "");
   return w;
+}
+
+void readCluster(const Reader& r, const toml::value& t, ClusterSpec& c) {
+  r.checkKeys(t, "cluster", {"timeout_s", "startup_timeout_s", "field", "chunk_kib", "field_cache", "walls", "ranks", "hosts"});
+  c.timeoutSeconds = r.real(t, "timeout_s", "cluster", c.timeoutSeconds);
+  if (!(c.timeoutSeconds >= 0.1f && c.timeoutSeconds <= 3600.0f))
+    r.fail(*r.find(t, "timeout_s"), "cluster.timeout_s", "expected 0.1..3600 s");
+  c.startupTimeoutSeconds = r.real(t, "startup_timeout_s", "cluster", c.startupTimeoutSeconds);
+  if (!(c.startupTimeoutSeconds >= 1.0f && c.startupTimeoutSeconds <= 86400.0f))
+    r.fail(*r.find(t, "startup_timeout_s"), "cluster.startup_timeout_s", "expected 1..86400 s");
+  c.readField = r.choice<bool>(t, "field", "cluster", c.readField, {{"broadcast", false}, {"read", true}});
+  c.chunkKiB = r.integer(t, "chunk_kib", "cluster", c.chunkKiB, 1, 1 << 20);
+  c.fieldCache = r.integer(t, "field_cache", "cluster", c.fieldCache, 2, 4096);
+  c.roundRobin = r.choice<bool>(t, "walls", "cluster", c.roundRobin, {{"by-rank", false}, {"round-robin", true}});
+  if (const toml::value* ranks = r.find(t, "ranks")) {
+    if (!ranks->is_table()) r.fail(*ranks, "cluster.ranks", "expected a table {wall = rank, ..}");
+    for (const auto& [wall, rank] : ranks->as_table()) {
+      const std::string key = "cluster.ranks." + wall;
+      if (!rank.is_integer() || rank.as_integer() < 0 || rank.as_integer() > 4095)
+        r.fail(rank, key, "expected a rank in 0..4095");
+      c.placements.push_back({wall, int(rank.as_integer()), "", concat(r.at(rank), ": ", key)});
+    }
+  }
+  if (const toml::value* hosts = r.find(t, "hosts")) {
+    if (!hosts->is_table()) r.fail(*hosts, "cluster.hosts", "expected a table {wall = \"host name\", ..}");
+    for (const auto& [wall, host] : hosts->as_table()) {
+      const std::string key = "cluster.hosts." + wall;
+      if (!host.is_string() || host.as_string().str.empty()) r.fail(host, key, "expected a host name");
+      c.placements.push_back({wall, std::nullopt, host.as_string().str, concat(r.at(host), ": ", key)});
+    }
+  }
+}
+
+// [cluster] ranks/hosts name walls that may come from an include: applied last.
+void placeWalls(AppConfig& c) {
+  for (const ClusterSpec::Placement& p : c.cluster.placements) {
+    const auto it = std::find_if(c.walls.begin(), c.walls.end(), [&](const WallSpec& w) { return w.name == p.wall; });
+    if (it == c.walls.end()) {
+      std::string known;
+      for (const WallSpec& w : c.walls) known += (known.empty() ? "" : ", ") + w.name;
+      throw Error(concat(p.where, ": no wall named '", p.wall, "'; the walls are ", known));
+    }
+    if (p.rank) it->rank = *p.rank;
+    if (!p.host.empty()) it->host = p.host;
+  }
 }
 
 toml::value parseToml(const std::string& text, const std::string& name) {
@@ -334,7 +391,8 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
           int depth) {
   const Reader r(file);
   r.checkKeys(root, "",
-              {"include", "run", "field", "scene", "sim", "render", "emitter", "head", "navigation", "menu", "wall"});
+              {"include", "run", "field", "scene", "sim", "render", "field_playback", "helicopter", "emitter", "head",
+               "navigation", "menu", "cluster", "wall", "pvx", "pvx_up"});
   // include = "scene.toml": that file's settings first, this file's on top.
   if (const toml::value* include = r.find(root, "include")) {
     if (!include->is_string()) r.fail(*include, "include", "expected a file name");
@@ -366,8 +424,11 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
     if (const toml::value* w = r.find(*t, "operator_window"))
       c.menu.operatorWindow = readWindow(r, *w, "menu.operator_window", monitors);
   }
+  if (const auto* t = section("cluster")) readCluster(r, *t, c.cluster);
   if (const auto* t = section("sim")) setAttributes(r, *t, "sim.", c.particles);
   if (const auto* t = section("render")) setAttributes(r, *t, "render.", c.particles);
+  if (const auto* t = section("field_playback")) setAttributes(r, *t, "field.", c.particles);
+  if (const auto* t = section("helicopter")) setAttributes(r, *t, "helicopter.", c.particles);
   if (const toml::value* emitters = r.find(root, "emitter")) {
     if (!emitters->is_array()) r.fail(*emitters, "emitter", "expected [[emitter]] tables");
     if (emitters->as_array().size() > std::size_t(ParticleState::kMaxEmitters))
@@ -378,6 +439,15 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
       c.particles.emitters.emplace_back();
       setAttributes(r, e, concat("emitter.", c.particles.emitters.size() - 1, "."), c.particles);
     }
+  }
+  // Walls from a ParaView CAVE file: pvx = "cave.pvx", pvx_up = "y" (ParaView's usual) or "z".
+  if (const toml::value* pvx = r.find(root, "pvx")) {
+    if (!pvx->is_string()) r.fail(*pvx, "pvx", "expected the name of a .pvx file");
+    if (r.find(root, "wall")) r.fail(*pvx, "pvx", "give walls either as [[wall]] or from a .pvx file, not both");
+    const std::string up = r.string(root, "pvx_up", "pvx_up", "y");
+    if (up != "y" && up != "z") r.fail(*r.find(root, "pvx_up"), "pvx_up", "expected \"y\" or \"z\"");
+    c.walls = readPvx(relativeTo(r, pvx->as_string().str), up == "y");
+    return;
   }
   const toml::value* walls = r.find(root, "wall");
   if (!walls) return;  // an included scene file, or the walls come from an include
@@ -407,6 +477,7 @@ AppConfig parseConfig(const std::string& text, const std::filesystem::path& name
   AppConfig c = readWithIncludes(parseToml(text, name.string()), name.string(), monitors, 0);
   if (c.walls.empty())
     throw Error(concat(name.string(), ": no [[wall]] given; expected at least one wall, window or camera"));
+  placeWalls(c);
   c.path = name;
   return c;
 }

@@ -57,6 +57,8 @@ AttributeInfo enumEntry(std::string key, std::vector<std::string> choices, std::
   Ref<decltype(RenderSettings::member)>([](ParticleState& s, int) -> auto& { return s.render.member; })
 #define FIELD(member) \
   Ref<decltype(FieldPlayback::member)>([](ParticleState& s, int) -> auto& { return s.field.member; })
+#define HELICOPTER(member) \
+  Ref<decltype(HelicopterSettings::member)>([](ParticleState& s, int) -> auto& { return s.helicopter.member; })
 #define EMITTER(member) \
   Ref<decltype(Emitter::member)>([](ParticleState& s, int e) -> auto& { return s.emitters[std::size_t(e)].member; })
 
@@ -123,6 +125,7 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("render.splat_pixels", T::Float, 0, 64, "px",
                     "Auto mode: views where particles cover at most this many pixels use splats",
                     RENDER(splatPixels)));
+  v.push_back(entry("render.field_box", T::Bool, 0, 1, "", "Outline the field's bounds", RENDER(fieldBox)));
   // A time-varying field's playback.
   v.push_back(entry("field.speed", T::Float, 0, 100, "x", "Field seconds per simulated second (time-varying fields)",
                     FIELD(speed)));
@@ -133,6 +136,15 @@ std::vector<AttributeInfo> makeEntries() {
                         FIELD(mode)));
   v.push_back(entry("field.paused", T::Bool, 0, 1, "", "Hold the time-varying field's current frame",
                     FIELD(paused)));
+  // The downdraft demo's helicopter.
+  v.push_back(entry("helicopter.enabled", T::Bool, 0, 1, "", "Show the helicopter; its controls drive the dust",
+                    HELICOPTER(enabled)));
+  v.push_back(entry("helicopter.throttle", T::Float, 0, 1, "",
+                    "Throttle: more raises dust rate, lifetime and maximum (about 0.8 hovers)", HELICOPTER(throttle)));
+  v.push_back(entry("helicopter.altitude", T::Float, 1, 60, "m", "Rotor hub above the ground; high up, less dust",
+                    HELICOPTER(altitude)));
+  v.push_back(entry("helicopter.x", T::Float, -90, 90, "m", "Rotor hub position east", HELICOPTER(x)));
+  v.push_back(entry("helicopter.y", T::Float, -90, 90, "m", "Rotor hub position north", HELICOPTER(y)));
   // Emitters.
   v.push_back(enumEntry("emitter.*.shape", {"box", "sphere", "disc", "point"}, "Emission area shape",
                         EMITTER(shape)));
@@ -164,6 +176,7 @@ std::vector<AttributeInfo> makeEntries() {
 
 #undef SIM
 #undef RENDER
+#undef HELICOPTER
 #undef FIELD
 #undef EMITTER
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/sim/emitter.h"
+#include "core/sim/helicopter.h"
 #include "core/sim/sim_settings.h"
 
 namespace sandstorm {
@@ -17,6 +18,7 @@ struct ParticleState {
   SimSettings sim;
   RenderSettings render;
   FieldPlayback field;
+  HelicopterSettings helicopter;
   std::vector<Emitter> emitters{Emitter{}};
 };
 

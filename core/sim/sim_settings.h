@@ -67,6 +67,7 @@ struct RenderSettings {
   float ambient = 0.35f;
   float softness = 0.3f;  // m: particles fade out this close to scene geometry
   float splatPixels = 4.0f;  // Auto mode: splat particles up to this projected diameter
+  bool fieldBox = true;   // outline the field's bounds
 };
 
 }  // namespace sandstorm

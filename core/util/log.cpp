@@ -30,7 +30,14 @@ const char* tag(Level level) {
   return "?";
 }
 
+std::string& processTag() {
+  static std::string tag;
+  return tag;
+}
+
 }  // namespace
+
+void setTag(std::string_view tag) { processTag() = std::string(tag) + (tag.empty() ? "" : " "); }
 
 void setLevel(Level level) { currentLevel() = level; }
 Level level() { return currentLevel(); }
@@ -47,6 +54,7 @@ bool parseLevel(std::string_view name, Level& out) {
 void write(Level level, std::string_view message) {
   static std::mutex mutex;
   std::string line = "[sandstorm ";
+  line += processTag();
   line += tag(level);
   line += "] ";
   line += message;

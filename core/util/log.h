@@ -12,6 +12,9 @@ namespace sandstorm::log {
 enum class Level { Error = 0, Warn = 1, Info = 2, Debug = 3 };
 
 void setLevel(Level level);
+// A tag for every line of this process, e.g. "rank 2" (cluster mode): "[sandstorm rank 2 info] ...".
+// Set it before other threads log.
+void setTag(std::string_view tag);
 Level level();
 bool parseLevel(std::string_view name, Level& out);
 void write(Level level, std::string_view message);

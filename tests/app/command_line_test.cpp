@@ -41,6 +41,14 @@ TEST(CommandLine, BadConfigsNameTheirFileAndLine) {
   EXPECT_NE(r.output.find("bad.toml:5: wall[0].stereo"), std::string::npos) << r.output;
 }
 
+TEST(CommandLine, WithoutOpenGL45TheMessageSaysWhatIsMissing) {
+  // Mesa can be told to offer only OpenGL 3.3.
+  const auto r = runSandstorm("--config tests/data/identity.toml --frames 1", "MESA_GL_VERSION_OVERRIDE=3.3");
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.output.find("OpenGL 4.5"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("Missing:"), std::string::npos) << r.output;
+}
+
 TEST(CommandLine, HeadlessRunsWriteImagesAndParticles) {
   const auto dir = test::scratchDir("outputs");
   const auto r = runSandstorm("--config tests/data/identity.toml --frames 30 --walls front,left --screenshot " +

@@ -24,8 +24,10 @@ inline std::filesystem::path scratchDir(const std::string& name) {
   return dir;
 }
 
-inline ProcessResult runSandstorm(const std::string& args) {
-  const std::string cmd = std::string("cd '") + SANDSTORM_SOURCE_DIR + "' && '" + SANDSTORM_BINARY + "' " + args + " 2>&1";
+// `env`: variable assignments for the child ("MESA_GL_VERSION_OVERRIDE=3.3").
+inline ProcessResult runSandstorm(const std::string& args, const std::string& env = "") {
+  const std::string cmd =
+      std::string("cd '") + SANDSTORM_SOURCE_DIR + "' && " + env + " '" + SANDSTORM_BINARY + "' " + args + " 2>&1";
   ProcessResult r;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) return r;

@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
+#include <fstream>
 
 #include "core/util/error.h"
 
@@ -122,6 +124,50 @@ TEST(Config, BadValuesAreRefusedWithTheirLine) {
   EXPECT_ERROR("[run]\nseed = [1\n", "test.toml", "syntax");
   EXPECT_ERROR("[run]\nseed = 1\n", "test.toml", "no [[wall]]");
   EXPECT_ERROR(kWall + kWall, "test.toml:8", "'front' is used twice");
+}
+
+}  // namespace
+}  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+TEST(Pvx, ParaViewWallsBecomeTheSameCaveAsOurs) {
+  const AppConfig pvx = loadConfig(SANDSTORM_SOURCE_DIR "/config/cave4-pvx.toml");
+  const AppConfig ours = loadConfig(SANDSTORM_SOURCE_DIR "/config/cave4-desktop.toml");
+  ASSERT_EQ(pvx.walls.size(), 4u);
+  for (const WallSpec& p : pvx.walls) {
+    const auto it = std::find_if(ours.walls.begin(), ours.walls.end(), [&](const WallSpec& w) { return w.name == p.name; });
+    ASSERT_NE(it, ours.walls.end()) << p.name;
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_NEAR(p.corners.lowerLeft[a], it->corners.lowerLeft[a], 1e-6f) << p.name;
+      EXPECT_NEAR(p.corners.lowerRight[a], it->corners.lowerRight[a], 1e-6f) << p.name;
+      EXPECT_NEAR(p.corners.upperLeft[a], it->corners.upperLeft[a], 1e-6f) << p.name;
+    }
+    ASSERT_TRUE(p.window);
+    EXPECT_EQ(p.window->size, glm::ivec2(480, 480));
+  }
+}
+
+TEST(Pvx, BadMachinesAreRefusedByName) {
+  const auto errorOf = [](const std::string& text) {
+    try {
+      parseConfig(text, "p.toml");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  const auto dir = std::filesystem::temp_directory_path();
+  std::ofstream(dir / "skew.pvx") << "<pvx>\n<Machine Name=\"w\" LowerLeft=\"0 0 0\" LowerRight=\"1 0 0\" UpperRight=\"1.4 1 0\"/>\n</pvx>";
+  std::ofstream(dir / "short.pvx") << "<pvx>\n\n<Machine Name=\"w\" LowerLeft=\"0 0\" LowerRight=\"1 0 0\" UpperRight=\"1 1 0\"/>";
+  std::ofstream(dir / "none.pvx") << "<pvx></pvx>";
+  EXPECT_NE(errorOf("pvx = \"" + (dir / "skew.pvx").string() + "\"").find("skew.pvx:2: machine 'w'"), std::string::npos);
+  EXPECT_NE(errorOf("pvx = \"" + (dir / "short.pvx").string() + "\"").find("LowerLeft=\"0 0\"; expected three numbers"),
+            std::string::npos);
+  EXPECT_NE(errorOf("pvx = \"" + (dir / "none.pvx").string() + "\"").find("no <Machine>"), std::string::npos);
+  EXPECT_NE(errorOf("pvx = \"" + (dir / "none.pvx").string() + "\"\n[[wall]]\nname = \"x\"\n").find("not both"),
+            std::string::npos);
 }
 
 }  // namespace

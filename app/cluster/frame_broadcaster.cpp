@@ -1,0 +1,230 @@
+#include "app/cluster/frame_broadcaster.h"
+
+#include <algorithm>
+#include <climits>
+
+#include "core/sim/frame_packet_codec.h"
+#include "core/util/byte_reader.h"
+#include "core/util/byte_writer.h"
+#include "core/util/error.h"
+#include "core/util/hash.h"
+#include "core/util/log.h"
+
+namespace sandstorm {
+namespace {
+
+constexpr std::uint32_t kSlotMagic = 0x4d535353;  // "SSSM"
+constexpr std::size_t kHeaderBytes = 20;          // magic, kind + 3 spare, sequence, length (u64)
+constexpr std::size_t kInline = FrameBroadcaster::kSlotBytes - kHeaderBytes;
+
+}  // namespace
+
+FrameBroadcaster::FrameBroadcaster(MpiSession& mpi, std::size_t chunkBytes, std::size_t fieldCache)
+    : mpi_(mpi),
+      chunkBytes_(std::clamp<std::size_t>(chunkBytes, 1024, INT_MAX)),
+      store_(fieldCache) {}
+
+void FrameBroadcaster::post(Kind kind, std::span<const std::byte> payload, bool perFrame) {
+  ByteWriter slot;
+  slot.u32(kSlotMagic);
+  slot.u8(std::uint8_t(kind));
+  slot.u8(0);
+  slot.u16(0);
+  slot.u32(sequence_++);
+  slot.u64(payload.size());
+  const std::size_t inlined = std::min(payload.size(), kInline);
+  slot.raw(payload.first(inlined));
+  std::vector<std::byte> bytes = slot.take();
+  bytes.resize(kSlotBytes);
+  const std::string what = kind == Kind::Packet
+                               ? concat("every rank to take the packet of frame ", nextFrame_)
+                               : concat("every rank to take a message before frame ", nextFrame_);
+  double seconds = 0.0;
+  std::uint64_t moved = kSlotBytes;
+  MPI_Request request;
+  MPI_Ibcast(bytes.data(), int(kSlotBytes), MPI_BYTE, 0, MPI_COMM_WORLD, &request);
+  seconds += mpi_.wait(request, what);
+  for (std::size_t at = inlined; at < payload.size(); at += chunkBytes_) {
+    const std::size_t n = std::min(chunkBytes_, payload.size() - at);
+    // MPI reads the root's buffer only; the cast is MPI's C signature.
+    MPI_Ibcast(const_cast<std::byte*>(payload.data() + at), int(n), MPI_BYTE, 0, MPI_COMM_WORLD,
+               &request);
+    seconds += mpi_.wait(request, what);
+    moved += n;
+  }
+  if (perFrame) {
+    stats_.broadcastBytes += moved;
+    stats_.broadcastSeconds += seconds;
+    stats_.maxBroadcastSeconds = std::max(stats_.maxBroadcastSeconds, seconds);
+  } else if (kind == Kind::Grid) {
+    ++stats_.grids;
+    stats_.gridBytes += moved;
+    stats_.gridSeconds += seconds;
+  }
+}
+
+FrameBroadcaster::Message FrameBroadcaster::take(const std::string& what, bool perFrame) {
+  std::vector<std::byte> slot(kSlotBytes);
+  MPI_Request request;
+  MPI_Ibcast(slot.data(), int(kSlotBytes), MPI_BYTE, 0, MPI_COMM_WORLD, &request);
+  double seconds = mpi_.wait(request, what);
+  ByteReader header(slot, concat("rank ", mpi_.rank(), ": message from rank 0"));
+  if (header.u32("magic") != kSlotMagic) header.fail("magic", "not a Sandstorm cluster message");
+  const std::uint8_t kind = header.u8("kind");
+  if (kind < 1 || kind > 4) header.fail("kind", concat("unknown message kind ", int(kind)));
+  header.raw(3, "spare");
+  const std::uint32_t sequence = header.u32("sequence");
+  if (sequence != sequence_)
+    header.fail("sequence",
+                concat("message ", sequence, " arrived where ", sequence_, " was expected"));
+  ++sequence_;
+  const std::uint64_t length = header.u64("length");
+  if (length > (std::uint64_t{1} << 36))
+    header.fail("length", concat(length, " bytes is beyond any packet or grid"));
+  Message m{Kind(kind), std::vector<std::byte>(std::size_t(length))};
+  const std::size_t inlined = std::min<std::size_t>(m.payload.size(), kInline);
+  std::copy_n(slot.begin() + kHeaderBytes, inlined, m.payload.begin());
+  std::uint64_t moved = kSlotBytes;
+  for (std::size_t at = inlined; at < m.payload.size(); at += chunkBytes_) {
+    const std::size_t n = std::min(chunkBytes_, m.payload.size() - at);
+    MPI_Ibcast(m.payload.data() + at, int(n), MPI_BYTE, 0, MPI_COMM_WORLD, &request);
+    seconds += mpi_.wait(request, what);
+    moved += n;
+  }
+  if (perFrame && m.kind == Kind::Packet) {
+    stats_.broadcastBytes += moved;
+    stats_.broadcastSeconds += seconds;
+    stats_.maxBroadcastSeconds = std::max(stats_.maxBroadcastSeconds, seconds);
+  } else if (m.kind == Kind::Grid) {
+    ++stats_.grids;
+    stats_.gridBytes += moved;
+    stats_.gridSeconds += seconds;
+  }
+  return m;
+}
+
+void FrameBroadcaster::send(const FramePacket& packet) {
+  FieldRefs refs;
+  if (packet.fieldUpdate) {
+    refs.field = store_.identify(packet.fieldUpdate->field);
+    refs.next = store_.identify(packet.fieldUpdate->next);
+    FieldStore::Grids incoming;
+    for (const auto& [hash, grid] : {std::pair{refs.field, packet.fieldUpdate->field},
+                                     std::pair{refs.next, packet.fieldUpdate->next}}) {
+      if (hash == 0 || store_.contains(hash) || incoming.count(hash)) continue;
+      // The hash leads, so a receiver can check the grid that follows.
+      ByteWriter w;
+      w.u64(hash);
+      w.raw(encodeField(*grid));
+      post(Kind::Grid, w.bytes(), false);
+      incoming[hash] = grid;
+    }
+    const std::uint64_t used[2] = {refs.field, refs.next};
+    store_.use(used, incoming);  // as every receiver will
+  }
+  const std::vector<std::byte> bytes = encodePacket(packet, refs);
+  post(Kind::Packet, bytes, true);
+  ++stats_.packets;
+  stats_.packetBytes += bytes.size();
+  stats_.maxPacketBytes = std::max<std::uint64_t>(stats_.maxPacketBytes, bytes.size());
+  nextFrame_ = packet.frame + 1;
+}
+
+void FrameBroadcaster::sendStop() {
+  post(Kind::Stop, {}, false);  // not a frame: kept out of the per-frame figures
+}
+
+std::shared_ptr<const FramePacket> FrameBroadcaster::receive() {
+  try {
+    for (;;) {
+      Message m = take(concat("the packet of frame ", nextFrame_, " from rank 0"), true);
+      switch (m.kind) {
+        case Kind::Stop:
+          return nullptr;
+        case Kind::Hashes:
+          throw Error("a list of field hashes arrived where a packet was expected");
+        case Kind::Grid: {
+          ByteReader r(m.payload, "field grid");
+          const std::uint64_t expected = r.u64("hash");
+          const std::span<const std::byte> encoded = r.raw(r.remaining(), "grid");
+          const std::uint64_t got = fnv1a64(encoded);
+          if (got != expected)
+            throw Error(concat("a field grid arrived damaged: hash ", std::hex, got,
+                               ", rank 0 sent ", expected));
+          incoming_[expected] = std::make_shared<const VectorField>(decodeField(encoded));
+          log::debug("rank ", mpi_.rank(), ": field grid ", std::hex, expected, std::dec,
+                     " arrived (", encoded.size(), " bytes)");
+          continue;
+        }
+        case Kind::Packet: {
+          FieldRefs refs;
+          auto packet = std::make_shared<FramePacket>(decodePacket(m.payload, &refs));
+          if (packet->fieldUpdate) {
+            const std::uint64_t used[2] = {refs.field, refs.next};
+            store_.use(used, incoming_);
+            packet->fieldUpdate = std::make_shared<const FieldUpdate>(
+                FieldUpdate{.field = store_.find(refs.field),
+                            .placement = packet->fieldUpdate->placement,
+                            .next = store_.find(refs.next)});
+          }
+          incoming_.clear();
+          if (packet->frame != nextFrame_)
+            throw Error(concat("the packet of frame ", packet->frame, " arrived where frame ",
+                               nextFrame_, " was expected"));
+          nextFrame_ = packet->frame + 1;
+          ++stats_.packets;
+          stats_.packetBytes += m.payload.size();
+          stats_.maxPacketBytes = std::max<std::uint64_t>(stats_.maxPacketBytes, m.payload.size());
+          return packet;
+        }
+      }
+    }
+  } catch (const Error& e) {
+    // Walls are running: unwinding would leave them waiting. Stop every rank instead.
+    mpi_.abort(e.what());
+  }
+}
+
+bool FrameBroadcaster::pinLocal(const std::vector<std::shared_ptr<const VectorField>>& grids) {
+  std::vector<std::uint64_t> mine;
+  for (const auto& grid : grids)
+    mine.push_back(store_.identify(grid));
+  std::vector<std::uint64_t> theirs = mine;
+  if (mpi_.rank() == 0) {
+    ByteWriter w;
+    w.u32(std::uint32_t(mine.size()));
+    for (const std::uint64_t h : mine)
+      w.u64(h);
+    post(Kind::Hashes, w.bytes(), false);
+  } else {
+    try {
+      const Message m = take("rank 0's field hashes", false);
+      if (m.kind != Kind::Hashes) throw Error("a message other than the field hashes arrived");
+      ByteReader r(m.payload, "field hashes");
+      theirs.assign(r.u32("count"), 0);
+      if (theirs.size() > 1u << 20) r.fail("count", "too many grids");
+      for (std::uint64_t& h : theirs)
+        h = r.u64("hash");
+      r.finish();
+    } catch (const Error& e) {
+      mpi_.abort(e.what());
+    }
+  }
+  const int same = theirs == mine ? 1 : 0;
+  if (!same)
+    log::warn("rank ", mpi_.rank(), " (", mpi_.host(), "): the field it read (", mine.size(),
+              " grid(s)) differs from rank 0's (", theirs.size(), "); rank 0 will send its own");
+  int all = 0;
+  MPI_Request request;
+  MPI_Iallreduce(&same, &all, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD, &request);
+  mpi_.wait(request, "every rank to compare the field it read");
+  if (all)
+    for (std::size_t i = 0; i < grids.size(); ++i)
+      store_.pin(mine[i], grids[i]);
+  else if (mpi_.rank() == 0)
+    log::warn(
+        "cluster: not every rank read the same field as rank 0; rank 0 broadcasts it instead");
+  return all != 0;
+}
+
+}  // namespace sandstorm

@@ -1,0 +1,77 @@
+// FrameBroadcaster: rank 0's frame packets, and the field grids they refer to,
+// to every rank, over non-blocking MPI broadcasts (MpiSession::wait bounds
+// every one). The bytes are the one wire format of core/sim/frame_packet_codec.h.
+//
+// Every message is one fixed-size slot (a header: kind, sequence number,
+// length; then the first bytes of the payload), so a frame costs one
+// broadcast; a longer payload (a field grid) follows in chunks of `chunkBytes`.
+// A grid travels once per change: rank 0 and every rank keep FieldStores that
+// agree, so a packet carries only the grids' hashes; every rank checks each
+// grid it receives against its hash.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "app/cluster/mpi_session.h"
+#include "core/sim/field_store.h"
+#include "core/sim/frame_packet.h"
+
+namespace sandstorm {
+
+class FrameBroadcaster {
+ public:
+  static constexpr std::size_t kSlotBytes = 512;
+
+  struct Stats {
+    std::uint64_t packets = 0;
+    std::uint64_t packetBytes = 0;  // encoded packets (the codec's bytes)
+    std::uint64_t maxPacketBytes = 0;
+    std::uint64_t broadcastBytes = 0;  // what the per-frame broadcasts moved (slots and overflow)
+    double broadcastSeconds = 0.0;     // waiting for per-frame broadcasts
+    double maxBroadcastSeconds = 0.0;
+    std::uint64_t grids = 0;  // field grids sent or received
+    std::uint64_t gridBytes = 0;
+    double gridSeconds = 0.0;
+  };
+
+  FrameBroadcaster(MpiSession& mpi, std::size_t chunkBytes, std::size_t fieldCache);
+
+  // Rank 0: ships the grids the ranks lack, then the packet.
+  void send(const FramePacket& packet);
+  // Rank 0: tells every rank that no packet follows.
+  void sendStop();
+  // The other ranks: the next packet, its field grids attached; null when rank 0 stopped.
+  std::shared_ptr<const FramePacket> receive();
+
+  // Every rank, with the grids it read itself (cluster.field = "read"): when
+  // every rank's hashes equal rank 0's, the grids are kept for good and never
+  // travel; otherwise rank 0 sends its own. Returns whether they agreed.
+  bool pinLocal(const std::vector<std::shared_ptr<const VectorField>>& grids);
+
+  const Stats& stats() const { return stats_; }
+
+ private:
+  enum class Kind : std::uint8_t { Packet = 1, Grid = 2, Stop = 3, Hashes = 4 };
+  struct Message {
+    Kind kind;
+    std::vector<std::byte> payload;
+  };
+
+  void post(Kind kind, std::span<const std::byte> payload, bool perFrame);
+  Message take(const std::string& what, bool perFrame);
+
+  MpiSession& mpi_;
+  std::size_t chunkBytes_;
+  FieldStore store_;
+  FieldStore::Grids incoming_;  // grids that arrived for the next packet
+  std::uint32_t sequence_ = 0;
+  std::uint32_t nextFrame_ = 0;  // for messages: the frame expected next
+  Stats stats_;
+};
+
+}  // namespace sandstorm

@@ -1,0 +1,231 @@
+// Cluster mode on MPI, proven on this machine: three ranks over loopback TCP,
+// headless EGL. Every wall on every rank holds the single process's particles
+// every frame (mid-run changes and a time-varying field included), writes the
+// same PNGs, and faults (a rank that dies, hangs, has no OpenGL, or is
+// missing) stop every rank with a clear message within the configured bound.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <set>
+
+#include "tests/app/run_process.h"
+
+namespace sandstorm {
+namespace {
+
+using test::readLines;
+using test::runSandstorm;
+
+struct MpiRun {
+  int exitCode = -1;
+  std::string output;
+  double seconds = 0.0;
+};
+
+// `apps`: mpirun's "-np N program args [: -np M program args]". As root,
+// mpirun needs consent; --oversubscribe: three ranks on two cores. TCP on the
+// loopback interface stands in for a cluster's network.
+MpiRun mpirun(const std::string& apps) {
+  const std::string cmd = std::string("cd '") + SANDSTORM_SOURCE_DIR +
+                          "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 '" +
+                          SANDSTORM_MPIRUN +
+                          "' --oversubscribe --mca btl self,tcp --mca btl_tcp_if_include lo"
+                          " --mca oob_tcp_if_include lo " +
+                          apps + " 2>&1";
+  const auto start = std::chrono::steady_clock::now();
+  MpiRun r;
+  FILE* pipe = popen(cmd.c_str(), "r");
+  if (!pipe) return r;
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe))
+    r.output += buffer;
+  const int status = pclose(pipe);
+  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+// N ranks of sandstorm, every one with the same arguments.
+MpiRun ranks(int n, const std::string& args) {
+  return mpirun("-np " + std::to_string(n) + " '" + SANDSTORM_BINARY + "' " + args);
+}
+
+bool has(const std::string& output, const std::string& part) {
+  return output.find(part) != std::string::npos;
+}
+
+std::string readBytes(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+int count(const std::string& output, const std::string& part) {
+  int n = 0;
+  for (std::size_t at = output.find(part); at != std::string::npos; at = output.find(part, at + 1))
+    ++n;
+  return n;
+}
+
+// "frame wall count bufferhash statehash" lines by (frame, wall).
+std::map<std::pair<int, std::string>, std::string> hashLines(const std::filesystem::path& path) {
+  std::map<std::pair<int, std::string>, std::string> out;
+  for (const std::string& line : readLines(path)) {
+    std::istringstream in(line);
+    int frame;
+    std::string wall;
+    in >> frame >> wall;
+    out[{frame, wall}] = line;
+  }
+  return out;
+}
+
+// Runs `config` in one process and on three ranks; every rank's walls must
+// match the single process's line for line, every frame.
+// Returns mpirun's output.
+std::string expectSameHashes(const std::string& config, const std::string& extra, int frames,
+                             const std::string& name) {
+  const auto dir = test::scratchDir(name);
+  const std::string args =
+      "--config " + config + " --frames " + std::to_string(frames) + " " + extra;
+  const auto one = runSandstorm(args + " --hash-log " + (dir / "one.txt").string());
+  EXPECT_EQ(one.exitCode, 0) << one.output;
+  const auto reference = hashLines(dir / "one.txt");
+  EXPECT_EQ(reference.size(), 4u * std::size_t(frames));
+
+  const MpiRun cluster =
+      ranks(3, args + " --cluster-stats --hash-log " + (dir / "rank{rank}.txt").string());
+  EXPECT_EQ(cluster.exitCode, 0) << cluster.output;
+  const std::map<int, std::set<std::string>> expectedWalls = {
+      {0, {"front"}}, {1, {"left", "floor"}}, {2, {"right"}}};
+  std::size_t compared = 0;
+  for (const auto& [rank, walls] : expectedWalls) {
+    const auto lines = hashLines(dir / ("rank" + std::to_string(rank) + ".txt"));
+    EXPECT_EQ(lines.size(), walls.size() * std::size_t(frames)) << "rank " << rank;
+    for (const auto& [key, line] : lines) {
+      EXPECT_TRUE(walls.count(key.second)) << "rank " << rank << " drew wall " << key.second;
+      const auto it = reference.find(key);
+      if (it == reference.end()) {
+        ADD_FAILURE() << "not in the single process's log: " << line;
+        continue;
+      }
+      EXPECT_EQ(line, it->second) << "rank " << rank << " differs from one process at frame "
+                                  << key.first;
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, reference.size());
+  // Every rank reports its costs; a packet is about a hundred bytes.
+  for (int rank = 0; rank < 3; ++rank)
+    EXPECT_TRUE(has(cluster.output, "cluster stats, rank " + std::to_string(rank) + " of 3"))
+        << cluster.output;
+  return cluster.output;
+}
+
+TEST(Cluster, ThreeRanksHoldTheSameParticlesAsOneProcessEveryFrame) {
+  const std::string output =
+      expectSameHashes("tests/data/identity-cluster.toml", "--replay tests/data/midrun.session",
+                       200, "cluster-hash");
+  EXPECT_EQ(count(output, "field grids: 1 ("), 3)
+      << output;  // the field crossed once, to every rank
+}
+
+TEST(Cluster, ATimeVaryingFieldSendsEachGridOnce) {
+  // 120 frames are 2 s of the four-frame series (0.5 s apart): every grid is
+  // needed once, and none travels twice.
+  const std::string output =
+      expectSameHashes("tests/data/series-cluster.toml", "", 120, "cluster-series");
+  EXPECT_EQ(count(output, "field grids: 4 ("), 3) << output;
+  EXPECT_EQ(count(output, " 512 B/frame broadcast"), 3)
+      << output;  // one slot per frame, grids apart
+}
+
+TEST(Cluster, HeadlessPngsEqualTheSingleProcessOnes) {
+  const auto dir = test::scratchDir("cluster-png");
+  const auto one =
+      runSandstorm("--config tests/data/cluster-png.toml --screenshot " + (dir / "one").string());
+  ASSERT_EQ(one.exitCode, 0) << one.output;
+  const MpiRun cluster = ranks(
+      3, "--config tests/data/cluster-png-ranks.toml --screenshot " + (dir / "three").string());
+  ASSERT_EQ(cluster.exitCode, 0) << cluster.output;
+  EXPECT_TRUE(has(cluster.output, "every rank read the same field")) << cluster.output;
+  for (const std::string wall : {"front", "left", "right", "floor"}) {
+    const std::string a = readBytes(dir / "one" / (wall + ".png"));
+    const std::string b = readBytes(dir / "three" / (wall + ".png"));
+    ASSERT_FALSE(a.empty()) << wall;
+    EXPECT_TRUE(a == b) << wall << ".png differs between one process and three ranks";
+  }
+}
+
+TEST(Cluster, AWallOnAMissingRankFailsBeforeAnythingStarts) {
+  const MpiRun r = ranks(2, "--config tests/data/identity-cluster.toml");
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_TRUE(
+      has(r.output,
+          "identity-cluster.toml:8: cluster.ranks.right (wall 'right'): rank 2 does not exist; "
+          "mpirun started 2 ranks (0..1)"))
+      << r.output;
+  EXPECT_FALSE(has(r.output, "EGL")) << "no context should have been made:\n" << r.output;
+}
+
+TEST(Cluster, ARankWithoutOpenGLStopsEveryRankBeforeTheFirstFrame) {
+  // Rank 2 finds no EGL driver (an empty vendor list), as on a node without one.
+  const std::string args = " --config tests/data/identity-cluster.toml --hash-log /dev/null";
+  const MpiRun r = mpirun(std::string("-np 2 '") + SANDSTORM_BINARY + "'" + args +
+                          " : -np 1 env __EGL_VENDOR_LIBRARY_FILENAMES=/nonexistent.json '" +
+                          SANDSTORM_BINARY + "'" + args);
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_TRUE(has(r.output, "rank 2 (")) << r.output;
+  EXPECT_TRUE(has(r.output, "cannot start: EglContext")) << r.output;
+  EXPECT_TRUE(has(r.output, "stopping every rank before the first frame")) << r.output;
+  EXPECT_FALSE(has(r.output, "stats:")) << r.output;
+  EXPECT_LT(r.seconds, 20.0);
+}
+
+TEST(Cluster, ADeadRankStopsEveryRankWithAClearError) {
+  const MpiRun r = ranks(3, "--config tests/data/identity-cluster.toml --debug-die-at-frame 30");
+  EXPECT_NE(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(has(r.output, "rank 2: --debug-die-at-frame 30: dying now")) << r.output;
+  // mpirun names the rank that died and stops the others.
+  EXPECT_TRUE(has(r.output, "process rank 2")) << r.output;
+  EXPECT_FALSE(has(r.output, "stats:")) << "no rank should have finished:\n" << r.output;
+  EXPECT_LT(r.seconds, 3.0 /* cluster.timeout_s */ + 15.0) << r.output;
+}
+
+TEST(Cluster, AHungRankStopsEveryRankWithinTheTimeout) {
+  const MpiRun r =
+      ranks(3, "--config tests/data/identity-cluster.toml --debug-hang-at-frame 30 --debug-rank 1");
+  EXPECT_EQ(r.exitCode, 3) << r.output;  // MPI_Abort's status
+  EXPECT_TRUE(
+      has(r.output,
+          "[sandstorm rank 0 error] no answer within 3 s while waiting for every rank to draw "
+          "frame 30 (the swap barrier): a rank died or hangs"))
+      << r.output;
+  EXPECT_FALSE(has(r.output, "stats:")) << r.output;
+  EXPECT_LT(r.seconds, 3.0 + 15.0) << r.output;
+}
+
+TEST(Cluster, RanksWithAnotherConfigurationAreRefused) {
+  const MpiRun r =
+      mpirun(std::string("-np 2 '") + SANDSTORM_BINARY +
+             "' --config tests/data/identity-cluster.toml : -np 1 '" + SANDSTORM_BINARY +
+             "' --config tests/data/identity-cluster.toml --set render.size=0.2");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_TRUE(has(r.output, "rank 2 (")) << r.output;
+  EXPECT_TRUE(has(r.output, "configuration differs from rank 0's")) << r.output;
+  EXPECT_TRUE(has(r.output, "render.size")) << r.output;
+}
+
+TEST(Cluster, TheBenchReportsOneSlotPerFrame) {
+  const MpiRun r =
+      ranks(2, "--config tests/data/cluster-bench.toml --cluster-bench 300 --cluster-stats");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(has(r.output, "cluster bench: 300 frames")) << r.output;
+  EXPECT_EQ(count(r.output, "300 packets"), 2) << r.output;
+  EXPECT_EQ(count(r.output, " 512 B/frame broadcast"), 2) << r.output;
+}
+
+}  // namespace
+}  // namespace sandstorm

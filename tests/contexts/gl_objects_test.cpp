@@ -1,0 +1,72 @@
+// GL object ownership and shader errors.
+#include <gtest/gtest.h>
+
+#include <epoxy/gl.h>
+
+#include <type_traits>
+
+#include "contexts/gl/objects.h"
+#include "contexts/gl/program.h"
+#include "core/util/error.h"
+#include "tests/contexts/gl_test.h"
+
+namespace sandstorm {
+namespace {
+
+static_assert(!std::is_copy_constructible_v<gl::Buffer>);
+static_assert(!std::is_copy_assignable_v<gl::Texture>);
+static_assert(std::is_nothrow_move_constructible_v<gl::Framebuffer>);
+static_assert(std::is_nothrow_move_assignable_v<gl::TransformFeedback>);
+
+class GlObjectsTest : public GlTest {};
+
+TEST_F(GlObjectsTest, OneOwnerDeletesEachObjectOnce) {
+  gl::Buffer a = gl::createBuffer();
+  const std::uint32_t id = a.id();
+  ASSERT_NE(id, 0u);
+  EXPECT_TRUE(glIsBuffer(id));
+  gl::Buffer b = std::move(a);
+  EXPECT_EQ(a.id(), 0u);  // the source is empty after a move
+  EXPECT_EQ(b.id(), id);
+  {
+    gl::Buffer c = std::move(b);
+  }  // c deletes it
+  EXPECT_FALSE(glIsBuffer(id));
+  gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
+  const std::uint32_t tid = t.id();
+  t = gl::createTexture(GL_TEXTURE_2D);  // assignment deletes the old one
+  EXPECT_FALSE(glIsTexture(tid));
+  EXPECT_NE(t.id(), tid);
+}
+
+TEST_F(GlObjectsTest, CompileErrorsNameTheFileAndPrintTheLog) {
+  try {
+    // A define that breaks the shader's own code: `vec4` no longer names a type.
+    gl::Program broken(std::vector<std::string>{"fullscreen.vert", "sky.frag"}, {"vec4 int"});
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("shaders/fullscreen.vert"), std::string::npos) << m;
+    EXPECT_NE(m.find("error"), std::string::npos) << m;  // the driver's log
+  }
+  try {
+    gl::Program missing(std::vector<std::string>{"nowhere.vert"});
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("'nowhere.vert'"), std::string::npos) << e.what();
+  }
+}
+
+TEST_F(GlObjectsTest, IncludesKeepLineNumbersAndSayWhichFileIsWhich) {
+  std::vector<std::string> files;
+  const std::string source = gl::preprocessShader("particle_update.geom", {"X 1"}, files);
+  ASSERT_GE(files.size(), 3u);
+  EXPECT_EQ(files[0], "particle_update.geom");
+  EXPECT_NE(std::find(files.begin(), files.end(), "sim_block.glsl"), files.end());
+  EXPECT_EQ(source.find("#version"), 0u);
+  EXPECT_NE(source.find("#define X 1"), std::string::npos);
+  EXPECT_NE(source.find("#line 1 1"), std::string::npos);  // the first include starts at its own line 1
+}
+
+}  // namespace
+}  // namespace sandstorm

@@ -1,0 +1,308 @@
+// The cluster's wire format: every member of a FramePacket survives a round
+// trip bit for bit (every kind of change and attribute value, the emitter of
+// an add, the viewer, the field reference); field grids travel apart and are
+// found by hash; truncated, corrupt or padded buffers are clear Errors.
+#include "core/sim/frame_packet_codec.h"
+
+#include <gtest/gtest.h>
+
+#include <bit>
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+#include "core/sim/field_store.h"
+#include "core/sim/main_context.h"
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+std::shared_ptr<const VectorField> grid(float scale, glm::ivec3 dims = {5, 4, 3}) {
+  auto f = std::make_shared<VectorField>(Box{{-1, -2, 0}, {1, 2, 3}}, dims);
+  for (int k = 0; k < dims.z; ++k)
+    for (int j = 0; j < dims.y; ++j)
+      for (int i = 0; i < dims.x; ++i)
+        f->at(i, j, k) = scale * glm::vec3(i, j - 0.5f, std::sin(float(k)));
+  return f;
+}
+
+Emitter oddEmitter() {
+  Emitter e;
+  e.shape = EmitterShape::Sphere;
+  e.position = {1.5f, -2.25f, 0.125f};
+  e.width = 2;
+  e.depth = 3;
+  e.height = 0.5f;
+  e.radius = 0.75f;
+  e.rate = 12345.5f;
+  e.rateVariance = 17;
+  e.lifetime = 3.5f;
+  e.lifetimeVariance = 0.25f;
+  e.velocity = {0.1f, -0.2f, 4};
+  e.spread = 0.3f;
+  e.enabled = false;
+  return e;
+}
+
+FramePacket fullPacket() {
+  FramePacket p;
+  p.frame = 4242;
+  p.dt = 1.0f / 60.0f;
+  p.simDt = 0.5f / 60.0f;
+  p.time = 70.123456789012345;
+  p.seed = 0xfedcba9876543210ull;
+  p.reset = true;
+  p.changes = {StateChange::set("sim.paused", true),
+               StateChange::set("sim.maximum", 123456),
+               StateChange::set("render.size", 0.1f + 1e-9f),
+               StateChange::set("sim.gravity", glm::vec3(0.1f, -0.0f, -9.81f)),
+               StateChange::set("sim.integrator", std::string("rk4")),
+               StateChange::addEmitter(oddEmitter()),
+               StateChange::removeEmitter(3),
+               StateChange::reset()};
+  p.emission = {0, 7, 4000000000u};
+  p.fieldUpdate = std::make_shared<const FieldUpdate>(
+      FieldUpdate{.field = grid(1),
+                  .placement = {.offset = {1, 2, 3},
+                                .scale = 0.35f,
+                                .rotation = glm::mat3(0, 1, 0, -1, 0, 0, 0, 0, 1)},
+                  .next = grid(2)});
+  p.viewer.head.position = {0.1f, 0.2f, 1.7f};
+  p.viewer.head.right = {0, -1, 0};
+  p.viewer.head.eyeSeparation = 0.063f;
+  p.viewer.navigation.offset = {-1, 2.6f, 0};
+  p.viewer.navigation.yawRadians = 0.3f;
+  p.viewer.navigation.scale = 0.35f;
+  p.fieldBlend = 0.625f;
+  return p;
+}
+
+template <class T>
+bool sameBits(const T& a, const T& b) {
+  return std::memcmp(&a, &b, sizeof(T)) == 0;
+}
+
+void expectSameEmitter(const Emitter& a, const Emitter& b) {
+  EXPECT_EQ(a.shape, b.shape);
+  EXPECT_EQ(a.position, b.position);
+  EXPECT_EQ(a.width, b.width);
+  EXPECT_EQ(a.depth, b.depth);
+  EXPECT_EQ(a.height, b.height);
+  EXPECT_EQ(a.radius, b.radius);
+  EXPECT_EQ(a.rate, b.rate);
+  EXPECT_EQ(a.rateVariance, b.rateVariance);
+  EXPECT_EQ(a.lifetime, b.lifetime);
+  EXPECT_EQ(a.lifetimeVariance, b.lifetimeVariance);
+  EXPECT_EQ(a.velocity, b.velocity);
+  EXPECT_EQ(a.spread, b.spread);
+  EXPECT_EQ(a.enabled, b.enabled);
+}
+
+TEST(FramePacketCodec, EveryMemberSurvivesARoundTrip) {
+  const FramePacket p = fullPacket();
+  FieldStore store;
+  const FieldRefs refs{store.identify(p.fieldUpdate->field), store.identify(p.fieldUpdate->next)};
+  FieldRefs got;
+  const FramePacket q = decodePacket(encodePacket(p, refs), &got);
+  EXPECT_EQ(q.frame, p.frame);
+  EXPECT_TRUE(sameBits(q.dt, p.dt));
+  EXPECT_TRUE(sameBits(q.simDt, p.simDt));
+  EXPECT_TRUE(sameBits(q.time, p.time));
+  EXPECT_EQ(q.seed, p.seed);
+  EXPECT_EQ(q.reset, p.reset);
+  ASSERT_EQ(q.changes.size(), p.changes.size());
+  for (std::size_t i = 0; i < p.changes.size(); ++i) {
+    SCOPED_TRACE(describe(p.changes[i]));
+    EXPECT_EQ(q.changes[i].kind, p.changes[i].kind);
+    EXPECT_EQ(q.changes[i].key, p.changes[i].key);
+    EXPECT_EQ(q.changes[i].value, p.changes[i].value);
+    EXPECT_EQ(q.changes[i].index, p.changes[i].index);
+    expectSameEmitter(q.changes[i].emitter, p.changes[i].emitter);
+  }
+  EXPECT_EQ(q.changes[3].value.index(), 3u);  // the vec3 stayed a vec3 (not text)
+  EXPECT_TRUE(std::signbit(std::get<glm::vec3>(q.changes[3].value).y));  // -0 stays -0: bits travel
+  EXPECT_EQ(q.emission, p.emission);
+  ASSERT_TRUE(q.fieldUpdate);
+  EXPECT_EQ(got.field, refs.field);
+  EXPECT_EQ(got.next, refs.next);
+  EXPECT_NE(got.field, got.next);
+  EXPECT_FALSE(q.fieldUpdate->field);  // grids travel apart
+  EXPECT_EQ(q.fieldUpdate->placement.offset, p.fieldUpdate->placement.offset);
+  EXPECT_EQ(q.fieldUpdate->placement.scale, p.fieldUpdate->placement.scale);
+  EXPECT_EQ(q.fieldUpdate->placement.rotation, p.fieldUpdate->placement.rotation);
+  EXPECT_EQ(q.viewer.head.position, p.viewer.head.position);
+  EXPECT_EQ(q.viewer.head.right, p.viewer.head.right);
+  EXPECT_EQ(q.viewer.head.eyeSeparation, p.viewer.head.eyeSeparation);
+  EXPECT_EQ(q.viewer.navigation.offset, p.viewer.navigation.offset);
+  EXPECT_EQ(q.viewer.navigation.yawRadians, p.viewer.navigation.yawRadians);
+  EXPECT_EQ(q.viewer.navigation.scale, p.viewer.navigation.scale);
+  EXPECT_EQ(q.fieldBlend, p.fieldBlend);
+  // Encoding the decoded packet gives the same bytes: nothing was lost.
+  EXPECT_EQ(encodePacket(q, got), encodePacket(p, refs));
+}
+
+TEST(FramePacketCodec, NaNAndInfinityTravelAsBits) {
+  FramePacket p;
+  p.dt = std::numeric_limits<float>::infinity();
+  p.fieldBlend = std::bit_cast<float>(0x7fc01234u);  // a NaN with a payload
+  const FramePacket q = decodePacket(encodePacket(p));
+  EXPECT_TRUE(std::isinf(q.dt));
+  EXPECT_EQ(std::bit_cast<std::uint32_t>(q.fieldBlend), 0x7fc01234u);
+  EXPECT_FALSE(q.fieldUpdate);
+}
+
+TEST(FramePacketCodec, APacketsSizeDoesNotDependOnTheFieldOrTheParticles) {
+  FramePacket p = fullPacket();
+  const std::size_t small = encodePacket(p).size();
+  p.fieldUpdate = std::make_shared<const FieldUpdate>(FieldUpdate{.field = grid(1, {64, 64, 64})});
+  EXPECT_EQ(encodePacket(p).size(), small);
+  // A frame of the identity scene (one emitter, no change) is about a hundred bytes.
+  FramePacket plain;
+  plain.emission = {150};
+  EXPECT_LT(encodePacket(plain).size(), 128u);
+}
+
+TEST(FramePacketCodec, PacketsOfAMainContextRoundTrip) {
+  ParticleState state;
+  MainContext::Options options;
+  options.fixedDt = 0.02f;
+  MainContext main(state, FieldUpdate{.field = grid(1)}, options);
+  main.set("emitter.0.rate", 5000.0f);
+  main.addEmitter(oddEmitter());
+  for (int i = 0; i < 5; ++i) {
+    const FramePacket p = main.next();
+    FieldStore store;
+    const FieldRefs refs{p.fieldUpdate ? store.identify(p.fieldUpdate->field) : 0};
+    const std::vector<std::byte> bytes = encodePacket(p, refs);
+    EXPECT_EQ(encodePacket(decodePacket(bytes), refs), bytes) << "frame " << i;
+  }
+}
+
+TEST(FramePacketCodec, FieldGridsRoundTripAndHashByContent) {
+  const std::shared_ptr<const VectorField> a = grid(1);
+  const std::vector<std::byte> bytes = encodeField(*a);
+  const VectorField b = decodeField(bytes);
+  EXPECT_EQ(b.dims(), a->dims());
+  EXPECT_EQ(b.bounds().min, a->bounds().min);
+  EXPECT_EQ(b.bounds().max, a->bounds().max);
+  EXPECT_EQ(b.indexScale(), a->indexScale());
+  ASSERT_EQ(b.pointCount(), a->pointCount());
+  EXPECT_EQ(std::memcmp(b.values().data(), a->values().data(), a->values().size_bytes()), 0);
+  EXPECT_EQ(fieldHash(b), fieldHash(*a));
+  EXPECT_NE(fieldHash(*grid(1.0001f)), fieldHash(*a));
+}
+
+void expectError(std::span<const std::byte> bytes, bool packet, const std::string& expected) {
+  try {
+    if (packet)
+      decodePacket(bytes);
+    else
+      decodeField(bytes);
+    ADD_FAILURE() << "no error; expected one mentioning '" << expected << "'";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
+  }
+}
+
+TEST(FramePacketCodec, EveryTruncationIsAClearError) {
+  FieldStore store;
+  const FramePacket p = fullPacket();
+  const std::vector<std::byte> bytes =
+      encodePacket(p, {store.identify(p.fieldUpdate->field), store.identify(p.fieldUpdate->next)});
+  for (std::size_t n = 0; n < bytes.size(); ++n)
+    expectError(std::span(bytes).first(n), true, "truncated");
+  const std::vector<std::byte> field = encodeField(*grid(1));
+  for (std::size_t n = 0; n < 40; ++n)
+    expectError(std::span(field).first(n), false, "truncated");
+  expectError(std::span(field).first(field.size() - 1), false, "bytes of vectors");
+}
+
+TEST(FramePacketCodec, CorruptBuffersAreClearErrors) {
+  const std::vector<std::byte> good = encodePacket(fullPacket());
+  auto with = [&](std::size_t at, std::uint8_t value) {
+    std::vector<std::byte> b = good;
+    b.at(at) = std::byte{value};
+    return b;
+  };
+  expectError(with(0, 'X'), true, "not a frame packet");
+  expectError(with(4, 9), true, "version 9");
+  expectError(with(34, 7), true, "reset");  // the reset flag: 0 or 1
+  expectError(with(38, 0xff), true,
+              "change count");  // a huge count is refused before any allocation
+  expectError(with(39, 9), true, "change.kind");
+  std::vector<std::byte> padded = good;
+  padded.push_back(std::byte{0});
+  expectError(padded, true, "unexpected bytes");
+  expectError(encodeField(*grid(1)), true, "not a frame packet");  // a grid is not a packet
+  expectError(good, false, "not a field grid");
+
+  std::vector<std::byte> field = encodeField(*grid(1));
+  field[30] = std::byte{0xff};  // dims.x = -1 (little-endian, high byte)
+  field[31] = std::byte{0xff};
+  field[32] = std::byte{0xff};
+  field[33] = std::byte{0xff};
+  expectError(field, false, "expected positive dims");
+}
+
+TEST(FieldStore, SenderAndReceiverHoldTheSameGridsWithoutTalking) {
+  // A timeline of five frames played as (0,1), (1,2), ... (4,0): the sender ships
+  // a grid only when the mirror says the receiver lacks it.
+  std::vector<std::shared_ptr<const VectorField>> frames;
+  for (int i = 0; i < 5; ++i)
+    frames.push_back(grid(float(i + 1)));
+  FieldStore sender(3), receiver(3);
+  int shipped = 0;
+  for (int round = 0; round < 3; ++round) {
+    for (int i = 0; i < 5; ++i) {
+      const std::uint64_t used[2] = {sender.identify(frames[std::size_t(i)]),
+                                     sender.identify(frames[std::size_t((i + 1) % 5)])};
+      FieldStore::Grids incoming;
+      for (int u = 0; u < 2; ++u)
+        if (!sender.contains(used[u])) {
+          incoming[used[u]] = std::make_shared<VectorField>(
+              decodeField(encodeField(*frames[std::size_t((i + u) % 5)])));
+          ++shipped;
+        }
+      sender.use(
+          used,
+          incoming);  // the sender's mirror (it could hold its own grids; the same calls suffice)
+      receiver.use(used, incoming);
+      for (const std::uint64_t h : used) {
+        ASSERT_TRUE(receiver.contains(h));
+        EXPECT_EQ(fieldHash(*receiver.find(h)), h);
+      }
+      EXPECT_EQ(receiver.size(), sender.size());
+    }
+  }
+  EXPECT_EQ(shipped,
+            2 + 4 + 5 + 5);  // the first round needs every frame; each later wrap only the new ones
+  EXPECT_LE(receiver.size(), 3u);
+}
+
+TEST(FieldStore, AMissingGridIsAClearError) {
+  FieldStore store;
+  const std::uint64_t h[1] = {0x1234};
+  try {
+    store.use(h, {});
+    ADD_FAILURE();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("1234"), std::string::npos) << e.what();
+  }
+}
+
+TEST(FieldStore, PinnedGridsStayAndHashesAreCachedPerGrid) {
+  FieldStore store(2);
+  const auto pinned = grid(9);
+  store.pin(store.identify(pinned), pinned);
+  for (int i = 0; i < 6; ++i) {
+    const auto g = grid(float(i + 1));
+    const std::uint64_t h[1] = {store.identify(g)};
+    store.use(h, {{h[0], g}});
+  }
+  EXPECT_TRUE(store.contains(fieldHash(*pinned)));
+  EXPECT_EQ(store.size(), 3u);
+}
+
+}  // namespace
+}  // namespace sandstorm
