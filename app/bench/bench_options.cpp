@@ -43,7 +43,8 @@ std::vector<std::string> split(const std::string& text) {
 double number(const std::string& text, const std::string& option) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
-  if (end == text.c_str() || *end != '\0') throw Error(concat(option, ": '", text, "' is not a number"));
+  if (end == text.c_str() || *end != '\0')
+    throw Error(concat(option, ": '", text, "' is not a number"));
   return v;
 }
 
@@ -57,10 +58,12 @@ void checkChoices(const std::vector<std::string>& values, const std::vector<std:
                   const std::string& option) {
   for (const std::string& v : values) {
     bool ok = false;
-    for (const std::string& k : known) ok = ok || v == k;
+    for (const std::string& k : known)
+      ok = ok || v == k;
     if (!ok) {
       std::string list;
-      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      for (const std::string& k : known)
+        list += (list.empty() ? "" : ", ") + k;
       throw Error(concat(option, ": unknown '", v, "'; expected some of ", list));
     }
   }
@@ -109,7 +112,8 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       checkChoices(o.sections, {"verify", "ceilings", "update", "render", "walls"}, a);
     } else if (a == "--particles") {
       o.particles.clear();
-      for (const std::string& p : split(v)) o.particles.push_back(count(p, a));
+      for (const std::string& p : split(v))
+        o.particles.push_back(count(p, a));
     } else if (a == "--backends") {
       o.backends = split(v);
       checkChoices(o.backends, {"tf-gs", "compute"}, a);
@@ -125,7 +129,8 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       o.billboardLimit = count(v, a);
     } else if (a == "--walls") {
       o.walls.clear();
-      for (const std::string& w : split(v)) o.walls.push_back(int(count(w, a)));
+      for (const std::string& w : split(v))
+        o.walls.push_back(int(count(w, a)));
     } else if (a == "--wall-particles") {
       o.wallParticles = count(v, a);
     } else if (a == "--wall-sims") {

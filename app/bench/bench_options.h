@@ -29,7 +29,7 @@ struct BenchOptions {
   std::vector<std::string> wallRenderers{"billboards", "splat"};
   std::string wallBackend = "compute";
   std::string integrator = "rk2";  // euler | rk2 | rk4 (tracer particles)
-  double memoryGiB = 0;  // 0: what the driver reports, else unlimited
+  double memoryGiB = 0;            // 0: what the driver reports, else unlimited
 };
 
 // Parses argv; throws Error on a bad option. `--help` prints usage and exits 0.

@@ -36,20 +36,23 @@ std::string count(std::size_t n) {
 
 void printTable(const Report& r) {
   std::printf("\n%s\n", r.device.c_str());
-  std::printf("%-8s %-11s %-8s %-8s %-10s %-8s %6s %5s %10s %10s %9s  %s\n", "section", "stage", "backend",
-              "field", "renderer", "sim", "N", "walls", "GPU ms", "Mpart/s", "GB/s", "ratio to ceiling");
+  std::printf("%-8s %-11s %-8s %-8s %-10s %-8s %6s %5s %10s %10s %9s  %s\n", "section", "stage",
+              "backend", "field", "renderer", "sim", "N", "walls", "GPU ms", "Mpart/s", "GB/s",
+              "ratio to ceiling");
   for (const Row& row : r.rows) {
     char ratio[200] = "";
-    if (row.ratio > 0) std::snprintf(ratio, sizeof ratio, "%.2f of %s", row.ratio, row.ceiling.c_str());
+    if (row.ratio > 0)
+      std::snprintf(ratio, sizeof ratio, "%.2f of %s", row.ratio, row.ceiling.c_str());
     if (!row.note.empty()) std::snprintf(ratio, sizeof ratio, "%s", row.note.c_str());
     char rate[32] = "-", bytes[32] = "-";
     if (row.particlesPerS > 0) std::snprintf(rate, sizeof rate, "%.1f", row.particlesPerS * 1e-6);
     if (row.bytesPerS > 0) std::snprintf(bytes, sizeof bytes, "%.1f", row.bytesPerS * 1e-9);
-    std::printf("%-8s %-11s %-8s %-8s %-10s %-8s %6s %5d %10.3f %10s %9s  %s\n", row.section.c_str(),
-                row.stage.c_str(), row.backend.empty() ? "-" : row.backend.c_str(),
-                row.field.empty() ? "-" : row.field.c_str(), row.renderer.empty() ? "-" : row.renderer.c_str(),
-                row.sim.empty() ? "-" : row.sim.c_str(), count(row.particles).c_str(), row.walls, row.ms, rate,
-                bytes, ratio);
+    std::printf(
+        "%-8s %-11s %-8s %-8s %-10s %-8s %6s %5d %10.3f %10s %9s  %s\n", row.section.c_str(),
+        row.stage.c_str(), row.backend.empty() ? "-" : row.backend.c_str(),
+        row.field.empty() ? "-" : row.field.c_str(),
+        row.renderer.empty() ? "-" : row.renderer.c_str(), row.sim.empty() ? "-" : row.sim.c_str(),
+        count(row.particles).c_str(), row.walls, row.ms, rate, bytes, ratio);
   }
   std::fflush(stdout);
 }
@@ -58,18 +61,19 @@ void writeJson(const Report& r, const std::filesystem::path& path) {
   std::ofstream out(path);
   if (!out) throw Error(concat("sandstorm-bench: cannot write ", path.string()));
   out << "{\n  \"device\": " << quoted(r.device) << ",\n  \"command\": " << quoted(r.command)
-      << ",\n  \"copy_bytes_per_s\": " << r.copyBytesPerS << ",\n  \"shader_copy_bytes_per_s\": "
-      << r.shaderCopyBytesPerS << ",\n  \"rows\": [\n";
+      << ",\n  \"copy_bytes_per_s\": " << r.copyBytesPerS
+      << ",\n  \"shader_copy_bytes_per_s\": " << r.shaderCopyBytesPerS << ",\n  \"rows\": [\n";
   for (std::size_t i = 0; i < r.rows.size(); ++i) {
     const Row& row = r.rows[i];
     out << "    {\"section\": " << quoted(row.section) << ", \"stage\": " << quoted(row.stage)
         << ", \"backend\": " << quoted(row.backend) << ", \"field\": " << quoted(row.field)
         << ", \"renderer\": " << quoted(row.renderer) << ", \"sim\": " << quoted(row.sim)
-        << ", \"particles\": " << row.particles << ", \"walls\": " << row.walls << ", \"width\": " << row.width
-        << ", \"height\": " << row.height << ", \"gpu_ms\": " << row.ms
-        << ", \"particles_per_s\": " << row.particlesPerS << ", \"bytes_per_s\": " << row.bytesPerS
-        << ", \"ceiling\": " << quoted(row.ceiling) << ", \"ratio\": " << row.ratio
-        << ", \"wall_clock_ms\": " << row.wallMs << ", \"note\": " << quoted(row.note) << "}" << (i + 1 < r.rows.size() ? "," : "") << "\n";
+        << ", \"particles\": " << row.particles << ", \"walls\": " << row.walls
+        << ", \"width\": " << row.width << ", \"height\": " << row.height
+        << ", \"gpu_ms\": " << row.ms << ", \"particles_per_s\": " << row.particlesPerS
+        << ", \"bytes_per_s\": " << row.bytesPerS << ", \"ceiling\": " << quoted(row.ceiling)
+        << ", \"ratio\": " << row.ratio << ", \"wall_clock_ms\": " << row.wallMs
+        << ", \"note\": " << quoted(row.note) << "}" << (i + 1 < r.rows.size() ? "," : "") << "\n";
   }
   out << "  ]\n}\n";
   if (!out) throw Error(concat("sandstorm-bench: writing ", path.string(), " failed"));

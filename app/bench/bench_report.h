@@ -2,8 +2,8 @@
 // and written as JSON.
 #pragma once
 
-#include <cstddef>
 #include <algorithm>
+#include <cstddef>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -17,12 +17,12 @@ struct Row {
   std::size_t particles = 0;
   int walls = 0;
   int width = 0, height = 0;
-  double ms = 0;              // GPU milliseconds per frame (median)
-  double particlesPerS = 0;   // 0: not applicable
-  double bytesPerS = 0;       // 0: not applicable
-  std::string ceiling;        // what `ratio` compares with
-  double ratio = 0;           // this stage's rate over the ceiling's (0: none)
-  double wallMs = 0;          // walls: wall-clock milliseconds per frame (CPU included)
+  double ms = 0;             // GPU milliseconds per frame (median)
+  double particlesPerS = 0;  // 0: not applicable
+  double bytesPerS = 0;      // 0: not applicable
+  std::string ceiling;       // what `ratio` compares with
+  double ratio = 0;          // this stage's rate over the ceiling's (0: none)
+  double wallMs = 0;         // walls: wall-clock milliseconds per frame (CPU included)
   std::string note;
 };
 
@@ -33,7 +33,9 @@ struct Report {
   double shaderCopyBytesPerS = 0;  // a compute shader's copy
   // The bandwidth ceiling stages are compared with: the larger of the two.
   double bandwidth() const { return std::max(copyBytesPerS, shaderCopyBytesPerS); }
-  std::string bandwidthName() const { return shaderCopyBytesPerS > copyBytesPerS ? "copy-shader" : "copy"; }
+  std::string bandwidthName() const {
+    return shaderCopyBytesPerS > copyBytesPerS ? "copy-shader" : "copy";
+  }
   std::vector<Row> rows;
 };
 

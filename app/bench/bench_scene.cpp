@@ -12,7 +12,9 @@ ParticleState benchState(const SceneChoice& c) {
   ParticleState s;
   s.sim.maximum = int(c.particles);
   s.sim.motion = MotionModel::Tracer;
-  s.sim.integrator = c.integrator == "euler" ? Integrator::Euler : c.integrator == "rk4" ? Integrator::RK4 : Integrator::RK2;
+  s.sim.integrator = c.integrator == "euler" ? Integrator::Euler
+                     : c.integrator == "rk4" ? Integrator::RK4
+                                             : Integrator::RK2;
   s.sim.boundary = BoundaryMode::Clamp;
   Emitter& e = s.emitters[0];
   e.shape = EmitterShape::Disc;
@@ -63,13 +65,16 @@ FramePacket benchPacket(std::uint32_t frame, const SceneChoice& c,
   p.dt = p.simDt = 1.0f / 60.0f;
   p.time = frame / 60.0;
   p.seed = 0x5A4D5700ull;
-  p.emission = {frame == 0 ? std::uint32_t(c.particles) : c.turnover ? std::uint32_t(c.particles / 8) : 0u};
+  p.emission = {frame == 0   ? std::uint32_t(c.particles)
+                : c.turnover ? std::uint32_t(c.particles / 8)
+                             : 0u};
   if (frame == 0) p.fieldUpdate = field;
   return p;
 }
 
 View benchView(int index, int count, glm::ivec2 size) {
-  const float a = 2.0f * std::numbers::pi_v<float> * float(index) / float(std::max(count, 1)) - 0.5f * std::numbers::pi_v<float>;
+  const float a = 2.0f * std::numbers::pi_v<float> * float(index) / float(std::max(count, 1)) -
+                  0.5f * std::numbers::pi_v<float>;
   const glm::vec3 eye(14.0f * std::cos(a), 14.0f * std::sin(a), 3.5f);
   return perspectiveView(eye, {0.0f, 0.0f, 4.0f}, {0.0f, 0.0f, 1.0f}, glm::radians(60.0f),
                          float(size.x) / float(size.y), 0.1f, 200.0f);

@@ -17,11 +17,12 @@ namespace sandstorm::bench {
 
 struct SceneChoice {
   std::size_t particles = 0;
-  std::string field = "texture";       // texture | equation
+  std::string field = "texture";        // texture | equation
   std::string renderer = "billboards";  // billboards | points | splat | splat-tiled
   float particleSize = 0.045f;
   std::string integrator = "rk2";
-  bool turnover = false;  // short lives, deaths at the box: every frame births, deaths and compaction
+  bool turnover =
+      false;  // short lives, deaths at the box: every frame births, deaths and compaction
 };
 
 ParticleState benchState(const SceneChoice& choice);

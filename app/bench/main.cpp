@@ -2,8 +2,8 @@
 // hardware's own ceilings, measured in the same run (see --help and
 // docs/PERFORMANCE.md). Headless: an EGL context, no window, no files read.
 #include <chrono>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <exception>
 #include <functional>
 #include <map>
@@ -41,7 +41,8 @@ class Bench {
     plan(has("ceilings"), has("update"), has("render"), has("walls"));
     if (has("verify")) {
       ++total_;
-      for (const std::string& field : o_.fields) verify(field);
+      for (const std::string& field : o_.fields)
+        verify(field);
     }
     copyBandwidth();
     if (has("ceilings"))
@@ -53,7 +54,8 @@ class Bench {
     if (has("update"))
       for (std::size_t n : o_.particles)
         for (const std::string& backend : o_.backends)
-          for (const std::string& field : o_.fields) update(n, backend, field);
+          for (const std::string& field : o_.fields)
+            update(n, backend, field);
     if (has("render"))
       for (std::size_t n : o_.particles)
         for (const std::string& renderer : o_.renderers)
@@ -61,21 +63,24 @@ class Bench {
     if (has("walls"))
       for (int w : o_.walls)
         for (const std::string& sim : o_.wallSims)
-          for (const std::string& renderer : o_.wallRenderers) walls(w, sim, renderer);
+          for (const std::string& renderer : o_.wallRenderers)
+            walls(w, sim, renderer);
   }
 
  private:
   void plan(bool ceilings, bool update, bool render, bool walls) {
     total_ = 1;
     bool tf = false;
-    for (const std::string& b : o_.backends) tf = tf || b == "tf-gs";
+    for (const std::string& b : o_.backends)
+      tf = tf || b == "tf-gs";
     if (ceilings || (update && tf)) total_ += int(o_.particles.size());  // bare transform feedback
     if (ceilings || render) total_ += int(o_.particles.size());          // bare point draw
     if (ceilings || update) total_ += int(o_.particles.size());          // bare compute update
     if (update) total_ += int(o_.particles.size() * o_.backends.size() * o_.fields.size());
     if (render)
       for (std::size_t n : o_.particles)
-        for (const std::string& r : o_.renderers) total_ += (r != "billboards" || n <= o_.billboardLimit) ? 1 : 0;
+        for (const std::string& r : o_.renderers)
+          total_ += (r != "billboards" || n <= o_.billboardLimit) ? 1 : 0;
     if (walls) total_ += int(o_.walls.size() * o_.wallSims.size() * o_.wallRenderers.size());
   }
 
@@ -88,8 +93,8 @@ class Bench {
 
   bool fits(double bytes, const std::string& what) {
     if (bytes <= double(memory_)) return true;
-    std::fprintf(stderr, "  skipped %s: needs %.1f GiB, the budget is %.1f GiB\n", what.c_str(), bytes / 1073741824.0,
-                 double(memory_) / 1073741824.0);
+    std::fprintf(stderr, "  skipped %s: needs %.1f GiB, the budget is %.1f GiB\n", what.c_str(),
+                 bytes / 1073741824.0, double(memory_) / 1073741824.0);
     return false;
   }
 
@@ -105,10 +110,15 @@ class Bench {
   // Both backends through the same packets on this GPU: identical records?
   void verify(const std::string& field) {
     const std::size_t n = o_.verifyParticles;
-    progress(concat("verify: compute against tf-gs, ", field, " field, ", n, " particles with turnover"));
+    progress(concat("verify: compute against tf-gs, ", field, " field, ", n,
+                    " particles with turnover"));
     if (!fits(8 * n * 16.0, "verify")) return;
     guarded("verify", [&] {
-      const SceneChoice c{.particles = n, .field = field, .particleSize = o_.particleSize, .integrator = o_.integrator, .turnover = true};
+      const SceneChoice c{.particles = n,
+                          .field = field,
+                          .particleSize = o_.particleSize,
+                          .integrator = o_.integrator,
+                          .turnover = true};
       const auto fieldUpdate = benchField(field);
       auto tf = makeSystem(c, "tf-gs");
       auto compute = makeSystem(c, "compute");
@@ -124,16 +134,21 @@ class Bench {
         countsEqual += a.size() == b.size() ? 1 : 0;
         for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) {
           ++compared;
-          const bool same = a[i].positionLife == b[i].positionLife && a[i].velocityKind == b[i].velocityKind;
+          const bool same =
+              a[i].positionLife == b[i].positionLife && a[i].velocityKind == b[i].velocityKind;
           identical += same ? 1 : 0;
           worst = std::max(worst, glm::length(a[i].position() - b[i].position()));
         }
       }
-      Row row{.section = "verify", .stage = "agreement", .backend = "compute", .field = field, .particles = n};
+      Row row{.section = "verify",
+              .stage = "agreement",
+              .backend = "compute",
+              .field = field,
+              .particles = n};
       row.ceiling = "tf-gs";
       row.ratio = compared ? double(identical) / double(compared) : 0.0;
-      row.note = concat(identical, " of ", compared, " records identical over ", frames, " frames (", countsEqual,
-                        " with equal counts), max |dx| ", worst, " m");
+      row.note = concat(identical, " of ", compared, " records identical over ", frames,
+                        " frames (", countsEqual, " with equal counts), max |dx| ", worst, " m");
       report_.rows.push_back(row);
     });
   }
@@ -141,10 +156,12 @@ class Bench {
   void copyBandwidth() {
     std::size_t bytes = o_.quick ? (16u << 20) : (std::size_t(1) << 30);
     bytes = std::min(bytes, memory_ / 3);
-    progress(concat("ceiling: buffer copy of ", bytes >> 20, " MiB (glCopyNamedBufferSubData and a compute shader)"));
+    progress(concat("ceiling: buffer copy of ", bytes >> 20,
+                    " MiB (glCopyNamedBufferSubData and a compute shader)"));
     report_.copyBytesPerS = bench::copyBandwidth(bytes, o_.frames);
     report_.shaderCopyBytesPerS = bench::shaderCopyBandwidth(bytes, o_.frames);
-    for (const auto& [stage, rate] : {std::pair{"copy", report_.copyBytesPerS}, {"copy-shader", report_.shaderCopyBytesPerS}}) {
+    for (const auto& [stage, rate] :
+         {std::pair{"copy", report_.copyBytesPerS}, {"copy-shader", report_.shaderCopyBytesPerS}}) {
       Row row{.section = "ceilings", .stage = stage};
       row.ms = rate > 0 ? 2.0 * double(bytes) / rate * 1e3 : 0;
       row.bytesPerS = rate;
@@ -177,7 +194,8 @@ class Bench {
   double bareTf(std::size_t n) {
     if (auto it = bareTfMs_.find(n); it != bareTfMs_.end()) return it->second;
     double ms = 0;
-    if (!bareTfMs_.contains(n)) progress(concat("ceiling: bare transform feedback, ", n, " records"));
+    if (!bareTfMs_.contains(n))
+      progress(concat("ceiling: bare transform feedback, ", n, " records"));
     if (fits(4 * n * 16.0, "bare transform feedback"))
       guarded("bare transform feedback", [&] {
         BareTransformFeedback tf(n);
@@ -207,7 +225,11 @@ class Bench {
       });
     barePointsMs_[n] = ms;
     if (ms > 0) {
-      Row row{.section = "ceilings", .stage = "bare-points", .particles = n, .width = o_.size.x, .height = o_.size.y};
+      Row row{.section = "ceilings",
+              .stage = "bare-points",
+              .particles = n,
+              .width = o_.size.x,
+              .height = o_.size.y};
       row.ms = ms;
       row.particlesPerS = double(n) / (ms * 1e-3);
       row.bytesPerS = kRecordBytes * double(n) / (ms * 1e-3);
@@ -225,7 +247,10 @@ class Bench {
     else
       unsetenv("SANDSTORM_SPLAT");
     auto system = std::make_unique<ParticleSystem>(
-        benchState(c), ParticleSystem::Options{.capacity = c.particles, .capacityLimit = c.particles, .backend = backend, .stageTimers = false});
+        benchState(c), ParticleSystem::Options{.capacity = c.particles,
+                                               .capacityLimit = c.particles,
+                                               .backend = backend,
+                                               .stageTimers = false});
     system->setTerrain(terrain_);
     return system;
   }
@@ -234,7 +259,10 @@ class Bench {
     progress(concat("update: ", backend, ", ", field, " field, ", n, " particles"));
     if (!fits(4 * n * 16.0, "update")) return;
     guarded("update", [&] {
-      const SceneChoice c{.particles = n, .field = field, .particleSize = o_.particleSize, .integrator = o_.integrator};
+      const SceneChoice c{.particles = n,
+                          .field = field,
+                          .particleSize = o_.particleSize,
+                          .integrator = o_.integrator};
       const auto fieldUpdate = benchField(field);
       auto system = makeSystem(c, backend);
       GpuStopwatch watch;
@@ -247,7 +275,11 @@ class Bench {
       }
       const double ms = median(watch.intervalsMs());
       const std::size_t live = system->update().liveCount();
-      Row row{.section = "update", .stage = "update", .backend = backend, .field = field, .particles = live};
+      Row row{.section = "update",
+              .stage = "update",
+              .backend = backend,
+              .field = field,
+              .particles = live};
       row.ms = ms;
       row.particlesPerS = double(live) / (ms * 1e-3);
       row.bytesPerS = 2 * kRecordBytes * double(live) / (ms * 1e-3);
@@ -255,7 +287,8 @@ class Bench {
         row.ceiling = report_.bandwidthName();
         row.ratio = ratio(row.bytesPerS, report_.bandwidth());
         const double bare = bareCompute(n);
-        if (bare > 0) row.note = concat(row.ratio, " of ", row.ceiling, "; ", bare / ms, " of bare-compute");
+        if (bare > 0)
+          row.note = concat(row.ratio, " of ", row.ceiling, "; ", bare / ms, " of bare-compute");
       } else {
         const double bare = bareTf(n);
         row.ceiling = "bare-tf";
@@ -267,10 +300,14 @@ class Bench {
 
   void render(std::size_t n, const std::string& renderer) {
     const double bare = barePoints(n);
-    progress(concat("render: ", renderer, ", ", n, " particles, one ", o_.size.x, "x", o_.size.y, " view"));
+    progress(concat("render: ", renderer, ", ", n, " particles, one ", o_.size.x, "x", o_.size.y,
+                    " view"));
     if (!fits(4 * n * 16.0, "render")) return;
     guarded("render", [&] {
-      const SceneChoice c{.particles = n, .renderer = renderer, .particleSize = o_.particleSize, .integrator = o_.integrator};
+      const SceneChoice c{.particles = n,
+                          .renderer = renderer,
+                          .particleSize = o_.particleSize,
+                          .integrator = o_.integrator};
       const auto fieldUpdate = benchField("texture");
       auto system = makeSystem(c, o_.wallBackend);
       BenchView view;
@@ -292,8 +329,15 @@ class Bench {
       const std::size_t live = system->update().liveCount();
       const double pixels = double(o_.size.x) * double(o_.size.y);
       auto row = [&](const char* stage, GpuStopwatch& watch) {
-        Row r{.section = "render", .stage = stage, .backend = o_.wallBackend, .field = "texture", .renderer = renderer,
-              .particles = live, .walls = 1, .width = o_.size.x, .height = o_.size.y};
+        Row r{.section = "render",
+              .stage = stage,
+              .backend = o_.wallBackend,
+              .field = "texture",
+              .renderer = renderer,
+              .particles = live,
+              .walls = 1,
+              .width = o_.size.x,
+              .height = o_.size.y};
         r.ms = median(watch.intervalsMs());
         return r;
       };
@@ -314,15 +358,19 @@ class Bench {
 
   void walls(int count, const std::string& sim, const std::string& renderer) {
     const std::size_t n = o_.wallParticles;
-    progress(concat("walls: ", count, " views of ", o_.size.x, "x", o_.size.y, ", ", sim, " simulation, ", renderer,
-                    ", ", n, " particles"));
+    progress(concat("walls: ", count, " views of ", o_.size.x, "x", o_.size.y, ", ", sim,
+                    " simulation, ", renderer, ", ", n, " particles"));
     const int systems = sim == "shared" ? 1 : count;
     if (!fits(4 * n * 16.0 * systems, "walls")) return;
     guarded("walls", [&] {
-      const SceneChoice c{.particles = n, .renderer = renderer, .particleSize = o_.particleSize, .integrator = o_.integrator};
+      const SceneChoice c{.particles = n,
+                          .renderer = renderer,
+                          .particleSize = o_.particleSize,
+                          .integrator = o_.integrator};
       const auto fieldUpdate = benchField("texture");
       std::vector<std::unique_ptr<ParticleSystem>> sims;
-      for (int s = 0; s < systems; ++s) sims.push_back(makeSystem(c, o_.wallBackend));
+      for (int s = 0; s < systems; ++s)
+        sims.push_back(makeSystem(c, o_.wallBackend));
       std::vector<std::unique_ptr<BenchView>> views;
       std::vector<View> cameras;
       for (int w = 0; w < count; ++w) {
@@ -353,22 +401,27 @@ class Bench {
           updates.end();
         }
         for (int w = 0; w < count; ++w)
-          views[std::size_t(w)]->render(*sims[std::size_t(sim == "shared" ? 0 : w)], cameras[std::size_t(w)], o_.size,
-                                        out.framebuffer(), watches);
+          views[std::size_t(w)]->render(*sims[std::size_t(sim == "shared" ? 0 : w)],
+                                        cameras[std::size_t(w)], o_.size, out.framebuffer(),
+                                        watches);
         if (timed) {
           finishGpu();
-          wallMs.push_back(std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count());
+          wallMs.push_back(
+              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                  .count());
         }
       }
       // Per frame: the sum of its intervals (systems updates, `count` of each view stage).
       auto perFrame = [&](GpuStopwatch& watch, int perFrameCount) {
         const std::vector<double> all = watch.intervalsMs();
         std::vector<double> sums(std::size_t(o_.frames), 0.0);
-        for (std::size_t i = 0; i < all.size(); ++i) sums[i / std::size_t(perFrameCount)] += all[i];
+        for (std::size_t i = 0; i < all.size(); ++i)
+          sums[i / std::size_t(perFrameCount)] += all[i];
         return sums;
       };
       const std::vector<double> u = perFrame(updates, systems), s = perFrame(watches.scene, count),
-                                p = perFrame(watches.particles, count), q = perFrame(watches.post, count);
+                                p = perFrame(watches.particles, count),
+                                q = perFrame(watches.post, count);
       std::vector<double> total(u.size()), viewsMs(u.size());
       for (std::size_t i = 0; i < u.size(); ++i) {
         viewsMs[i] = s[i] + p[i] + q[i];
@@ -376,10 +429,19 @@ class Bench {
       }
       const std::size_t live = sims[0]->update().liveCount();
       auto row = [&](const char* stage, const std::vector<double>& ms) {
-        Row r{.section = "walls", .stage = stage, .backend = o_.wallBackend, .field = "texture", .renderer = renderer,
-              .sim = sim, .particles = live, .walls = count, .width = o_.size.x, .height = o_.size.y};
+        Row r{.section = "walls",
+              .stage = stage,
+              .backend = o_.wallBackend,
+              .field = "texture",
+              .renderer = renderer,
+              .sim = sim,
+              .particles = live,
+              .walls = count,
+              .width = o_.size.x,
+              .height = o_.size.y};
         r.ms = median(ms);
-        r.particlesPerS = double(live) * (std::string(stage) == "update" ? systems : count) / (r.ms * 1e-3);
+        r.particlesPerS =
+            double(live) * (std::string(stage) == "update" ? systems : count) / (r.ms * 1e-3);
         return r;
       };
       report_.rows.push_back(row("update", u));
@@ -411,28 +473,47 @@ void printTargets(const Report& r) {
   std::printf("\nTargets (largest N measured):\n");
   for (const Row& row : r.rows)
     if (row.section == "verify")
-      std::printf("  compute = tf-gs on this GPU (%s field): %s\n", row.field.c_str(), row.note.c_str());
-  if (const Row* c = largest([](const Row& x) { return x.section == "update" && x.backend == "compute" && x.field == "texture"; }))
-    std::printf("  compute update, %zu particles: %.1f GB/s = %.2f of %s bandwidth %.1f GB/s (target >= 0.60); "
-                "glCopyNamedBufferSubData %.1f GB/s\n",
-                c->particles, c->bytesPerS * 1e-9, c->ratio, r.bandwidthName().c_str(), r.bandwidth() * 1e-9,
-                r.copyBytesPerS * 1e-9);
-  if (const Row* t = largest([](const Row& x) { return x.section == "update" && x.backend == "tf-gs" && x.field == "texture"; }))
-    std::printf("  tf-gs update, %zu particles: %.3f ms = %.2f of the bare transform-feedback pass's speed (target >= 0.80)\n",
-                t->particles, t->ms, t->ratio);
-  const Row* b = largest([](const Row& x) { return x.section == "render" && x.stage == "particles" && x.renderer == "billboards"; });
+      std::printf("  compute = tf-gs on this GPU (%s field): %s\n", row.field.c_str(),
+                  row.note.c_str());
+  if (const Row* c = largest([](const Row& x) {
+        return x.section == "update" && x.backend == "compute" && x.field == "texture";
+      }))
+    std::printf(
+        "  compute update, %zu particles: %.1f GB/s = %.2f of %s bandwidth %.1f GB/s (target >= "
+        "0.60); "
+        "glCopyNamedBufferSubData %.1f GB/s\n",
+        c->particles, c->bytesPerS * 1e-9, c->ratio, r.bandwidthName().c_str(),
+        r.bandwidth() * 1e-9, r.copyBytesPerS * 1e-9);
+  if (const Row* t = largest([](const Row& x) {
+        return x.section == "update" && x.backend == "tf-gs" && x.field == "texture";
+      }))
+    std::printf(
+        "  tf-gs update, %zu particles: %.3f ms = %.2f of the bare transform-feedback pass's speed "
+        "(target >= 0.80)\n",
+        t->particles, t->ms, t->ratio);
+  const Row* b = largest([](const Row& x) {
+    return x.section == "render" && x.stage == "particles" && x.renderer == "billboards";
+  });
   if (b) {
     const Row* s = nullptr;
     for (const Row& row : r.rows)
-      if (row.section == "render" && row.stage == "particles" && row.renderer == "splat" && row.particles == b->particles) s = &row;
+      if (row.section == "render" && row.stage == "particles" && row.renderer == "splat" &&
+          row.particles == b->particles)
+        s = &row;
     if (s)
-      std::printf("  splat vs billboards, %zu particles: %.1f vs %.1f Mparticles/s = %.1fx (target >= 10x)\n",
-                  b->particles, s->particlesPerS * 1e-6, b->particlesPerS * 1e-6, s->particlesPerS / b->particlesPerS);
+      std::printf(
+          "  splat vs billboards, %zu particles: %.1f vs %.1f Mparticles/s = %.1fx (target >= "
+          "10x)\n",
+          b->particles, s->particlesPerS * 1e-6, b->particlesPerS * 1e-6,
+          s->particlesPerS / b->particlesPerS);
   }
   for (const Row& row : r.rows)
     if (row.section == "walls" && row.stage == "frame")
-      std::printf("  %d views, %s simulation, %s, %zu particles: %.2f ms GPU (%.1f fps), %.2f ms wall clock\n", row.walls,
-                  row.sim.c_str(), row.renderer.c_str(), row.particles, row.ms, 1000.0 / row.ms, row.wallMs);
+      std::printf(
+          "  %d views, %s simulation, %s, %zu particles: %.2f ms GPU (%.1f fps), %.2f ms wall "
+          "clock\n",
+          row.walls, row.sim.c_str(), row.renderer.c_str(), row.particles, row.ms, 1000.0 / row.ms,
+          row.wallMs);
 }
 
 }  // namespace
@@ -447,7 +528,8 @@ int main(int argc, char** argv) {
     context.makeCurrent();
     Report report;
     report.device = context.description() + " | " + glRenderer();
-    for (int i = 0; i < argc; ++i) report.command += (i ? " " : "") + std::string(argv[i]);
+    for (int i = 0; i < argc; ++i)
+      report.command += (i ? " " : "") + std::string(argv[i]);
     std::size_t memory = std::size_t(-1) / 2;
     if (options.memoryGiB > 0)
       memory = std::size_t(options.memoryGiB * 1073741824.0);

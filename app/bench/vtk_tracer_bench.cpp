@@ -115,12 +115,16 @@ int main(int argc, char** argv) {
   }
   const double cpuRate = double(cpu.particles().size()) * cpuSteps / seconds(cpuStart);
 
-  std::printf("vtkStreamTracer (VTK %s), RK4, %d seeds, up to %d steps of 0.05 m: %lld steps in %.3f s = %.3g "
-              "particle-steps/s\n",
-              VTK_VERSION, seeds, maxSteps, steps, vtkSeconds, vtkRate);
-  std::printf("Sandstorm ReferenceSimulator (CPU, one core), RK4 tracers: %.3g particle-steps/s\n", cpuRate);
-  std::printf("{\"vtk_rk4_steps_per_s\": %.6g, \"vtk_steps\": %lld, \"vtk_seconds\": %.6g, "
-              "\"reference_cpu_rk4_steps_per_s\": %.6g}\n",
-              vtkRate, steps, vtkSeconds, cpuRate);
+  std::printf(
+      "vtkStreamTracer (VTK %s), RK4, %d seeds, up to %d steps of 0.05 m: %lld steps in %.3f s = "
+      "%.3g "
+      "particle-steps/s\n",
+      VTK_VERSION, seeds, maxSteps, steps, vtkSeconds, vtkRate);
+  std::printf("Sandstorm ReferenceSimulator (CPU, one core), RK4 tracers: %.3g particle-steps/s\n",
+              cpuRate);
+  std::printf(
+      "{\"vtk_rk4_steps_per_s\": %.6g, \"vtk_steps\": %lld, \"vtk_seconds\": %.6g, "
+      "\"reference_cpu_rk4_steps_per_s\": %.6g}\n",
+      vtkRate, steps, vtkSeconds, cpuRate);
   return 0;
 }

@@ -25,8 +25,8 @@ class BenchView {
  public:
   BenchView();
   SceneRenderer& scene() { return scene_; }
-  void render(const ParticleSystem& particles, const View& view, glm::ivec2 size, std::uint32_t destination,
-              StageWatches& watches);
+  void render(const ParticleSystem& particles, const View& view, glm::ivec2 size,
+              std::uint32_t destination, StageWatches& watches);
 
  private:
   SceneRenderer scene_;

@@ -18,7 +18,8 @@ gl::Buffer recordBuffer(std::size_t records, float fill) {
   gl::Buffer b = gl::createBuffer();
   glGetError();
   glNamedBufferStorage(b.id(), GLsizeiptr(records) * kRecord, nullptr, 0);
-  if (glGetError() == GL_OUT_OF_MEMORY) throw Error(concat("ceilings: no GPU memory for ", records, " records"));
+  if (glGetError() == GL_OUT_OF_MEMORY)
+    throw Error(concat("ceilings: no GPU memory for ", records, " records"));
   const float value[4] = {fill, fill, fill, 1.0f};
   glClearNamedBufferData(b.id(), GL_RGBA32F, GL_RGBA, GL_FLOAT, value);
   return b;
@@ -66,7 +67,8 @@ double shaderCopyBandwidth(std::size_t bytes, int repeats) {
     copy.use();
     glProgramUniform1ui(copy.id(), 0, GLuint(records));
     const std::size_t groups = (records + 256 * items - 1) / (256 * items);
-    const GLuint x = GLuint(std::min<std::size_t>(groups, 32768)), y = GLuint((groups + 32767) / 32768);
+    const GLuint x = GLuint(std::min<std::size_t>(groups, 32768)),
+                 y = GLuint((groups + 32767) / 32768);
     GpuStopwatch watch;
     for (int r = -1; r < repeats; ++r) {
       if (r >= 0) watch.begin();
@@ -87,9 +89,10 @@ BareComputeUpdate::BareComputeUpdate(std::size_t records)
       control_(gl::createBuffer()),
       tiles_(gl::createBuffer()),
       simBlock_(gl::createBuffer()),
-      program_(gl::ProgramDesc{{"particle_update.comp"},
-                               {"BARE_UPDATE", concat("ITEMS ", ParticleComputeUpdate::itemsPerInvocation())},
-                               {}}) {
+      program_(gl::ProgramDesc{
+          {"particle_update.comp"},
+          {"BARE_UPDATE", concat("ITEMS ", ParticleComputeUpdate::itemsPerInvocation())},
+          {}}) {
   glNamedBufferStorage(control_.id(), 64, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(tiles_.id(), GLsizeiptr((records / 256 + 2) * 4), nullptr, 0);
   glNamedBufferStorage(simBlock_.id(), 4096, nullptr, 0);
@@ -98,7 +101,8 @@ BareComputeUpdate::BareComputeUpdate(std::size_t records)
 double BareComputeUpdate::passMs(int repeats) {
   const std::uint32_t tile = 256u * std::uint32_t(ParticleComputeUpdate::itemsPerInvocation());
   const std::uint32_t tiles = std::uint32_t((records_ + tile - 1) / tile);
-  const std::uint32_t control[16] = {std::uint32_t(records_), 0, 0, tiles};  // count[0], count[1], ticket, tiles
+  const std::uint32_t control[16] = {std::uint32_t(records_), 0, 0,
+                                     tiles};  // count[0], count[1], ticket, tiles
   program_.use();
   glProgramUniform1i(program_.id(), 0, 0);
   glProgramUniform1ui(program_.id(), 1, 0);
@@ -132,7 +136,8 @@ BareTransformFeedback::BareTransformFeedback(std::size_t records)
       feedback_(gl::createTransformFeedback()),
       target_(gl::createFramebuffer()),
       color_(gl::createRenderbuffer()),
-      program_(gl::ProgramDesc{{"bench_passthrough.vert"}, {}, {"outPositionLife", "outVelocityKind"}}) {
+      program_(
+          gl::ProgramDesc{{"bench_passthrough.vert"}, {}, {"outPositionLife", "outVelocityKind"}}) {
   vao_ = twoStreams(in_[0].id(), in_[1].id());
   glTransformFeedbackBufferBase(feedback_.id(), 0, out_[0].id());
   glTransformFeedbackBufferBase(feedback_.id(), 1, out_[1].id());
@@ -177,7 +182,8 @@ BarePointDraw::BarePointDraw(std::size_t points, glm::ivec2 size)
   fill_.use();
   glProgramUniform1ui(fill_.id(), 0, std::uint32_t(points));
   const std::size_t groups = (points + 255) / 256;
-  glDispatchCompute(GLuint(std::min<std::size_t>(groups, 65535)), GLuint((groups + 65534) / 65535), 1);
+  glDispatchCompute(GLuint(std::min<std::size_t>(groups, 65535)), GLuint((groups + 65534) / 65535),
+                    1);
   glMemoryBarrier(GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT);
 }
 

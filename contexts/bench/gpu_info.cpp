@@ -19,6 +19,8 @@ std::optional<std::size_t> gpuMemoryBytes() {
   return std::size_t(kib) * 1024;
 }
 
-void finishGpu() { glFinish(); }
+void finishGpu() {
+  glFinish();
+}
 
 }  // namespace sandstorm::bench

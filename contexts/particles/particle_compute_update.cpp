@@ -24,7 +24,14 @@ constexpr GLintptr kDrawOffset = 32;
 constexpr GLsizeiptr kControlSize = 64;
 
 // Binding points of the shaders' storage blocks.
-enum Binding : GLuint { kInPosition = 0, kInVelocity, kOutPosition, kOutVelocity, kControl, kTileStatus };
+enum Binding : GLuint {
+  kInPosition = 0,
+  kInVelocity,
+  kOutPosition,
+  kOutVelocity,
+  kControl,
+  kTileStatus
+};
 
 // How often a tile reads a predecessor's status before counting that tile's
 // survivors itself. GPUs run the workgroups of a dispatch side by side, so a
@@ -34,7 +41,8 @@ enum Binding : GLuint { kInPosition = 0, kInVelocity, kOutPosition, kOutVelocity
 std::uint32_t spinLimit() {
   if (const char* env = std::getenv("SANDSTORM_SCAN_SPIN")) return std::uint32_t(std::stoul(env));
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const bool software = renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe"));
+  const bool software =
+      renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe"));
   return software ? 64u : 1u << 20;
 }
 
@@ -63,7 +71,8 @@ ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity)
   if (capacity == 0 || capacity > (std::size_t{1} << 31) / kRecord)
     throw Error(concat("ParticleComputeUpdate: capacity ", capacity, " is outside 1..",
                        (1u << 31) / kRecord));
-  for (BufferSet& set : sets_) allocate(set, capacity);
+  for (BufferSet& set : sets_)
+    allocate(set, capacity);
   allocateTiles(capacity);
   const std::uint32_t zeros[kControlSize / 4] = {};
   glNamedBufferStorage(control_.id(), kControlSize, zeros, GL_DYNAMIC_STORAGE_BIT);
@@ -82,8 +91,8 @@ void ParticleComputeUpdate::allocate(BufferSet& set, std::size_t capacity) {
   glNamedBufferStorage(set.positionLife.id(), GLsizeiptr(capacity) * kRecord, nullptr, 0);
   glNamedBufferStorage(set.velocityKind.id(), GLsizeiptr(capacity) * kRecord, nullptr, 0);
   if (glGetError() == GL_OUT_OF_MEMORY)
-    throw Error(concat("ParticleComputeUpdate: the GPU has no memory for ", capacity, " particles (",
-                       2 * capacity * kRecord >> 20,
+    throw Error(concat("ParticleComputeUpdate: the GPU has no memory for ", capacity,
+                       " particles (", 2 * capacity * kRecord >> 20,
                        " MiB per buffer set); lower sim.maximum or run.capacity_limit"));
   set.vao = gl::createVertexArray();
   for (GLuint a = 0; a < 2; ++a) {
@@ -111,7 +120,8 @@ void ParticleComputeUpdate::grow(std::size_t capacity) {
   if (capacity <= capacity_) return;
   const std::size_t count = liveCount();
   std::array<BufferSet, 2> grown;
-  for (BufferSet& set : grown) allocate(set, capacity);
+  for (BufferSet& set : grown)
+    allocate(set, capacity);
   // The live particles keep their place and order; the counts stay as they are.
   const BufferSet& from = sets_[std::size_t(current_)];
   BufferSet& to = grown[std::size_t(current_)];
@@ -157,7 +167,8 @@ std::size_t ParticleComputeUpdate::countAfter(std::uint64_t update) const {
   const gl::Sync& fence = historyFence_[std::size_t(update % kHistory)];
   if (fence) {
     const GLsync sync = reinterpret_cast<GLsync>(fence.handle());
-    while (glClientWaitSync(sync, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000) == GL_TIMEOUT_EXPIRED) {
+    while (glClientWaitSync(sync, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000) ==
+           GL_TIMEOUT_EXPIRED) {
     }
   }
   return historyMap_[update % kHistory];
@@ -178,8 +189,7 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   inputs.step = step;
   inputs.granted = budget_.allocate(step.emission, limit, count2);
   inputs.granted.resize(state.emitters.size(), 0);
-  const std::uint32_t born =
-      std::accumulate(inputs.granted.begin(), inputs.granted.end(), 0u);
+  const std::uint32_t born = std::accumulate(inputs.granted.begin(), inputs.granted.end(), 0u);
   SimBlock block;
   fillSimBlock(inputs, block);
   glNamedBufferSubData(simBlock_.id(), 0, sizeof(block), &block);
@@ -248,7 +258,8 @@ void ParticleComputeUpdate::draw() const {
 
 ParticleBackend::Records ParticleComputeUpdate::records() const {
   const BufferSet& set = sets_[std::size_t(current_)];
-  return {set.positionLife.id(), set.velocityKind.id(), control_.id(), std::uint32_t(kCountOffset + current_ * 4), 0};
+  return {set.positionLife.id(), set.velocityKind.id(), control_.id(),
+          std::uint32_t(kCountOffset + current_ * 4), 0};
 }
 
 std::size_t ParticleComputeUpdate::liveCount() const {
@@ -262,7 +273,8 @@ std::vector<Particle> ParticleComputeUpdate::readBack() const {
   const std::vector<glm::vec4> pos = readRecords(set.positionLife.id(), count);
   const std::vector<glm::vec4> vel = readRecords(set.velocityKind.id(), count);
   std::vector<Particle> particles(count);
-  for (std::size_t i = 0; i < count; ++i) particles[i] = Particle{pos[i], vel[i]};
+  for (std::size_t i = 0; i < count; ++i)
+    particles[i] = Particle{pos[i], vel[i]};
   return particles;
 }
 

@@ -48,7 +48,9 @@ class ParticleComputeUpdate final : public ParticleBackend {
 
   void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
                 std::shared_ptr<const VectorField> next = nullptr) override;
-  void setEquation(std::shared_ptr<const FieldEquation> equation) override { equation_.set(std::move(equation)); }
+  void setEquation(std::shared_ptr<const FieldEquation> equation) override {
+    equation_.set(std::move(equation));
+  }
   void setTerrain(std::shared_ptr<const HeightMap> terrain) override;
   void step(const SimStep& step, const ParticleState& state) override;
   void clear() override;

@@ -14,7 +14,7 @@ namespace sandstorm {
 namespace {
 
 constexpr std::size_t kChannels = 8;  // kSplatStride of splat_common.glsl
-constexpr int kTile = 16;              // kSplatTile
+constexpr int kTile = 16;             // kSplatTile
 
 // Storage-buffer bindings of the splat shaders.
 enum Binding : GLuint {
@@ -31,7 +31,8 @@ enum Binding : GLuint {
 }  // namespace
 
 ParticleSplat::ParticleSplat()
-    : tiled_(std::getenv("SANDSTORM_SPLAT") && std::string_view(std::getenv("SANDSTORM_SPLAT")) == "tiled"),
+    : tiled_(std::getenv("SANDSTORM_SPLAT") &&
+             std::string_view(std::getenv("SANDSTORM_SPLAT")) == "tiled"),
       prepare_(std::vector<std::string>{"splat_prepare.comp"}),
       dispatch_(gl::createBuffer()) {
   glNamedBufferStorage(dispatch_.id(), 32, nullptr, 0);
@@ -46,7 +47,8 @@ ParticleSplat::ParticleSplat()
   }
 }
 
-void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& targets, std::uint32_t sprite) const {
+void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& targets,
+                         std::uint32_t sprite) const {
   const ParticleBackend::Records records = particles.records();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPositionLife, records.positionLife);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVelocityKind, records.velocityKind);
@@ -68,8 +70,8 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   else
     drawAtomic(targets);
   // ParticlePost reads the images as textures; the next view starts from zeroed sums.
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
-                  GL_FRAMEBUFFER_BARRIER_BIT);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+                  GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 }
 
 void ParticleSplat::drawAtomic(const ViewTargets& targets) const {
@@ -79,7 +81,8 @@ void ParticleSplat::drawAtomic(const ViewTargets& targets) const {
     accumulation_ = gl::createBuffer();
     glGetError();
     glNamedBufferStorage(accumulation_.id(), GLsizeiptr(pixels * kChannels * 4), nullptr, 0);
-    if (glGetError() == GL_OUT_OF_MEMORY) throw Error(concat("ParticleSplat: no GPU memory for ", pixels, " pixels"));
+    if (glGetError() == GL_OUT_OF_MEMORY)
+      throw Error(concat("ParticleSplat: no GPU memory for ", pixels, " pixels"));
     const GLuint zero = 0;
     glClearNamedBufferData(accumulation_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
     pixels_ = pixels;
@@ -114,15 +117,16 @@ void ParticleSplat::drawTiled(const ViewTargets& targets, std::size_t capacity) 
     glGetError();
     glNamedBufferStorage(tileLists_.id(), GLsizeiptr(listCapacity * 4), nullptr, 0);
     if (glGetError() == GL_OUT_OF_MEMORY)
-      throw Error(concat("ParticleSplat: no GPU memory for the tile lists of ", capacity, " particles"));
+      throw Error(
+          concat("ParticleSplat: no GPU memory for the tile lists of ", capacity, " particles"));
     listCapacity_ = listCapacity;
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileCounts, tileCounts_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileLists, tileLists_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileStarts, tileStarts_.id());
   const GLuint zero = 0;
-  glClearNamedBufferSubData(tileCounts_.id(), GL_R32UI, 0, GLsizeiptr(tileCount * 4), GL_RED_INTEGER,
-                            GL_UNSIGNED_INT, &zero);
+  glClearNamedBufferSubData(tileCounts_.id(), GL_R32UI, 0, GLsizeiptr(tileCount * 4),
+                            GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_.id());

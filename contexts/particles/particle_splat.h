@@ -41,7 +41,8 @@ class ParticleSplat {
   ParticleSplat();
   // Replaces the view's particle buffers with the splatted particles. `sprite`:
   // ParticleRender's puff texture.
-  void draw(const ParticleBackend& particles, const ViewTargets& targets, std::uint32_t sprite) const;
+  void draw(const ParticleBackend& particles, const ViewTargets& targets,
+            std::uint32_t sprite) const;
 
  private:
   void drawAtomic(const ViewTargets& targets) const;
@@ -49,7 +50,7 @@ class ParticleSplat {
 
   bool tiled_;
   gl::Program prepare_;
-  std::optional<gl::Program> splat_, resolve_;               // atomic
+  std::optional<gl::Program> splat_, resolve_;                // atomic
   std::optional<gl::Program> count_, scatter_, scan_, tile_;  // tiled
   gl::Buffer dispatch_;
   mutable gl::Buffer accumulation_;  // atomic: the sums

@@ -24,11 +24,19 @@
 
 namespace sandstorm {
 
-enum class EquationKind : int { Tornado = 1, Gravity = 2, Wind = 3, CurlNoise = 4, SphereFlow = 5, Downwash = 6 };
+enum class EquationKind : int {
+  Tornado = 1,
+  Gravity = 2,
+  Wind = 3,
+  CurlNoise = 4,
+  SphereFlow = 5,
+  Downwash = 6
+};
 
 struct EquationTerm {
   EquationKind kind = EquationKind::Tornado;
-  std::uint32_t seed = 0;  // wind and curl noise: GradientNoise seed of the first channel (seed * 3)
+  std::uint32_t seed =
+      0;  // wind and curl noise: GradientNoise seed of the first channel (seed * 3)
   glm::vec4 a{0.0f}, b{0.0f}, c{0.0f};
 };
 

@@ -12,9 +12,11 @@ float viewCoverage(const Box& box, const FieldPlacement& placement, const Viewer
   const glm::vec3 head = viewer.navigation.roomToWorld(viewer.head.position);
   const float distance = glm::length(center - head);
   if (distance <= radius) return 1.0f;
-  const float cosTheta = std::sqrt(std::max(0.0f, 1.0f - (radius / distance) * (radius / distance)));
+  const float cosTheta =
+      std::sqrt(std::max(0.0f, 1.0f - (radius / distance) * (radius / distance)));
   const float solidAngle = 2.0f * std::numbers::pi_v<float> * (1.0f - cosTheta);
-  const float view = 2.0f * std::numbers::pi_v<float> * (1.0f - std::cos(std::numbers::pi_v<float> / 4.0f));
+  const float view =
+      2.0f * std::numbers::pi_v<float> * (1.0f - std::cos(std::numbers::pi_v<float> / 4.0f));
   return std::min(solidAngle / view, 1.0f);
 }
 

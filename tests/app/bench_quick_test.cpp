@@ -17,7 +17,8 @@ test::ProcessResult runBench(const std::string& args) {
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) return r;
   char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
+  while (std::fgets(buffer, sizeof buffer, pipe))
+    r.output += buffer;
   const int status = pclose(pipe);
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
@@ -56,8 +57,8 @@ TEST(BenchQuick, PrintsTheTableAndWritesEverySectionToJson) {
     ++rows;
     const std::string section = field(line, "section"), stage = field(line, "stage");
     seen.insert(section + "/" + stage);
-    for (const char* key : {"backend", "field", "renderer", "sim", "particles", "walls", "gpu_ms", "particles_per_s",
-                            "bytes_per_s", "ceiling", "ratio", "wall_clock_ms"})
+    for (const char* key : {"backend", "field", "renderer", "sim", "particles", "walls", "gpu_ms",
+                            "particles_per_s", "bytes_per_s", "ceiling", "ratio", "wall_clock_ms"})
       EXPECT_NE(field(line, key), "<missing>") << key << " in " << line;
     EXPECT_GE(std::stod(field(line, "gpu_ms")), 0.0) << line;
     if (section == "update") {
@@ -66,12 +67,13 @@ TEST(BenchQuick, PrintsTheTableAndWritesEverySectionToJson) {
       EXPECT_GT(std::stod(field(line, "particles")), 0.0) << line;
     }
   }
-  for (const char* expected : {"verify/agreement", "ceilings/copy", "ceilings/bare-tf", "ceilings/bare-points", "update/update",
-                               "render/scene", "render/particles", "render/post", "walls/update", "walls/views",
-                               "walls/frame"})
+  for (const char* expected :
+       {"verify/agreement", "ceilings/copy", "ceilings/bare-tf", "ceilings/bare-points",
+        "update/update", "render/scene", "render/particles", "render/post", "walls/update",
+        "walls/views", "walls/frame"})
     EXPECT_TRUE(seen.count(expected)) << expected;
-  // 2 verify; 2 copies + 3 ceilings x 2 counts; 2 particle counts x 2 backends x 2 fields of updates;
-  // 4 renderers x 2 counts x 3 stages; 2 wall counts x 2 sims x 2 renderers x 3 stages.
+  // 2 verify; 2 copies + 3 ceilings x 2 counts; 2 particle counts x 2 backends x 2 fields of
+  // updates; 4 renderers x 2 counts x 3 stages; 2 wall counts x 2 sims x 2 renderers x 3 stages.
   EXPECT_GE(rows, 2 + 2 + 6 + 8 + 24 + 2 * 2 * 2 * 3);
   for (const char* key : {"\"device\"", "\"command\"", "\"copy_bytes_per_s\""})
     EXPECT_NE(lines[1].find(key) == std::string::npos && lines[2].find(key) == std::string::npos &&

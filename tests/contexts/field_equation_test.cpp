@@ -26,11 +26,14 @@ namespace {
 
 class FieldEquationTest : public GlTest {};
 
-std::vector<glm::vec3> evaluateOnGpu(const FieldEquation& equation, const std::vector<glm::vec3>& points) {
+std::vector<glm::vec3> evaluateOnGpu(const FieldEquation& equation,
+                                     const std::vector<glm::vec3>& points) {
   gl::Program probe(std::vector<std::string>{"field_equation_probe.comp"});
   std::vector<glm::vec4> in;
-  for (const glm::vec3& p : points) in.emplace_back(p, 1.0f);
-  gl::Buffer pointBuffer = gl::createBuffer(), valueBuffer = gl::createBuffer(), block = gl::createBuffer();
+  for (const glm::vec3& p : points)
+    in.emplace_back(p, 1.0f);
+  gl::Buffer pointBuffer = gl::createBuffer(), valueBuffer = gl::createBuffer(),
+             block = gl::createBuffer();
   glNamedBufferStorage(pointBuffer.id(), GLsizeiptr(in.size() * sizeof(glm::vec4)), in.data(), 0);
   glNamedBufferStorage(valueBuffer.id(), GLsizeiptr(in.size() * sizeof(glm::vec4)), nullptr, 0);
   const EquationBlock b = makeEquationBlock(equation);
@@ -43,9 +46,11 @@ std::vector<glm::vec3> evaluateOnGpu(const FieldEquation& equation, const std::v
   glDispatchCompute(GLuint((in.size() + 63) / 64), 1, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   std::vector<glm::vec4> out(in.size());
-  glGetNamedBufferSubData(valueBuffer.id(), 0, GLsizeiptr(out.size() * sizeof(glm::vec4)), out.data());
+  glGetNamedBufferSubData(valueBuffer.id(), 0, GLsizeiptr(out.size() * sizeof(glm::vec4)),
+                          out.data());
   std::vector<glm::vec3> values;
-  for (const glm::vec4& v : out) values.emplace_back(v);
+  for (const glm::vec4& v : out)
+    values.emplace_back(v);
   return values;
 }
 
@@ -53,7 +58,8 @@ TEST_F(FieldEquationTest, TheGlslEquationsMatchEvaluateForEveryAnalyticField) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<float> coord(-8.0f, 8.0f), height(-1.0f, 14.0f);
   std::vector<glm::vec3> points;
-  for (int i = 0; i < 4000; ++i) points.emplace_back(coord(rng), coord(rng), height(rng));
+  for (int i = 0; i < 4000; ++i)
+    points.emplace_back(coord(rng), coord(rng), height(rng));
   for (const AnalyticFieldSpec& spec : analyticFieldSpecs()) {
     SCOPED_TRACE(spec.name);
     const auto field = makeAnalyticField(spec.name, {});
@@ -79,9 +85,11 @@ TEST_F(FieldEquationTest, SumsBecomeTermsAndTooManyTermsHaveNoEquation) {
   ASSERT_EQ(equation->terms.size(), 2u);
   const std::vector<glm::vec3> points{{0.5f, 0.2f, 1.0f}, {2.0f, -1.0f, 4.0f}, {-3.0f, 3.0f, 7.0f}};
   const std::vector<glm::vec3> gpu = evaluateOnGpu(*equation, points);
-  for (std::size_t i = 0; i < points.size(); ++i) EXPECT_LT(glm::length(gpu[i] - sum.evaluate(points[i])), 1e-4f);
+  for (std::size_t i = 0; i < points.size(); ++i)
+    EXPECT_LT(glm::length(gpu[i] - sum.evaluate(points[i])), 1e-4f);
   SumField crowd;
-  for (int i = 0; i < FieldEquation::kMaxTerms + 1; ++i) crowd.add(makeAnalyticField("gravity", {}));
+  for (int i = 0; i < FieldEquation::kMaxTerms + 1; ++i)
+    crowd.add(makeAnalyticField("gravity", {}));
   EXPECT_FALSE(fieldEquation(crowd).has_value());
 }
 
@@ -109,7 +117,8 @@ Trajectories trajectories(const std::string& backend, FieldMode mode, glm::ivec3
   e.radius = 3.0f;
   e.rate = 0.0f;
   e.lifetime = 100.0f;
-  ParticleSystem system(state, ParticleSystem::Options{.capacity = 2048, .capacityLimit = 2048, .backend = backend});
+  ParticleSystem system(
+      state, ParticleSystem::Options{.capacity = 2048, .capacityLimit = 2048, .backend = backend});
   Trajectories run;
   auto shared = std::make_shared<const FieldUpdate>(update);
   for (int f = 0; f < frames; ++f) {
@@ -121,7 +130,8 @@ Trajectories trajectories(const std::string& backend, FieldMode mode, glm::ivec3
     if (f == 0) p.fieldUpdate = shared;
     system.advance(p);
     std::vector<glm::vec3> positions;
-    for (const Particle& q : system.update().readBack()) positions.push_back(q.position());
+    for (const Particle& q : system.update().readBack())
+      positions.push_back(q.position());
     run.frames.push_back(std::move(positions));
   }
   return run;
@@ -130,23 +140,28 @@ Trajectories trajectories(const std::string& backend, FieldMode mode, glm::ivec3
 float maxDistance(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
   EXPECT_EQ(a.size(), b.size());
   float worst = 0.0f;
-  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) worst = std::max(worst, glm::length(a[i] - b[i]));
+  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+    worst = std::max(worst, glm::length(a[i] - b[i]));
   return worst;
 }
 
 float medianDistance(const std::vector<glm::vec3>& a, const std::vector<glm::vec3>& b) {
   std::vector<float> d;
-  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i) d.push_back(glm::length(a[i] - b[i]));
+  for (std::size_t i = 0; i < std::min(a.size(), b.size()); ++i)
+    d.push_back(glm::length(a[i] - b[i]));
   if (d.empty()) return 0.0f;
   std::nth_element(d.begin(), d.begin() + std::ptrdiff_t(d.size() / 2), d.end());
   return d[d.size() / 2];
 }
 
-class FieldEquationTrajectoryTest : public FieldEquationTest, public ::testing::WithParamInterface<const char*> {};
+class FieldEquationTrajectoryTest : public FieldEquationTest,
+                                    public ::testing::WithParamInterface<const char*> {};
 
-TEST_P(FieldEquationTrajectoryTest, EquationTrajectoriesMatchCpuEvaluateAndTheTextureWithinTheGridError) {
+TEST_P(FieldEquationTrajectoryTest,
+       EquationTrajectoriesMatchCpuEvaluateAndTheTextureWithinTheGridError) {
   constexpr int kFrames = 45;  // 1.5 s at up to ~6 m/s
-  const Trajectories equation = trajectories(GetParam(), FieldMode::Equation, {48, 48, 42}, kFrames);
+  const Trajectories equation =
+      trajectories(GetParam(), FieldMode::Equation, {48, 48, 42}, kFrames);
   const Trajectories texture = trajectories(GetParam(), FieldMode::Texture, {48, 48, 42}, kFrames);
   const Trajectories coarse = trajectories(GetParam(), FieldMode::Texture, {16, 16, 14}, kFrames);
 
@@ -169,9 +184,11 @@ TEST_P(FieldEquationTrajectoryTest, EquationTrajectoriesMatchCpuEvaluateAndTheTe
   const float fineMedian = medianDistance(texture.frames.back(), equation.frames.back());
   const float rough = maxDistance(coarse.frames.back(), equation.frames.back());
   const float roughMedian = medianDistance(coarse.frames.back(), equation.frames.back());
-  std::printf("%s after %d frames: equation vs CPU evaluate() %.3g m; vs texture 48x48x42 median %.3g max %.3g m, "
-              "16x16x14 median %.3g max %.3g m\n",
-              GetParam(), kFrames, cpuError, fineMedian, fine, roughMedian, rough);
+  std::printf(
+      "%s after %d frames: equation vs CPU evaluate() %.3g m; vs texture 48x48x42 median %.3g max "
+      "%.3g m, "
+      "16x16x14 median %.3g max %.3g m\n",
+      GetParam(), kFrames, cpuError, fineMedian, fine, roughMedian, rough);
   // Rounding only (float sqrt and division may differ between the two).
   EXPECT_LT(cpuError, 1e-3f);
   // The texture path carries the grid's interpolation error (cell 0.17 m), largest
@@ -183,10 +200,12 @@ TEST_P(FieldEquationTrajectoryTest, EquationTrajectoriesMatchCpuEvaluateAndTheTe
   EXPECT_GT(roughMedian, 3.0f * fineMedian);
 }
 
-INSTANTIATE_TEST_SUITE_P(Backends, FieldEquationTrajectoryTest, ::testing::Values("tf-gs", "compute"),
+INSTANTIATE_TEST_SUITE_P(Backends, FieldEquationTrajectoryTest,
+                         ::testing::Values("tf-gs", "compute"),
                          [](const ::testing::TestParamInfo<const char*>& info) {
-                           return std::string(info.param) == "tf-gs" ? std::string("TransformFeedback")
-                                                                     : std::string("Compute");
+                           return std::string(info.param) == "tf-gs"
+                                      ? std::string("TransformFeedback")
+                                      : std::string("Compute");
                          });
 
 }  // namespace

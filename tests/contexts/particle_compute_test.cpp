@@ -55,7 +55,8 @@ int matchingFrames(const char* spin, int frames) {
   int matching = 0;
   for (int f = 0; f < frames; ++f) {
     const FramePacket packet = main.next();
-    for (const StateChange& c : packet.changes) applyChange(state, c);
+    for (const StateChange& c : packet.changes)
+      applyChange(state, c);
     if (packet.fieldUpdate) {
       gpu.setField(packet.fieldUpdate->field, {});
       cpu.setField(packet.fieldUpdate->field, {});
@@ -95,14 +96,16 @@ TEST_F(ParticleComputeTest, IndirectDrawShowsTheSameImageAsTransformFeedback) {
     wall.name = "test";
     wall.camera = CameraSpec{{0.0f, -9.0f, 2.0f}, {0.0f, 0.0f, 2.0f}, 50.0f};
     wall.offscreenSize = {96, 64};
-    WallRenderer renderer(WallRendererSetup{.wall = wall,
-                                            .initial = state,
-                                            .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
-                                            .capacity = 16384,
-                                            .backend = backend,
-                                            .nearPlane = 0.1f,
-                                            .farPlane = 100.0f});
-    for (int f = 0; f < 12; ++f) renderer.frame(main.next(), {0, 0});
+    WallRenderer renderer(
+        WallRendererSetup{.wall = wall,
+                          .initial = state,
+                          .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
+                          .capacity = 16384,
+                          .backend = backend,
+                          .nearPlane = 0.1f,
+                          .farPlane = 100.0f});
+    for (int f = 0; f < 12; ++f)
+      renderer.frame(main.next(), {0, 0});
     return renderer.capture();
   };
   const Image tf = image("tf-gs"), compute = image("compute");

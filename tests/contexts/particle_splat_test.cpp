@@ -47,13 +47,14 @@ Image render(const ParticleState& state, const std::string& backend, int frames 
   wall.name = "test";
   wall.camera = CameraSpec{{0.0f, -8.0f, 1.2f}, {0.0f, 0.0f, 0.8f}, 40.0f};
   wall.offscreenSize = kSize;
-  WallRenderer renderer(WallRendererSetup{.wall = wall,
-                                          .initial = state,
-                                          .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
-                                          .capacity = 4096,
-                                          .backend = backend,
-                                          .nearPlane = 0.1f,
-                                          .farPlane = 100.0f});
+  WallRenderer renderer(
+      WallRendererSetup{.wall = wall,
+                        .initial = state,
+                        .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
+                        .capacity = 4096,
+                        .backend = backend,
+                        .nearPlane = 0.1f,
+                        .farPlane = 100.0f});
   for (int f = 0; f < frames; ++f) {
     FramePacket p = main.next();
     if (f > 0) p.emission.assign(p.emission.size(), 0u);  // one burst, then the same particles move
@@ -63,10 +64,11 @@ Image render(const ParticleState& state, const std::string& backend, int frames 
 }
 
 struct Difference {
-  double mean = 0;        // mean |a - b| over pixels and RGB channels, 0..255
-  double over16 = 0;      // fraction of pixels whose largest channel difference exceeds 16
+  double mean = 0;    // mean |a - b| over pixels and RGB channels, 0..255
+  double over16 = 0;  // fraction of pixels whose largest channel difference exceeds 16
   int largest = 0;
-  double changed = 0;     // fraction of pixels where the particles show at all (a differs from the empty scene)
+  double changed =
+      0;  // fraction of pixels where the particles show at all (a differs from the empty scene)
 };
 
 Difference compare(const Image& a, const Image& b, const Image& empty) {
@@ -79,7 +81,8 @@ Difference compare(const Image& a, const Image& b, const Image& empty) {
       const int diff = std::abs(int(a.rgba[std::size_t(k)]) - int(b.rgba[std::size_t(k)]));
       d.mean += diff;
       worst = std::max(worst, diff);
-      shows = std::max(shows, std::abs(int(a.rgba[std::size_t(k)]) - int(empty.rgba[std::size_t(k)])));
+      shows =
+          std::max(shows, std::abs(int(a.rgba[std::size_t(k)]) - int(empty.rgba[std::size_t(k)])));
     }
     d.largest = std::max(d.largest, worst);
     if (worst > 16) d.over16 += 1;
@@ -106,10 +109,12 @@ TEST_P(ParticleSplatTest, SplatsLookLikeBillboardsForSmallParticles) {
       writePng(billboards, std::string(dir) + "/billboards-" + tag + ".png");
       writePng(splats, std::string(dir) + "/splats-" + tag + ".png");
     }
-    std::printf("%s, %s: mean |billboards - splats| %.2f/255, %.2f%% of pixels off by > 16, largest %d; particles "
-                "cover %.1f%% of the image\n",
-                GetParam(), twoColours ? "two colours" : "one colour", d.mean, 100 * d.over16, d.largest,
-                100 * d.changed);
+    std::printf(
+        "%s, %s: mean |billboards - splats| %.2f/255, %.2f%% of pixels off by > 16, largest %d; "
+        "particles "
+        "cover %.1f%% of the image\n",
+        GetParam(), twoColours ? "two colours" : "one colour", d.mean, 100 * d.over16, d.largest,
+        100 * d.changed);
     // The stated tolerance: mean difference under 2/255 and under 2% of pixels
     // off by more than 16/255, where particles cover a good part of the image.
     EXPECT_GT(d.changed, 0.05);
@@ -138,8 +143,9 @@ TEST_P(ParticleSplatTest, AutoSplatsSmallParticlesAndDrawsLargeOnesAsBillboards)
 
 INSTANTIATE_TEST_SUITE_P(Backends, ParticleSplatTest, ::testing::Values("tf-gs", "compute"),
                          [](const ::testing::TestParamInfo<const char*>& info) {
-                           return std::string(info.param) == "tf-gs" ? std::string("TransformFeedback")
-                                                                     : std::string("Compute");
+                           return std::string(info.param) == "tf-gs"
+                                      ? std::string("TransformFeedback")
+                                      : std::string("Compute");
                          });
 
 }  // namespace

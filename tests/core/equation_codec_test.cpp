@@ -13,7 +13,8 @@ namespace {
 
 TEST(EquationCodec, EquationTermsAndTheLodScaleSurviveARoundTrip) {
   SumField sum;
-  sum.add(makeAnalyticField("tornado", {{"spin", -3.5}})).add(makeAnalyticField("curl_noise", {{"seed", 11}}));
+  sum.add(makeAnalyticField("tornado", {{"spin", -3.5}}))
+      .add(makeAnalyticField("curl_noise", {{"seed", 11}}));
   FieldUpdate update;
   update.equation = std::make_shared<FieldEquation>(*fieldEquation(sum));
   FramePacket p;

@@ -60,7 +60,8 @@ TEST(LevelOfDetail, FramesOverBudgetLowerEmissionAndItRecoversUnderBudget) {
   // 32 ms frames: twice the budget halves emission, frame after frame, down to the minimum.
   EXPECT_FLOAT_EQ(lod.update(s, 1.0f, 32.0), 0.5f);
   EXPECT_FLOAT_EQ(lod.update(s, 1.0f, 32.0), 0.25f);
-  for (int i = 0; i < 10; ++i) lod.update(s, 1.0f, 32.0);
+  for (int i = 0; i < 10; ++i)
+    lod.update(s, 1.0f, 32.0);
   EXPECT_FLOAT_EQ(lod.scale(), 0.05f);
   // Within 90-100% of the budget it holds; below, it climbs back 5% a frame.
   EXPECT_FLOAT_EQ(lod.update(s, 1.0f, 15.0), 0.05f);
@@ -90,7 +91,8 @@ TEST(LevelOfDetail, TheMainContextScalesTheCountsItShipsToEveryWall) {
   const FramePacket after = main.next();
   EXPECT_FLOAT_EQ(after.lodScale, 0.25f);
   EXPECT_EQ(after.emission[0], 250u);
-  // The frame-time budget: reported frames of twice the budget halve it again... down to the minimum.
+  // The frame-time budget: reported frames of twice the budget halve it again... down to the
+  // minimum.
   main.set("sim.lod_coverage", 0.0f);  // coverage no longer limits
   main.set("sim.lod_budget_ms", 10.0f);
   main.reportFrameTime(20.0);
