@@ -528,8 +528,10 @@ int main(int argc, char** argv) {
     context.makeCurrent();
     Report report;
     report.device = context.description() + " | " + glRenderer();
-    for (int i = 0; i < argc; ++i)
-      report.command += (i ? " " : "") + std::string(argv[i]);
+    for (int i = 0; i < argc; ++i) {
+      if (i) report.command += ' ';
+      report.command += argv[i];
+    }
     std::size_t memory = std::size_t(-1) / 2;
     if (options.memoryGiB > 0)
       memory = std::size_t(options.memoryGiB * 1073741824.0);
