@@ -30,7 +30,9 @@ namespace {
 
 std::atomic<bool> interrupted{false};
 
-void onInterrupt(int) { interrupted = true; }
+void onInterrupt(int) {
+  interrupted = true;
+}
 
 bool haveDisplay() {
   const char* x = std::getenv("DISPLAY");
@@ -57,9 +59,9 @@ class HashLog {
   void add(const WallRenderer& wall, std::uint32_t frame) {
     const std::vector<Particle> particles = wall.particles().update().readBack();
     const std::string state = AttributeTable::instance().describe(wall.particles().state());
-    const std::string line =
-        concat(frame, " ", wall.wall().name, " ", particles.size(), " ", std::hex,
-               hashOf(std::span<const Particle>(particles)), " ", hashOf(std::span<const char>(state)));
+    const std::string line = concat(frame, " ", wall.wall().name, " ", particles.size(), " ",
+                                    std::hex, hashOf(std::span<const Particle>(particles)), " ",
+                                    hashOf(std::span<const char>(state)));
     std::lock_guard lock(mutex_);
     lines_.push_back(line);
   }
@@ -68,7 +70,8 @@ class HashLog {
       return std::stoul(a) != std::stoul(b) ? std::stoul(a) < std::stoul(b) : a < b;
     });
     std::ofstream out(path);
-    for (const std::string& line : lines_) out << line << "\n";
+    for (const std::string& line : lines_)
+      out << line << "\n";
     if (!out) throw Error(concat("--hash-log: cannot write ", path.string()));
   }
 
@@ -86,7 +89,8 @@ void applySets(AppConfig& config, const std::vector<std::string>& sets) {
     if (eq == std::string::npos || eq == 0)
       throw Error(concat("--set '", set, "': expected key=value, e.g. --set emitter.0.rate=50000"));
     const std::string key = set.substr(0, eq);
-    const AttributeResult r = table.set(config.particles, key, table.parse(key, set.substr(eq + 1)));
+    const AttributeResult r =
+        table.set(config.particles, key, table.parse(key, set.substr(eq + 1)));
     if (!r.warning.empty()) log::warn("--set ", r.warning);
   }
 }
@@ -95,7 +99,8 @@ App::App(AppConfig config, AppOptions options, ClusterLink* cluster)
     : config_(std::move(config)), options_(std::move(options)), cluster_(cluster) {
   headless_ = options_.headless || !haveDisplay();
   if (headless_) {
-    if (config_.anyWindow() && !options_.headless) log::info("no display: rendering the windows offscreen instead");
+    if (config_.anyWindow() && !options_.headless)
+      log::info("no display: rendering the windows offscreen instead");
     for (WallSpec& w : config_.walls) {
       if (w.window) w.offscreenSize = w.window->size;
       w.window.reset();
@@ -115,8 +120,10 @@ App::App(AppConfig config, AppOptions options, ClusterLink* cluster)
                                    [&](const WallSpec& w) { return w.name == name; });
       if (it == config_.walls.end()) {
         std::string known;
-        for (const WallSpec& w : config_.walls) known += (known.empty() ? "" : ", ") + w.name;
-        throw Error(concat("--walls: no wall named '", name, "' in ", config_.path.string(), "; it has ", known));
+        for (const WallSpec& w : config_.walls)
+          known += (known.empty() ? "" : ", ") + w.name;
+        throw Error(concat("--walls: no wall named '", name, "' in ", config_.path.string(),
+                           "; it has ", known));
       }
       chosen.push_back(*it);
     }
@@ -126,15 +133,18 @@ App::App(AppConfig config, AppOptions options, ClusterLink* cluster)
   if (headless_ && !options_.menuScript) options_.noMenu = true;
   if (options_.noMenu) {
     config_.menu.operatorWindow.reset();
-    for (WallSpec& w : config_.walls) w.menu = false;
+    for (WallSpec& w : config_.walls)
+      w.menu = false;
   }
 }
 
 int App::run() {
   if (cluster_) cluster_->localize(config_, options_);  // this rank's walls and outputs
   const std::filesystem::path configDir = config_.path.parent_path();
-  // In cluster mode only rank 0 makes the field (unless every rank reads it): it travels in packets.
-  const FieldSource field = !cluster_ || cluster_->makesField() ? makeField(config_.field, configDir) : FieldSource{};
+  // In cluster mode only rank 0 makes the field (unless every rank reads it): it travels in
+  // packets.
+  const FieldSource field =
+      !cluster_ || cluster_->makesField() ? makeField(config_.field, configDir) : FieldSource{};
   const std::shared_ptr<const HeightMap> terrain = makeTerrain(config_.scene, configDir);
   if (options_.screenshotDir) std::filesystem::create_directories(*options_.screenshotDir);
 
@@ -147,10 +157,12 @@ int App::run() {
   std::unique_ptr<SessionRecorder> recorder;
   if (options_.record) {
     recorder = std::make_unique<SessionRecorder>(*options_.record);
-    main.setChangeListener([&](std::uint32_t frame, const StateChange& c) { recorder->record(frame, c); });
+    main.setChangeListener(
+        [&](std::uint32_t frame, const StateChange& c) { recorder->record(frame, c); });
   }
   if (options_.replay)
-    for (const ScheduledChange& s : readSessionLog(*options_.replay)) main.schedule(s.frame, s.change);
+    for (const ScheduledChange& s : readSessionLog(*options_.replay))
+      main.schedule(s.frame, s.change);
   HelicopterController helicopter(terrain);
   if (!cluster_ || cluster_->root())
     helicopter.update(main);  // the configured helicopter's field and dust, before packet 0
@@ -168,8 +180,9 @@ int App::run() {
     for (std::size_t i = 0; i < config_.walls.size(); ++i) {
       const WallSpec& w = config_.walls[i];
       if (w.window && w.window->monitor >= std::max(monitors, 1))
-        throw Error(concat(config_.path.string(), ":", w.line, ": wall[", i, "].window.monitor: monitor ",
-                           w.window->monitor, " does not exist; ", monitors, " connected"));
+        throw Error(concat(config_.path.string(), ":", w.line, ": wall[", i,
+                           "].window.monitor: monitor ", w.window->monitor, " does not exist; ",
+                           monitors, " connected"));
     }
   }
   const int wallCount = int(config_.walls.size());
@@ -203,11 +216,13 @@ int App::run() {
                             .backend = config_.run.backend,
                             .nearPlane = config_.run.nearPlane,
                             .farPlane = config_.run.farPlane};
-    walls.push_back(std::make_unique<RenderContext>(std::move(context), setup, channel, i, barrier));
+    walls.push_back(
+        std::make_unique<RenderContext>(std::move(context), setup, channel, i, barrier));
   }
 
   std::vector<GLFWwindow*> inputWindows;
-  for (GlfwWindow* w : windows) inputWindows.push_back(w->handle());
+  for (GlfwWindow* w : windows)
+    inputWindows.push_back(w->handle());
   DesktopInput input(inputWindows);
   DesktopHead* desktopHead = dynamic_cast<DesktopHead*>(head.get());
 
@@ -215,12 +230,14 @@ int App::run() {
   if (operatorWindow || menuWall >= 0 || options_.menuScript) {
     std::unique_ptr<GlfwWindow> console;
     if (operatorWindow)
-      console = std::make_unique<GlfwWindow>(*glfw, windowOptions("Sandstorm: operator", *config_.menu.operatorWindow));
+      console = std::make_unique<GlfwWindow>(
+          *glfw, windowOptions("Sandstorm: operator", *config_.menu.operatorWindow));
     const int shown = menuWall >= 0 ? menuWall : 0;
     // (A cluster's rank 0 may drive no wall: then only its operator window shows the menu.)
     const WallSpec wall = wallCount > 0 ? config_.walls[std::size_t(shown)] : WallSpec{};
-    GLFWwindow* wallWindow =
-        wallCount > 0 && wallWindows[std::size_t(shown)] ? wallWindows[std::size_t(shown)]->handle() : nullptr;
+    GLFWwindow* wallWindow = wallCount > 0 && wallWindows[std::size_t(shown)]
+                                 ? wallWindows[std::size_t(shown)]->handle()
+                                 : nullptr;
     std::optional<MenuScript> script;
     if (options_.menuScript) script = MenuScript::load(*options_.menuScript);
     // The project's data/ sits beside config/.
@@ -232,7 +249,8 @@ int App::run() {
           useField(main, makeField(fieldSpecFor(choice, config_.field), root));
         },
         std::move(script));
-    if (!operatorWindow && wallCount > 0) walls[std::size_t(shown)]->setOverlay([&menu] { return menu->latest(); }, menu->font());
+    if (!operatorWindow && wallCount > 0)
+      walls[std::size_t(shown)]->setOverlay([&menu] { return menu->latest(); }, menu->font());
   }
 
   if (cluster_) {
@@ -244,11 +262,13 @@ int App::run() {
   HashLog hashes;
   for (std::size_t i = 0; i < walls.size(); ++i) {
     const bool first = i == 0;
-    walls[i]->setFrameHook([&, this, lastFrame, first, i](WallRenderer& wall, const FramePacket& packet) {
+    walls[i]->setFrameHook([&, this, lastFrame, first, i](WallRenderer& wall,
+                                                          const FramePacket& packet) {
       if (options_.hashLog) hashes.add(wall, packet.frame);
       const int f = int(packet.frame);
       const bool last = f == lastFrame;
-      if (options_.screenshotDir && (last || (options_.screenshotEvery > 0 && f % options_.screenshotEvery == 0))) {
+      if (options_.screenshotDir &&
+          (last || (options_.screenshotEvery > 0 && f % options_.screenshotEvery == 0))) {
         const std::string name = last ? wall.wall().name : concat(wall.wall().name, "_", f);
         writePng(wall.capture(), *options_.screenshotDir / (name + ".png"));
       }
@@ -257,7 +277,8 @@ int App::run() {
         writeParticlesVtp(particles, *options_.dumpParticles);
         log::info("wrote ", particles.size(), " particles to ", options_.dumpParticles->string());
       }
-      if (cluster_) cluster_->drawn(int(i), packet.frame);  // the main thread holds the swap for every rank
+      if (cluster_)
+        cluster_->drawn(int(i), packet.frame);  // the main thread holds the swap for every rank
     });
     walls[i]->start();
   }
@@ -274,8 +295,8 @@ int App::run() {
     stats.frame = main.nextFrame();
     for (const auto& w : walls) {
       const WallStats s = w->stats();
-      stats.walls.push_back({w->name(), s.fps, s.frameMs, s.updateMs, s.renderMs, s.postMs, s.fieldUploadMs,
-                             s.liveParticles, s.capacity});
+      stats.walls.push_back({w->name(), s.fps, s.frameMs, s.updateMs, s.renderMs, s.postMs,
+                             s.fieldUploadMs, s.liveParticles, s.capacity});
     }
     menu->frame(main.nextFrame(), dt, stats);
   };
@@ -284,7 +305,8 @@ int App::run() {
     lastReport = now;
     const WallStats s = walls[0]->stats();
     log::info("frame ", s.frame, lastFrame >= 0 ? concat("/", lastFrame + 1) : std::string(), ": ",
-              s.liveParticles, " particles, ", s.frameMs, " ms per frame on '", walls[0]->name(), "'");
+              s.liveParticles, " particles, ", s.frameMs, " ms per frame on '", walls[0]->name(),
+              "'");
   };
   if (cluster_) {
     // Cluster mode: rank 0 makes and broadcasts each packet, the other ranks
@@ -298,13 +320,16 @@ int App::run() {
       const float dt = std::chrono::duration<float>(now - lastTick).count();
       lastTick = now;
       int stop = interrupted ? ClusterLink::kInterrupted : 0;
-      if (cluster_->root() && menu && menu->scriptCloses(main.nextFrame())) stop |= ClusterLink::kClosed;
+      if (cluster_->root() && menu && menu->scriptCloses(main.nextFrame()))
+        stop |= ClusterLink::kClosed;
       if (glfw) {
         GlfwLibrary::pollEvents();
         bool close = menu && menu->operatorWindowClosed();
-        for (GlfwWindow* w : windows) close = close || w->shouldClose();
+        for (GlfwWindow* w : windows)
+          close = close || w->shouldClose();
         if (close) stop |= ClusterLink::kClosed;
-        if (cluster_->root()) input.update(dt, desktopHead, navigation, menu && menu->wantsMouse(), false);
+        if (cluster_->root())
+          input.update(dt, desktopHead, navigation, menu && menu->wantsMouse(), false);
       }
       std::shared_ptr<const FramePacket> packet;
       if (!cluster_->root()) {
@@ -321,7 +346,8 @@ int App::run() {
       if (packet) channel.publish(packet);
       if (frames > 0) {
         const ClusterLink::Verdict verdict = cluster_->swap(std::uint32_t(frames - 1), stop, [&] {
-          return std::any_of(walls.begin(), walls.end(), [](const auto& w) { return w->error().has_value(); });
+          return std::any_of(walls.begin(), walls.end(),
+                             [](const auto& w) { return w->error().has_value(); });
         });
         failed = failed || verdict.failed;
         if (!verdict.go) break;
@@ -333,45 +359,53 @@ int App::run() {
     }
     barrier.arrive_and_drop();  // walls finish what was published without the main thread
   } else
-  while (!interrupted && (lastFrame < 0 || frames <= lastFrame)) {
-    const auto now = std::chrono::steady_clock::now();
-    const float dt = std::chrono::duration<float>(now - lastTick).count();
-    lastTick = now;
-    if (glfw) {
-      GlfwLibrary::pollEvents();
-      if (menu && menu->scriptCloses(main.nextFrame()) && !windows.empty()) windows.front()->requestClose();
-      bool close = menu && menu->operatorWindowClosed();
-      for (GlfwWindow* w : windows) close = close || w->shouldClose();
-      if (close) break;
-      input.update(dt, desktopHead, navigation, menu && menu->wantsMouse(), false);
+    while (!interrupted && (lastFrame < 0 || frames <= lastFrame)) {
+      const auto now = std::chrono::steady_clock::now();
+      const float dt = std::chrono::duration<float>(now - lastTick).count();
+      lastTick = now;
+      if (glfw) {
+        GlfwLibrary::pollEvents();
+        if (menu && menu->scriptCloses(main.nextFrame()) && !windows.empty())
+          windows.front()->requestClose();
+        bool close = menu && menu->operatorWindowClosed();
+        for (GlfwWindow* w : windows)
+          close = close || w->shouldClose();
+        if (close) break;
+        input.update(dt, desktopHead, navigation, menu && menu->wantsMouse(), false);
+      }
+      for (const auto& w : walls)
+        failed = failed || w->error().has_value();
+      if (failed) break;
+      if (menu) showMenu(dt);
+      main.setViewer(Viewer{head->pose(main.time()), navigation});
+      if (!channel.publish(std::make_shared<const FramePacket>(main.next()))) break;
+      helicopter.update(main);
+      ++frames;
+      reportProgress(now);
     }
-    for (const auto& w : walls) failed = failed || w->error().has_value();
-    if (failed) break;
-    if (menu) showMenu(dt);
-    main.setViewer(Viewer{head->pose(main.time()), navigation});
-    if (!channel.publish(std::make_shared<const FramePacket>(main.next()))) break;
-    helicopter.update(main);
-    ++frames;
-    reportProgress(now);
-  }
   channel.close();
-  for (auto& w : walls) w->join();
+  for (auto& w : walls)
+    w->join();
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
-  if (interrupted) log::info("interrupted: stopped every wall cleanly");
-  else if (lastFrame < 0 || frames <= lastFrame) log::info("a window closed: stopped every wall cleanly");
+  if (interrupted)
+    log::info("interrupted: stopped every wall cleanly");
+  else if (lastFrame < 0 || frames <= lastFrame)
+    log::info("a window closed: stopped every wall cleanly");
   if (cluster_) cluster_->finish();
   if (options_.hashLog) hashes.write(*options_.hashLog);
 
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  for (const auto& w : walls) failed = failed || w->error().has_value();
-  log::info("stats: ", frames, " frames in ", seconds, " s (", frames / std::max(seconds, 1e-9), " frames/s), ",
-            walls.size(), " wall(s)");
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  for (const auto& w : walls)
+    failed = failed || w->error().has_value();
+  log::info("stats: ", frames, " frames in ", seconds, " s (", frames / std::max(seconds, 1e-9),
+            " frames/s), ", walls.size(), " wall(s)");
   for (const auto& w : walls) {
     const WallStats s = w->stats();
-    log::info("  wall '", w->name(), "': ", s.liveParticles, " live particles at frame ", s.frame, ", last frame ",
-              s.frameMs, " ms; ", s.fieldUploads, " field upload(s), the last ", s.fieldUploadMs, " ms",
-              w->error() ? " FAILED: " + *w->error() : std::string());
+    log::info("  wall '", w->name(), "': ", s.liveParticles, " live particles at frame ", s.frame,
+              ", last frame ", s.frameMs, " ms; ", s.fieldUploads, " field upload(s), the last ",
+              s.fieldUploadMs, " ms", w->error() ? " FAILED: " + *w->error() : std::string());
   }
   if (options_.screenshotDir) log::info("images in ", options_.screenshotDir->string(), "/");
   walls.clear();  // before the windows' library goes

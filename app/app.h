@@ -17,16 +17,18 @@ namespace sandstorm {
 class ClusterLink;
 
 struct AppOptions {
-  std::optional<int> frames;                      // overrides run.frames
+  std::optional<int> frames;  // overrides run.frames
   std::optional<std::filesystem::path> screenshotDir;
-  int screenshotEvery = 0;                        // also every N frames (0: only the last)
+  int screenshotEvery = 0;  // also every N frames (0: only the last)
   std::optional<std::filesystem::path> dumpParticles;
-  std::vector<std::string> sets;                  // "key=value" attribute overrides
-  bool headless = false;                          // force offscreen walls
-  std::optional<std::filesystem::path> hashLog;   // per frame and wall: particle count and buffer hash
-  std::vector<std::string> walls;                 // run only these walls (empty: all)
-  std::optional<std::filesystem::path> record;    // write every change with its frame
-  std::optional<std::filesystem::path> replay;    // apply a recorded session's changes at their frames
+  std::vector<std::string> sets;  // "key=value" attribute overrides
+  bool headless = false;          // force offscreen walls
+  std::optional<std::filesystem::path>
+      hashLog;                     // per frame and wall: particle count and buffer hash
+  std::vector<std::string> walls;  // run only these walls (empty: all)
+  std::optional<std::filesystem::path> record;  // write every change with its frame
+  std::optional<std::filesystem::path>
+      replay;  // apply a recorded session's changes at their frames
   std::optional<std::filesystem::path> menuScript;  // scripted clicks on the menu (tests, demos)
   bool noMenu = false;
 };

@@ -12,13 +12,16 @@ namespace {
 
 std::atomic<double> scrolled{0.0};
 
-void onScroll(GLFWwindow*, double, double dy) { scrolled = scrolled + dy; }
+void onScroll(GLFWwindow*, double, double dy) {
+  scrolled = scrolled + dy;
+}
 
 }  // namespace
 
 DesktopInput::DesktopInput(std::vector<GLFWwindow*> windows) : windows_(std::move(windows)) {
   // Made before the menu's ImGui session, whose GLFW backend then chains to these.
-  for (GLFWwindow* w : windows_) glfwSetScrollCallback(w, onScroll);
+  for (GLFWwindow* w : windows_)
+    glfwSetScrollCallback(w, onScroll);
 }
 
 DesktopInput::~DesktopInput() = default;
@@ -30,12 +33,18 @@ void DesktopInput::update(float dt, DesktopHead* head, Navigation& navigation, b
     if (glfwGetWindowAttrib(w, GLFW_FOCUSED)) focused = w;
   if (!focused) return;
   if (head && !menuHasKeyboard) {
-    const auto down = [&](int a, int b) { return glfwGetKey(focused, a) == GLFW_PRESS || glfwGetKey(focused, b) == GLFW_PRESS; };
+    const auto down = [&](int a, int b) {
+      return glfwGetKey(focused, a) == GLFW_PRESS || glfwGetKey(focused, b) == GLFW_PRESS;
+    };
     const float step = 1.5f * dt, turn = 1.2f * dt;
-    head->move((down(GLFW_KEY_W, GLFW_KEY_UP) ? step : 0.0f) - (down(GLFW_KEY_S, GLFW_KEY_DOWN) ? step : 0.0f),
-               (down(GLFW_KEY_D, GLFW_KEY_RIGHT) ? step : 0.0f) - (down(GLFW_KEY_A, GLFW_KEY_LEFT) ? step : 0.0f),
-               (down(GLFW_KEY_R, GLFW_KEY_R) ? step : 0.0f) - (down(GLFW_KEY_F, GLFW_KEY_F) ? step : 0.0f));
-    head->turn((down(GLFW_KEY_Q, GLFW_KEY_Q) ? turn : 0.0f) - (down(GLFW_KEY_E, GLFW_KEY_E) ? turn : 0.0f));
+    head->move((down(GLFW_KEY_W, GLFW_KEY_UP) ? step : 0.0f) -
+                   (down(GLFW_KEY_S, GLFW_KEY_DOWN) ? step : 0.0f),
+               (down(GLFW_KEY_D, GLFW_KEY_RIGHT) ? step : 0.0f) -
+                   (down(GLFW_KEY_A, GLFW_KEY_LEFT) ? step : 0.0f),
+               (down(GLFW_KEY_R, GLFW_KEY_R) ? step : 0.0f) -
+                   (down(GLFW_KEY_F, GLFW_KEY_F) ? step : 0.0f));
+    head->turn((down(GLFW_KEY_Q, GLFW_KEY_Q) ? turn : 0.0f) -
+               (down(GLFW_KEY_E, GLFW_KEY_E) ? turn : 0.0f));
   }
   double x = 0.0, y = 0.0;
   glfwGetCursorPos(focused, &x, &y);
@@ -48,7 +57,8 @@ void DesktopInput::update(float dt, DesktopHead* head, Navigation& navigation, b
   }
   lastX_ = x;
   const double wheel = scrolled.exchange(0.0);
-  if (wheel != 0.0 && !menuHasMouse) navigation.scale = std::clamp(navigation.scale * float(std::pow(1.1, wheel)), 0.01f, 100.0f);
+  if (wheel != 0.0 && !menuHasMouse)
+    navigation.scale = std::clamp(navigation.scale * float(std::pow(1.1, wheel)), 0.01f, 100.0f);
 }
 
 }  // namespace sandstorm

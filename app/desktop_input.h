@@ -19,7 +19,8 @@ class DesktopInput {
   explicit DesktopInput(std::vector<GLFWwindow*> windows);
   ~DesktopInput();
   // `head` may be null (a fixed or scripted head is not moved by keys).
-  void update(float dt, DesktopHead* head, Navigation& navigation, bool menuHasMouse, bool menuHasKeyboard);
+  void update(float dt, DesktopHead* head, Navigation& navigation, bool menuHasMouse,
+              bool menuHasKeyboard);
 
  private:
   std::vector<GLFWwindow*> windows_;

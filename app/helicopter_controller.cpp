@@ -10,12 +10,14 @@ namespace sandstorm {
 namespace {
 
 bool same(const HelicopterSettings& a, const HelicopterSettings& b) {
-  return a.enabled == b.enabled && a.x == b.x && a.y == b.y && a.altitude == b.altitude && a.throttle == b.throttle;
+  return a.enabled == b.enabled && a.x == b.x && a.y == b.y && a.altitude == b.altitude &&
+         a.throttle == b.throttle;
 }
 
 }  // namespace
 
-HelicopterController::HelicopterController(std::shared_ptr<const HeightMap> terrain, HelicopterModel model)
+HelicopterController::HelicopterController(std::shared_ptr<const HeightMap> terrain,
+                                           HelicopterModel model)
     : terrain_(std::move(terrain)), model_(model) {}
 
 void HelicopterController::update(MainContext& main) {
@@ -61,8 +63,8 @@ void HelicopterController::update(MainContext& main) {
   main.set("emitter.0.rate", e.rate);
   main.set("emitter.0.lifetime", e.lifetime);
   main.set("sim.maximum", e.maximum);
-  log::info("helicopter: throttle ", s.throttle, ", ", s.altitude, " m up: thrust ", e.thrust, " N, v_h ",
-            vh, " m/s, dust ", e.rate, "/s (ground effect ", e.groundEffect, ")");
+  log::info("helicopter: throttle ", s.throttle, ", ", s.altitude, " m up: thrust ", e.thrust,
+            " N, v_h ", vh, " m/s, dust ", e.rate, "/s (ground effect ", e.groundEffect, ")");
 }
 
 }  // namespace sandstorm

@@ -11,41 +11,55 @@
 
 int main(int argc, char** argv) {
   using namespace sandstorm;
-  CLI::App cli{"Sandstorm: GPU particles carried through vector fields, for CAVEs and multi-window walls"};
+  CLI::App cli{
+      "Sandstorm: GPU particles carried through vector fields, for CAVEs and multi-window walls"};
   std::string configPath = "config/downdraft.toml";
   AppOptions options;
   std::string screenshotDir, dumpPath, logLevel;
   int frames = -1;
   cli.add_option("-c,--config", configPath, "Configuration file (TOML)")->check(CLI::ExistingFile);
-  cli.add_option("-n,--frames", frames, "Frames to run, then exit (0: until a window closes)")->check(CLI::NonNegativeNumber);
-  cli.add_option("--screenshot", screenshotDir, "Write each wall's last frame as DIR/<wall>.png");
-  cli.add_option("--screenshot-every", options.screenshotEvery, "Also write DIR/<wall>_<frame>.png every N frames")
+  cli.add_option("-n,--frames", frames, "Frames to run, then exit (0: until a window closes)")
       ->check(CLI::NonNegativeNumber);
-  cli.add_option("--dump-particles", dumpPath, "Write the last frame's particles as VTK PolyData (.vtp)");
-  cli.add_option("--set", options.sets, "Set an attribute, e.g. --set emitter.0.rate=50000 (repeatable)");
+  cli.add_option("--screenshot", screenshotDir, "Write each wall's last frame as DIR/<wall>.png");
+  cli.add_option("--screenshot-every", options.screenshotEvery,
+                 "Also write DIR/<wall>_<frame>.png every N frames")
+      ->check(CLI::NonNegativeNumber);
+  cli.add_option("--dump-particles", dumpPath,
+                 "Write the last frame's particles as VTK PolyData (.vtp)");
+  cli.add_option("--set", options.sets,
+                 "Set an attribute, e.g. --set emitter.0.rate=50000 (repeatable)");
   std::string hashLog;
-  cli.add_option("--hash-log", hashLog, "Write each frame's particle count and buffer hash per wall to FILE");
-  cli.add_option("--walls", options.walls, "Run only these walls of the configuration (by name)")->delimiter(',');
+  cli.add_option("--hash-log", hashLog,
+                 "Write each frame's particle count and buffer hash per wall to FILE");
+  cli.add_option("--walls", options.walls, "Run only these walls of the configuration (by name)")
+      ->delimiter(',');
   std::string record, replay;
   cli.add_option("--record", record, "Record every attribute change with its frame to FILE");
-  cli.add_option("--replay", replay, "Replay a recorded session: its changes at their frames")->check(CLI::ExistingFile);
+  cli.add_option("--replay", replay, "Replay a recorded session: its changes at their frames")
+      ->check(CLI::ExistingFile);
   std::string menuScript;
-  cli.add_option("--menu-script", menuScript, "Scripted clicks on the menu panel (see app/menu/menu_script.h)")
+  cli.add_option("--menu-script", menuScript,
+                 "Scripted clicks on the menu panel (see app/menu/menu_script.h)")
       ->check(CLI::ExistingFile);
   cli.add_flag("--no-menu", options.noMenu, "Show no menu panel");
-  cli.add_flag("--headless", options.headless, "Render every wall offscreen (EGL), even with a display");
+  cli.add_flag("--headless", options.headless,
+               "Render every wall offscreen (EGL), even with a display");
   bool cluster = false;
   ClusterOptions clusterOptions;
-  cli.add_flag("--cluster", cluster, "Cluster mode (MPI), as when started by mpirun (which is detected)");
-  cli.add_flag("--cluster-stats", clusterOptions.stats, "Cluster mode: log broadcast bytes and times per frame at the end");
+  cli.add_flag("--cluster", cluster,
+               "Cluster mode (MPI), as when started by mpirun (which is detected)");
+  cli.add_flag("--cluster-stats", clusterOptions.stats,
+               "Cluster mode: log broadcast bytes and times per frame at the end");
   cli.add_option("--cluster-bench", clusterOptions.benchFrames,
-                 "Cluster mode: N frames of packets and swap barriers only (no walls); use with --cluster-stats")
+                 "Cluster mode: N frames of packets and swap barriers only (no walls); use with "
+                 "--cluster-stats")
       ->check(CLI::NonNegativeNumber);
   // Fault injection for the cluster tests; hidden from --help.
   cli.add_option("--debug-rank", clusterOptions.debugRank)->group("");
   cli.add_option("--debug-die-at-frame", clusterOptions.dieAtFrame)->group("");
   cli.add_option("--debug-hang-at-frame", clusterOptions.hangAtFrame)->group("");
-  cli.add_option("--log-level", logLevel, "error, warn, info or debug")->check(CLI::IsMember({"error", "warn", "info", "debug"}));
+  cli.add_option("--log-level", logLevel, "error, warn, info or debug")
+      ->check(CLI::IsMember({"error", "warn", "info", "debug"}));
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -73,7 +87,9 @@ int main(int argc, char** argv) {
   if (cluster || launchedByMpirun()) return runCluster(configPath, options, clusterOptions);
 #else
   if (cluster) {
-    log::error("--cluster: this sandstorm was built without MPI (scripts/setup installs Open MPI; rebuild)");
+    log::error(
+        "--cluster: this sandstorm was built without MPI (scripts/setup installs Open MPI; "
+        "rebuild)");
     return 1;
   }
 #endif

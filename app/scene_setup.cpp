@@ -27,9 +27,11 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
     FieldParams params(spec.params.begin(), spec.params.end());
     const auto analytic = makeAnalyticField(spec.name, params);
     auto field = std::make_shared<VectorField>(bake(*analytic, spec.bounds, spec.dims));
-    out.description = concat("analytic '", spec.name, "' baked to ", spec.dims.x, "x", spec.dims.y, "x", spec.dims.z);
+    out.description = concat("analytic '", spec.name, "' baked to ", spec.dims.x, "x", spec.dims.y,
+                             "x", spec.dims.z);
     out.update = FieldUpdate{.field = std::move(field), .placement = spec.placement};
-    if (auto equation = fieldEquation(*analytic)) out.update.equation = std::make_shared<FieldEquation>(*equation);
+    if (auto equation = fieldEquation(*analytic))
+      out.update.equation = std::make_shared<FieldEquation>(*equation);
   } else {
     const std::filesystem::path path = resolve(spec.source, baseDir);
     LoadOptions options;
@@ -45,39 +47,47 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
       }
       out.timeline = FieldTimeline(std::move(times), std::move(frames));
       out.update = FieldUpdate{.field = out.timeline->frame(0), .placement = spec.placement};
-      out.description = concat(path.string(), ": ", sequence.size(), " frames over ", sequence.endTime() - sequence.startTime(), " s");
+      out.description = concat(path.string(), ": ", sequence.size(), " frames over ",
+                               sequence.endTime() - sequence.startTime(), " s");
     } else {
       LoadReport report;
       auto field = std::make_shared<VectorField>(loadField(path, options, &report));
       out.description = concat(path.string(), " (", report.format, ", '", report.arrayName, "')");
-      for (const std::string& note : report.notes) log::info(path.string(), ": ", note);
-      if (report.nonFinite > 0) log::warn(path.string(), ": ", report.nonFinite, " NaN or Inf vectors set to zero");
+      for (const std::string& note : report.notes)
+        log::info(path.string(), ": ", note);
+      if (report.nonFinite > 0)
+        log::warn(path.string(), ": ", report.nonFinite, " NaN or Inf vectors set to zero");
       out.update = FieldUpdate{.field = std::move(field), .placement = spec.placement};
     }
   }
   const VectorField& f = *out.update.field;
-  log::info("field: ", out.description, ", ", f.dims().x, "x", f.dims().y, "x", f.dims().z, " over [", f.bounds().min.x,
-            ",", f.bounds().min.y, ",", f.bounds().min.z, "]..[", f.bounds().max.x, ",", f.bounds().max.y, ",",
-            f.bounds().max.z, "] m, max speed ", f.maxMagnitude(), " m/s");
+  log::info("field: ", out.description, ", ", f.dims().x, "x", f.dims().y, "x", f.dims().z,
+            " over [", f.bounds().min.x, ",", f.bounds().min.y, ",", f.bounds().min.z, "]..[",
+            f.bounds().max.x, ",", f.bounds().max.y, ",", f.bounds().max.z, "] m, max speed ",
+            f.maxMagnitude(), " m/s");
   return out;
 }
 
 void useField(MainContext& main, const FieldSource& source) {
-  if (source.timeline) main.setFieldTimeline(*source.timeline, source.update.placement);
-  else main.setField(source.update);
+  if (source.timeline)
+    main.setFieldTimeline(*source.timeline, source.update.placement);
+  else
+    main.setField(source.update);
 }
 
-std::vector<std::string> fieldChoices(const std::filesystem::path& dataDir, const std::filesystem::path& base) {
+std::vector<std::string> fieldChoices(const std::filesystem::path& dataDir,
+                                      const std::filesystem::path& base) {
   std::vector<std::string> choices;
-  for (const AnalyticFieldSpec& spec : analyticFieldSpecs()) choices.push_back("analytic:" + spec.name);
+  for (const AnalyticFieldSpec& spec : analyticFieldSpecs())
+    choices.push_back("analytic:" + spec.name);
   std::error_code ec;
   std::vector<std::string> files;
   for (auto it = std::filesystem::recursive_directory_iterator(dataDir, ec);
        !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
     const std::string ext = it->path().extension().string();
     const bool inSeries = it->path().parent_path().filename() == "series" && ext != ".pvd";
-    if (!inSeries && (ext == ".vti" || ext == ".vtk" || ext == ".vtr" || ext == ".vts" || ext == ".vdb" ||
-                      ext == ".fga" || ext == ".vf" || ext == ".pvd"))
+    if (!inSeries && (ext == ".vti" || ext == ".vtk" || ext == ".vtr" || ext == ".vts" ||
+                      ext == ".vdb" || ext == ".fga" || ext == ".vf" || ext == ".pvd"))
       files.push_back(std::filesystem::relative(it->path(), base).string());
   }
   std::sort(files.begin(), files.end());
@@ -98,14 +108,18 @@ FieldSpec fieldSpecFor(const std::string& choice, const FieldSpec& base) {
   return spec;
 }
 
-std::shared_ptr<const HeightMap> makeTerrain(const SceneSpec& spec, const std::filesystem::path& baseDir) {
-  if (spec.terrain == "flat") return std::make_shared<HeightMap>(HeightMap::flat(spec.groundHeight));
+std::shared_ptr<const HeightMap> makeTerrain(const SceneSpec& spec,
+                                             const std::filesystem::path& baseDir) {
+  if (spec.terrain == "flat")
+    return std::make_shared<HeightMap>(HeightMap::flat(spec.groundHeight));
   if (!spec.terrain.ends_with(".pgm"))
-    throw Error(concat("scene.terrain '", spec.terrain, "': expected \"flat\" or a 16-bit height map (.pgm)"));
-  auto map = std::make_shared<HeightMap>(readHeightMapPgm(resolve(spec.terrain, baseDir), spec.terrainBounds));
+    throw Error(concat("scene.terrain '", spec.terrain,
+                       "': expected \"flat\" or a 16-bit height map (.pgm)"));
+  auto map = std::make_shared<HeightMap>(
+      readHeightMapPgm(resolve(spec.terrain, baseDir), spec.terrainBounds));
   log::info("terrain: ", spec.terrain, ", ", map->dims().x, "x", map->dims().y, " over ",
-            spec.terrainBounds.max.x - spec.terrainBounds.min.x, " m, heights ", map->minHeight(), "..",
-            map->maxHeight(), " m");
+            spec.terrainBounds.max.x - spec.terrainBounds.min.x, " m, heights ", map->minHeight(),
+            "..", map->maxHeight(), " m");
   return map;
 }
 

@@ -17,8 +17,9 @@
 namespace sandstorm {
 
 struct FieldSource {
-  FieldUpdate update;                    // a static field
-  std::optional<FieldTimeline> timeline; // or a time-varying one (update then holds its first frame)
+  FieldUpdate update;  // a static field
+  std::optional<FieldTimeline>
+      timeline;  // or a time-varying one (update then holds its first frame)
   std::string description;
 };
 
@@ -32,10 +33,12 @@ void useField(class MainContext& main, const FieldSource& source);
 // The field files under data/ and the analytic fields, as the menu offers them
 // ("analytic:tornado", "data/tornado.vti", ...).
 // Files are named relative to `base`.
-std::vector<std::string> fieldChoices(const std::filesystem::path& dataDir, const std::filesystem::path& base);
+std::vector<std::string> fieldChoices(const std::filesystem::path& dataDir,
+                                      const std::filesystem::path& base);
 // A menu choice turned into a field spec (placement and resolution from `base`).
 FieldSpec fieldSpecFor(const std::string& choice, const FieldSpec& base);
 
-std::shared_ptr<const HeightMap> makeTerrain(const SceneSpec& spec, const std::filesystem::path& baseDir);
+std::shared_ptr<const HeightMap> makeTerrain(const SceneSpec& spec,
+                                             const std::filesystem::path& baseDir);
 
 }  // namespace sandstorm

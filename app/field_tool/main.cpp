@@ -16,9 +16,9 @@
 
 #include <CLI/CLI.hpp>
 
-#include "core/field/height_map_io.h"
 #include "core/field/analytic_field.h"
 #include "core/field/analytic_field_factory.h"
+#include "core/field/height_map_io.h"
 #include "core/io/field_loader.h"
 #include "core/io/field_statistics.h"
 #include "core/io/field_writer.h"
@@ -172,7 +172,8 @@ int main(int argc, char** argv) {
   auto* terrainCmd = app.add_subcommand("terrain", "make a desert dune height map (16-bit PGM)");
   terrainCmd->add_option("OUT", tout, "output file (.pgm)")->required();
   terrainCmd->add_option("--size", tsize, "samples per side")->check(CLI::Range(2, 8193));
-  terrainCmd->add_option("--extent", textent, "metres per side (for the dunes' wavelength)")->check(CLI::PositiveNumber);
+  terrainCmd->add_option("--extent", textent, "metres per side (for the dunes' wavelength)")
+      ->check(CLI::PositiveNumber);
   terrainCmd->add_option("--seed", tseed, "noise seed");
 
   try {

@@ -23,7 +23,8 @@ ImGuiSession::ImGuiSession(GLFWwindow* window, glm::ivec2 size) : window_(window
   unsigned char* pixels = nullptr;
   int w = 0, h = 0;
   io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);
-  font_ = UiFont{w, h, std::vector<std::uint8_t>(pixels, pixels + std::size_t(w) * std::size_t(h) * 4)};
+  font_ =
+      UiFont{w, h, std::vector<std::uint8_t>(pixels, pixels + std::size_t(w) * std::size_t(h) * 4)};
   io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(std::intptr_t(1)));
   if (window_) ImGui_ImplGlfw_InitForOther(window_, true);
 }
@@ -63,13 +64,17 @@ std::shared_ptr<const UiDrawData> ImGuiSession::end() {
     const ImDrawList* list = dd->CmdLists[l];
     const std::size_t vertexBase = out->vertices.size(), indexBase = out->indices.size();
     out->vertices.resize(vertexBase + std::size_t(list->VtxBuffer.Size));
-    std::memcpy(out->vertices.data() + vertexBase, list->VtxBuffer.Data, std::size_t(list->VtxBuffer.Size) * sizeof(UiVertex));
-    out->indices.insert(out->indices.end(), list->IdxBuffer.Data, list->IdxBuffer.Data + list->IdxBuffer.Size);
+    std::memcpy(out->vertices.data() + vertexBase, list->VtxBuffer.Data,
+                std::size_t(list->VtxBuffer.Size) * sizeof(UiVertex));
+    out->indices.insert(out->indices.end(), list->IdxBuffer.Data,
+                        list->IdxBuffer.Data + list->IdxBuffer.Size);
     for (const ImDrawCmd& cmd : list->CmdBuffer) {
       if (cmd.UserCallback) continue;
-      out->commands.push_back(UiCommand{{cmd.ClipRect.x, cmd.ClipRect.y, cmd.ClipRect.z, cmd.ClipRect.w},
-                                        cmd.ElemCount, std::uint32_t(indexBase + cmd.IdxOffset),
-                                        std::int32_t(vertexBase + cmd.VtxOffset)});
+      out->commands.push_back(
+          UiCommand{{cmd.ClipRect.x, cmd.ClipRect.y, cmd.ClipRect.z, cmd.ClipRect.w},
+                    cmd.ElemCount,
+                    std::uint32_t(indexBase + cmd.IdxOffset),
+                    std::int32_t(vertexBase + cmd.VtxOffset)});
     }
   }
   return out;

@@ -2,8 +2,9 @@
 
 namespace sandstorm {
 
-MenuHost::MenuHost(MainContext& main, std::unique_ptr<GlfwWindow> operatorWindow, GLFWwindow* wallWindow,
-                   glm::ivec2 wallSize, std::vector<std::string> fieldChoices, MenuPanel::FieldLoader loader,
+MenuHost::MenuHost(MainContext& main, std::unique_ptr<GlfwWindow> operatorWindow,
+                   GLFWwindow* wallWindow, glm::ivec2 wallSize,
+                   std::vector<std::string> fieldChoices, MenuPanel::FieldLoader loader,
                    std::optional<MenuScript> script)
     : operatorWindow_(std::move(operatorWindow)),
       session_(operatorWindow_ ? operatorWindow_->handle() : wallWindow, wallSize),
@@ -44,6 +45,8 @@ std::shared_ptr<const UiDrawData> MenuHost::latest() const {
   return operatorWindow_ ? nullptr : latest_;
 }
 
-bool MenuHost::operatorWindowClosed() const { return operatorWindow_ && operatorWindow_->shouldClose(); }
+bool MenuHost::operatorWindowClosed() const {
+  return operatorWindow_ && operatorWindow_->shouldClose();
+}
 
 }  // namespace sandstorm

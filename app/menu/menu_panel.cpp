@@ -11,7 +11,9 @@
 namespace sandstorm {
 namespace {
 
-std::string labelOf(const std::string& key) { return key.substr(key.rfind('.') + 1); }
+std::string labelOf(const std::string& key) {
+  return key.substr(key.rfind('.') + 1);
+}
 
 }  // namespace
 
@@ -39,22 +41,29 @@ void MenuPanel::build(const MenuStats& stats) {
   const ParticleState state = main_.pendingState();
   const ImVec2 display = ImGui::GetIO().DisplaySize;
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_Always);
-  ImGui::SetNextWindowSizeConstraints(ImVec2(360, 0), ImVec2(380, std::max(display.y - 16.0f, 100.0f)));
-  ImGui::Begin("Sandstorm", nullptr,
-               ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::SetNextWindowSizeConstraints(ImVec2(360, 0),
+                                      ImVec2(380, std::max(display.y - 16.0f, 100.0f)));
+  ImGui::Begin(
+      "Sandstorm", nullptr,
+      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_AlwaysAutoResize);
   runControls(state);
   statsSection(stats, state);
-  if (state.helicopter.enabled && ImGui::CollapsingHeader("Helicopter", ImGuiTreeNodeFlags_DefaultOpen)) {
-    for (const char* key : {"helicopter.throttle", "helicopter.altitude", "helicopter.x", "helicopter.y"})
+  if (state.helicopter.enabled &&
+      ImGui::CollapsingHeader("Helicopter", ImGuiTreeNodeFlags_DefaultOpen)) {
+    for (const char* key :
+         {"helicopter.throttle", "helicopter.altitude", "helicopter.x", "helicopter.y"})
       attributeWidget(AttributeTable::instance().lookup(key), key, state);
   }
   // The thesis's Table 5.1 first: the attributes an operator reaches for.
   if (ImGui::CollapsingHeader("Table of dynamic attributes", ImGuiTreeNodeFlags_DefaultOpen)) {
     const AttributeTable& table = AttributeTable::instance();
-    for (const char* key : {"render.size", "emitter.0.lifetime", "emitter.0.width", "emitter.0.depth", "sim.maximum",
-                            "emitter.0.position", "emitter.0.rate"})
-      if (std::string(key).starts_with("emitter.") && state.emitters.empty()) continue;
-      else attributeWidget(table.lookup(key), key, state);
+    for (const char* key :
+         {"render.size", "emitter.0.lifetime", "emitter.0.width", "emitter.0.depth", "sim.maximum",
+          "emitter.0.position", "emitter.0.rate"})
+      if (std::string(key).starts_with("emitter.") && state.emitters.empty())
+        continue;
+      else
+        attributeWidget(table.lookup(key), key, state);
   }
   if (ImGui::CollapsingHeader("System")) {
     for (const AttributeInfo& info : AttributeTable::instance().entries())
@@ -76,7 +85,8 @@ void MenuPanel::build(const MenuStats& stats) {
 }
 
 void MenuPanel::runControls(const ParticleState& state) {
-  if (ImGui::Button(state.sim.emitting ? "Stop" : "Start")) apply("sim.emitting", !state.sim.emitting);
+  if (ImGui::Button(state.sim.emitting ? "Stop" : "Start"))
+    apply("sim.emitting", !state.sim.emitting);
   remember("button:start");
   ImGui::SameLine();
   if (ImGui::Button(state.sim.paused ? "Resume" : "Pause")) apply("sim.paused", !state.sim.paused);
@@ -93,7 +103,8 @@ void MenuPanel::statsSection(const MenuStats& stats, const ParticleState& state)
   if (!ImGui::CollapsingHeader("Statistics", ImGuiTreeNodeFlags_DefaultOpen)) return;
   ImGui::Text("frame %u", stats.frame);
   if (ImGui::BeginTable("walls", 7, ImGuiTableFlags_Borders | ImGuiTableFlags_SizingFixedFit)) {
-    for (const char* h : {"wall", "fps", "frame ms", "update", "render", "post", "field"}) ImGui::TableSetupColumn(h);
+    for (const char* h : {"wall", "fps", "frame ms", "update", "render", "post", "field"})
+      ImGui::TableSetupColumn(h);
     ImGui::TableHeadersRow();
     for (const MenuWallStats& w : stats.walls) {
       ImGui::TableNextRow();
@@ -111,8 +122,8 @@ void MenuPanel::statsSection(const MenuStats& stats, const ParticleState& state)
   if (!stats.walls.empty()) {
     const MenuWallStats& w = stats.walls.front();
     const float fraction = state.sim.maximum > 0 ? float(w.live) / float(state.sim.maximum) : 0.0f;
-    const std::string label = std::to_string(w.live) + " / " + std::to_string(state.sim.maximum) + " (buffer " +
-                              std::to_string(w.capacity) + ")";
+    const std::string label = std::to_string(w.live) + " / " + std::to_string(state.sim.maximum) +
+                              " (buffer " + std::to_string(w.capacity) + ")";
     ImGui::ProgressBar(std::min(fraction, 1.0f), ImVec2(-1, 0), label.c_str());
   }
 }
@@ -122,7 +133,8 @@ void MenuPanel::emitterSection(const ParticleState& state) {
   const int count = int(state.emitters.size());
   selectedEmitter_ = std::clamp(selectedEmitter_, 0, std::max(count - 1, 0));
   for (int i = 0; i < count; ++i) {
-    const std::string shape = std::get<std::string>(AttributeTable::instance().get(state, "emitter." + std::to_string(i) + ".shape"));
+    const std::string shape = std::get<std::string>(
+        AttributeTable::instance().get(state, "emitter." + std::to_string(i) + ".shape"));
     const std::string label = "emitter " + std::to_string(i) + " (" + shape + ")";
     if (ImGui::Selectable(label.c_str(), selectedEmitter_ == i)) selectedEmitter_ = i;
     remember("emitter:" + std::to_string(i));
@@ -158,7 +170,8 @@ void MenuPanel::fieldSection() {
   selectedField_ = std::clamp(selectedField_, 0, int(fieldChoices_.size()) - 1);
   if (ImGui::BeginCombo("source", fieldChoices_[std::size_t(selectedField_)].c_str())) {
     for (int i = 0; i < int(fieldChoices_.size()); ++i)
-      if (ImGui::Selectable(fieldChoices_[std::size_t(i)].c_str(), i == selectedField_)) selectedField_ = i;
+      if (ImGui::Selectable(fieldChoices_[std::size_t(i)].c_str(), i == selectedField_))
+        selectedField_ = i;
     ImGui::EndCombo();
   }
   remember("field:source");
@@ -173,9 +186,11 @@ void MenuPanel::fieldSection() {
   remember("button:load-field");
 }
 
-void MenuPanel::attributeWidget(const AttributeInfo& info, const std::string& key, const ParticleState& state) {
+void MenuPanel::attributeWidget(const AttributeInfo& info, const std::string& key,
+                                const ParticleState& state) {
   const AttributeValue value = AttributeTable::instance().get(state, key);
-  const std::string label = labelOf(key) + (info.unit.empty() || info.unit == "rgb" ? "" : " (" + info.unit + ")");
+  const std::string label =
+      labelOf(key) + (info.unit.empty() || info.unit == "rgb" ? "" : " (" + info.unit + ")");
   ImGui::PushID(key.c_str());
   switch (info.type) {
     case AttributeType::Bool: {
@@ -194,14 +209,16 @@ void MenuPanel::attributeWidget(const AttributeInfo& info, const std::string& ke
       float v = std::get<float>(value);
       const bool wide = info.max - info.min > 100.0f;
       const float hi = wide ? std::min(info.max, std::max(1e5f, 10.0f * std::abs(v))) : info.max;
-      if (ImGui::SliderFloat(label.c_str(), &v, info.min, hi, "%.4g", wide ? ImGuiSliderFlags_Logarithmic : 0))
+      if (ImGui::SliderFloat(label.c_str(), &v, info.min, hi, "%.4g",
+                             wide ? ImGuiSliderFlags_Logarithmic : 0))
         apply(key, v);
       break;
     }
     case AttributeType::Vec3: {
       glm::vec3 v = std::get<glm::vec3>(value);
-      const bool changed = info.unit == "rgb" ? ImGui::ColorEdit3(label.c_str(), &v.x)
-                                              : ImGui::DragFloat3(label.c_str(), &v.x, 0.01f, info.min, info.max);
+      const bool changed = info.unit == "rgb"
+                               ? ImGui::ColorEdit3(label.c_str(), &v.x)
+                               : ImGui::DragFloat3(label.c_str(), &v.x, 0.01f, info.min, info.max);
       if (changed) apply(key, v);
       break;
     }

@@ -47,7 +47,8 @@ class MenuPanel {
   const std::string& lastMessage() const { return message_; }
 
  private:
-  void attributeWidget(const AttributeInfo& info, const std::string& key, const ParticleState& state);
+  void attributeWidget(const AttributeInfo& info, const std::string& key,
+                       const ParticleState& state);
   void runControls(const ParticleState& state);
   void emitterSection(const ParticleState& state);
   void fieldSection();

@@ -27,7 +27,8 @@ MenuScript MenuScript::parse(const std::string& text, const std::string& name) {
     }
     if (!(words >> action) || (action != "click" && action != "close") ||
         (action == "click" && !(words >> c.widget)))
-      throw Error(concat(name, ":", lineNo, ": expected 'FRAME click WIDGET [FRACTION]' or 'FRAME close'"));
+      throw Error(
+          concat(name, ":", lineNo, ": expected 'FRAME click WIDGET [FRACTION]' or 'FRAME close'"));
     if (action == "close") {
       script.clicks_.push_back(c);
       continue;
@@ -39,7 +40,8 @@ MenuScript MenuScript::parse(const std::string& text, const std::string& name) {
         c.across = -1.0f;
       }
       if (!(c.across >= 0.0f && c.across <= 1.0f))
-        throw Error(concat(name, ":", lineNo, ": the fraction across the widget must be in 0..1, got '", f, "'"));
+        throw Error(concat(name, ":", lineNo,
+                           ": the fraction across the widget must be in 0..1, got '", f, "'"));
     }
     script.clicks_.push_back(c);
   }
@@ -65,14 +67,15 @@ void MenuScript::inject(std::uint32_t frame, ImGuiSession& session, const MenuPa
     if (c.widget.empty() || frame < c.frame || frame > c.frame + 2) continue;
     const auto it = panel.rects().find(c.widget);
     if (it == panel.rects().end()) {
-      if (frame == c.frame) log::warn("menu script: no widget '", c.widget, "' on the panel at frame ", frame);
+      if (frame == c.frame)
+        log::warn("menu script: no widget '", c.widget, "' on the panel at frame ", frame);
       continue;
     }
     const MenuPanel::Rect& r = it->second;
     const glm::vec2 at(r.min.x + c.across * (r.max.x - r.min.x), 0.5f * (r.min.y + r.max.y));
     session.injectMouse(at, frame == c.frame + 1);  // hover, press, release
-    log::debug("menu script: frame ", frame, ": mouse at ", at.x, ",", at.y, frame == c.frame + 1 ? " down" : " up",
-               " on ", c.widget);
+    log::debug("menu script: frame ", frame, ": mouse at ", at.x, ",", at.y,
+               frame == c.frame + 1 ? " down" : " up", " on ", c.widget);
   }
 }
 

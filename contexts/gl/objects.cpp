@@ -7,16 +7,36 @@ namespace sandstorm::gl {
 void destroyObject(ObjectKind kind, std::uintptr_t handle) noexcept {
   const GLuint id = GLuint(handle);
   switch (kind) {
-    case ObjectKind::Buffer: glDeleteBuffers(1, &id); break;
-    case ObjectKind::VertexArray: glDeleteVertexArrays(1, &id); break;
-    case ObjectKind::Texture: glDeleteTextures(1, &id); break;
-    case ObjectKind::Framebuffer: glDeleteFramebuffers(1, &id); break;
-    case ObjectKind::Renderbuffer: glDeleteRenderbuffers(1, &id); break;
-    case ObjectKind::TransformFeedback: glDeleteTransformFeedbacks(1, &id); break;
-    case ObjectKind::Query: glDeleteQueries(1, &id); break;
-    case ObjectKind::Program: glDeleteProgram(id); break;
-    case ObjectKind::Shader: glDeleteShader(id); break;
-    case ObjectKind::Sync: glDeleteSync(reinterpret_cast<GLsync>(handle)); break;
+    case ObjectKind::Buffer:
+      glDeleteBuffers(1, &id);
+      break;
+    case ObjectKind::VertexArray:
+      glDeleteVertexArrays(1, &id);
+      break;
+    case ObjectKind::Texture:
+      glDeleteTextures(1, &id);
+      break;
+    case ObjectKind::Framebuffer:
+      glDeleteFramebuffers(1, &id);
+      break;
+    case ObjectKind::Renderbuffer:
+      glDeleteRenderbuffers(1, &id);
+      break;
+    case ObjectKind::TransformFeedback:
+      glDeleteTransformFeedbacks(1, &id);
+      break;
+    case ObjectKind::Query:
+      glDeleteQueries(1, &id);
+      break;
+    case ObjectKind::Program:
+      glDeleteProgram(id);
+      break;
+    case ObjectKind::Shader:
+      glDeleteShader(id);
+      break;
+    case ObjectKind::Sync:
+      glDeleteSync(reinterpret_cast<GLsync>(handle));
+      break;
   }
 }
 
@@ -63,7 +83,8 @@ Query createQuery(std::uint32_t target) {
 }
 
 Sync createFence() {
-  return Sync::wrap(reinterpret_cast<std::uintptr_t>(glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0)));
+  return Sync::wrap(
+      reinterpret_cast<std::uintptr_t>(glFenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0)));
 }
 
 }  // namespace sandstorm::gl

@@ -47,7 +47,8 @@ void expand(std::string_view name, std::vector<std::string>& files, std::ostring
 
 std::string fileMap(const std::vector<std::string>& files) {
   std::string s;
-  for (std::size_t i = 0; i < files.size(); ++i) s += concat("  source ", i, " = ", files[i], "\n");
+  for (std::size_t i = 0; i < files.size(); ++i)
+    s += concat("  source ", i, " = ", files[i], "\n");
   return s;
 }
 
@@ -64,14 +65,16 @@ std::string preprocessShader(std::string_view fileName, const std::vector<std::s
     throw Error(concat("gl::Program: ", fileName, " has no #version line"));
   const std::size_t eol = text.find('\n', version);
   std::string header = text.substr(0, eol + 1);
-  for (const std::string& d : defines) header += "#define " + d + "\n";
+  for (const std::string& d : defines)
+    header += "#define " + d + "\n";
   const int versionLine = int(std::count(text.begin(), text.begin() + long(eol), '\n')) + 1;
   header += concat("#line ", versionLine + 1, " 0\n");
   return header + text.substr(eol + 1);
 }
 
 Program::Program(const ProgramDesc& desc) {
-  for (const std::string& f : desc.files) name_ += (name_.empty() ? "" : "+") + f;
+  for (const std::string& f : desc.files)
+    name_ += (name_.empty() ? "" : "+") + f;
   program_ = ProgramObject::wrap(glCreateProgram());
   std::vector<ShaderObject> shaders;
   for (const std::string& file : desc.files) {
@@ -95,8 +98,10 @@ Program::Program(const ProgramDesc& desc) {
   }
   if (!desc.feedbackVaryings.empty()) {
     std::vector<const char*> names;
-    for (const std::string& v : desc.feedbackVaryings) names.push_back(v.c_str());
-    glTransformFeedbackVaryings(program_.id(), GLsizei(names.size()), names.data(), GL_SEPARATE_ATTRIBS);
+    for (const std::string& v : desc.feedbackVaryings)
+      names.push_back(v.c_str());
+    glTransformFeedbackVaryings(program_.id(), GLsizei(names.size()), names.data(),
+                                GL_SEPARATE_ATTRIBS);
   }
   glLinkProgram(program_.id());
   GLint ok = 0, length = 0;
@@ -107,10 +112,13 @@ Program::Program(const ProgramDesc& desc) {
     glGetProgramInfoLog(program_.id(), length, nullptr, log.data());
     throw Error(concat("gl::Program: linking ", name_, " failed with:\n", log.c_str()));
   }
-  for (const ShaderObject& s : shaders) glDetachShader(program_.id(), s.id());
+  for (const ShaderObject& s : shaders)
+    glDetachShader(program_.id(), s.id());
 }
 
-void Program::use() const { glUseProgram(program_.id()); }
+void Program::use() const {
+  glUseProgram(program_.id());
+}
 
 int Program::uniform(std::string_view name) const {
   const auto it = locations_.find(name);

@@ -24,15 +24,18 @@ void FieldTexture::upload(const VectorField& field) {
     // four (measured on an H200: no faster for the compute update, slower for
     // transform feedback; docs/PERFORMANCE.md).
     const char* format = std::getenv("SANDSTORM_FIELD_FORMAT");
-    const GLenum internal = format && std::string_view(format) == "rgba32f" ? GL_RGBA32F : GL_RGB32F;
+    const GLenum internal =
+        format && std::string_view(format) == "rgba32f" ? GL_RGBA32F : GL_RGB32F;
     glTextureStorage3D(texture_.id(), 1, internal, d.x, d.y, d.z);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
     dims_ = d;
   }
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage3D(texture_.id(), 0, 0, 0, 0, d.x, d.y, d.z, GL_RGB, GL_FLOAT, field.values().data());
-  lastUploadMs_ = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  glTextureSubImage3D(texture_.id(), 0, 0, 0, 0, d.x, d.y, d.z, GL_RGB, GL_FLOAT,
+                      field.values().data());
+  lastUploadMs_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
 void FieldTexture::show(std::shared_ptr<const VectorField> field) {
@@ -41,7 +44,9 @@ void FieldTexture::show(std::shared_ptr<const VectorField> field) {
   holds_ = std::move(field);
 }
 
-void FieldTexture::bind(int unit) const { glBindTextureUnit(GLuint(unit), texture_.id()); }
+void FieldTexture::bind(int unit) const {
+  glBindTextureUnit(GLuint(unit), texture_.id());
+}
 
 void TerrainTexture::upload(const HeightMap& terrain) {
   const glm::ivec2 d = terrain.dims();
@@ -53,6 +58,8 @@ void TerrainTexture::upload(const HeightMap& terrain) {
   glTextureSubImage2D(texture_.id(), 0, 0, 0, d.x, d.y, GL_RED, GL_FLOAT, terrain.heights().data());
 }
 
-void TerrainTexture::bind(int unit) const { glBindTextureUnit(GLuint(unit), texture_.id()); }
+void TerrainTexture::bind(int unit) const {
+  glBindTextureUnit(GLuint(unit), texture_.id());
+}
 
 }  // namespace sandstorm

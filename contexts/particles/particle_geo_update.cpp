@@ -36,14 +36,18 @@ ParticleGeoUpdate::ParticleGeoUpdate(std::size_t capacity)
       updateProgram_(makeProgram("particle_update.vert", "particle_update.geom")),
       emitProgram_(makeProgram("particle_emit.vert", "particle_emit.geom")) {
   if (capacity == 0 || capacity > (std::size_t{1} << 31) / kRecord)
-    throw Error(concat("ParticleGeoUpdate: capacity ", capacity, " is outside 1..", (1u << 31) / kRecord));
-  for (BufferSet& set : sets_) allocate(set, capacity);
+    throw Error(
+        concat("ParticleGeoUpdate: capacity ", capacity, " is outside 1..", (1u << 31) / kRecord));
+  for (BufferSet& set : sets_)
+    allocate(set, capacity);
   glNamedBufferStorage(simBlock_.id(), sizeof(SimBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
   const std::uint32_t zeros[2] = {0, 0};
   glNamedBufferStorage(survivorCounts_.id(), sizeof(zeros), zeros, GL_DYNAMIC_STORAGE_BIT);
   glNamedRenderbufferStorage(dummyColor_.id(), GL_R8, 1, 1);
-  glNamedFramebufferRenderbuffer(dummyTarget_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, dummyColor_.id());
-  for (gl::Query& q : survivorQueries_) q = gl::createQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
+  glNamedFramebufferRenderbuffer(dummyTarget_.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                 dummyColor_.id());
+  for (gl::Query& q : survivorQueries_)
+    q = gl::createQuery(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN);
 }
 
 void ParticleGeoUpdate::allocate(BufferSet& set, std::size_t capacity) {
@@ -54,7 +58,8 @@ void ParticleGeoUpdate::allocate(BufferSet& set, std::size_t capacity) {
   glNamedBufferStorage(set.velocityKind.id(), GLsizeiptr(capacity) * kRecord, nullptr, 0);
   if (glGetError() == GL_OUT_OF_MEMORY)
     throw Error(concat("ParticleGeoUpdate: the GPU has no memory for ", capacity, " particles (",
-                       2 * capacity * kRecord >> 20, " MiB per buffer set); lower sim.maximum or run.capacity_limit"));
+                       2 * capacity * kRecord >> 20,
+                       " MiB per buffer set); lower sim.maximum or run.capacity_limit"));
   for (gl::VertexArray* vao : {&set.all, &set.survivors}) {
     *vao = gl::createVertexArray();
     for (GLuint a = 0; a < 2; ++a) {
@@ -76,13 +81,16 @@ void ParticleGeoUpdate::grow(std::size_t capacity) {
   if (capacity <= capacity_) return;
   const std::size_t count = liveCount();
   std::array<BufferSet, 2> grown;
-  for (BufferSet& set : grown) allocate(set, capacity);
+  for (BufferSet& set : grown)
+    allocate(set, capacity);
   // The live particles keep their order: all of them become the new set's "newborn" range.
   const BufferSet& from = sets_[std::size_t(current_)];
   BufferSet& to = grown[std::size_t(current_)];
   if (count > 0) {
-    glCopyNamedBufferSubData(from.positionLife.id(), to.positionLife.id(), 0, 0, GLsizeiptr(count) * kRecord);
-    glCopyNamedBufferSubData(from.velocityKind.id(), to.velocityKind.id(), 0, 0, GLsizeiptr(count) * kRecord);
+    glCopyNamedBufferSubData(from.positionLife.id(), to.positionLife.id(), 0, 0,
+                             GLsizeiptr(count) * kRecord);
+    glCopyNamedBufferSubData(from.velocityKind.id(), to.velocityKind.id(), 0, 0,
+                             GLsizeiptr(count) * kRecord);
   }
   to.born = std::uint32_t(count);
   sets_ = std::move(grown);
@@ -97,10 +105,12 @@ void ParticleGeoUpdate::grow(std::size_t capacity) {
   }
 }
 
-void ParticleGeoUpdate::setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
+void ParticleGeoUpdate::setField(std::shared_ptr<const VectorField> field,
+                                 const FieldPlacement& placement,
                                  std::shared_ptr<const VectorField> next) {
-  if (field && next && (field->dims() != next->dims() || field->bounds().min != next->bounds().min ||
-                        field->bounds().max != next->bounds().max))
+  if (field && next &&
+      (field->dims() != next->dims() || field->bounds().min != next->bounds().min ||
+       field->bounds().max != next->bounds().max))
     throw Error("ParticleGeoUpdate: a time-varying field's frames must share one grid");
   // A frame already on the GPU is not sent again (a sequence steps A,B -> B,C).
   if (field && field == nextFieldTexture_.holds()) std::swap(fieldTexture_, nextFieldTexture_);
@@ -191,7 +201,8 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
     glTransformFeedbackBufferRange(out.update.id(), 1, out.velocityKind.id(), offset, size);
     (equation ? *updateEquationProgram_ : updateProgram_).use();
     glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, out.update.id());
-    glBeginQueryIndexed(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, 0, survivorQueries_[std::size_t(slot)].id());
+    glBeginQueryIndexed(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, 0,
+                        survivorQueries_[std::size_t(slot)].id());
     glBeginTransformFeedback(GL_POINTS);
     drawSet(in);
     glEndTransformFeedback();
@@ -200,8 +211,8 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
     out.hasSurvivors = true;
     queried_[std::size_t(slot)] = true;
     // The GPU copies the count into survivorCounts_ when the query ends: no wait here.
-    glGetQueryBufferObjectuiv(survivorQueries_[std::size_t(slot)].id(), survivorCounts_.id(), GL_QUERY_RESULT,
-                              GLintptr(1 - current_) * 4);
+    glGetQueryBufferObjectuiv(survivorQueries_[std::size_t(slot)].id(), survivorCounts_.id(),
+                              GL_QUERY_RESULT, GLintptr(1 - current_) * 4);
   } else {
     const std::uint32_t zero = 0;
     glNamedBufferSubData(survivorCounts_.id(), GLintptr(1 - current_) * 4, 4, &zero);
@@ -228,12 +239,14 @@ void ParticleGeoUpdate::drawSet(const BufferSet& set) const {
   glBindVertexArray(0);
 }
 
-void ParticleGeoUpdate::draw() const { drawSet(sets_[std::size_t(current_)]); }
+void ParticleGeoUpdate::draw() const {
+  drawSet(sets_[std::size_t(current_)]);
+}
 
 ParticleBackend::Records ParticleGeoUpdate::records() const {
   const BufferSet& set = sets_[std::size_t(current_)];
-  return {set.positionLife.id(), set.velocityKind.id(), survivorCounts_.id(), std::uint32_t(current_ * 4),
-          set.born};
+  return {set.positionLife.id(), set.velocityKind.id(), survivorCounts_.id(),
+          std::uint32_t(current_ * 4), set.born};
 }
 
 std::size_t ParticleGeoUpdate::liveCount() const {
@@ -247,7 +260,8 @@ std::vector<Particle> ParticleGeoUpdate::readBack() const {
   const std::vector<glm::vec4> pos = readRecords(set.positionLife.id(), count);
   const std::vector<glm::vec4> vel = readRecords(set.velocityKind.id(), count);
   std::vector<Particle> particles(count);
-  for (std::size_t i = 0; i < count; ++i) particles[i] = Particle{pos[i], vel[i]};
+  for (std::size_t i = 0; i < count; ++i)
+    particles[i] = Particle{pos[i], vel[i]};
   return particles;
 }
 

@@ -42,7 +42,9 @@ class ParticleGeoUpdate final : public ParticleBackend {
 
   void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
                 std::shared_ptr<const VectorField> next = nullptr) override;
-  void setEquation(std::shared_ptr<const FieldEquation> equation) override { equation_.set(std::move(equation)); }
+  void setEquation(std::shared_ptr<const FieldEquation> equation) override {
+    equation_.set(std::move(equation));
+  }
   void setTerrain(std::shared_ptr<const HeightMap> terrain) override;
   void step(const SimStep& step, const ParticleState& state) override;
   void clear() override;
@@ -53,7 +55,9 @@ class ParticleGeoUpdate final : public ParticleBackend {
   std::size_t capacity() const override { return capacity_; }
   std::size_t liveCount() const override;
   std::vector<Particle> readBack() const override;
-  double lastFieldUploadMs() const override { return fieldTexture_.lastUploadMs() + nextFieldTexture_.lastUploadMs(); }
+  double lastFieldUploadMs() const override {
+    return fieldTexture_.lastUploadMs() + nextFieldTexture_.lastUploadMs();
+  }
   const char* name() const override { return "tf-gs"; }
 
  private:
@@ -77,7 +81,8 @@ class ParticleGeoUpdate final : public ParticleBackend {
   int current_ = 0;
   gl::VertexArray emptyVao_;
   gl::Buffer simBlock_;
-  gl::Buffer survivorCounts_;  // per set: its survivors, written by the GPU from the query (records())
+  gl::Buffer
+      survivorCounts_;  // per set: its survivors, written by the GPU from the query (records())
   gl::Framebuffer dummyTarget_;  // drawing needs a framebuffer, even with rasterizer discard
   gl::Renderbuffer dummyColor_;
   gl::Program updateProgram_, emitProgram_;

@@ -10,7 +10,8 @@ ParticlePost::ParticlePost()
     : composite_(std::vector<std::string>{"fullscreen.vert", "particle_post.frag"}),
       emptyVao_(gl::createVertexArray()) {}
 
-void ParticlePost::draw(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const {
+void ParticlePost::draw(const ViewTargets& targets, std::uint32_t destination,
+                        glm::ivec2 origin) const {
   glBindFramebuffer(GL_FRAMEBUFFER, destination);
   glViewport(origin.x, origin.y, targets.size().x, targets.size().y);
   glDisable(GL_DEPTH_TEST);

@@ -22,8 +22,10 @@ gl::Texture makeSprite() {
       const float u = (x + 0.5f) / kSize * 2.0f - 1.0f, v = (y + 0.5f) / kSize * 2.0f - 1.0f;
       const float r = std::sqrt(u * u + v * v);
       const float falloff = r >= 1.0f ? 0.0f : (1.0f - r * r) * (1.0f - r * r);
-      const float lumps = 0.8f + 0.2f * std::sin(9.0f * u + 3.0f * std::sin(7.0f * v)) * std::cos(8.0f * v);
-      pixels[std::size_t(y * kSize + x)] = std::uint8_t(std::clamp(falloff * lumps, 0.0f, 1.0f) * 255.0f + 0.5f);
+      const float lumps =
+          0.8f + 0.2f * std::sin(9.0f * u + 3.0f * std::sin(7.0f * v)) * std::cos(8.0f * v);
+      pixels[std::size_t(y * kSize + x)] =
+          std::uint8_t(std::clamp(falloff * lumps, 0.0f, 1.0f) * 255.0f + 0.5f);
     }
   gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
   glTextureStorage2D(t.id(), 1, GL_R8, kSize, kSize);
@@ -39,11 +41,14 @@ gl::Texture makeSprite() {
 }  // namespace
 
 ParticleRender::ParticleRender()
-    : billboards_(std::vector<std::string>{"particle_render.vert", "particle_render.geom", "particle_render.frag"}),
-      points_(std::vector<std::string>{"particle_render.vert", "particle_render.frag"}, std::vector<std::string>{"POINTS"}),
+    : billboards_(std::vector<std::string>{"particle_render.vert", "particle_render.geom",
+                                           "particle_render.frag"}),
+      points_(std::vector<std::string>{"particle_render.vert", "particle_render.frag"},
+              std::vector<std::string>{"POINTS"}),
       sprite_(makeSprite()) {}
 
-void ParticleRender::draw(const ParticleBackend& particles, const ViewTargets& targets, RenderMode mode) const {
+void ParticleRender::draw(const ParticleBackend& particles, const ViewTargets& targets,
+                          RenderMode mode) const {
   glBindFramebuffer(GL_FRAMEBUFFER, targets.particleFramebuffer());
   glViewport(0, 0, targets.size().x, targets.size().y);
   const float clear[4] = {0, 0, 0, 0};

@@ -9,7 +9,8 @@
 
 namespace sandstorm {
 
-std::unique_ptr<ParticleBackend> makeParticleBackend(const std::string& name, std::size_t capacity) {
+std::unique_ptr<ParticleBackend> makeParticleBackend(const std::string& name,
+                                                     std::size_t capacity) {
   if (name == "tf-gs") return std::make_unique<ParticleGeoUpdate>(capacity);
   if (name == "compute") return std::make_unique<ParticleComputeUpdate>(capacity);
   throw Error(concat("unknown particle backend '", name, "'; expected tf-gs or compute"));
@@ -21,16 +22,21 @@ ParticleSystem::ParticleSystem(const ParticleState& initial, const Options& opti
       update_(makeParticleBackend(options.backend, options.capacity)),
       stageTimers_(options.stageTimers) {}
 
-void ParticleSystem::setTerrain(std::shared_ptr<const HeightMap> terrain) { update_->setTerrain(std::move(terrain)); }
+void ParticleSystem::setTerrain(std::shared_ptr<const HeightMap> terrain) {
+  update_->setTerrain(std::move(terrain));
+}
 
 void ParticleSystem::advance(const FramePacket& packet) {
   if (packet.reset) update_->clear();
   // The main context validated every change; a replica applies them as they come.
-  for (const StateChange& change : packet.changes) applyChange(state_, change);
+  for (const StateChange& change : packet.changes)
+    applyChange(state_, change);
   // Raising Maximum above the buffers grows them, at the same frame on every wall.
-  const std::size_t capacity = grownCapacity(update_->capacity(), state_.sim.maximum, capacityLimit_);
+  const std::size_t capacity =
+      grownCapacity(update_->capacity(), state_.sim.maximum, capacityLimit_);
   if (capacity > update_->capacity()) {
-    log::info("frame ", packet.frame, ": growing the particle buffers from ", update_->capacity(), " to ", capacity);
+    log::info("frame ", packet.frame, ": growing the particle buffers from ", update_->capacity(),
+              " to ", capacity);
     update_->grow(capacity);
   }
   if (packet.fieldUpdate) {
@@ -45,8 +51,8 @@ void ParticleSystem::advance(const FramePacket& packet) {
   frame_ = packet.frame;
 }
 
-void ParticleSystem::render(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin,
-                            const View* view) const {
+void ParticleSystem::render(const ViewTargets& targets, std::uint32_t destination,
+                            glm::ivec2 origin, const View* view) const {
   if (stageTimers_) renderTimer_.begin();
   renderParticles(targets, view);
   if (stageTimers_) renderTimer_.end();
@@ -75,7 +81,8 @@ void ParticleSystem::renderParticles(const ViewTargets& targets, const View* vie
     render_.draw(*update_, targets, state_.render.mode);
 }
 
-void ParticleSystem::composite(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const {
+void ParticleSystem::composite(const ViewTargets& targets, std::uint32_t destination,
+                               glm::ivec2 origin) const {
   post_.draw(targets, destination, origin);
 }
 

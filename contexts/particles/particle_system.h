@@ -30,8 +30,9 @@ class ParticleSystem {
   struct Options {
     std::size_t capacity = 1u << 20;
     std::size_t capacityLimit = 1u << 26;  // how far raising sim.maximum may grow the buffers
-    std::string backend = "compute";       // "compute" (default: the faster, docs/PERFORMANCE.md) or "tf-gs"
-    bool stageTimers = true;               // timings(); off where the caller times the stages itself
+    std::string backend =
+        "compute";            // "compute" (default: the faster, docs/PERFORMANCE.md) or "tf-gs"
+    bool stageTimers = true;  // timings(); off where the caller times the stages itself
   };
 
   ParticleSystem(const ParticleState& initial, const Options& options);

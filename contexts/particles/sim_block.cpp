@@ -17,12 +17,15 @@ int fillSimBlock(const SimBlockInputs& in, SimBlock& b) {
   }
   b.fieldBlend = glm::vec4(in.step.fieldBlend, in.nextField ? 1.0f : 0.0f, 0.0f, 0.0f);
   b.placementOffset = glm::vec4(in.placement.offset, in.placement.scale);
-  for (int c = 0; c < 3; ++c) b.placementRotation[c] = glm::vec4(in.placement.rotation[c], 0.0f);
+  for (int c = 0; c < 3; ++c)
+    b.placementRotation[c] = glm::vec4(in.placement.rotation[c], 0.0f);
   b.gravity = glm::vec4(s.gravity, 1.0f / s.dragTime);
   b.stepParams = glm::vec4(in.step.dt, s.fieldStrength, s.restitution, 1.0f / in.placement.scale);
-  b.modes = glm::ivec4(int(s.motion), int(s.integrator), int(s.boundary), s.groundCollision ? 1 : 0);
+  b.modes =
+      glm::ivec4(int(s.motion), int(s.integrator), int(s.boundary), s.groundCollision ? 1 : 0);
   const int emitterCount = int(in.state->emitters.size());
-  b.frameSeed = glm::uvec4(in.step.frame, in.step.seed.lo, in.step.seed.hi, std::uint32_t(emitterCount));
+  b.frameSeed =
+      glm::uvec4(in.step.frame, in.step.seed.lo, in.step.seed.hi, std::uint32_t(emitterCount));
   if (in.terrain) {
     b.terrainMinScale = glm::vec4(in.terrain->min(), in.terrain->indexScale());
     b.terrainDims = glm::ivec4(in.terrain->dims(), 1, 0);

@@ -32,7 +32,8 @@ Display tryDevicePlatform(const char* clientExtensions) {
   std::vector<EGLDeviceEXT> devices(std::size_t(std::max(count, 0)));
   eglQueryDevicesEXT(count, devices.data(), &count);
   for (EGLint i = 0; i < count; ++i) {
-    EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[std::size_t(i)], nullptr);
+    EGLDisplay d =
+        eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[std::size_t(i)], nullptr);
     EGLint major = 0, minor = 0;
     if (d != EGL_NO_DISPLAY && eglInitialize(d, &major, &minor)) {
       // A display must offer desktop OpenGL with surfaceless contexts to be of use.
@@ -47,7 +48,8 @@ Display tryDevicePlatform(const char* clientExtensions) {
 
 Display trySurfaceless(const char* clientExtensions) {
   if (!hasExtension(clientExtensions, "EGL_MESA_platform_surfaceless")) return {};
-  EGLDisplay d = eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+  EGLDisplay d =
+      eglGetPlatformDisplayEXT(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
   EGLint major = 0, minor = 0;
   if (d == EGL_NO_DISPLAY || !eglInitialize(d, &major, &minor)) return {};
   return {d, "EGL Mesa surfaceless platform"};
@@ -79,9 +81,11 @@ EglContext::EglContext(const Options& options) {
   const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
   EGLConfig config = nullptr;
   EGLint configs = 0;
-  const bool noConfig = hasExtension(eglQueryString(d.display, EGL_EXTENSIONS), "EGL_KHR_no_config_context");
+  const bool noConfig =
+      hasExtension(eglQueryString(d.display, EGL_EXTENSIONS), "EGL_KHR_no_config_context");
   if (!eglChooseConfig(d.display, configAttribs, &config, 1, &configs) || configs == 0) {
-    if (!noConfig) throw Error(concat("EglContext: no EGL config with desktop OpenGL on ", d.platform));
+    if (!noConfig)
+      throw Error(concat("EglContext: no EGL config with desktop OpenGL on ", d.platform));
     config = EGL_NO_CONFIG_KHR;
   }
   const EGLint contextAttribs[] = {EGL_CONTEXT_MAJOR_VERSION,
@@ -93,7 +97,8 @@ EglContext::EglContext(const Options& options) {
                                    EGL_CONTEXT_OPENGL_DEBUG,
                                    options.debug ? EGL_TRUE : EGL_FALSE,
                                    EGL_NONE};
-  EGLContext share = options.share ? static_cast<EGLContext>(options.share->context_) : EGL_NO_CONTEXT;
+  EGLContext share =
+      options.share ? static_cast<EGLContext>(options.share->context_) : EGL_NO_CONTEXT;
   context_ = eglCreateContext(d.display, config, share, contextAttribs);
   if (context_ == EGL_NO_CONTEXT)
     throw Error(concat("EglContext: eglCreateContext for OpenGL 4.5 core failed on ", d.platform,
@@ -119,7 +124,8 @@ EglContext::~EglContext() {
 
 void EglContext::makeCurrent() {
   if (!eglMakeCurrent(display().display, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
-    throw Error(concat("EglContext: eglMakeCurrent failed (EGL error 0x", std::hex, eglGetError(), ")"));
+    throw Error(
+        concat("EglContext: eglMakeCurrent failed (EGL error 0x", std::hex, eglGetError(), ")"));
 }
 
 void EglContext::releaseCurrent() {

@@ -10,18 +10,23 @@
 namespace sandstorm {
 namespace {
 
-void onGlfwError(int code, const char* message) { log::error("GLFW (", code, "): ", message); }
+void onGlfwError(int code, const char* message) {
+  log::error("GLFW (", code, "): ", message);
+}
 
 }  // namespace
 
 GlfwLibrary::GlfwLibrary() {
   glfwSetErrorCallback(onGlfwError);
   if (!glfwInit())
-    throw Error("GlfwLibrary: glfwInit failed; is there a display (DISPLAY or WAYLAND_DISPLAY)? "
-                "Use an offscreen configuration to render without one.");
+    throw Error(
+        "GlfwLibrary: glfwInit failed; is there a display (DISPLAY or WAYLAND_DISPLAY)? "
+        "Use an offscreen configuration to render without one.");
 }
 
-GlfwLibrary::~GlfwLibrary() { glfwTerminate(); }
+GlfwLibrary::~GlfwLibrary() {
+  glfwTerminate();
+}
 
 int GlfwLibrary::monitorCount() const {
   int count = 0;
@@ -29,7 +34,9 @@ int GlfwLibrary::monitorCount() const {
   return count;
 }
 
-void GlfwLibrary::pollEvents() { glfwPollEvents(); }
+void GlfwLibrary::pollEvents() {
+  glfwPollEvents();
+}
 
 GlfwWindow::GlfwWindow(const GlfwLibrary& glfw, const Options& o) {
   int monitorCount = 0;
@@ -81,9 +88,15 @@ GlfwWindow::~GlfwWindow() {
   if (window_) glfwDestroyWindow(window_);
 }
 
-void GlfwWindow::makeCurrent() { glfwMakeContextCurrent(window_); }
-void GlfwWindow::releaseCurrent() { glfwMakeContextCurrent(nullptr); }
-void GlfwWindow::swapBuffers() { glfwSwapBuffers(window_); }
+void GlfwWindow::makeCurrent() {
+  glfwMakeContextCurrent(window_);
+}
+void GlfwWindow::releaseCurrent() {
+  glfwMakeContextCurrent(nullptr);
+}
+void GlfwWindow::swapBuffers() {
+  glfwSwapBuffers(window_);
+}
 
 glm::ivec2 GlfwWindow::framebufferSize() const {
   glm::ivec2 s;
@@ -91,7 +104,11 @@ glm::ivec2 GlfwWindow::framebufferSize() const {
   return s;
 }
 
-bool GlfwWindow::shouldClose() const { return glfwWindowShouldClose(window_); }
-void GlfwWindow::requestClose() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+bool GlfwWindow::shouldClose() const {
+  return glfwWindowShouldClose(window_);
+}
+void GlfwWindow::requestClose() {
+  glfwSetWindowShouldClose(window_, GLFW_TRUE);
+}
 
 }  // namespace sandstorm

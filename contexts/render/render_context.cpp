@@ -6,14 +6,21 @@
 
 namespace sandstorm {
 
-RenderContext::RenderContext(std::unique_ptr<GlContext> context, WallRendererSetup setup, FrameChannel& channel,
-                             int consumer, SwapBarrier& barrier)
-    : context_(std::move(context)), setup_(std::move(setup)), channel_(channel), consumer_(consumer),
+RenderContext::RenderContext(std::unique_ptr<GlContext> context, WallRendererSetup setup,
+                             FrameChannel& channel, int consumer, SwapBarrier& barrier)
+    : context_(std::move(context)),
+      setup_(std::move(setup)),
+      channel_(channel),
+      consumer_(consumer),
       barrier_(barrier) {}
 
-RenderContext::~RenderContext() { join(); }
+RenderContext::~RenderContext() {
+  join();
+}
 
-void RenderContext::start() { thread_ = std::thread([this] { run(); }); }
+void RenderContext::start() {
+  thread_ = std::thread([this] { run(); });
+}
 
 void RenderContext::join() {
   if (thread_.joinable()) thread_.join();
@@ -41,15 +48,20 @@ void RenderContext::run() {
       const auto start = std::chrono::steady_clock::now();
       renderer->frame(*packet, context_->framebufferSize());
       if (overlay_)
-        if (const std::shared_ptr<const UiDrawData> menu = overlay_()) renderer->drawOverlay(*menu, font_);
+        if (const std::shared_ptr<const UiDrawData> menu = overlay_())
+          renderer->drawOverlay(*menu, font_);
       if (hook_) hook_(*renderer, *packet);
       const std::size_t live = countParticles_ ? renderer->particles().update().liveCount() : 0;
-      const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      const double ms =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+              .count();
       const ParticleSystem::Timings timings = renderer->particles().timings();
-      barrier_.arrive_and_wait();  // the swap barrier: nobody presents frame f before all have drawn it
+      barrier_
+          .arrive_and_wait();  // the swap barrier: nobody presents frame f before all have drawn it
       context_->swapBuffers();
       const auto swapped = std::chrono::steady_clock::now();
-      const double interval = lastSwap ? std::chrono::duration<double>(swapped - *lastSwap).count() : 0.0;
+      const double interval =
+          lastSwap ? std::chrono::duration<double>(swapped - *lastSwap).count() : 0.0;
       lastSwap = swapped;
       std::lock_guard lock(mutex_);
       stats_.capacity = renderer->particles().update().capacity();
@@ -62,7 +74,8 @@ void RenderContext::run() {
       }
       stats_.frame = packet->frame;
       stats_.frameMs = ms;
-      if (interval > 0.0) stats_.fps = stats_.fps > 0.0 ? 0.9 * stats_.fps + 0.1 / interval : 1.0 / interval;
+      if (interval > 0.0)
+        stats_.fps = stats_.fps > 0.0 ? 0.9 * stats_.fps + 0.1 / interval : 1.0 / interval;
       stats_.liveParticles = live;
     }
     renderer.reset();  // GL objects go with their own context current

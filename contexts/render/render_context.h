@@ -26,8 +26,8 @@ namespace sandstorm {
 
 struct WallStats {
   std::uint32_t frame = 0;
-  double frameMs = 0.0;    // CPU time of the last frame on this wall's thread
-  double fps = 0.0;        // smoothed
+  double frameMs = 0.0;  // CPU time of the last frame on this wall's thread
+  double fps = 0.0;      // smoothed
   std::size_t liveParticles = 0;
   std::size_t capacity = 0;
   double updateMs = 0.0, renderMs = 0.0, postMs = 0.0;  // GPU time per stage (a few frames old)

@@ -27,7 +27,8 @@ void ViewRenderer::render(const ParticleSystem& particles, const View& view, glm
   glDepthMask(GL_TRUE);
   const float depth = 1.0f;
   glClearNamedFramebufferfv(targets_.sceneFramebuffer(), GL_DEPTH, 0, &depth);
-  if (const auto field = particles.field(); field && field->field && particles.state().render.fieldBox)
+  if (const auto field = particles.field();
+      field && field->field && particles.state().render.fieldBox)
     scene_.setFieldBox(field->field->bounds(), field->placement);
   else
     scene_.setFieldBox(std::nullopt, {});

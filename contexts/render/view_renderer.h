@@ -21,8 +21,8 @@ class ViewRenderer {
   ViewRenderer();
 
   SceneRenderer& scene() { return scene_; }
-  void render(const ParticleSystem& particles, const View& view, glm::ivec2 size, std::uint32_t destination,
-              glm::ivec2 origin);
+  void render(const ParticleSystem& particles, const View& view, glm::ivec2 size,
+              std::uint32_t destination, glm::ivec2 origin);
 
  private:
   SceneRenderer scene_;

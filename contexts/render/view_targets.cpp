@@ -23,14 +23,16 @@ gl::Texture texture2D(GLenum format, glm::ivec2 size) {
 void checkComplete(GLuint fbo, const char* what) {
   const GLenum status = glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE)
-    throw Error(concat("ViewTargets: the ", what, " framebuffer is incomplete (status 0x", std::hex, status, ")"));
+    throw Error(concat("ViewTargets: the ", what, " framebuffer is incomplete (status 0x", std::hex,
+                       status, ")"));
 }
 
 }  // namespace
 
 void ViewTargets::resize(glm::ivec2 size) {
   if (size == size_) return;
-  if (size.x <= 0 || size.y <= 0) throw Error(concat("ViewTargets: bad size ", size.x, "x", size.y));
+  if (size.x <= 0 || size.y <= 0)
+    throw Error(concat("ViewTargets: bad size ", size.x, "x", size.y));
   size_ = size;
   sceneColor_ = texture2D(GL_RGBA8, size);
   sceneDepth_ = texture2D(GL_DEPTH_COMPONENT32F, size);
@@ -52,7 +54,8 @@ void ViewTargets::resize(glm::ivec2 size) {
 
 void OutputTarget::resize(glm::ivec2 size) {
   if (size == size_) return;
-  if (size.x <= 0 || size.y <= 0) throw Error(concat("OutputTarget: bad size ", size.x, "x", size.y));
+  if (size.x <= 0 || size.y <= 0)
+    throw Error(concat("OutputTarget: bad size ", size.x, "x", size.y));
   size_ = size;
   color_ = texture2D(GL_RGBA8, size);
   depth_ = gl::createRenderbuffer();
@@ -63,10 +66,13 @@ void OutputTarget::resize(glm::ivec2 size) {
   checkComplete(fbo_.id(), "output");
 }
 
-Image OutputTarget::readPixels() const { return readFramebuffer(fbo_.id(), GL_COLOR_ATTACHMENT0, size_); }
+Image OutputTarget::readPixels() const {
+  return readFramebuffer(fbo_.id(), GL_COLOR_ATTACHMENT0, size_);
+}
 
 Image readFramebuffer(std::uint32_t framebuffer, std::uint32_t buffer, glm::ivec2 size) {
-  Image image{size.x, size.y, std::vector<std::uint8_t>(std::size_t(size.x) * std::size_t(size.y) * 4)};
+  Image image{size.x, size.y,
+              std::vector<std::uint8_t>(std::size_t(size.x) * std::size_t(size.y) * 4)};
   std::vector<std::uint8_t> flipped(image.rgba.size());
   glPixelStorei(GL_PACK_ALIGNMENT, 1);
   glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer);
@@ -75,7 +81,8 @@ Image readFramebuffer(std::uint32_t framebuffer, std::uint32_t buffer, glm::ivec
   glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
   const std::size_t row = std::size_t(size.x) * 4;
   for (int y = 0; y < size.y; ++y)  // GL's first row is the bottom one
-    std::copy_n(flipped.data() + std::size_t(size.y - 1 - y) * row, row, image.rgba.data() + std::size_t(y) * row);
+    std::copy_n(flipped.data() + std::size_t(size.y - 1 - y) * row, row,
+                image.rgba.data() + std::size_t(y) * row);
   return image;
 }
 

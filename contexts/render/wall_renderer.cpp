@@ -31,11 +31,14 @@ void WallRenderer::frame(const FramePacket& packet, glm::ivec2 windowSize) {
   lastSize_ = drewOffscreen_ ? wall_.offscreenSize : windowSize;
 }
 
-void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destination, glm::ivec2 size) {
+void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destination,
+                             glm::ivec2 size) {
   const float aspect = float(size.x) / float(size.y);
   const std::vector<View> views = wallViews(wall_, packet.viewer, aspect, near_, far_);
   switch (wall_.stereo) {
-    case StereoMode::Mono: viewRenderer_.render(system_, views[0], size, destination, {0, 0}); break;
+    case StereoMode::Mono:
+      viewRenderer_.render(system_, views[0], size, destination, {0, 0});
+      break;
     case StereoMode::SideBySide: {
       const glm::ivec2 half(size.x / 2, size.y);
       viewRenderer_.render(system_, views[0], half, destination, {0, 0});
@@ -58,7 +61,8 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
     case StereoMode::Anaglyph: {
       for (int eye = 0; eye < 2; ++eye) {
         eyes_[eye].resize(size);
-        viewRenderer_.render(system_, views[std::size_t(eye)], size, eyes_[eye].framebuffer(), {0, 0});
+        viewRenderer_.render(system_, views[std::size_t(eye)], size, eyes_[eye].framebuffer(),
+                             {0, 0});
       }
       glBindFramebuffer(GL_FRAMEBUFFER, destination);
       glViewport(0, 0, size.x, size.y);

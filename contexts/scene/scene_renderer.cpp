@@ -27,12 +27,14 @@ SceneRenderer::SceneRenderer()
       n[axis] = side;
       const glm::vec3 u = glm::vec3(n.y, n.z, n.x) * side, v = glm::cross(n, u);
       const glm::vec3 c = 0.5f * n;
-      const glm::vec3 q[4] = {c - 0.5f * u - 0.5f * v, c + 0.5f * u - 0.5f * v, c + 0.5f * u + 0.5f * v,
-                              c - 0.5f * u + 0.5f * v};
-      for (int i : {0, 1, 2, 0, 2, 3}) cube.push_back({q[i], n});
+      const glm::vec3 q[4] = {c - 0.5f * u - 0.5f * v, c + 0.5f * u - 0.5f * v,
+                              c + 0.5f * u + 0.5f * v, c - 0.5f * u + 0.5f * v};
+      for (int i : {0, 1, 2, 0, 2, 3})
+        cube.push_back({q[i], n});
     }
   cubeVertices_ = gl::createBuffer();
-  glNamedBufferStorage(cubeVertices_.id(), GLsizeiptr(cube.size() * sizeof(Vertex)), cube.data(), 0);
+  glNamedBufferStorage(cubeVertices_.id(), GLsizeiptr(cube.size() * sizeof(Vertex)), cube.data(),
+                       0);
   cubeVao_ = gl::createVertexArray();
   for (GLuint a = 0; a < 2; ++a) {
     glEnableVertexArrayAttrib(cubeVao_.id(), a);
@@ -54,7 +56,8 @@ SceneRenderer::SceneRenderer()
         edges.push_back(p);
       }
   boxVertices_ = gl::createBuffer();
-  glNamedBufferStorage(boxVertices_.id(), GLsizeiptr(edges.size() * sizeof(glm::vec3)), edges.data(), 0);
+  glNamedBufferStorage(boxVertices_.id(), GLsizeiptr(edges.size() * sizeof(glm::vec3)),
+                       edges.data(), 0);
   boxVao_ = gl::createVertexArray();
   glEnableVertexArrayAttrib(boxVao_.id(), 0);
   glVertexArrayAttribFormat(boxVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
@@ -85,12 +88,14 @@ void SceneRenderer::setTerrain(std::shared_ptr<const HeightMap> terrain) {
   std::vector<std::uint32_t> indices;
   for (int j = 0; j + 1 < d.y; ++j)
     for (int i = 0; i + 1 < d.x; ++i) {
-      const std::uint32_t a = std::uint32_t(i + d.x * j), b = a + 1, c = a + std::uint32_t(d.x), e = c + 1;
+      const std::uint32_t a = std::uint32_t(i + d.x * j), b = a + 1, c = a + std::uint32_t(d.x),
+                          e = c + 1;
       indices.insert(indices.end(), {a, b, e, a, e, c});
     }
   terrainVertices_ = gl::createBuffer();
   terrainIndices_ = gl::createBuffer();
-  glNamedBufferStorage(terrainVertices_.id(), GLsizeiptr(vertices.size() * sizeof(Vertex)), vertices.data(), 0);
+  glNamedBufferStorage(terrainVertices_.id(), GLsizeiptr(vertices.size() * sizeof(Vertex)),
+                       vertices.data(), 0);
   glNamedBufferStorage(terrainIndices_.id(), GLsizeiptr(indices.size() * 4), indices.data(), 0);
   terrainVao_ = gl::createVertexArray();
   for (GLuint a = 0; a < 2; ++a) {
@@ -126,16 +131,23 @@ void SceneRenderer::draw() const {
   if (helicopter_.enabled) {
     // Hub at the rotor; the fuselage hangs below it, the boom runs aft (-x).
     const float r = rotorRadius_;
-    const glm::vec3 hub(helicopter_.x, helicopter_.y, ground_->heightAt({helicopter_.x, helicopter_.y}) + helicopter_.altitude);
+    const glm::vec3 hub(helicopter_.x, helicopter_.y,
+                        ground_->heightAt({helicopter_.x, helicopter_.y}) + helicopter_.altitude);
     struct Part {
       glm::vec3 center, size, color;
     };
     const Part parts[] = {
-        {{0.1f * r, 0.0f, -0.33f * r}, {1.6f * r, 0.34f * r, 0.32f * r}, {0.22f, 0.25f, 0.2f}},  // fuselage
-        {{-1.2f * r, 0.0f, -0.2f * r}, {1.5f * r, 0.08f * r, 0.1f * r}, {0.22f, 0.25f, 0.2f}},   // tail boom
-        {{-1.9f * r, 0.0f, -0.05f * r}, {0.12f * r, 0.04f * r, 0.35f * r}, {0.22f, 0.25f, 0.2f}}, // fin
-        {{0.0f, 0.0f, -0.08f * r}, {0.05f * r, 0.05f * r, 0.16f * r}, {0.1f, 0.1f, 0.1f}},       // mast
-        {{0.0f, 0.0f, 0.0f}, {2.0f * r, 0.07f * r, 0.015f * r}, {0.08f, 0.08f, 0.08f}},           // blades
+        {{0.1f * r, 0.0f, -0.33f * r},
+         {1.6f * r, 0.34f * r, 0.32f * r},
+         {0.22f, 0.25f, 0.2f}},  // fuselage
+        {{-1.2f * r, 0.0f, -0.2f * r},
+         {1.5f * r, 0.08f * r, 0.1f * r},
+         {0.22f, 0.25f, 0.2f}},  // tail boom
+        {{-1.9f * r, 0.0f, -0.05f * r},
+         {0.12f * r, 0.04f * r, 0.35f * r},
+         {0.22f, 0.25f, 0.2f}},                                                             // fin
+        {{0.0f, 0.0f, -0.08f * r}, {0.05f * r, 0.05f * r, 0.16f * r}, {0.1f, 0.1f, 0.1f}},  // mast
+        {{0.0f, 0.0f, 0.0f}, {2.0f * r, 0.07f * r, 0.015f * r}, {0.08f, 0.08f, 0.08f}},  // blades
         {{0.0f, 0.0f, 0.0f}, {0.07f * r, 2.0f * r, 0.015f * r}, {0.08f, 0.08f, 0.08f}},
     };
     mesh_.use();
@@ -150,7 +162,8 @@ void SceneRenderer::draw() const {
 
   if (box_) {
     glm::mat4 model = placement_.matrix();
-    model = model * glm::translate(glm::mat4(1.0f), box_->min) * glm::scale(glm::mat4(1.0f), box_->extent());
+    model = model * glm::translate(glm::mat4(1.0f), box_->min) *
+            glm::scale(glm::mat4(1.0f), box_->extent());
     lines_.use();
     glProgramUniformMatrix4fv(lines_.id(), 0, 1, GL_FALSE, glm::value_ptr(model));
     glProgramUniform4f(lines_.id(), 1, 0.25f, 0.25f, 0.3f, 1.0f);

@@ -8,11 +8,13 @@
 namespace sandstorm {
 
 UiRenderer::UiRenderer(const UiFont& font)
-    : program_(std::vector<std::string>{"ui.vert", "ui.frag"}), font_(gl::createTexture(GL_TEXTURE_2D)),
+    : program_(std::vector<std::string>{"ui.vert", "ui.frag"}),
+      font_(gl::createTexture(GL_TEXTURE_2D)),
       vao_(gl::createVertexArray()) {
   glTextureStorage2D(font_.id(), 1, GL_RGBA8, font.width, font.height);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  glTextureSubImage2D(font_.id(), 0, 0, 0, font.width, font.height, GL_RGBA, GL_UNSIGNED_BYTE, font.rgba.data());
+  glTextureSubImage2D(font_.id(), 0, 0, 0, font.width, font.height, GL_RGBA, GL_UNSIGNED_BYTE,
+                      font.rgba.data());
   glTextureParameteri(font_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(font_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   glEnableVertexArrayAttrib(vao_.id(), 0);
@@ -21,7 +23,8 @@ UiRenderer::UiRenderer(const UiFont& font)
   glVertexArrayAttribFormat(vao_.id(), 0, 2, GL_FLOAT, GL_FALSE, offsetof(UiVertex, position));
   glVertexArrayAttribFormat(vao_.id(), 1, 2, GL_FLOAT, GL_FALSE, offsetof(UiVertex, uv));
   glVertexArrayAttribFormat(vao_.id(), 2, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(UiVertex, color));
-  for (GLuint a = 0; a < 3; ++a) glVertexArrayAttribBinding(vao_.id(), a, 0);
+  for (GLuint a = 0; a < 3; ++a)
+    glVertexArrayAttribBinding(vao_.id(), a, 0);
 }
 
 void UiRenderer::drawWindow(const UiDrawData& data, glm::ivec2 size) {
@@ -43,10 +46,12 @@ void UiRenderer::draw(const UiDrawData& d, glm::ivec2 fb) {
   if (d.indices.size() > indexCapacity_) {
     indexCapacity_ = d.indices.size() * 2;
     indices_ = gl::createBuffer();
-    glNamedBufferStorage(indices_.id(), GLsizeiptr(indexCapacity_ * 2), nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferStorage(indices_.id(), GLsizeiptr(indexCapacity_ * 2), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
     glVertexArrayElementBuffer(vao_.id(), indices_.id());
   }
-  glNamedBufferSubData(vertices_.id(), 0, GLsizeiptr(d.vertices.size() * sizeof(UiVertex)), d.vertices.data());
+  glNamedBufferSubData(vertices_.id(), 0, GLsizeiptr(d.vertices.size() * sizeof(UiVertex)),
+                       d.vertices.data());
   glNamedBufferSubData(indices_.id(), 0, GLsizeiptr(d.indices.size() * 2), d.indices.data());
 
   glViewport(0, 0, fb.x, fb.y);
@@ -68,7 +73,8 @@ void UiRenderer::draw(const UiDrawData& d, glm::ivec2 fb) {
     if (clip.z <= clip.x || clip.w <= clip.y) continue;
     glScissor(int(clip.x), int(float(fb.y) - clip.w), int(clip.z - clip.x), int(clip.w - clip.y));
     glDrawElementsBaseVertex(GL_TRIANGLES, GLsizei(c.indexCount), GL_UNSIGNED_SHORT,
-                             reinterpret_cast<const void*>(std::uintptr_t(c.firstIndex) * 2), c.vertexOffset);
+                             reinterpret_cast<const void*>(std::uintptr_t(c.firstIndex) * 2),
+                             c.vertexOffset);
   }
   glBindVertexArray(0);
   glDisable(GL_SCISSOR_TEST);

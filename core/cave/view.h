@@ -14,8 +14,8 @@ struct View {
 };
 
 // A conventional perspective camera (the desktop configuration).
-View perspectiveView(const glm::vec3& eye, const glm::vec3& target, const glm::vec3& up, float fovYRadians,
-                     float aspect, float nearPlane, float farPlane);
+View perspectiveView(const glm::vec3& eye, const glm::vec3& target, const glm::vec3& up,
+                     float fovYRadians, float aspect, float nearPlane, float farPlane);
 
 // Camera-space distance of a projected depth value in [0, 1], for any
 // glm::perspective or glm::frustum projection.

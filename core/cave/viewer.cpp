@@ -7,14 +7,17 @@
 
 namespace sandstorm {
 
-glm::vec3 rightOfYaw(float yaw) { return {std::sin(yaw), -std::cos(yaw), 0.0f}; }
+glm::vec3 rightOfYaw(float yaw) {
+  return {std::sin(yaw), -std::cos(yaw), 0.0f};
+}
 
 Navigation Navigation::from(const NavigationSpec& spec) {
   return {spec.offset, glm::radians(spec.yawDegrees), spec.scale};
 }
 
 glm::mat4 Navigation::worldToRoom() const {
-  return glm::translate(glm::mat4(1.0f), offset) * glm::rotate(glm::mat4(1.0f), yawRadians, {0, 0, 1}) *
+  return glm::translate(glm::mat4(1.0f), offset) *
+         glm::rotate(glm::mat4(1.0f), yawRadians, {0, 0, 1}) *
          glm::scale(glm::mat4(1.0f), glm::vec3(scale));
 }
 
@@ -47,7 +50,9 @@ DesktopHead::DesktopHead(const HeadPose& start, float yawRadians) : pose_(start)
   pose_.right = rightOfYaw(yaw_);
 }
 
-HeadPose DesktopHead::pose(double) const { return pose_; }
+HeadPose DesktopHead::pose(double) const {
+  return pose_;
+}
 
 void DesktopHead::move(float forward, float right, float up) {
   const glm::vec3 ahead(std::cos(yaw_), std::sin(yaw_), 0.0f);
@@ -65,9 +70,12 @@ std::unique_ptr<HeadTracker> makeHeadTracker(const HeadSpec& spec) {
   base.right = rightOfYaw(glm::radians(spec.yawDegrees));
   base.eyeSeparation = spec.eyeSeparation;
   switch (spec.mode) {
-    case HeadMode::Fixed: return std::make_unique<FixedHead>(base);
-    case HeadMode::Scripted: return std::make_unique<ScriptedHead>(spec.path, spec.loop, base);
-    case HeadMode::Desktop: return std::make_unique<DesktopHead>(base, glm::radians(spec.yawDegrees));
+    case HeadMode::Fixed:
+      return std::make_unique<FixedHead>(base);
+    case HeadMode::Scripted:
+      return std::make_unique<ScriptedHead>(spec.path, spec.loop, base);
+    case HeadMode::Desktop:
+      return std::make_unique<DesktopHead>(base, glm::radians(spec.yawDegrees));
   }
   return std::make_unique<FixedHead>(base);
 }

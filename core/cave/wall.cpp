@@ -33,9 +33,11 @@ void validateWall(const WallCorners& w, const std::string& where, float toleranc
                        " m high; expected a rectangle of positive size"));
   const float cosine = std::abs(glm::dot(across, upward)) / (width * height);
   if (cosine > tolerance)
-    throw Error(concat(where, ": the corners are not a rectangle: the lower and left edges meet at ",
-                       glm::degrees(std::acos(std::clamp(glm::dot(across, upward) / (width * height), -1.0f, 1.0f))),
-                       " degrees; expected 90"));
+    throw Error(
+        concat(where, ": the corners are not a rectangle: the lower and left edges meet at ",
+               glm::degrees(
+                   std::acos(std::clamp(glm::dot(across, upward) / (width * height), -1.0f, 1.0f))),
+               " degrees; expected 90"));
 }
 
 Frustum offAxisFrustum(const WallCorners& w, const glm::vec3& eye, float n, float f) {
@@ -45,8 +47,12 @@ Frustum offAxisFrustum(const WallCorners& w, const glm::vec3& eye, float n, floa
   // sees the wall edge-on or from behind: keep a sliver so the matrix stays finite.
   const float d = std::max(-glm::dot(va, b.normal), 1e-4f);
   const float scale = n / d;
-  return {glm::dot(b.right, va) * scale, glm::dot(b.right, vb) * scale, glm::dot(b.up, va) * scale,
-          glm::dot(b.up, vc) * scale,    n,                             f};
+  return {glm::dot(b.right, va) * scale,
+          glm::dot(b.right, vb) * scale,
+          glm::dot(b.up, va) * scale,
+          glm::dot(b.up, vc) * scale,
+          n,
+          f};
 }
 
 View offAxisView(const WallCorners& w, const glm::vec3& eye, float n, float f) {

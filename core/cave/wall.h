@@ -29,7 +29,8 @@ struct Frustum {
 };
 
 // The frustum extents on the near plane for an eye (Kooima's l, r, b, t).
-Frustum offAxisFrustum(const WallCorners& wall, const glm::vec3& eye, float nearPlane, float farPlane);
+Frustum offAxisFrustum(const WallCorners& wall, const glm::vec3& eye, float nearPlane,
+                       float farPlane);
 
 // The view of the room through the wall for one eye: projection = frustum(...),
 // view = (screen basis)^T * translate(-eye).

@@ -4,10 +4,12 @@
 
 namespace sandstorm {
 
-bool isStereo(StereoMode mode) { return mode != StereoMode::Mono; }
+bool isStereo(StereoMode mode) {
+  return mode != StereoMode::Mono;
+}
 
-std::vector<View> wallViews(const WallSpec& wall, const Viewer& viewer, float aspect, float nearPlane,
-                            float farPlane) {
+std::vector<View> wallViews(const WallSpec& wall, const Viewer& viewer, float aspect,
+                            float nearPlane, float farPlane) {
   const glm::mat4 worldToRoom = viewer.navigation.worldToRoom();
   std::vector<glm::vec3> eyes;  // room coordinates
   glm::vec3 right = viewer.head.right;
@@ -28,7 +30,8 @@ std::vector<View> wallViews(const WallSpec& wall, const Viewer& viewer, float as
     View v;
     if (wall.camera) {
       const glm::vec3 target = wall.camera->target + (eye - center);
-      v = perspectiveView(eye, target, {0, 0, 1}, glm::radians(wall.camera->fovDegrees), aspect, nearPlane, farPlane);
+      v = perspectiveView(eye, target, {0, 0, 1}, glm::radians(wall.camera->fovDegrees), aspect,
+                          nearPlane, farPlane);
     } else {
       v = offAxisView(wall.corners, eye, nearPlane, farPlane);
     }

@@ -11,8 +11,8 @@
 
 namespace sandstorm {
 
-std::vector<View> wallViews(const WallSpec& wall, const Viewer& viewer, float aspect, float nearPlane,
-                            float farPlane);
+std::vector<View> wallViews(const WallSpec& wall, const Viewer& viewer, float aspect,
+                            float nearPlane, float farPlane);
 
 bool isStereo(StereoMode mode);
 

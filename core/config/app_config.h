@@ -40,14 +40,14 @@ struct CameraSpec {
 struct WallSpec {
   std::string name;
   WallCorners corners;
-  std::optional<CameraSpec> camera;     // set: a perspective camera, corners unused
-  std::optional<WindowSpec> window;     // set: a GLFW window; otherwise offscreen (EGL)
-  glm::ivec2 offscreenSize{960, 540};   // image size of an offscreen wall
+  std::optional<CameraSpec> camera;    // set: a perspective camera, corners unused
+  std::optional<WindowSpec> window;    // set: a GLFW window; otherwise offscreen (EGL)
+  glm::ivec2 offscreenSize{960, 540};  // image size of an offscreen wall
   StereoMode stereo = StereoMode::Mono;
-  bool menu = false;                    // show the menu panel on this wall
-  int rank = 0;                         // cluster mode: the MPI rank that drives this wall
-  std::string host;                     // cluster mode: or the first rank on this host (overrides rank)
-  int line = 0;                         // where the wall was declared, for messages
+  bool menu = false;  // show the menu panel on this wall
+  int rank = 0;       // cluster mode: the MPI rank that drives this wall
+  std::string host;   // cluster mode: or the first rank on this host (overrides rank)
+  int line = 0;       // where the wall was declared, for messages
 };
 
 enum class HeadMode { Fixed, Scripted, Desktop };
@@ -74,10 +74,12 @@ struct NavigationSpec {
 };
 
 struct FieldSpec {
-  std::string source = "analytic";  // "analytic" or a file path (resolved against the config's folder)
-  std::string name = "tornado";     // analytic field, or the array/grid name in a file (empty: the only one)
-  glm::ivec3 dims{48, 48, 32};      // baking resolution of an analytic field
-  glm::ivec3 resolution{0};         // a file's grid resampled to this; 0: the file's own
+  std::string source =
+      "analytic";  // "analytic" or a file path (resolved against the config's folder)
+  std::string name =
+      "tornado";  // analytic field, or the array/grid name in a file (empty: the only one)
+  glm::ivec3 dims{48, 48, 32};  // baking resolution of an analytic field
+  glm::ivec3 resolution{0};     // a file's grid resampled to this; 0: the file's own
   Box bounds{{-6.0f, -6.0f, 0.0f}, {6.0f, 6.0f, 10.0f}};
   std::map<std::string, double> params;  // analytic field parameters
   FieldPlacement placement;
@@ -86,17 +88,19 @@ struct FieldSpec {
 struct SceneSpec {
   std::string terrain = "flat";  // "flat", or a height map file (16-bit PGM / PNG)
   float groundHeight = 0.0f;
-  Box terrainBounds{{-50.0f, -50.0f, 0.0f}, {50.0f, 50.0f, 8.0f}};  // xy extent and height range of a map
-  bool helicopter = false;       // the downdraft demo's helicopter and its controls
+  Box terrainBounds{{-50.0f, -50.0f, 0.0f},
+                    {50.0f, 50.0f, 8.0f}};  // xy extent and height range of a map
+  bool helicopter = false;                  // the downdraft demo's helicopter and its controls
 };
 
 struct RunSpec {
   std::uint64_t seed = 1;
-  std::size_t capacity = 1u << 20;        // initial particle buffer size
-  std::size_t capacityLimit = 1u << 26;   // raising sim.maximum grows the buffers up to this
-  float fixedDt = 0.0f;  // > 0: fixed steps; 0: the main context's clock
-  int frames = 0;        // 0: until a window closes
-  std::string backend = "compute";  // or "tf-gs" (the thesis's); compute is faster (docs/PERFORMANCE.md)
+  std::size_t capacity = 1u << 20;       // initial particle buffer size
+  std::size_t capacityLimit = 1u << 26;  // raising sim.maximum grows the buffers up to this
+  float fixedDt = 0.0f;                  // > 0: fixed steps; 0: the main context's clock
+  int frames = 0;                        // 0: until a window closes
+  std::string backend =
+      "compute";  // or "tf-gs" (the thesis's); compute is faster (docs/PERFORMANCE.md)
   float nearPlane = 0.05f;
   float farPlane = 500.0f;
 };
@@ -104,11 +108,13 @@ struct RunSpec {
 // Cluster mode (mpirun, app/cluster/): how rank 0 feeds the other ranks.
 struct ClusterSpec {
   float timeoutSeconds = 10.0f;  // a rank that does not answer this long stops the run
-  float startupTimeoutSeconds = 120.0f;  // the same before the first frame (loading fields, opening windows)
-  bool readField = false;        // field = "read": every rank loads the field itself (checked by hash)
-  int chunkKiB = 4096;           // field grids travel in chunks of this size
-  int fieldCache = 4;            // grids each rank keeps (a time-varying field's frames)
-  bool roundRobin = false;       // walls = "round-robin": wall i on rank i % ranks, whatever rank/host say
+  float startupTimeoutSeconds =
+      120.0f;              // the same before the first frame (loading fields, opening windows)
+  bool readField = false;  // field = "read": every rank loads the field itself (checked by hash)
+  int chunkKiB = 4096;     // field grids travel in chunks of this size
+  int fieldCache = 4;      // grids each rank keeps (a time-varying field's frames)
+  bool roundRobin =
+      false;  // walls = "round-robin": wall i on rank i % ranks, whatever rank/host say
   // [cluster] ranks = {front = 1}, hosts = {front = "node-a"}: placement of
   // walls defined elsewhere (an included file); applied once every file is read.
   struct Placement {
@@ -142,7 +148,8 @@ struct AppConfig {
 
 // Reads and validates a configuration. `monitorCount` (when known) checks
 // windows' monitor indices. Throws Error: "config/cave4.toml:14: wall[1].lower_left: ...".
-AppConfig loadConfig(const std::filesystem::path& path, std::optional<int> monitorCount = std::nullopt);
+AppConfig loadConfig(const std::filesystem::path& path,
+                     std::optional<int> monitorCount = std::nullopt);
 AppConfig parseConfig(const std::string& text, const std::filesystem::path& name,
                       std::optional<int> monitorCount = std::nullopt);
 

@@ -24,15 +24,18 @@ class Reader {
     return loc.line() > 0 ? concat(file_, ":", loc.line()) : file_;
   }
 
-  [[noreturn]] void fail(const toml::value& v, const std::string& key, const std::string& what) const {
+  [[noreturn]] void fail(const toml::value& v, const std::string& key,
+                         const std::string& what) const {
     throw Error(concat(at(v), ": ", key, ": ", what));
   }
 
-  void checkKeys(const toml::value& table, const std::string& path, const std::set<std::string>& known) const {
+  void checkKeys(const toml::value& table, const std::string& path,
+                 const std::set<std::string>& known) const {
     for (const auto& [key, value] : table.as_table()) {
       if (known.count(key)) continue;
       std::string list;
-      for (const std::string& k : known) list += (list.empty() ? "" : ", ") + k;
+      for (const std::string& k : known)
+        list += (list.empty() ? "" : ", ") + k;
       fail(value, path.empty() ? key : path + "." + key, "unknown key; expected one of: " + list);
     }
   }
@@ -43,7 +46,8 @@ class Reader {
     return it == t.end() ? nullptr : &it->second;
   }
 
-  const toml::value& require(const toml::value& table, const std::string& key, const std::string& path) const {
+  const toml::value& require(const toml::value& table, const std::string& key,
+                             const std::string& path) const {
     const toml::value* v = find(table, key);
     if (!v) throw Error(concat(at(table), ": ", path, ": missing required key '", key, "'"));
     return *v;
@@ -55,22 +59,25 @@ class Reader {
     fail(v, key, "expected a number");
   }
 
-  float real(const toml::value& table, const std::string& key, const std::string& path, float fallback) const {
+  float real(const toml::value& table, const std::string& key, const std::string& path,
+             float fallback) const {
     const toml::value* v = find(table, key);
     return v ? float(number(*v, path + "." + key)) : fallback;
   }
 
-  int integer(const toml::value& table, const std::string& key, const std::string& path, int fallback,
-              int min, int max) const {
+  int integer(const toml::value& table, const std::string& key, const std::string& path,
+              int fallback, int min, int max) const {
     const toml::value* v = find(table, key);
     if (!v) return fallback;
     if (!v->is_integer()) fail(*v, path + "." + key, "expected an integer");
     const auto i = v->as_integer();
-    if (i < min || i > max) fail(*v, path + "." + key, concat("expected an integer in ", min, "..", max, ", got ", i));
+    if (i < min || i > max)
+      fail(*v, path + "." + key, concat("expected an integer in ", min, "..", max, ", got ", i));
     return int(i);
   }
 
-  bool boolean(const toml::value& table, const std::string& key, const std::string& path, bool fallback) const {
+  bool boolean(const toml::value& table, const std::string& key, const std::string& path,
+               bool fallback) const {
     const toml::value* v = find(table, key);
     if (!v) return fallback;
     if (!v->is_boolean()) fail(*v, path + "." + key, "expected true or false");
@@ -87,9 +94,11 @@ class Reader {
 
   template <int N>
   glm::vec<N, float> vec(const toml::value& v, const std::string& key) const {
-    if (!v.is_array() || v.as_array().size() != std::size_t(N)) fail(v, key, concat("expected ", N, " numbers [..]"));
+    if (!v.is_array() || v.as_array().size() != std::size_t(N))
+      fail(v, key, concat("expected ", N, " numbers [..]"));
     glm::vec<N, float> out;
-    for (int i = 0; i < N; ++i) out[i] = float(number(v.as_array()[std::size_t(i)], key));
+    for (int i = 0; i < N; ++i)
+      out[i] = float(number(v.as_array()[std::size_t(i)], key));
     return out;
   }
 
@@ -129,7 +138,8 @@ AttributeValue attributeValue(const Reader& r, const toml::value& v, const std::
   r.fail(v, key, "expected a number, a boolean, a string or [x, y, z]");
 }
 
-void setAttributes(const Reader& r, const toml::value& table, const std::string& prefix, ParticleState& state) {
+void setAttributes(const Reader& r, const toml::value& table, const std::string& prefix,
+                   ParticleState& state) {
   const AttributeTable& attributes = AttributeTable::instance();
   for (const auto& [key, value] : table.as_table()) {
     const std::string full = prefix + key;
@@ -145,18 +155,25 @@ void setAttributes(const Reader& r, const toml::value& table, const std::string&
 }
 
 void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
-  r.checkKeys(t, "run", {"seed", "capacity", "capacity_limit", "fixed_dt", "frames", "backend", "near", "far"});
+  r.checkKeys(
+      t, "run",
+      {"seed", "capacity", "capacity_limit", "fixed_dt", "frames", "backend", "near", "far"});
   if (const toml::value* seed = r.find(t, "seed")) {
-    if (!seed->is_integer() || seed->as_integer() < 0) r.fail(*seed, "run.seed", "expected a non-negative integer");
+    if (!seed->is_integer() || seed->as_integer() < 0)
+      r.fail(*seed, "run.seed", "expected a non-negative integer");
     run.seed = std::uint64_t(seed->as_integer());
   }
   run.capacity = std::size_t(r.integer(t, "capacity", "run", int(run.capacity), 1, 1 << 27));
-  run.capacityLimit = std::size_t(r.integer(t, "capacity_limit", "run", int(run.capacityLimit), 1, 1 << 28));
-  if (run.capacityLimit < run.capacity) r.fail(t, "run.capacity_limit", "expected capacity_limit >= capacity");
+  run.capacityLimit =
+      std::size_t(r.integer(t, "capacity_limit", "run", int(run.capacityLimit), 1, 1 << 28));
+  if (run.capacityLimit < run.capacity)
+    r.fail(t, "run.capacity_limit", "expected capacity_limit >= capacity");
   run.fixedDt = r.real(t, "fixed_dt", "run", run.fixedDt);
-  if (run.fixedDt < 0.0f || run.fixedDt > 1.0f) r.fail(t, "run.fixed_dt", "expected 0 (real clock) to 1 s");
+  if (run.fixedDt < 0.0f || run.fixedDt > 1.0f)
+    r.fail(t, "run.fixed_dt", "expected 0 (real clock) to 1 s");
   run.frames = r.integer(t, "frames", "run", run.frames, 0, 100000000);
-  run.backend = r.choice<std::string>(t, "backend", "run", run.backend, {{"tf-gs", "tf-gs"}, {"compute", "compute"}});
+  run.backend = r.choice<std::string>(t, "backend", "run", run.backend,
+                                      {{"tf-gs", "tf-gs"}, {"compute", "compute"}});
   run.nearPlane = r.real(t, "near", "run", run.nearPlane);
   run.farPlane = r.real(t, "far", "run", run.farPlane);
   if (!(run.nearPlane > 0.0f) || !(run.farPlane > run.nearPlane))
@@ -171,8 +188,9 @@ std::string relativeTo(const Reader& r, const std::string& path) {
 }
 
 void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
-  r.checkKeys(t, "field", {"source", "name", "dims", "resolution", "bounds_min", "bounds_max", "params", "offset",
-                           "scale", "yaw_deg", "mode"});
+  r.checkKeys(t, "field",
+              {"source", "name", "dims", "resolution", "bounds_min", "bounds_max", "params",
+               "offset", "scale", "yaw_deg", "mode"});
   f.source = r.string(t, "source", "field", f.source);
   if (f.source != "analytic") f.source = relativeTo(r, f.source);
   // A file's array or grid is chosen by name; without one, the file's only (or active) vector one.
@@ -195,13 +213,15 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
     r.fail(t, "field.bounds_min/bounds_max", "expected bounds_min < bounds_max on every axis");
   if (const toml::value* params = r.find(t, "params")) {
     if (!params->is_table()) r.fail(*params, "field.params", "expected a table of numbers");
-    for (const auto& [k, v] : params->as_table()) f.params[k] = r.number(v, "field.params." + k);
+    for (const auto& [k, v] : params->as_table())
+      f.params[k] = r.number(v, "field.params." + k);
   }
   f.placement.offset = r.vec<3>(t, "offset", "field", f.placement.offset);
   f.placement.scale = r.real(t, "scale", "field", f.placement.scale);
   if (!(f.placement.scale > 0.0f)) r.fail(t, "field.scale", "expected a positive scale");
   const float yaw = glm::radians(r.real(t, "yaw_deg", "field", 0.0f));
-  f.placement.rotation = glm::mat3(std::cos(yaw), std::sin(yaw), 0, -std::sin(yaw), std::cos(yaw), 0, 0, 0, 1);
+  f.placement.rotation =
+      glm::mat3(std::cos(yaw), std::sin(yaw), 0, -std::sin(yaw), std::cos(yaw), 0, 0, 0, 1);
 }
 
 void readScene(const Reader& r, const toml::value& t, SceneSpec& s) {
@@ -219,14 +239,18 @@ void readScene(const Reader& r, const toml::value& t, SceneSpec& s) {
 void readHead(const Reader& r, const toml::value& t, HeadSpec& h) {
   r.checkKeys(t, "head", {"mode", "position", "yaw_deg", "eye_separation", "path", "loop"});
   h.mode = r.choice(t, "mode", "head", h.mode,
-                    {{"fixed", HeadMode::Fixed}, {"scripted", HeadMode::Scripted}, {"desktop", HeadMode::Desktop}});
+                    {{"fixed", HeadMode::Fixed},
+                     {"scripted", HeadMode::Scripted},
+                     {"desktop", HeadMode::Desktop}});
   h.position = r.vec<3>(t, "position", "head", h.position);
   h.yawDegrees = r.real(t, "yaw_deg", "head", h.yawDegrees);
   h.eyeSeparation = r.real(t, "eye_separation", "head", h.eyeSeparation);
-  if (h.eyeSeparation < 0.0f || h.eyeSeparation > 0.5f) r.fail(t, "head.eye_separation", "expected 0..0.5 m");
+  if (h.eyeSeparation < 0.0f || h.eyeSeparation > 0.5f)
+    r.fail(t, "head.eye_separation", "expected 0..0.5 m");
   h.loop = r.boolean(t, "loop", "head", h.loop);
   if (const toml::value* path = r.find(t, "path")) {
-    if (!path->is_array()) r.fail(*path, "head.path", "expected an array of {time, position} tables");
+    if (!path->is_array())
+      r.fail(*path, "head.path", "expected an array of {time, position} tables");
     float last = -1.0f;
     for (const toml::value& k : path->as_array()) {
       if (!k.is_table()) r.fail(k, "head.path", "expected {time = .., position = [x, y, z]}");
@@ -250,14 +274,16 @@ void readNavigation(const Reader& r, const toml::value& t, NavigationSpec& n) {
   if (!(n.scale > 0.0f)) r.fail(t, "navigation.scale", "expected a positive scale");
 }
 
-WindowSpec readWindow(const Reader& r, const toml::value& window, const std::string& wp, std::optional<int> monitors) {
+WindowSpec readWindow(const Reader& r, const toml::value& window, const std::string& wp,
+                      std::optional<int> monitors) {
   if (!window.is_table()) r.fail(window, wp, "expected a table");
   r.checkKeys(window, wp, {"monitor", "position", "size", "fullscreen", "decorated"});
   WindowSpec s;
   s.monitor = r.integer(window, "monitor", wp, 0, 0, 63);
   if (monitors && s.monitor >= std::max(*monitors, 1))
     r.fail(*r.find(window, "monitor"), wp + ".monitor",
-           concat("monitor ", s.monitor, " does not exist; ", *monitors, " connected (0..", *monitors - 1, ")"));
+           concat("monitor ", s.monitor, " does not exist; ", *monitors, " connected (0..",
+                  *monitors - 1, ")"));
   s.position = glm::ivec2(r.vec<2>(window, "position", wp, glm::vec2(s.position)));
   s.size = glm::ivec2(r.vec<2>(window, "size", wp, glm::vec2(s.size)));
   if (s.size.x < 16 || s.size.y < 16 || s.size.x > 16384 || s.size.y > 16384)
@@ -269,8 +295,9 @@ WindowSpec readWindow(const Reader& r, const toml::value& window, const std::str
 
 WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optional<int> monitors) {
   const std::string path = concat("wall[", index, "]");
-  r.checkKeys(t, path, {"name", "lower_left", "lower_right", "upper_left", "camera", "window", "offscreen", "stereo",
-                        "menu", "rank", "host"});
+  r.checkKeys(t, path,
+              {"name", "lower_left", "lower_right", "upper_left", "camera", "window", "offscreen",
+               "stereo", "menu", "rank", "host"});
   WallSpec w;
   w.line = int(t.location().line());
   w.name = r.string(t, "name", path, concat("wall", index));
@@ -281,7 +308,8 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
     c.position = r.vec<3>(*camera, "position", path + ".camera", c.position);
     c.target = r.vec<3>(*camera, "target", path + ".camera", c.target);
     c.fovDegrees = r.real(*camera, "fov_deg", path + ".camera", c.fovDegrees);
-    if (c.fovDegrees < 1.0f || c.fovDegrees > 170.0f) r.fail(*camera, path + ".camera.fov_deg", "expected 1..170");
+    if (c.fovDegrees < 1.0f || c.fovDegrees > 170.0f)
+      r.fail(*camera, path + ".camera.fov_deg", "expected 1..170");
     w.camera = c;
   } else {
     w.corners.lowerLeft = r.vec<3>(r.require(t, "lower_left", path), path + ".lower_left");
@@ -296,8 +324,10 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
   if (offscreen) {
     if (!offscreen->is_table()) r.fail(*offscreen, path + ".offscreen", "expected a table");
     r.checkKeys(*offscreen, path + ".offscreen", {"size"});
-    w.offscreenSize = glm::ivec2(r.vec<2>(*offscreen, "size", path + ".offscreen", glm::vec2(w.offscreenSize)));
-    if (w.offscreenSize.x < 16 || w.offscreenSize.y < 16 || w.offscreenSize.x > 16384 || w.offscreenSize.y > 16384)
+    w.offscreenSize =
+        glm::ivec2(r.vec<2>(*offscreen, "size", path + ".offscreen", glm::vec2(w.offscreenSize)));
+    if (w.offscreenSize.x < 16 || w.offscreenSize.y < 16 || w.offscreenSize.x > 16384 ||
+        w.offscreenSize.y > 16384)
       r.fail(*offscreen, path + ".offscreen.size", "expected 16..16384 pixels each way");
   }
   w.stereo = r.choice(t, "stereo", path, w.stereo,
@@ -307,7 +337,8 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
                        {"top-bottom", StereoMode::TopBottom},
                        {"anaglyph", StereoMode::Anaglyph}});
   if (w.stereo == StereoMode::QuadBuffer && !w.window)
-    r.fail(t, path + ".stereo", "quad-buffer stereo needs a window; offscreen walls can use side-by-side");
+    r.fail(t, path + ".stereo",
+           "quad-buffer stereo needs a window; offscreen walls can use side-by-side");
   w.menu = r.boolean(t, "menu", path, w.menu);
   w.rank = r.integer(t, "rank", path, 0, 0, 4095);
   w.host = r.string(t, "host", path, "");
@@ -315,17 +346,21 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
 }
 
 void readCluster(const Reader& r, const toml::value& t, ClusterSpec& c) {
-  r.checkKeys(t, "cluster", {"timeout_s", "startup_timeout_s", "field", "chunk_kib", "field_cache", "walls", "ranks", "hosts"});
+  r.checkKeys(t, "cluster",
+              {"timeout_s", "startup_timeout_s", "field", "chunk_kib", "field_cache", "walls",
+               "ranks", "hosts"});
   c.timeoutSeconds = r.real(t, "timeout_s", "cluster", c.timeoutSeconds);
   if (!(c.timeoutSeconds >= 0.1f && c.timeoutSeconds <= 3600.0f))
     r.fail(*r.find(t, "timeout_s"), "cluster.timeout_s", "expected 0.1..3600 s");
   c.startupTimeoutSeconds = r.real(t, "startup_timeout_s", "cluster", c.startupTimeoutSeconds);
   if (!(c.startupTimeoutSeconds >= 1.0f && c.startupTimeoutSeconds <= 86400.0f))
     r.fail(*r.find(t, "startup_timeout_s"), "cluster.startup_timeout_s", "expected 1..86400 s");
-  c.readField = r.choice<bool>(t, "field", "cluster", c.readField, {{"broadcast", false}, {"read", true}});
+  c.readField =
+      r.choice<bool>(t, "field", "cluster", c.readField, {{"broadcast", false}, {"read", true}});
   c.chunkKiB = r.integer(t, "chunk_kib", "cluster", c.chunkKiB, 1, 1 << 20);
   c.fieldCache = r.integer(t, "field_cache", "cluster", c.fieldCache, 2, 4096);
-  c.roundRobin = r.choice<bool>(t, "walls", "cluster", c.roundRobin, {{"by-rank", false}, {"round-robin", true}});
+  c.roundRobin = r.choice<bool>(t, "walls", "cluster", c.roundRobin,
+                                {{"by-rank", false}, {"round-robin", true}});
   if (const toml::value* ranks = r.find(t, "ranks")) {
     if (!ranks->is_table()) r.fail(*ranks, "cluster.ranks", "expected a table {wall = rank, ..}");
     for (const auto& [wall, rank] : ranks->as_table()) {
@@ -336,11 +371,14 @@ void readCluster(const Reader& r, const toml::value& t, ClusterSpec& c) {
     }
   }
   if (const toml::value* hosts = r.find(t, "hosts")) {
-    if (!hosts->is_table()) r.fail(*hosts, "cluster.hosts", "expected a table {wall = \"host name\", ..}");
+    if (!hosts->is_table())
+      r.fail(*hosts, "cluster.hosts", "expected a table {wall = \"host name\", ..}");
     for (const auto& [wall, host] : hosts->as_table()) {
       const std::string key = "cluster.hosts." + wall;
-      if (!host.is_string() || host.as_string().str.empty()) r.fail(host, key, "expected a host name");
-      c.placements.push_back({wall, std::nullopt, host.as_string().str, concat(r.at(host), ": ", key)});
+      if (!host.is_string() || host.as_string().str.empty())
+        r.fail(host, key, "expected a host name");
+      c.placements.push_back(
+          {wall, std::nullopt, host.as_string().str, concat(r.at(host), ": ", key)});
     }
   }
 }
@@ -348,10 +386,12 @@ void readCluster(const Reader& r, const toml::value& t, ClusterSpec& c) {
 // [cluster] ranks/hosts name walls that may come from an include: applied last.
 void placeWalls(AppConfig& c) {
   for (const ClusterSpec::Placement& p : c.cluster.placements) {
-    const auto it = std::find_if(c.walls.begin(), c.walls.end(), [&](const WallSpec& w) { return w.name == p.wall; });
+    const auto it = std::find_if(c.walls.begin(), c.walls.end(),
+                                 [&](const WallSpec& w) { return w.name == p.wall; });
     if (it == c.walls.end()) {
       std::string known;
-      for (const WallSpec& w : c.walls) known += (known.empty() ? "" : ", ") + w.name;
+      for (const WallSpec& w : c.walls)
+        known += (known.empty() ? "" : ", ") + w.name;
       throw Error(concat(p.where, ": no wall named '", p.wall, "'; the walls are ", known));
     }
     if (p.rank) it->rank = *p.rank;
@@ -377,28 +417,30 @@ std::string readFile(const std::filesystem::path& path, const std::string& from)
 }
 
 // Reads `root` on top of `c` (the included file's settings, if any).
-void read(const toml::value& root, const std::string& file, std::optional<int> monitors, AppConfig& c,
-          int depth);
+void read(const toml::value& root, const std::string& file, std::optional<int> monitors,
+          AppConfig& c, int depth);
 
-AppConfig readWithIncludes(const toml::value& root, const std::string& file, std::optional<int> monitors,
-                           int depth) {
+AppConfig readWithIncludes(const toml::value& root, const std::string& file,
+                           std::optional<int> monitors, int depth) {
   AppConfig c;
   read(root, file, monitors, c, depth);
   return c;
 }
 
-void read(const toml::value& root, const std::string& file, std::optional<int> monitors, AppConfig& c,
-          int depth) {
+void read(const toml::value& root, const std::string& file, std::optional<int> monitors,
+          AppConfig& c, int depth) {
   const Reader r(file);
   r.checkKeys(root, "",
-              {"include", "run", "field", "scene", "sim", "render", "field_playback", "helicopter", "emitter", "head",
-               "navigation", "menu", "cluster", "wall", "pvx", "pvx_up"});
+              {"include", "run", "field", "scene", "sim", "render", "field_playback", "helicopter",
+               "emitter", "head", "navigation", "menu", "cluster", "wall", "pvx", "pvx_up"});
   // include = "scene.toml": that file's settings first, this file's on top.
   if (const toml::value* include = r.find(root, "include")) {
     if (!include->is_string()) r.fail(*include, "include", "expected a file name");
     if (depth > 4) r.fail(*include, "include", "includes nest too deeply");
-    const std::filesystem::path path = std::filesystem::path(file).parent_path() / include->as_string().str;
-    const toml::value inner = parseToml(readFile(path, r.at(*include) + ": include: "), path.string());
+    const std::filesystem::path path =
+        std::filesystem::path(file).parent_path() / include->as_string().str;
+    const toml::value inner =
+        parseToml(readFile(path, r.at(*include) + ": include: "), path.string());
     read(inner, path.string(), monitors, c, depth + 1);
   }
   const auto section = [&](const char* name) -> const toml::value* {
@@ -443,9 +485,11 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
   // Walls from a ParaView CAVE file: pvx = "cave.pvx", pvx_up = "y" (ParaView's usual) or "z".
   if (const toml::value* pvx = r.find(root, "pvx")) {
     if (!pvx->is_string()) r.fail(*pvx, "pvx", "expected the name of a .pvx file");
-    if (r.find(root, "wall")) r.fail(*pvx, "pvx", "give walls either as [[wall]] or from a .pvx file, not both");
+    if (r.find(root, "wall"))
+      r.fail(*pvx, "pvx", "give walls either as [[wall]] or from a .pvx file, not both");
     const std::string up = r.string(root, "pvx_up", "pvx_up", "y");
-    if (up != "y" && up != "z") r.fail(*r.find(root, "pvx_up"), "pvx_up", "expected \"y\" or \"z\"");
+    if (up != "y" && up != "z")
+      r.fail(*r.find(root, "pvx_up"), "pvx_up", "expected \"y\" or \"z\"");
     c.walls = readPvx(relativeTo(r, pvx->as_string().str), up == "y");
     return;
   }
@@ -457,12 +501,15 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
   for (const toml::value& w : walls->as_array()) {
     if (!w.is_table()) r.fail(w, "wall", "expected a table");
     c.walls.push_back(readWall(r, w, int(c.walls.size()), monitors));
-    if (!names.insert(c.walls.back().name).second) r.fail(w, "wall.name", "'" + c.walls.back().name + "' is used twice");
+    if (!names.insert(c.walls.back().name).second)
+      r.fail(w, "wall.name", "'" + c.walls.back().name + "' is used twice");
   }
   if (c.walls.empty()) throw Error(concat(file, ": [[wall]] is empty; expected at least one wall"));
   int menus = 0;
-  for (const WallSpec& w : c.walls) menus += w.menu ? 1 : 0;
-  if (menus > 1) throw Error(concat(file, ": the menu is shown on ", menus, " walls; expected at most one"));
+  for (const WallSpec& w : c.walls)
+    menus += w.menu ? 1 : 0;
+  if (menus > 1)
+    throw Error(concat(file, ": the menu is shown on ", menus, " walls; expected at most one"));
 }
 
 }  // namespace
@@ -473,10 +520,12 @@ bool AppConfig::anyWindow() const {
   return false;
 }
 
-AppConfig parseConfig(const std::string& text, const std::filesystem::path& name, std::optional<int> monitors) {
+AppConfig parseConfig(const std::string& text, const std::filesystem::path& name,
+                      std::optional<int> monitors) {
   AppConfig c = readWithIncludes(parseToml(text, name.string()), name.string(), monitors, 0);
   if (c.walls.empty())
-    throw Error(concat(name.string(), ": no [[wall]] given; expected at least one wall, window or camera"));
+    throw Error(
+        concat(name.string(), ": no [[wall]] given; expected at least one wall, window or camera"));
   placeWalls(c);
   c.path = name;
   return c;
@@ -488,11 +537,16 @@ AppConfig loadConfig(const std::filesystem::path& path, std::optional<int> monit
 
 const char* toString(StereoMode mode) {
   switch (mode) {
-    case StereoMode::Mono: return "mono";
-    case StereoMode::QuadBuffer: return "quad-buffer";
-    case StereoMode::SideBySide: return "side-by-side";
-    case StereoMode::TopBottom: return "top-bottom";
-    case StereoMode::Anaglyph: return "anaglyph";
+    case StereoMode::Mono:
+      return "mono";
+    case StereoMode::QuadBuffer:
+      return "quad-buffer";
+    case StereoMode::SideBySide:
+      return "side-by-side";
+    case StereoMode::TopBottom:
+      return "top-bottom";
+    case StereoMode::Anaglyph:
+      return "anaglyph";
   }
   return "?";
 }

@@ -20,19 +20,22 @@ std::map<std::string, std::string> attributes(const std::string& tag, const std:
     const std::size_t eq = tag.find('=', nameStart);
     if (eq == std::string::npos) break;
     std::string name = tag.substr(nameStart, eq - nameStart);
-    while (!name.empty() && std::isspace(static_cast<unsigned char>(name.back()))) name.pop_back();
+    while (!name.empty() && std::isspace(static_cast<unsigned char>(name.back())))
+      name.pop_back();
     const std::size_t open = tag.find_first_of("\"'", eq);
-    if (open == std::string::npos) throw Error(where + ": attribute " + name + " has no quoted value");
+    if (open == std::string::npos)
+      throw Error(where + ": attribute " + name + " has no quoted value");
     const std::size_t close = tag.find(tag[open], open + 1);
-    if (close == std::string::npos) throw Error(where + ": attribute " + name + "'s value is not closed");
+    if (close == std::string::npos)
+      throw Error(where + ": attribute " + name + "'s value is not closed");
     out[name] = tag.substr(open + 1, close - open - 1);
     i = close + 1;
   }
   return out;
 }
 
-glm::vec3 corner(const std::map<std::string, std::string>& a, const std::string& key, const std::string& where,
-                 bool yUp) {
+glm::vec3 corner(const std::map<std::string, std::string>& a, const std::string& key,
+                 const std::string& where, bool yUp) {
   const auto it = a.find(key);
   if (it == a.end()) throw Error(where + ": missing " + key + " (expected three numbers)");
   std::istringstream in(it->second);
@@ -71,7 +74,8 @@ std::vector<WallSpec> parsePvx(const std::string& text, const std::string& name,
       if (!(in >> s.size.x >> x >> s.size.y) || x != 'x' || s.size.x < 16 || s.size.y < 16)
         throw Error(where + ": Geometry=\"" + g->second + "\"; expected WIDTHxHEIGHT+X+Y");
       if (in >> p1 >> s.position.x >> p2 >> s.position.y) {
-        if (p1 != '+' || p2 != '+') throw Error(where + ": Geometry=\"" + g->second + "\"; expected WIDTHxHEIGHT+X+Y");
+        if (p1 != '+' || p2 != '+')
+          throw Error(where + ": Geometry=\"" + g->second + "\"; expected WIDTHxHEIGHT+X+Y");
       }
       s.fullscreen = a.count("FullScreen") && a.at("FullScreen") == "1";
       s.decorated = !s.fullscreen;
@@ -81,7 +85,8 @@ std::vector<WallSpec> parsePvx(const std::string& text, const std::string& name,
     walls.push_back(w);
     at = end;
   }
-  if (walls.empty()) throw Error(name + ": no <Machine> with screen corners; is this a ParaView .pvx file?");
+  if (walls.empty())
+    throw Error(name + ": no <Machine> with screen corners; is this a ParaView .pvx file?");
   return walls;
 }
 

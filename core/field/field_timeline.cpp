@@ -7,18 +7,21 @@
 
 namespace sandstorm {
 
-FieldTimeline::FieldTimeline(std::vector<double> times, std::vector<std::shared_ptr<const VectorField>> frames)
+FieldTimeline::FieldTimeline(std::vector<double> times,
+                             std::vector<std::shared_ptr<const VectorField>> frames)
     : times_(std::move(times)), frames_(std::move(frames)) {
   if (frames_.empty() || frames_.size() != times_.size())
     throw Error(concat("FieldTimeline: ", frames_.size(), " frames for ", times_.size(), " times"));
   for (std::size_t i = 0; i < frames_.size(); ++i) {
     if (!frames_[i]) throw Error(concat("FieldTimeline: frame ", i, " is missing"));
     if (i > 0 && !(times_[i] > times_[i - 1]))
-      throw Error(concat("FieldTimeline: frame ", i, "'s time ", times_[i], " does not follow ", times_[i - 1]));
+      throw Error(concat("FieldTimeline: frame ", i, "'s time ", times_[i], " does not follow ",
+                         times_[i - 1]));
     const VectorField& f = *frames_[i];
     if (f.dims() != frames_[0]->dims() || f.bounds().min != frames_[0]->bounds().min ||
         f.bounds().max != frames_[0]->bounds().max)
-      throw Error(concat("FieldTimeline: frame ", i, " has another grid than frame 0; frames must share dims and bounds"));
+      throw Error(concat("FieldTimeline: frame ", i,
+                         " has another grid than frame 0; frames must share dims and bounds"));
   }
 }
 
@@ -37,7 +40,8 @@ FieldTimeline::Position FieldTimeline::at(double t, bool loop) const {
   }
   if (t <= start) return {0, 1, 0.0f};  // frame 0, already paired with the next one
   if (t >= end) return {n - 1, n - 1, 0.0f};
-  const std::size_t b = std::size_t(std::upper_bound(times_.begin(), times_.end(), t) - times_.begin());
+  const std::size_t b =
+      std::size_t(std::upper_bound(times_.begin(), times_.end(), t) - times_.begin());
   const std::size_t a = b - 1;
   return {a, b, float((t - times_[a]) / (times_[b] - times_[a]))};
 }

@@ -12,12 +12,14 @@ HeightMap::HeightMap(glm::vec2 min, glm::vec2 max, glm::ivec2 dims, std::vector<
     throw Error(concat("HeightMap: ", dims.x, "x", dims.y, " grid; expected at least 2x2"));
   if (!(max.x > min.x) || !(max.y > min.y)) throw Error("HeightMap: empty extent");
   if (heights_.size() != std::size_t(dims.x) * std::size_t(dims.y))
-    throw Error(concat("HeightMap: ", heights_.size(), " heights for a ", dims.x, "x", dims.y, " grid"));
+    throw Error(
+        concat("HeightMap: ", heights_.size(), " heights for a ", dims.x, "x", dims.y, " grid"));
   indexScale_ = glm::vec2(dims - 1) / (max - min);
 }
 
 HeightMap HeightMap::flat(float height, float halfSize) {
-  return HeightMap({-halfSize, -halfSize}, {halfSize, halfSize}, {2, 2}, std::vector<float>(4, height));
+  return HeightMap({-halfSize, -halfSize}, {halfSize, halfSize}, {2, 2},
+                   std::vector<float>(4, height));
 }
 
 float HeightMap::heightAt(glm::vec2 p) const {
@@ -38,7 +40,11 @@ glm::vec3 HeightMap::normalAt(glm::vec2 p) const {
   return glm::normalize(glm::vec3(-dx / (2 * d.x), -dy / (2 * d.y), 1.0f));
 }
 
-float HeightMap::minHeight() const { return *std::min_element(heights_.begin(), heights_.end()); }
-float HeightMap::maxHeight() const { return *std::max_element(heights_.begin(), heights_.end()); }
+float HeightMap::minHeight() const {
+  return *std::min_element(heights_.begin(), heights_.end());
+}
+float HeightMap::maxHeight() const {
+  return *std::max_element(heights_.begin(), heights_.end());
+}
 
 }  // namespace sandstorm

@@ -15,7 +15,8 @@ namespace sandstorm {
 
 // Throws Error naming the file and what was expected (magic, size, maxval, truncation).
 HeightMap readHeightMapPgm(const std::filesystem::path& path, const Box& extent);
-void writeHeightMapPgm(const HeightMap& map, const std::filesystem::path& path, float minHeight, float maxHeight);
+void writeHeightMapPgm(const HeightMap& map, const std::filesystem::path& path, float minHeight,
+                       float maxHeight);
 
 // Dunes: long wind-made ridges with noise, heights in [0, 1]. Deterministic.
 HeightMap duneTerrain(glm::ivec2 dims, glm::vec2 size, std::uint32_t seed);

@@ -23,8 +23,8 @@ void validate(const Box& bounds, const glm::ivec3& dims) {
     if (!std::isfinite(bounds.min[a]) || !std::isfinite(bounds.max[a]))
       throw Error(concat("VectorField: bounds along ", "xyz"[a], " are not finite"));
     if (dims[a] > 1 && !(extent > 0.0f))
-      throw Error(concat("VectorField: bounds along ", "xyz"[a], " span ", extent,
-                         " m for ", dims[a], " points; expected a positive extent"));
+      throw Error(concat("VectorField: bounds along ", "xyz"[a], " span ", extent, " m for ",
+                         dims[a], " points; expected a positive extent"));
   }
 }
 
@@ -79,7 +79,8 @@ glm::vec3 VectorField::sample(const glm::vec3& p) const {
 
 float VectorField::maxMagnitude() const {
   float m = 0.0f;
-  for (const glm::vec3& v : values_) m = std::max(m, glm::length(v));
+  for (const glm::vec3& v : values_)
+    m = std::max(m, glm::length(v));
   return m;
 }
 

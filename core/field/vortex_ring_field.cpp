@@ -19,7 +19,8 @@ glm::vec3 VortexRingField::evaluate(const glm::vec3& p) const {
   // In the (radial, vertical) half-plane: offset from the core circle.
   const float dr = r - params_.ringRadius, dz = t.z - params_.height;
   const float d2 = dr * dr + dz * dz, c = params_.core;
-  const float speed = params_.strength * 2.0f * c / (d2 + c * c);  // times d, below, gives the profile
+  const float speed =
+      params_.strength * 2.0f * c / (d2 + c * c);  // times d, below, gives the profile
   // Turning so that below the core (dz < 0) the flow runs outwards: (u_r, u_z) = speed * (-dz, dr).
   const float ur = -dz * speed, uz = dr * speed;
   return {outward.x * ur, outward.y * ur, uz};

@@ -13,11 +13,11 @@
 namespace sandstorm {
 
 struct VortexRingParams {
-  glm::vec3 center{0.0f};   // on the ground, under the ring's axis
-  float ringRadius = 12.0f; // m
-  float height = 4.0f;      // m: the core circle above `center`
-  float core = 4.0f;        // m: core radius (where the speed peaks)
-  float strength = 4.0f;    // m/s: peak speed
+  glm::vec3 center{0.0f};    // on the ground, under the ring's axis
+  float ringRadius = 12.0f;  // m
+  float height = 4.0f;       // m: the core circle above `center`
+  float core = 4.0f;         // m: core radius (where the speed peaks)
+  float strength = 4.0f;     // m/s: peak speed
 };
 
 class VortexRingField final : public AnalyticField {

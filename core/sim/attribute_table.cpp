@@ -27,7 +27,9 @@ AttributeInfo entry(std::string key, AttributeType type, float min, float max, s
   info.get = [ref](const ParticleState& s, int e) {
     return AttributeValue(ref(const_cast<ParticleState&>(s), e));
   };
-  info.set = [ref](ParticleState& s, int e, const AttributeValue& v) { ref(s, e) = std::get<T>(v); };
+  info.set = [ref](ParticleState& s, int e, const AttributeValue& v) {
+    ref(s, e) = std::get<T>(v);
+  };
   info.defaultValue = info.get(ParticleState{}, 0);
   return info;
 }
@@ -52,15 +54,20 @@ AttributeInfo enumEntry(std::string key, std::vector<std::string> choices, std::
   return info;
 }
 
-#define SIM(member) Ref<decltype(SimSettings::member)>([](ParticleState& s, int) -> auto& { return s.sim.member; })
-#define RENDER(member) \
-  Ref<decltype(RenderSettings::member)>([](ParticleState& s, int) -> auto& { return s.render.member; })
-#define FIELD(member) \
-  Ref<decltype(FieldPlayback::member)>([](ParticleState& s, int) -> auto& { return s.field.member; })
-#define HELICOPTER(member) \
-  Ref<decltype(HelicopterSettings::member)>([](ParticleState& s, int) -> auto& { return s.helicopter.member; })
-#define EMITTER(member) \
-  Ref<decltype(Emitter::member)>([](ParticleState& s, int e) -> auto& { return s.emitters[std::size_t(e)].member; })
+#define SIM(member) \
+  Ref<decltype(SimSettings::member)>([](ParticleState & s, int) -> auto& { return s.sim.member; })
+#define RENDER(member)                   \
+  Ref<decltype(RenderSettings::member)>( \
+      [](ParticleState & s, int) -> auto& { return s.render.member; })
+#define FIELD(member)                   \
+  Ref<decltype(FieldPlayback::member)>( \
+      [](ParticleState & s, int) -> auto& { return s.field.member; })
+#define HELICOPTER(member)                   \
+  Ref<decltype(HelicopterSettings::member)>( \
+      [](ParticleState & s, int) -> auto& { return s.helicopter.member; })
+#define EMITTER(member)           \
+  Ref<decltype(Emitter::member)>( \
+      [](ParticleState & s, int e) -> auto& { return s.emitters[std::size_t(e)].member; })
 
 constexpr float kBig = 1e6f;
 
@@ -69,7 +76,8 @@ std::vector<AttributeInfo> makeEntries() {
   std::vector<AttributeInfo> v;
   // The system.
   v.push_back(entry("sim.maximum", T::Int, 0, 1e8f, "particles",
-                    "Soft limit on live particles; the buffer capacity is the hard one", SIM(maximum)));
+                    "Soft limit on live particles; the buffer capacity is the hard one",
+                    SIM(maximum)));
   v.push_back(enumEntry("sim.motion", {"tracer", "force", "drag"},
                         "How the field moves particles: as velocity, acceleration, or drag target",
                         SIM(motion)));
@@ -88,31 +96,39 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("sim.ground_collision", T::Bool, 0, 1, "",
                     "Particles bounce off the ground or terrain", SIM(groundCollision)));
   v.push_back(entry("sim.restitution", T::Float, 0, 1, "",
-                    "Fraction of normal speed kept when bouncing off the ground", SIM(restitution)));
-  v.push_back(entry("sim.emitting", T::Bool, 0, 1, "", "Start/stop emission (existing particles live on)",
-                    SIM(emitting)));
+                    "Fraction of normal speed kept when bouncing off the ground",
+                    SIM(restitution)));
+  v.push_back(entry("sim.emitting", T::Bool, 0, 1, "",
+                    "Start/stop emission (existing particles live on)", SIM(emitting)));
   v.push_back(entry("sim.paused", T::Bool, 0, 1, "", "Pause: time stands still", SIM(paused)));
-  v.push_back(entry("sim.lod", T::Bool, 0, 1, "",
-                    "Level of detail (Reeves): emit fewer particles when the system covers little of the view "
-                    "or frames exceed the budget",
-                    SIM(lod)));
-  v.push_back(entry("sim.lod_coverage", T::Float, 0, 1, "",
-                    "Level of detail: view coverage (fraction of a 90-degree cone) from which emission is full",
-                    SIM(lodCoverage)));
+  v.push_back(entry(
+      "sim.lod", T::Bool, 0, 1, "",
+      "Level of detail (Reeves): emit fewer particles when the system covers little of the view "
+      "or frames exceed the budget",
+      SIM(lod)));
+  v.push_back(entry(
+      "sim.lod_coverage", T::Float, 0, 1, "",
+      "Level of detail: view coverage (fraction of a 90-degree cone) from which emission is full",
+      SIM(lodCoverage)));
   v.push_back(entry("sim.lod_budget_ms", T::Float, 0, 1000, "ms",
-                    "Level of detail: frame-time budget; longer frames lower emission (0: off)", SIM(lodBudgetMs)));
+                    "Level of detail: frame-time budget; longer frames lower emission (0: off)",
+                    SIM(lodBudgetMs)));
   v.push_back(entry("sim.lod_min_scale", T::Float, 0, 1, "",
-                    "Level of detail: emission never drops below this fraction of the rates", SIM(lodMinScale)));
+                    "Level of detail: emission never drops below this fraction of the rates",
+                    SIM(lodMinScale)));
   // How particles look.
-  v.push_back(enumEntry("render.mode", {"points", "billboards", "splat", "auto"},
-                        "Draw particles as points, lit spherical billboards, splats (billboards' look, "
-                        "by compute: for small particles) or auto (splats where particles are small)",
-                        RENDER(mode)));
+  v.push_back(
+      enumEntry("render.mode", {"points", "billboards", "splat", "auto"},
+                "Draw particles as points, lit spherical billboards, splats (billboards' look, "
+                "by compute: for small particles) or auto (splats where particles are small)",
+                RENDER(mode)));
   v.push_back(entry("render.size", T::Float, 1e-4f, 10, "m", "Particle diameter", RENDER(size)));
-  v.push_back(entry("render.color_birth", T::Vec3, 0, 1, "rgb", "Colour at birth", RENDER(colorBirth)));
+  v.push_back(
+      entry("render.color_birth", T::Vec3, 0, 1, "rgb", "Colour at birth", RENDER(colorBirth)));
   v.push_back(entry("render.color_death", T::Vec3, 0, 1, "rgb", "Colour at the end of life",
                     RENDER(colorDeath)));
-  v.push_back(entry("render.opacity_birth", T::Float, 0, 1, "", "Opacity at birth", RENDER(opacityBirth)));
+  v.push_back(
+      entry("render.opacity_birth", T::Float, 0, 1, "", "Opacity at birth", RENDER(opacityBirth)));
   v.push_back(entry("render.opacity_death", T::Float, 0, 1, "", "Opacity at the end of life",
                     RENDER(opacityDeath)));
   v.push_back(entry("render.light_direction", T::Vec3, -1, 1, "",
@@ -125,29 +141,34 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("render.splat_pixels", T::Float, 0, 64, "px",
                     "Auto mode: views where particles cover at most this many pixels use splats",
                     RENDER(splatPixels)));
-  v.push_back(entry("render.field_box", T::Bool, 0, 1, "", "Outline the field's bounds", RENDER(fieldBox)));
+  v.push_back(
+      entry("render.field_box", T::Bool, 0, 1, "", "Outline the field's bounds", RENDER(fieldBox)));
   // A time-varying field's playback.
-  v.push_back(entry("field.speed", T::Float, 0, 100, "x", "Field seconds per simulated second (time-varying fields)",
-                    FIELD(speed)));
+  v.push_back(entry("field.speed", T::Float, 0, 100, "x",
+                    "Field seconds per simulated second (time-varying fields)", FIELD(speed)));
   v.push_back(entry("field.loop", T::Bool, 0, 1, "", "Loop a time-varying field", FIELD(loop)));
-  v.push_back(enumEntry("field.mode", {"texture", "equation"},
-                        "Sample the field's grid (3D texture) or evaluate an analytic field's equation in the "
-                        "shader (analytic fields only; others stay on the texture)",
-                        FIELD(mode)));
-  v.push_back(entry("field.paused", T::Bool, 0, 1, "", "Hold the time-varying field's current frame",
-                    FIELD(paused)));
+  v.push_back(enumEntry(
+      "field.mode", {"texture", "equation"},
+      "Sample the field's grid (3D texture) or evaluate an analytic field's equation in the "
+      "shader (analytic fields only; others stay on the texture)",
+      FIELD(mode)));
+  v.push_back(entry("field.paused", T::Bool, 0, 1, "",
+                    "Hold the time-varying field's current frame", FIELD(paused)));
   // The downdraft demo's helicopter.
-  v.push_back(entry("helicopter.enabled", T::Bool, 0, 1, "", "Show the helicopter; its controls drive the dust",
-                    HELICOPTER(enabled)));
+  v.push_back(entry("helicopter.enabled", T::Bool, 0, 1, "",
+                    "Show the helicopter; its controls drive the dust", HELICOPTER(enabled)));
   v.push_back(entry("helicopter.throttle", T::Float, 0, 1, "",
-                    "Throttle: more raises dust rate, lifetime and maximum (about 0.8 hovers)", HELICOPTER(throttle)));
-  v.push_back(entry("helicopter.altitude", T::Float, 1, 60, "m", "Rotor hub above the ground; high up, less dust",
-                    HELICOPTER(altitude)));
-  v.push_back(entry("helicopter.x", T::Float, -90, 90, "m", "Rotor hub position east", HELICOPTER(x)));
-  v.push_back(entry("helicopter.y", T::Float, -90, 90, "m", "Rotor hub position north", HELICOPTER(y)));
+                    "Throttle: more raises dust rate, lifetime and maximum (about 0.8 hovers)",
+                    HELICOPTER(throttle)));
+  v.push_back(entry("helicopter.altitude", T::Float, 1, 60, "m",
+                    "Rotor hub above the ground; high up, less dust", HELICOPTER(altitude)));
+  v.push_back(
+      entry("helicopter.x", T::Float, -90, 90, "m", "Rotor hub position east", HELICOPTER(x)));
+  v.push_back(
+      entry("helicopter.y", T::Float, -90, 90, "m", "Rotor hub position north", HELICOPTER(y)));
   // Emitters.
-  v.push_back(enumEntry("emitter.*.shape", {"box", "sphere", "disc", "point"}, "Emission area shape",
-                        EMITTER(shape)));
+  v.push_back(enumEntry("emitter.*.shape", {"box", "sphere", "disc", "point"},
+                        "Emission area shape", EMITTER(shape)));
   v.push_back(entry("emitter.*.position", T::Vec3, -kBig, kBig, "m", "Centre of the emission area",
                     EMITTER(position)));
   v.push_back(entry("emitter.*.width", T::Float, 0, kBig, "m", "Box emission area along x",
@@ -156,12 +177,13 @@ std::vector<AttributeInfo> makeEntries() {
                     EMITTER(depth)));
   v.push_back(entry("emitter.*.height", T::Float, 0, kBig, "m", "Box emission area along z",
                     EMITTER(height)));
-  v.push_back(entry("emitter.*.radius", T::Float, 0, kBig, "m", "Sphere or disc radius",
-                    EMITTER(radius)));
+  v.push_back(
+      entry("emitter.*.radius", T::Float, 0, kBig, "m", "Sphere or disc radius", EMITTER(radius)));
   v.push_back(entry("emitter.*.rate", T::Float, 0, 1e8f, "particles/s",
                     "Mean emission rate (Reeves)", EMITTER(rate)));
   v.push_back(entry("emitter.*.rate_variance", T::Float, 0, 1e8f, "particles/s",
-                    "Emission rate varies uniformly by +- this much (Reeves)", EMITTER(rateVariance)));
+                    "Emission rate varies uniformly by +- this much (Reeves)",
+                    EMITTER(rateVariance)));
   v.push_back(entry("emitter.*.lifetime", T::Float, 1e-3f, 1e4f, "s", "Mean particle lifetime",
                     EMITTER(lifetime)));
   v.push_back(entry("emitter.*.lifetime_variance", T::Float, 0, 1e4f, "s",
@@ -191,18 +213,25 @@ constexpr Alias kAliases[] = {
 
 const char* typeName(AttributeType t) {
   switch (t) {
-    case AttributeType::Bool: return "a boolean (true/false)";
-    case AttributeType::Int: return "an integer";
-    case AttributeType::Float: return "a number";
-    case AttributeType::Vec3: return "three numbers (x y z)";
-    case AttributeType::Enum: return "one of the listed choices";
+    case AttributeType::Bool:
+      return "a boolean (true/false)";
+    case AttributeType::Int:
+      return "an integer";
+    case AttributeType::Float:
+      return "a number";
+    case AttributeType::Vec3:
+      return "three numbers (x y z)";
+    case AttributeType::Enum:
+      return "one of the listed choices";
   }
   return "?";
 }
 
 bool parseFloat(std::string_view s, float& out) {
-  while (!s.empty() && s.front() == ' ') s.remove_prefix(1);
-  while (!s.empty() && s.back() == ' ') s.remove_suffix(1);
+  while (!s.empty() && s.front() == ' ')
+    s.remove_prefix(1);
+  while (!s.empty() && s.back() == ' ')
+    s.remove_suffix(1);
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
   return ec == std::errc() && end == s.data() + s.size() && std::isfinite(out);
@@ -210,7 +239,8 @@ bool parseFloat(std::string_view s, float& out) {
 
 std::string joined(const std::vector<std::string>& items) {
   std::string s;
-  for (const auto& i : items) s += (s.empty() ? "" : ", ") + i;
+  for (const auto& i : items)
+    s += (s.empty() ? "" : ", ") + i;
   return s;
 }
 
@@ -254,8 +284,9 @@ const AttributeInfo& AttributeTable::lookup(std::string_view rawKey, int* emitte
   const std::string section = pattern.substr(0, pattern.rfind('.') + 1);
   for (const AttributeInfo& info : entries_)
     if (!section.empty() && info.key.starts_with(section)) close.push_back(info.key);
-  throw Error(concat("unknown attribute '", rawKey, "'",
-                     close.empty() ? std::string("") : "; known in this section: " + joined(close)));
+  throw Error(
+      concat("unknown attribute '", rawKey, "'",
+             close.empty() ? std::string("") : "; known in this section: " + joined(close)));
 }
 
 AttributeValue AttributeTable::parse(std::string_view key, std::string_view text) const {
@@ -292,7 +323,8 @@ AttributeValue AttributeTable::parse(std::string_view key, std::string_view text
       return v;
     }
     case AttributeType::Enum:
-      if (std::find(info.choices.begin(), info.choices.end(), text) == info.choices.end()) throw fail();
+      if (std::find(info.choices.begin(), info.choices.end(), text) == info.choices.end())
+        throw fail();
       return std::string(text);
   }
   throw fail();
@@ -302,24 +334,32 @@ AttributeResult AttributeTable::validate(std::string_view key, const AttributeVa
   const AttributeInfo& info = lookup(key);
   AttributeValue v = value;
   // Accept numbers across int/float, as configs and menus mix them.
-  if (info.type == AttributeType::Float && std::holds_alternative<int>(v)) v = float(std::get<int>(v));
+  if (info.type == AttributeType::Float && std::holds_alternative<int>(v))
+    v = float(std::get<int>(v));
   if (info.type == AttributeType::Int && std::holds_alternative<float>(v)) {
     const float f = std::get<float>(v);
-    if (f != std::floor(f)) throw Error(concat("attribute '", key, "': expected an integer, got ", f));
+    if (f != std::floor(f))
+      throw Error(concat("attribute '", key, "': expected an integer, got ", f));
     v = int(std::clamp(f, -2e9f, 2e9f));
   }
   const std::size_t expected = [&] {
     switch (info.type) {
-      case AttributeType::Bool: return std::size_t{0};
-      case AttributeType::Int: return std::size_t{1};
-      case AttributeType::Float: return std::size_t{2};
-      case AttributeType::Vec3: return std::size_t{3};
-      case AttributeType::Enum: return std::size_t{4};
+      case AttributeType::Bool:
+        return std::size_t{0};
+      case AttributeType::Int:
+        return std::size_t{1};
+      case AttributeType::Float:
+        return std::size_t{2};
+      case AttributeType::Vec3:
+        return std::size_t{3};
+      case AttributeType::Enum:
+        return std::size_t{4};
     }
     return std::size_t{0};
   }();
   if (v.index() != expected)
-    throw Error(concat("attribute '", key, "': expected ", typeName(info.type), ", got ", toString(value)));
+    throw Error(
+        concat("attribute '", key, "': expected ", typeName(info.type), ", got ", toString(value)));
 
   AttributeResult result{v, {}};
   const auto clampReport = [&](float x) {
@@ -332,10 +372,13 @@ AttributeResult AttributeTable::validate(std::string_view key, const AttributeVa
       result.applied = int(clampReport(float(x)));
       break;
     }
-    case AttributeType::Float: result.applied = clampReport(std::get<float>(v)); break;
+    case AttributeType::Float:
+      result.applied = clampReport(std::get<float>(v));
+      break;
     case AttributeType::Vec3: {
       glm::vec3 x = std::get<glm::vec3>(v);
-      for (int i = 0; i < 3; ++i) x[i] = clampReport(x[i]);
+      for (int i = 0; i < 3; ++i)
+        x[i] = clampReport(x[i]);
       result.applied = x;
       break;
     }
@@ -345,7 +388,8 @@ AttributeResult AttributeTable::validate(std::string_view key, const AttributeVa
         throw Error(concat("attribute '", key, "': '", std::get<std::string>(v),
                            "' is not one of: ", joined(info.choices)));
       break;
-    case AttributeType::Bool: break;
+    case AttributeType::Bool:
+      break;
   }
   if (toString(result.applied) != toString(v))
     result.warning = concat("attribute '", key, "': ", toString(v), " is outside [", info.min, ", ",
@@ -381,7 +425,8 @@ std::string AttributeTable::describe(const ParticleState& state) const {
       continue;
     }
     for (std::size_t e = 0; e < state.emitters.size(); ++e)
-      out += "emitter." + std::to_string(e) + "." + info.key.substr(10) + "=" + toString(info.get(state, int(e))) + "\n";
+      out += "emitter." + std::to_string(e) + "." + info.key.substr(10) + "=" +
+             toString(info.get(state, int(e))) + "\n";
   }
   return out;
 }
@@ -391,9 +436,12 @@ std::string toString(const AttributeValue& value) {
   std::visit(
       [&](const auto& x) {
         using X = std::decay_t<decltype(x)>;
-        if constexpr (std::is_same_v<X, bool>) os << (x ? "true" : "false");
-        else if constexpr (std::is_same_v<X, glm::vec3>) os << x.x << ' ' << x.y << ' ' << x.z;
-        else os << x;
+        if constexpr (std::is_same_v<X, bool>)
+          os << (x ? "true" : "false");
+        else if constexpr (std::is_same_v<X, glm::vec3>)
+          os << x.x << ' ' << x.y << ' ' << x.z;
+        else
+          os << x;
       },
       value);
   return os.str();

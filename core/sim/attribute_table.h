@@ -75,7 +75,8 @@ class AttributeTable {
   AttributeResult validate(std::string_view key, const AttributeValue& value) const;
 
   // validate(), then store. Throws for an emitter index that does not exist.
-  AttributeResult set(ParticleState& state, std::string_view key, const AttributeValue& value) const;
+  AttributeResult set(ParticleState& state, std::string_view key,
+                      const AttributeValue& value) const;
   AttributeValue get(const ParticleState& state, std::string_view key) const;
 
   // Every attribute as "key=value" lines, emitters included: a fingerprint of a

@@ -44,7 +44,8 @@ struct Seed {
 
 inline glm::uvec4 randomBits(Seed seed, std::uint32_t frame, std::uint32_t emitter,
                              std::uint32_t index, RngStream stream) {
-  return pcg4d(glm::uvec4(index ^ seed.hi, frame, (emitter << 8u) | std::uint32_t(stream), seed.lo));
+  return pcg4d(
+      glm::uvec4(index ^ seed.hi, frame, (emitter << 8u) | std::uint32_t(stream), seed.lo));
 }
 
 // Four uniform numbers in [0, 1), each with 24 random bits (exact in float).

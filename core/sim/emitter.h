@@ -12,16 +12,16 @@ enum class EmitterShape : int { Box = 0, Sphere = 1, Disc = 2, Point = 3 };
 struct Emitter {
   EmitterShape shape = EmitterShape::Box;
   glm::vec3 position{0.0f};
-  float width = 1.0f;   // m, along x (box)
-  float depth = 1.0f;   // m, along y (box)
-  float height = 0.0f;  // m, along z (box)
-  float radius = 0.5f;  // m (sphere, disc; the disc lies in the horizontal plane)
-  float rate = 1000.0f;          // particles/s, Reeves' mean
-  float rateVariance = 0.0f;     // particles/s, Reeves' variance: rate +- rateVariance
-  float lifetime = 4.0f;         // s
-  float lifetimeVariance = 0.0f; // s: lifetime +- lifetimeVariance
-  glm::vec3 velocity{0.0f};      // m/s at birth
-  float spread = 0.0f;           // m/s: radius of the random ball added to velocity
+  float width = 1.0f;             // m, along x (box)
+  float depth = 1.0f;             // m, along y (box)
+  float height = 0.0f;            // m, along z (box)
+  float radius = 0.5f;            // m (sphere, disc; the disc lies in the horizontal plane)
+  float rate = 1000.0f;           // particles/s, Reeves' mean
+  float rateVariance = 0.0f;      // particles/s, Reeves' variance: rate +- rateVariance
+  float lifetime = 4.0f;          // s
+  float lifetimeVariance = 0.0f;  // s: lifetime +- lifetimeVariance
+  glm::vec3 velocity{0.0f};       // m/s at birth
+  float spread = 0.0f;            // m/s: radius of the random ball added to velocity
   bool enabled = true;
 };
 

@@ -37,7 +37,7 @@ class FrameChannel {
   mutable std::mutex mutex_;
   std::condition_variable changed_;
   std::deque<std::shared_ptr<const FramePacket>> packets_;
-  std::uint64_t first_ = 0;  // sequence number of packets_.front()
+  std::uint64_t first_ = 0;          // sequence number of packets_.front()
   std::vector<std::uint64_t> next_;  // per consumer: the sequence number it takes next
   std::vector<bool> active_;
   int depth_;

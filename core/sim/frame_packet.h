@@ -21,7 +21,7 @@ namespace sandstorm {
 struct FieldUpdate {
   std::shared_ptr<const VectorField> field;  // the new grid (shared, never copied per wall)
   FieldPlacement placement;
-  std::shared_ptr<const VectorField> next;   // a time-varying field's next frame, or null
+  std::shared_ptr<const VectorField> next;  // a time-varying field's next frame, or null
   // An analytic field's equation (field.mode = equation evaluates it in place of
   // `field`, whose bounds still bound the particles), or null.
   std::shared_ptr<const FieldEquation> equation;
@@ -33,13 +33,14 @@ struct FramePacket {
   float simDt = 0.0f;  // simulated seconds: dt * time scale, 0 while paused
   double time = 0.0;   // wall-clock seconds since the first frame
   std::uint64_t seed = 0;
-  bool reset = false;                  // drop every particle before this frame
-  std::vector<StateChange> changes;    // take effect at this frame, before the update
-  std::vector<std::uint32_t> emission; // Reeves' count per emitter for this frame
+  bool reset = false;                              // drop every particle before this frame
+  std::vector<StateChange> changes;                // take effect at this frame, before the update
+  std::vector<std::uint32_t> emission;             // Reeves' count per emitter for this frame
   std::shared_ptr<const FieldUpdate> fieldUpdate;  // non-null when the field changed
-  Viewer viewer;  // the head and the navigation, sampled once for every wall
+  Viewer viewer;            // the head and the navigation, sampled once for every wall
   float fieldBlend = 0.0f;  // weight towards fieldUpdate's `next` frame (time-varying fields)
-  float lodScale = 1.0f;    // the level of detail's emission scale, already in `emission` (for display)
+  float lodScale =
+      1.0f;  // the level of detail's emission scale, already in `emission` (for display)
 
   SimStep step() const { return SimStep{frame, simDt, Seed::from(seed), emission, fieldBlend}; }
 };

@@ -11,7 +11,7 @@ namespace {
 
 constexpr std::uint32_t kPacketMagic = 0x50465353;  // "SSFP"
 constexpr std::uint32_t kFieldMagic = 0x46565353;   // "SSVF"
-constexpr std::uint16_t kVersion = 2;  // 2: equation terms in field updates, lod scale
+constexpr std::uint16_t kVersion = 2;               // 2: equation terms in field updates, lod scale
 
 // Limits far above any real packet, so a corrupt count cannot make us allocate gigabytes.
 constexpr std::uint32_t kMaxChanges = 4096;
@@ -246,7 +246,8 @@ std::vector<std::byte> encodePacket(const FramePacket& p, const FieldRefs& refs)
         w.i32(int(t.kind));
         w.u32(t.seed);
         for (const glm::vec4& v : {t.a, t.b, t.c})
-          for (int c = 0; c < 4; ++c) w.f32(v[c]);
+          for (int c = 0; c < 4; ++c)
+            w.f32(v[c]);
       }
   }
   vec3(w, p.viewer.head.position);
@@ -287,7 +288,8 @@ FramePacket decodePacket(std::span<const std::byte> bytes, FieldRefs* refs) {
     FieldUpdate update{.placement = placement(r)};
     const std::uint32_t terms = r.u32("equation term count");
     if (terms > std::uint32_t(FieldEquation::kMaxTerms))
-      r.fail("equation term count", concat(terms, " exceeds the limit of ", FieldEquation::kMaxTerms));
+      r.fail("equation term count",
+             concat(terms, " exceeds the limit of ", FieldEquation::kMaxTerms));
     if (terms > 0) {
       auto equation = std::make_shared<FieldEquation>();
       for (std::uint32_t i = 0; i < terms; ++i) {
@@ -298,7 +300,8 @@ FramePacket decodePacket(std::span<const std::byte> bytes, FieldRefs* refs) {
         t.kind = EquationKind(kind);
         t.seed = r.u32("equation term seed");
         for (glm::vec4* v : {&t.a, &t.b, &t.c})
-          for (int c = 0; c < 4; ++c) (*v)[c] = r.f32("equation term parameter");
+          for (int c = 0; c < 4; ++c)
+            (*v)[c] = r.f32("equation term parameter");
         equation->terms.push_back(t);
       }
       update.equation = std::move(equation);

@@ -19,12 +19,12 @@ struct HelicopterSettings {
 
 // The aircraft and how strongly its wash raises dust.
 struct HelicopterModel {
-  float mass = 4000.0f;         // kg
-  float rotorRadius = 7.0f;     // m
-  float maxThrustRatio = 1.25f; // thrust / weight at full throttle
-  float maxRate = 40000.0f;     // dust particles/s at full throttle near the ground
-  int maxParticles = 200000;    // maximum at full throttle near the ground
-  float maxLifetime = 6.0f;     // s
+  float mass = 4000.0f;           // kg
+  float rotorRadius = 7.0f;       // m
+  float maxThrustRatio = 1.25f;   // thrust / weight at full throttle
+  float maxRate = 40000.0f;       // dust particles/s at full throttle near the ground
+  int maxParticles = 200000;      // maximum at full throttle near the ground
+  float maxLifetime = 6.0f;       // s
   float fullEffectHeight = 1.0f;  // x rotor radius: below this the wash raises all it can
   float noEffectHeight = 4.0f;    // x rotor radius: above this it raises none
 };
@@ -35,7 +35,7 @@ struct HelicopterEffects {
   float rate = 0.0f;          // dust particles/s
   float lifetime = 0.0f;      // s
   int maximum = 0;
-  float dustRadius = 0.0f;    // m: the disc on the ground that dust rises from
+  float dustRadius = 0.0f;  // m: the disc on the ground that dust rises from
 };
 
 HelicopterEffects helicopterEffects(const HelicopterSettings& s, const HelicopterModel& m);

@@ -25,7 +25,8 @@ AttributeResult MainContext::set(std::string_view key, const AttributeValue& val
   if (canonical == "sim.maximum" && std::size_t(trial.sim.maximum) > options_.capacityLimit) {
     trial.sim.maximum = int(options_.capacityLimit);
     result.applied = trial.sim.maximum;
-    result.warning = concat("sim.maximum: ", toString(value), " exceeds the particle buffers' limit (run.capacity_limit = ",
+    result.warning = concat("sim.maximum: ", toString(value),
+                            " exceeds the particle buffers' limit (run.capacity_limit = ",
                             options_.capacityLimit, "); capped to ", options_.capacityLimit);
   }
   if (!result.warning.empty()) log::warn(result.warning);
@@ -39,9 +40,13 @@ AttributeResult MainContext::setFromText(std::string_view key, std::string_view 
   return set(key, AttributeTable::instance().parse(key, text));
 }
 
-void MainContext::addEmitter(const Emitter& emitter) { enqueue(StateChange::addEmitter(emitter)); }
+void MainContext::addEmitter(const Emitter& emitter) {
+  enqueue(StateChange::addEmitter(emitter));
+}
 
-void MainContext::removeEmitter(int index) { enqueue(StateChange::removeEmitter(index)); }
+void MainContext::removeEmitter(int index) {
+  enqueue(StateChange::removeEmitter(index));
+}
 
 void MainContext::enqueue(const StateChange& change) {
   std::lock_guard lock(mutex_);
@@ -64,13 +69,16 @@ void MainContext::setFieldTimeline(FieldTimeline timeline, const FieldPlacement&
   timelinePlacement_ = placement;
   fieldTime_ = timeline_->time(0);
   fieldPosition_ = timeline_->at(fieldTime_, state_.field.loop);
-  field_ = std::make_shared<const FieldUpdate>(FieldUpdate{.field = timeline_->frame(fieldPosition_.first),
-                                                           .placement = placement,
-                                                           .next = timeline_->frame(fieldPosition_.second)});
+  field_ = std::make_shared<const FieldUpdate>(
+      FieldUpdate{.field = timeline_->frame(fieldPosition_.first),
+                  .placement = placement,
+                  .next = timeline_->frame(fieldPosition_.second)});
   fieldChanged_ = true;
 }
 
-void MainContext::reset() { enqueue(StateChange::reset()); }
+void MainContext::reset() {
+  enqueue(StateChange::reset());
+}
 
 void MainContext::setViewer(const Viewer& viewer) {
   std::lock_guard lock(mutex_);
@@ -141,9 +149,10 @@ FramePacket MainContext::next() {
     // The field's clock runs on simulated time, at the playback speed.
     const FieldTimeline::Position at = timeline_->at(fieldTime_, state_.field.loop);
     if (at.first != fieldPosition_.first || at.second != fieldPosition_.second) {
-      field_ = std::make_shared<const FieldUpdate>(FieldUpdate{.field = timeline_->frame(at.first),
-                                                               .placement = timelinePlacement_,
-                                                               .next = timeline_->frame(at.second)});
+      field_ =
+          std::make_shared<const FieldUpdate>(FieldUpdate{.field = timeline_->frame(at.first),
+                                                          .placement = timelinePlacement_,
+                                                          .next = timeline_->frame(at.second)});
       fieldChanged_ = true;
     }
     fieldPosition_ = at;
@@ -154,9 +163,11 @@ FramePacket MainContext::next() {
   fieldChanged_ = false;
 
   // Level of detail: the rates scaled before Reeves' draw, here and only here.
-  const float coverage =
-      field_ && field_->field ? viewCoverage(field_->field->bounds(), field_->placement, viewer_) : 1.0f;
-  packet.lodScale = lod_.update(state_.sim, coverage, reportedFrameMs_ ? reportedFrameMs_ : measuredMs);
+  const float coverage = field_ && field_->field
+                             ? viewCoverage(field_->field->bounds(), field_->placement, viewer_)
+                             : 1.0f;
+  packet.lodScale =
+      lod_.update(state_.sim, coverage, reportedFrameMs_ ? reportedFrameMs_ : measuredMs);
   if (packet.lodScale < 1.0f) {
     ParticleState scaled = state_;
     for (Emitter& e : scaled.emitters) {

@@ -33,7 +33,8 @@ class MainContext {
     std::uint64_t seed = 1;
     float fixedDt = 0.0f;  // > 0: every frame advances this much; 0: measure the clock
     float maxDt = 0.1f;    // a measured frame longer than this (a stall) counts as this
-    std::size_t capacityLimit = 1u << 26;  // sim.maximum beyond this is capped (the buffers can grow no further)
+    std::size_t capacityLimit =
+        1u << 26;  // sim.maximum beyond this is capped (the buffers can grow no further)
   };
 
   // Called for every change with the frame it takes effect (the session recorder).

@@ -41,7 +41,8 @@ void writeParticlesVtp(std::span<const Particle> particles, const std::filesyste
     connectivity[i] = std::int64_t(i);
     offsets[i] = std::int64_t(i + 1);
   }
-  const Block blocks[] = {block(points), block(velocity), block(age), block(life), block(connectivity), block(offsets)};
+  const Block blocks[] = {block(points), block(velocity),     block(age),
+                          block(life),   block(connectivity), block(offsets)};
   std::uint64_t offset[6];
   std::uint64_t at = 0;
   for (int i = 0; i < 6; ++i) {
@@ -52,24 +53,30 @@ void writeParticlesVtp(std::span<const Particle> particles, const std::filesyste
   std::ofstream out(path, std::ios::binary);
   if (!out) throw Error(concat("writeParticlesVtp: cannot open ", path.string(), " for writing"));
   out << "<?xml version=\"1.0\"?>\n"
-      << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" header_type=\"UInt64\">\n"
+      << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
+         "header_type=\"UInt64\">\n"
       << "  <PolyData>\n"
       << "    <Piece NumberOfPoints=\"" << n << "\" NumberOfVerts=\"" << n
       << "\" NumberOfLines=\"0\" NumberOfStrips=\"0\" NumberOfPolys=\"0\">\n"
       << "      <PointData Vectors=\"velocity\" Scalars=\"age\">\n"
-      << "        <DataArray type=\"Float32\" Name=\"velocity\" NumberOfComponents=\"3\" format=\"appended\" offset=\""
+      << "        <DataArray type=\"Float32\" Name=\"velocity\" NumberOfComponents=\"3\" "
+         "format=\"appended\" offset=\""
       << offset[1] << "\"/>\n"
-      << "        <DataArray type=\"Float32\" Name=\"age\" format=\"appended\" offset=\"" << offset[2] << "\"/>\n"
-      << "        <DataArray type=\"Float32\" Name=\"life_remaining\" format=\"appended\" offset=\"" << offset[3]
-      << "\"/>\n"
+      << "        <DataArray type=\"Float32\" Name=\"age\" format=\"appended\" offset=\""
+      << offset[2] << "\"/>\n"
+      << "        <DataArray type=\"Float32\" Name=\"life_remaining\" format=\"appended\" offset=\""
+      << offset[3] << "\"/>\n"
       << "      </PointData>\n"
       << "      <Points>\n"
-      << "        <DataArray type=\"Float32\" Name=\"Points\" NumberOfComponents=\"3\" format=\"appended\" offset=\""
+      << "        <DataArray type=\"Float32\" Name=\"Points\" NumberOfComponents=\"3\" "
+         "format=\"appended\" offset=\""
       << offset[0] << "\"/>\n"
       << "      </Points>\n"
       << "      <Verts>\n"
-      << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"appended\" offset=\"" << offset[4] << "\"/>\n"
-      << "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"appended\" offset=\"" << offset[5] << "\"/>\n"
+      << "        <DataArray type=\"Int64\" Name=\"connectivity\" format=\"appended\" offset=\""
+      << offset[4] << "\"/>\n"
+      << "        <DataArray type=\"Int64\" Name=\"offsets\" format=\"appended\" offset=\""
+      << offset[5] << "\"/>\n"
       << "      </Verts>\n"
       << "    </Piece>\n"
       << "  </PolyData>\n"

@@ -31,8 +31,10 @@ struct Slope {
 Slope derivative(const glm::vec3& x, const glm::vec3& v, const PhysicsInputs& in) {
   const glm::vec3 f = fieldAt(x, in);
   switch (in.settings.motion) {
-    case MotionModel::Tracer: return {f, glm::vec3(0.0f)};
-    case MotionModel::Force: return {v, f + in.settings.gravity};
+    case MotionModel::Tracer:
+      return {f, glm::vec3(0.0f)};
+    case MotionModel::Force:
+      return {v, f + in.settings.gravity};
     case MotionModel::Drag:
       return {v, (f - v) * (1.0f / in.settings.dragTime) + in.settings.gravity};
   }
@@ -93,13 +95,16 @@ Particle birth(const Emitter& e, Seed seed, std::uint32_t frame, std::uint32_t e
   const glm::vec4 u = randomUniform(seed, frame, emitterIndex, index, RngStream::kBirth);
   glm::vec3 offset(0.0f);
   switch (e.shape) {
-    case EmitterShape::Box: offset = (glm::vec3(u) - 0.5f) * glm::vec3(e.width, e.depth, e.height); break;
+    case EmitterShape::Box:
+      offset = (glm::vec3(u) - 0.5f) * glm::vec3(e.width, e.depth, e.height);
+      break;
     case EmitterShape::Sphere:
     case EmitterShape::Disc:
       offset = e.radius * inUnitBall(seed, frame, emitterIndex, index, RngStream::kBirthBall,
                                      e.shape == EmitterShape::Disc);
       break;
-    case EmitterShape::Point: break;
+    case EmitterShape::Point:
+      break;
   }
   glm::vec3 velocity = e.velocity;
   if (e.spread > 0.0f)
@@ -122,8 +127,11 @@ bool advance(Particle& p, const PhysicsInputs& in) {
     const glm::vec3 local = in.placement.toLocal(x);
     if (!b.contains(local)) {
       switch (in.settings.boundary) {
-        case BoundaryMode::Kill: return false;
-        case BoundaryMode::Clamp: x = in.placement.toRoom(glm::clamp(local, b.min, b.max)); break;
+        case BoundaryMode::Kill:
+          return false;
+        case BoundaryMode::Clamp:
+          x = in.placement.toRoom(glm::clamp(local, b.min, b.max));
+          break;
         case BoundaryMode::Wrap: {
           glm::vec3 wrapped = local;
           for (int a = 0; a < 3; ++a) {

@@ -14,7 +14,8 @@ ReferenceSimulator::ReferenceSimulator(std::size_t capacity, std::size_t capacit
   next_.reserve(capacity);
 }
 
-void ReferenceSimulator::setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
+void ReferenceSimulator::setField(std::shared_ptr<const VectorField> field,
+                                  const FieldPlacement& placement,
                                   std::shared_ptr<const VectorField> next) {
   field_ = std::move(field);
   next_field_ = std::move(next);

@@ -16,8 +16,8 @@
 #include "core/field/field_placement.h"
 #include "core/field/height_map.h"
 #include "core/field/vector_field.h"
-#include "core/sim/particle.h"
 #include "core/sim/emission_budget.h"
+#include "core/sim/particle.h"
 #include "core/sim/particle_state.h"
 #include "core/sim/sim_step.h"
 

@@ -20,9 +20,12 @@ std::string compact(const AttributeValue& value) {
 
 std::string formatChange(const StateChange& c) {
   switch (c.kind) {
-    case StateChange::Kind::Set: return "set " + c.key + " " + compact(c.value);
-    case StateChange::Kind::RemoveEmitter: return concat("remove-emitter ", c.index);
-    case StateChange::Kind::Reset: return "reset";
+    case StateChange::Kind::Set:
+      return "set " + c.key + " " + compact(c.value);
+    case StateChange::Kind::RemoveEmitter:
+      return concat("remove-emitter ", c.index);
+    case StateChange::Kind::Reset:
+      return "reset";
     case StateChange::Kind::AddEmitter: {
       ParticleState holder;
       holder.emitters = {c.emitter};
@@ -54,24 +57,30 @@ std::vector<ScheduledChange> parseSessionLog(const std::string& text, const std:
     std::string frameText, verb;
     if (!(words >> frameText) || frameText.starts_with("#")) continue;
     std::uint32_t frame = 0;
-    const auto [end, ec] = std::from_chars(frameText.data(), frameText.data() + frameText.size(), frame);
+    const auto [end, ec] =
+        std::from_chars(frameText.data(), frameText.data() + frameText.size(), frame);
     if (ec != std::errc() || end != frameText.data() + frameText.size())
       throw Error(where + "expected a frame number first, got '" + frameText + "'");
-    if (frame < lastFrame) throw Error(where + concat("frame ", frame, " comes after frame ", lastFrame));
+    if (frame < lastFrame)
+      throw Error(where + concat("frame ", frame, " comes after frame ", lastFrame));
     lastFrame = frame;
-    if (!(words >> verb)) throw Error(where + "expected set, add-emitter, remove-emitter or reset after the frame");
+    if (!(words >> verb))
+      throw Error(where + "expected set, add-emitter, remove-emitter or reset after the frame");
     try {
       if (verb == "set") {
         std::string key, value, extra;
         if (!(words >> key >> value) || (words >> extra))
           throw Error("expected 'set KEY VALUE' (vectors as x,y,z)");
-        changes.push_back({frame, StateChange::set(table.canonical(key), table.validate(key, table.parse(key, value)).applied)});
+        changes.push_back(
+            {frame, StateChange::set(table.canonical(key),
+                                     table.validate(key, table.parse(key, value)).applied)});
       } else if (verb == "add-emitter") {
         ParticleState holder;
         std::string pair;
         while (words >> pair) {
           const std::size_t eq = pair.find('=');
-          if (eq == std::string::npos) throw Error("expected name=value pairs after add-emitter, got '" + pair + "'");
+          if (eq == std::string::npos)
+            throw Error("expected name=value pairs after add-emitter, got '" + pair + "'");
           const std::string key = "emitter.0." + pair.substr(0, eq);
           table.set(holder, key, table.parse(key, pair.substr(eq + 1)));
         }
@@ -83,7 +92,8 @@ std::vector<ScheduledChange> parseSessionLog(const std::string& text, const std:
       } else if (verb == "reset") {
         changes.push_back({frame, StateChange::reset()});
       } else {
-        throw Error("unknown change '" + verb + "'; expected set, add-emitter, remove-emitter or reset");
+        throw Error("unknown change '" + verb +
+                    "'; expected set, add-emitter, remove-emitter or reset");
       }
     } catch (const Error& e) {
       const std::string what = e.what();

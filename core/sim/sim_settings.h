@@ -24,9 +24,9 @@ struct SimSettings {
   MotionModel motion = MotionModel::Tracer;
   Integrator integrator = Integrator::RK2;
   BoundaryMode boundary = BoundaryMode::Kill;
-  float fieldStrength = 1.0f;  // s: multiplies the field
-  float timeScale = 1.0f;      // simulated seconds per wall-clock second
-  float dragTime = 0.05f;      // s: tau of the drag model
+  float fieldStrength = 1.0f;             // s: multiplies the field
+  float timeScale = 1.0f;                 // simulated seconds per wall-clock second
+  float dragTime = 0.05f;                 // s: tau of the drag model
   glm::vec3 gravity{0.0f, 0.0f, -9.81f};  // m/s^2, force and drag models
   bool groundCollision = true;  // particles stop at the ground (z = ground height, or terrain)
   float restitution = 0.2f;     // fraction of normal speed kept on a bounce
@@ -34,9 +34,10 @@ struct SimSettings {
   bool paused = false;          // pause: time stands still, nothing moves or dies
   // Level of detail (Reeves; core/sim/level_of_detail.h): the main context scales emission down
   bool lod = false;
-  float lodCoverage = 0.2f;   // view coverage (fraction of a 90-degree cone) at and above which emission is full
-  float lodBudgetMs = 0.0f;   // frame-time budget; over it emission drops (0: coverage only)
-  float lodMinScale = 0.1f;   // emission never drops below this fraction of the rates
+  float lodCoverage =
+      0.2f;  // view coverage (fraction of a 90-degree cone) at and above which emission is full
+  float lodBudgetMs = 0.0f;  // frame-time budget; over it emission drops (0: coverage only)
+  float lodMinScale = 0.1f;  // emission never drops below this fraction of the rates
 };
 
 // How the particle update reads the field: the baked grid (a 3D texture) or,
@@ -48,7 +49,8 @@ struct FieldPlayback {
   float speed = 1.0f;  // field seconds per simulated second
   bool loop = true;
   bool paused = false;  // hold the current frame while particles move on
-  FieldMode mode = FieldMode::Texture;  // Equation: only where the field has one (FieldUpdate::equation)
+  FieldMode mode =
+      FieldMode::Texture;  // Equation: only where the field has one (FieldUpdate::equation)
 };
 
 // Splat: billboards' look, drawn by a compute pass for small particles.
@@ -65,9 +67,9 @@ struct RenderSettings {
   float opacityDeath = 0.0f;
   glm::vec3 lightDirection{0.4f, -0.3f, 0.85f};  // towards the light, room space
   float ambient = 0.35f;
-  float softness = 0.3f;  // m: particles fade out this close to scene geometry
+  float softness = 0.3f;     // m: particles fade out this close to scene geometry
   float splatPixels = 4.0f;  // Auto mode: splat particles up to this projected diameter
-  bool fieldBox = true;   // outline the field's bounds
+  bool fieldBox = true;      // outline the field's bounds
 };
 
 }  // namespace sandstorm

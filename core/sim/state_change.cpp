@@ -34,7 +34,9 @@ StateChange StateChange::reset() {
 
 void applyChange(ParticleState& state, const StateChange& change) {
   switch (change.kind) {
-    case StateChange::Kind::Set: AttributeTable::instance().set(state, change.key, change.value); break;
+    case StateChange::Kind::Set:
+      AttributeTable::instance().set(state, change.key, change.value);
+      break;
     case StateChange::Kind::AddEmitter:
       if (int(state.emitters.size()) >= ParticleState::kMaxEmitters)
         throw Error(concat("cannot add an emitter: the limit is ", ParticleState::kMaxEmitters));
@@ -42,20 +44,25 @@ void applyChange(ParticleState& state, const StateChange& change) {
       break;
     case StateChange::Kind::RemoveEmitter:
       if (change.index < 0 || change.index >= int(state.emitters.size()))
-        throw Error(concat("cannot remove emitter ", change.index, ": there are ",
-                           state.emitters.size()));
+        throw Error(
+            concat("cannot remove emitter ", change.index, ": there are ", state.emitters.size()));
       state.emitters.erase(state.emitters.begin() + change.index);
       break;
-    case StateChange::Kind::Reset: break;  // the particles go; the state stays
+    case StateChange::Kind::Reset:
+      break;  // the particles go; the state stays
   }
 }
 
 std::string describe(const StateChange& change) {
   switch (change.kind) {
-    case StateChange::Kind::Set: return change.key + " = " + toString(change.value);
-    case StateChange::Kind::AddEmitter: return "add emitter";
-    case StateChange::Kind::RemoveEmitter: return concat("remove emitter ", change.index);
-    case StateChange::Kind::Reset: return "reset";
+    case StateChange::Kind::Set:
+      return change.key + " = " + toString(change.value);
+    case StateChange::Kind::AddEmitter:
+      return "add emitter";
+    case StateChange::Kind::RemoveEmitter:
+      return concat("remove emitter ", change.index);
+    case StateChange::Kind::Reset:
+      return "reset";
   }
   return "?";
 }

@@ -14,10 +14,10 @@ namespace sandstorm {
 struct StateChange {
   enum class Kind { Set, AddEmitter, RemoveEmitter, Reset };
   Kind kind = Kind::Set;
-  std::string key;        // Set: canonical attribute key
-  AttributeValue value;   // Set: the validated value
-  int index = 0;          // RemoveEmitter: which one
-  Emitter emitter;        // AddEmitter: the new emitter, appended at the end
+  std::string key;       // Set: canonical attribute key
+  AttributeValue value;  // Set: the validated value
+  int index = 0;         // RemoveEmitter: which one
+  Emitter emitter;       // AddEmitter: the new emitter, appended at the end
 
   static StateChange set(std::string key, AttributeValue value);
   static StateChange addEmitter(const Emitter& emitter);

@@ -8,7 +8,8 @@
 
 namespace sandstorm {
 
-inline std::uint64_t fnv1a64(std::span<const std::byte> bytes, std::uint64_t hash = 14695981039346656037ull) {
+inline std::uint64_t fnv1a64(std::span<const std::byte> bytes,
+                             std::uint64_t hash = 14695981039346656037ull) {
   for (const std::byte b : bytes) {
     hash ^= std::uint64_t(b);
     hash *= 1099511628211ull;

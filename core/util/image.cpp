@@ -19,14 +19,16 @@ void writePng(const Image& image, const std::filesystem::path& path) {
   if (image.width <= 0 || image.height <= 0 ||
       image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4)
     throw Error(concat("writePng(", path.string(), "): the image is empty or inconsistent"));
-  if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.rgba.data(), image.width * 4))
+  if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.rgba.data(),
+                      image.width * 4))
     throw Error(concat("writePng: cannot write ", path.string()));
 }
 
 Image readPng(const std::filesystem::path& path) {
   int w = 0, h = 0, channels = 0;
   unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels, 4);
-  if (!data) throw Error(concat("readPng: cannot read ", path.string(), ": ", stbi_failure_reason()));
+  if (!data)
+    throw Error(concat("readPng: cannot read ", path.string(), ": ", stbi_failure_reason()));
   Image image{w, h, std::vector<std::uint8_t>(data, data + std::size_t(w) * std::size_t(h) * 4)};
   stbi_image_free(data);
   return image;

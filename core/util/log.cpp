@@ -22,10 +22,14 @@ std::atomic<Level>& currentLevel() {
 
 const char* tag(Level level) {
   switch (level) {
-    case Level::Error: return "error";
-    case Level::Warn: return "warn";
-    case Level::Info: return "info";
-    case Level::Debug: return "debug";
+    case Level::Error:
+      return "error";
+    case Level::Warn:
+      return "warn";
+    case Level::Info:
+      return "info";
+    case Level::Debug:
+      return "debug";
   }
   return "?";
 }
@@ -37,17 +41,28 @@ std::string& processTag() {
 
 }  // namespace
 
-void setTag(std::string_view tag) { processTag() = std::string(tag) + (tag.empty() ? "" : " "); }
+void setTag(std::string_view tag) {
+  processTag() = std::string(tag) + (tag.empty() ? "" : " ");
+}
 
-void setLevel(Level level) { currentLevel() = level; }
-Level level() { return currentLevel(); }
+void setLevel(Level level) {
+  currentLevel() = level;
+}
+Level level() {
+  return currentLevel();
+}
 
 bool parseLevel(std::string_view name, Level& out) {
-  if (name == "error") out = Level::Error;
-  else if (name == "warn") out = Level::Warn;
-  else if (name == "info") out = Level::Info;
-  else if (name == "debug") out = Level::Debug;
-  else return false;
+  if (name == "error")
+    out = Level::Error;
+  else if (name == "warn")
+    out = Level::Warn;
+  else if (name == "info")
+    out = Level::Info;
+  else if (name == "debug")
+    out = Level::Debug;
+  else
+    return false;
   return true;
 }
 

@@ -12,8 +12,8 @@ namespace sandstorm::log {
 enum class Level { Error = 0, Warn = 1, Info = 2, Debug = 3 };
 
 void setLevel(Level level);
-// A tag for every line of this process, e.g. "rank 2" (cluster mode): "[sandstorm rank 2 info] ...".
-// Set it before other threads log.
+// A tag for every line of this process, e.g. "rank 2" (cluster mode): "[sandstorm rank 2 info]
+// ...". Set it before other threads log.
 void setTag(std::string_view tag);
 Level level();
 bool parseLevel(std::string_view name, Level& out);
@@ -28,12 +28,20 @@ void print(Level lvl, const Args&... args) {
 }
 
 template <class... Args>
-void error(const Args&... args) { print(Level::Error, args...); }
+void error(const Args&... args) {
+  print(Level::Error, args...);
+}
 template <class... Args>
-void warn(const Args&... args) { print(Level::Warn, args...); }
+void warn(const Args&... args) {
+  print(Level::Warn, args...);
+}
 template <class... Args>
-void info(const Args&... args) { print(Level::Info, args...); }
+void info(const Args&... args) {
+  print(Level::Info, args...);
+}
 template <class... Args>
-void debug(const Args&... args) { print(Level::Debug, args...); }
+void debug(const Args&... args) {
+  print(Level::Debug, args...);
+}
 
 }  // namespace sandstorm::log

@@ -12,7 +12,8 @@ using test::runSandstorm;
 TEST(CommandLine, HelpListsTheOptions) {
   const auto r = runSandstorm("--help");
   EXPECT_EQ(r.exitCode, 0);
-  for (const char* option : {"--config", "--frames", "--screenshot", "--dump-particles", "--set", "--replay"})
+  for (const char* option :
+       {"--config", "--frames", "--screenshot", "--dump-particles", "--set", "--replay"})
     EXPECT_NE(r.output.find(option), std::string::npos) << option;
 }
 
@@ -20,12 +21,13 @@ TEST(CommandLine, BadArgumentsFailWithAMessage) {
   struct Case {
     std::string args, expected;
   };
-  for (const Case& c : {Case{"--frames -3", "--frames"}, Case{"--config nowhere.toml", "nowhere.toml"},
-                        Case{"--bogus", "bogus"}, Case{"--set render.size", "expected key=value"},
-                        Case{"--set render.sise=1", "unknown attribute 'render.sise'"},
-                        Case{"--set sim.integrator=rk3", "euler, rk2, rk4"},
-                        Case{"--dump-particles out.txt", "expected a .vtp"},
-                        Case{"--walls nowhere", "no wall named 'nowhere'"}}) {
+  for (const Case& c :
+       {Case{"--frames -3", "--frames"}, Case{"--config nowhere.toml", "nowhere.toml"},
+        Case{"--bogus", "bogus"}, Case{"--set render.size", "expected key=value"},
+        Case{"--set render.sise=1", "unknown attribute 'render.sise'"},
+        Case{"--set sim.integrator=rk3", "euler, rk2, rk4"},
+        Case{"--dump-particles out.txt", "expected a .vtp"},
+        Case{"--walls nowhere", "no wall named 'nowhere'"}}) {
     const auto r = runSandstorm("--config tests/data/identity.toml --frames 1 " + c.args);
     EXPECT_NE(r.exitCode, 0) << c.args;
     EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << " gave:\n" << r.output;
@@ -43,7 +45,8 @@ TEST(CommandLine, BadConfigsNameTheirFileAndLine) {
 
 TEST(CommandLine, WithoutOpenGL45TheMessageSaysWhatIsMissing) {
   // Mesa can be told to offer only OpenGL 3.3.
-  const auto r = runSandstorm("--config tests/data/identity.toml --frames 1", "MESA_GL_VERSION_OVERRIDE=3.3");
+  const auto r =
+      runSandstorm("--config tests/data/identity.toml --frames 1", "MESA_GL_VERSION_OVERRIDE=3.3");
   EXPECT_NE(r.exitCode, 0);
   EXPECT_NE(r.output.find("OpenGL 4.5"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("Missing:"), std::string::npos) << r.output;
@@ -51,9 +54,10 @@ TEST(CommandLine, WithoutOpenGL45TheMessageSaysWhatIsMissing) {
 
 TEST(CommandLine, HeadlessRunsWriteImagesAndParticles) {
   const auto dir = test::scratchDir("outputs");
-  const auto r = runSandstorm("--config tests/data/identity.toml --frames 30 --walls front,left --screenshot " +
-                              dir.string() + " --dump-particles " + (dir / "p.vtp").string() +
-                              " --set emitter.0.rate=20000");
+  const auto r = runSandstorm(
+      "--config tests/data/identity.toml --frames 30 --walls front,left --screenshot " +
+      dir.string() + " --dump-particles " + (dir / "p.vtp").string() +
+      " --set emitter.0.rate=20000");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   EXPECT_TRUE(std::filesystem::exists(dir / "front.png"));
   EXPECT_TRUE(std::filesystem::exists(dir / "left.png"));

@@ -30,10 +30,12 @@ Dust fly(float throttle, float altitude, int frames) {
   const auto terrain = makeTerrain(config.scene, config.path.parent_path());
   MainContext::Options options;
   options.fixedDt = 1.0f / 60.0f;
-  MainContext main(config.particles, makeField(config.field, config.path.parent_path()).update, options);
+  MainContext main(config.particles, makeField(config.field, config.path.parent_path()).update,
+                   options);
   HelicopterController helicopter(terrain);
   helicopter.update(main);
-  ParticleSystem system(main.initialState(), ParticleSystem::Options{.capacity = config.run.capacity});
+  ParticleSystem system(main.initialState(),
+                        ParticleSystem::Options{.capacity = config.run.capacity});
   system.setTerrain(terrain);
   for (int f = 0; f < frames; ++f) {
     system.advance(main.next());

@@ -48,13 +48,15 @@ TEST(Identity, FourWallsOnFourThreadsHoldTheSameParticlesEveryFrame) {
     hashesPerFrame[h.frame].insert(h.hash);
     counts[h.frame] = h.count;
   }
-  for (const auto& [frame, hashes] : hashesPerFrame) EXPECT_EQ(hashes.size(), 1u) << "walls differ at frame " << frame;
+  for (const auto& [frame, hashes] : hashesPerFrame)
+    EXPECT_EQ(hashes.size(), 1u) << "walls differ at frame " << frame;
   // The run had births, deaths and the mid-run change: the count rises, then
   // turns over, and the frame-90 change (more, shorter-lived particles) shows.
   EXPECT_GT(counts[60], 5000u);
   EXPECT_NE(counts[120], counts[89]);
   std::set<std::string> distinct;
-  for (const auto& [frame, hashes] : hashesPerFrame) distinct.insert(*hashes.begin());
+  for (const auto& [frame, hashes] : hashesPerFrame)
+    distinct.insert(*hashes.begin());
   EXPECT_EQ(distinct.size(), 200u);  // every frame's particles differ from every other's
 }
 
@@ -63,31 +65,38 @@ TEST(Identity, OneWallPerProcessMatchesAllWallsInOne) {
   const auto all = runSandstorm(kRun + "--frames 120 --hash-log " + (dir / "all.txt").string());
   ASSERT_EQ(all.exitCode, 0) << all.output;
   std::map<std::string, std::vector<std::string>> perWall;
-  for (const HashLine& h : readHashes(dir / "all.txt")) perWall[h.wall].push_back(h.hash);
+  for (const HashLine& h : readHashes(dir / "all.txt"))
+    perWall[h.wall].push_back(h.hash);
   for (const std::string wall : {"front", "floor"}) {
     const auto log = dir / (wall + ".txt");
-    const auto one = runSandstorm(kRun + "--frames 120 --walls " + wall + " --hash-log " + log.string());
+    const auto one =
+        runSandstorm(kRun + "--frames 120 --walls " + wall + " --hash-log " + log.string());
     ASSERT_EQ(one.exitCode, 0) << one.output;
     std::vector<std::string> hashes;
-    for (const HashLine& h : readHashes(log)) hashes.push_back(h.hash);
+    for (const HashLine& h : readHashes(log))
+      hashes.push_back(h.hash);
     EXPECT_EQ(hashes, perWall[wall]) << wall;
   }
 }
 
 TEST(Identity, ARecordedSessionReplaysToTheSameParticles) {
   const auto dir = test::scratchDir("replay");
-  const auto first = runSandstorm(kRun + "--frames 180 --walls front --record " + (dir / "rec.session").string() +
-                                  " --hash-log " + (dir / "first.txt").string());
+  const auto first =
+      runSandstorm(kRun + "--frames 180 --walls front --record " + (dir / "rec.session").string() +
+                   " --hash-log " + (dir / "first.txt").string());
   ASSERT_EQ(first.exitCode, 0) << first.output;
   const std::vector<std::string> recorded = readLines(dir / "rec.session");
-  ASSERT_EQ(recorded.size(), 5u);  // a header and the four changes that took effect before frame 180
-  const auto again = runSandstorm("--config tests/data/identity.toml --frames 180 --walls front --replay " +
-                                  (dir / "rec.session").string() + " --hash-log " + (dir / "again.txt").string());
+  ASSERT_EQ(recorded.size(),
+            5u);  // a header and the four changes that took effect before frame 180
+  const auto again =
+      runSandstorm("--config tests/data/identity.toml --frames 180 --walls front --replay " +
+                   (dir / "rec.session").string() + " --hash-log " + (dir / "again.txt").string());
   ASSERT_EQ(again.exitCode, 0) << again.output;
   EXPECT_EQ(readLines(dir / "first.txt"), readLines(dir / "again.txt"));
   // Without the changes the run differs: the comparison can fail.
-  const auto plain = runSandstorm("--config tests/data/identity.toml --frames 180 --walls front --hash-log " +
-                                  (dir / "plain.txt").string());
+  const auto plain =
+      runSandstorm("--config tests/data/identity.toml --frames 180 --walls front --hash-log " +
+                   (dir / "plain.txt").string());
   EXPECT_NE(readLines(dir / "first.txt"), readLines(dir / "plain.txt"));
 }
 

@@ -26,13 +26,14 @@ inline std::filesystem::path scratchDir(const std::string& name) {
 
 // `env`: variable assignments for the child ("MESA_GL_VERSION_OVERRIDE=3.3").
 inline ProcessResult runSandstorm(const std::string& args, const std::string& env = "") {
-  const std::string cmd =
-      std::string("cd '") + SANDSTORM_SOURCE_DIR + "' && " + env + " '" + SANDSTORM_BINARY + "' " + args + " 2>&1";
+  const std::string cmd = std::string("cd '") + SANDSTORM_SOURCE_DIR + "' && " + env + " '" +
+                          SANDSTORM_BINARY + "' " + args + " 2>&1";
   ProcessResult r;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) return r;
   char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
+  while (std::fgets(buffer, sizeof buffer, pipe))
+    r.output += buffer;
   const int status = pclose(pipe);
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
@@ -41,7 +42,8 @@ inline ProcessResult runSandstorm(const std::string& args, const std::string& en
 inline std::vector<std::string> readLines(const std::filesystem::path& path) {
   std::ifstream in(path);
   std::vector<std::string> lines;
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  for (std::string line; std::getline(in, line);)
+    lines.push_back(line);
   return lines;
 }
 

@@ -17,14 +17,18 @@ using test::runSandstorm;
 
 const std::string kXvfb = "xvfb-run -a -s '-screen 0 1280x1024x24' ";
 
-bool haveXvfb() { return std::system("command -v xvfb-run >/dev/null 2>&1") == 0; }
+bool haveXvfb() {
+  return std::system("command -v xvfb-run >/dev/null 2>&1") == 0;
+}
 
 test::ProcessResult runUnderXvfb(const std::string& args) {
-  const std::string cmd = "cd '" SANDSTORM_SOURCE_DIR "' && " + kXvfb + "'" SANDSTORM_BINARY "' " + args + " 2>&1";
+  const std::string cmd =
+      "cd '" SANDSTORM_SOURCE_DIR "' && " + kXvfb + "'" SANDSTORM_BINARY "' " + args + " 2>&1";
   test::ProcessResult r;
   FILE* pipe = popen(cmd.c_str(), "r");
   char buffer[4096];
-  while (pipe && std::fgets(buffer, sizeof buffer, pipe)) r.output += buffer;
+  while (pipe && std::fgets(buffer, sizeof buffer, pipe))
+    r.output += buffer;
   const int status = pipe ? pclose(pipe) : -1;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
@@ -50,12 +54,14 @@ std::vector<Line> hashes(const std::filesystem::path& path) {
 TEST(Windows, ASliderInTheMenuChangesEveryWallAtTheSameFrame) {
   if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
   const auto dir = test::scratchDir("menu");
-  const auto r = runUnderXvfb("--config tests/data/windows.toml --menu-script tests/data/slider.script --record " +
-                              (dir / "s.session").string() + " --hash-log " + (dir / "h.txt").string() +
-                              " --screenshot " + dir.string());
+  const auto r = runUnderXvfb(
+      "--config tests/data/windows.toml --menu-script tests/data/slider.script --record " +
+      (dir / "s.session").string() + " --hash-log " + (dir / "h.txt").string() + " --screenshot " +
+      dir.string());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   for (const char* wall : {"left", "front", "right", "floor"})
-    EXPECT_NE(r.output.find(std::string("GLFW window 'Sandstorm: ") + wall), std::string::npos) << wall;
+    EXPECT_NE(r.output.find(std::string("GLFW window 'Sandstorm: ") + wall), std::string::npos)
+        << wall;
 
   // The click went through ImGui into the main context, which recorded it with its frame.
   std::uint32_t sizeFrame = 0, pauseFrame = 0;
@@ -72,7 +78,8 @@ TEST(Windows, ASliderInTheMenuChangesEveryWallAtTheSameFrame) {
 
   // Every wall's replica changed at exactly that frame, and the walls agree on the particles.
   std::map<std::string, std::map<std::uint32_t, Line>> byWall;
-  for (const Line& l : hashes(dir / "h.txt")) byWall[l.wall][l.frame] = l;
+  for (const Line& l : hashes(dir / "h.txt"))
+    byWall[l.wall][l.frame] = l;
   ASSERT_EQ(byWall.size(), 4u);
   for (auto& [wall, frames] : byWall) {
     for (std::uint32_t f = 1; f < 40; ++f) {
@@ -90,11 +97,13 @@ TEST(Windows, ASliderInTheMenuChangesEveryWallAtTheSameFrame) {
 TEST(Windows, TheMenuCanLiveInAnOperatorWindowOfItsOwn) {
   if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
   const auto dir = test::scratchDir("operator");
-  const auto r = runUnderXvfb("--config tests/data/operator.toml --menu-script tests/data/slider.script --record " +
-                              (dir / "s.session").string() + " --hash-log " + (dir / "h.txt").string());
+  const auto r = runUnderXvfb(
+      "--config tests/data/operator.toml --menu-script tests/data/slider.script --record " +
+      (dir / "s.session").string() + " --hash-log " + (dir / "h.txt").string());
   ASSERT_EQ(r.exitCode, 0) << r.output;
   bool sized = false;
-  for (const std::string& line : readLines(dir / "s.session")) sized = sized || line.find("render.size") != std::string::npos;
+  for (const std::string& line : readLines(dir / "s.session"))
+    sized = sized || line.find("render.size") != std::string::npos;
   EXPECT_TRUE(sized) << "the click in the operator window did not change render.size";
   // The walls stay offscreen: the operator window is the only window.
   EXPECT_EQ(r.output.find("GLFW window"), std::string::npos) << r.output;
@@ -105,33 +114,41 @@ TEST(Windows, AMonitorThatDoesNotExistStopsEverythingBeforeAnyWindowOpens) {
   // cave4.toml puts its walls on monitors 0-3; Xvfb has one.
   const auto r = runUnderXvfb("--config config/cave4.toml --frames 1");
   EXPECT_NE(r.exitCode, 0);
-  EXPECT_NE(r.output.find("config/cave4.toml:25: wall[1].window.monitor: monitor 1 does not exist; 1 connected"),
-            std::string::npos)
+  EXPECT_NE(
+      r.output.find(
+          "config/cave4.toml:25: wall[1].window.monitor: monitor 1 does not exist; 1 connected"),
+      std::string::npos)
       << r.output;
   EXPECT_EQ(r.output.find("GLFW window"), std::string::npos) << "a window opened before the check";
 }
 
 TEST(Windows, ClosingAWindowStopsEveryWallCleanly) {
   if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
-  const auto r = runUnderXvfb("--config tests/data/windows.toml --frames 0 --menu-script tests/data/close.script");
+  const auto r = runUnderXvfb(
+      "--config tests/data/windows.toml --frames 0 --menu-script tests/data/close.script");
   EXPECT_EQ(r.exitCode, 0) << r.output;
-  EXPECT_NE(r.output.find("a window closed: stopped every wall cleanly"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("a window closed: stopped every wall cleanly"), std::string::npos)
+      << r.output;
 }
 
 TEST(Windows, CtrlCStopsEveryWallCleanly) {
   if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
-  // The shell under xvfb-run starts sandstorm, interrupts it once it is drawing, and passes on its status.
+  // The shell under xvfb-run starts sandstorm, interrupts it once it is drawing, and passes on its
+  // status.
   const auto dir = test::scratchDir("interrupt");
   const std::string log = (dir / "log.txt").string();
   const auto script = dir / "interrupt.sh";
-  std::ofstream(script) << "'" SANDSTORM_BINARY "' --config tests/data/windows.toml --frames 0 --no-menu > '" << log
-                        << "' 2>&1 &\np=$!\nfor i in $(seq 150); do grep -q 'frame ' '" << log
-                        << "' && break; sleep 0.2; done\nkill -INT $p\nwait $p\n";
-  const std::string cmd = "cd '" SANDSTORM_SOURCE_DIR "' && " + kXvfb + "sh '" + script.string() + "'";
+  std::ofstream(script) << "'" SANDSTORM_BINARY
+                           "' --config tests/data/windows.toml --frames 0 --no-menu > '"
+                        << log << "' 2>&1 &\np=$!\nfor i in $(seq 150); do grep -q 'frame ' '"
+                        << log << "' && break; sleep 0.2; done\nkill -INT $p\nwait $p\n";
+  const std::string cmd =
+      "cd '" SANDSTORM_SOURCE_DIR "' && " + kXvfb + "sh '" + script.string() + "'";
   const int status = std::system(cmd.c_str());
   const std::string output = [&] {
     std::string all;
-    for (const std::string& l : readLines(log)) all += l + "\n";
+    for (const std::string& l : readLines(log))
+      all += l + "\n";
     return all;
   }();
   EXPECT_EQ(WIFEXITED(status) ? WEXITSTATUS(status) : -1, 0) << output;

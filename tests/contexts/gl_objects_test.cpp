@@ -28,9 +28,7 @@ TEST_F(GlObjectsTest, OneOwnerDeletesEachObjectOnce) {
   gl::Buffer b = std::move(a);
   EXPECT_EQ(a.id(), 0u);  // the source is empty after a move
   EXPECT_EQ(b.id(), id);
-  {
-    gl::Buffer c = std::move(b);
-  }  // c deletes it
+  { gl::Buffer c = std::move(b); }  // c deletes it
   EXPECT_FALSE(glIsBuffer(id));
   gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
   const std::uint32_t tid = t.id();
@@ -65,7 +63,8 @@ TEST_F(GlObjectsTest, IncludesKeepLineNumbersAndSayWhichFileIsWhich) {
   EXPECT_NE(std::find(files.begin(), files.end(), "sim_block.glsl"), files.end());
   EXPECT_EQ(source.find("#version"), 0u);
   EXPECT_NE(source.find("#define X 1"), std::string::npos);
-  EXPECT_NE(source.find("#line 1 1"), std::string::npos);  // the first include starts at its own line 1
+  EXPECT_NE(source.find("#line 1 1"),
+            std::string::npos);  // the first include starts at its own line 1
 }
 
 }  // namespace

@@ -33,7 +33,8 @@ Scenario tornado(MotionModel motion, Integrator integrator, BoundaryMode boundar
   VortexParams vp;
   vp.range = 3.0f;
   vp.height = 5.0f;
-  s.field = std::make_shared<VectorField>(bake(VortexField(vp), Box{{-3, -3, 0}, {3, 3, 4}}, {24, 24, 16}));
+  s.field = std::make_shared<VectorField>(
+      bake(VortexField(vp), Box{{-3, -3, 0}, {3, 3, 4}}, {24, 24, 16}));
   s.terrain = std::make_shared<HeightMap>(HeightMap::flat(0.05f));
   s.state.sim.motion = motion;
   s.state.sim.integrator = integrator;
@@ -83,7 +84,8 @@ Agreement compare(const std::string& backend, Scenario s, int frames, std::size_
   for (int f = 0; f < frames; ++f) {
     if (f == 50) main.set("emitter.0.rate", 12000.0f);  // a mid-run change
     const FramePacket packet = main.next();
-    for (const StateChange& c : packet.changes) applyChange(state, c);
+    for (const StateChange& c : packet.changes)
+      applyChange(state, c);
     if (const auto& u = packet.fieldUpdate) {
       gpu.setField(u->field, u->placement, u->next);
       cpu.setField(u->field, u->placement, u->next);
@@ -109,8 +111,8 @@ TEST_P(ParticleBackendTest, MatchesTheCpuReferenceWithEmissionAndDeath) {
        {std::tuple{MotionModel::Tracer, Integrator::RK2, BoundaryMode::Kill},
         std::tuple{MotionModel::Drag, Integrator::RK4, BoundaryMode::Clamp},
         std::tuple{MotionModel::Force, Integrator::Euler, BoundaryMode::Wrap}}) {
-    SCOPED_TRACE(::testing::Message() << "motion " << int(motion) << " integrator " << int(integrator)
-                                      << " boundary " << int(boundary));
+    SCOPED_TRACE(::testing::Message() << "motion " << int(motion) << " integrator "
+                                      << int(integrator) << " boundary " << int(boundary));
     const Agreement a = compare(GetParam(), tornado(motion, integrator, boundary), 120, 16384);
     EXPECT_EQ(a.frames, 120u);
     // Positions agree to rounding: the shaders mirror the C++ operation by operation.
@@ -130,7 +132,8 @@ TEST_P(ParticleBackendTest, TimeVaryingFieldsBlendTheSameOnBothSides) {
     VortexParams vp;
     vp.range = 3.0f;
     vp.spin = spin;
-    frames.push_back(std::make_shared<VectorField>(bake(VortexField(vp), Box{{-3, -3, 0}, {3, 3, 4}}, {20, 20, 12})));
+    frames.push_back(std::make_shared<VectorField>(
+        bake(VortexField(vp), Box{{-3, -3, 0}, {3, 3, 4}}, {20, 20, 12})));
   }
   s.timeline = FieldTimeline({0.0, 0.5, 1.2}, frames);
   s.state.field.loop = true;
@@ -158,7 +161,9 @@ TEST_P(ParticleBackendTest, RaisingMaximumGrowsTheBuffersWithoutLosingParticles)
   MainContext::Options options;
   options.fixedDt = 1.0f / 60.0f;
   MainContext main(s.state, FieldUpdate{.field = s.field, .placement = s.placement}, options);
-  ParticleSystem gpu(main.initialState(), ParticleSystem::Options{.capacity = 4096, .capacityLimit = 1 << 16, .backend = GetParam()});
+  ParticleSystem gpu(
+      main.initialState(),
+      ParticleSystem::Options{.capacity = 4096, .capacityLimit = 1 << 16, .backend = GetParam()});
   gpu.setTerrain(s.terrain);
   ReferenceSimulator cpu(4096, 1 << 16);
   cpu.setField(s.field, s.placement);
@@ -171,13 +176,15 @@ TEST_P(ParticleBackendTest, RaisingMaximumGrowsTheBuffersWithoutLosingParticles)
       main.set("sim.maximum", 20000.0f);  // above the 4096 the buffers hold
     }
     const FramePacket packet = main.next();
-    for (const StateChange& c : packet.changes) applyChange(state, c);
+    for (const StateChange& c : packet.changes)
+      applyChange(state, c);
     gpu.advance(packet);
     cpu.step(packet.step(), state);
     const std::vector<Particle> g = gpu.update().readBack();
     ASSERT_EQ(g.size(), cpu.particles().size()) << "frame " << f;
     for (std::size_t i = 0; i < g.size(); ++i)
-      ASSERT_EQ(g[i].positionLife, cpu.particles()[i].positionLife) << "frame " << f << " particle " << i;
+      ASSERT_EQ(g[i].positionLife, cpu.particles()[i].positionLife)
+          << "frame " << f << " particle " << i;
     if (f == 30) {
       // Every particle alive before the growth is still there, moved one step, after the newborn.
       const std::size_t born = g.size() - before.size();
@@ -192,8 +199,9 @@ TEST_P(ParticleBackendTest, RaisingMaximumGrowsTheBuffersWithoutLosingParticles)
 
 INSTANTIATE_TEST_SUITE_P(Backends, ParticleBackendTest, ::testing::Values("tf-gs", "compute"),
                          [](const ::testing::TestParamInfo<const char*>& info) {
-                           return std::string(info.param) == "tf-gs" ? std::string("TransformFeedback")
-                                                                     : std::string("Compute");
+                           return std::string(info.param) == "tf-gs"
+                                      ? std::string("TransformFeedback")
+                                      : std::string("Compute");
                          });
 
 }  // namespace

@@ -53,7 +53,8 @@ ParticleState onePerFrame(std::vector<glm::vec3> positions, float opacity) {
   return s;
 }
 
-Image render(const ParticleState& state, int frames, std::shared_ptr<const VectorField> field = nullptr) {
+Image render(const ParticleState& state, int frames,
+             std::shared_ptr<const VectorField> field = nullptr) {
   MainContext::Options options;
   options.fixedDt = 0.25f;
   MainContext main(state, FieldUpdate{.field = field}, options);
@@ -64,21 +65,25 @@ Image render(const ParticleState& state, int frames, std::shared_ptr<const Vecto
                           .nearPlane = 0.1f,
                           .farPlane = 100.0f};
   WallRenderer wall(setup);
-  for (int f = 0; f < frames; ++f) wall.frame(main.next(), {0, 0});
+  for (int f = 0; f < frames; ++f)
+    wall.frame(main.next(), {0, 0});
   return wall.capture();
 }
 
 glm::ivec2 project(const glm::vec3& p) {
   const WallSpec w = cameraWall();
-  const View v = perspectiveView(w.camera->position, w.camera->target, {0, 0, 1}, glm::radians(40.0f),
-                                 float(kSize.x) / float(kSize.y), 0.1f, 100.0f);
+  const View v =
+      perspectiveView(w.camera->position, w.camera->target, {0, 0, 1}, glm::radians(40.0f),
+                      float(kSize.x) / float(kSize.y), 0.1f, 100.0f);
   const glm::vec4 clip = v.projection * v.view * glm::vec4(p, 1.0f);
   const glm::vec2 ndc = glm::vec2(clip) / clip.w;
   // Image rows run top to bottom.
   return {int((ndc.x * 0.5f + 0.5f) * kSize.x), int((0.5f - ndc.y * 0.5f) * kSize.y)};
 }
 
-float redness(glm::u8vec4 c) { return float(c.x) - 0.5f * (float(c.y) + float(c.z)); }
+float redness(glm::u8vec4 c) {
+  return float(c.x) - 0.5f * (float(c.y) + float(c.z));
+}
 
 TEST_F(RenderTest, ParticlesAppearWhereTheyAreAndNowhereElse) {
   const glm::vec3 where(1.5f, 0.0f, 2.5f);
@@ -93,7 +98,8 @@ TEST_F(RenderTest, ParticlesAppearWhereTheyAreAndNowhereElse) {
 
 TEST_F(RenderTest, TheFieldCarriesParticlesToWhereItSays) {
   // Tracer in a uniform field of 1 m/s along x: born at x = -2, after 3 s at x = +1.
-  auto field = std::make_shared<VectorField>(bake(Uniform({1.0f, 0, 0}), Box{{-5, -5, 0}, {5, 5, 5}}, {2, 2, 2}));
+  auto field = std::make_shared<VectorField>(
+      bake(Uniform({1.0f, 0, 0}), Box{{-5, -5, 0}, {5, 5, 5}}, {2, 2, 2}));
   ParticleState first = onePerFrame({{-2.0f, 0.0f, 2.5f}}, 0.8f);
   first.emitters[0].lifetime = 100.0f;
   MainContext::Options options;
@@ -108,7 +114,8 @@ TEST_F(RenderTest, TheFieldCarriesParticlesToWhereItSays) {
   WallRenderer wall(setup);
   wall.frame(main.next(), {0, 0});   // t = 0: born at x = -2
   main.set("emitter.0.rate", 0.0f);  // no more births
-  for (int f = 1; f <= 12; ++f) wall.frame(main.next(), {0, 0});  // 12 x 0.25 s
+  for (int f = 1; f <= 12; ++f)
+    wall.frame(main.next(), {0, 0});  // 12 x 0.25 s
   const Image image = wall.capture();
   const glm::ivec2 now = project({1.0f, 0.0f, 2.5f}), then = project({-2.0f, 0.0f, 2.5f});
   EXPECT_GT(redness(image.at(now.x, now.y)), 60.0f);
@@ -117,7 +124,8 @@ TEST_F(RenderTest, TheFieldCarriesParticlesToWhereItSays) {
 
 TEST_F(RenderTest, TheGroundHidesParticlesBelowIt) {
   const Image empty = render(onePerFrame({}, 0.8f), 1);
-  const Image buried = render(onePerFrame({{0.0f, 0.0f, -0.8f}}, 0.8f), 1);  // 1 m billboard, fully underground
+  const Image buried =
+      render(onePerFrame({{0.0f, 0.0f, -0.8f}}, 0.8f), 1);  // 1 m billboard, fully underground
   EXPECT_EQ(empty.rgba, buried.rgba);
   // A particle half in the ground shows above it and not below it.
   const Image half = render(onePerFrame({{0.0f, 0.0f, 0.0f}}, 0.8f), 1);
@@ -154,7 +162,8 @@ TEST_F(RenderTest, DeferredShadingLightsTheSideFacingTheLight) {
   s.render.colorBirth = s.render.colorDeath = {0.8f, 0.8f, 0.8f};
   s.render.lightDirection = {1.0f, 0.0f, 0.0f};
   const Image lit = render(s, 1);
-  const glm::ivec2 east = project(where + glm::vec3(0.6f, 0, 0)), west = project(where - glm::vec3(0.6f, 0, 0));
+  const glm::ivec2 east = project(where + glm::vec3(0.6f, 0, 0)),
+                   west = project(where - glm::vec3(0.6f, 0, 0));
   s.render.lightDirection = {-1.0f, 0.0f, 0.0f};
   const Image mirrored = render(s, 1);
   // The same pixel, the same alpha: only the light moved. Each half is brighter when lit.

@@ -41,8 +41,9 @@ TEST_F(SeamTest, AParticleOnTheSharedEdgeMeetsItselfAcrossTheSeam) {
   const WallCorners front{{-1.5f, 1.5f, 0.0f}, {1.5f, 1.5f, 0.0f}, {-1.5f, 1.5f, 3.0f}};
   const WallCorners left{{-1.5f, -1.5f, 0.0f}, {-1.5f, 1.5f, 0.0f}, {-1.5f, -1.5f, 3.0f}};
   const glm::vec3 eye(0.2f, -0.3f, 1.6f);
-  const glm::vec3 edgePoint(-1.5f, 1.5f, 2.2f);                  // on the seam, 2.2 m up
-  const glm::vec3 particle = eye + 1.8f * (edgePoint - eye);      // beyond it, on the same line of sight
+  const glm::vec3 edgePoint(-1.5f, 1.5f, 2.2f);  // on the seam, 2.2 m up
+  const glm::vec3 particle =
+      eye + 1.8f * (edgePoint - eye);  // beyond it, on the same line of sight
 
   ParticleState s;
   s.emitters[0].shape = EmitterShape::Point;
@@ -65,14 +66,16 @@ TEST_F(SeamTest, AParticleOnTheSharedEdgeMeetsItselfAcrossTheSeam) {
     Viewer viewer;
     viewer.head.position = eye;
     main.setViewer(viewer);
-    WallRenderer renderer(WallRendererSetup{.wall = wall(i == 0 ? "front" : "left", corners[i]),
-                                            .initial = s,
-                                            .terrain = std::make_shared<HeightMap>(HeightMap::flat(-10.0f)),
-                                            .capacity = 64});
+    WallRenderer renderer(
+        WallRendererSetup{.wall = wall(i == 0 ? "front" : "left", corners[i]),
+                          .initial = s,
+                          .terrain = std::make_shared<HeightMap>(HeightMap::flat(-10.0f)),
+                          .capacity = 64});
     renderer.frame(main.next(), {0, 0});
     images[i] = renderer.capture();
-    writePng(images[i], std::filesystem::temp_directory_path() / (std::string("sandstorm-seam-") +
-                                                                   (i == 0 ? "front" : "left") + ".png"));
+    writePng(images[i],
+             std::filesystem::temp_directory_path() /
+                 (std::string("sandstorm-seam-") + (i == 0 ? "front" : "left") + ".png"));
   }
   // Front wall: the seam is its left column; left wall: its right column.
   const float onFront = rowAtColumn(images[0], 0);

@@ -45,7 +45,8 @@ int maxDifference(const Image& a, int ax, int ay, const Image& b, int w, int h) 
   int worst = 0;
   for (int y = 0; y < h; ++y)
     for (int x = 0; x < w; ++x)
-      for (int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(int(a.at(ax + x, ay + y)[c]) - int(b.at(x, y)[c])));
+      for (int c = 0; c < 3; ++c)
+        worst = std::max(worst, std::abs(int(a.at(ax + x, ay + y)[c]) - int(b.at(x, y)[c])));
   return worst;
 }
 
@@ -60,10 +61,12 @@ TEST_F(StereoTest, SideBySideAndTopBottomHoldEachEyesImage) {
   EXPECT_LE(maxDifference(sbs, 0, 0, left, 48, 64), 1);
   EXPECT_LE(maxDifference(sbs, 48, 0, right, 48, 64), 1);
 
-  const Image leftWide = renderWall(StereoMode::Mono, {96, 32}, head - glm::vec3(sep / 2, 0, 0), 0.0f);
-  const Image rightWide = renderWall(StereoMode::Mono, {96, 32}, head + glm::vec3(sep / 2, 0, 0), 0.0f);
+  const Image leftWide =
+      renderWall(StereoMode::Mono, {96, 32}, head - glm::vec3(sep / 2, 0, 0), 0.0f);
+  const Image rightWide =
+      renderWall(StereoMode::Mono, {96, 32}, head + glm::vec3(sep / 2, 0, 0), 0.0f);
   const Image tb = renderWall(StereoMode::TopBottom, {96, 64}, head, sep);
-  EXPECT_LE(maxDifference(tb, 0, 0, leftWide, 96, 32), 1);   // left eye on top
+  EXPECT_LE(maxDifference(tb, 0, 0, leftWide, 96, 32), 1);  // left eye on top
   EXPECT_LE(maxDifference(tb, 0, 32, rightWide, 96, 32), 1);
 }
 
@@ -78,7 +81,8 @@ TEST_F(StereoTest, AnaglyphIsLeftLuminanceInRedAndRightInGreenAndBlue) {
     for (int x = 0; x < 64; ++x) {
       const glm::vec3 l(left.at(x, y)), r(right.at(x, y)), a(ana.at(x, y));
       const float lum = 0.299f * l.x + 0.587f * l.y + 0.114f * l.z;
-      worst = std::max({worst, int(std::abs(a.x - lum)), int(std::abs(a.y - r.y)), int(std::abs(a.z - r.z))});
+      worst = std::max(
+          {worst, int(std::abs(a.x - lum)), int(std::abs(a.y - r.y)), int(std::abs(a.z - r.z))});
     }
   EXPECT_LE(worst, 2);
 }

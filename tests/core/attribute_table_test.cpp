@@ -9,7 +9,9 @@
 namespace sandstorm {
 namespace {
 
-const AttributeTable& table() { return AttributeTable::instance(); }
+const AttributeTable& table() {
+  return AttributeTable::instance();
+}
 
 std::string errorOf(const std::function<void()>& f) {
   try {
@@ -64,16 +66,21 @@ TEST(AttributeTable, ClampsOutOfRangeValuesAndSaysSo) {
 TEST(AttributeTable, RefusesWrongTypesUnknownKeysAndChoices) {
   ParticleState s;
   const ParticleState before = s;
-  EXPECT_NE(errorOf([&] { table().set(s, "render.size", std::string("big")); }).find("expected a number"),
+  EXPECT_NE(
+      errorOf([&] { table().set(s, "render.size", std::string("big")); }).find("expected a number"),
+      std::string::npos);
+  EXPECT_NE(errorOf([&] { table().set(s, "sim.maximum", 2.5f); }).find("integer"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] { table().set(s, "sim.maximum", 2.5f); }).find("integer"), std::string::npos);
   EXPECT_NE(errorOf([&] { table().set(s, "render.sise", 1.0f); }).find("render.size"),
             std::string::npos);  // suggests the near key
-  EXPECT_NE(errorOf([&] { table().set(s, "sim.integrator", std::string("rk3")); }).find("euler, rk2, rk4"),
+  EXPECT_NE(errorOf([&] {
+              table().set(s, "sim.integrator", std::string("rk3"));
+            }).find("euler, rk2, rk4"),
             std::string::npos);
   EXPECT_NE(errorOf([&] { table().set(s, "emitter.5.rate", 1.0f); }).find("no emitter 5"),
             std::string::npos);
-  EXPECT_NE(errorOf([&] { table().set(s, "emitter.x.rate", 1.0f); }).find("emitter.N"), std::string::npos);
+  EXPECT_NE(errorOf([&] { table().set(s, "emitter.x.rate", 1.0f); }).find("emitter.N"),
+            std::string::npos);
   EXPECT_NE(errorOf([&] { table().set(s, "render.size", std::nanf("")); }).find("not finite"),
             std::string::npos);
   EXPECT_EQ(s.render.size, before.render.size);
@@ -84,7 +91,8 @@ TEST(AttributeTable, ParsesText) {
   EXPECT_EQ(std::get<float>(table().parse("emitter.0.rate", "50000")), 50000.0f);
   EXPECT_EQ(std::get<int>(table().parse("sim.maximum", "1e6")), 1000000);
   EXPECT_EQ(std::get<bool>(table().parse("sim.paused", "true")), true);
-  EXPECT_EQ(std::get<glm::vec3>(table().parse("emitter.0.velocity", "1, -2 3.5")), glm::vec3(1, -2, 3.5f));
+  EXPECT_EQ(std::get<glm::vec3>(table().parse("emitter.0.velocity", "1, -2 3.5")),
+            glm::vec3(1, -2, 3.5f));
   EXPECT_EQ(std::get<std::string>(table().parse("render.mode", "points")), "points");
   EXPECT_THROW(table().parse("emitter.0.velocity", "1 2"), Error);
   EXPECT_THROW(table().parse("emitter.0.velocity", "1 2 3 4"), Error);

@@ -30,11 +30,12 @@ std::string errorOf(const std::string& text, std::optional<int> monitors = std::
   return "(no error)";
 }
 
-#define EXPECT_ERROR(text, ...)                                                    \
-  do {                                                                             \
-    const std::string message = errorOf(text);                                     \
-    for (const char* part : {__VA_ARGS__})                                         \
-      EXPECT_NE(message.find(part), std::string::npos) << "missing '" << part << "' in: " << message; \
+#define EXPECT_ERROR(text, ...)                          \
+  do {                                                   \
+    const std::string message = errorOf(text);           \
+    for (const char* part : {__VA_ARGS__})               \
+      EXPECT_NE(message.find(part), std::string::npos)   \
+          << "missing '" << part << "' in: " << message; \
   } while (0)
 
 TEST(Config, EveryBundledConfigLoads) {
@@ -90,18 +91,20 @@ TEST(Config, UnknownKeysAreRefused) {
 }
 
 TEST(Config, MissingCornersAreRefused) {
-  EXPECT_ERROR("[[wall]]\nname = \"w\"\nlower_left = [0, 0, 0]\nlower_right = [1, 0, 0]\n", "test.toml:1",
-               "wall[0]", "missing required key 'upper_left'");
+  EXPECT_ERROR("[[wall]]\nname = \"w\"\nlower_left = [0, 0, 0]\nlower_right = [1, 0, 0]\n",
+               "test.toml:1", "wall[0]", "missing required key 'upper_left'");
 }
 
 TEST(Config, NonRectangularCornersAreRefused) {
-  EXPECT_ERROR("[[wall]]\nlower_left = [0, 0, 0]\nlower_right = [1, 0, 0]\nupper_left = [0.3, 0, 1]\n",
-               "test.toml:1", "wall[0]", "not a rectangle");
+  EXPECT_ERROR(
+      "[[wall]]\nlower_left = [0, 0, 0]\nlower_right = [1, 0, 0]\nupper_left = [0.3, 0, 1]\n",
+      "test.toml:1", "wall[0]", "not a rectangle");
 }
 
 TEST(Config, ZeroSizeWallsAreRefused) {
-  EXPECT_ERROR("[[wall]]\nlower_left = [0, 0, 0]\nlower_right = [0, 0, 0]\nupper_left = [0, 0, 1]\n",
-               "test.toml:1", "wall[0]", "positive size");
+  EXPECT_ERROR(
+      "[[wall]]\nlower_left = [0, 0, 0]\nlower_right = [0, 0, 0]\nupper_left = [0, 0, 1]\n",
+      "test.toml:1", "wall[0]", "positive size");
 }
 
 TEST(Config, MonitorsThatDoNotExistAreRefused) {
@@ -113,14 +116,16 @@ TEST(Config, MonitorsThatDoNotExistAreRefused) {
 }
 
 TEST(Config, UnknownStereoModesAreRefused) {
-  EXPECT_ERROR(kWall + "stereo = \"wiggle\"\n", "test.toml:7", "wall[0].stereo", "mono, quad-buffer, side-by-side");
+  EXPECT_ERROR(kWall + "stereo = \"wiggle\"\n", "test.toml:7", "wall[0].stereo",
+               "mono, quad-buffer, side-by-side");
 }
 
 TEST(Config, BadValuesAreRefusedWithTheirLine) {
   EXPECT_ERROR("[sim]\nmaximum = \"lots\"\n" + kWall, "test.toml:2", "sim.maximum", "integer");
   EXPECT_ERROR("[render]\nsize = 50.0\n" + kWall, "test.toml:2", "render.size", "clamped");
   EXPECT_ERROR("[field]\ndims = [0, 4, 4]\n" + kWall, "test.toml:2", "field.dims");
-  EXPECT_ERROR(kWall + "lower_left = 3\n", "test.toml", "already exists");  // TOML refuses redefinition
+  EXPECT_ERROR(kWall + "lower_left = 3\n", "test.toml",
+               "already exists");  // TOML refuses redefinition
   EXPECT_ERROR("[run]\nseed = [1\n", "test.toml", "syntax");
   EXPECT_ERROR("[run]\nseed = 1\n", "test.toml", "no [[wall]]");
   EXPECT_ERROR(kWall + kWall, "test.toml:8", "'front' is used twice");
@@ -137,7 +142,8 @@ TEST(Pvx, ParaViewWallsBecomeTheSameCaveAsOurs) {
   const AppConfig ours = loadConfig(SANDSTORM_SOURCE_DIR "/config/cave4-desktop.toml");
   ASSERT_EQ(pvx.walls.size(), 4u);
   for (const WallSpec& p : pvx.walls) {
-    const auto it = std::find_if(ours.walls.begin(), ours.walls.end(), [&](const WallSpec& w) { return w.name == p.name; });
+    const auto it = std::find_if(ours.walls.begin(), ours.walls.end(),
+                                 [&](const WallSpec& w) { return w.name == p.name; });
     ASSERT_NE(it, ours.walls.end()) << p.name;
     for (int a = 0; a < 3; ++a) {
       EXPECT_NEAR(p.corners.lowerLeft[a], it->corners.lowerLeft[a], 1e-6f) << p.name;
@@ -159,14 +165,21 @@ TEST(Pvx, BadMachinesAreRefusedByName) {
     return std::string("(no error)");
   };
   const auto dir = std::filesystem::temp_directory_path();
-  std::ofstream(dir / "skew.pvx") << "<pvx>\n<Machine Name=\"w\" LowerLeft=\"0 0 0\" LowerRight=\"1 0 0\" UpperRight=\"1.4 1 0\"/>\n</pvx>";
-  std::ofstream(dir / "short.pvx") << "<pvx>\n\n<Machine Name=\"w\" LowerLeft=\"0 0\" LowerRight=\"1 0 0\" UpperRight=\"1 1 0\"/>";
+  std::ofstream(dir / "skew.pvx") << "<pvx>\n<Machine Name=\"w\" LowerLeft=\"0 0 0\" "
+                                     "LowerRight=\"1 0 0\" UpperRight=\"1.4 1 0\"/>\n</pvx>";
+  std::ofstream(dir / "short.pvx") << "<pvx>\n\n<Machine Name=\"w\" LowerLeft=\"0 0\" "
+                                      "LowerRight=\"1 0 0\" UpperRight=\"1 1 0\"/>";
   std::ofstream(dir / "none.pvx") << "<pvx></pvx>";
-  EXPECT_NE(errorOf("pvx = \"" + (dir / "skew.pvx").string() + "\"").find("skew.pvx:2: machine 'w'"), std::string::npos);
-  EXPECT_NE(errorOf("pvx = \"" + (dir / "short.pvx").string() + "\"").find("LowerLeft=\"0 0\"; expected three numbers"),
+  EXPECT_NE(
+      errorOf("pvx = \"" + (dir / "skew.pvx").string() + "\"").find("skew.pvx:2: machine 'w'"),
+      std::string::npos);
+  EXPECT_NE(errorOf("pvx = \"" + (dir / "short.pvx").string() + "\"")
+                .find("LowerLeft=\"0 0\"; expected three numbers"),
             std::string::npos);
-  EXPECT_NE(errorOf("pvx = \"" + (dir / "none.pvx").string() + "\"").find("no <Machine>"), std::string::npos);
-  EXPECT_NE(errorOf("pvx = \"" + (dir / "none.pvx").string() + "\"\n[[wall]]\nname = \"x\"\n").find("not both"),
+  EXPECT_NE(errorOf("pvx = \"" + (dir / "none.pvx").string() + "\"").find("no <Machine>"),
+            std::string::npos);
+  EXPECT_NE(errorOf("pvx = \"" + (dir / "none.pvx").string() + "\"\n[[wall]]\nname = \"x\"\n")
+                .find("not both"),
             std::string::npos);
 }
 

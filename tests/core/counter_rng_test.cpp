@@ -9,10 +9,14 @@ namespace {
 
 TEST(CounterRng, IsAPureFunctionOfItsKey) {
   const Seed seed = Seed::from(0x123456789abcdefull);
-  EXPECT_EQ(randomBits(seed, 7, 2, 99, RngStream::kBirth), randomBits(seed, 7, 2, 99, RngStream::kBirth));
-  EXPECT_NE(randomBits(seed, 7, 2, 99, RngStream::kBirth), randomBits(seed, 7, 2, 99, RngStream::kVelocityBall));
-  EXPECT_NE(randomBits(seed, 7, 2, 99, RngStream::kBirth), randomBits(seed, 8, 2, 99, RngStream::kBirth));
-  EXPECT_NE(randomBits(seed, 7, 2, 99, RngStream::kBirth), randomBits(seed, 7, 3, 99, RngStream::kBirth));
+  EXPECT_EQ(randomBits(seed, 7, 2, 99, RngStream::kBirth),
+            randomBits(seed, 7, 2, 99, RngStream::kBirth));
+  EXPECT_NE(randomBits(seed, 7, 2, 99, RngStream::kBirth),
+            randomBits(seed, 7, 2, 99, RngStream::kVelocityBall));
+  EXPECT_NE(randomBits(seed, 7, 2, 99, RngStream::kBirth),
+            randomBits(seed, 8, 2, 99, RngStream::kBirth));
+  EXPECT_NE(randomBits(seed, 7, 2, 99, RngStream::kBirth),
+            randomBits(seed, 7, 3, 99, RngStream::kBirth));
   EXPECT_NE(randomBits(seed, 7, 2, 99, RngStream::kBirth),
             randomBits(Seed::from(5), 7, 2, 99, RngStream::kBirth));
 }
@@ -21,9 +25,15 @@ TEST(CounterRng, KnownValueOfPcg4d) {
   // pcg4d(0,0,0,0): every lane starts at 1013904223 (Jarzynski & Olano's constants).
   const glm::uvec4 v = pcg4d(glm::uvec4(0u));
   glm::uvec4 e(1013904223u);
-  e.x += e.y * e.w; e.y += e.z * e.x; e.z += e.x * e.y; e.w += e.y * e.z;
+  e.x += e.y * e.w;
+  e.y += e.z * e.x;
+  e.z += e.x * e.y;
+  e.w += e.y * e.z;
   e ^= e >> 16u;
-  e.x += e.y * e.w; e.y += e.z * e.x; e.z += e.x * e.y; e.w += e.y * e.z;
+  e.x += e.y * e.w;
+  e.y += e.z * e.x;
+  e.z += e.x * e.y;
+  e.w += e.y * e.z;
   EXPECT_EQ(v, e);
 }
 
@@ -33,7 +43,8 @@ TEST(CounterRng, UniformNumbersAreUniform) {
   for (int lane = 0; lane < 4; ++lane) {
     int bins[kBins] = {};
     for (int i = 0; i < kSamples; ++i) {
-      const float u = randomUniform(Seed::from(42), 3, 1, std::uint32_t(i), RngStream::kBirth)[lane];
+      const float u =
+          randomUniform(Seed::from(42), 3, 1, std::uint32_t(i), RngStream::kBirth)[lane];
       ASSERT_GE(u, 0.0f);
       ASSERT_LT(u, 1.0f);
       ++bins[int(u * kBins)];

@@ -13,7 +13,8 @@ TEST(Emission, MeanRateIsExactOnAverageAtAnyFrameRate) {
   for (float dt : {1.0f / 60.0f, 1.0f / 144.0f, 0.1f}) {
     double total = 0;
     const int frames = 20000;
-    for (int f = 0; f < frames; ++f) total += emissionCount(e, dt, Seed::from(9), std::uint32_t(f), 0);
+    for (int f = 0; f < frames; ++f)
+      total += emissionCount(e, dt, Seed::from(9), std::uint32_t(f), 0);
     const double expected = double(e.rate) * dt * frames;
     // Stochastic rounding adds at most a Bernoulli variance of 1/4 per frame.
     EXPECT_NEAR(total, expected, 5.0 * std::sqrt(frames * 0.25)) << "dt " << dt;

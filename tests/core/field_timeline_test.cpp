@@ -12,7 +12,8 @@ std::vector<std::shared_ptr<const VectorField>> frames(int n) {
   std::vector<std::shared_ptr<const VectorField>> out;
   for (int i = 0; i < n; ++i) {
     auto f = std::make_shared<VectorField>(Box{{0, 0, 0}, {1, 1, 1}}, glm::ivec3(2));
-    for (glm::vec3& v : f->values()) v = glm::vec3(float(i));
+    for (glm::vec3& v : f->values())
+      v = glm::vec3(float(i));
     out.push_back(f);
   }
   return out;
@@ -59,7 +60,8 @@ TEST(FieldTimeline, TheMainContextSendsAFrameOnceAndTheWeightEveryFrame) {
     updates.push_back(p.fieldUpdate ? int(p.fieldUpdate->field->values()[0].x) : -1);
     blends.push_back(p.fieldBlend);
   }
-  // Frames 0-3 blend 0 -> 1, 4-7 blend 1 -> 2, 8 wraps into 2 -> 0: a new pair travels only at 0, 4 and 8.
+  // Frames 0-3 blend 0 -> 1, 4-7 blend 1 -> 2, 8 wraps into 2 -> 0: a new pair travels only at 0, 4
+  // and 8.
   EXPECT_EQ(updates, (std::vector<int>{0, -1, -1, -1, 1, -1, -1, -1, 2}));
   EXPECT_FLOAT_EQ(blends[1], 0.25f);
   EXPECT_FLOAT_EQ(blends[6], 0.5f);

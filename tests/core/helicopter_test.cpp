@@ -57,9 +57,9 @@ TEST(VortexRing, LiftsTheWallJetOutsideAndDrawsItInAbove) {
   p.core = 2.0f;
   p.strength = 4.0f;
   const VortexRingField ring(p);
-  const glm::vec3 below = ring.evaluate({10.0f, 0.0f, 1.0f});   // under the core: outwards
-  const glm::vec3 outside = ring.evaluate({12.0f, 0.0f, 3.0f}); // outer side: up
-  const glm::vec3 above = ring.evaluate({0.0f, 10.0f, 5.0f});   // above (on the y axis): inwards
+  const glm::vec3 below = ring.evaluate({10.0f, 0.0f, 1.0f});    // under the core: outwards
+  const glm::vec3 outside = ring.evaluate({12.0f, 0.0f, 3.0f});  // outer side: up
+  const glm::vec3 above = ring.evaluate({0.0f, 10.0f, 5.0f});    // above (on the y axis): inwards
   EXPECT_GT(below.x, 0.0f);
   EXPECT_GT(outside.z, 0.0f);
   EXPECT_LT(above.y, 0.0f);
@@ -70,16 +70,19 @@ TEST(HeightMapPgm, RoundTripsAndReadsNorthUp) {
   const auto path = std::filesystem::temp_directory_path() / "sandstorm-height.pgm";
   std::vector<float> h(4 * 3);
   for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 4; ++i) h[std::size_t(j * 4 + i)] = 0.5f * float(i) + 2.0f * float(j);
+    for (int i = 0; i < 4; ++i)
+      h[std::size_t(j * 4 + i)] = 0.5f * float(i) + 2.0f * float(j);
   const HeightMap map({-2, -1}, {2, 1}, {4, 3}, h);
   writeHeightMapPgm(map, path, 0.0f, 10.0f);
   const HeightMap back = readHeightMapPgm(path, Box{{-2, -1, 0}, {2, 1, 10}});
   for (int j = 0; j < 3; ++j)
-    for (int i = 0; i < 4; ++i) EXPECT_NEAR(back.at(i, j), map.at(i, j), 10.0f / 65535.0f);
+    for (int i = 0; i < 4; ++i)
+      EXPECT_NEAR(back.at(i, j), map.at(i, j), 10.0f / 65535.0f);
   // The file's first sample row is the northern edge (largest y), as an image of a map is.
   std::ifstream in(path, std::ios::binary);
   std::string line;
-  for (int i = 0; i < 4; ++i) std::getline(in, line);  // magic, comment, size, maxval
+  for (int i = 0; i < 4; ++i)
+    std::getline(in, line);  // magic, comment, size, maxval
   const int first = (in.get() << 8) | in.get();
   EXPECT_NEAR(first / 65535.0f * 10.0f, map.at(0, 2), 1e-3f);
 }

@@ -15,7 +15,9 @@ namespace {
 struct Rotation final : AnalyticField {
   float omega;
   explicit Rotation(float w) : omega(w) {}
-  glm::vec3 evaluate(const glm::vec3& p) const override { return omega * glm::vec3(-p.y, p.x, 0.0f); }
+  glm::vec3 evaluate(const glm::vec3& p) const override {
+    return omega * glm::vec3(-p.y, p.x, 0.0f);
+  }
 };
 
 struct Constant final : AnalyticField {
@@ -24,8 +26,8 @@ struct Constant final : AnalyticField {
   glm::vec3 evaluate(const glm::vec3&) const override { return value; }
 };
 
-Particle run(const VectorField& field, MotionModel motion, Integrator integrator, float dt, int steps,
-             glm::vec3 x0, glm::vec3 v0 = glm::vec3(0), glm::vec3 gravity = glm::vec3(0),
+Particle run(const VectorField& field, MotionModel motion, Integrator integrator, float dt,
+             int steps, glm::vec3 x0, glm::vec3 v0 = glm::vec3(0), glm::vec3 gravity = glm::vec3(0),
              float tau = 1.0f) {
   PhysicsInputs in;
   in.field = &field;
@@ -36,7 +38,8 @@ Particle run(const VectorField& field, MotionModel motion, Integrator integrator
   in.settings.groundCollision = false;
   in.dt = dt;
   Particle p{glm::vec4(x0, 1e6f), glm::vec4(v0, 1e6f)};
-  for (int i = 0; i < steps; ++i) EXPECT_TRUE(advance(p, in));
+  for (int i = 0; i < steps; ++i)
+    EXPECT_TRUE(advance(p, in));
   return p;
 }
 
@@ -44,9 +47,12 @@ Particle run(const VectorField& field, MotionModel motion, Integrator integrator
 std::complex<double> amplification(Integrator integrator, double theta) {
   const std::complex<double> z(0.0, theta);
   switch (integrator) {
-    case Integrator::Euler: return 1.0 + z;
-    case Integrator::RK2: return 1.0 + z + z * z / 2.0;
-    case Integrator::RK4: return 1.0 + z + z * z / 2.0 + z * z * z / 6.0 + z * z * z * z / 24.0;
+    case Integrator::Euler:
+      return 1.0 + z;
+    case Integrator::RK2:
+      return 1.0 + z + z * z / 2.0;
+    case Integrator::RK4:
+      return 1.0 + z + z * z / 2.0 + z * z * z / 6.0 + z * z * z * z / 24.0;
   }
   return 0;
 }
@@ -75,7 +81,7 @@ TEST(Integration, RK4KeepsTheRadiusWhereEulerSpiralsOut) {
     return std::abs(glm::length(glm::vec2(p.position())) - 1.0f);
   };
   const float euler = radiusError(Integrator::Euler), rk4 = radiusError(Integrator::RK4);
-  EXPECT_GT(euler, 0.1f);     // (1 + h^2)^(n/2) - 1 = 0.17
+  EXPECT_GT(euler, 0.1f);  // (1 + h^2)^(n/2) - 1 = 0.17
   EXPECT_LT(rk4, 1e-5f);
   EXPECT_LT(rk4 * 1000.0f, euler);
 }
@@ -90,13 +96,16 @@ TEST(Integration, ForceModelFallsAsUniformAcceleration) {
   const glm::vec3 exact = v0 * t + 0.5f * (a + g) * t * t;
   for (Integrator i : {Integrator::RK2, Integrator::RK4}) {
     const Particle p = run(field, MotionModel::Force, i, dt, n, glm::vec3(0), v0, g);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(p.position()[c], exact[c], 1e-4f);
-    for (int c = 0; c < 3; ++c) EXPECT_NEAR(p.velocity()[c], (v0 + (a + g) * t)[c], 1e-4f);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(p.position()[c], exact[c], 1e-4f);
+    for (int c = 0; c < 3; ++c)
+      EXPECT_NEAR(p.velocity()[c], (v0 + (a + g) * t)[c], 1e-4f);
   }
   // The thesis's Euler moves with the updated velocity: x_n = v0 t + (a + g) h^2 n (n + 1) / 2.
   const Particle e = run(field, MotionModel::Force, Integrator::Euler, dt, n, glm::vec3(0), v0, g);
   const glm::vec3 eulerExact = v0 * t + (a + g) * (dt * dt * n * (n + 1) / 2.0f);
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(e.position()[c], eulerExact[c], 1e-4f);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(e.position()[c], eulerExact[c], 1e-4f);
 }
 
 TEST(Integration, DragRelaxesTowardsTheFieldVelocity) {
@@ -108,12 +117,14 @@ TEST(Integration, DragRelaxesTowardsTheFieldVelocity) {
   const float decay = std::exp(-dt * n / tau);
   const Particle rk4 = run(field, MotionModel::Drag, Integrator::RK4, dt, n, glm::vec3(0),
                            glm::vec3(0), glm::vec3(0), tau);
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(rk4.velocity()[c], u[c] * (1 - decay), 1e-5f);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(rk4.velocity()[c], u[c] * (1 - decay), 1e-5f);
   // Euler: v_n = u (1 - (1 - h / tau)^n).
   const Particle euler = run(field, MotionModel::Drag, Integrator::Euler, dt, n, glm::vec3(0),
                              glm::vec3(0), glm::vec3(0), tau);
   const float eulerDecay = std::pow(1.0f - dt / tau, float(n));
-  for (int c = 0; c < 3; ++c) EXPECT_NEAR(euler.velocity()[c], u[c] * (1 - eulerDecay), 1e-5f);
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(euler.velocity()[c], u[c] * (1 - eulerDecay), 1e-5f);
 }
 
 TEST(Integration, BoundaryModes) {
@@ -161,7 +172,7 @@ TEST(Integration, GroundStopsFallingParticles) {
   Particle p{glm::vec4(0, 0, 0.6f, 10.0f), glm::vec4(0, 0, -4.0f, 10.0f)};
   EXPECT_TRUE(advance(p, in));
   EXPECT_FLOAT_EQ(p.position().z, 0.5f);
-  EXPECT_GT(p.velocity().z, 0.0f);  // bounced
+  EXPECT_GT(p.velocity().z, 0.0f);                             // bounced
   EXPECT_NEAR(p.velocity().z, 0.5f * (4.0f + 0.981f), 1e-4f);  // v = -4.981 before the bounce
 }
 

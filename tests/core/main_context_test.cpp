@@ -33,7 +33,8 @@ TEST(MainContext, ChangesTakeEffectAtTheNextPacket) {
   // A replica that applies the packets holds the same state.
   ParticleState replica = main.initialState();
   for (const FramePacket* p : {&p0, &p1})
-    for (const StateChange& c : p->changes) applyChange(replica, c);
+    for (const StateChange& c : p->changes)
+      applyChange(replica, c);
   EXPECT_FLOAT_EQ(replica.render.size, 0.3f);
   EXPECT_EQ(replica.sim.maximum, 1234);
 }
@@ -97,7 +98,8 @@ TEST(MainContext, AFixedStepIsTakenAsGiven) {
 TEST(MainContext, RecordsEveryChangeWithItsFrame) {
   MainContext main(ParticleState{}, FieldUpdate{}, fixed());
   std::vector<std::pair<std::uint32_t, std::string>> log;
-  main.setChangeListener([&](std::uint32_t f, const StateChange& c) { log.emplace_back(f, describe(c)); });
+  main.setChangeListener(
+      [&](std::uint32_t f, const StateChange& c) { log.emplace_back(f, describe(c)); });
   main.next();
   main.set("render.size", 0.5f);
   main.next();

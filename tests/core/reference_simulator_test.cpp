@@ -41,7 +41,8 @@ TEST(ReferenceSimulator, NewbornComeFirstAndSurvivorsKeepTheirOrder) {
   sim.step(step, s);
   const std::size_t born = step.emission[0];
   ASSERT_EQ(sim.particles().size(), born + first.size());
-  for (std::size_t i = 0; i < born; ++i) EXPECT_FLOAT_EQ(sim.particles()[i].life(), 10.0f);
+  for (std::size_t i = 0; i < born; ++i)
+    EXPECT_FLOAT_EQ(sim.particles()[i].life(), 10.0f);
   for (std::size_t i = 0; i < first.size(); ++i)
     EXPECT_FLOAT_EQ(sim.particles()[born + i].life(), first[i].life() - 0.1f);
 }
@@ -95,12 +96,13 @@ TEST(ReferenceSimulator, BirthFillsTheEmitterShape) {
   e.width = 2.0f;
   e.depth = 1.0f;
   e.radius = 0.5f;
-  for (const Case& c : {Case{EmitterShape::Box,
-                             [](glm::vec3 d) { return std::abs(d.x) <= 1 && std::abs(d.y) <= 0.5f && d.z == 0; }},
-                        Case{EmitterShape::Sphere, [](glm::vec3 d) { return glm::length(d) <= 0.5f + 1e-6f; }},
-                        Case{EmitterShape::Disc,
-                             [](glm::vec3 d) { return glm::length(d) <= 0.5f + 1e-6f && d.z == 0; }},
-                        Case{EmitterShape::Point, [](glm::vec3 d) { return d == glm::vec3(0); }}}) {
+  for (const Case& c :
+       {Case{EmitterShape::Box,
+             [](glm::vec3 d) { return std::abs(d.x) <= 1 && std::abs(d.y) <= 0.5f && d.z == 0; }},
+        Case{EmitterShape::Sphere, [](glm::vec3 d) { return glm::length(d) <= 0.5f + 1e-6f; }},
+        Case{EmitterShape::Disc,
+             [](glm::vec3 d) { return glm::length(d) <= 0.5f + 1e-6f && d.z == 0; }},
+        Case{EmitterShape::Point, [](glm::vec3 d) { return d == glm::vec3(0); }}}) {
     e.shape = c.shape;
     ReferenceSimulator sim(10000);
     sim.step(stepFor(s, 0, 0.5f), s);

@@ -17,7 +17,8 @@ VectorField linearField() {
   VectorField f(Box{{-1, 0, 2}, {3, 2, 4}}, {5, 3, 9});
   for (int k = 0; k < 9; ++k)
     for (int j = 0; j < 3; ++j)
-      for (int i = 0; i < 5; ++i) f.at(i, j, k) = linear(f.pointPosition(i, j, k));
+      for (int i = 0; i < 5; ++i)
+        f.at(i, j, k) = linear(f.pointPosition(i, j, k));
   return f;
 }
 
@@ -34,7 +35,8 @@ TEST(VectorField, TrilinearSamplingIsExactForLinearFields) {
   for (const glm::vec3 p : {glm::vec3(0.3f, 1.7f, 2.9f), glm::vec3(-0.99f, 0.01f, 3.999f),
                             glm::vec3(2.5f, 0.5f, 2.25f), glm::vec3(1, 1, 3)}) {
     const glm::vec3 expected = linear(p), got = f.sample(p);
-    for (int a = 0; a < 3; ++a) EXPECT_NEAR(got[a], expected[a], 1e-5f) << "at " << p.x << "," << p.y;
+    for (int a = 0; a < 3; ++a)
+      EXPECT_NEAR(got[a], expected[a], 1e-5f) << "at " << p.x << "," << p.y;
   }
 }
 

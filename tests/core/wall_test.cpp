@@ -35,7 +35,8 @@ TEST(OffAxis, HeadOffCentreSeesASkewedFrustum) {
   // The same eye and the floor, 1 m below: x - 0.5 in [-2, 1], y - 0.5 in [-2, 1].
   expectFrustum(offAxisFrustum(kFloor, {0.5f, 0.5f, 1.0f}, 0.1f, 100.0f), -0.2f, 0.1f, -0.2f, 0.1f);
   // The left wall, 2 m away: its right is +y (y - 0.5 in [-2, 1]), its up +z.
-  expectFrustum(offAxisFrustum(kLeft, {0.5f, 0.5f, 1.0f}, 0.1f, 100.0f), -0.1f, 0.05f, -0.05f, 0.1f);
+  expectFrustum(offAxisFrustum(kLeft, {0.5f, 0.5f, 1.0f}, 0.1f, 100.0f), -0.1f, 0.05f, -0.05f,
+                0.1f);
 }
 
 glm::vec3 ndc(const View& v, const glm::vec3& p) {
@@ -44,7 +45,8 @@ glm::vec3 ndc(const View& v, const glm::vec3& p) {
 }
 
 TEST(OffAxis, WallCornersLandOnTheImageCorners) {
-  for (const glm::vec3 eye : {glm::vec3(0, 0, 1.7f), glm::vec3(-1.2f, 0.9f, 0.4f), glm::vec3(1, -1, 2.5f)}) {
+  for (const glm::vec3 eye :
+       {glm::vec3(0, 0, 1.7f), glm::vec3(-1.2f, 0.9f, 0.4f), glm::vec3(1, -1, 2.5f)}) {
     for (const WallCorners& w : {kFront, kLeft, kFloor}) {
       const View v = offAxisView(w, eye, 0.05f, 50.0f);
       const glm::vec3 ll = ndc(v, w.lowerLeft), ur = ndc(v, w.upperRight());
@@ -74,7 +76,8 @@ TEST(OffAxis, APointOnTheSharedEdgeProjectsOntoBothWallsEdges) {
   EXPECT_NEAR(onFront.x, -1.0f, 1e-4f);
   EXPECT_NEAR(onLeft.x, 1.0f, 1e-4f);
   EXPECT_NEAR(onFront.y, onLeft.y, 1e-4f);
-  EXPECT_NEAR(onFront.y, 2.0f * 2.1f / 3.0f - 1.0f, 1e-4f);  // the edge point's height on the 3 m wall
+  EXPECT_NEAR(onFront.y, 2.0f * 2.1f / 3.0f - 1.0f,
+              1e-4f);  // the edge point's height on the 3 m wall
 }
 
 TEST(OffAxis, RejectsCornersThatAreNotARectangle) {
