@@ -14,6 +14,7 @@
 #include "app/menu/menu_host.h"
 #include "app/scene_setup.h"
 #include "contexts/platform/egl_context.h"
+#include "contexts/particles/simulation_share.h"
 #include "contexts/platform/glfw_window.h"
 #include "contexts/render/render_context.h"
 #include "core/cave/viewer.h"
@@ -193,18 +194,40 @@ int App::run() {
   std::vector<GlfwWindow*> windows;
   std::vector<GlfwWindow*> wallWindows(std::size_t(wallCount), nullptr);
   int menuWall = -1;
+  // One simulation per GPU: windows share objects with the first window, offscreen
+  // walls with the first offscreen wall (GLX and EGL contexts cannot share).
+  struct ShareGroup {
+    const GlContext* owner = nullptr;
+    std::shared_ptr<SimulationShare> share;
+    int readers = 0;
+  };
+  ShareGroup windowGroup, offscreenGroup;
+  if (config_.run.sharedSimulation) {
+    for (const WallSpec& w : config_.walls) ++(w.window ? windowGroup : offscreenGroup).readers;
+    for (ShareGroup* g : {&windowGroup, &offscreenGroup})
+      if (g->readers-- > 0) g->share = std::make_shared<SimulationShare>(g->readers);
+  }
   for (int i = 0; i < wallCount; ++i) {
     const WallSpec& spec = config_.walls[std::size_t(i)];
+    ShareGroup& group = spec.window ? windowGroup : offscreenGroup;
     std::unique_ptr<GlContext> context;
     if (spec.window) {
       GlfwWindow::Options o = windowOptions("Sandstorm: " + spec.name, *spec.window);
       o.quadBufferStereo = spec.stereo == StereoMode::QuadBuffer;
+      o.share = static_cast<const GlfwWindow*>(group.owner);
       auto window = std::make_unique<GlfwWindow>(*glfw, o);
       windows.push_back(window.get());
       wallWindows[std::size_t(i)] = window.get();
       context = std::move(window);
     } else {
-      context = std::make_unique<EglContext>();
+      context = std::make_unique<EglContext>(
+          EglContext::Options{.share = static_cast<const EglContext*>(group.owner)});
+    }
+    // The group's first wall simulates; the others read (reader numbers 0, 1, ...).
+    int shareReader = -1;
+    if (group.share) {
+      if (group.owner) shareReader = group.readers++;
+      else group.owner = context.get(), group.readers = 0;
     }
     if (spec.menu) menuWall = i;
     log::info("wall '", spec.name, "': ", context->description());
@@ -214,6 +237,8 @@ int App::run() {
                             .capacity = config_.run.capacity,
                             .capacityLimit = config_.run.capacityLimit,
                             .backend = config_.run.backend,
+                            .share = group.share,
+                            .shareReader = shareReader,
                             .nearPlane = config_.run.nearPlane,
                             .farPlane = config_.run.farPlane};
     walls.push_back(

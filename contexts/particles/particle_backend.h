@@ -49,8 +49,16 @@ class ParticleBackend {
     std::uint32_t countBuffer = 0;
     std::uint32_t countOffset = 0;
     std::uint32_t countAdd = 0;
+    // Byte offset in `countBuffer` of a DrawArraysIndirectCommand drawing the
+    // records, or -1: another context can draw them without reading anything back.
+    std::int64_t drawCommand = -1;
   };
   virtual Records records() const = 0;
+
+  // False for a wall that only draws another context's simulation (SharedParticles).
+  virtual bool simulates() const { return true; }
+  // Called once a frame's every view is drawn (a shared simulation's readers fence here).
+  virtual void endFrame() {}
 
   virtual std::size_t capacity() const = 0;
   // These wait for the GPU; for tests, stats and dumps, not the frame loop.

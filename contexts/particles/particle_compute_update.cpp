@@ -259,7 +259,7 @@ void ParticleComputeUpdate::draw() const {
 ParticleBackend::Records ParticleComputeUpdate::records() const {
   const BufferSet& set = sets_[std::size_t(current_)];
   return {set.positionLife.id(), set.velocityKind.id(), control_.id(),
-          std::uint32_t(kCountOffset + current_ * 4), 0};
+          std::uint32_t(kCountOffset + current_ * 4), 0, std::int64_t(kDrawOffset + current_ * 16)};
 }
 
 std::size_t ParticleComputeUpdate::liveCount() const {

@@ -2,6 +2,7 @@
 
 #include "contexts/particles/particle_compute_update.h"
 #include "contexts/particles/particle_geo_update.h"
+#include "contexts/particles/shared_particles.h"
 #include "contexts/render/view_targets.h"
 #include "core/sim/capacity.h"
 #include "core/util/error.h"
@@ -16,11 +17,25 @@ std::unique_ptr<ParticleBackend> makeParticleBackend(const std::string& name,
   throw Error(concat("unknown particle backend '", name, "'; expected tf-gs or compute"));
 }
 
+namespace {
+
+// A wall's own simulation, the one it runs for its GPU's other walls too, or theirs.
+std::unique_ptr<ParticleBackend> backendFor(const ParticleSystem::Options& o) {
+  if (o.share && o.shareReader >= 0) return std::make_unique<SharedParticles>(o.share, o.shareReader);
+  std::unique_ptr<ParticleBackend> own = makeParticleBackend(o.backend, o.capacity);
+  if (o.share) return std::make_unique<SharingBackend>(std::move(own), o.share);
+  return own;
+}
+
+}  // namespace
+
 ParticleSystem::ParticleSystem(const ParticleState& initial, const Options& options)
     : state_(initial),
       capacityLimit_(std::max(options.capacity, options.capacityLimit)),
-      update_(makeParticleBackend(options.backend, options.capacity)),
+      update_(backendFor(options)),
       stageTimers_(options.stageTimers) {}
+
+void ParticleSystem::endFrame() { update_->endFrame(); }
 
 void ParticleSystem::setTerrain(std::shared_ptr<const HeightMap> terrain) {
   update_->setTerrain(std::move(terrain));
@@ -34,7 +49,7 @@ void ParticleSystem::advance(const FramePacket& packet) {
   // Raising Maximum above the buffers grows them, at the same frame on every wall.
   const std::size_t capacity =
       grownCapacity(update_->capacity(), state_.sim.maximum, capacityLimit_);
-  if (capacity > update_->capacity()) {
+  if (update_->simulates() && capacity > update_->capacity()) {
     log::info("frame ", packet.frame, ": growing the particle buffers from ", update_->capacity(),
               " to ", capacity);
     update_->grow(capacity);

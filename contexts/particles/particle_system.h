@@ -20,6 +20,7 @@
 
 namespace sandstorm {
 
+class SimulationShare;
 class ViewTargets;
 
 // The backend of that name ("tf-gs" or "compute"); throws Error for others.
@@ -33,11 +34,18 @@ class ParticleSystem {
     std::string backend =
         "compute";            // "compute" (default: the faster, docs/PERFORMANCE.md) or "tf-gs"
     bool stageTimers = true;  // timings(); off where the caller times the stages itself
+    // One simulation for the walls of one GPU (contexts sharing objects):
+    // with a share, shareReader < 0 runs the simulation and publishes it,
+    // shareReader = k >= 0 draws the owner's particles as reader k.
+    std::shared_ptr<SimulationShare> share;
+    int shareReader = -1;
   };
 
   ParticleSystem(const ParticleState& initial, const Options& options);
 
   void setTerrain(std::shared_ptr<const HeightMap> terrain);
+  // After every view of a frame is drawn (a shared simulation's readers release it).
+  void endFrame();
   // Applies the packet (reset, changes, field) and runs this frame's update.
   void advance(const FramePacket& packet);
   // Draws the particles of the view whose scene is in `targets` and composites

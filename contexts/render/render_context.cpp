@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "contexts/particles/simulation_share.h"
 #include "core/util/log.h"
 
 namespace sandstorm {
@@ -51,6 +52,7 @@ void RenderContext::run() {
         if (const std::shared_ptr<const UiDrawData> menu = overlay_())
           renderer->drawOverlay(*menu, font_);
       if (hook_) hook_(*renderer, *packet);
+      renderer->endFrame();
       const std::size_t live = countParticles_ ? renderer->particles().update().liveCount() : 0;
       const double ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -88,6 +90,7 @@ void RenderContext::run() {
     log::error(*error_);
     barrier_.arrive_and_drop();
     channel_.leave(consumer_);
+    if (setup_.share) setup_.share->abandon();  // walls drawing a shared simulation must not wait for it
     try {
       context_->releaseCurrent();
     } catch (...) {

@@ -10,7 +10,11 @@ WallRenderer::WallRenderer(const WallRendererSetup& s)
     : wall_(s.wall),
       near_(s.nearPlane),
       far_(s.farPlane),
-      system_(s.initial, ParticleSystem::Options{s.capacity, s.capacityLimit, s.backend}),
+      system_(s.initial, ParticleSystem::Options{.capacity = s.capacity,
+                                                 .capacityLimit = s.capacityLimit,
+                                                 .backend = s.backend,
+                                                 .share = s.share,
+                                                 .shareReader = s.shareReader}),
       anaglyph_(std::vector<std::string>{"fullscreen.vert", "anaglyph.frag"}),
       emptyVao_(gl::createVertexArray()) {
   if (s.terrain) {

@@ -25,6 +25,8 @@ struct WallRendererSetup {
   std::size_t capacity = 1u << 20;
   std::size_t capacityLimit = 1u << 26;
   std::string backend = "compute";
+  std::shared_ptr<SimulationShare> share;  // one simulation per GPU (ParticleSystem::Options)
+  int shareReader = -1;
   float nearPlane = 0.05f;
   float farPlane = 500.0f;
 };
@@ -36,6 +38,8 @@ class WallRenderer {
   // Applies the packet, advances the particles and draws the wall. `windowSize`
   // is the default framebuffer's size; (0, 0) draws into the offscreen image.
   void frame(const FramePacket& packet, glm::ivec2 windowSize);
+  // The frame is done with the particles (after captures and hash probes).
+  void endFrame() { system_.endFrame(); }
   // Draws the menu over the wall's last frame (the wall that shows the menu).
   void drawOverlay(const UiDrawData& menu, const UiFont& font);
   // The image last drawn (offscreen) or the back buffer (window).

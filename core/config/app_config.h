@@ -101,6 +101,9 @@ struct RunSpec {
   int frames = 0;                        // 0: until a window closes
   std::string backend =
       "compute";  // or "tf-gs" (the thesis's); compute is faster (docs/PERFORMANCE.md)
+  // One simulation per GPU: the walls whose contexts can share objects (all
+  // windows, or all offscreen walls, of one process) draw one wall's particles.
+  bool sharedSimulation = false;
   float nearPlane = 0.05f;
   float farPlane = 500.0f;
 };

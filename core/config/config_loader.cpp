@@ -157,7 +157,7 @@ void setAttributes(const Reader& r, const toml::value& table, const std::string&
 void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
   r.checkKeys(
       t, "run",
-      {"seed", "capacity", "capacity_limit", "fixed_dt", "frames", "backend", "near", "far"});
+      {"seed", "capacity", "capacity_limit", "fixed_dt", "frames", "backend", "shared_simulation", "near", "far"});
   if (const toml::value* seed = r.find(t, "seed")) {
     if (!seed->is_integer() || seed->as_integer() < 0)
       r.fail(*seed, "run.seed", "expected a non-negative integer");
@@ -174,6 +174,9 @@ void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
   run.frames = r.integer(t, "frames", "run", run.frames, 0, 100000000);
   run.backend = r.choice<std::string>(t, "backend", "run", run.backend,
                                       {{"tf-gs", "tf-gs"}, {"compute", "compute"}});
+  run.sharedSimulation = r.boolean(t, "shared_simulation", "run", run.sharedSimulation);
+  if (run.sharedSimulation && run.backend != "compute")
+    r.fail(t, "run.shared_simulation", "needs run.backend = \"compute\" (transform-feedback counts stay in one context)");
   run.nearPlane = r.real(t, "near", "run", run.nearPlane);
   run.farPlane = r.real(t, "far", "run", run.farPlane);
   if (!(run.nearPlane > 0.0f) || !(run.farPlane > run.nearPlane))

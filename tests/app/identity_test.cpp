@@ -6,6 +6,8 @@
 
 #include <map>
 #include <set>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include "tests/app/run_process.h"
@@ -76,6 +78,32 @@ TEST(Identity, OneWallPerProcessMatchesAllWallsInOne) {
     for (const HashLine& h : readHashes(log))
       hashes.push_back(h.hash);
     EXPECT_EQ(hashes, perWall[wall]) << wall;
+  }
+}
+
+TEST(Identity, OneSimulationPerGpuMatchesOnePerWall) {
+  // run.shared_simulation: one wall updates, three draw its buffers through shared contexts.
+  const auto dir = test::scratchDir("shared");
+  const auto own = runSandstorm(kRun + "--frames 150 --hash-log " + (dir / "own.txt").string() + " --screenshot " +
+                                (dir / "own").string());
+  const auto shared = runSandstorm("--config tests/data/identity-shared.toml --replay tests/data/midrun.session "
+                                   "--frames 150 --hash-log " + (dir / "shared.txt").string() + " --screenshot " +
+                                   (dir / "shared").string());
+  ASSERT_EQ(own.exitCode, 0) << own.output;
+  ASSERT_EQ(shared.exitCode, 0) << shared.output;
+  const std::vector<HashLine> a = readHashes(dir / "own.txt"), b = readHashes(dir / "shared.txt");
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    EXPECT_EQ(a[i].hash, b[i].hash) << a[i].wall << " frame " << a[i].frame;
+    EXPECT_EQ(a[i].count, b[i].count);
+  }
+  for (const char* wall : {"front", "left", "right", "floor"}) {
+    const auto read = [](const std::filesystem::path& p) {
+      std::ifstream in(p, std::ios::binary);
+      return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    EXPECT_EQ(read(dir / "own" / (std::string(wall) + ".png")), read(dir / "shared" / (std::string(wall) + ".png")))
+        << wall << ": the images differ";
   }
 }
 
