@@ -13,8 +13,8 @@
 #include "app/helicopter_controller.h"
 #include "app/menu/menu_host.h"
 #include "app/scene_setup.h"
-#include "contexts/platform/egl_context.h"
 #include "contexts/particles/simulation_share.h"
+#include "contexts/platform/egl_context.h"
 #include "contexts/platform/glfw_window.h"
 #include "contexts/render/render_context.h"
 #include "core/cave/viewer.h"
@@ -203,7 +203,8 @@ int App::run() {
   };
   ShareGroup windowGroup, offscreenGroup;
   if (config_.run.sharedSimulation) {
-    for (const WallSpec& w : config_.walls) ++(w.window ? windowGroup : offscreenGroup).readers;
+    for (const WallSpec& w : config_.walls)
+      ++(w.window ? windowGroup : offscreenGroup).readers;
     for (ShareGroup* g : {&windowGroup, &offscreenGroup})
       if (g->readers-- > 0) g->share = std::make_shared<SimulationShare>(g->readers);
   }
@@ -226,8 +227,10 @@ int App::run() {
     // The group's first wall simulates; the others read (reader numbers 0, 1, ...).
     int shareReader = -1;
     if (group.share) {
-      if (group.owner) shareReader = group.readers++;
-      else group.owner = context.get(), group.readers = 0;
+      if (group.owner)
+        shareReader = group.readers++;
+      else
+        group.owner = context.get(), group.readers = 0;
     }
     if (spec.menu) menuWall = i;
     log::info("wall '", spec.name, "': ", context->description());

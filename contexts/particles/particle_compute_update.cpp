@@ -139,21 +139,11 @@ void ParticleComputeUpdate::grow(std::size_t capacity) {
 void ParticleComputeUpdate::setField(std::shared_ptr<const VectorField> field,
                                      const FieldPlacement& placement,
                                      std::shared_ptr<const VectorField> next) {
-  if (field && next &&
-      (field->dims() != next->dims() || field->bounds().min != next->bounds().min ||
-       field->bounds().max != next->bounds().max))
-    throw Error("ParticleComputeUpdate: a time-varying field's frames must share one grid");
-  if (field && field == nextFieldTexture_.holds()) std::swap(fieldTexture_, nextFieldTexture_);
-  fieldTexture_.show(field);
-  nextFieldTexture_.show(next);
-  field_ = std::move(field);
-  nextField_ = std::move(next);
-  placement_ = placement;
+  environment_.setField(std::move(field), placement, std::move(next));
 }
 
 void ParticleComputeUpdate::setTerrain(std::shared_ptr<const HeightMap> terrain) {
-  terrain_ = std::move(terrain);
-  if (terrain_) terrainTexture_.upload(*terrain_);
+  environment_.setTerrain(std::move(terrain));
 }
 
 void ParticleComputeUpdate::clear() {
@@ -181,10 +171,7 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   const std::size_t count2 = updates_ >= 2 ? countAfter(updates_ - 2) : 0;
   const std::size_t limit = std::min(std::size_t(std::max(state.sim.maximum, 0)), capacity_);
   SimBlockInputs inputs;
-  inputs.field = field_.get();
-  inputs.nextField = nextField_.get();
-  inputs.placement = placement_;
-  inputs.terrain = terrain_.get();
+  environment_.describe(inputs);
   inputs.state = &state;
   inputs.step = step;
   inputs.granted = budget_.allocate(step.emission, limit, count2);
@@ -194,10 +181,7 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   fillSimBlock(inputs, block);
   glNamedBufferSubData(simBlock_.id(), 0, sizeof(block), &block);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, simBlock_.id());
-  if (field_) fieldTexture_.bind(0);
-  if (nextField_) nextFieldTexture_.bind(2);
-  if (terrain_) terrainTexture_.bind(1);
-  const bool equation = equation_.bindIfUsed(state);
+  const bool equation = environment_.bind(state);
   if (equation && !updateEquationProgram_)
     updateEquationProgram_ = std::make_unique<gl::Program>(
         gl::ProgramDesc{{"particle_update.comp"}, {"FIELD_EQUATION", itemDefines()[0]}, {}});
@@ -258,8 +242,12 @@ void ParticleComputeUpdate::draw() const {
 
 ParticleBackend::Records ParticleComputeUpdate::records() const {
   const BufferSet& set = sets_[std::size_t(current_)];
-  return {set.positionLife.id(), set.velocityKind.id(), control_.id(),
-          std::uint32_t(kCountOffset + current_ * 4), 0, std::int64_t(kDrawOffset + current_ * 16)};
+  return {set.positionLife.id(),
+          set.velocityKind.id(),
+          control_.id(),
+          std::uint32_t(kCountOffset + current_ * 4),
+          0,
+          std::int64_t(kDrawOffset + current_ * 16)};
 }
 
 std::size_t ParticleComputeUpdate::liveCount() const {

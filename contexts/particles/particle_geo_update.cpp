@@ -108,22 +108,11 @@ void ParticleGeoUpdate::grow(std::size_t capacity) {
 void ParticleGeoUpdate::setField(std::shared_ptr<const VectorField> field,
                                  const FieldPlacement& placement,
                                  std::shared_ptr<const VectorField> next) {
-  if (field && next &&
-      (field->dims() != next->dims() || field->bounds().min != next->bounds().min ||
-       field->bounds().max != next->bounds().max))
-    throw Error("ParticleGeoUpdate: a time-varying field's frames must share one grid");
-  // A frame already on the GPU is not sent again (a sequence steps A,B -> B,C).
-  if (field && field == nextFieldTexture_.holds()) std::swap(fieldTexture_, nextFieldTexture_);
-  fieldTexture_.show(field);
-  nextFieldTexture_.show(next);
-  field_ = std::move(field);
-  nextField_ = std::move(next);
-  placement_ = placement;
+  environment_.setField(std::move(field), placement, std::move(next));
 }
 
 void ParticleGeoUpdate::setTerrain(std::shared_ptr<const HeightMap> terrain) {
-  terrain_ = std::move(terrain);
-  if (terrain_) terrainTexture_.upload(*terrain_);
+  environment_.setTerrain(std::move(terrain));
 }
 
 void ParticleGeoUpdate::clear() {
@@ -157,10 +146,7 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
   const std::size_t count2 = updates_ >= 2 ? countAfter(updates_ - 2) : 0;
   const std::size_t limit = std::min(std::size_t(std::max(state.sim.maximum, 0)), capacity_);
   SimBlockInputs inputs;
-  inputs.field = field_.get();
-  inputs.nextField = nextField_.get();
-  inputs.placement = placement_;
-  inputs.terrain = terrain_.get();
+  environment_.describe(inputs);
   inputs.state = &state;
   inputs.step = step;
   inputs.granted = budget_.allocate(step.emission, limit, count2);
@@ -170,10 +156,7 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
   const int slots = fillSimBlock(inputs, block);
   glNamedBufferSubData(simBlock_.id(), 0, sizeof(block), &block);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, simBlock_.id());
-  if (field_) fieldTexture_.bind(0);
-  if (nextField_) nextFieldTexture_.bind(2);
-  if (terrain_) terrainTexture_.bind(1);
-  const bool equation = equation_.bindIfUsed(state);
+  const bool equation = environment_.bind(state);
   if (equation && !updateEquationProgram_)
     updateEquationProgram_ = std::make_unique<gl::Program>(
         makeProgram("particle_update.vert", "particle_update.geom", {"FIELD_EQUATION"}));

@@ -24,9 +24,8 @@
 
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
-#include "contexts/particles/field_equation_buffer.h"
-#include "contexts/particles/field_texture.h"
 #include "contexts/particles/particle_backend.h"
+#include "contexts/particles/particle_environment.h"
 #include "core/field/field_placement.h"
 #include "core/field/height_map.h"
 #include "core/sim/emission_budget.h"
@@ -43,7 +42,7 @@ class ParticleGeoUpdate final : public ParticleBackend {
   void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
                 std::shared_ptr<const VectorField> next = nullptr) override;
   void setEquation(std::shared_ptr<const FieldEquation> equation) override {
-    equation_.set(std::move(equation));
+    environment_.setEquation(std::move(equation));
   }
   void setTerrain(std::shared_ptr<const HeightMap> terrain) override;
   void step(const SimStep& step, const ParticleState& state) override;
@@ -55,9 +54,7 @@ class ParticleGeoUpdate final : public ParticleBackend {
   std::size_t capacity() const override { return capacity_; }
   std::size_t liveCount() const override;
   std::vector<Particle> readBack() const override;
-  double lastFieldUploadMs() const override {
-    return fieldTexture_.lastUploadMs() + nextFieldTexture_.lastUploadMs();
-  }
+  double lastFieldUploadMs() const override { return environment_.lastUploadMs(); }
   const char* name() const override { return "tf-gs"; }
 
  private:
@@ -88,12 +85,7 @@ class ParticleGeoUpdate final : public ParticleBackend {
   gl::Program updateProgram_, emitProgram_;
   std::unique_ptr<gl::Program> updateEquationProgram_;  // FIELD_EQUATION, made on first use
 
-  std::shared_ptr<const VectorField> field_, nextField_;
-  FieldPlacement placement_;
-  std::shared_ptr<const HeightMap> terrain_;
-  FieldTexture fieldTexture_, nextFieldTexture_;
-  TerrainTexture terrainTexture_;
-  FieldEquationBuffer equation_;
+  ParticleEnvironment environment_;
 
   EmissionBudget budget_;
   std::uint64_t updates_ = 0;

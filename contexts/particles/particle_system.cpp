@@ -21,7 +21,8 @@ namespace {
 
 // A wall's own simulation, the one it runs for its GPU's other walls too, or theirs.
 std::unique_ptr<ParticleBackend> backendFor(const ParticleSystem::Options& o) {
-  if (o.share && o.shareReader >= 0) return std::make_unique<SharedParticles>(o.share, o.shareReader);
+  if (o.share && o.shareReader >= 0)
+    return std::make_unique<SharedParticles>(o.share, o.shareReader);
   std::unique_ptr<ParticleBackend> own = makeParticleBackend(o.backend, o.capacity);
   if (o.share) return std::make_unique<SharingBackend>(std::move(own), o.share);
   return own;
@@ -35,7 +36,9 @@ ParticleSystem::ParticleSystem(const ParticleState& initial, const Options& opti
       update_(backendFor(options)),
       stageTimers_(options.stageTimers) {}
 
-void ParticleSystem::endFrame() { update_->endFrame(); }
+void ParticleSystem::endFrame() {
+  update_->endFrame();
+}
 
 void ParticleSystem::setTerrain(std::shared_ptr<const HeightMap> terrain) {
   update_->setTerrain(std::move(terrain));

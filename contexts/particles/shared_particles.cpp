@@ -6,11 +6,13 @@
 
 namespace sandstorm {
 
-SharingBackend::SharingBackend(std::unique_ptr<ParticleBackend> inner, std::shared_ptr<SimulationShare> share)
+SharingBackend::SharingBackend(std::unique_ptr<ParticleBackend> inner,
+                               std::shared_ptr<SimulationShare> share)
     : inner_(std::move(inner)), share_(std::move(share)) {
   if (inner_->records().drawCommand < 0)
-    throw Error(concat("run.shared_simulation: the '", inner_->name(),
-                       "' backend cannot be drawn from another context; use run.backend = \"compute\""));
+    throw Error(
+        concat("run.shared_simulation: the '", inner_->name(),
+               "' backend cannot be drawn from another context; use run.backend = \"compute\""));
 }
 
 void SharingBackend::step(const SimStep& step, const ParticleState& state) {
@@ -20,7 +22,10 @@ void SharingBackend::step(const SimStep& step, const ParticleState& state) {
 }
 
 SharedParticles::SharedParticles(std::shared_ptr<SimulationShare> share, int reader)
-    : share_(std::move(share)), reader_(reader), vao_(gl::createVertexArray()), staging_(gl::createBuffer()) {
+    : share_(std::move(share)),
+      reader_(reader),
+      vao_(gl::createVertexArray()),
+      staging_(gl::createBuffer()) {
   for (GLuint a = 0; a < 2; ++a) {
     glEnableVertexArrayAttrib(vao_.id(), a);
     glVertexArrayAttribFormat(vao_.id(), a, 4, GL_FLOAT, GL_FALSE, 0);
@@ -47,7 +52,8 @@ void SharedParticles::draw() const {
   if (current_.records.countBuffer == 0) return;
   glBindVertexArray(vao_.id());
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, current_.records.countBuffer);
-  glDrawArraysIndirect(GL_POINTS, reinterpret_cast<const void*>(std::uintptr_t(current_.records.drawCommand)));
+  glDrawArraysIndirect(GL_POINTS,
+                       reinterpret_cast<const void*>(std::uintptr_t(current_.records.drawCommand)));
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
   glBindVertexArray(0);
 }
@@ -57,7 +63,8 @@ std::size_t SharedParticles::liveCount() const {
   // Through a buffer of this context's: reading the owner's control buffer
   // directly could make the driver move it to host memory.
   std::uint32_t count = 0;
-  glCopyNamedBufferSubData(current_.records.countBuffer, staging_.id(), current_.records.countOffset, 0, 4);
+  glCopyNamedBufferSubData(current_.records.countBuffer, staging_.id(),
+                           current_.records.countOffset, 0, 4);
   glGetNamedBufferSubData(staging_.id(), 0, 4, &count);
   return std::size_t(count) + current_.records.countAdd;
 }
@@ -73,7 +80,8 @@ std::vector<Particle> SharedParticles::readBack() const {
   glCopyNamedBufferSubData(current_.records.velocityKind, copy.id(), 0, bytes, bytes);
   std::vector<glm::vec4> data(2 * count);
   glGetNamedBufferSubData(copy.id(), 0, 2 * bytes, data.data());
-  for (std::size_t i = 0; i < count; ++i) particles[i] = Particle{data[i], data[count + i]};
+  for (std::size_t i = 0; i < count; ++i)
+    particles[i] = Particle{data[i], data[count + i]};
   return particles;
 }
 

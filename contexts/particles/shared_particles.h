@@ -23,8 +23,12 @@ class SharingBackend final : public ParticleBackend {
                 std::shared_ptr<const VectorField> next) override {
     inner_->setField(std::move(field), placement, std::move(next));
   }
-  void setEquation(std::shared_ptr<const FieldEquation> equation) override { inner_->setEquation(std::move(equation)); }
-  void setTerrain(std::shared_ptr<const HeightMap> terrain) override { inner_->setTerrain(std::move(terrain)); }
+  void setEquation(std::shared_ptr<const FieldEquation> equation) override {
+    inner_->setEquation(std::move(equation));
+  }
+  void setTerrain(std::shared_ptr<const HeightMap> terrain) override {
+    inner_->setTerrain(std::move(terrain));
+  }
   void step(const SimStep& step, const ParticleState& state) override;
   void clear() override { inner_->clear(); }
   void grow(std::size_t capacity) override { inner_->grow(capacity); }
@@ -45,10 +49,12 @@ class SharedParticles final : public ParticleBackend {
  public:
   SharedParticles(std::shared_ptr<SimulationShare> share, int reader);
 
-  void setField(std::shared_ptr<const VectorField>, const FieldPlacement&, std::shared_ptr<const VectorField>) override {}
+  void setField(std::shared_ptr<const VectorField>, const FieldPlacement&,
+                std::shared_ptr<const VectorField>) override {}
   void setEquation(std::shared_ptr<const FieldEquation>) override {}
   void setTerrain(std::shared_ptr<const HeightMap>) override {}
-  void step(const SimStep& step, const ParticleState& state) override;  // acquires the owner's frame
+  void step(const SimStep& step,
+            const ParticleState& state) override;  // acquires the owner's frame
   void clear() override {}
   void grow(std::size_t) override {}
   void draw() const override;

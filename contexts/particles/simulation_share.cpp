@@ -7,7 +7,9 @@
 namespace sandstorm {
 namespace {
 
-GLsync syncOf(const gl::Sync& s) { return reinterpret_cast<GLsync>(s.handle()); }
+GLsync syncOf(const gl::Sync& s) {
+  return reinterpret_cast<GLsync>(s.handle());
+}
 
 }  // namespace
 
@@ -40,7 +42,8 @@ SimulationShare::Publication SimulationShare::acquire(std::uint32_t frame) {
   published_.wait(lock, [&] { return abandoned_ || latest_ >= std::int64_t(frame); });
   if (abandoned_) throw Error("the wall that runs this GPU's shared simulation stopped");
   const auto it = publications_.find(frame);
-  if (it == publications_.end()) throw Error(concat("shared simulation: frame ", frame, " was never published"));
+  if (it == publications_.end())
+    throw Error(concat("shared simulation: frame ", frame, " was never published"));
   glWaitSync(syncOf(it->second.second), 0, GL_TIMEOUT_IGNORED);
   return it->second.first;
 }

@@ -90,7 +90,8 @@ void RenderContext::run() {
     log::error(*error_);
     barrier_.arrive_and_drop();
     channel_.leave(consumer_);
-    if (setup_.share) setup_.share->abandon();  // walls drawing a shared simulation must not wait for it
+    if (setup_.share)
+      setup_.share->abandon();  // walls drawing a shared simulation must not wait for it
     try {
       context_->releaseCurrent();
     } catch (...) {

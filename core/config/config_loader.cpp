@@ -155,9 +155,9 @@ void setAttributes(const Reader& r, const toml::value& table, const std::string&
 }
 
 void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
-  r.checkKeys(
-      t, "run",
-      {"seed", "capacity", "capacity_limit", "fixed_dt", "frames", "backend", "shared_simulation", "near", "far"});
+  r.checkKeys(t, "run",
+              {"seed", "capacity", "capacity_limit", "fixed_dt", "frames", "backend",
+               "shared_simulation", "near", "far"});
   if (const toml::value* seed = r.find(t, "seed")) {
     if (!seed->is_integer() || seed->as_integer() < 0)
       r.fail(*seed, "run.seed", "expected a non-negative integer");
@@ -176,7 +176,8 @@ void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
                                       {{"tf-gs", "tf-gs"}, {"compute", "compute"}});
   run.sharedSimulation = r.boolean(t, "shared_simulation", "run", run.sharedSimulation);
   if (run.sharedSimulation && run.backend != "compute")
-    r.fail(t, "run.shared_simulation", "needs run.backend = \"compute\" (transform-feedback counts stay in one context)");
+    r.fail(t, "run.shared_simulation",
+           "needs run.backend = \"compute\" (transform-feedback counts stay in one context)");
   run.nearPlane = r.real(t, "near", "run", run.nearPlane);
   run.farPlane = r.real(t, "far", "run", run.farPlane);
   if (!(run.nearPlane > 0.0f) || !(run.farPlane > run.nearPlane))

@@ -4,10 +4,10 @@
 // one wall each; and a recorded session replays to the same particles.
 #include <gtest/gtest.h>
 
-#include <map>
-#include <set>
 #include <fstream>
 #include <iterator>
+#include <map>
+#include <set>
 #include <sstream>
 
 #include "tests/app/run_process.h"
@@ -84,11 +84,12 @@ TEST(Identity, OneWallPerProcessMatchesAllWallsInOne) {
 TEST(Identity, OneSimulationPerGpuMatchesOnePerWall) {
   // run.shared_simulation: one wall updates, three draw its buffers through shared contexts.
   const auto dir = test::scratchDir("shared");
-  const auto own = runSandstorm(kRun + "--frames 150 --hash-log " + (dir / "own.txt").string() + " --screenshot " +
-                                (dir / "own").string());
-  const auto shared = runSandstorm("--config tests/data/identity-shared.toml --replay tests/data/midrun.session "
-                                   "--frames 150 --hash-log " + (dir / "shared.txt").string() + " --screenshot " +
-                                   (dir / "shared").string());
+  const auto own = runSandstorm(kRun + "--frames 150 --hash-log " + (dir / "own.txt").string() +
+                                " --screenshot " + (dir / "own").string());
+  const auto shared = runSandstorm(
+      "--config tests/data/identity-shared.toml --replay tests/data/midrun.session "
+      "--frames 150 --hash-log " +
+      (dir / "shared.txt").string() + " --screenshot " + (dir / "shared").string());
   ASSERT_EQ(own.exitCode, 0) << own.output;
   ASSERT_EQ(shared.exitCode, 0) << shared.output;
   const std::vector<HashLine> a = readHashes(dir / "own.txt"), b = readHashes(dir / "shared.txt");
@@ -102,7 +103,8 @@ TEST(Identity, OneSimulationPerGpuMatchesOnePerWall) {
       std::ifstream in(p, std::ios::binary);
       return std::string(std::istreambuf_iterator<char>(in), {});
     };
-    EXPECT_EQ(read(dir / "own" / (std::string(wall) + ".png")), read(dir / "shared" / (std::string(wall) + ".png")))
+    EXPECT_EQ(read(dir / "own" / (std::string(wall) + ".png")),
+              read(dir / "shared" / (std::string(wall) + ".png")))
         << wall << ": the images differ";
   }
 }

@@ -97,15 +97,17 @@ TEST(Windows, ASliderInTheMenuChangesEveryWallAtTheSameFrame) {
 TEST(Windows, FourWindowsCanShareOneSimulation) {
   if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
   const auto dir = test::scratchDir("shared-windows");
-  const auto own = runUnderXvfb("--config tests/data/windows.toml --no-menu --hash-log " + (dir / "own.txt").string());
-  const auto shared =
-      runUnderXvfb("--config tests/data/windows-shared.toml --no-menu --hash-log " + (dir / "shared.txt").string());
+  const auto own = runUnderXvfb("--config tests/data/windows.toml --no-menu --hash-log " +
+                                (dir / "own.txt").string());
+  const auto shared = runUnderXvfb("--config tests/data/windows-shared.toml --no-menu --hash-log " +
+                                   (dir / "shared.txt").string());
   ASSERT_EQ(own.exitCode, 0) << own.output;
   ASSERT_EQ(shared.exitCode, 0) << shared.output;
   const auto a = hashes(dir / "own.txt"), b = hashes(dir / "shared.txt");
   ASSERT_EQ(a.size(), b.size());
   ASSERT_EQ(a.size(), 4u * 40u);
-  for (std::size_t i = 0; i < a.size(); ++i) EXPECT_EQ(a[i].particles, b[i].particles) << a[i].wall << " " << a[i].frame;
+  for (std::size_t i = 0; i < a.size(); ++i)
+    EXPECT_EQ(a[i].particles, b[i].particles) << a[i].wall << " " << a[i].frame;
 }
 
 TEST(Windows, TheMenuCanLiveInAnOperatorWindowOfItsOwn) {

@@ -1,0 +1,41 @@
+#include "contexts/particles/particle_environment.h"
+
+#include "core/util/error.h"
+
+namespace sandstorm {
+
+void ParticleEnvironment::setField(std::shared_ptr<const VectorField> field,
+                                   const FieldPlacement& placement,
+                                   std::shared_ptr<const VectorField> next) {
+  if (field && next &&
+      (field->dims() != next->dims() || field->bounds().min != next->bounds().min ||
+       field->bounds().max != next->bounds().max))
+    throw Error("a time-varying field's frames must share one grid");
+  if (field && field == nextFieldTexture_.holds()) std::swap(fieldTexture_, nextFieldTexture_);
+  fieldTexture_.show(field);
+  nextFieldTexture_.show(next);
+  field_ = std::move(field);
+  nextField_ = std::move(next);
+  placement_ = placement;
+}
+
+void ParticleEnvironment::setTerrain(std::shared_ptr<const HeightMap> terrain) {
+  terrain_ = std::move(terrain);
+  if (terrain_) terrainTexture_.upload(*terrain_);
+}
+
+void ParticleEnvironment::describe(SimBlockInputs& inputs) const {
+  inputs.field = field_.get();
+  inputs.nextField = nextField_.get();
+  inputs.placement = placement_;
+  inputs.terrain = terrain_.get();
+}
+
+bool ParticleEnvironment::bind(const ParticleState& state) const {
+  if (field_) fieldTexture_.bind(0);
+  if (nextField_) nextFieldTexture_.bind(2);
+  if (terrain_) terrainTexture_.bind(1);
+  return equation_.bindIfUsed(state);
+}
+
+}  // namespace sandstorm

@@ -1,0 +1,45 @@
+// ParticleEnvironment: what particles move through, on the GPU, for either
+// update backend: the field's grid (and a time-varying field's next frame),
+// its placement, its equation (field.mode = equation), and the terrain.
+#pragma once
+
+#include <memory>
+
+#include "contexts/particles/field_equation_buffer.h"
+#include "contexts/particles/field_texture.h"
+#include "contexts/particles/sim_block.h"
+#include "core/field/field_placement.h"
+
+namespace sandstorm {
+
+class ParticleEnvironment {
+ public:
+  // Throws Error when `next` has another grid than `field`. A frame already on
+  // the GPU is not uploaded again (a sequence steps A,B -> B,C).
+  void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
+                std::shared_ptr<const VectorField> next);
+  void setEquation(std::shared_ptr<const FieldEquation> equation) {
+    equation_.set(std::move(equation));
+  }
+  void setTerrain(std::shared_ptr<const HeightMap> terrain);
+
+  // The environment's part of an update's inputs.
+  void describe(SimBlockInputs& inputs) const;
+  // Binds the textures (units 0: field, 1: terrain, 2: next frame) and, when
+  // state.field.mode asks for it, the equation; returns whether it did.
+  bool bind(const ParticleState& state) const;
+
+  double lastUploadMs() const {
+    return fieldTexture_.lastUploadMs() + nextFieldTexture_.lastUploadMs();
+  }
+
+ private:
+  std::shared_ptr<const VectorField> field_, nextField_;
+  FieldPlacement placement_;
+  std::shared_ptr<const HeightMap> terrain_;
+  FieldTexture fieldTexture_, nextFieldTexture_;
+  TerrainTexture terrainTexture_;
+  FieldEquationBuffer equation_;
+};
+
+}  // namespace sandstorm
