@@ -184,6 +184,14 @@ void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
     r.fail(t, "run.near/far", "expected 0 < near < far");
 }
 
+glm::mat3 rotationFromDegrees(const glm::vec3& degrees) {
+  const glm::vec3 a = glm::radians(degrees);
+  const glm::mat3 x(1, 0, 0, 0, std::cos(a.x), std::sin(a.x), 0, -std::sin(a.x), std::cos(a.x));
+  const glm::mat3 y(std::cos(a.y), 0, -std::sin(a.y), 0, 1, 0, std::sin(a.y), 0, std::cos(a.y));
+  const glm::mat3 z(std::cos(a.z), std::sin(a.z), 0, -std::sin(a.z), std::cos(a.z), 0, 0, 0, 1);
+  return z * y * x;
+}
+
 // A file named in a config is relative to that config file's folder (so an
 // included scene finds its data wherever it is included from).
 std::string relativeTo(const Reader& r, const std::string& path) {
@@ -194,7 +202,7 @@ std::string relativeTo(const Reader& r, const std::string& path) {
 void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   r.checkKeys(t, "field",
               {"source", "name", "dims", "resolution", "bounds_min", "bounds_max", "params",
-               "offset", "scale", "yaw_deg", "mode"});
+               "offset", "scale", "yaw_deg", "rotation_deg", "mode"});
   f.source = r.string(t, "source", "field", f.source);
   if (f.source != "analytic") f.source = relativeTo(r, f.source);
   // A file's array or grid is chosen by name; without one, the file's only (or active) vector one.
@@ -223,9 +231,14 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   f.placement.offset = r.vec<3>(t, "offset", "field", f.placement.offset);
   f.placement.scale = r.real(t, "scale", "field", f.placement.scale);
   if (!(f.placement.scale > 0.0f)) r.fail(t, "field.scale", "expected a positive scale");
-  const float yaw = glm::radians(r.real(t, "yaw_deg", "field", 0.0f));
-  f.placement.rotation =
-      glm::mat3(std::cos(yaw), std::sin(yaw), 0, -std::sin(yaw), std::cos(yaw), 0, 0, 0, 1);
+  // rotation_deg = [x, y, z]: turns about the room's x, then y, then z axis
+  // (e.g. [90, 0, 0] stands a y-up data set up in the z-up room); yaw_deg is
+  // the common case, a turn about z alone.
+  if (r.find(t, "rotation_deg") && r.find(t, "yaw_deg"))
+    r.fail(t, "field.rotation_deg", "give rotation_deg or yaw_deg, not both");
+  glm::vec3 turns(0.0f, 0.0f, r.real(t, "yaw_deg", "field", 0.0f));
+  turns = r.vec<3>(t, "rotation_deg", "field", turns);
+  f.placement.rotation = rotationFromDegrees(turns);
 }
 
 void readScene(const Reader& r, const toml::value& t, SceneSpec& s) {

@@ -185,3 +185,36 @@ TEST(Pvx, BadMachinesAreRefusedByName) {
 
 }  // namespace
 }  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+TEST(Config, FieldPlacementTurnsAsConfigured) {
+  const std::string wall =
+      "[[wall]]\nlower_left = [0, 0, 0]\nlower_right = [1, 0, 0]\nupper_left = [0, 0, 1]\n";
+  // A y-up data set stood up in the z-up room: the field's +y becomes the room's +z.
+  const AppConfig up = parseConfig(
+      "[field]\nrotation_deg = [90, 0, 0]\noffset = [1, 2, 3]\nscale = 2\n" + wall, "t.toml");
+  const glm::vec3 v = up.field.placement.vectorToRoom({0, 1, 0});
+  EXPECT_NEAR(v.x, 0.0f, 1e-6f);
+  EXPECT_NEAR(v.y, 0.0f, 1e-6f);
+  EXPECT_NEAR(v.z, 2.0f, 1e-6f);  // scaled with the placement
+  const glm::vec3 p =
+      up.field.placement.toRoom({0, 0, 1});  // the field's +z points to the room's -y
+  EXPECT_NEAR(p.y, 2.0f - 2.0f, 1e-6f);
+  EXPECT_NEAR(glm::distance(up.field.placement.toLocal(p), glm::vec3(0, 0, 1)), 0.0f, 1e-6f);
+  // yaw_deg = 90 turns the field's +x to the room's +y.
+  const AppConfig yaw = parseConfig("[field]\nyaw_deg = 90\n" + wall, "t.toml");
+  const glm::vec3 w = yaw.field.placement.vectorToRoom({1, 0, 0});
+  EXPECT_NEAR(w.y, 1.0f, 1e-6f);
+  EXPECT_NEAR(w.x, 0.0f, 1e-6f);
+  try {
+    parseConfig("[field]\nyaw_deg = 90\nrotation_deg = [0, 0, 90]\n" + wall, "t.toml");
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("not both"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace sandstorm
