@@ -1,8 +1,7 @@
-// App: the thin top of Sandstorm. It builds the main context from the
-// configuration, one render context (thread + GL context) per wall, and runs
-// the frame loop: sample input and the head, let the main context make the
-// frame packet, hand it to every wall. Windows are polled on this thread, as
-// GLFW requires.
+// App: the thin top of Sandstorm. It settles the configuration against the
+// command line (headless, --walls, --set, the menu), then hands one run to
+// AppRun (app_run.h): the main context, a render context (thread + GL context)
+// per wall, and the frame loop.
 #pragma once
 
 #include <filesystem>

@@ -1,0 +1,357 @@
+#include "app/app_run.h"
+
+#include <algorithm>
+#include <atomic>
+#include <csignal>
+
+#include "app/cluster/cluster_link.h"
+#include "contexts/particles/simulation_share.h"
+#include "contexts/platform/egl_context.h"
+#include "core/sim/particle_dump.h"
+#include "core/util/error.h"
+#include "core/util/log.h"
+
+namespace sandstorm {
+namespace {
+
+std::atomic<bool> interrupted{false};
+
+void onInterrupt(int) {
+  interrupted = true;
+}
+
+GlfwWindow::Options windowOptions(const std::string& title, const WindowSpec& w) {
+  GlfwWindow::Options o;
+  o.title = title;
+  o.size = w.size;
+  o.position = w.position;
+  o.monitor = w.monitor;
+  o.fullscreen = w.fullscreen;
+  o.decorated = w.decorated;
+  return o;
+}
+
+MainContext::Options mainOptions(const RunSpec& run) {
+  MainContext::Options o;
+  o.seed = run.seed;
+  o.fixedDt = run.fixedDt;
+  o.capacityLimit = run.capacityLimit;
+  return o;
+}
+
+}  // namespace
+
+AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless,
+               ClusterLink* cluster)
+    : config_(config),
+      options_(options),
+      headless_(headless),
+      cluster_(cluster),
+      configDir_(config.path.parent_path()),
+      lastFrame_(config.run.frames > 0 ? config.run.frames - 1 : -1),
+      // In cluster mode only rank 0 makes the field (unless every rank reads it): it travels in
+      // packets.
+      field_(!cluster || cluster->makesField() ? makeField(config.field, configDir_)
+                                               : FieldSource{}),
+      terrain_(makeTerrain(config.scene, configDir_)),
+      main_(config.particles, field_.update, mainOptions(config.run)),
+      helicopter_(terrain_),
+      head_(makeHeadTracker(config.head)),
+      navigation_(Navigation::from(config.navigation)),
+      channel_(int(config.walls.size())),
+      // Cluster mode: the main thread joins the swap barrier, to hold the walls until every rank
+      // drew.
+      barrier_(std::ptrdiff_t(config.walls.size()) + (cluster ? 1 : 0)) {
+  if (options_.screenshotDir) std::filesystem::create_directories(*options_.screenshotDir);
+  if (field_.timeline) useField(main_, field_);
+  if (options_.record) {
+    recorder_ = std::make_unique<SessionRecorder>(*options_.record);
+    main_.setChangeListener(
+        [this](std::uint32_t frame, const StateChange& c) { recorder_->record(frame, c); });
+  }
+  if (options_.replay)
+    for (const ScheduledChange& s : readSessionLog(*options_.replay))
+      main_.schedule(s.frame, s.change);
+  if (!cluster_ || cluster_->root())
+    helicopter_.update(main_);  // the configured helicopter's field and dust, before packet 0
+}
+
+int AppRun::execute() {
+  openWindowLibrary();
+  openWalls();
+  std::vector<GLFWwindow*> inputWindows;
+  for (GlfwWindow* w : windows_)
+    inputWindows.push_back(w->handle());
+  input_ = std::make_unique<DesktopInput>(inputWindows);  // before the menu's ImGui callbacks
+  openMenu();
+  if (cluster_) {
+    if (!cluster_->ready("")) return 1;  // some rank could not open its walls; rank 0 said why
+    cluster_->shareField(field_);
+  }
+  hookWalls();
+
+  interrupted = false;
+  std::signal(SIGINT, onInterrupt);
+  std::signal(SIGTERM, onInterrupt);
+  start_ = lastReport_ = lastTick_ = Clock::now();
+  if (cluster_)
+    runCluster();
+  else
+    runOneProcess();
+  channel_.close();
+  for (auto& w : walls_)
+    w->join();
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  return finish();
+}
+
+void AppRun::openWindowLibrary() {
+  operatorWindow_ = config_.menu.operatorWindow && !headless_;
+  if (!config_.anyWindow() && !operatorWindow_) return;
+  glfw_ = std::make_unique<GlfwLibrary>();
+  // Every window's monitor exists, or nothing starts.
+  const int monitors = glfw_->monitorCount();
+  for (std::size_t i = 0; i < config_.walls.size(); ++i) {
+    const WallSpec& w = config_.walls[i];
+    if (w.window && w.window->monitor >= std::max(monitors, 1))
+      throw Error(concat(config_.path.string(), ":", w.line, ": wall[", i,
+                         "].window.monitor: monitor ", w.window->monitor, " does not exist; ",
+                         monitors, " connected"));
+  }
+}
+
+void AppRun::openWalls() {
+  const int wallCount = int(config_.walls.size());
+  wallWindows_.assign(std::size_t(wallCount), nullptr);
+  // One simulation per GPU: windows share objects with the first window, offscreen
+  // walls with the first offscreen wall (GLX and EGL contexts cannot share).
+  struct ShareGroup {
+    const GlContext* owner = nullptr;
+    std::shared_ptr<SimulationShare> share;
+    int readers = 0;
+  };
+  ShareGroup windowGroup, offscreenGroup;
+  if (config_.run.sharedSimulation) {
+    for (const WallSpec& w : config_.walls)
+      ++(w.window ? windowGroup : offscreenGroup).readers;
+    for (ShareGroup* g : {&windowGroup, &offscreenGroup})
+      if (g->readers-- > 0) g->share = std::make_shared<SimulationShare>(g->readers);
+  }
+  for (int i = 0; i < wallCount; ++i) {
+    const WallSpec& spec = config_.walls[std::size_t(i)];
+    ShareGroup& group = spec.window ? windowGroup : offscreenGroup;
+    std::unique_ptr<GlContext> context;
+    if (spec.window) {
+      GlfwWindow::Options o = windowOptions("Sandstorm: " + spec.name, *spec.window);
+      o.quadBufferStereo = spec.stereo == StereoMode::QuadBuffer;
+      o.share = static_cast<const GlfwWindow*>(group.owner);
+      auto window = std::make_unique<GlfwWindow>(*glfw_, o);
+      windows_.push_back(window.get());
+      wallWindows_[std::size_t(i)] = window.get();
+      context = std::move(window);
+    } else {
+      context = std::make_unique<EglContext>(
+          EglContext::Options{.share = static_cast<const EglContext*>(group.owner)});
+    }
+    // The group's first wall simulates; the others read (reader numbers 0, 1, ...).
+    int shareReader = -1;
+    if (group.share) {
+      if (group.owner)
+        shareReader = group.readers++;
+      else
+        group.owner = context.get(), group.readers = 0;
+    }
+    if (spec.menu) menuWall_ = i;
+    log::info("wall '", spec.name, "': ", context->description());
+    WallRendererSetup setup{.wall = spec,
+                            .initial = main_.initialState(),
+                            .terrain = terrain_,
+                            .capacity = config_.run.capacity,
+                            .capacityLimit = config_.run.capacityLimit,
+                            .backend = config_.run.backend,
+                            .share = group.share,
+                            .shareReader = shareReader,
+                            .nearPlane = config_.run.nearPlane,
+                            .farPlane = config_.run.farPlane};
+    walls_.push_back(
+        std::make_unique<RenderContext>(std::move(context), setup, channel_, i, barrier_));
+  }
+}
+
+void AppRun::openMenu() {
+  if (!operatorWindow_ && menuWall_ < 0 && !options_.menuScript) return;
+  std::unique_ptr<GlfwWindow> console;
+  if (operatorWindow_)
+    console = std::make_unique<GlfwWindow>(
+        *glfw_, windowOptions("Sandstorm: operator", *config_.menu.operatorWindow));
+  const int wallCount = int(walls_.size());
+  const int shown = menuWall_ >= 0 ? menuWall_ : 0;
+  // (A cluster's rank 0 may drive no wall: then only its operator window shows the menu.)
+  const WallSpec wall = wallCount > 0 ? config_.walls[std::size_t(shown)] : WallSpec{};
+  GLFWwindow* wallWindow = wallCount > 0 && wallWindows_[std::size_t(shown)]
+                               ? wallWindows_[std::size_t(shown)]->handle()
+                               : nullptr;
+  std::optional<MenuScript> script;
+  if (options_.menuScript) script = MenuScript::load(*options_.menuScript);
+  // The project's data/ sits beside config/.
+  const std::filesystem::path root = std::filesystem::absolute(configDir_).parent_path();
+  menu_ = std::make_unique<MenuHost>(
+      main_, std::move(console), wallWindow, wall.window ? wall.window->size : wall.offscreenSize,
+      fieldChoices(root / "data", root),
+      [this, root](const std::string& choice) {
+        useField(main_, makeField(fieldSpecFor(choice, config_.field), root));
+      },
+      std::move(script));
+  if (!operatorWindow_ && wallCount > 0)
+    walls_[std::size_t(shown)]->setOverlay([this] { return menu_->latest(); }, menu_->font());
+}
+
+void AppRun::hookWalls() {
+  for (std::size_t i = 0; i < walls_.size(); ++i) {
+    const bool first = i == 0;
+    walls_[i]->setFrameHook([this, first, i](WallRenderer& wall, const FramePacket& packet) {
+      if (options_.hashLog) hashes_.add(wall, packet.frame);
+      const int f = int(packet.frame);
+      const bool last = f == lastFrame_;
+      if (options_.screenshotDir &&
+          (last || (options_.screenshotEvery > 0 && f % options_.screenshotEvery == 0))) {
+        const std::string name = last ? wall.wall().name : concat(wall.wall().name, "_", f);
+        writePng(wall.capture(), *options_.screenshotDir / (name + ".png"));
+      }
+      if (first && last && options_.dumpParticles) {
+        const std::vector<Particle> particles = wall.particles().update().readBack();
+        writeParticlesVtp(particles, *options_.dumpParticles);
+        log::info("wrote ", particles.size(), " particles to ", options_.dumpParticles->string());
+      }
+      if (cluster_)
+        cluster_->drawn(int(i), packet.frame);  // the main thread holds the swap for every rank
+    });
+    walls_[i]->start();
+  }
+}
+
+void AppRun::showMenu(float dt) {
+  MenuStats stats;
+  stats.frame = main_.nextFrame();
+  for (const auto& w : walls_) {
+    const WallStats s = w->stats();
+    stats.walls.push_back({w->name(), s.fps, s.frameMs, s.updateMs, s.renderMs, s.postMs,
+                           s.fieldUploadMs, s.liveParticles, s.capacity});
+  }
+  menu_->frame(main_.nextFrame(), dt, stats);
+}
+
+void AppRun::reportProgress(Clock::time_point now) {
+  if (now - lastReport_ <= std::chrono::seconds(2) || walls_.empty()) return;
+  lastReport_ = now;
+  const WallStats s = walls_[0]->stats();
+  log::info("frame ", s.frame, lastFrame_ >= 0 ? concat("/", lastFrame_ + 1) : std::string(), ": ",
+            s.liveParticles, " particles, ", s.frameMs, " ms per frame on '", walls_[0]->name(),
+            "'");
+}
+
+void AppRun::runOneProcess() {
+  while (!interrupted && (lastFrame_ < 0 || frames_ <= lastFrame_)) {
+    const auto now = Clock::now();
+    const float dt = std::chrono::duration<float>(now - lastTick_).count();
+    lastTick_ = now;
+    if (glfw_) {
+      GlfwLibrary::pollEvents();
+      if (menu_ && menu_->scriptCloses(main_.nextFrame()) && !windows_.empty())
+        windows_.front()->requestClose();
+      bool close = menu_ && menu_->operatorWindowClosed();
+      for (GlfwWindow* w : windows_)
+        close = close || w->shouldClose();
+      if (close) break;
+      input_->update(dt, dynamic_cast<DesktopHead*>(head_.get()), navigation_,
+                     menu_ && menu_->wantsMouse(), false);
+    }
+    for (const auto& w : walls_)
+      failed_ = failed_ || w->error().has_value();
+    if (failed_) break;
+    if (menu_) showMenu(dt);
+    main_.setViewer(Viewer{head_->pose(main_.time()), navigation_});
+    if (!channel_.publish(std::make_shared<const FramePacket>(main_.next()))) break;
+    helicopter_.update(main_);
+    ++frames_;
+    reportProgress(now);
+  }
+}
+
+void AppRun::runCluster() {
+  // Rank 0 makes and broadcasts each packet, the other ranks receive it. Frame
+  // f's packet travels while the walls draw frame f - 1; then swap() waits for
+  // this rank's walls and every other rank, and only then do the walls present
+  // f - 1. Stop requests travel with the swap, so every rank stops at the same frame.
+  cluster_->watchInterrupt(&interrupted);
+  for (;;) {
+    const auto now = Clock::now();
+    const float dt = std::chrono::duration<float>(now - lastTick_).count();
+    lastTick_ = now;
+    int stop = interrupted ? ClusterLink::kInterrupted : 0;
+    if (cluster_->root() && menu_ && menu_->scriptCloses(main_.nextFrame()))
+      stop |= ClusterLink::kClosed;
+    if (glfw_) {
+      GlfwLibrary::pollEvents();
+      bool close = menu_ && menu_->operatorWindowClosed();
+      for (GlfwWindow* w : windows_)
+        close = close || w->shouldClose();
+      if (close) stop |= ClusterLink::kClosed;
+      if (cluster_->root())
+        input_->update(dt, dynamic_cast<DesktopHead*>(head_.get()), navigation_,
+                       menu_ && menu_->wantsMouse(), false);
+    }
+    std::shared_ptr<const FramePacket> packet;
+    if (!cluster_->root()) {
+      packet = cluster_->receive();  // null: rank 0 sent the last frame
+    } else if (lastFrame_ < 0 || frames_ <= lastFrame_) {
+      if (menu_) showMenu(dt);
+      main_.setViewer(Viewer{head_->pose(main_.time()), navigation_});
+      packet = std::make_shared<const FramePacket>(main_.next());
+      cluster_->send(*packet);
+      helicopter_.update(main_);
+    } else {
+      cluster_->sendStop();
+    }
+    if (packet) channel_.publish(packet);
+    if (frames_ > 0) {
+      const ClusterLink::Verdict verdict = cluster_->swap(std::uint32_t(frames_ - 1), stop, [&] {
+        return std::any_of(walls_.begin(), walls_.end(),
+                           [](const auto& w) { return w->error().has_value(); });
+      });
+      failed_ = failed_ || verdict.failed;
+      if (!verdict.go) break;
+      barrier_.arrive_and_wait();  // every rank drew frame f - 1: present it
+    }
+    if (!packet) break;
+    ++frames_;
+    reportProgress(now);
+  }
+  barrier_.arrive_and_drop();  // walls finish what was published without the main thread
+}
+
+int AppRun::finish() {
+  if (interrupted)
+    log::info("interrupted: stopped every wall cleanly");
+  else if (lastFrame_ < 0 || frames_ <= lastFrame_)
+    log::info("a window closed: stopped every wall cleanly");
+  if (cluster_) cluster_->finish();
+  if (options_.hashLog) hashes_.write(*options_.hashLog);
+
+  const double seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+  for (const auto& w : walls_)
+    failed_ = failed_ || w->error().has_value();
+  log::info("stats: ", frames_, " frames in ", seconds, " s (", frames_ / std::max(seconds, 1e-9),
+            " frames/s), ", walls_.size(), " wall(s)");
+  for (const auto& w : walls_) {
+    const WallStats s = w->stats();
+    log::info("  wall '", w->name(), "': ", s.liveParticles, " live particles at frame ", s.frame,
+              ", last frame ", s.frameMs, " ms; ", s.fieldUploads, " field upload(s), the last ",
+              s.fieldUploadMs, " ms", w->error() ? " FAILED: " + *w->error() : std::string());
+  }
+  if (options_.screenshotDir) log::info("images in ", options_.screenshotDir->string(), "/");
+  return failed_ ? 1 : 0;
+}
+
+}  // namespace sandstorm

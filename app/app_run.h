@@ -1,0 +1,83 @@
+// AppRun: one run of the application, from the configuration to the exit
+// code. It makes, in order, the main context (field, terrain, recorder and
+// replay, helicopter, head and navigation), the walls (a GL context and a
+// thread each; GLFW windows on this thread, as GLFW requires), the menu, and
+// then feeds the walls one packet a frame until the frame count, a closed
+// window, Ctrl-C or a failed wall stops it. Members are declared so that
+// they go in the reverse order: walls before the menu whose overlay they
+// draw, both before the windows' library.
+#pragma once
+
+#include <chrono>
+#include <memory>
+#include <vector>
+
+#include "app/app.h"
+#include "app/desktop_input.h"
+#include "app/hash_log.h"
+#include "app/helicopter_controller.h"
+#include "app/menu/menu_host.h"
+#include "app/scene_setup.h"
+#include "contexts/platform/glfw_window.h"
+#include "contexts/render/render_context.h"
+#include "core/cave/viewer.h"
+#include "core/sim/frame_channel.h"
+#include "core/sim/main_context.h"
+#include "core/sim/session_log.h"
+
+namespace sandstorm {
+
+class ClusterLink;
+
+class AppRun {
+ public:
+  // The configuration as App prepared it (cluster mode: already localized to this rank).
+  AppRun(const AppConfig& config, const AppOptions& options, bool headless, ClusterLink* cluster);
+  int execute();
+
+ private:
+  using Clock = std::chrono::steady_clock;
+
+  void openWindowLibrary();
+  void openWalls();
+  void openMenu();
+  void hookWalls();
+  void runOneProcess();
+  void runCluster();
+  void showMenu(float dt);
+  void reportProgress(Clock::time_point now);
+  int finish();
+
+  const AppConfig& config_;
+  const AppOptions& options_;
+  const bool headless_;
+  ClusterLink* const cluster_;
+  const std::filesystem::path configDir_;
+  const int lastFrame_;  // -1: until a window closes
+
+  FieldSource field_;
+  std::shared_ptr<const HeightMap> terrain_;
+  MainContext main_;
+  std::unique_ptr<SessionRecorder> recorder_;
+  HelicopterController helicopter_;
+  std::unique_ptr<HeadTracker> head_;
+  Navigation navigation_;
+
+  std::unique_ptr<GlfwLibrary> glfw_;
+  bool operatorWindow_ = false;
+  FrameChannel channel_;
+  RenderContext::SwapBarrier barrier_;
+  std::vector<GlfwWindow*> windows_;      // every wall's window, in wall order
+  std::vector<GlfwWindow*> wallWindows_;  // per wall: its window, or null offscreen
+  int menuWall_ = -1;
+  std::unique_ptr<DesktopInput> input_;
+  std::unique_ptr<MenuHost> menu_;
+  std::vector<std::unique_ptr<RenderContext>> walls_;
+  HashLog hashes_;
+
+  int frames_ = 0;
+  bool failed_ = false;
+  Clock::time_point start_, lastReport_, lastTick_;
+};
+
+}  // namespace sandstorm
