@@ -14,6 +14,11 @@ ViewRenderer::ViewRenderer() : viewBlock_(gl::createBuffer()), renderBlock_(gl::
 
 void ViewRenderer::render(const ParticleSystem& particles, const View& view, glm::ivec2 size,
                           std::uint32_t destination, glm::ivec2 origin) {
+  drawScene(particles, view, size);
+  particles.render(targets_, destination, origin, &view);
+}
+
+void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, glm::ivec2 size) {
   targets_.resize(size);
   const ViewBlock vb = makeViewBlock(view, size);
   const RenderBlock rb = makeRenderBlock(particles.state().render);
@@ -34,8 +39,6 @@ void ViewRenderer::render(const ParticleSystem& particles, const View& view, glm
     scene_.setFieldBox(std::nullopt, {});
   scene_.setHelicopter(particles.state().helicopter, HelicopterModel{}.rotorRadius);
   scene_.draw();
-
-  particles.render(targets_, destination, origin, &view);
 }
 
 }  // namespace sandstorm

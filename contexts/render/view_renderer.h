@@ -23,6 +23,11 @@ class ViewRenderer {
   SceneRenderer& scene() { return scene_; }
   void render(const ParticleSystem& particles, const View& view, glm::ivec2 size,
               std::uint32_t destination, glm::ivec2 origin);
+  // render()'s first half, for callers that time the stages apart
+  // (sandstorm-bench): binds the view and render blocks and draws the scene
+  // into targets(); the particle system's passes follow.
+  void drawScene(const ParticleSystem& particles, const View& view, glm::ivec2 size);
+  const ViewTargets& targets() const { return targets_; }
 
  private:
   SceneRenderer scene_;
