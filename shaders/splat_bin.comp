@@ -1,8 +1,13 @@
 #version 450 core
-// ParticleSplat, tiled variant, steps 2 and 4: each invocation finds the
-// tiles of kSplatTile x kSplatTile pixels one particle covers. COUNT: adds one
-// to each tile's count. Otherwise (scatter): takes a slot in each tile's list
-// (offsets from splat_scan.comp) and writes the particle's index there.
+// ParticleSplat, tiled variant, steps 2 (count) and 4 (scatter): workgroup g
+// takes particles [g * perGroup, (g + 1) * perGroup) and finds the tiles each
+// covers, counting them in a histogram in shared memory, so a dense tile costs
+// one global atomic a workgroup, not one a particle.
+//   count (uScatter false): adds the histogram to the tiles' counts; what
+//     each add returns is this workgroup's place in the tile's list (groupBase).
+//   scatter (uScatter true): counts again and writes each particle's index
+//     at tileStart + groupBase + its place in the workgroup's histogram.
+// One program for both, so both passes find exactly the same tiles.
 #include "view_block.glsl"
 #include "render_block.glsl"
 #include "splat_common.glsl"
@@ -14,26 +19,40 @@ layout(std430, binding = 1) readonly restrict buffer VelocityKind { vec4 velocit
 layout(std430, binding = 5) readonly buffer Dispatch {
   uvec4 dispatch;
   uint count;
+  uvec4 binDispatch;
+  uint perGroup;
 } args;
-layout(std430, binding = 7) restrict buffer TileCounts { uint tileCount[]; };  // COUNT: counts; else: cursors
+layout(std430, binding = 7) restrict buffer TileCounts { uint tileCount[]; };
 layout(std430, binding = 8) writeonly restrict buffer TileLists { uint tileList[]; };
-layout(location = 0) uniform ivec2 uTiles;       // tiles across, down
-layout(location = 1) uniform uint uListCapacity;  // entries tileList holds
+layout(std430, binding = 9) readonly restrict buffer TileStarts { uint tileStart[]; };
+layout(std430, binding = 10) restrict buffer GroupBase { uint groupBase[]; };  // [group][tile]
+layout(location = 0) uniform ivec2 uTiles;  // tiles across, down
+layout(location = 1) uniform bool uScatter;
+
+shared uint sBins[kSplatMaxTiles];
 
 void main() {
-  uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 256u + gl_LocalInvocationIndex;
-  if (i >= args.count) return;
-  Splat s;
-  if (!makeSplat(positionLife[i], velocityKind[i], s)) return;
-  ivec2 t0 = s.lo / kSplatTile, t1 = s.hi / kSplatTile;
-  for (int ty = t0.y; ty <= t1.y; ++ty)
-    for (int tx = t0.x; tx <= t1.x; ++tx) {
-      uint tile = uint(ty * uTiles.x + tx);
-#ifdef COUNT
-      atomicAdd(tileCount[tile], 1u);
-#else
-      uint slot = atomicAdd(tileCount[tile], 1u);
-      if (slot < uListCapacity) tileList[slot] = i;
-#endif
-    }
+  uint lid = gl_LocalInvocationIndex;
+  uint tiles = uint(uTiles.x * uTiles.y);
+  uint group = gl_WorkGroupID.x;
+  for (uint t = lid; t < tiles; t += 256u) sBins[t] = 0u;
+  barrier();
+  uint begin = group * args.perGroup, end = min(begin + args.perGroup, args.count);
+  for (uint i = begin + lid; i < end; i += 256u) {
+    Splat s;
+    if (!makeSplat(positionLife[i], velocityKind[i], s)) continue;
+    ivec2 t0 = s.lo / kSplatTile, t1 = s.hi / kSplatTile;
+    for (int ty = t0.y; ty <= t1.y; ++ty)
+      for (int tx = t0.x; tx <= t1.x; ++tx) {
+        uint tile = uint(ty * uTiles.x + tx);
+        uint place = atomicAdd(sBins[tile], 1u);
+        if (uScatter) tileList[tileStart[tile] + groupBase[group * tiles + tile] + place] = i;
+      }
+  }
+  if (uScatter) return;
+  barrier();
+  for (uint t = lid; t < tiles; t += 256u) {
+    uint n = sBins[t];
+    if (n != 0u) groupBase[group * tiles + t] = atomicAdd(tileCount[t], n);
+  }
 }

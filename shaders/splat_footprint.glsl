@@ -6,7 +6,9 @@
 layout(binding = 2) uniform sampler2D uSprite;      // R8 puff, as ParticleRender's
 layout(binding = 3) uniform sampler2D uSceneDepth;  // the scene's depth, this view's size
 
-const float kMaxRadius = 16.0;  // pixels: larger particles are drawn this large (use billboards for them)
+// Pixels: larger particles are drawn this large (use billboards for them).
+// Below 16 so a splat spans at most 33 pixels, two 32-pixel tiles, a side.
+const float kMaxRadius = 15.5;
 
 struct Splat {
   vec2 pixel;     // window coordinates of the centre

@@ -1,41 +1,60 @@
 #version 450 core
-// ParticleSplat, tiled variant, step 5: one workgroup a tile. The tile's
-// particles (its list) add to its pixels' sums in shared memory, then each
-// invocation resolves its own pixel into the particle buffers (resolveSplat):
-// the same sums as the atomic variant, so the same image, without a global
-// atomic per pixel and channel.
+// ParticleSplat, tiled variant, step 5: one workgroup a chunk (at most
+// uChunk entries of one tile's list). Its particles add to the tile's
+// sums in shared memory; then the workgroup adds those to the view's sums
+// (the atomic variant's buffer, which its resolve pass turns into the image):
+// a plain store where the chunk is its tile's only one, a global atomic where
+// a dense tile has several. The same integers as the atomic variant add, so
+// the same image, with about one global atomic a pixel and chunk instead of
+// six a pixel and particle.
 #include "view_block.glsl"
 #include "render_block.glsl"
 #include "splat_common.glsl"
 #include "splat_footprint.glsl"
 
-layout(local_size_x = 16, local_size_y = 16) in;
+layout(local_size_x = 256) in;
 layout(std430, binding = 0) readonly restrict buffer PositionLife { vec4 positionLife[]; };
 layout(std430, binding = 1) readonly restrict buffer VelocityKind { vec4 velocityKind[]; };
+layout(std430, binding = 6) restrict buffer SplatAccumulation { uint accum[]; };
 layout(std430, binding = 8) readonly restrict buffer TileLists { uint tileList[]; };
 layout(std430, binding = 9) readonly restrict buffer TileStarts { uint tileStart[]; };
-layout(rgba16f, binding = 0) writeonly uniform image2D uColor;
-layout(rgba16f, binding = 1) writeonly uniform image2D uNormal;
+layout(std430, binding = 11) readonly restrict buffer ChunkStarts { uint chunkStart[]; };
+layout(std430, binding = 12) readonly buffer ChunkDispatch {
+  uvec4 dispatch;
+  uint chunks;
+} chunkArgs;
 layout(location = 0) uniform ivec2 uTiles;
-layout(location = 1) uniform uint uListCapacity;
+layout(location = 1) uniform uint uChunk;  // entries a chunk
 
-shared uint sSums[kSplatChannels][kSplatTile * kSplatTile];
+const uint kTilePixels = uint(kSplatTile * kSplatTile);
+shared uint sSums[kSplatChannels][kTilePixels];
 
 void main() {
+  uint chunk = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
+  if (chunk >= chunkArgs.chunks) return;  // the whole workgroup
+  // The chunk's tile: the last tile whose chunks start at or before it.
+  uint lo = 0u, hi = uint(uTiles.x * uTiles.y);
+  while (hi - lo > 1u) {
+    uint mid = (lo + hi) / 2u;
+    if (chunkStart[mid] <= chunk) lo = mid; else hi = mid;
+  }
+  uint t = lo;
+  uint begin = tileStart[t] + (chunk - chunkStart[t]) * uChunk;
+  uint end = min(begin + uChunk, tileStart[t + 1u]);
+  bool alone = chunkStart[t + 1u] - chunkStart[t] == 1u;
+
   uint lid = gl_LocalInvocationIndex;
-  for (uint c = 0u; c < kSplatChannels; ++c) sSums[c][lid] = 0u;
+  for (uint px = lid; px < kTilePixels; px += 256u)
+    for (uint c = 0u; c < kSplatChannels; ++c) sSums[c][px] = 0u;
   barrier();
-  ivec2 tile = ivec2(gl_WorkGroupID.xy);
-  ivec2 origin = tile * kSplatTile;
-  uint t = uint(tile.y * uTiles.x + tile.x);
-  uint begin = min(tileStart[t], uListCapacity), end = min(tileStart[t + 1u], uListCapacity);
+  ivec2 origin = ivec2(int(t % uint(uTiles.x)), int(t / uint(uTiles.x))) * kSplatTile;
   for (uint k = begin + lid; k < end; k += 256u) {
     uint i = tileList[k];
     Splat s;
     if (!makeSplat(positionLife[i], velocityKind[i], s)) continue;
-    ivec2 lo = max(s.lo, origin), hi = min(s.hi, origin + kSplatTile - 1);
-    for (int y = lo.y; y <= hi.y; ++y)
-      for (int x = lo.x; x <= hi.x; ++x) {
+    ivec2 a = max(s.lo, origin), b = min(s.hi, origin + kSplatTile - 1);
+    for (int y = a.y; y <= b.y; ++y)
+      for (int x = a.x; x <= b.x; ++x) {
         uint v[kSplatChannels];
         if (!splatAt(s, ivec2(x, y), v)) continue;
         uint px = uint((y - origin.y) * kSplatTile + (x - origin.x));
@@ -43,12 +62,18 @@ void main() {
       }
   }
   barrier();
-  ivec2 p = origin + ivec2(gl_LocalInvocationID.xy);
-  if (p.x >= int(view.viewport.z) || p.y >= int(view.viewport.w)) return;
-  uint sums[kSplatChannels];
-  for (uint c = 0u; c < kSplatChannels; ++c) sums[c] = sSums[c][lid];
-  vec4 color, normal;
-  resolveSplat(sums, color, normal);
-  imageStore(uColor, p, color);
-  imageStore(uNormal, p, normal);
+  uint width = uint(view.viewport.z), height = uint(view.viewport.w);
+  for (uint px = lid; px < kTilePixels; px += 256u) {
+    uvec2 p = uvec2(origin) + uvec2(px % uint(kSplatTile), px / uint(kSplatTile));
+    if (p.x >= width || p.y >= height) continue;
+    uint base = (p.y * width + p.x) * kSplatStride;
+    for (uint c = 0u; c < kSplatChannels; ++c) {
+      uint v = sSums[c][px];
+      if (v == 0u) continue;
+      if (alone)
+        accum[base + c] = v;
+      else
+        atomicAdd(accum[base + c], v);
+    }
+  }
 }

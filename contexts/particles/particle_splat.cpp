@@ -13,8 +13,11 @@
 namespace sandstorm {
 namespace {
 
-constexpr std::size_t kChannels = 8;  // kSplatStride of splat_common.glsl
-constexpr int kTile = 16;             // kSplatTile
+constexpr std::size_t kChannels = 8;           // kSplatStride of splat_common.glsl
+constexpr int kTile = 32;                      // kSplatTile
+constexpr std::size_t kMaxTiles = 8192;        // kSplatMaxTiles
+constexpr std::size_t kMaxBinGroups = 1024;    // kSplatMaxBinGroups
+constexpr std::size_t kMaxTilesAParticle = 4;  // 2x2: a splat spans at most 33 px (kMaxRadius)
 
 // Storage-buffer bindings of the splat shaders.
 enum Binding : GLuint {
@@ -25,25 +28,57 @@ enum Binding : GLuint {
   kAccumulation = 6,
   kTileCounts = 7,
   kTileLists = 8,
-  kTileStarts = 9
+  kTileStarts = 9,
+  kGroupBase = 10,
+  kChunkStarts = 11,
+  kChunkDispatch = 12
 };
+
+gl::Buffer allocate(std::size_t bytes, const char* what) {
+  gl::Buffer buffer = gl::createBuffer();
+  glGetError();
+  glNamedBufferStorage(buffer.id(), GLsizeiptr(bytes), nullptr, 0);
+  if (glGetError() == GL_OUT_OF_MEMORY)
+    throw Error(concat("ParticleSplat: no GPU memory for ", what, " (", bytes, " bytes)"));
+  return buffer;
+}
+
+void zero(const gl::Buffer& buffer) {
+  const GLuint value = 0;
+  glClearNamedBufferData(buffer.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
+}
+
+// Entries a chunk: SANDSTORM_SPLAT_CHUNK (tests use small chunks to put
+// several in a tile), else 4096: a few thousand particles a workgroup, and
+// tiles with more spread over several.
+GLuint chunkFromEnvironment() {
+  const char* text = std::getenv("SANDSTORM_SPLAT_CHUNK");
+  if (!text) return 4096;
+  char* end = nullptr;
+  const long value = std::strtol(text, &end, 10);
+  if (end == text || *end != '\0' || value < 1 || value > (1 << 24))
+    throw Error(concat("SANDSTORM_SPLAT_CHUNK: '", text, "': expected a whole number from 1 to ",
+                       1 << 24));
+  return GLuint(value);
+}
 
 }  // namespace
 
 ParticleSplat::ParticleSplat()
     : tiled_(std::getenv("SANDSTORM_SPLAT") &&
              std::string_view(std::getenv("SANDSTORM_SPLAT")) == "tiled"),
+      chunk_(chunkFromEnvironment()),
       prepare_(std::vector<std::string>{"splat_prepare.comp"}),
-      dispatch_(gl::createBuffer()) {
-  glNamedBufferStorage(dispatch_.id(), 32, nullptr, 0);
+      splat_(std::vector<std::string>{"particle_splat.comp"}),
+      resolve_(std::vector<std::string>{"particle_splat_resolve.comp"}),
+      dispatch_(gl::createBuffer()),
+      chunkDispatch_(gl::createBuffer()) {
+  glNamedBufferStorage(dispatch_.id(), 64, nullptr, 0);
+  glNamedBufferStorage(chunkDispatch_.id(), 32, nullptr, 0);
   if (tiled_) {
-    count_.emplace(gl::ProgramDesc{{"splat_bin.comp"}, {"COUNT"}, {}});
-    scatter_.emplace(std::vector<std::string>{"splat_bin.comp"});
+    bin_.emplace(std::vector<std::string>{"splat_bin.comp"});
     scan_.emplace(std::vector<std::string>{"splat_scan.comp"});
     tile_.emplace(std::vector<std::string>{"splat_tile.comp"});
-  } else {
-    splat_.emplace(std::vector<std::string>{"particle_splat.comp"});
-    resolve_.emplace(std::vector<std::string>{"particle_splat_resolve.comp"});
   }
 }
 
@@ -59,99 +94,94 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   glBindImageTexture(0, targets.particleColor(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glBindImageTexture(1, targets.particleNormal(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
 
+  const glm::ivec2 size = targets.size();
+  const std::size_t pixels = std::size_t(size.x) * std::size_t(size.y);
+  if (pixels > pixels_) {
+    accumulation_ = allocate(pixels * kChannels * 4, "the splat sums");
+    zero(accumulation_);
+    pixels_ = pixels;
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAccumulation, accumulation_.id());
+
   prepare_.use();
   glProgramUniform1ui(prepare_.id(), 0, records.countOffset / 4);
   glProgramUniform1ui(prepare_.id(), 1, records.countAdd);
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
-  if (tiled_)
-    drawTiled(targets, particles.capacity());
+  const glm::ivec2 tiles((size.x + kTile - 1) / kTile, (size.y + kTile - 1) / kTile);
+  // Views too large for the tiles' histogram (beyond 4K) take the atomic path.
+  if (tiled_ && std::size_t(tiles.x) * std::size_t(tiles.y) <= kMaxTiles)
+    addTiled(tiles, particles.capacity());
   else
-    drawAtomic(targets);
-  // ParticlePost reads the images as textures; the next view starts from zeroed sums.
+    addAtomic();
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  // Both variants leave the sums in the buffer; the resolve turns them into
+  // the particle buffers and zeroes them for the next view.
+  resolve_.use();
+  glProgramUniform2i(resolve_.id(), 0, size.x, size.y);
+  glDispatchCompute(GLuint((size.x + 15) / 16), GLuint((size.y + 15) / 16), 1);
+  // ParticlePost reads the images as textures.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                   GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
 }
 
-void ParticleSplat::drawAtomic(const ViewTargets& targets) const {
-  const glm::ivec2 size = targets.size();
-  const std::size_t pixels = std::size_t(size.x) * std::size_t(size.y);
-  if (pixels > pixels_) {
-    accumulation_ = gl::createBuffer();
-    glGetError();
-    glNamedBufferStorage(accumulation_.id(), GLsizeiptr(pixels * kChannels * 4), nullptr, 0);
-    if (glGetError() == GL_OUT_OF_MEMORY)
-      throw Error(concat("ParticleSplat: no GPU memory for ", pixels, " pixels"));
-    const GLuint zero = 0;
-    glClearNamedBufferData(accumulation_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-    pixels_ = pixels;
-  }
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAccumulation, accumulation_.id());
-  splat_->use();
+void ParticleSplat::addAtomic() const {
+  splat_.use();
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_.id());
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  resolve_->use();
-  glProgramUniform2i(resolve_->id(), 0, size.x, size.y);
-  glDispatchCompute(GLuint((size.x + 15) / 16), GLuint((size.y + 15) / 16), 1);
 }
 
-void ParticleSplat::drawTiled(const ViewTargets& targets, std::size_t capacity) const {
-  const glm::ivec2 size = targets.size();
-  const glm::ivec2 tiles((size.x + kTile - 1) / kTile, (size.y + kTile - 1) / kTile);
+void ParticleSplat::addTiled(glm::ivec2 tiles, std::size_t capacity) const {
   const std::size_t tileCount = std::size_t(tiles.x) * std::size_t(tiles.y);
-  // A particle of at most 4 pixels covers at most 4 tiles, and most cover one:
-  // three list entries a particle leave room; entries past the end are dropped.
-  const std::size_t listCapacity = std::max<std::size_t>(3 * capacity, 4096);
+  // Every entry has room: a particle covers at most four tiles.
+  const std::size_t listCapacity = std::max<std::size_t>(kMaxTilesAParticle * capacity, 4096);
   if (tileCount > tiles_) {
-    tileCounts_ = gl::createBuffer();
-    tileStarts_ = gl::createBuffer();
-    glNamedBufferStorage(tileCounts_.id(), GLsizeiptr(tileCount * 4), nullptr, 0);
-    glNamedBufferStorage(tileStarts_.id(), GLsizeiptr((tileCount + 1) * 4), nullptr, 0);
+    tileCounts_ = allocate(tileCount * 4, "the tile counts");
+    zero(tileCounts_);  // splat_scan.comp zeroes them after each view
+    tileStarts_ = allocate((tileCount + 1) * 4, "the tile starts");
+    chunkStarts_ = allocate((tileCount + 1) * 4, "the chunk starts");
+    groupBase_ = allocate(kMaxBinGroups * tileCount * 4, "the binning offsets");
     tiles_ = tileCount;
   }
   if (listCapacity > listCapacity_) {
-    tileLists_ = gl::createBuffer();
-    glGetError();
-    glNamedBufferStorage(tileLists_.id(), GLsizeiptr(listCapacity * 4), nullptr, 0);
-    if (glGetError() == GL_OUT_OF_MEMORY)
-      throw Error(
-          concat("ParticleSplat: no GPU memory for the tile lists of ", capacity, " particles"));
+    tileLists_ = allocate(listCapacity * 4, "the tile lists");
     listCapacity_ = listCapacity;
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileCounts, tileCounts_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileLists, tileLists_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileStarts, tileStarts_.id());
-  const GLuint zero = 0;
-  glClearNamedBufferSubData(tileCounts_.id(), GL_R32UI, 0, GLsizeiptr(tileCount * 4),
-                            GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGroupBase, groupBase_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kChunkStarts, chunkStarts_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kChunkDispatch, chunkDispatch_.id());
 
+  // The binning dispatch size is the second uvec4 of the prepare pass's output.
+  constexpr GLintptr kBinDispatch = 32;
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_.id());
-  count_->use();
-  glProgramUniform2i(count_->id(), 0, tiles.x, tiles.y);
-  glProgramUniform1ui(count_->id(), 1, GLuint(listCapacity_));
-  glDispatchComputeIndirect(0);
+  bin_->use();
+  glProgramUniform2i(bin_->id(), 0, tiles.x, tiles.y);
+  glProgramUniform1i(bin_->id(), 1, GL_FALSE);
+  glDispatchComputeIndirect(kBinDispatch);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   scan_->use();
   glProgramUniform1ui(scan_->id(), 0, GLuint(tileCount));
+  glProgramUniform1ui(scan_->id(), 1, chunk_);
   glDispatchCompute(1, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
-  scatter_->use();
-  glProgramUniform2i(scatter_->id(), 0, tiles.x, tiles.y);
-  glProgramUniform1ui(scatter_->id(), 1, GLuint(listCapacity_));
-  glDispatchComputeIndirect(0);
-  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glProgramUniform1i(bin_->id(), 1, GL_TRUE);
+  bin_->use();
+  glDispatchComputeIndirect(kBinDispatch);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   tile_->use();
   glProgramUniform2i(tile_->id(), 0, tiles.x, tiles.y);
-  glProgramUniform1ui(tile_->id(), 1, GLuint(listCapacity_));
-  glDispatchCompute(GLuint(tiles.x), GLuint(tiles.y), 1);
+  glProgramUniform1ui(tile_->id(), 1, chunk_);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, chunkDispatch_.id());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
 }  // namespace sandstorm

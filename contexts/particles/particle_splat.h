@@ -7,17 +7,19 @@
 // colour, soft depth test against the scene: shaders/splat_footprint.glsl) to
 // order-independent fixed-point sums per pixel, which a resolve turns into the
 // particle buffers. Two variants add the same integers, so give the same image:
-//   atomic (the default): one invocation a particle adds to a buffer of sums
-//     with global atomics (six a pixel), then a resolve pass;
-//   tiled: bin the particles by 16x16-pixel tile (count, prefix sum, scatter
-//     of indices), then one workgroup a tile adds its particles in shared
-//     memory and resolves its pixels: a few global atomics a particle, but on
-//     an H200 2.4x slower than atomic at 10^7 particles, because the dense
-//     tiles of a particle cloud leave a few workgroups most of the work.
-// SANDSTORM_SPLAT=tiled picks the second (for the benchmark). The result
+//   atomic (the default): one invocation a particle adds to the sums with
+//     global atomics (six a pixel);
+//   tiled: bin the particles by 32x32-pixel tile (a histogram per workgroup
+//     in shared memory, a prefix sum, a scatter of indices), cut each tile's
+//     list into chunks of at most 4096, and let one workgroup a chunk add its
+//     particles in shared memory, then add the tile's sums to the buffer: a
+//     global atomic a pixel and chunk. Chunks keep dense tiles spread over
+//     many workgroups. Views beyond 4K (8192 tiles) take the atomic path.
+// SANDSTORM_SPLAT=tiled picks the second (for the benchmark);
+// SANDSTORM_SPLAT_CHUNK sets its chunk size. The result
 // matches blending "over" exactly in alpha and, where overlapping particles
 // share a colour, in colour (tests/contexts/particle_splat_test.cpp states the
-// image tolerance). Particles wider than 32 pixels are drawn 32 pixels wide:
+// image tolerance). Particles wider than 31 pixels are drawn 31 pixels wide:
 // render.mode = auto leaves large particles to billboards.
 //
 // Expects the view and render blocks bound (bindings 1 and 2); needs the GL
@@ -45,17 +47,18 @@ class ParticleSplat {
             std::uint32_t sprite) const;
 
  private:
-  void drawAtomic(const ViewTargets& targets) const;
-  void drawTiled(const ViewTargets& targets, std::size_t capacity) const;
+  // Add every particle's footprint to the sums.
+  void addAtomic() const;
+  void addTiled(glm::ivec2 tiles, std::size_t capacity) const;
 
   bool tiled_;
-  gl::Program prepare_;
-  std::optional<gl::Program> splat_, resolve_;                // atomic
-  std::optional<gl::Program> count_, scatter_, scan_, tile_;  // tiled
-  gl::Buffer dispatch_;
-  mutable gl::Buffer accumulation_;  // atomic: the sums
+  std::uint32_t chunk_;  // tiled: list entries a workgroup
+  gl::Program prepare_, splat_, resolve_;
+  std::optional<gl::Program> bin_, scan_, tile_;  // tiled
+  gl::Buffer dispatch_, chunkDispatch_;
+  mutable gl::Buffer accumulation_;  // the sums
   mutable std::size_t pixels_ = 0;
-  mutable gl::Buffer tileCounts_, tileStarts_, tileLists_;  // tiled: the bins
+  mutable gl::Buffer tileCounts_, tileStarts_, chunkStarts_, groupBase_, tileLists_;  // tiled: the bins
   mutable std::size_t tiles_ = 0, listCapacity_ = 0;
 };
 

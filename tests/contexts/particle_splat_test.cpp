@@ -128,8 +128,14 @@ TEST_P(ParticleSplatTest, TiledAndAtomicSplatsAddTheSameSumsSoDrawTheSameImage) 
   const Image atomic = render(state, GetParam());
   setenv("SANDSTORM_SPLAT", "tiled", 1);
   const Image tiled = render(state, GetParam());
+  // Chunks of 37 entries: dense tiles split over several workgroups, which
+  // add their sums with atomics.
+  setenv("SANDSTORM_SPLAT_CHUNK", "37", 1);
+  const Image chunked = render(state, GetParam());
+  unsetenv("SANDSTORM_SPLAT_CHUNK");
   unsetenv("SANDSTORM_SPLAT");
   EXPECT_TRUE(tiled.rgba == atomic.rgba);
+  EXPECT_TRUE(chunked.rgba == atomic.rgba);
 }
 
 TEST_P(ParticleSplatTest, AutoSplatsSmallParticlesAndDrawsLargeOnesAsBillboards) {
