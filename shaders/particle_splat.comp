@@ -16,17 +16,11 @@ layout(std430, binding = 5) readonly buffer Dispatch {
 } args;
 layout(std430, binding = 6) restrict buffer SplatAccumulation { uint accum[]; };
 
+#include "splat_add.glsl"
+
 void main() {
   uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 256u + gl_LocalInvocationIndex;
   if (i >= args.count) return;
   Splat s;
-  if (!makeSplat(positionLife[i], velocityKind[i], s)) return;
-  uint width = uint(view.viewport.z);
-  for (int y = s.lo.y; y <= s.hi.y; ++y)
-    for (int x = s.lo.x; x <= s.hi.x; ++x) {
-      uint v[kSplatChannels];
-      if (!splatAt(s, ivec2(x, y), v)) continue;
-      uint base = (uint(y) * width + uint(x)) * kSplatStride;
-      for (uint c = 0u; c < kSplatChannels; ++c) atomicAdd(accum[base + c], v[c]);
-    }
+  if (makeSplat(positionLife[i], velocityKind[i], s)) addSplat(s, s.lo, s.hi);
 }

@@ -5,8 +5,11 @@
 // one global atomic a workgroup, not one a particle.
 //   count (uScatter false): adds the histogram to the tiles' counts; what
 //     each add returns is this workgroup's place in the tile's list (groupBase).
-//   scatter (uScatter true): counts again and writes each particle's index
-//     at tileStart + groupBase + its place in the workgroup's histogram.
+//   scatter (uScatter true): counts again and writes each particle's splat
+//     record at tileStart + groupBase + its place in the workgroup's
+//     histogram. Where the list is full (it holds uListCapacity records, a
+//     few a particle) the particle adds its footprint in that tile to the sums
+//     itself, with global atomics: slower, the same integers.
 // One program for both, so both passes find exactly the same tiles.
 #include "view_block.glsl"
 #include "render_block.glsl"
@@ -23,11 +26,15 @@ layout(std430, binding = 5) readonly buffer Dispatch {
   uint perGroup;
 } args;
 layout(std430, binding = 7) restrict buffer TileCounts { uint tileCount[]; };
-layout(std430, binding = 8) writeonly restrict buffer TileLists { uint tileList[]; };
+layout(std430, binding = 6) restrict buffer SplatAccumulation { uint accum[]; };
+layout(std430, binding = 8) writeonly restrict buffer TileLists { uvec4 tileList[]; };  // splat records
 layout(std430, binding = 9) readonly restrict buffer TileStarts { uint tileStart[]; };
 layout(std430, binding = 10) restrict buffer GroupBase { uint groupBase[]; };  // [group][tile]
 layout(location = 0) uniform ivec2 uTiles;  // tiles across, down
 layout(location = 1) uniform bool uScatter;
+layout(location = 2) uniform uint uListCapacity;
+
+#include "splat_add.glsl"
 
 shared uint sBins[kSplatMaxTiles];
 
@@ -39,14 +46,22 @@ void main() {
   barrier();
   uint begin = group * args.perGroup, end = min(begin + args.perGroup, args.count);
   for (uint i = begin + lid; i < end; i += 256u) {
+    uvec4 record;
     Splat s;
-    if (!makeSplat(positionLife[i], velocityKind[i], s)) continue;
+    if (!makeSplatRecord(positionLife[i], velocityKind[i], record) || !unpackSplat(record, s)) continue;
     ivec2 t0 = s.lo / kSplatTile, t1 = s.hi / kSplatTile;
     for (int ty = t0.y; ty <= t1.y; ++ty)
       for (int tx = t0.x; tx <= t1.x; ++tx) {
         uint tile = uint(ty * uTiles.x + tx);
         uint place = atomicAdd(sBins[tile], 1u);
-        if (uScatter) tileList[tileStart[tile] + groupBase[group * tiles + tile] + place] = i;
+        if (!uScatter) continue;
+        uint slot = tileStart[tile] + groupBase[group * tiles + tile] + place;
+        if (slot < uListCapacity) {
+          tileList[slot] = record;
+        } else {
+          ivec2 origin = ivec2(tx, ty) * kSplatTile;
+          addSplat(s, max(s.lo, origin), min(s.hi, origin + kSplatTile - 1));
+        }
       }
   }
   if (uScatter) return;

@@ -20,32 +20,63 @@ struct Splat {
   ivec2 lo, hi;   // the pixels it may cover (inclusive, inside the view)
 };
 
-// False when the particle shows nowhere in this view.
-bool makeSplat(vec4 positionLife, vec4 velocityKind, out Splat s) {
+// A splat in 16 bytes, as the tiled pass lists it and both passes use it (so
+// both add the same integers): the centre's window coordinates and distance
+// as floats; the age in 10 bits and the direction to the eye in 2 x 11 bits
+// (octahedral: a tenth of a degree, far below what lighting a 4-pixel puff shows).
+vec2 octahedral(vec3 n) {
+  n /= abs(n.x) + abs(n.y) + abs(n.z);
+  vec2 signs = vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
+  return n.z >= 0.0 ? n.xy : (1.0 - abs(n.yx)) * signs;
+}
+
+vec3 fromOctahedral(vec2 p) {
+  vec3 n = vec3(p, 1.0 - abs(p.x) - abs(p.y));
+  vec2 signs = vec2(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0);
+  if (n.z < 0.0) n.xy = (1.0 - abs(n.yx)) * signs;
+  return normalize(n);
+}
+
+// False when the particle is behind the eye.
+bool makeSplatRecord(vec4 positionLife, vec4 velocityKind, out uvec4 record) {
   vec3 center = positionLife.xyz;
-  s.age = clamp(1.0 - positionLife.w / max(velocityKind.w, 1e-6), 0.0, 1.0);
+  float age = clamp(1.0 - positionLife.w / max(velocityKind.w, 1e-6), 0.0, 1.0);
   vec4 clip = view.viewProjection * vec4(center, 1.0);
-  if (clip.w <= 1e-4) return false;
+  vec3 toEye = view.eye.xyz - center;
+  if (clip.w <= 1e-4 || dot(toEye, toEye) < 1e-8) return false;
+  vec2 pixel = (clip.xy / clip.w * 0.5 + 0.5) * view.viewport.zw;
+  uvec2 direction = uvec2(round((octahedral(toEye) * 0.5 + 0.5) * 2047.0));
+  record = uvec4(floatBitsToUint(pixel), floatBitsToUint(clip.w),
+                 uint(round(age * 1023.0)) | direction.x << 10 | direction.y << 21);
+  return true;
+}
+
+// False when the splat shows nowhere in this view.
+bool unpackSplat(uvec4 record, out Splat s) {
+  s.pixel = uintBitsToFloat(record.xy);
+  s.distance = uintBitsToFloat(record.z);
+  s.age = float(record.w & 1023u) / 1023.0;
+  s.toEye = fromOctahedral(vec2(uvec2(record.w >> 10, record.w >> 21) & 2047u) / 2047.0 * 2.0 - 1.0);
   vec2 size = view.viewport.zw;
-  s.pixel = (clip.xy / clip.w * 0.5 + 0.5) * size;
   float radius = 0.5 * look.params.x;
-  s.radius = min(radius * vec2(view.projection[0][0], view.projection[1][1]) * 0.5 * size / clip.w, vec2(kMaxRadius));
+  s.radius = min(radius * vec2(view.projection[0][0], view.projection[1][1]) * 0.5 * size / s.distance, vec2(kMaxRadius));
   if (s.pixel.x + s.radius.x < 0.0 || s.pixel.y + s.radius.y < 0.0 || s.pixel.x - s.radius.x > size.x ||
       s.pixel.y - s.radius.y > size.y)
     return false;
   // The billboard's frame, as particle_render.geom builds it.
-  vec3 toEye = view.eye.xyz - center;
-  float distance = length(toEye);
-  if (distance < 1e-4) return false;
-  s.toEye = toEye / distance;
   vec3 worldUp = abs(s.toEye.z) < 0.999 ? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
   s.right = normalize(cross(worldUp, s.toEye));
   s.up = cross(s.toEye, s.right);
-  s.distance = clip.w;
   s.opacity = mix(look.colorBirth.a, look.colorDeath.a, s.age);
   s.lo = max(ivec2(floor(s.pixel - s.radius)), ivec2(0));
   s.hi = min(ivec2(ceil(s.pixel + s.radius)), ivec2(size) - 1);
   return s.lo.x <= s.hi.x && s.lo.y <= s.hi.y;
+}
+
+// False when the particle shows nowhere in this view.
+bool makeSplat(vec4 positionLife, vec4 velocityKind, out Splat s) {
+  uvec4 record;
+  return makeSplatRecord(positionLife, velocityKind, record) && unpackSplat(record, s);
 }
 
 // What the splat adds to pixel p, as kSplatChannels fixed-point values

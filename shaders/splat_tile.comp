@@ -1,6 +1,7 @@
 #version 450 core
 // ParticleSplat, tiled variant, step 5: one workgroup a chunk (at most
-// uChunk entries of one tile's list). Its particles add to the tile's
+// uChunk splat records of one tile's list; records past the list's capacity
+// were added by the scatter pass). Its particles add to the tile's
 // sums in shared memory; then the workgroup adds those to the view's sums
 // (the atomic variant's buffer, which its resolve pass turns into the image):
 // a plain store where the chunk is its tile's only one, a global atomic where
@@ -13,10 +14,8 @@
 #include "splat_footprint.glsl"
 
 layout(local_size_x = 256) in;
-layout(std430, binding = 0) readonly restrict buffer PositionLife { vec4 positionLife[]; };
-layout(std430, binding = 1) readonly restrict buffer VelocityKind { vec4 velocityKind[]; };
 layout(std430, binding = 6) restrict buffer SplatAccumulation { uint accum[]; };
-layout(std430, binding = 8) readonly restrict buffer TileLists { uint tileList[]; };
+layout(std430, binding = 8) readonly restrict buffer TileLists { uvec4 tileList[]; };
 layout(std430, binding = 9) readonly restrict buffer TileStarts { uint tileStart[]; };
 layout(std430, binding = 11) readonly restrict buffer ChunkStarts { uint chunkStart[]; };
 layout(std430, binding = 12) readonly buffer ChunkDispatch {
@@ -25,6 +24,7 @@ layout(std430, binding = 12) readonly buffer ChunkDispatch {
 } chunkArgs;
 layout(location = 0) uniform ivec2 uTiles;
 layout(location = 1) uniform uint uChunk;  // entries a chunk
+layout(location = 2) uniform uint uListCapacity;
 
 const uint kTilePixels = uint(kSplatTile * kSplatTile);
 shared uint sSums[kSplatChannels][kTilePixels];
@@ -40,8 +40,9 @@ void main() {
   }
   uint t = lo;
   uint begin = tileStart[t] + (chunk - chunkStart[t]) * uChunk;
-  uint end = min(begin + uChunk, tileStart[t + 1u]);
-  bool alone = chunkStart[t + 1u] - chunkStart[t] == 1u;
+  uint end = min(min(begin + uChunk, tileStart[t + 1u]), uListCapacity);
+  // The only chunk of a tile the scatter pass added nothing to may store its sums.
+  bool alone = chunkStart[t + 1u] - chunkStart[t] == 1u && tileStart[t + 1u] <= uListCapacity;
 
   uint lid = gl_LocalInvocationIndex;
   for (uint px = lid; px < kTilePixels; px += 256u)
@@ -49,9 +50,8 @@ void main() {
   barrier();
   ivec2 origin = ivec2(int(t % uint(uTiles.x)), int(t / uint(uTiles.x))) * kSplatTile;
   for (uint k = begin + lid; k < end; k += 256u) {
-    uint i = tileList[k];
     Splat s;
-    if (!makeSplat(positionLife[i], velocityKind[i], s)) continue;
+    if (!unpackSplat(tileList[k], s)) continue;
     ivec2 a = max(s.lo, origin), b = min(s.hi, origin + kSplatTile - 1);
     for (int y = a.y; y <= b.y; ++y)
       for (int x = a.x; x <= b.x; ++x) {

@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstdlib>
 #include <string_view>
 
@@ -17,7 +18,7 @@ constexpr std::size_t kChannels = 8;           // kSplatStride of splat_common.g
 constexpr int kTile = 32;                      // kSplatTile
 constexpr std::size_t kMaxTiles = 8192;        // kSplatMaxTiles
 constexpr std::size_t kMaxBinGroups = 1024;    // kSplatMaxBinGroups
-constexpr std::size_t kMaxTilesAParticle = 4;  // 2x2: a splat spans at most 33 px (kMaxRadius)
+constexpr std::size_t kRecordBytes = 16;      // a splat record (splat_footprint.glsl)
 
 // Storage-buffer bindings of the splat shaders.
 enum Binding : GLuint {
@@ -48,18 +49,15 @@ void zero(const gl::Buffer& buffer) {
   glClearNamedBufferData(buffer.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
 }
 
-// Entries a chunk: SANDSTORM_SPLAT_CHUNK (tests use small chunks to put
-// several in a tile), else 4096: a few thousand particles a workgroup, and
-// tiles with more spread over several.
-GLuint chunkFromEnvironment() {
-  const char* text = std::getenv("SANDSTORM_SPLAT_CHUNK");
-  if (!text) return 4096;
+// A whole number from the environment variable `name`, or `otherwise`.
+std::size_t fromEnvironment(const char* name, std::size_t otherwise) {
+  const char* text = std::getenv(name);
+  if (!text) return otherwise;
   char* end = nullptr;
-  const long value = std::strtol(text, &end, 10);
-  if (end == text || *end != '\0' || value < 1 || value > (1 << 24))
-    throw Error(concat("SANDSTORM_SPLAT_CHUNK: '", text, "': expected a whole number from 1 to ",
-                       1 << 24));
-  return GLuint(value);
+  const long long value = std::strtoll(text, &end, 10);
+  if (end == text || *end != '\0' || value < 1 || value > (1ll << 31))
+    throw Error(concat(name, ": '", text, "': expected a whole number from 1 to ", 1ll << 31));
+  return std::size_t(value);
 }
 
 }  // namespace
@@ -67,7 +65,9 @@ GLuint chunkFromEnvironment() {
 ParticleSplat::ParticleSplat()
     : tiled_(std::getenv("SANDSTORM_SPLAT") &&
              std::string_view(std::getenv("SANDSTORM_SPLAT")) == "tiled"),
-      chunk_(chunkFromEnvironment()),
+      // Records a chunk: a few thousand a workgroup; tiles with more spread
+      // over several. Tests make them small to put several in a tile.
+      chunk_(GLuint(fromEnvironment("SANDSTORM_SPLAT_CHUNK", 4096))),
       prepare_(std::vector<std::string>{"splat_prepare.comp"}),
       splat_(std::vector<std::string>{"particle_splat.comp"}),
       resolve_(std::vector<std::string>{"particle_splat_resolve.comp"}),
@@ -133,10 +133,40 @@ void ParticleSplat::addAtomic() const {
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
+namespace {
+struct Prof {
+  GLuint q[8][5] = {};
+  double sum[5] = {};
+  int n = 0;
+  bool on = std::getenv("SANDSTORM_SPLAT_PROFILE") != nullptr;
+};
+Prof prof;
+void mark(int k) {
+  if (!prof.on) return;
+  if (!prof.q[0][0]) for (auto& a : prof.q) glGenQueries(5, a);
+  glQueryCounter(prof.q[prof.n % 8][k], GL_TIMESTAMP);
+}
+void collect() {
+  if (!prof.on) return;
+  ++prof.n;
+  if (prof.n < 8) return;
+  auto& a = prof.q[prof.n % 8];
+  GLuint64 t[5];
+  for (int k = 0; k < 5; ++k) glGetQueryObjectui64v(a[k], GL_QUERY_RESULT, &t[k]);
+  for (int k = 0; k < 4; ++k) prof.sum[k] += (t[k + 1] - t[k]) * 1e-6;
+  if (prof.n % 16 == 0) {
+    std::fprintf(stderr, "splat profile (ms, mean of %d): count %.3f scan %.3f scatter %.3f tile %.3f\n", prof.n - 7,
+                 prof.sum[0] / (prof.n - 7), prof.sum[1] / (prof.n - 7), prof.sum[2] / (prof.n - 7), prof.sum[3] / (prof.n - 7));
+  }
+}
+}  // namespace
+
 void ParticleSplat::addTiled(glm::ivec2 tiles, std::size_t capacity) const {
   const std::size_t tileCount = std::size_t(tiles.x) * std::size_t(tiles.y);
-  // Every entry has room: a particle covers at most four tiles.
-  const std::size_t listCapacity = std::max<std::size_t>(kMaxTilesAParticle * capacity, 4096);
+  // Records in the lists: a particle of a few pixels covers one 32-pixel tile,
+  // sometimes two or four; the scatter pass adds those past the end itself.
+  // SANDSTORM_SPLAT_LIST sets the number (tests make it small).
+  const std::size_t listCapacity = fromEnvironment("SANDSTORM_SPLAT_LIST", 2 * capacity + 4096);
   if (tileCount > tiles_) {
     tileCounts_ = allocate(tileCount * 4, "the tile counts");
     zero(tileCounts_);  // splat_scan.comp zeroes them after each view
@@ -146,7 +176,7 @@ void ParticleSplat::addTiled(glm::ivec2 tiles, std::size_t capacity) const {
     tiles_ = tileCount;
   }
   if (listCapacity > listCapacity_) {
-    tileLists_ = allocate(listCapacity * 4, "the tile lists");
+    tileLists_ = allocate(listCapacity * kRecordBytes, "the tile lists");
     listCapacity_ = listCapacity;
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileCounts, tileCounts_.id());
@@ -159,29 +189,37 @@ void ParticleSplat::addTiled(glm::ivec2 tiles, std::size_t capacity) const {
   // The binning dispatch size is the second uvec4 of the prepare pass's output.
   constexpr GLintptr kBinDispatch = 32;
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_.id());
+  mark(0);
   bin_->use();
   glProgramUniform2i(bin_->id(), 0, tiles.x, tiles.y);
   glProgramUniform1i(bin_->id(), 1, GL_FALSE);
+  glProgramUniform1ui(bin_->id(), 2, GLuint(listCapacity));
   glDispatchComputeIndirect(kBinDispatch);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
+  mark(1);
   scan_->use();
   glProgramUniform1ui(scan_->id(), 0, GLuint(tileCount));
   glProgramUniform1ui(scan_->id(), 1, chunk_);
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
+  mark(2);
   glProgramUniform1i(bin_->id(), 1, GL_TRUE);
   bin_->use();
   glDispatchComputeIndirect(kBinDispatch);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
+  mark(3);
   tile_->use();
   glProgramUniform2i(tile_->id(), 0, tiles.x, tiles.y);
   glProgramUniform1ui(tile_->id(), 1, chunk_);
+  glProgramUniform1ui(tile_->id(), 2, GLuint(listCapacity));
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, chunkDispatch_.id());
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  mark(4);
+  collect();
 }
 
 }  // namespace sandstorm

@@ -126,16 +126,25 @@ TEST_P(ParticleSplatTest, SplatsLookLikeBillboardsForSmallParticles) {
 TEST_P(ParticleSplatTest, TiledAndAtomicSplatsAddTheSameSumsSoDrawTheSameImage) {
   const ParticleState state = cloud(RenderMode::Splat, 0.25f, true);
   const Image atomic = render(state, GetParam());
+  ParticleState none = state;
+  none.emitters[0].rate = 0.0f;
+  EXPECT_FALSE(atomic.rgba == render(none, GetParam()).rgba);
+  // The tiled variant, as it runs; with chunks of 37 records (dense tiles
+  // split over several workgroups, which add their sums with atomics); with
+  // lists that hold 500 records (the scatter pass adds the rest); and both.
+  const std::vector<std::pair<const char*, const char*>> variants{
+      {nullptr, nullptr}, {"37", nullptr}, {nullptr, "500"}, {"37", "500"}};
   setenv("SANDSTORM_SPLAT", "tiled", 1);
-  const Image tiled = render(state, GetParam());
-  // Chunks of 37 entries: dense tiles split over several workgroups, which
-  // add their sums with atomics.
-  setenv("SANDSTORM_SPLAT_CHUNK", "37", 1);
-  const Image chunked = render(state, GetParam());
-  unsetenv("SANDSTORM_SPLAT_CHUNK");
+  for (const auto& [chunk, list] : variants) {
+    if (chunk) setenv("SANDSTORM_SPLAT_CHUNK", chunk, 1);
+    if (list) setenv("SANDSTORM_SPLAT_LIST", list, 1);
+    const Image tiled = render(state, GetParam());
+    unsetenv("SANDSTORM_SPLAT_CHUNK");
+    unsetenv("SANDSTORM_SPLAT_LIST");
+    EXPECT_TRUE(tiled.rgba == atomic.rgba)
+        << "chunk " << (chunk ? chunk : "default") << ", list " << (list ? list : "default");
+  }
   unsetenv("SANDSTORM_SPLAT");
-  EXPECT_TRUE(tiled.rgba == atomic.rgba);
-  EXPECT_TRUE(chunked.rgba == atomic.rgba);
 }
 
 TEST_P(ParticleSplatTest, AutoSplatsSmallParticlesAndDrawsLargeOnesAsBillboards) {
