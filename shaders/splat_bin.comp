@@ -46,9 +46,11 @@ void main() {
   barrier();
   uint begin = group * args.perGroup, end = min(begin + args.perGroup, args.count);
   for (uint i = begin + lid; i < end; i += 256u) {
-    uvec4 record;
+    // Counting needs only where the splat is (so reads only the positions).
+    vec4 pl = positionLife[i];
+    uvec3 where;
     Splat s;
-    if (!makeSplatRecord(positionLife[i], velocityKind[i], record) || !unpackSplat(record, s)) continue;
+    if (!splatCentre(pl.xyz, where) || !splatBounds(where, s)) continue;
     ivec2 t0 = s.lo / kSplatTile, t1 = s.hi / kSplatTile;
     for (int ty = t0.y; ty <= t1.y; ++ty)
       for (int tx = t0.x; tx <= t1.x; ++tx) {
@@ -56,10 +58,12 @@ void main() {
         uint place = atomicAdd(sBins[tile], 1u);
         if (!uScatter) continue;
         uint slot = tileStart[tile] + groupBase[group * tiles + tile] + place;
+        uvec4 record = uvec4(where, splatLook(pl.xyz, pl.w, velocityKind[i].w));
         if (slot < uListCapacity) {
           tileList[slot] = record;
         } else {
           ivec2 origin = ivec2(tx, ty) * kSplatTile;
+          unpackSplat(record, s);
           addSplat(s, max(s.lo, origin), min(s.hi, origin + kSplatTile - 1));
         }
       }

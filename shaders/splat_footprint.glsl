@@ -37,46 +37,73 @@ vec3 fromOctahedral(vec2 p) {
   return normalize(n);
 }
 
-// False when the particle is behind the eye.
-bool makeSplatRecord(vec4 positionLife, vec4 velocityKind, out uvec4 record) {
-  vec3 center = positionLife.xyz;
-  float age = clamp(1.0 - positionLife.w / max(velocityKind.w, 1e-6), 0.0, 1.0);
+// A record's first three words: the centre's window coordinates and
+// distance. False when the particle is behind the eye (or at it).
+bool splatCentre(vec3 center, out uvec3 where) {
   vec4 clip = view.viewProjection * vec4(center, 1.0);
   vec3 toEye = view.eye.xyz - center;
   if (clip.w <= 1e-4 || dot(toEye, toEye) < 1e-8) return false;
-  vec2 pixel = (clip.xy / clip.w * 0.5 + 0.5) * view.viewport.zw;
-  uvec2 direction = uvec2(round((octahedral(toEye) * 0.5 + 0.5) * 2047.0));
-  record = uvec4(floatBitsToUint(pixel), floatBitsToUint(clip.w),
-                 uint(round(age * 1023.0)) | direction.x << 10 | direction.y << 21);
+  where = uvec3(floatBitsToUint((clip.xy / clip.w * 0.5 + 0.5) * view.viewport.zw), floatBitsToUint(clip.w));
   return true;
 }
 
-// False when the splat shows nowhere in this view.
-bool unpackSplat(uvec4 record, out Splat s) {
-  s.pixel = uintBitsToFloat(record.xy);
-  s.distance = uintBitsToFloat(record.z);
-  s.age = float(record.w & 1023u) / 1023.0;
-  s.toEye = fromOctahedral(vec2(uvec2(record.w >> 10, record.w >> 21) & 2047u) / 2047.0 * 2.0 - 1.0);
+// A record's last word: the age and the direction to the eye.
+uint splatLook(vec3 center, float life, float lifetime) {
+  float age = clamp(1.0 - life / max(lifetime, 1e-6), 0.0, 1.0);
+  uvec2 direction = uvec2(round((octahedral(view.eye.xyz - center) * 0.5 + 0.5) * 2047.0));
+  return uint(round(age * 1023.0)) | direction.x << 10 | direction.y << 21;
+}
+
+bool makeSplatRecord(vec4 positionLife, vec4 velocityKind, out uvec4 record) {
+  uvec3 where;
+  if (!splatCentre(positionLife.xyz, where)) return false;
+  record = uvec4(where, splatLook(positionLife.xyz, positionLife.w, velocityKind.w));
+  return true;
+}
+
+// Where a splat is, from its record's first three words: its centre and
+// radius in pixels and the pixels it may cover. False when it shows nowhere
+// in this view.
+bool splatBounds(uvec3 where, out Splat s) {
+  s.pixel = uintBitsToFloat(where.xy);
+  s.distance = uintBitsToFloat(where.z);
   vec2 size = view.viewport.zw;
   float radius = 0.5 * look.params.x;
   s.radius = min(radius * vec2(view.projection[0][0], view.projection[1][1]) * 0.5 * size / s.distance, vec2(kMaxRadius));
   if (s.pixel.x + s.radius.x < 0.0 || s.pixel.y + s.radius.y < 0.0 || s.pixel.x - s.radius.x > size.x ||
       s.pixel.y - s.radius.y > size.y)
     return false;
+  s.lo = max(ivec2(floor(s.pixel - s.radius)), ivec2(0));
+  s.hi = min(ivec2(ceil(s.pixel + s.radius)), ivec2(size) - 1);
+  return s.lo.x <= s.hi.x && s.lo.y <= s.hi.y;
+}
+
+// The whole splat from its record. False when it shows nowhere in this view.
+bool unpackSplat(uvec4 record, out Splat s) {
+  if (!splatBounds(record.xyz, s)) return false;
+  s.age = float(record.w & 1023u) / 1023.0;
+  s.toEye = fromOctahedral(vec2(uvec2(record.w >> 10, record.w >> 21) & 2047u) / 2047.0 * 2.0 - 1.0);
   // The billboard's frame, as particle_render.geom builds it.
   vec3 worldUp = abs(s.toEye.z) < 0.999 ? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
   s.right = normalize(cross(worldUp, s.toEye));
   s.up = cross(s.toEye, s.right);
   s.opacity = mix(look.colorBirth.a, look.colorDeath.a, s.age);
-  s.lo = max(ivec2(floor(s.pixel - s.radius)), ivec2(0));
-  s.hi = min(ivec2(ceil(s.pixel + s.radius)), ivec2(size) - 1);
-  return s.lo.x <= s.hi.x && s.lo.y <= s.hi.y;
+  return true;
 }
 
 // False when the particle shows nowhere in this view.
 bool makeSplat(vec4 positionLife, vec4 velocityKind, out Splat s) {
   uvec4 record;
   return makeSplatRecord(positionLife, velocityKind, record) && unpackSplat(record, s);
+}
+
+// The pixels of row y (between lo.x and hi.x) whose centres may lie inside the
+// splat's ellipse: the loops visit only these (splatAt still tests each;
+// a pixel at the very rim, where the puff is transparent, may be skipped).
+ivec2 splatRow(Splat s, int y) {
+  float dy = (float(y) + 0.5 - s.pixel.y) / s.radius.y;
+  float halfWidth = sqrt(max(1.0 - dy * dy, 0.0)) * s.radius.x;
+  return ivec2(max(s.lo.x, int(ceil(s.pixel.x - halfWidth - 0.5))), min(s.hi.x, int(floor(s.pixel.x + halfWidth - 0.5))));
 }
 
 // What the splat adds to pixel p, as kSplatChannels fixed-point values
@@ -90,7 +117,29 @@ bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
   float fade = clamp((sceneDistance - s.distance) / max(look.params.y, 1e-4), 0.0, 1.0);
   float alpha = s.opacity * shape * fade;
   if (alpha < 1.0 / 512.0) return false;
-  vec3 normal = normalize(corner.x * s.right + corner.y * s.up + sqrt(1.0 - r2) * s.toEye);
+  // A unit vector: right, up and toEye are orthonormal.
+  vec3 normal = corner.x * s.right + corner.y * s.up + sqrt(1.0 - r2) * s.toEye;
+  v[0] = uint(alpha * kSplatScale + 0.5);
+  v[1] = uint(alpha * s.age * kSplatScale + 0.5);
+  v[2] = uint(-log(1.0 - min(alpha, 0.999)) * kSplatScale + 0.5);
+  ivec3 nn = ivec3(round(alpha * normal * kSplatScale));
+  v[3] = uint(nn.x);
+  v[4] = uint(nn.y);
+  v[5] = uint(nn.z);
+  return true;
+}
+
+bool splatAtNoTexture(Splat s, ivec2 p, out uint v[kSplatChannels]) {
+  vec2 corner = (vec2(p) + 0.5 - s.pixel) / s.radius;
+  float r2 = dot(corner, corner);
+  if (r2 > 1.0) return false;
+  float shape = 1.0 - r2;
+  float sceneDistance = 1e9;
+  float fade = clamp((sceneDistance - s.distance) / max(look.params.y, 1e-4), 0.0, 1.0);
+  float alpha = s.opacity * shape * fade;
+  if (alpha < 1.0 / 512.0) return false;
+  // A unit vector: right, up and toEye are orthonormal.
+  vec3 normal = corner.x * s.right + corner.y * s.up + sqrt(1.0 - r2) * s.toEye;
   v[0] = uint(alpha * kSplatScale + 0.5);
   v[1] = uint(alpha * s.age * kSplatScale + 0.5);
   v[2] = uint(-log(1.0 - min(alpha, 0.999)) * kSplatScale + 0.5);

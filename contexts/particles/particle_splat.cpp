@@ -78,7 +78,17 @@ ParticleSplat::ParticleSplat()
   if (tiled_) {
     bin_.emplace(std::vector<std::string>{"splat_bin.comp"});
     scan_.emplace(std::vector<std::string>{"splat_scan.comp"});
-    tile_.emplace(std::vector<std::string>{"splat_tile.comp"});
+    std::vector<std::string> defs;
+    if (const char* e = std::getenv("SANDSTORM_SPLAT_EXPERIMENT")) {
+      std::string s = e;
+      for (std::size_t a = 0; a < s.size();) {
+        std::size_t b = s.find(',', a);
+        if (b == std::string::npos) b = s.size();
+        defs.push_back(s.substr(a, b - a));
+        a = b + 1;
+      }
+    }
+    tile_.emplace(std::vector<std::string>{"splat_tile.comp"}, defs);
   }
 }
 
