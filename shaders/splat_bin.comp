@@ -51,6 +51,7 @@ void main() {
     uvec3 where;
     Splat s;
     if (!splatCentre(pl.xyz, where) || !splatBounds(where, s)) continue;
+    uvec4 record = uvec4(where, uScatter ? splatLook(pl.xyz, pl.w, velocityKind[i].w) : 0u);
     ivec2 t0 = s.lo / kSplatTile, t1 = s.hi / kSplatTile;
     for (int ty = t0.y; ty <= t1.y; ++ty)
       for (int tx = t0.x; tx <= t1.x; ++tx) {
@@ -58,7 +59,6 @@ void main() {
         uint place = atomicAdd(sBins[tile], 1u);
         if (!uScatter) continue;
         uint slot = tileStart[tile] + groupBase[group * tiles + tile] + place;
-        uvec4 record = uvec4(where, splatLook(pl.xyz, pl.w, velocityKind[i].w));
         if (slot < uListCapacity) {
           tileList[slot] = record;
         } else {

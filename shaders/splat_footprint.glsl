@@ -13,6 +13,7 @@ const float kMaxRadius = 15.5;
 struct Splat {
   vec2 pixel;     // window coordinates of the centre
   vec2 radius;    // pixels
+  vec2 invRadius; // 1 / radius
   vec3 right, up, toEye;
   float distance; // camera-space distance of the centre
   float opacity;
@@ -73,6 +74,7 @@ bool splatBounds(uvec3 where, out Splat s) {
   if (s.pixel.x + s.radius.x < 0.0 || s.pixel.y + s.radius.y < 0.0 || s.pixel.x - s.radius.x > size.x ||
       s.pixel.y - s.radius.y > size.y)
     return false;
+  s.invRadius = 1.0 / s.radius;
   s.lo = max(ivec2(floor(s.pixel - s.radius)), ivec2(0));
   s.hi = min(ivec2(ceil(s.pixel + s.radius)), ivec2(size) - 1);
   return s.lo.x <= s.hi.x && s.lo.y <= s.hi.y;
@@ -101,7 +103,7 @@ bool makeSplat(vec4 positionLife, vec4 velocityKind, out Splat s) {
 // splat's ellipse: the loops visit only these (splatAt still tests each;
 // a pixel at the very rim, where the puff is transparent, may be skipped).
 ivec2 splatRow(Splat s, int y) {
-  float dy = (float(y) + 0.5 - s.pixel.y) / s.radius.y;
+  float dy = (float(y) + 0.5 - s.pixel.y) * s.invRadius.y;
   float halfWidth = sqrt(max(1.0 - dy * dy, 0.0)) * s.radius.x;
   return ivec2(max(s.lo.x, int(ceil(s.pixel.x - halfWidth - 0.5))), min(s.hi.x, int(floor(s.pixel.x + halfWidth - 0.5))));
 }
@@ -109,7 +111,7 @@ ivec2 splatRow(Splat s, int y) {
 // What the splat adds to pixel p, as kSplatChannels fixed-point values
 // (splat_common.glsl); false where it adds nothing.
 bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
-  vec2 corner = (vec2(p) + 0.5 - s.pixel) / s.radius;
+  vec2 corner = (vec2(p) + 0.5 - s.pixel) * s.invRadius;
   float r2 = dot(corner, corner);
   if (r2 > 1.0) return false;
   float shape = textureLod(uSprite, 0.5 * corner + 0.5, 0.0).r;
@@ -130,7 +132,7 @@ bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
 }
 
 bool splatAtNoTexture(Splat s, ivec2 p, out uint v[kSplatChannels]) {
-  vec2 corner = (vec2(p) + 0.5 - s.pixel) / s.radius;
+  vec2 corner = (vec2(p) + 0.5 - s.pixel) * s.invRadius;
   float r2 = dot(corner, corner);
   if (r2 > 1.0) return false;
   float shape = 1.0 - r2;
