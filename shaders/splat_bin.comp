@@ -5,9 +5,8 @@
 // one global atomic a workgroup, not one a particle.
 //   count (uScatter false): adds the histogram to the tiles' counts; what
 //     each add returns is this workgroup's place in the tile's list (groupBase).
-//   scatter (uScatter true): counts again and writes each particle's splat
-//     record at tileStart + groupBase + its place in the workgroup's
-//     histogram. Where the list is full (it holds uListCapacity records, a
+//   scatter (uScatter true): counts again, from tileStart + groupBase, and
+//     writes each particle's splat record at the slot that gives. Where the list is full (it holds uListCapacity records, a
 //     few a particle) the particle adds its footprint in that tile to the sums
 //     itself, with global atomics: slower, the same integers.
 // One program for both, so both passes find exactly the same tiles.
@@ -42,7 +41,9 @@ void main() {
   uint lid = gl_LocalInvocationIndex;
   uint tiles = uint(uTiles.x * uTiles.y);
   uint group = gl_WorkGroupID.x;
-  for (uint t = lid; t < tiles; t += 256u) sBins[t] = 0u;
+  // Scatter: each tile's bin starts at this workgroup's first slot in the
+  // tile's list (entries of tiles it has no particles in are never used).
+  for (uint t = lid; t < tiles; t += 256u) sBins[t] = uScatter ? tileStart[t] + groupBase[group * tiles + t] : 0u;
   barrier();
   uint begin = group * args.perGroup, end = min(begin + args.perGroup, args.count);
   for (uint i = begin + lid; i < end; i += 256u) {
@@ -56,9 +57,8 @@ void main() {
     for (int ty = t0.y; ty <= t1.y; ++ty)
       for (int tx = t0.x; tx <= t1.x; ++tx) {
         uint tile = uint(ty * uTiles.x + tx);
-        uint place = atomicAdd(sBins[tile], 1u);
+        uint slot = atomicAdd(sBins[tile], 1u);
         if (!uScatter) continue;
-        uint slot = tileStart[tile] + groupBase[group * tiles + tile] + place;
         if (slot < uListCapacity) {
           tileList[slot] = record;
         } else {

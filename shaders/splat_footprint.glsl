@@ -131,27 +131,6 @@ bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
   return true;
 }
 
-bool splatAtNoTexture(Splat s, ivec2 p, out uint v[kSplatChannels]) {
-  vec2 corner = (vec2(p) + 0.5 - s.pixel) * s.invRadius;
-  float r2 = dot(corner, corner);
-  if (r2 > 1.0) return false;
-  float shape = 1.0 - r2;
-  float sceneDistance = 1e9;
-  float fade = clamp((sceneDistance - s.distance) / max(look.params.y, 1e-4), 0.0, 1.0);
-  float alpha = s.opacity * shape * fade;
-  if (alpha < 1.0 / 512.0) return false;
-  // A unit vector: right, up and toEye are orthonormal.
-  vec3 normal = corner.x * s.right + corner.y * s.up + sqrt(1.0 - r2) * s.toEye;
-  v[0] = uint(alpha * kSplatScale + 0.5);
-  v[1] = uint(alpha * s.age * kSplatScale + 0.5);
-  v[2] = uint(-log(1.0 - min(alpha, 0.999)) * kSplatScale + 0.5);
-  ivec3 nn = ivec3(round(alpha * normal * kSplatScale));
-  v[3] = uint(nn.x);
-  v[4] = uint(nn.y);
-  v[5] = uint(nn.z);
-  return true;
-}
-
 // The particle buffers' values from a pixel's sums: alpha is "over"'s,
 // 1 - prod(1 - alpha_i); colour and normal are alpha-weighted means times it.
 void resolveSplat(uint sums[kSplatChannels], out vec4 color, out vec4 normal) {

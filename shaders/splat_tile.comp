@@ -57,21 +57,9 @@ void main() {
       ivec2 row = splatRow(s, y);
       for (int x = max(a.x, row.x); x <= min(b.x, row.y); ++x) {
         uint v[kSplatChannels];
-#ifdef NO_TEXTURE
-        if (!splatAtNoTexture(s, ivec2(x, y), v)) continue;
-#else
         if (!splatAt(s, ivec2(x, y), v)) continue;
-#endif
         uint px = uint((y - origin.y) * kSplatTile + (x - origin.x));
-#if defined(NO_ATOMICS)
-        for (uint c = 0u; c < kSplatChannels; ++c) sSums[c][px] += v[c];
-#elif defined(FOUR)
-        for (uint c = 0u; c < 4u; ++c) atomicAdd(sSums[c][px], v[c]);
-#elif defined(TWO)
-        for (uint c = 0u; c < 2u; ++c) atomicAdd(sSums[c][px], v[c]);
-#else
         for (uint c = 0u; c < kSplatChannels; ++c) atomicAdd(sSums[c][px], v[c]);
-#endif
       }
     }
   }

@@ -62,6 +62,36 @@ std::size_t fromEnvironment(const char* name, std::size_t otherwise) {
 
 }  // namespace
 
+namespace {
+struct Prof {
+  GLuint q[8][8] = {};
+  double sum[8] = {};
+  int n = 0, used = 0;
+  bool on = std::getenv("SANDSTORM_SPLAT_PROFILE") != nullptr;
+};
+Prof prof;
+void mark(int k) {
+  if (!prof.on) return;
+  if (!prof.q[0][0]) for (auto& a : prof.q) glGenQueries(8, a);
+  glQueryCounter(prof.q[prof.n % 8][k], GL_TIMESTAMP);
+  prof.used = std::max(prof.used, k + 1);
+}
+void collect() {
+  if (!prof.on) return;
+  ++prof.n;
+  if (prof.n < 8) return;
+  auto& a = prof.q[prof.n % 8];
+  GLuint64 t[8];
+  for (int k = 0; k < prof.used; ++k) glGetQueryObjectui64v(a[k], GL_QUERY_RESULT, &t[k]);
+  for (int k = 0; k + 1 < prof.used; ++k) prof.sum[k] += (t[k + 1] - t[k]) * 1e-6;
+  if (prof.n % 16 == 0) {
+    std::fprintf(stderr, "splat profile (ms, mean of %d):", prof.n - 7);
+    for (int k = 0; k + 1 < prof.used; ++k) std::fprintf(stderr, " %.3f", prof.sum[k] / (prof.n - 7));
+    std::fprintf(stderr, "\n");
+  }
+}
+}  // namespace
+
 ParticleSplat::ParticleSplat()
     : tiled_(std::getenv("SANDSTORM_SPLAT") &&
              std::string_view(std::getenv("SANDSTORM_SPLAT")) == "tiled"),
@@ -121,16 +151,22 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
 
   const glm::ivec2 tiles((size.x + kTile - 1) / kTile, (size.y + kTile - 1) / kTile);
   // Views too large for the tiles' histogram (beyond 4K) take the atomic path.
-  if (tiled_ && std::size_t(tiles.x) * std::size_t(tiles.y) <= kMaxTiles)
+  if (tiled_ && std::size_t(tiles.x) * std::size_t(tiles.y) <= kMaxTiles) {
     addTiled(tiles, particles.capacity());
-  else
+  } else {
     addAtomic();
+  }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  mark(5);
   // Both variants leave the sums in the buffer; the resolve turns them into
-  // the particle buffers and zeroes them for the next view.
+  // the particle images and zeroes them for the next view.
   resolve_.use();
   glProgramUniform2i(resolve_.id(), 0, size.x, size.y);
   glDispatchCompute(GLuint((size.x + 15) / 16), GLuint((size.y + 15) / 16), 1);
+  if (tiled_) {
+    mark(6);
+    collect();
+  }
   // ParticlePost reads the images as textures.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                   GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
@@ -143,33 +179,6 @@ void ParticleSplat::addAtomic() const {
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
-namespace {
-struct Prof {
-  GLuint q[8][5] = {};
-  double sum[5] = {};
-  int n = 0;
-  bool on = std::getenv("SANDSTORM_SPLAT_PROFILE") != nullptr;
-};
-Prof prof;
-void mark(int k) {
-  if (!prof.on) return;
-  if (!prof.q[0][0]) for (auto& a : prof.q) glGenQueries(5, a);
-  glQueryCounter(prof.q[prof.n % 8][k], GL_TIMESTAMP);
-}
-void collect() {
-  if (!prof.on) return;
-  ++prof.n;
-  if (prof.n < 8) return;
-  auto& a = prof.q[prof.n % 8];
-  GLuint64 t[5];
-  for (int k = 0; k < 5; ++k) glGetQueryObjectui64v(a[k], GL_QUERY_RESULT, &t[k]);
-  for (int k = 0; k < 4; ++k) prof.sum[k] += (t[k + 1] - t[k]) * 1e-6;
-  if (prof.n % 16 == 0) {
-    std::fprintf(stderr, "splat profile (ms, mean of %d): count %.3f scan %.3f scatter %.3f tile %.3f\n", prof.n - 7,
-                 prof.sum[0] / (prof.n - 7), prof.sum[1] / (prof.n - 7), prof.sum[2] / (prof.n - 7), prof.sum[3] / (prof.n - 7));
-  }
-}
-}  // namespace
 
 void ParticleSplat::addTiled(glm::ivec2 tiles, std::size_t capacity) const {
   const std::size_t tileCount = std::size_t(tiles.x) * std::size_t(tiles.y);
@@ -229,7 +238,6 @@ void ParticleSplat::addTiled(glm::ivec2 tiles, std::size_t capacity) const {
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   mark(4);
-  collect();
 }
 
 }  // namespace sandstorm
