@@ -13,8 +13,8 @@ const uint kSplatChannels = 6u;
 const float kSplatScale = 4096.0;
 // The tiled pass: tiles of kSplatTile x kSplatTile pixels, at most
 // kSplatMaxTiles a view (a 4K view has 8160; a histogram of them fits in a
-// workgroup's shared memory); each tile's list is cut into chunks (of 4096
-// entries unless SANDSTORM_SPLAT_CHUNK says), one workgroup a chunk, so dense
+// workgroup's shared memory); each tile's list is cut into chunks (of 8192
+// records unless SANDSTORM_SPLAT_CHUNK says), one workgroup a chunk, so dense
 // tiles spread over many workgroups; at most kSplatMaxBinGroups workgroups
 // bin a view's particles.
 const int kSplatTile = 32;

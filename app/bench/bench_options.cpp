@@ -14,7 +14,7 @@ const char* kUsage = R"(sandstorm-bench: GPU particle benchmark (headless EGL)
   sandstorm-bench [--quick] [--json FILE] [--frames N] [--warmup N] [--size WxH]
                   [--sections verify,ceilings,update,render,walls] [--verify-particles N]
                   [--particles 1e4,1e5,...] [--backends tf-gs,compute]
-                  [--fields texture,equation] [--renderers billboards,points,splat,splat-tiled]
+                  [--fields texture,equation] [--renderers billboards,points,splat,splat-atomic]
                   [--billboard-limit N] [--walls 1,2,4,8] [--wall-particles N]
                   [--wall-sims per-wall,shared] [--wall-renderers billboards,splat]
                   [--wall-backend compute] [--particle-size M] [--memory-gib G]
@@ -122,7 +122,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       checkChoices(o.fields, {"texture", "equation"}, a);
     } else if (a == "--renderers") {
       o.renderers = split(v);
-      checkChoices(o.renderers, {"billboards", "points", "splat", "splat-tiled"}, a);
+      checkChoices(o.renderers, {"billboards", "points", "splat", "splat-atomic"}, a);
     } else if (a == "--verify-particles") {
       o.verifyParticles = count(v, a);
     } else if (a == "--billboard-limit") {
@@ -138,7 +138,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       checkChoices(o.wallSims, {"per-wall", "shared"}, a);
     } else if (a == "--wall-renderers") {
       o.wallRenderers = split(v);
-      checkChoices(o.wallRenderers, {"billboards", "points", "splat", "splat-tiled"}, a);
+      checkChoices(o.wallRenderers, {"billboards", "points", "splat", "splat-atomic"}, a);
     } else if (a == "--wall-backend") {
       o.wallBackend = v;
       checkChoices({v}, {"tf-gs", "compute"}, a);

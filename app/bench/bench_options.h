@@ -21,7 +21,7 @@ struct BenchOptions {
   std::vector<std::size_t> particles{10000, 100000, 1000000, 10000000, 30000000, 100000000};
   std::vector<std::string> backends{"tf-gs", "compute"};
   std::vector<std::string> fields{"texture", "equation"};
-  std::vector<std::string> renderers{"billboards", "points", "splat", "splat-tiled"};
+  std::vector<std::string> renderers{"billboards", "points", "splat", "splat-atomic"};
   std::size_t billboardLimit = 30000000;  // billboards beyond this many particles take too long
   std::vector<int> walls{1, 2, 4, 8};
   std::size_t wallParticles = 10000000;

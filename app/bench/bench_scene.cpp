@@ -27,7 +27,7 @@ ParticleState benchState(const SceneChoice& c) {
   e.rate = 0.0f;  // the packets carry the counts
   if (c.renderer == "points")
     s.render.mode = RenderMode::Points;
-  else if (c.renderer == "splat" || c.renderer == "splat-tiled")
+  else if (c.renderer == "splat" || c.renderer == "splat-atomic")
     s.render.mode = RenderMode::Splat;
   else if (c.renderer == "billboards")
     s.render.mode = RenderMode::Billboards;

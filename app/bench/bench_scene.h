@@ -18,7 +18,7 @@ namespace sandstorm::bench {
 struct SceneChoice {
   std::size_t particles = 0;
   std::string field = "texture";        // texture | equation
-  std::string renderer = "billboards";  // billboards | points | splat | splat-tiled
+  std::string renderer = "billboards";  // billboards | points | splat (tiled) | splat-atomic
   float particleSize = 0.045f;
   std::string integrator = "rk2";
   bool turnover =

@@ -242,8 +242,8 @@ class Bench {
 
   std::unique_ptr<ParticleSystem> makeSystem(const SceneChoice& c, const std::string& backend) {
     // ParticleSplat reads its variant when it is made.
-    if (c.renderer == "splat-tiled")
-      setenv("SANDSTORM_SPLAT", "tiled", 1);
+    if (c.renderer == "splat-atomic")
+      setenv("SANDSTORM_SPLAT", "atomic", 1);
     else
       unsetenv("SANDSTORM_SPLAT");
     auto system = std::make_unique<ParticleSystem>(

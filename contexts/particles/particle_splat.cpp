@@ -3,7 +3,6 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cstdlib>
 #include <string_view>
 
@@ -14,11 +13,11 @@
 namespace sandstorm {
 namespace {
 
-constexpr std::size_t kChannels = 8;           // kSplatStride of splat_common.glsl
-constexpr int kTile = 32;                      // kSplatTile
-constexpr std::size_t kMaxTiles = 8192;        // kSplatMaxTiles
-constexpr std::size_t kMaxBinGroups = 1024;    // kSplatMaxBinGroups
-constexpr std::size_t kRecordBytes = 16;      // a splat record (splat_footprint.glsl)
+constexpr std::size_t kChannels = 8;         // kSplatStride of splat_common.glsl
+constexpr int kTile = 32;                    // kSplatTile
+constexpr std::size_t kMaxTiles = 8192;      // kSplatMaxTiles
+constexpr std::size_t kMaxBinGroups = 1024;  // kSplatMaxBinGroups
+constexpr std::size_t kRecordBytes = 16;     // a splat record (splat_footprint.glsl)
 
 // Storage-buffer bindings of the splat shaders.
 enum Binding : GLuint {
@@ -62,42 +61,12 @@ std::size_t fromEnvironment(const char* name, std::size_t otherwise) {
 
 }  // namespace
 
-namespace {
-struct Prof {
-  GLuint q[8][8] = {};
-  double sum[8] = {};
-  int n = 0, used = 0;
-  bool on = std::getenv("SANDSTORM_SPLAT_PROFILE") != nullptr;
-};
-Prof prof;
-void mark(int k) {
-  if (!prof.on) return;
-  if (!prof.q[0][0]) for (auto& a : prof.q) glGenQueries(8, a);
-  glQueryCounter(prof.q[prof.n % 8][k], GL_TIMESTAMP);
-  prof.used = std::max(prof.used, k + 1);
-}
-void collect() {
-  if (!prof.on) return;
-  ++prof.n;
-  if (prof.n < 8) return;
-  auto& a = prof.q[prof.n % 8];
-  GLuint64 t[8];
-  for (int k = 0; k < prof.used; ++k) glGetQueryObjectui64v(a[k], GL_QUERY_RESULT, &t[k]);
-  for (int k = 0; k + 1 < prof.used; ++k) prof.sum[k] += (t[k + 1] - t[k]) * 1e-6;
-  if (prof.n % 16 == 0) {
-    std::fprintf(stderr, "splat profile (ms, mean of %d):", prof.n - 7);
-    for (int k = 0; k + 1 < prof.used; ++k) std::fprintf(stderr, " %.3f", prof.sum[k] / (prof.n - 7));
-    std::fprintf(stderr, "\n");
-  }
-}
-}  // namespace
-
 ParticleSplat::ParticleSplat()
-    : tiled_(std::getenv("SANDSTORM_SPLAT") &&
-             std::string_view(std::getenv("SANDSTORM_SPLAT")) == "tiled"),
-      // Records a chunk: a few thousand a workgroup; tiles with more spread
-      // over several. Tests make them small to put several in a tile.
-      chunk_(GLuint(fromEnvironment("SANDSTORM_SPLAT_CHUNK", 4096))),
+    : tiled_(!std::getenv("SANDSTORM_SPLAT") ||
+             std::string_view(std::getenv("SANDSTORM_SPLAT")) != "atomic"),
+      // Records a chunk: 16 an invocation; tiles with more spread over
+      // several workgroups. Tests make them small to put several in a tile.
+      chunk_(GLuint(fromEnvironment("SANDSTORM_SPLAT_CHUNK", 8192))),
       prepare_(std::vector<std::string>{"splat_prepare.comp"}),
       splat_(std::vector<std::string>{"particle_splat.comp"}),
       resolve_(std::vector<std::string>{"particle_splat_resolve.comp"}),
@@ -108,17 +77,7 @@ ParticleSplat::ParticleSplat()
   if (tiled_) {
     bin_.emplace(std::vector<std::string>{"splat_bin.comp"});
     scan_.emplace(std::vector<std::string>{"splat_scan.comp"});
-    std::vector<std::string> defs;
-    if (const char* e = std::getenv("SANDSTORM_SPLAT_EXPERIMENT")) {
-      std::string s = e;
-      for (std::size_t a = 0; a < s.size();) {
-        std::size_t b = s.find(',', a);
-        if (b == std::string::npos) b = s.size();
-        defs.push_back(s.substr(a, b - a));
-        a = b + 1;
-      }
-    }
-    tile_.emplace(std::vector<std::string>{"splat_tile.comp"}, defs);
+    tile_.emplace(std::vector<std::string>{"splat_tile.comp"});
   }
 }
 
@@ -157,16 +116,11 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
     addAtomic();
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  mark(5);
   // Both variants leave the sums in the buffer; the resolve turns them into
   // the particle images and zeroes them for the next view.
   resolve_.use();
   glProgramUniform2i(resolve_.id(), 0, size.x, size.y);
   glDispatchCompute(GLuint((size.x + 15) / 16), GLuint((size.y + 15) / 16), 1);
-  if (tiled_) {
-    mark(6);
-    collect();
-  }
   // ParticlePost reads the images as textures.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                   GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
@@ -178,7 +132,6 @@ void ParticleSplat::addAtomic() const {
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
-
 
 void ParticleSplat::addTiled(glm::ivec2 tiles, std::size_t capacity) const {
   const std::size_t tileCount = std::size_t(tiles.x) * std::size_t(tiles.y);
@@ -208,7 +161,6 @@ void ParticleSplat::addTiled(glm::ivec2 tiles, std::size_t capacity) const {
   // The binning dispatch size is the second uvec4 of the prepare pass's output.
   constexpr GLintptr kBinDispatch = 32;
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_.id());
-  mark(0);
   bin_->use();
   glProgramUniform2i(bin_->id(), 0, tiles.x, tiles.y);
   glProgramUniform1i(bin_->id(), 1, GL_FALSE);
@@ -216,20 +168,17 @@ void ParticleSplat::addTiled(glm::ivec2 tiles, std::size_t capacity) const {
   glDispatchComputeIndirect(kBinDispatch);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-  mark(1);
   scan_->use();
   glProgramUniform1ui(scan_->id(), 0, GLuint(tileCount));
   glProgramUniform1ui(scan_->id(), 1, chunk_);
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
-  mark(2);
   glProgramUniform1i(bin_->id(), 1, GL_TRUE);
   bin_->use();
   glDispatchComputeIndirect(kBinDispatch);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-  mark(3);
   tile_->use();
   glProgramUniform2i(tile_->id(), 0, tiles.x, tiles.y);
   glProgramUniform1ui(tile_->id(), 1, chunk_);
@@ -237,7 +186,6 @@ void ParticleSplat::addTiled(glm::ivec2 tiles, std::size_t capacity) const {
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, chunkDispatch_.id());
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
-  mark(4);
 }
 
 }  // namespace sandstorm

@@ -7,16 +7,19 @@
 // colour, soft depth test against the scene: shaders/splat_footprint.glsl) to
 // order-independent fixed-point sums per pixel, which a resolve turns into the
 // particle buffers. Two variants add the same integers, so give the same image:
-//   atomic (the default): one invocation a particle adds to the sums with
-//     global atomics (six a pixel);
-//   tiled: bin the particles by 32x32-pixel tile (a histogram per workgroup
-//     in shared memory, a prefix sum, a scatter of indices), cut each tile's
-//     list into chunks of at most 4096, and let one workgroup a chunk add its
-//     particles in shared memory, then add the tile's sums to the buffer: a
-//     global atomic a pixel and chunk. Chunks keep dense tiles spread over
-//     many workgroups. Views beyond 4K (8192 tiles) take the atomic path.
-// SANDSTORM_SPLAT=tiled picks the second (for the benchmark);
-// SANDSTORM_SPLAT_CHUNK sets its chunk size. The result
+//   tiled (the default): bin the particles by 32x32-pixel tile (each
+//     workgroup counts a range of particles in a histogram of all tiles in
+//     shared memory; a prefix sum; a scatter of 16-byte splat records), cut
+//     each tile's list into chunks of at most 8192 records, and let one
+//     workgroup a chunk add them in shared memory, then add the tile's sums
+//     to the buffer: a plain store where a tile has one chunk, a global atomic
+//     a pixel where it has several. Chunks spread dense tiles over many
+//     workgroups. Views beyond 4K (8192 tiles) take the atomic path.
+//   atomic: one invocation a particle adds to the sums with global atomics
+//     (six a pixel): simple, and 6x slower on an H200 at 10^7 particles.
+// SANDSTORM_SPLAT=atomic picks the second (benchmark and tests);
+// SANDSTORM_SPLAT_CHUNK and SANDSTORM_SPLAT_LIST set the chunk size and the
+// records the lists hold (tests make both small). The result
 // matches blending "over" exactly in alpha and, where overlapping particles
 // share a colour, in colour (tests/contexts/particle_splat_test.cpp states the
 // image tolerance). Particles wider than 31 pixels are drawn 31 pixels wide:
@@ -58,7 +61,8 @@ class ParticleSplat {
   gl::Buffer dispatch_, chunkDispatch_;
   mutable gl::Buffer accumulation_;  // the sums
   mutable std::size_t pixels_ = 0;
-  mutable gl::Buffer tileCounts_, tileStarts_, chunkStarts_, groupBase_, tileLists_;  // tiled: the bins
+  mutable gl::Buffer tileCounts_, tileStarts_, chunkStarts_, groupBase_,
+      tileLists_;  // tiled: the bins
   mutable std::size_t tiles_ = 0, listCapacity_ = 0;
 };
 
