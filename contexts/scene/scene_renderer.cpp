@@ -9,7 +9,7 @@
 namespace sandstorm {
 
 SceneRenderer::SceneRenderer()
-    : sky_(std::vector<std::string>{"fullscreen.vert", "sky.frag"}),
+    : sky_(std::vector<std::string>{"fullscreen.vert", "sky.frag"}, {"FAR_PLANE"}),
       terrain_(std::vector<std::string>{"terrain.vert", "terrain.frag"}),
       lines_(std::vector<std::string>{"lines.vert", "lines.frag"}),
       mesh_(std::vector<std::string>{"mesh.vert", "mesh.frag"}),
@@ -115,12 +115,6 @@ void SceneRenderer::setFieldBox(std::optional<Box> bounds, const FieldPlacement&
 
 void SceneRenderer::draw() const {
   glDisable(GL_BLEND);
-  glDisable(GL_DEPTH_TEST);
-  glDepthMask(GL_FALSE);
-  sky_.use();
-  glBindVertexArray(emptyVao_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
@@ -170,6 +164,16 @@ void SceneRenderer::draw() const {
     glBindVertexArray(boxVao_.id());
     glDrawArrays(GL_LINES, 0, 24);
   }
+
+  // The sky last, on the far plane, where nothing else is: each pixel is
+  // shaded once (fill rate is what a datacenter GPU's raster pipeline lacks).
+  glDepthFunc(GL_LEQUAL);
+  glDepthMask(GL_FALSE);
+  sky_.use();
+  glBindVertexArray(emptyVao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glDepthFunc(GL_LESS);
+  glDepthMask(GL_TRUE);
   glBindVertexArray(0);
 }
 
