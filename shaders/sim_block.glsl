@@ -32,9 +32,16 @@ layout(std140, binding = 0) uniform SimBlock {
   EmitterBlock emitters[kMaxEmitters];
 } sim;
 
+// The field's grid (GpuField): FIELD_BUFFER programs (the compute backend)
+// read it from storage buffers, the others from textures.
+#ifdef FIELD_BUFFER
+layout(std430, binding = 14) readonly restrict buffer FieldGrid { vec4 fieldGrid[]; };  // xyz, x fastest
+layout(std430, binding = 15) readonly restrict buffer FieldGridNext { vec4 fieldGridNext[]; };
+#else
 layout(binding = 0) uniform sampler3D uField;      // RGB32F, read with texelFetch only
-layout(binding = 1) uniform sampler2D uTerrain;    // R32F heights
 layout(binding = 2) uniform sampler3D uFieldNext;  // a time-varying field's next frame
+#endif
+layout(binding = 1) uniform sampler2D uTerrain;    // R32F heights
 
 struct Particle {
   vec4 positionLife;

@@ -46,8 +46,8 @@ std::uint32_t spinLimit() {
   return software ? 64u : 1u << 20;
 }
 
-std::vector<std::string> itemDefines() {
-  return {concat("ITEMS ", ParticleComputeUpdate::itemsPerInvocation())};
+std::string itemsDefine() {
+  return concat("ITEMS ", ParticleComputeUpdate::itemsPerInvocation());
 }
 
 }  // namespace
@@ -63,9 +63,11 @@ ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity)
       control_(gl::createBuffer()),
       simBlock_(gl::createBuffer()),
       history_(gl::createBuffer()),
-      prepareProgram_(std::vector<std::string>{"particle_prepare.comp"}, itemDefines()),
+      prepareProgram_(std::vector<std::string>{"particle_prepare.comp"}, {itemsDefine()}),
       emitProgram_(std::vector<std::string>{"particle_emit.comp"}),
-      updateProgram_(std::vector<std::string>{"particle_update.comp"}, itemDefines()),
+      // The field's grid is a storage buffer (environment_).
+      updateProgram_(std::vector<std::string>{"particle_update.comp"},
+                     {itemsDefine(), "FIELD_BUFFER"}),
       spinLimit_(spinLimit()),
       tile_(256u * std::uint32_t(itemsPerInvocation())) {
   if (capacity == 0 || capacity > (std::size_t{1} << 31) / kRecord)
@@ -184,7 +186,7 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   const bool equation = environment_.bind(state);
   if (equation && !updateEquationProgram_)
     updateEquationProgram_ = std::make_unique<gl::Program>(
-        gl::ProgramDesc{{"particle_update.comp"}, {"FIELD_EQUATION", itemDefines()[0]}, {}});
+        gl::ProgramDesc{{"particle_update.comp"}, {"FIELD_EQUATION", itemsDefine()}, {}});
   const gl::Program& update = equation ? *updateEquationProgram_ : updateProgram_;
 
   const BufferSet& in = sets_[std::size_t(current_)];

@@ -89,7 +89,7 @@ class ParticleComputeUpdate final : public ParticleBackend {
   std::uint32_t spinLimit_;
   std::uint32_t tile_;  // records per tile
 
-  ParticleEnvironment environment_;
+  ParticleEnvironment environment_{GpuField::Storage::Buffer};
 
   EmissionBudget budget_;
   std::uint64_t updates_ = 0;

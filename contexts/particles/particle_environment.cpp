@@ -11,9 +11,9 @@ void ParticleEnvironment::setField(std::shared_ptr<const VectorField> field,
       (field->dims() != next->dims() || field->bounds().min != next->bounds().min ||
        field->bounds().max != next->bounds().max))
     throw Error("a time-varying field's frames must share one grid");
-  if (field && field == nextFieldTexture_.holds()) std::swap(fieldTexture_, nextFieldTexture_);
-  fieldTexture_.show(field);
-  nextFieldTexture_.show(next);
+  if (field && field == nextFieldGrid_.holds()) std::swap(fieldGrid_, nextFieldGrid_);
+  fieldGrid_.show(field);
+  nextFieldGrid_.show(next);
   field_ = std::move(field);
   nextField_ = std::move(next);
   placement_ = placement;
@@ -32,8 +32,8 @@ void ParticleEnvironment::describe(SimBlockInputs& inputs) const {
 }
 
 bool ParticleEnvironment::bind(const ParticleState& state) const {
-  if (field_) fieldTexture_.bind(0);
-  if (nextField_) nextFieldTexture_.bind(2);
+  if (field_) fieldGrid_.bind(GpuField::Slot::Current);
+  if (nextField_) nextFieldGrid_.bind(GpuField::Slot::Next);
   if (terrain_) terrainTexture_.bind(1);
   return equation_.bindIfUsed(state);
 }

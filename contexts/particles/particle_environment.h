@@ -6,7 +6,7 @@
 #include <memory>
 
 #include "contexts/particles/field_equation_buffer.h"
-#include "contexts/particles/field_texture.h"
+#include "contexts/particles/gpu_field.h"
 #include "contexts/particles/sim_block.h"
 #include "core/field/field_placement.h"
 
@@ -14,6 +14,11 @@ namespace sandstorm {
 
 class ParticleEnvironment {
  public:
+  // `storage`: how the field's grid is kept (GpuField), which decides how the
+  // backend's shaders read it (FIELD_BUFFER in shaders/particle_physics.glsl).
+  explicit ParticleEnvironment(GpuField::Storage storage)
+      : fieldGrid_(storage), nextFieldGrid_(storage) {}
+
   // Throws Error when `next` has another grid than `field`. A frame already on
   // the GPU is not uploaded again (a sequence steps A,B -> B,C).
   void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
@@ -25,19 +30,17 @@ class ParticleEnvironment {
 
   // The environment's part of an update's inputs.
   void describe(SimBlockInputs& inputs) const;
-  // Binds the textures (units 0: field, 1: terrain, 2: next frame) and, when
-  // state.field.mode asks for it, the equation; returns whether it did.
+  // Binds the field's grids (GpuField::bind), the terrain (texture unit 1)
+  // and, when state.field.mode asks for it, the equation; returns whether it did.
   bool bind(const ParticleState& state) const;
 
-  double lastUploadMs() const {
-    return fieldTexture_.lastUploadMs() + nextFieldTexture_.lastUploadMs();
-  }
+  double lastUploadMs() const { return fieldGrid_.lastUploadMs() + nextFieldGrid_.lastUploadMs(); }
 
  private:
   std::shared_ptr<const VectorField> field_, nextField_;
   FieldPlacement placement_;
   std::shared_ptr<const HeightMap> terrain_;
-  FieldTexture fieldTexture_, nextFieldTexture_;
+  GpuField fieldGrid_, nextFieldGrid_;
   TerrainTexture terrainTexture_;
   FieldEquationBuffer equation_;
 };

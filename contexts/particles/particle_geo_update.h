@@ -85,7 +85,7 @@ class ParticleGeoUpdate final : public ParticleBackend {
   gl::Program updateProgram_, emitProgram_;
   std::unique_ptr<gl::Program> updateEquationProgram_;  // FIELD_EQUATION, made on first use
 
-  ParticleEnvironment environment_;
+  ParticleEnvironment environment_{GpuField::Storage::Texture};
 
   EmissionBudget budget_;
   std::uint64_t updates_ = 0;

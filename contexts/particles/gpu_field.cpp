@@ -1,22 +1,33 @@
-#include "contexts/particles/field_texture.h"
+#include "contexts/particles/gpu_field.h"
 
 #include <epoxy/gl.h>
 
 #include <chrono>
 #include <cstdlib>
 #include <string_view>
+#include <vector>
 
 #include "core/util/error.h"
 
 namespace sandstorm {
 
-void FieldTexture::upload(const VectorField& field) {
+void GpuField::upload(const VectorField& field) {
   const auto start = std::chrono::steady_clock::now();
+  if (storage_ == Storage::Texture)
+    uploadTexture(field);
+  else
+    uploadBuffer(field);
+  dims_ = field.dims();
+  lastUploadMs_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+void GpuField::uploadTexture(const VectorField& field) {
   GLint maxSize = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
   const glm::ivec3 d = field.dims();
   if (d.x > maxSize || d.y > maxSize || d.z > maxSize)
-    throw Error(concat("FieldTexture: a ", d.x, "x", d.y, "x", d.z, " field exceeds this GPU's 3D ",
+    throw Error(concat("GpuField: a ", d.x, "x", d.y, "x", d.z, " field exceeds this GPU's 3D ",
                        "texture limit of ", maxSize, " per axis; resample it to a coarser grid"));
   if (!texture_ || dims_ != d) {
     texture_ = gl::createTexture(GL_TEXTURE_3D);
@@ -29,23 +40,44 @@ void FieldTexture::upload(const VectorField& field) {
     glTextureStorage3D(texture_.id(), 1, internal, d.x, d.y, d.z);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    dims_ = d;
   }
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTextureSubImage3D(texture_.id(), 0, 0, 0, 0, d.x, d.y, d.z, GL_RGB, GL_FLOAT,
                       field.values().data());
-  lastUploadMs_ =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
 
-void FieldTexture::show(std::shared_ptr<const VectorField> field) {
+void GpuField::uploadBuffer(const VectorField& field) {
+  const std::span<const glm::vec3> values = field.values();
+  std::vector<glm::vec4> padded(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i)
+    padded[i] = glm::vec4(values[i], 0.0f);
+  const GLsizeiptr bytes = GLsizeiptr(padded.size() * sizeof(glm::vec4));
+  if (!buffer_ || dims_ != field.dims()) {
+    buffer_ = gl::createBuffer();
+    glGetError();
+    glNamedBufferStorage(buffer_.id(), bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    if (glGetError() != GL_NO_ERROR) {
+      buffer_ = {};
+      const glm::ivec3 d = field.dims();
+      throw Error(concat("GpuField: no GPU memory for a ", d.x, "x", d.y, "x", d.z, " field (",
+                         bytes, " bytes); resample it to a coarser grid"));
+    }
+  }
+  glNamedBufferSubData(buffer_.id(), 0, bytes, padded.data());
+}
+
+void GpuField::show(std::shared_ptr<const VectorField> field) {
   if (!field || field == holds_) return;
   upload(*field);
   holds_ = std::move(field);
 }
 
-void FieldTexture::bind(int unit) const {
-  glBindTextureUnit(GLuint(unit), texture_.id());
+void GpuField::bind(Slot slot) const {
+  const bool current = slot == Slot::Current;
+  if (storage_ == Storage::Texture)
+    glBindTextureUnit(current ? 0 : 2, texture_.id());
+  else
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, current ? 14 : 15, buffer_.id());
 }
 
 void TerrainTexture::upload(const HeightMap& terrain) {

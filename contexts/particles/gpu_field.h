@@ -1,0 +1,61 @@
+// GpuField: a VectorField's grid on the GPU, in one of two storages, and
+// TerrainTexture: a HeightMap as an R32F 2D texture. Shaders read both
+// without the sampler's filter and interpolate themselves
+// (shaders/particle_physics.glsl), so the GPU agrees with the CPU bit for bit.
+//   Texture: an RGB32F 3D texture read with texelFetch (thesis 5.2); the
+//     transform-feedback backend's.
+//   Buffer: a shader storage buffer of vec4 (xyz, padding), x fastest; the
+//     compute backend's: on an H200 its eight loads a sample made the update
+//     12% (RK2) to 23% (RK4) faster than eight texelFetch (docs/PERFORMANCE.md).
+#pragma once
+
+#include <memory>
+
+#include "contexts/gl/objects.h"
+#include "core/field/height_map.h"
+#include "core/field/vector_field.h"
+
+namespace sandstorm {
+
+class GpuField {
+ public:
+  enum class Storage { Texture, Buffer };
+  // Where a field is bound: the current frame or a time-varying field's next.
+  enum class Slot { Current, Next };
+
+  explicit GpuField(Storage storage) : storage_(storage) {}
+
+  // Uploads; throws Error when the grid exceeds what this GPU holds in the
+  // storage (GL_MAX_3D_TEXTURE_SIZE; memory). Re-uploading a field of the
+  // same dimensions reuses the texture or buffer.
+  void upload(const VectorField& field);
+  // Uploads unless this already holds that very field.
+  void show(std::shared_ptr<const VectorField> field);
+  const std::shared_ptr<const VectorField>& holds() const { return holds_; }
+  // Texture: units 0 (current) and 2 (next); buffer: storage-buffer bindings
+  // 14 and 15 (shaders/sim_block.glsl).
+  void bind(Slot slot) const;
+  double lastUploadMs() const { return lastUploadMs_; }
+
+ private:
+  void uploadTexture(const VectorField& field);
+  void uploadBuffer(const VectorField& field);
+
+  Storage storage_;
+  gl::Texture texture_;
+  gl::Buffer buffer_;
+  std::shared_ptr<const VectorField> holds_;
+  glm::ivec3 dims_{0};
+  double lastUploadMs_ = 0.0;
+};
+
+class TerrainTexture {
+ public:
+  void upload(const HeightMap& terrain);
+  void bind(int unit) const;
+
+ private:
+  gl::Texture texture_;
+};
+
+}  // namespace sandstorm
