@@ -13,6 +13,13 @@ namespace sandstorm {
 
 void GpuField::upload(const VectorField& field) {
   const auto start = std::chrono::steady_clock::now();
+  const Storage storage =
+      preferred() == Storage::Buffer && fitsBuffer(field) ? Storage::Buffer : Storage::Texture;
+  if (storage != storage_) {
+    texture_ = {};
+    buffer_ = {};
+    storage_ = storage;
+  }
   if (storage_ == Storage::Texture)
     uploadTexture(field);
   else
@@ -44,6 +51,20 @@ void GpuField::uploadTexture(const VectorField& field) {
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glTextureSubImage3D(texture_.id(), 0, 0, 0, 0, d.x, d.y, d.z, GL_RGB, GL_FLOAT,
                       field.values().data());
+}
+
+GpuField::Storage GpuField::preferred() const {
+  const char* text = std::getenv("SANDSTORM_FIELD_STORAGE");
+  if (!text) return preferred_;
+  if (std::string_view(text) == "texture") return Storage::Texture;
+  throw Error(
+      concat("SANDSTORM_FIELD_STORAGE: '", text, "': expected texture (or leave it unset)"));
+}
+
+bool GpuField::fitsBuffer(const VectorField& field) {
+  GLint64 maxBlock = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+  return GLint64(field.values().size() * sizeof(glm::vec4)) <= maxBlock;
 }
 
 void GpuField::uploadBuffer(const VectorField& field) {

@@ -4,9 +4,13 @@
 // (shaders/particle_physics.glsl), so the GPU agrees with the CPU bit for bit.
 //   Texture: an RGB32F 3D texture read with texelFetch (thesis 5.2); the
 //     transform-feedback backend's.
-//   Buffer: a shader storage buffer of vec4 (xyz, padding), x fastest; the
-//     compute backend's: on an H200 its eight loads a sample made the update
-//     12% (RK2) to 23% (RK4) faster than eight texelFetch (docs/PERFORMANCE.md).
+//   Buffer: a shader storage buffer of vec4 (xyz, padding), x fastest; what
+//     the compute backend prefers: on an H200 its eight loads a sample made
+//     the update 12% (RK2) to 23% (RK4) faster than eight texelFetch
+//     (docs/PERFORMANCE.md). A grid larger than the GPU's storage-buffer
+//     limit (GL_MAX_SHADER_STORAGE_BLOCK_SIZE: 128 MiB on llvmpipe) is kept
+//     as a texture instead; storage() says which. SANDSTORM_FIELD_STORAGE=
+//     texture makes every grid take that fallback (tests, comparisons).
 #pragma once
 
 #include <memory>
@@ -23,25 +27,29 @@ class GpuField {
   // Where a field is bound: the current frame or a time-varying field's next.
   enum class Slot { Current, Next };
 
-  explicit GpuField(Storage storage) : storage_(storage) {}
+  explicit GpuField(Storage preferred) : preferred_(preferred), storage_(preferred) {}
 
-  // Uploads; throws Error when the grid exceeds what this GPU holds in the
-  // storage (GL_MAX_3D_TEXTURE_SIZE; memory). Re-uploading a field of the
-  // same dimensions reuses the texture or buffer.
+  // Uploads; throws Error when the grid exceeds what this GPU holds
+  // (GL_MAX_3D_TEXTURE_SIZE; memory). Re-uploading a field of the same
+  // dimensions reuses the texture or buffer.
   void upload(const VectorField& field);
   // Uploads unless this already holds that very field.
   void show(std::shared_ptr<const VectorField> field);
   const std::shared_ptr<const VectorField>& holds() const { return holds_; }
+  // How the field last uploaded is kept.
+  Storage storage() const { return storage_; }
   // Texture: units 0 (current) and 2 (next); buffer: storage-buffer bindings
   // 14 and 15 (shaders/sim_block.glsl).
   void bind(Slot slot) const;
   double lastUploadMs() const { return lastUploadMs_; }
 
  private:
+  Storage preferred() const;
+  static bool fitsBuffer(const VectorField& field);
   void uploadTexture(const VectorField& field);
   void uploadBuffer(const VectorField& field);
 
-  Storage storage_;
+  Storage preferred_, storage_;
   gl::Texture texture_;
   gl::Buffer buffer_;
   std::shared_ptr<const VectorField> holds_;

@@ -187,7 +187,13 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   if (equation && !updateEquationProgram_)
     updateEquationProgram_ = std::make_unique<gl::Program>(
         gl::ProgramDesc{{"particle_update.comp"}, {"FIELD_EQUATION", itemsDefine()}, {}});
-  const gl::Program& update = equation ? *updateEquationProgram_ : updateProgram_;
+  const bool texture = environment_.gridStorage() == GpuField::Storage::Texture;
+  if (!equation && texture && !updateTextureProgram_)
+    updateTextureProgram_ = std::make_unique<gl::Program>(
+        gl::ProgramDesc{{"particle_update.comp"}, {itemsDefine()}, {}});
+  const gl::Program& update = equation  ? *updateEquationProgram_
+                              : texture ? *updateTextureProgram_
+                                        : updateProgram_;
 
   const BufferSet& in = sets_[std::size_t(current_)];
   const BufferSet& out = sets_[std::size_t(1 - current_)];

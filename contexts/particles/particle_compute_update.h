@@ -86,6 +86,7 @@ class ParticleComputeUpdate final : public ParticleBackend {
   std::array<gl::Sync, kHistory> historyFence_;
   gl::Program prepareProgram_, emitProgram_, updateProgram_;
   std::unique_ptr<gl::Program> updateEquationProgram_;  // FIELD_EQUATION, made on first use
+  std::unique_ptr<gl::Program> updateTextureProgram_;   // grids too large for a buffer, ditto
   std::uint32_t spinLimit_;
   std::uint32_t tile_;  // records per tile
 

@@ -14,8 +14,9 @@ namespace sandstorm {
 
 class ParticleEnvironment {
  public:
-  // `storage`: how the field's grid is kept (GpuField), which decides how the
-  // backend's shaders read it (FIELD_BUFFER in shaders/particle_physics.glsl).
+  // `storage`: how the field's grid is kept if it can be (GpuField); the
+  // backend's shaders read it as gridStorage() says (FIELD_BUFFER in
+  // shaders/particle_physics.glsl).
   explicit ParticleEnvironment(GpuField::Storage storage)
       : fieldGrid_(storage), nextFieldGrid_(storage) {}
 
@@ -33,6 +34,10 @@ class ParticleEnvironment {
   // Binds the field's grids (GpuField::bind), the terrain (texture unit 1)
   // and, when state.field.mode asks for it, the equation; returns whether it did.
   bool bind(const ParticleState& state) const;
+
+  // How the field's grid is kept (both frames of a time-varying field share a
+  // grid, so a storage).
+  GpuField::Storage gridStorage() const { return fieldGrid_.storage(); }
 
   double lastUploadMs() const { return fieldGrid_.lastUploadMs() + nextFieldGrid_.lastUploadMs(); }
 

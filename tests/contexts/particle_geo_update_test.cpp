@@ -158,6 +158,19 @@ TEST_P(ParticleBackendTest, TimeVaryingFieldsBlendTheSameOnBothSides) {
   std::printf("time-varying: max |gpu - cpu| = %g over %zu frames\n", a.maxError, a.frames);
 }
 
+TEST_P(ParticleBackendTest, GridsKeptAsTexturesMoveParticlesTheSame) {
+  // The compute backend's texture fallback for grids beyond the
+  // storage-buffer limit (GpuField), forced; transform feedback keeps its
+  // texture either way.
+  setenv("SANDSTORM_FIELD_STORAGE", "texture", 1);
+  const Agreement a = compare(
+      GetParam(), tornado(MotionModel::Tracer, Integrator::RK4, BoundaryMode::Clamp), 60, 16384);
+  unsetenv("SANDSTORM_FIELD_STORAGE");
+  EXPECT_EQ(a.frames, 60u);
+  EXPECT_LT(a.maxError, 1e-4f);
+  EXPECT_GT(a.peak, 4000u);
+}
+
 TEST_P(ParticleBackendTest, MaximumCapsTheLiveCountAndCapacityTheBuffer) {
   Scenario s = tornado(MotionModel::Tracer, Integrator::Euler, BoundaryMode::Clamp);
   s.state.emitters[0].lifetime = 100.0f;
