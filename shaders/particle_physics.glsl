@@ -54,26 +54,22 @@ vec3 fieldSample(bool next, vec3 p) {
                    fieldGrid[b + d.y + d.z].xyz, fieldGrid[b + d.x + d.y + d.z].xyz);
 }
 #else
+vec3 gridSample(sampler3D field, Cell c) {
+  ivec3 i0 = c.i0, i1 = c.i1;
+  return trilinear(c.f, texelFetch(field, ivec3(i0.x, i0.y, i0.z), 0).xyz,
+                   texelFetch(field, ivec3(i1.x, i0.y, i0.z), 0).xyz,
+                   texelFetch(field, ivec3(i0.x, i1.y, i0.z), 0).xyz,
+                   texelFetch(field, ivec3(i1.x, i1.y, i0.z), 0).xyz,
+                   texelFetch(field, ivec3(i0.x, i0.y, i1.z), 0).xyz,
+                   texelFetch(field, ivec3(i1.x, i0.y, i1.z), 0).xyz,
+                   texelFetch(field, ivec3(i0.x, i1.y, i1.z), 0).xyz,
+                   texelFetch(field, ivec3(i1.x, i1.y, i1.z), 0).xyz);
+}
+
 vec3 fieldSample(bool next, vec3 p) {
   Cell c = fieldCell(p);
-  ivec3 i0 = c.i0, i1 = c.i1;
-  if (next)
-    return trilinear(c.f, texelFetch(uFieldNext, ivec3(i0.x, i0.y, i0.z), 0).xyz,
-                     texelFetch(uFieldNext, ivec3(i1.x, i0.y, i0.z), 0).xyz,
-                     texelFetch(uFieldNext, ivec3(i0.x, i1.y, i0.z), 0).xyz,
-                     texelFetch(uFieldNext, ivec3(i1.x, i1.y, i0.z), 0).xyz,
-                     texelFetch(uFieldNext, ivec3(i0.x, i0.y, i1.z), 0).xyz,
-                     texelFetch(uFieldNext, ivec3(i1.x, i0.y, i1.z), 0).xyz,
-                     texelFetch(uFieldNext, ivec3(i0.x, i1.y, i1.z), 0).xyz,
-                     texelFetch(uFieldNext, ivec3(i1.x, i1.y, i1.z), 0).xyz);
-  return trilinear(c.f, texelFetch(uField, ivec3(i0.x, i0.y, i0.z), 0).xyz,
-                   texelFetch(uField, ivec3(i1.x, i0.y, i0.z), 0).xyz,
-                   texelFetch(uField, ivec3(i0.x, i1.y, i0.z), 0).xyz,
-                   texelFetch(uField, ivec3(i1.x, i1.y, i0.z), 0).xyz,
-                   texelFetch(uField, ivec3(i0.x, i0.y, i1.z), 0).xyz,
-                   texelFetch(uField, ivec3(i1.x, i0.y, i1.z), 0).xyz,
-                   texelFetch(uField, ivec3(i0.x, i1.y, i1.z), 0).xyz,
-                   texelFetch(uField, ivec3(i1.x, i1.y, i1.z), 0).xyz);
+  if (next) return gridSample(uFieldNext, c);
+  return gridSample(uField, c);
 }
 #endif
 
