@@ -6,9 +6,10 @@
 //   count (uScatter false): adds the histogram to the tiles' counts; what
 //     each add returns is this workgroup's place in the tile's list (groupBase).
 //   scatter (uScatter true): counts again, from tileStart + groupBase, and
-//     writes each particle's splat record at the slot that gives. Where the list is full (it holds uListCapacity records, a
-//     few a particle) the particle adds its footprint in that tile to the sums
-//     itself, with global atomics: slower, the same integers.
+//     writes each particle's splat record at the slot that gives. Where the
+//     list is full (it holds uListCapacity records, two a particle) the
+//     particle adds its footprint in that tile to the sums itself, with
+//     global atomics: slower, the same integers.
 // One program for both, so both passes find exactly the same tiles.
 #include "view_block.glsl"
 #include "render_block.glsl"
@@ -47,7 +48,8 @@ void main() {
   uint group = gl_WorkGroupID.x;
   // Scatter: each tile's bin starts at this workgroup's first slot in the
   // tile's list (entries of tiles it has no particles in are never used).
-  for (uint t = lid; t < tiles; t += kGroup) sBins[t] = uScatter ? tileStart[t] + groupBase[group * tiles + t] : 0u;
+  for (uint t = lid; t < tiles; t += kGroup)
+    sBins[t] = uScatter ? tileStart[t] + groupBase[group * tiles + t] : 0u;
   barrier();
   uint begin = group * args.perGroup, end = min(begin + args.perGroup, args.count);
   for (uint i = begin + lid; i < end; i += kGroup) {

@@ -1,13 +1,13 @@
 #version 450 core
 // ParticleSplat, tiled variant, step 5: one workgroup a chunk (at most
 // uChunk splat records of one tile's list; records past the list's capacity
-// were added by the scatter pass). Its particles add to the tile's
-// sums in shared memory; then the workgroup adds those to the view's sums
-// (the atomic variant's buffer, which its resolve pass turns into the image):
-// a plain store where the chunk is its tile's only one, a global atomic where
-// a dense tile has several. The same integers as the atomic variant add, so
-// the same image, with about one global atomic a pixel and chunk instead of
-// six a pixel and particle.
+// were added by the scatter pass). Its splats add to the tile's sums in
+// shared memory; then the workgroup adds those to the view's sums (the
+// buffer the resolve pass turns into the image): a plain store where the
+// chunk is its tile's only one, a global atomic where a dense tile has
+// several. The same integers as the atomic variant adds, so the same image,
+// with at most six global atomics a pixel and chunk instead of six a pixel
+// and particle.
 #include "view_block.glsl"
 #include "render_block.glsl"
 #include "splat_common.glsl"
