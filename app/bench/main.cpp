@@ -169,18 +169,18 @@ class Bench {
     }
   }
 
-  double bareCompute(std::size_t n) {
-    if (auto it = bareComputeMs_.find(n); it != bareComputeMs_.end()) return it->second;
-    progress(concat("ceiling: bare compute update (no physics), ", n, " records"));
+  // A ceiling over n records (two vec4 in, two out), measured once per n by
+  // `pass` (its GPU ms): the time, and a row against the copy bandwidth.
+  template <class Pass>
+  double bareRecords(std::size_t n, std::map<std::size_t, double>& measured, const char* what,
+                     const char* stage, Pass pass) {
+    if (auto it = measured.find(n); it != measured.end()) return it->second;
+    progress(concat("ceiling: ", what, ", ", n, " records"));
     double ms = 0;
-    if (fits(4 * n * 16.0, "bare compute update"))
-      guarded("bare compute update", [&] {
-        BareComputeUpdate bare(n);
-        ms = bare.passMs(o_.frames);
-      });
-    bareComputeMs_[n] = ms;
+    if (fits(4 * n * 16.0, what)) guarded(what, [&] { ms = pass(); });
+    measured[n] = ms;
     if (ms > 0) {
-      Row row{.section = "ceilings", .stage = "bare-compute", .particles = n};
+      Row row{.section = "ceilings", .stage = stage, .particles = n};
       row.ms = ms;
       row.particlesPerS = double(n) / (ms * 1e-3);
       row.bytesPerS = 2 * kRecordBytes * double(n) / (ms * 1e-3);
@@ -191,27 +191,14 @@ class Bench {
     return ms;
   }
 
+  double bareCompute(std::size_t n) {
+    return bareRecords(n, bareComputeMs_, "bare compute update", "bare-compute",
+                       [&] { return BareComputeUpdate(n).passMs(o_.frames); });
+  }
+
   double bareTf(std::size_t n) {
-    if (auto it = bareTfMs_.find(n); it != bareTfMs_.end()) return it->second;
-    double ms = 0;
-    if (!bareTfMs_.contains(n))
-      progress(concat("ceiling: bare transform feedback, ", n, " records"));
-    if (fits(4 * n * 16.0, "bare transform feedback"))
-      guarded("bare transform feedback", [&] {
-        BareTransformFeedback tf(n);
-        ms = tf.passMs(o_.frames);
-      });
-    bareTfMs_[n] = ms;
-    if (ms > 0) {
-      Row row{.section = "ceilings", .stage = "bare-tf", .particles = n};
-      row.ms = ms;
-      row.particlesPerS = double(n) / (ms * 1e-3);
-      row.bytesPerS = 2 * kRecordBytes * double(n) / (ms * 1e-3);
-      row.ceiling = report_.bandwidthName();
-      row.ratio = ratio(row.bytesPerS, report_.bandwidth());
-      report_.rows.push_back(row);
-    }
-    return ms;
+    return bareRecords(n, bareTfMs_, "bare transform feedback", "bare-tf",
+                       [&] { return BareTransformFeedback(n).passMs(o_.frames); });
   }
 
   double barePoints(std::size_t n) {
