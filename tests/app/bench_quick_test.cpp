@@ -12,16 +12,7 @@ namespace sandstorm {
 namespace {
 
 test::ProcessResult runBench(const std::string& args) {
-  const std::string cmd = std::string("'") + SANDSTORM_BENCH + "' " + args + " 2>&1";
-  test::ProcessResult r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe))
-    r.output += buffer;
-  const int status = pclose(pipe);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  return test::runCommand(std::string("'") + SANDSTORM_BENCH + "' " + args + " 2>&1");
 }
 
 // The value of "key": "..." or "key": number in one JSON row line.

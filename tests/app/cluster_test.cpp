@@ -36,14 +36,10 @@ MpiRun mpirun(const std::string& apps) {
                           " --mca oob_tcp_if_include lo " +
                           apps + " 2>&1";
   const auto start = std::chrono::steady_clock::now();
+  const test::ProcessResult run = test::runCommand(cmd);
   MpiRun r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return r;
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe))
-    r.output += buffer;
-  const int status = pclose(pipe);
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.output = run.output;
+  r.exitCode = run.exitCode;
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return r;
 }

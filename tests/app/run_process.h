@@ -24,10 +24,8 @@ inline std::filesystem::path scratchDir(const std::string& name) {
   return dir;
 }
 
-// `env`: variable assignments for the child ("MESA_GL_VERSION_OVERRIDE=3.3").
-inline ProcessResult runSandstorm(const std::string& args, const std::string& env = "") {
-  const std::string cmd = std::string("cd '") + SANDSTORM_SOURCE_DIR + "' && " + env + " '" +
-                          SANDSTORM_BINARY + "' " + args + " 2>&1";
+// Runs a shell command line (append 2>&1 to catch stderr too) to its end.
+inline ProcessResult runCommand(const std::string& cmd) {
   ProcessResult r;
   FILE* pipe = popen(cmd.c_str(), "r");
   if (!pipe) return r;
@@ -37,6 +35,12 @@ inline ProcessResult runSandstorm(const std::string& args, const std::string& en
   const int status = pclose(pipe);
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
   return r;
+}
+
+// `env`: variable assignments for the child ("MESA_GL_VERSION_OVERRIDE=3.3").
+inline ProcessResult runSandstorm(const std::string& args, const std::string& env = "") {
+  return runCommand(std::string("cd '") + SANDSTORM_SOURCE_DIR + "' && " + env + " '" +
+                    SANDSTORM_BINARY + "' " + args + " 2>&1");
 }
 
 inline std::vector<std::string> readLines(const std::filesystem::path& path) {
