@@ -67,6 +67,8 @@ ParticleSplat::ParticleSplat()
       // Records a chunk: 16 an invocation; tiles with more spread over
       // several workgroups. Tests make them small to put several in a tile.
       chunk_(GLuint(fromEnvironment("SANDSTORM_SPLAT_CHUNK", 8192))),
+      // Records the lists hold (0: two a particle of capacity); tests make it small.
+      listRecords_(fromEnvironment("SANDSTORM_SPLAT_LIST", 0)),
       prepare_(std::vector<std::string>{"splat_prepare.comp"}),
       splat_(std::vector<std::string>{"particle_splat.comp"}),
       resolve_(std::vector<std::string>{"particle_splat_resolve.comp"}),
@@ -137,8 +139,8 @@ void ParticleSplat::addTiled(glm::ivec2 tiles, std::size_t capacity) const {
   const std::size_t tileCount = std::size_t(tiles.x) * std::size_t(tiles.y);
   // Records in the lists: a particle of a few pixels covers one 32-pixel tile,
   // sometimes two or four; the scatter pass adds those past the end itself.
-  // SANDSTORM_SPLAT_LIST sets the number (tests make it small).
-  const std::size_t listCapacity = fromEnvironment("SANDSTORM_SPLAT_LIST", 2 * capacity + 4096);
+  // SANDSTORM_SPLAT_LIST sets the number (listRecords_).
+  const std::size_t listCapacity = listRecords_ ? listRecords_ : 2 * capacity + 4096;
   if (tileCount > tiles_) {
     tileCounts_ = allocate(tileCount * 4, "the tile counts");
     zero(tileCounts_);  // splat_scan.comp zeroes them after each view

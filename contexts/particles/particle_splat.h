@@ -55,7 +55,8 @@ class ParticleSplat {
   void addTiled(glm::ivec2 tiles, std::size_t capacity) const;
 
   bool tiled_;
-  std::uint32_t chunk_;  // tiled: list entries a workgroup
+  std::uint32_t chunk_;      // tiled: list entries a workgroup
+  std::size_t listRecords_;  // tiled: records the lists hold, 0: two a particle
   gl::Program prepare_, splat_, resolve_;
   std::optional<gl::Program> bin_, scan_, tile_;  // tiled
   gl::Buffer dispatch_, chunkDispatch_;
