@@ -69,8 +69,9 @@ App::App(AppConfig config, AppOptions options, ClusterLink* cluster)
     }
     config_.walls = std::move(chosen);
   }
-  // Offscreen there is nobody to use the menu: it only shows when a script drives it.
-  if (headless_ && !options_.menuScript) options_.noMenu = true;
+  // Offscreen there is nobody at a mouse: the menu shows when a script or a tracked wand drives it.
+  if (headless_ && !options_.menuScript && config_.tracking.source == TrackingSource::None)
+    options_.noMenu = true;
   if (options_.noMenu) {
     config_.menu.operatorWindow.reset();
     for (WallSpec& w : config_.walls)

@@ -69,11 +69,17 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
     main_.setChangeListener(
         [this](std::uint32_t frame, const StateChange& c) { recorder_->record(frame, c); });
   }
-  if (options_.replay)
-    for (const ScheduledChange& s : readSessionLog(*options_.replay))
+  if (options_.replay) {
+    replay_ = readSession(*options_.replay);
+    for (const ScheduledChange& s : replay_.changes)
       main_.schedule(s.frame, s.change);
-  if (!cluster_ || cluster_->root())
+  }
+  if (!cluster_ || cluster_->root()) {
     helicopter_.update(main_);  // the configured helicopter's field and dust, before packet 0
+    if (TrackingInput::wanted(config.tracking, replay_.tracking))
+      tracking_ =
+          std::make_unique<TrackingInput>(config.tracking, config.navigation, replay_.tracking);
+  }
 }
 
 int AppRun::execute() {
@@ -231,6 +237,56 @@ void AppRun::hookWalls() {
   }
 }
 
+void AppRun::track(float dt) {
+  const std::uint32_t frame = main_.nextFrame();
+  // A replayed session's navigation, when it recorded one.
+  while (replayNavigationAt_ < replay_.navigation.size() &&
+         replay_.navigation[replayNavigationAt_].frame <= frame)
+    navigation_ = replay_.navigation[replayNavigationAt_++].navigation;
+  TrackingSample sample;
+  WandRay ray;
+  if (tracking_) {
+    sample = tracking_->sample(frame);
+    const ParticleState state = main_.pendingState();
+    const WandScene scene{.state = &state,
+                          .navigation = navigation_,
+                          .ground = terrain_.get(),
+                          .menu = menuTarget()};
+    WandActions actions = tracking_->wand(sample, scene, dt);
+    ray = actions.ray;
+    if (!tracking_->replaying()) {
+      if (actions.menu && menu_) menu_->pointWand(actions.menu->pixel, actions.menu->down);
+      for (const auto& [key, value] : actions.sets) {
+        try {
+          main_.set(key, value);
+        } catch (const Error& e) {
+          log::warn("wand: ", e.what());
+        }
+      }
+      if (actions.navigation) navigation_ = *actions.navigation;
+    }
+  }
+  HeadPose head = head_->pose(main_.time());
+  if (sample.active && sample.headTracked) {
+    head.position = sample.head.position;
+    head.right = sample.head.right();
+  }
+  main_.setTracking(sample, ray);
+  main_.setViewer(Viewer{head, navigation_});
+  if (recorder_) {
+    if (sample.active) recorder_->recordTracking(frame, sample);
+    recorder_->recordNavigation(frame, navigation_);
+  }
+}
+
+std::optional<WandMenuTarget> AppRun::menuTarget() const {
+  if (!menu_ || menuWall_ < 0) return std::nullopt;
+  const WallSpec& wall = config_.walls[std::size_t(menuWall_)];
+  const MenuPanel::Rect panel = menu_->panelRect();
+  return WandMenuTarget{wall, wall.window ? wall.window->size : wall.offscreenSize, panel.min,
+                        panel.max};
+}
+
 void AppRun::showMenu(float dt) {
   MenuStats stats;
   stats.frame = main_.nextFrame();
@@ -238,6 +294,11 @@ void AppRun::showMenu(float dt) {
     const WallStats s = w->stats();
     stats.walls.push_back({w->name(), s.fps, s.frameMs, s.updateMs, s.renderMs, s.postMs,
                            s.fieldUploadMs, s.liveParticles, s.capacity});
+  }
+  if (tracking_) {
+    const TrackingStatus t = tracking_->status();
+    stats.tracking = MenuTrackingStats{t.source, t.stats.received, t.stats.dropped, t.waiting,
+                                       t.lost, t.trackerFrame, t.stats.lastError};
   }
   menu_->frame(main_.nextFrame(), dt, stats);
 }
@@ -270,8 +331,8 @@ void AppRun::runOneProcess() {
     for (const auto& w : walls_)
       failed_ = failed_ || w->error().has_value();
     if (failed_) break;
+    track(dt);
     if (menu_) showMenu(dt);
-    main_.setViewer(Viewer{head_->pose(main_.time()), navigation_});
     if (!channel_.publish(std::make_shared<const FramePacket>(main_.next()))) break;
     helicopter_.update(main_);
     ++frames_;
@@ -306,8 +367,8 @@ void AppRun::runCluster() {
     if (!cluster_->root()) {
       packet = cluster_->receive();  // null: rank 0 sent the last frame
     } else if (lastFrame_ < 0 || frames_ <= lastFrame_) {
+      track(dt);
       if (menu_) showMenu(dt);
-      main_.setViewer(Viewer{head_->pose(main_.time()), navigation_});
       packet = std::make_shared<const FramePacket>(main_.next());
       cluster_->send(*packet);
       helicopter_.update(main_);
@@ -349,6 +410,13 @@ int AppRun::finish() {
     log::info("  wall '", w->name(), "': ", s.liveParticles, " live particles at frame ", s.frame,
               ", last frame ", s.frameMs, " ms; ", s.fieldUploads, " field upload(s), the last ",
               s.fieldUploadMs, " ms", w->error() ? " FAILED: " + *w->error() : std::string());
+  }
+  if (tracking_) {
+    const TrackingStatus t = tracking_->status();
+    log::info("  tracking (", t.source, "): ", t.stats.received, " frames received, ",
+              t.stats.dropped, " dropped",
+              t.waiting ? ", none measured" : (t.lost ? ", lost at the end" : ""),
+              t.stats.lastError.empty() ? std::string() : "; last refused: " + t.stats.lastError);
   }
   if (options_.screenshotDir) log::info("images in ", options_.screenshotDir->string(), "/");
   return failed_ ? 1 : 0;

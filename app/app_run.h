@@ -18,6 +18,7 @@
 #include "app/helicopter_controller.h"
 #include "app/menu/menu_host.h"
 #include "app/scene_setup.h"
+#include "app/tracking/tracking_input.h"
 #include "contexts/platform/glfw_window.h"
 #include "contexts/render/render_context.h"
 #include "core/cave/viewer.h"
@@ -44,6 +45,8 @@ class AppRun {
   void hookWalls();
   void runOneProcess();
   void runCluster();
+  void track(float dt);
+  std::optional<WandMenuTarget> menuTarget() const;
   void showMenu(float dt);
   void reportProgress(Clock::time_point now);
   int finish();
@@ -59,6 +62,9 @@ class AppRun {
   std::shared_ptr<const HeightMap> terrain_;
   MainContext main_;
   std::unique_ptr<SessionRecorder> recorder_;
+  SessionLog replay_;
+  std::size_t replayNavigationAt_ = 0;
+  std::unique_ptr<TrackingInput> tracking_;  // null: no tracker (or not the main context's rank)
   HelicopterController helicopter_;
   std::unique_ptr<HeadTracker> head_;
   Navigation navigation_;

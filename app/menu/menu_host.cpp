@@ -25,7 +25,18 @@ MenuHost::~MenuHost() {
   }
 }
 
+void MenuHost::pointWand(glm::vec2 pixel, bool down) {
+  wand_ = std::make_pair(pixel, down);
+}
+
 void MenuHost::frame(std::uint32_t frame, float dt, const MenuStats& stats) {
+  if (wand_) {
+    session_.injectMouse(wand_->first, wand_->second);
+  } else if (wandPointed_) {
+    session_.injectMouse(glm::vec2(-1e9f), false);  // the wand left the panel: let go, hover nothing
+  }
+  wandPointed_ = wand_.has_value();
+  wand_.reset();
   if (script_) script_->inject(frame, session_, panel_);
   session_.begin(dt);
   panel_.build(stats);

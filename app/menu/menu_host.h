@@ -25,6 +25,10 @@ class MenuHost {
   ~MenuHost();
 
   void frame(std::uint32_t frame, float dt, const MenuStats& stats);
+  // The tracked wand points at the panel this frame: its hit in the wall
+  // image's pixels, and whether the trigger is down (a mouse of its own).
+  void pointWand(glm::vec2 pixel, bool down);
+  MenuPanel::Rect panelRect() const { return panel_.panelRect(); }
 
   // For the wall that shows the menu.
   std::shared_ptr<const UiDrawData> latest() const;
@@ -39,6 +43,8 @@ class MenuHost {
   ImGuiSession session_;
   MenuPanel panel_;
   std::optional<MenuScript> script_;
+  std::optional<std::pair<glm::vec2, bool>> wand_;  // this frame's wand pointer
+  bool wandPointed_ = false;                        // the wand drove the mouse last frame
   std::unique_ptr<UiRenderer> renderer_;  // operator window only, on this thread
   mutable std::mutex mutex_;
   std::shared_ptr<const UiDrawData> latest_;

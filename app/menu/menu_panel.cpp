@@ -50,8 +50,8 @@ void MenuPanel::build(const MenuStats& stats) {
   statsSection(stats, state);
   if (state.helicopter.enabled &&
       ImGui::CollapsingHeader("Helicopter", ImGuiTreeNodeFlags_DefaultOpen)) {
-    for (const char* key :
-         {"helicopter.throttle", "helicopter.altitude", "helicopter.x", "helicopter.y"})
+    for (const char* key : {"helicopter.throttle", "helicopter.altitude", "helicopter.x",
+                            "helicopter.y", "helicopter.wand_throttle"})
       attributeWidget(AttributeTable::instance().lookup(key), key, state);
   }
   // The thesis's Table 5.1 first: the attributes an operator reaches for.
@@ -81,6 +81,8 @@ void MenuPanel::build(const MenuStats& stats) {
       if (info.key.starts_with("field.")) attributeWidget(info, info.key, state);
   }
   if (!message_.empty()) ImGui::TextWrapped("%s", message_.c_str());
+  const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
+  panel_ = Rect{{at.x, at.y}, {at.x + size.x, at.y + size.y}};
   ImGui::End();
 }
 
@@ -126,6 +128,21 @@ void MenuPanel::statsSection(const MenuStats& stats, const ParticleState& state)
                               " (buffer " + std::to_string(w.capacity) + ")";
     ImGui::ProgressBar(std::min(fraction, 1.0f), ImVec2(-1, 0), label.c_str());
   }
+  if (stats.tracking) trackingSection(*stats.tracking);
+}
+
+void MenuPanel::trackingSection(const MenuTrackingStats& t) {
+  ImGui::Text("tracking: %s", t.source.c_str());
+  if (t.waiting)
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "waiting for the tracker");
+  else if (t.lost)
+    ImGui::TextColored(ImVec4(1.0f, 0.3f, 0.2f, 1.0f), "tracking lost: holding the last pose");
+  else
+    ImGui::Text("tracker frame %u", t.trackerFrame);
+  ImGui::Text("received %llu, dropped %llu", static_cast<unsigned long long>(t.received),
+              static_cast<unsigned long long>(t.dropped));
+  if (!t.lastError.empty() && ImGui::IsItemHovered())
+    ImGui::SetTooltip("last refused: %s", t.lastError.c_str());
 }
 
 void MenuPanel::emitterSection(const ParticleState& state) {

@@ -8,6 +8,7 @@
 
 #include <functional>
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,9 +24,19 @@ struct MenuWallStats {
   std::size_t live = 0, capacity = 0;
 };
 
+struct MenuTrackingStats {
+  std::string source;
+  std::uint64_t received = 0, dropped = 0;
+  bool waiting = true;  // nothing measured yet
+  bool lost = false;    // no fresh measurement: the last poses are held
+  std::uint32_t trackerFrame = 0;
+  std::string lastError;
+};
+
 struct MenuStats {
   std::uint32_t frame = 0;
   std::vector<MenuWallStats> walls;
+  std::optional<MenuTrackingStats> tracking;
 };
 
 class MenuPanel {
@@ -44,6 +55,8 @@ class MenuPanel {
     glm::vec2 min, max;
   };
   const std::map<std::string, Rect>& rects() const { return rects_; }
+  // The whole panel, as drawn last frame (the wand points at it).
+  Rect panelRect() const { return panel_; }
   const std::string& lastMessage() const { return message_; }
 
  private:
@@ -53,6 +66,7 @@ class MenuPanel {
   void emitterSection(const ParticleState& state);
   void fieldSection();
   void statsSection(const MenuStats& stats, const ParticleState& state);
+  void trackingSection(const MenuTrackingStats& tracking);
   void remember(const std::string& key);
   void apply(const std::string& key, const AttributeValue& value);
 
@@ -63,6 +77,7 @@ class MenuPanel {
   int selectedField_ = 0;
   std::string message_;
   std::map<std::string, Rect> rects_;
+  Rect panel_{};
 };
 
 }  // namespace sandstorm

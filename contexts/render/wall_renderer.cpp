@@ -39,6 +39,7 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
                              glm::ivec2 size) {
   const float aspect = float(size.x) / float(size.y);
   const std::vector<View> views = wallViews(wall_, packet.viewer, aspect, near_, far_);
+  viewRenderer_.scene().setWand(packet.wand, packet.viewer.navigation, system_.state().emitters);
   switch (wall_.stereo) {
     case StereoMode::Mono:
       viewRenderer_.render(system_, views[0], size, destination, {0, 0});

@@ -16,33 +16,6 @@ SceneRenderer::SceneRenderer()
       emptyVao_(gl::createVertexArray()) {
   setTerrain(std::make_shared<HeightMap>(HeightMap::flat(0.0f)));
 
-  // A unit cube (-0.5..0.5) with face normals: the helicopter proxy is made of stretched cubes.
-  struct Vertex {
-    glm::vec3 position, normal;
-  };
-  std::vector<Vertex> cube;
-  for (int axis = 0; axis < 3; ++axis)
-    for (float side : {-1.0f, 1.0f}) {
-      glm::vec3 n(0.0f);
-      n[axis] = side;
-      const glm::vec3 u = glm::vec3(n.y, n.z, n.x) * side, v = glm::cross(n, u);
-      const glm::vec3 c = 0.5f * n;
-      const glm::vec3 q[4] = {c - 0.5f * u - 0.5f * v, c + 0.5f * u - 0.5f * v,
-                              c + 0.5f * u + 0.5f * v, c - 0.5f * u + 0.5f * v};
-      for (int i : {0, 1, 2, 0, 2, 3})
-        cube.push_back({q[i], n});
-    }
-  cubeVertices_ = gl::createBuffer();
-  glNamedBufferStorage(cubeVertices_.id(), GLsizeiptr(cube.size() * sizeof(Vertex)), cube.data(),
-                       0);
-  cubeVao_ = gl::createVertexArray();
-  for (GLuint a = 0; a < 2; ++a) {
-    glEnableVertexArrayAttrib(cubeVao_.id(), a);
-    glVertexArrayAttribFormat(cubeVao_.id(), a, 3, GL_FLOAT, GL_FALSE, a * sizeof(glm::vec3));
-    glVertexArrayAttribBinding(cubeVao_.id(), a, 0);
-  }
-  glVertexArrayVertexBuffer(cubeVao_.id(), 0, cubeVertices_.id(), 0, sizeof(Vertex));
-
   // The unit cube's 12 edges; the model matrix stretches it onto the field's box.
   std::vector<glm::vec3> edges;
   for (int axis = 0; axis < 3; ++axis)
@@ -108,6 +81,11 @@ void SceneRenderer::setTerrain(std::shared_ptr<const HeightMap> terrain) {
   terrainIndexCount_ = int(indices.size());
 }
 
+void SceneRenderer::setWand(const WandRay& ray, const Navigation& navigation,
+                            std::vector<Emitter> emitters) {
+  wand_.set(ray, navigation, std::move(emitters));
+}
+
 void SceneRenderer::setFieldBox(std::optional<Box> bounds, const FieldPlacement& placement) {
   box_ = bounds;
   placement_ = placement;
@@ -145,12 +123,11 @@ void SceneRenderer::draw() const {
         {{0.0f, 0.0f, 0.0f}, {0.07f * r, 2.0f * r, 0.015f * r}, {0.08f, 0.08f, 0.08f}},
     };
     mesh_.use();
-    glBindVertexArray(cubeVao_.id());
     for (const Part& p : parts) {
       const glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), hub + p.center), p.size);
       glProgramUniformMatrix4fv(mesh_.id(), 0, 1, GL_FALSE, glm::value_ptr(model));
       glProgramUniform4f(mesh_.id(), 1, p.color.x, p.color.y, p.color.z, 1.0f);
-      glDrawArrays(GL_TRIANGLES, 0, 36);
+      cube_.draw();
     }
   }
 
@@ -164,6 +141,8 @@ void SceneRenderer::draw() const {
     glBindVertexArray(boxVao_.id());
     glDrawArrays(GL_LINES, 0, 24);
   }
+
+  wand_.draw();
 
   // The sky last, on the far plane, where nothing else is: each pixel is
   // shaded once (fill rate is what a datacenter GPU's raster pipeline lacks).

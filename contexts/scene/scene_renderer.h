@@ -1,6 +1,6 @@
 // SceneRenderer: the scene particles are composited against: a sky, the
-// terrain (or flat ground), the downdraft demo's helicopter and, as a guide,
-// the field's bounding box. It draws
+// terrain (or flat ground), the downdraft demo's helicopter, the tracked
+// wand's ray and, as a guide, the field's bounding box. It draws
 // into the bound framebuffer with depth, using the view and render blocks
 // already bound (bindings 1 and 2).
 #pragma once
@@ -10,6 +10,8 @@
 
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
+#include "contexts/scene/unit_cube.h"
+#include "contexts/scene/wand_renderer.h"
 #include "core/field/box.h"
 #include "core/field/field_placement.h"
 #include "core/field/height_map.h"
@@ -26,14 +28,17 @@ class SceneRenderer {
   void setFieldBox(std::optional<Box> bounds, const FieldPlacement& placement);
   // A simple helicopter proxy (fuselage, tail boom, rotor) at the hub the settings give.
   void setHelicopter(const HelicopterSettings& helicopter, float rotorRadius);
+  // The tracked wand's ray and the emitters' handles (nothing while the ray is hidden).
+  void setWand(const WandRay& ray, const Navigation& navigation, std::vector<Emitter> emitters);
   void draw() const;
 
  private:
   gl::Program sky_, terrain_, lines_, mesh_;
   gl::VertexArray emptyVao_;
   gl::VertexArray terrainVao_, boxVao_;
-  gl::Buffer terrainVertices_, terrainIndices_, boxVertices_, cubeVertices_;
-  gl::VertexArray cubeVao_;
+  gl::Buffer terrainVertices_, terrainIndices_, boxVertices_;
+  UnitCube cube_;
+  WandRenderer wand_;
   std::shared_ptr<const HeightMap> ground_;
   HelicopterSettings helicopter_;
   float rotorRadius_ = 7.0f;

@@ -67,7 +67,7 @@ void DesktopHead::turn(float yawRadians) {
 std::unique_ptr<HeadTracker> makeHeadTracker(const HeadSpec& spec) {
   HeadPose base;
   base.position = spec.position;
-  base.right = rightOfYaw(glm::radians(spec.yawDegrees));
+  base.right = spec.right ? *spec.right : rightOfYaw(glm::radians(spec.yawDegrees));
   base.eyeSeparation = spec.eyeSeparation;
   switch (spec.mode) {
     case HeadMode::Fixed:

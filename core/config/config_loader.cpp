@@ -1,6 +1,8 @@
 // Reads AppConfig from TOML (toml11). Every key is checked; unknown keys,
 // wrong types and bad values throw Error with "file:line: key: what was expected".
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -254,13 +256,21 @@ void readScene(const Reader& r, const toml::value& t, SceneSpec& s) {
 }
 
 void readHead(const Reader& r, const toml::value& t, HeadSpec& h) {
-  r.checkKeys(t, "head", {"mode", "position", "yaw_deg", "eye_separation", "path", "loop"});
+  r.checkKeys(t, "head", {"mode", "position", "yaw_deg", "right", "eye_separation", "path", "loop"});
   h.mode = r.choice(t, "mode", "head", h.mode,
                     {{"fixed", HeadMode::Fixed},
                      {"scripted", HeadMode::Scripted},
                      {"desktop", HeadMode::Desktop}});
   h.position = r.vec<3>(t, "position", "head", h.position);
   h.yawDegrees = r.real(t, "yaw_deg", "head", h.yawDegrees);
+  // right = [x, y, z]: the eyes' axis itself (a tilted head), instead of yaw_deg.
+  if (const toml::value* right = r.find(t, "right")) {
+    if (r.find(t, "yaw_deg")) r.fail(*right, "head.right", "give right or yaw_deg, not both");
+    const glm::vec3 v = r.vec<3>(*right, "head.right");
+    if (!(std::abs(glm::length(v) - 1.0f) < 0.01f))
+      r.fail(*right, "head.right", "expected a unit vector from the left eye to the right eye");
+    h.right = v;
+  }
   h.eyeSeparation = r.real(t, "eye_separation", "head", h.eyeSeparation);
   if (h.eyeSeparation < 0.0f || h.eyeSeparation > 0.5f)
     r.fail(t, "head.eye_separation", "expected 0..0.5 m");
@@ -284,11 +294,74 @@ void readHead(const Reader& r, const toml::value& t, HeadSpec& h) {
 }
 
 void readNavigation(const Reader& r, const toml::value& t, NavigationSpec& n) {
-  r.checkKeys(t, "navigation", {"offset", "yaw_deg", "scale"});
+  r.checkKeys(t, "navigation", {"offset", "yaw_deg", "scale", "fly_speed", "turn_speed_deg"});
   n.offset = r.vec<3>(t, "offset", "navigation", n.offset);
   n.yawDegrees = r.real(t, "yaw_deg", "navigation", n.yawDegrees);
   n.scale = r.real(t, "scale", "navigation", n.scale);
   if (!(n.scale > 0.0f)) r.fail(t, "navigation.scale", "expected a positive scale");
+  n.flySpeed = r.real(t, "fly_speed", "navigation", n.flySpeed);
+  if (!(n.flySpeed >= 0.0f && n.flySpeed <= 1000.0f))
+    r.fail(t, "navigation.fly_speed", "expected 0..1000 m/s");
+  n.turnSpeedDeg = r.real(t, "turn_speed_deg", "navigation", n.turnSpeedDeg);
+  if (!(n.turnSpeedDeg >= 0.0f && n.turnSpeedDeg <= 720.0f))
+    r.fail(t, "navigation.turn_speed_deg", "expected 0..720 degrees/s");
+}
+
+// A direction in a body's own coordinates: three numbers, not all zero.
+glm::vec3 axis(const Reader& r, const toml::value& t, const std::string& key, glm::vec3 fallback) {
+  const glm::vec3 v = r.vec<3>(t, key, "tracking", fallback);
+  if (!(glm::length(v) > 1e-3f) || !std::isfinite(glm::length(v)))
+    r.fail(*r.find(t, key), "tracking." + key, "expected a non-zero direction [x, y, z]");
+  return glm::normalize(v);
+}
+
+void readTracking(const Reader& r, const toml::value& t, TrackingSpec& k) {
+  r.checkKeys(t, "tracking",
+              {"source", "port", "multicast", "head_body", "wand_flystick", "offset",
+               "rotation_deg", "stale_ms", "eye_offset", "head_right", "head_up", "wand_forward",
+               "wand_up", "trigger_button", "grab_button", "grab_radius", "ray_length"});
+  k.line = int(t.location().line());
+  k.source = r.choice(t, "source", "tracking", k.source,
+                      {{"none", TrackingSource::None},
+                       {"dtrack", TrackingSource::DTrack},
+                       {"replay", TrackingSource::Replay}});
+  k.port = r.integer(t, "port", "tracking", k.port, 1, 65535);
+  k.multicast = r.string(t, "multicast", "tracking", k.multicast);
+  if (!k.multicast.empty()) {
+    int a = -1, b = -1, c = -1, d = -1;
+    char tail = 0;
+    const bool dotted = std::sscanf(k.multicast.c_str(), "%d.%d.%d.%d%c", &a, &b, &c, &d, &tail) == 4;
+    if (!dotted || a < 224 || a > 239 || b < 0 || b > 255 || c < 0 || c > 255 || d < 0 || d > 255)
+      r.fail(*r.find(t, "multicast"), "tracking.multicast",
+             "expected an IPv4 multicast group (224.0.0.0 .. 239.255.255.255), got '" +
+                 k.multicast + "'");
+  }
+  k.headBody = r.integer(t, "head_body", "tracking", k.headBody, 0, 9999);
+  k.wandFlystick = r.integer(t, "wand_flystick", "tracking", k.wandFlystick, 0, 9999);
+  k.offset = r.vec<3>(t, "offset", "tracking", k.offset);
+  k.rotation = rotationFromDegrees(r.vec<3>(t, "rotation_deg", "tracking", glm::vec3(0.0f)));
+  k.staleMs = r.real(t, "stale_ms", "tracking", k.staleMs);
+  if (!(k.staleMs >= 1.0f && k.staleMs <= 60000.0f))
+    r.fail(t, "tracking.stale_ms", "expected 1..60000 ms");
+  k.eyeOffset = r.vec<3>(t, "eye_offset", "tracking", k.eyeOffset);
+  if (!(glm::length(k.eyeOffset) <= 1.0f))
+    r.fail(t, "tracking.eye_offset", "expected an offset under 1 m (metres, the glasses' axes)");
+  k.headRight = axis(r, t, "head_right", k.headRight);
+  k.headUp = axis(r, t, "head_up", k.headUp);
+  if (std::abs(glm::dot(k.headRight, k.headUp)) > 1e-3f)
+    r.fail(t, "tracking.head_right/head_up", "expected perpendicular directions");
+  k.wandForward = axis(r, t, "wand_forward", k.wandForward);
+  k.wandUp = axis(r, t, "wand_up", k.wandUp);
+  if (std::abs(glm::dot(k.wandForward, k.wandUp)) > 1e-3f)
+    r.fail(t, "tracking.wand_forward/wand_up", "expected perpendicular directions");
+  k.triggerButton = r.integer(t, "trigger_button", "tracking", k.triggerButton, 0, 31);
+  k.grabButton = r.integer(t, "grab_button", "tracking", k.grabButton, 0, 31);
+  k.grabRadius = r.real(t, "grab_radius", "tracking", k.grabRadius);
+  if (!(k.grabRadius > 0.0f && k.grabRadius <= 10.0f))
+    r.fail(t, "tracking.grab_radius", "expected 0..10 m");
+  k.rayLength = r.real(t, "ray_length", "tracking", k.rayLength);
+  if (!(k.rayLength >= 0.1f && k.rayLength <= 1000.0f))
+    r.fail(t, "tracking.ray_length", "expected 0.1..1000 m");
 }
 
 WindowSpec readWindow(const Reader& r, const toml::value& window, const std::string& wp,
@@ -449,7 +522,8 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
   const Reader r(file);
   r.checkKeys(root, "",
               {"include", "run", "field", "scene", "sim", "render", "field_playback", "helicopter",
-               "emitter", "head", "navigation", "menu", "cluster", "wall", "pvx", "pvx_up"});
+               "emitter", "head", "navigation", "tracking", "menu", "cluster", "wall", "pvx",
+               "pvx_up"});
   // include = "scene.toml": that file's settings first, this file's on top.
   if (const toml::value* include = r.find(root, "include")) {
     if (!include->is_string()) r.fail(*include, "include", "expected a file name");
@@ -478,6 +552,7 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
   if (const auto* t = section("scene")) readScene(r, *t, c.scene);
   if (const auto* t = section("head")) readHead(r, *t, c.head);
   if (const auto* t = section("navigation")) readNavigation(r, *t, c.navigation);
+  if (const auto* t = section("tracking")) readTracking(r, *t, c.tracking);
   if (const auto* t = section("menu")) {
     r.checkKeys(*t, "menu", {"operator_window"});
     if (const toml::value* w = r.find(*t, "operator_window"))

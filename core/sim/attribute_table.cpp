@@ -160,6 +160,9 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("helicopter.throttle", T::Float, 0, 1, "",
                     "Throttle: more raises dust rate, lifetime and maximum (about 0.8 hovers)",
                     HELICOPTER(throttle)));
+  v.push_back(entry("helicopter.wand_throttle", T::Bool, 0, 1, "",
+                    "A tracked wand tilted towards you raises the throttle, away lowers it",
+                    HELICOPTER(wandThrottle)));
   v.push_back(entry("helicopter.altitude", T::Float, 1, 60, "m",
                     "Rotor hub above the ground; high up, less dust", HELICOPTER(altitude)));
   v.push_back(

@@ -15,6 +15,8 @@
 #include "core/sim/counter_rng.h"
 #include "core/sim/sim_step.h"
 #include "core/sim/state_change.h"
+#include "core/tracking/tracking_sample.h"
+#include "core/tracking/wand_ray.h"
 
 namespace sandstorm {
 
@@ -38,6 +40,8 @@ struct FramePacket {
   std::vector<std::uint32_t> emission;             // Reeves' count per emitter for this frame
   std::shared_ptr<const FieldUpdate> fieldUpdate;  // non-null when the field changed
   Viewer viewer;            // the head and the navigation, sampled once for every wall
+  TrackingSample tracking;  // the tracked head and wand (room); inactive without a tracker
+  WandRay wand;             // the wand's ray and what it meets, drawn by every wall
   float fieldBlend = 0.0f;  // weight towards fieldUpdate's `next` frame (time-varying fields)
   float lodScale =
       1.0f;  // the level of detail's emission scale, already in `emission` (for display)

@@ -11,7 +11,7 @@ namespace {
 
 constexpr std::uint32_t kPacketMagic = 0x50465353;  // "SSFP"
 constexpr std::uint32_t kFieldMagic = 0x46565353;   // "SSVF"
-constexpr std::uint16_t kVersion = 2;               // 2: equation terms in field updates, lod scale
+constexpr std::uint16_t kVersion = 3;  // 2: equation terms, lod scale; 3: tracking, wand ray
 
 // Limits far above any real packet, so a corrupt count cannot make us allocate gigabytes.
 constexpr std::uint32_t kMaxChanges = 4096;
@@ -26,10 +26,12 @@ static_assert(std::is_same_v<std::variant_alternative_t<3, AttributeValue>, glm:
 // A member added to a type that travels must travel too: these sizes make the
 // build fail until the codec (and its test) learn the new member.
 #if defined(__x86_64__) && defined(__linux__)
-static_assert(sizeof(FramePacket) == 160, "FramePacket changed: update encodePacket/decodePacket");
+static_assert(sizeof(FramePacket) == 328, "FramePacket changed: update encodePacket/decodePacket");
 static_assert(sizeof(StateChange) == 152, "StateChange changed: update change()");
 static_assert(sizeof(Emitter) == 68, "Emitter changed: update emitter()");
 static_assert(sizeof(Viewer) == 48, "Viewer changed: update encodePacket/decodePacket");
+static_assert(sizeof(TrackingSample) == 124, "TrackingSample changed: update tracking()");
+static_assert(sizeof(WandRay) == 40, "WandRay changed: update wandRay()");
 static_assert(sizeof(FieldPlacement) == 52, "FieldPlacement changed: update placement()");
 #endif
 
@@ -160,6 +162,76 @@ FieldPlacement placement(ByteReader& r) {
   return p;
 }
 
+void pose(ByteWriter& w, const TrackedPose& p) {
+  vec3(w, p.position);
+  for (int c = 0; c < 3; ++c)
+    vec3(w, p.axes[c]);
+}
+
+TrackedPose pose(ByteReader& r, std::string_view what) {
+  TrackedPose p;
+  p.position = vec3(r, what);
+  for (int c = 0; c < 3; ++c)
+    p.axes[c] = vec3(r, what);
+  return p;
+}
+
+void tracking(ByteWriter& w, const TrackingSample& s) {
+  w.boolean(s.active);
+  w.boolean(s.stale);
+  w.u32(s.trackerFrame);
+  w.boolean(s.headTracked);
+  pose(w, s.head);
+  w.boolean(s.wand.present);
+  w.boolean(s.wand.tracked);
+  pose(w, s.wand.pose);
+  w.u32(s.wand.buttons);
+  w.f32(s.wand.joystick.x);
+  w.f32(s.wand.joystick.y);
+}
+
+TrackingSample tracking(ByteReader& r) {
+  TrackingSample s;
+  s.active = r.boolean("tracking.active");
+  s.stale = r.boolean("tracking.stale");
+  s.trackerFrame = r.u32("tracking.tracker_frame");
+  s.headTracked = r.boolean("tracking.head_tracked");
+  s.head = pose(r, "tracking.head");
+  s.wand.present = r.boolean("tracking.wand.present");
+  s.wand.tracked = r.boolean("tracking.wand.tracked");
+  s.wand.pose = pose(r, "tracking.wand.pose");
+  s.wand.buttons = r.u32("tracking.wand.buttons");
+  s.wand.joystick.x = r.f32("tracking.wand.joystick");
+  s.wand.joystick.y = r.f32("tracking.wand.joystick");
+  return s;
+}
+
+void wandRay(ByteWriter& w, const WandRay& ray) {
+  w.boolean(ray.visible);
+  vec3(w, ray.origin);
+  vec3(w, ray.end);
+  w.u8(std::uint8_t(ray.target));
+  w.i32(ray.emitter);
+  w.boolean(ray.holding);
+}
+
+WandRay wandRay(ByteReader& r) {
+  WandRay ray;
+  ray.visible = r.boolean("wand.visible");
+  ray.origin = vec3(r, "wand.origin");
+  ray.end = vec3(r, "wand.end");
+  const std::uint8_t target = r.u8("wand.target");
+  if (target > std::uint8_t(WandTarget::Ground))
+    r.fail("wand.target", concat("expected 0..3 (none, menu, emitter, ground), got ", int(target)));
+  ray.target = WandTarget(target);
+  ray.emitter = r.i32("wand.emitter");
+  if (ray.emitter < -1 || ray.emitter >= ParticleState::kMaxEmitters)
+    r.fail("wand.emitter", concat("expected -1..", ParticleState::kMaxEmitters - 1, ", got ",
+                                  ray.emitter));
+  ray.holding = r.boolean("wand.holding");
+  return ray;
+}
+
 void header(ByteReader& r, std::uint32_t magic, const char* what) {
   const std::uint32_t m = r.u32("magic");
   if (m != magic)
@@ -258,6 +330,11 @@ std::vector<std::byte> encodePacket(const FramePacket& p, const FieldRefs& refs)
   w.f32(p.viewer.navigation.scale);
   w.f32(p.fieldBlend);
   w.f32(p.lodScale);
+  // Tracking and the wand's ray travel only when there are any (most runs have no tracker).
+  w.boolean(p.tracking != TrackingSample{});
+  if (p.tracking != TrackingSample{}) tracking(w, p.tracking);
+  w.boolean(p.wand != WandRay{});
+  if (p.wand != WandRay{}) wandRay(w, p.wand);
   return w.take();
 }
 
@@ -316,6 +393,8 @@ FramePacket decodePacket(std::span<const std::byte> bytes, FieldRefs* refs) {
   p.viewer.navigation.scale = r.f32("viewer.navigation.scale");
   p.fieldBlend = r.f32("field_blend");
   p.lodScale = r.f32("lod_scale");
+  if (r.boolean("tracking present")) p.tracking = tracking(r);
+  if (r.boolean("wand present")) p.wand = wandRay(r);
   r.finish();
   if (refs) *refs = found;
   return p;

@@ -15,6 +15,7 @@ struct HelicopterSettings {
   float x = 0.0f, y = 0.0f;  // m: rotor hub over the ground
   float altitude = 8.0f;     // m: hub above the ground below it
   float throttle = 0.8f;     // 0..1; about 0.8 hovers
+  bool wandThrottle = true;  // a tracked wand tilted up/down raises/lowers the throttle
 };
 
 // The aircraft and how strongly its wash raises dust.

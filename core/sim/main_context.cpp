@@ -85,6 +85,12 @@ void MainContext::setViewer(const Viewer& viewer) {
   viewer_ = viewer;
 }
 
+void MainContext::setTracking(const TrackingSample& sample, const WandRay& wand) {
+  std::lock_guard lock(mutex_);
+  tracking_ = sample;
+  wand_ = wand;
+}
+
 void MainContext::reportFrameTime(double ms) {
   std::lock_guard lock(mutex_);
   reportedFrameMs_ = ms;
@@ -122,6 +128,8 @@ FramePacket MainContext::next() {
   packet.seed = options_.seed;
   packet.time = time_;
   packet.viewer = viewer_;
+  packet.tracking = tracking_;
+  packet.wand = wand_;
   time_ += dt;
 
   // Scheduled changes for this frame (or overdue) come first, then live requests.

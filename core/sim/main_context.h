@@ -55,6 +55,8 @@ class MainContext {
   void reset();
   // The head and navigation the next packets carry (the app samples its trackers).
   void setViewer(const Viewer& viewer);
+  // The tracked head and wand and the wand's ray the next packets carry.
+  void setTracking(const TrackingSample& sample, const WandRay& wand);
   // How long the last frame took, for the level of detail's budget (the app
   // may report its slowest wall); without reports, the interval between
   // next() calls, which the slowest wall paces through the FrameChannel.
@@ -93,6 +95,8 @@ class MainContext {
   std::uint32_t frame_ = 0;
   double time_ = 0.0;
   Viewer viewer_;
+  TrackingSample tracking_;
+  WandRay wand_;
   LevelOfDetail lod_;
   std::optional<double> reportedFrameMs_;
   std::optional<std::chrono::steady_clock::time_point> lastFrame_;

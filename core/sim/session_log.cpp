@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cmath>
+#include <initializer_list>
 #include <sstream>
 
 #include "core/util/error.h"
@@ -16,7 +18,135 @@ std::string compact(const AttributeValue& value) {
   return s;
 }
 
+void number(std::string& out, float v) {
+  char buffer[32];
+  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
+  out.append(buffer, ec == std::errc() ? end : buffer);
+}
+
+void numbers(std::string& out, std::initializer_list<float> values) {
+  bool first = true;
+  for (const float v : values) {
+    if (!first) out += ',';
+    number(out, v);
+    first = false;
+  }
+}
+
+void pose(std::string& out, const TrackedPose& p) {
+  const glm::mat3& a = p.axes;
+  numbers(out, {p.position.x, p.position.y, p.position.z, a[0][0], a[0][1], a[0][2], a[1][0],
+                a[1][1], a[1][2], a[2][0], a[2][1], a[2][2]});
+}
+
+// Comma-separated floats, exactly `count` of them.
+std::vector<float> floats(const std::string& text, std::size_t count, const std::string& what) {
+  std::vector<float> out;
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    std::size_t comma = text.find(',', at);
+    if (comma == std::string::npos) comma = text.size();
+    float v = 0.0f;
+    const char* first = text.data() + at;
+    const char* last = text.data() + comma;
+    const auto [end, ec] = std::from_chars(first, last, v);
+    if (ec != std::errc() || end != last || !std::isfinite(v))
+      throw Error(concat(what, ": expected ", count, " comma-separated numbers, got '", text, "'"));
+    out.push_back(v);
+    at = comma + 1;
+    if (out.size() > count) break;
+  }
+  if (out.size() != count)
+    throw Error(concat(what, ": expected ", count, " comma-separated numbers, got ", out.size()));
+  return out;
+}
+
+TrackedPose pose(const std::vector<float>& v, std::size_t at) {
+  TrackedPose p;
+  p.position = {v[at], v[at + 1], v[at + 2]};
+  for (int i = 0; i < 9; ++i)
+    p.axes[i / 3][i % 3] = v[at + 3 + std::size_t(i)];
+  return p;
+}
+
+bool flag(const std::string& text, const std::string& what) {
+  if (text == "0") return false;
+  if (text == "1") return true;
+  throw Error(concat(what, ": expected 0 or 1, got '", text, "'"));
+}
+
+TrackingSample parseTracking(std::istringstream& words) {
+  TrackingSample s;
+  s.active = true;
+  std::string pair;
+  bool frame = false, stale = false, head = false, wand = false;
+  while (words >> pair) {
+    const std::size_t eq = pair.find('=');
+    if (eq == std::string::npos) throw Error("expected name=value after track, got '" + pair + "'");
+    const std::string key = pair.substr(0, eq), value = pair.substr(eq + 1);
+    if (key == "frame") {
+      std::uint32_t f = 0;
+      const auto [end, ec] = std::from_chars(value.data(), value.data() + value.size(), f);
+      if (ec != std::errc() || end != value.data() + value.size())
+        throw Error("track frame: expected the tracker's frame number, got '" + value + "'");
+      s.trackerFrame = f;
+      frame = true;
+    } else if (key == "stale") {
+      s.stale = flag(value, "track stale");
+      stale = true;
+    } else if (key == "head") {
+      if (value != "-") {
+        s.head = pose(floats(value, 12, "track head"), 0);
+        s.headTracked = true;
+      }
+      head = true;
+    } else if (key == "wand") {
+      if (value != "-") {
+        const std::vector<float> v = floats(value, 17, "track wand");
+        if (v[0] != 0.0f && v[0] != 1.0f) throw Error("track wand: expected present 0 or 1 first");
+        if (v[1] != 0.0f && v[1] != 1.0f) throw Error("track wand: expected tracked 0 or 1 second");
+        s.wand.present = v[0] == 1.0f;
+        s.wand.tracked = v[1] == 1.0f;
+        s.wand.pose = pose(v, 2);
+        if (!(v[14] >= 0.0f && v[14] <= 4294967295.0f && v[14] == std::floor(v[14])))
+          throw Error("track wand: expected the buttons as a whole number");
+        s.wand.buttons = std::uint32_t(v[14]);
+        s.wand.joystick = {v[15], v[16]};
+      }
+      wand = true;
+    } else {
+      throw Error("track: unknown item '" + key + "'; expected frame, stale, head and wand");
+    }
+  }
+  if (!frame || !stale || !head || !wand) throw Error("track: expected frame=, stale=, head= and wand=");
+  return s;
+}
+
 }  // namespace
+
+std::string formatTracking(const TrackingSample& s) {
+  std::string out = concat("track frame=", s.trackerFrame, " stale=", s.stale ? 1 : 0, " head=");
+  if (s.headTracked)
+    pose(out, s.head);
+  else
+    out += '-';
+  out += " wand=";
+  if (s.wand.present || s.wand.tracked) {
+    out += concat(s.wand.present ? 1 : 0, ",", s.wand.tracked ? 1 : 0, ",");
+    pose(out, s.wand.pose);
+    out += concat(",", s.wand.buttons, ",");
+    numbers(out, {s.wand.joystick.x, s.wand.joystick.y});
+  } else {
+    out += '-';
+  }
+  return out;
+}
+
+std::string formatNavigation(const Navigation& n) {
+  std::string out = "navigate ";
+  numbers(out, {n.offset.x, n.offset.y, n.offset.z, n.yawRadians, n.scale});
+  return out;
+}
 
 std::string formatChange(const StateChange& c) {
   switch (c.kind) {
@@ -43,9 +173,10 @@ std::string formatChange(const StateChange& c) {
   return "?";
 }
 
-std::vector<ScheduledChange> parseSessionLog(const std::string& text, const std::string& name) {
+SessionLog parseSession(const std::string& text, const std::string& name) {
   const AttributeTable& table = AttributeTable::instance();
-  std::vector<ScheduledChange> changes;
+  SessionLog log;
+  std::vector<ScheduledChange>& changes = log.changes;
   std::istringstream in(text);
   std::string line;
   int lineNo = 0;
@@ -65,7 +196,9 @@ std::vector<ScheduledChange> parseSessionLog(const std::string& text, const std:
       throw Error(where + concat("frame ", frame, " comes after frame ", lastFrame));
     lastFrame = frame;
     if (!(words >> verb))
-      throw Error(where + "expected set, add-emitter, remove-emitter or reset after the frame");
+      throw Error(where +
+                  "expected set, add-emitter, remove-emitter, reset, track or navigate after the "
+                  "frame");
     try {
       if (verb == "set") {
         std::string key, value, extra;
@@ -91,24 +224,41 @@ std::vector<ScheduledChange> parseSessionLog(const std::string& text, const std:
         changes.push_back({frame, StateChange::removeEmitter(index)});
       } else if (verb == "reset") {
         changes.push_back({frame, StateChange::reset()});
+      } else if (verb == "track") {
+        log.tracking.push_back({frame, parseTracking(words)});
+      } else if (verb == "navigate") {
+        std::string values, extra;
+        if (!(words >> values) || (words >> extra))
+          throw Error("expected 'navigate OFFSET_X,OFFSET_Y,OFFSET_Z,YAW,SCALE'");
+        const std::vector<float> v = floats(values, 5, "navigate");
+        if (!(v[4] > 0.0f)) throw Error("navigate: expected a positive scale");
+        log.navigation.push_back({frame, Navigation{{v[0], v[1], v[2]}, v[3], v[4]}});
       } else {
         throw Error("unknown change '" + verb +
-                    "'; expected set, add-emitter, remove-emitter or reset");
+                    "'; expected set, add-emitter, remove-emitter, reset, track or navigate");
       }
     } catch (const Error& e) {
       const std::string what = e.what();
       throw Error(what.starts_with(name) ? what : where + what);
     }
   }
-  return changes;
+  return log;
 }
 
-std::vector<ScheduledChange> readSessionLog(const std::filesystem::path& path) {
+std::vector<ScheduledChange> parseSessionLog(const std::string& text, const std::string& name) {
+  return parseSession(text, name).changes;
+}
+
+SessionLog readSession(const std::filesystem::path& path) {
   std::ifstream in(path);
   if (!in) throw Error(concat(path.string(), ": cannot open the session log"));
   std::ostringstream text;
   text << in.rdbuf();
-  return parseSessionLog(text.str(), path.string());
+  return parseSession(text.str(), path.string());
+}
+
+std::vector<ScheduledChange> readSessionLog(const std::filesystem::path& path) {
+  return readSession(path).changes;
 }
 
 SessionRecorder::SessionRecorder(const std::filesystem::path& path) : out_(path), path_(path) {
@@ -119,6 +269,25 @@ SessionRecorder::SessionRecorder(const std::filesystem::path& path) : out_(path)
 void SessionRecorder::record(std::uint32_t frame, const StateChange& change) {
   std::lock_guard lock(mutex_);
   out_ << frame << " " << formatChange(change) << "\n";
+  out_.flush();
+}
+
+void SessionRecorder::recordTracking(std::uint32_t frame, const TrackingSample& sample) {
+  std::lock_guard lock(mutex_);
+  if (lastTracking_ && *lastTracking_ == sample) return;
+  lastTracking_ = sample;
+  out_ << frame << " " << formatTracking(sample) << "\n";
+  out_.flush();
+}
+
+void SessionRecorder::recordNavigation(std::uint32_t frame, const Navigation& navigation) {
+  std::lock_guard lock(mutex_);
+  if (lastNavigation_ && lastNavigation_->offset == navigation.offset &&
+      lastNavigation_->yawRadians == navigation.yawRadians &&
+      lastNavigation_->scale == navigation.scale)
+    return;
+  lastNavigation_ = navigation;
+  out_ << frame << " " << formatNavigation(navigation) << "\n";
   out_.flush();
 }
 

@@ -8,16 +8,27 @@
 //   180 add-emitter shape=disc position=0,0,1 rate=2000
 //   240 remove-emitter 1
 //   300 reset
+//   301 track frame=8812 stale=0 head=x,y,z,r0..r8 wand=present,tracked,x,y,z,r0..r8,buttons,jx,jy
+//   302 navigate 0.5,2.6,0,0.1,0.35        (offset x y z, yaw in radians, scale)
+//
+// A `track` line is the tracking sample the frame used (core/tracking), in
+// room coordinates, written when it differs from the frame before; a
+// `navigate` line is the navigation (world -> room) from that frame on. Floats
+// are written so they read back bit for bit, so a tracked CAVE session
+// replays without the tracker and draws the same images.
 #pragma once
 
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <mutex>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/cave/viewer.h"
 #include "core/sim/state_change.h"
+#include "core/tracking/tracking_sample.h"
 
 namespace sandstorm {
 
@@ -26,9 +37,30 @@ struct ScheduledChange {
   StateChange change;
 };
 
+struct ScheduledTracking {
+  std::uint32_t frame = 0;
+  TrackingSample sample;
+};
+
+struct ScheduledNavigation {
+  std::uint32_t frame = 0;
+  Navigation navigation;
+};
+
+struct SessionLog {
+  std::vector<ScheduledChange> changes;
+  std::vector<ScheduledTracking> tracking;      // in frame order
+  std::vector<ScheduledNavigation> navigation;  // in frame order
+};
+
 std::string formatChange(const StateChange& change);
+std::string formatTracking(const TrackingSample& sample);
+std::string formatNavigation(const Navigation& navigation);
 
 // Parses a session log. Throws Error "file:line: ..." on the first bad line.
+SessionLog readSession(const std::filesystem::path& path);
+SessionLog parseSession(const std::string& text, const std::string& name);
+// The changes alone.
 std::vector<ScheduledChange> readSessionLog(const std::filesystem::path& path);
 std::vector<ScheduledChange> parseSessionLog(const std::string& text, const std::string& name);
 
@@ -37,11 +69,16 @@ class SessionRecorder {
  public:
   explicit SessionRecorder(const std::filesystem::path& path);
   void record(std::uint32_t frame, const StateChange& change);
+  // Written only when different from the last one recorded.
+  void recordTracking(std::uint32_t frame, const TrackingSample& sample);
+  void recordNavigation(std::uint32_t frame, const Navigation& navigation);
 
  private:
   std::mutex mutex_;
   std::ofstream out_;
   std::filesystem::path path_;
+  std::optional<TrackingSample> lastTracking_;
+  std::optional<Navigation> lastNavigation_;
 };
 
 }  // namespace sandstorm

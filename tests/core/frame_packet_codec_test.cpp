@@ -75,6 +75,22 @@ FramePacket fullPacket() {
   p.viewer.navigation.yawRadians = 0.3f;
   p.viewer.navigation.scale = 0.35f;
   p.fieldBlend = 0.625f;
+  p.tracking.active = true;
+  p.tracking.stale = true;
+  p.tracking.trackerFrame = 987654321u;
+  p.tracking.headTracked = true;
+  p.tracking.head = {{0.1f, -0.2f, 1.65f}, glm::mat3(0.8f, 0.6f, 0, -0.6f, 0.8f, 0, 0, 0, 1)};
+  p.tracking.wand = {.present = true,
+                     .tracked = true,
+                     .pose = {{0.3f, 0.4f, 1.1f}, glm::mat3(1, 0, 0, 0, 0, 1, 0, -1, 0)},
+                     .buttons = 0x80000021u,
+                     .joystick = {-0.5f, 1.0f}};
+  p.wand = {.visible = true,
+            .origin = {0.3f, 0.4f, 1.1f},
+            .end = {0.3f, 1.5f, 1.1f},
+            .target = WandTarget::Menu,
+            .emitter = 3,
+            .holding = true};
   return p;
 }
 
@@ -138,6 +154,8 @@ TEST(FramePacketCodec, EveryMemberSurvivesARoundTrip) {
   EXPECT_EQ(q.viewer.navigation.yawRadians, p.viewer.navigation.yawRadians);
   EXPECT_EQ(q.viewer.navigation.scale, p.viewer.navigation.scale);
   EXPECT_EQ(q.fieldBlend, p.fieldBlend);
+  EXPECT_EQ(q.tracking, p.tracking);
+  EXPECT_EQ(q.wand, p.wand);
   // Encoding the decoded packet gives the same bytes: nothing was lost.
   EXPECT_EQ(encodePacket(q, got), encodePacket(p, refs));
 }

@@ -1,0 +1,148 @@
+#include "app/tracking/dtrack_receiver.h"
+
+#include <arpa/inet.h>
+#include <netinet/in.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cstring>
+#include <vector>
+
+#include "core/tracking/dtrack_parser.h"
+#include "core/util/error.h"
+#include "core/util/log.h"
+
+namespace sandstorm {
+
+double steadySeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+      .count();
+}
+
+namespace {
+
+[[noreturn]] void fail(int fd, const std::string& what) {
+  const std::string why = std::strerror(errno);
+  if (fd >= 0) ::close(fd);
+  throw Error(concat(what, ": ", why));
+}
+
+constexpr int kLoggedDrops = 3;  // reasons logged in full; later drops are counted
+
+}  // namespace
+
+DTrackReceiver::DTrackReceiver(Options options) : options_(std::move(options)) {
+  const std::string where = concat("tracking.port ", options_.port);
+  const int fd = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
+  if (fd < 0) fail(fd, where + ": cannot open a UDP socket");
+  in_addr group{};
+  if (!options_.multicast.empty()) {
+    if (::inet_pton(AF_INET, options_.multicast.c_str(), &group) != 1 ||
+        !IN_MULTICAST(ntohl(group.s_addr))) {
+      ::close(fd);
+      throw Error(concat("tracking.multicast: '", options_.multicast,
+                         "' is not an IPv4 multicast group"));
+    }
+    // Several programs may listen to one multicast stream.
+    const int yes = 1;
+    ::setsockopt(fd, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  }
+  const int size = 1 << 20;  // room for bursts at 300 Hz while a frame stalls
+  ::setsockopt(fd, SOL_SOCKET, SO_RCVBUF, &size, sizeof size);
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(std::uint16_t(options_.port));
+  address.sin_addr.s_addr = htonl(INADDR_ANY);
+  if (::bind(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0)
+    fail(fd, concat("tracking: cannot listen on UDP port ", options_.port,
+                    errno == EADDRINUSE ? " (another program uses it; is a second Sandstorm "
+                                          "running? set [tracking] port)"
+                                        : ""));
+  if (!options_.multicast.empty()) {
+    ip_mreq request{};
+    request.imr_multiaddr = group;
+    request.imr_interface.s_addr = htonl(INADDR_ANY);
+    if (::setsockopt(fd, IPPROTO_IP, IP_ADD_MEMBERSHIP, &request, sizeof request) != 0)
+      fail(fd, concat("tracking: cannot join multicast group ", options_.multicast, " on port ",
+                      options_.port));
+  }
+  socklen_t length = sizeof address;
+  ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length);
+  port_ = ntohs(address.sin_port);
+  socket_ = fd;
+  thread_ = std::thread([this] { run(); });
+  log::info("tracking: listening for DTrack on UDP port ", port_,
+            options_.multicast.empty() ? "" : " (multicast " + options_.multicast + ")");
+}
+
+DTrackReceiver::~DTrackReceiver() {
+  stop_ = true;
+  if (thread_.joinable()) thread_.join();
+  if (socket_ >= 0) ::close(socket_);
+}
+
+void DTrackReceiver::run() {
+  // One byte more than the largest datagram we read: a longer one shows as truncated.
+  std::vector<char> buffer(DTrackLimits::kMaxDatagram + 1);
+  pollfd waiting{socket_, POLLIN, 0};
+  while (!stop_) {
+    const int ready = ::poll(&waiting, 1, 50);  // wake up to notice stop_
+    if (ready <= 0) continue;
+    const ssize_t n = ::recv(socket_, buffer.data(), buffer.size(), MSG_TRUNC | MSG_DONTWAIT);
+    if (n < 0) continue;
+    const double arrival = steadySeconds();
+    if (std::size_t(n) > DTrackLimits::kMaxDatagram) {
+      drop(concat("DTrack datagram: ", n, " bytes exceed the limit of ",
+                  DTrackLimits::kMaxDatagram));
+      continue;
+    }
+    take(std::string_view(buffer.data(), std::size_t(n)), arrival);
+  }
+}
+
+void DTrackReceiver::take(std::string_view datagram, double arrival) {
+  TrackerFrame frame;
+  try {
+    frame = parseDTrack(datagram);
+  } catch (const Error& e) {
+    drop(e.what());
+    return;
+  }
+  std::lock_guard lock(mutex_);
+  ++stats_.received;
+  newest_ = TrackerMeasurement{std::move(frame), stats_.received, arrival};
+}
+
+void DTrackReceiver::drop(const std::string& why) {
+  std::uint64_t dropped;
+  {
+    std::lock_guard lock(mutex_);
+    dropped = ++stats_.dropped;
+    stats_.lastError = why;
+  }
+  if (dropped <= kLoggedDrops)
+    log::warn("tracking: dropped a datagram: ", why,
+              dropped == kLoggedDrops ? " (further drops are counted in the stats)" : "");
+  else
+    log::debug("tracking: dropped a datagram: ", why);
+}
+
+std::optional<TrackerMeasurement> DTrackReceiver::newest() const {
+  std::lock_guard lock(mutex_);
+  return newest_;
+}
+
+TrackerStats DTrackReceiver::stats() const {
+  std::lock_guard lock(mutex_);
+  return stats_;
+}
+
+std::string DTrackReceiver::describe() const {
+  return concat("DTrack on UDP port ", port_,
+                options_.multicast.empty() ? "" : " (multicast " + options_.multicast + ")");
+}
+
+}  // namespace sandstorm

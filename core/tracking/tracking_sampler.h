@@ -1,0 +1,46 @@
+// TrackingSampler: turns the newest tracker measurement into one
+// TrackingSample per frame, on the main context. A measurement is used by the
+// first frame that starts after it arrived (the sampler is called at the start
+// of each frame with whatever the receiver holds then).
+//
+// No fresh measurement of the head body for tracking.stale_ms: the last head
+// pose is held, the sample says stale, and one warning is logged; when
+// measurements return, one info line says so. The wand is held the same way;
+// past stale_ms without a tracked pose it is untracked (its ray disappears),
+// while its buttons follow the newest measurement. Before the first
+// measurement the sample is inactive and the configured head stands in.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+
+#include "core/tracking/tracker_calibration.h"
+
+namespace sandstorm {
+
+// A complete tracker frame as a receiver keeps it.
+struct TrackerMeasurement {
+  TrackerFrame frame;
+  std::uint64_t sequence = 0;   // counts received frames: a new number is a new measurement
+  double arrivalSeconds = 0.0;  // on the clock the sampler is given
+};
+
+class TrackingSampler {
+ public:
+  explicit TrackingSampler(const TrackingSpec& spec);
+
+  TrackingSample sample(const TrackerMeasurement* newest, double nowSeconds);
+  bool lost() const { return lost_; }
+
+ private:
+  TrackingSpec spec_;
+  TrackerCalibration calibration_;
+  std::uint64_t lastSequence_ = 0;
+  bool any_ = false;
+  TrackingSample held_;
+  double headSeconds_ = 0.0, wandSeconds_ = 0.0;
+  bool haveHead_ = false, haveWand_ = false;
+  bool lost_ = false;
+};
+
+}  // namespace sandstorm

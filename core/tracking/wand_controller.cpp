@@ -1,0 +1,161 @@
+#include "core/tracking/wand_controller.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+glm::mat3 rotationZ(float radians) {
+  const float c = std::cos(radians), s = std::sin(radians);
+  return glm::mat3(c, s, 0.0f, -s, c, 0.0f, 0.0f, 0.0f, 1.0f);
+}
+
+float deadZone(float v, float zone) {
+  if (std::abs(v) <= zone) return 0.0f;
+  return std::copysign((std::abs(v) - zone) / (1.0f - zone), v);
+}
+
+}  // namespace
+
+glm::vec2 wallPixel(const WallSpec& wall, glm::ivec2 size, glm::vec2 uv) {
+  glm::vec2 view(size);
+  if (wall.stereo == StereoMode::SideBySide) view.x *= 0.5f;
+  if (wall.stereo == StereoMode::TopBottom) view.y *= 0.5f;
+  return {uv.x * view.x, (1.0f - uv.y) * view.y};
+}
+
+WandController::WandController(const TrackingSpec& tracking, const NavigationSpec& navigation)
+    : tracking_(tracking), navigation_(navigation) {}
+
+WandActions WandController::update(const TrackingSample& sample, const WandScene& scene,
+                                   float dt) {
+  WandActions out;
+  const WandSample& wand = sample.wand;
+  const std::uint32_t pressedNow = wand.present ? wand.buttons : 0u;
+  const auto edge = [&](int button) {
+    return button >= 0 && button < 32 && (pressedNow >> unsigned(button) & 1u) &&
+           !(previousButtons_ >> unsigned(button) & 1u);
+  };
+  const bool grabDown = wand.pressed(tracking_.grabButton);
+  const ParticleState* state = scene.state;
+  const int emitterCount = state ? int(state->emitters.size()) : 0;
+  if (held_ && (held_->emitter >= emitterCount || !grabDown)) held_.reset();
+
+  if (!wand.tracked) {
+    held_.reset();
+    previousButtons_ = pressedNow;
+    return out;
+  }
+
+  // The ray, and the nearest thing on it.
+  const Ray ray{wand.pose.position, glm::normalize(wand.pose.forward())};
+  out.ray.visible = true;
+  out.ray.origin = ray.origin;
+  float nearest = tracking_.rayLength;
+  std::optional<glm::vec2> menuPixel;
+  if (scene.menu) {
+    if (const std::optional<WallHit> hit = hitWall(ray, scene.menu->wall.corners)) {
+      const glm::vec2 pixel = wallPixel(scene.menu->wall, scene.menu->imageSize, hit->uv);
+      if (hit->t < nearest && glm::all(glm::greaterThanEqual(pixel, scene.menu->panelMin)) &&
+          glm::all(glm::lessThanEqual(pixel, scene.menu->panelMax))) {
+        nearest = hit->t;
+        menuPixel = pixel;
+        out.ray.target = WandTarget::Menu;
+      }
+    }
+  }
+  for (int i = 0; i < emitterCount && !held_; ++i) {
+    const glm::vec3 handle =
+        glm::vec3(scene.navigation.worldToRoom() * glm::vec4(state->emitters[std::size_t(i)].position, 1.0f));
+    if (const std::optional<float> t = hitSphere(ray, handle, tracking_.grabRadius);
+        t && *t < nearest) {
+      nearest = *t;
+      menuPixel.reset();
+      out.ray.target = WandTarget::Emitter;
+      out.ray.emitter = i;
+    }
+  }
+  if (scene.ground && !held_)
+    if (const std::optional<float> t = hitGround(ray, scene.navigation, *scene.ground, nearest);
+        t && *t < nearest) {
+      nearest = *t;
+      menuPixel.reset();
+      out.ray.target = WandTarget::Ground;
+      out.ray.emitter = -1;
+    }
+  out.ray.end = ray.at(nearest);
+
+  // The menu takes the trigger while the ray is on it.
+  if (menuPixel) out.menu = WandActions::MenuPointer{*menuPixel, wand.pressed(tracking_.triggerButton)};
+
+  // Grab and carry.
+  const glm::mat4 wandFrame(glm::vec4(wand.pose.axes[0], 0.0f), glm::vec4(wand.pose.axes[1], 0.0f),
+                            glm::vec4(wand.pose.axes[2], 0.0f), glm::vec4(wand.pose.position, 1.0f));
+  if (!held_ && !menuPixel && edge(tracking_.grabButton) && out.ray.target == WandTarget::Emitter) {
+    const glm::vec3 room = glm::vec3(
+        scene.navigation.worldToRoom() *
+        glm::vec4(state->emitters[std::size_t(out.ray.emitter)].position, 1.0f));
+    held_ = Held{out.ray.emitter, glm::vec3(glm::inverse(wandFrame) * glm::vec4(room, 1.0f))};
+    // What the carry below computes for the wand standing still: no change until it moves.
+    held_->lastWorld =
+        scene.navigation.roomToWorld(glm::vec3(wandFrame * glm::vec4(held_->local, 1.0f)));
+  }
+  if (held_) {
+    const glm::vec3 room = glm::vec3(wandFrame * glm::vec4(held_->local, 1.0f));
+    const glm::vec3 world = scene.navigation.roomToWorld(room);
+    if (world != held_->lastWorld) {
+      out.sets.emplace_back(concat("emitter.", held_->emitter, ".position"), world);
+      held_->lastWorld = world;
+    }
+    out.ray.holding = true;
+    out.ray.emitter = held_->emitter;
+    out.ray.target = WandTarget::Emitter;
+    out.ray.end = room;
+  }
+
+  // The thesis's throttle: tilt up (towards the user) raises it.
+  if (state && state->helicopter.enabled && state->helicopter.wandThrottle && !held_ &&
+      !menuPixel) {
+    const float tilt = glm::degrees(std::asin(std::clamp(ray.direction.z, -1.0f, 1.0f)));
+    const float beyond = std::max(std::abs(tilt) - kTiltDeadZoneDeg, 0.0f) /
+                         (kTiltFullDeg - kTiltDeadZoneDeg);
+    throttleDrift_ += std::copysign(std::min(beyond, 1.0f), tilt) * kThrottleRate * dt;
+    const float current = state->helicopter.throttle;
+    const float target = std::clamp(current + throttleDrift_, 0.0f, 1.0f);
+    const float stepped = std::round(target / kThrottleStep) * kThrottleStep;
+    if (std::abs(stepped - current) >= 0.5f * kThrottleStep) {
+      out.sets.emplace_back("helicopter.throttle", std::clamp(stepped, 0.0f, 1.0f));
+      throttleDrift_ = 0.0f;
+    } else if (target <= 0.0f || target >= 1.0f) {
+      throttleDrift_ = 0.0f;  // pinned at an end: nothing to store up
+    }
+  } else {
+    throttleDrift_ = 0.0f;
+  }
+
+  // Flying and turning with the joystick.
+  const float fly = deadZone(wand.joystick.y, kJoystickDeadZone);
+  const float turn = deadZone(wand.joystick.x, kJoystickDeadZone);
+  if ((fly != 0.0f || turn != 0.0f) && dt > 0.0f) {
+    Navigation n = scene.navigation;
+    glm::vec3 ahead(ray.direction.x, ray.direction.y, 0.0f);
+    if (glm::length(ahead) > 1e-3f) n.offset -= glm::normalize(ahead) * (fly * navigation_.flySpeed * dt);
+    if (turn != 0.0f) {
+      // Joystick right turns the user right: the world turns the other way about the head.
+      const float a = glm::radians(turn * navigation_.turnSpeedDeg * dt);
+      const glm::vec3 pivot(sample.head.position.x, sample.head.position.y, 0.0f);
+      n.offset = pivot + rotationZ(a) * (n.offset - pivot);
+      n.yawRadians += a;
+    }
+    out.navigation = n;
+  }
+  previousButtons_ = pressedNow;
+  return out;
+}
+
+}  // namespace sandstorm

@@ -1,0 +1,95 @@
+// WandController: what the tracked wand does, decided once a frame on the
+// main context from that frame's TrackingSample (so replays and every wall
+// agree). It casts the ray (wand_ray.h) and turns buttons, tilt and joystick
+// into requests:
+//
+// - menu: when the ray meets the menu panel on its wall, the hit in the wall
+//   image's pixels and the trigger drive the menu's mouse;
+// - grab: the grab button on an emitter's handle picks the nearest one along
+//   the ray; it then moves rigidly with the wand (emitter.N.position) until
+//   the button is let go;
+// - throttle (the thesis's helicopter control, helicopter.wand_throttle): the
+//   wand tilted up, towards the user, raises helicopter.throttle, tilted down
+//   lowers it, at a rate that grows with the tilt past a dead zone; the
+//   throttle moves in steps of kThrottleStep so the wash is re-baked only then;
+// - flying ([navigation] fly_speed, turn_speed_deg): the joystick's y flies
+//   along the wand's horizontal direction, its x turns the world about the
+//   head's vertical axis.
+//
+// Every request is an attribute change or a new navigation the caller hands
+// to the main context, so each is validated, recorded and replayed.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "core/config/app_config.h"
+#include "core/sim/attribute_table.h"
+#include "core/sim/particle_state.h"
+#include "core/tracking/tracking_sample.h"
+#include "core/tracking/wand_ray.h"
+
+namespace sandstorm {
+
+// The menu panel as the wand can reach it: on a wall, at a pixel rectangle
+// of that wall's image (the overlay's own coordinates, y down).
+struct WandMenuTarget {
+  WallSpec wall;         // corners, image size, stereo layout
+  glm::ivec2 imageSize;  // the wall image's pixels
+  glm::vec2 panelMin{0.0f}, panelMax{0.0f};
+};
+
+// What the wand can meet this frame.
+struct WandScene {
+  const ParticleState* state = nullptr;  // emitters (world), helicopter
+  Navigation navigation;
+  const HeightMap* ground = nullptr;  // null: none
+  std::optional<WandMenuTarget> menu;
+};
+
+struct WandActions {
+  WandRay ray;
+  struct MenuPointer {
+    glm::vec2 pixel{0.0f};
+    bool down = false;
+  };
+  std::optional<MenuPointer> menu;
+  std::vector<std::pair<std::string, AttributeValue>> sets;  // emitter moves, throttle
+  std::optional<Navigation> navigation;                       // flying and turning
+};
+
+// A point on a wall in that wall's image pixels (y down), for the stereo
+// layout that draws the overlay (side-by-side: the left half; top-bottom: the top).
+glm::vec2 wallPixel(const WallSpec& wall, glm::ivec2 imageSize, glm::vec2 uv);
+
+class WandController {
+ public:
+  static constexpr float kThrottleStep = 0.02f;
+  static constexpr float kTiltDeadZoneDeg = 15.0f;
+  static constexpr float kTiltFullDeg = 50.0f;     // full rate from here
+  static constexpr float kThrottleRate = 0.4f;     // per second at full tilt
+  static constexpr float kJoystickDeadZone = 0.1f;
+
+  WandController(const TrackingSpec& tracking, const NavigationSpec& navigation);
+
+  WandActions update(const TrackingSample& sample, const WandScene& scene, float dt);
+
+  int holding() const { return held_ ? held_->emitter : -1; }
+
+ private:
+  struct Held {
+    int emitter = -1;
+    glm::vec3 local{0.0f};  // the emitter in the wand's frame (room metres)
+    glm::vec3 lastWorld{0.0f};
+  };
+
+  TrackingSpec tracking_;
+  NavigationSpec navigation_;
+  std::uint32_t previousButtons_ = 0;
+  std::optional<Held> held_;
+  float throttleDrift_ = 0.0f;
+};
+
+}  // namespace sandstorm
