@@ -307,6 +307,11 @@ TrackerFrame parseDTrack(std::string_view d) {
     any = true;
     LineReader r(line, number);
     const std::string_view type = r.word("a line type");
+    if (type.size() > 16 || !std::all_of(type.begin(), type.end(), [](char c) {
+          return (c >= 'a' && c <= 'z') || (c >= '0' && c <= '9');
+        }))
+      r.fail(concat("'", type.substr(0, 24), type.size() > 24 ? "...'" : "'",
+                    " is not a DTrack line type (lower-case letters and digits)"));
     r.setType(type);
     if (std::find(seen.begin(), seen.end(), type) != seen.end())
       r.fail("a second line of this type in one datagram");

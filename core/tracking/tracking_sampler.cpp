@@ -18,6 +18,7 @@ TrackingSample TrackingSampler::sample(const TrackerMeasurement* newest, double 
       headSeconds_ = newest->arrivalSeconds;
     }
     if (const std::optional<WandSample> wand = calibration_.wand(f)) {
+      flystickSeconds_ = newest->arrivalSeconds;
       held_.wand.present = true;
       held_.wand.buttons = wand->buttons;
       held_.wand.joystick = wand->joystick;
@@ -34,6 +35,10 @@ TrackingSample TrackingSampler::sample(const TrackerMeasurement* newest, double 
   s.headTracked = haveHead_;
   s.stale = any_ && (!haveHead_ || now - headSeconds_ > stale);
   s.wand.tracked = haveWand_ && now - wandSeconds_ <= stale;
+  if (s.wand.present && now - flystickSeconds_ > stale) {
+    s.wand.present = false;  // the radio went quiet too: no button stays held
+    s.wand.buttons = 0;
+  }
   if (!s.wand.tracked) s.wand.joystick = glm::vec2(0.0f);  // no flying on a lost wand
   if (s.stale && !lost_)
     log::warn("tracking lost: no measurement of head body ", spec_.headBody, " for more than ",

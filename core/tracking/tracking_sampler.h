@@ -7,7 +7,8 @@
 // pose is held, the sample says stale, and one warning is logged; when
 // measurements return, one info line says so. The wand is held the same way;
 // past stale_ms without a tracked pose it is untracked (its ray disappears),
-// while its buttons follow the newest measurement. Before the first
+// while its buttons follow the newest measurement, and read as released once
+// the Flystick itself has not been heard of for stale_ms. Before the first
 // measurement the sample is inactive and the configured head stands in.
 #pragma once
 
@@ -38,7 +39,7 @@ class TrackingSampler {
   std::uint64_t lastSequence_ = 0;
   bool any_ = false;
   TrackingSample held_;
-  double headSeconds_ = 0.0, wandSeconds_ = 0.0;
+  double headSeconds_ = 0.0, wandSeconds_ = 0.0, flystickSeconds_ = 0.0;
   bool haveHead_ = false, haveWand_ = false;
   bool lost_ = false;
 };

@@ -125,14 +125,14 @@ WandActions WandController::update(const TrackingSample& sample, const WandScene
     const float beyond = std::max(std::abs(tilt) - kTiltDeadZoneDeg, 0.0f) /
                          (kTiltFullDeg - kTiltDeadZoneDeg);
     throttleDrift_ += std::copysign(std::min(beyond, 1.0f), tilt) * kThrottleRate * dt;
+    // Whole steps only, so the wash is re-baked a step at a time; the rest stays stored up.
     const float current = state->helicopter.throttle;
-    const float target = std::clamp(current + throttleDrift_, 0.0f, 1.0f);
-    const float stepped = std::round(target / kThrottleStep) * kThrottleStep;
-    if (std::abs(stepped - current) >= 0.5f * kThrottleStep) {
-      out.sets.emplace_back("helicopter.throttle", std::clamp(stepped, 0.0f, 1.0f));
-      throttleDrift_ = 0.0f;
-    } else if (target <= 0.0f || target >= 1.0f) {
-      throttleDrift_ = 0.0f;  // pinned at an end: nothing to store up
+    const float steps = std::trunc(throttleDrift_ / kThrottleStep);
+    if (steps != 0.0f) {
+      const float next = std::clamp(current + steps * kThrottleStep, 0.0f, 1.0f);
+      throttleDrift_ -= steps * kThrottleStep;
+      if (next != current) out.sets.emplace_back("helicopter.throttle", next);
+      if (next <= 0.0f || next >= 1.0f) throttleDrift_ = 0.0f;  // pinned: store nothing up
     }
   } else {
     throttleDrift_ = 0.0f;

@@ -218,3 +218,70 @@ TEST(Config, FieldPlacementTurnsAsConfigured) {
 
 }  // namespace
 }  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+TEST(Config, ReadsTracking) {
+  const AppConfig c = parseConfig(R"([tracking]
+source = "dtrack"
+port = 5001
+multicast = "239.1.2.3"
+head_body = 3
+wand_flystick = 1
+offset = [0.0, 1.5, 0.0]
+rotation_deg = [90.0, 0.0, 0.0]
+stale_ms = 100
+eye_offset = [0.0, 0.08, -0.05]
+head_right = [0, 0, -2]
+head_up = [0, 1, 0]
+grab_button = 0
+
+[navigation]
+fly_speed = 3.0
+turn_speed_deg = 30.0
+)" + kWall,
+                                  "test.toml");
+  EXPECT_EQ(c.tracking.source, TrackingSource::DTrack);
+  EXPECT_EQ(c.tracking.port, 5001);
+  EXPECT_EQ(c.tracking.multicast, "239.1.2.3");
+  EXPECT_EQ(c.tracking.headBody, 3);
+  EXPECT_EQ(c.tracking.wandFlystick, 1);
+  EXPECT_EQ(c.tracking.offset, glm::vec3(0, 1.5f, 0));
+  EXPECT_NEAR((c.tracking.rotation * glm::vec3(0, 1, 0)).z, 1.0f, 1e-6f);  // y up becomes z up
+  EXPECT_EQ(c.tracking.staleMs, 100.0f);
+  EXPECT_EQ(c.tracking.headRight, glm::vec3(0, 0, -1));  // normalised
+  EXPECT_EQ(c.tracking.grabButton, 0);
+  EXPECT_EQ(c.navigation.flySpeed, 3.0f);
+  EXPECT_EQ(c.navigation.turnSpeedDeg, 30.0f);
+}
+
+TEST(Config, BadTrackingIsRefusedWithItsLineAndKey) {
+  EXPECT_ERROR("[tracking]\nsource = \"vrpn\"\n" + kWall, "test.toml:2", "tracking.source",
+               "dtrack");
+  EXPECT_ERROR("[tracking]\nport = 70000\n" + kWall, "test.toml:2", "tracking.port", "1..65535");
+  EXPECT_ERROR("[tracking]\nmulticast = \"10.0.0.1\"\n" + kWall, "tracking.multicast",
+               "multicast group");
+  EXPECT_ERROR("[tracking]\nmulticast = \"239.1.2\"\n" + kWall, "tracking.multicast");
+  EXPECT_ERROR("[tracking]\nstale_ms = 0\n" + kWall, "tracking.stale_ms");
+  EXPECT_ERROR("[tracking]\nhead_right = [0, 0, 0]\n" + kWall, "test.toml:2", "tracking.head_right",
+               "non-zero");
+  EXPECT_ERROR("[tracking]\nhead_up = [1, 0, 0]\n" + kWall, "tracking.head_right/head_up",
+               "perpendicular");
+  EXPECT_ERROR("[tracking]\neye_offset = [5, 0, 0]\n" + kWall, "tracking.eye_offset");
+  EXPECT_ERROR("[tracking]\ntrigger_button = 40\n" + kWall, "tracking.trigger_button", "0..31");
+  EXPECT_ERROR("[tracking]\nsorce = \"dtrack\"\n" + kWall, "test.toml:2", "tracking.sorce",
+               "unknown key");
+  EXPECT_ERROR("[navigation]\nfly_speed = -1\n" + kWall, "navigation.fly_speed");
+  EXPECT_ERROR("[head]\nright = [0, 2, 0]\n" + kWall, "head.right", "unit vector");
+  EXPECT_ERROR("[head]\nright = [0, 1, 0]\nyaw_deg = 3\n" + kWall, "not both");
+}
+
+TEST(Config, AHeadCanBeGivenByItsEyesAxis) {
+  const AppConfig c = parseConfig("[head]\nright = [0.6, 0.8, 0.0]\n" + kWall, "test.toml");
+  ASSERT_TRUE(c.head.right);
+  EXPECT_EQ(*c.head.right, glm::vec3(0.6f, 0.8f, 0.0f));
+}
+
+}  // namespace
+}  // namespace sandstorm

@@ -52,5 +52,59 @@ TEST(SessionLog, BadLinesNameTheirLine) {
   EXPECT_NE(errorOf("5 set sim.maximum lots\n").find("s.log:1"), std::string::npos);
 }
 
+TEST(SessionLog, TrackingAndNavigationReadBackBitForBit) {
+  TrackingSample s;
+  s.active = true;
+  s.stale = true;
+  s.trackerFrame = 4000000000u;
+  s.headTracked = true;
+  s.head = {{0.1f + 1e-7f, -1.0f / 3.0f, 1.7f}, glm::mat3(0.6f, 0.8f, 0, -0.8f, 0.6f, 0, 0, 0, 1)};
+  s.wand = {.present = true,
+            .tracked = true,
+            .pose = {{1e-30f, -2.5f, 3.25f}, glm::mat3(1.0f)},
+            .buttons = 0x21,
+            .joystick = {-0.123456789f, 1.0f}};
+  TrackingSample noHead;
+  noHead.active = true;
+  noHead.trackerFrame = 7;
+  const Navigation n{{-1.0f, 2.6f, 1e-8f}, 0.1f, 0.35f};
+  const std::string text = "3 " + formatTracking(s) + "\n4 " + formatTracking(noHead) + "\n5 " +
+                           formatNavigation(n) + "\n6 set render.size 0.2\n";
+  const SessionLog log = parseSession(text, "log");
+  ASSERT_EQ(log.tracking.size(), 2u);
+  EXPECT_EQ(log.tracking[0].frame, 3u);
+  EXPECT_EQ(log.tracking[0].sample, s);  // every float exactly
+  EXPECT_EQ(log.tracking[1].sample, noHead);
+  ASSERT_EQ(log.navigation.size(), 1u);
+  EXPECT_EQ(log.navigation[0].frame, 5u);
+  EXPECT_EQ(log.navigation[0].navigation.offset, n.offset);
+  EXPECT_EQ(log.navigation[0].navigation.yawRadians, n.yawRadians);
+  EXPECT_EQ(log.navigation[0].navigation.scale, n.scale);
+  EXPECT_EQ(log.changes.size(), 1u);
+}
+
+TEST(SessionLog, BadTrackingLinesNameTheirLine) {
+  const auto errorOf = [](const std::string& text) {
+    try {
+      parseSession(text, "s.log");
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_NE(errorOf("1 track frame=1 stale=0 head=1,2,3 wand=-\n").find("s.log:1: track head"),
+            std::string::npos);
+  EXPECT_NE(errorOf("1 track frame=1 stale=2 head=- wand=-\n").find("0 or 1"), std::string::npos);
+  EXPECT_NE(errorOf("1 track frame=1 head=- wand=-\n").find("expected frame=, stale="),
+            std::string::npos);
+  EXPECT_NE(errorOf("1 track frame=1 stale=0 head=- wand=- x=1\n").find("unknown item"),
+            std::string::npos);
+  EXPECT_NE(errorOf("1 track frame=1 stale=0 head=nan,0,0,1,0,0,0,1,0,0,0,1 wand=-\n")
+                .find("track head"),
+            std::string::npos);
+  EXPECT_NE(errorOf("1 navigate 1,2,3,0,0\n").find("positive scale"), std::string::npos);
+  EXPECT_NE(errorOf("1 navigate 1,2,3\n").find("expected 5"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace sandstorm
