@@ -12,8 +12,12 @@ bool TrackingInput::wanted(const TrackingSpec& tracking,
 }
 
 TrackingInput::TrackingInput(const TrackingSpec& tracking, const NavigationSpec& navigation,
-                             std::vector<ScheduledTracking> replayed)
-    : sampler_(tracking), wand_(tracking, navigation), replayed_(std::move(replayed)) {
+                             std::vector<ScheduledTracking> replayed,
+                             std::unique_ptr<TrackerSource> source)
+    : source_(std::move(source)),
+      sampler_(tracking),
+      wand_(tracking, navigation),
+      replayed_(std::move(replayed)) {
   if (!replayed_.empty()) {
     if (tracking.source == TrackingSource::DTrack)
       log::info("tracking: replaying the session's recorded tracking; UDP port ", tracking.port,
@@ -24,7 +28,7 @@ TrackingInput::TrackingInput(const TrackingSpec& tracking, const NavigationSpec&
     throw Error(concat("tracking.source = \"replay\" (line ", tracking.line,
                        "): expected --replay FILE with a session recorded with tracking "
                        "(its 'track' lines)"));
-  if (tracking.source == TrackingSource::DTrack)
+  if (tracking.source == TrackingSource::DTrack && !source_)
     source_ = std::make_unique<DTrackReceiver>(
         DTrackReceiver::Options{.port = tracking.port, .multicast = tracking.multicast});
 }

@@ -32,9 +32,11 @@ struct TrackingStatus {
 class TrackingInput {
  public:
   // `replayed`: the tracking samples of a replayed session (may be empty).
+  // `source`: a tracker already open (tests); null: opens what tracking.source names.
   // Throws Error when the source cannot start (the port, or source = replay without samples).
   TrackingInput(const TrackingSpec& tracking, const NavigationSpec& navigation,
-                std::vector<ScheduledTracking> replayed);
+                std::vector<ScheduledTracking> replayed,
+                std::unique_ptr<TrackerSource> source = nullptr);
   // Whether a run with this configuration and replay needs one.
   static bool wanted(const TrackingSpec& tracking, const std::vector<ScheduledTracking>& replayed);
 

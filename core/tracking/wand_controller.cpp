@@ -129,7 +129,10 @@ WandActions WandController::update(const TrackingSample& sample, const WandScene
     const float current = state->helicopter.throttle;
     const float steps = std::trunc(throttleDrift_ / kThrottleStep);
     if (steps != 0.0f) {
-      const float next = std::clamp(current + steps * kThrottleStep, 0.0f, 1.0f);
+      // On the grid of steps, so repeated steps land on 0 and 1 exactly.
+      const float next = std::clamp(
+          std::round((current + steps * kThrottleStep) / kThrottleStep) * kThrottleStep, 0.0f,
+          1.0f);
       throttleDrift_ -= steps * kThrottleStep;
       if (next != current) out.sets.emplace_back("helicopter.throttle", next);
       if (next <= 0.0f || next >= 1.0f) throttleDrift_ = 0.0f;  // pinned: store nothing up
