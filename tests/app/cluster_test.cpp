@@ -12,6 +12,7 @@
 #include <set>
 
 #include "tests/app/run_process.h"
+#include "tests/app/tracked_run.h"
 
 namespace sandstorm {
 namespace {
@@ -25,16 +26,19 @@ struct MpiRun {
   double seconds = 0.0;
 };
 
+std::string mpirunCommand(const std::string& apps) {
+  return std::string("cd '") + SANDSTORM_SOURCE_DIR +
+         "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 '" + SANDSTORM_MPIRUN +
+         "' --oversubscribe --mca btl self,tcp --mca btl_tcp_if_include lo"
+         " --mca oob_tcp_if_include lo " +
+         apps + " 2>&1";
+}
+
 // `apps`: mpirun's "-np N program args [: -np M program args]". As root,
 // mpirun needs consent; --oversubscribe: three ranks on two cores. TCP on the
 // loopback interface stands in for a cluster's network.
 MpiRun mpirun(const std::string& apps) {
-  const std::string cmd = std::string("cd '") + SANDSTORM_SOURCE_DIR +
-                          "' && OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 '" +
-                          SANDSTORM_MPIRUN +
-                          "' --oversubscribe --mca btl self,tcp --mca btl_tcp_if_include lo"
-                          " --mca oob_tcp_if_include lo " +
-                          apps + " 2>&1";
+  const std::string cmd = mpirunCommand(apps);
   const auto start = std::chrono::steady_clock::now();
   const test::ProcessResult run = test::runCommand(cmd);
   MpiRun r;
@@ -153,6 +157,46 @@ TEST(Cluster, HeadlessPngsEqualTheSingleProcessOnes) {
     ASSERT_FALSE(a.empty()) << wall;
     EXPECT_TRUE(a == b) << wall << ".png differs between one process and three ranks";
   }
+}
+
+// A tracked CAVE on three ranks: only rank 0 listens to the tracker; every
+// rank's walls draw what one process replaying rank 0's recorded session
+// draws, image for image, with the same particles every frame.
+TEST(Cluster, TrackedRanksDrawWhatOneProcessReplaysWithoutTheTracker) {
+  const auto dir = test::scratchDir("cluster-tracked");
+  const int port = test::freeUdpPort();
+  const auto config = test::trackedConfig(dir, "tests/data/tracked-cluster.toml", port);
+  const std::string args = "--config " + config.string() + " --frames 90 --screenshot-every 30";
+  const test::TrackedResult cluster = test::runTrackedCommand(
+      mpirunCommand("-np 3 '" + std::string(SANDSTORM_BINARY) + "' " + args + " --screenshot " +
+                    (dir / "three").string() + " --record " + (dir / "session.log").string() +
+                    " --hash-log " + (dir / "rank{rank}.txt").string()),
+      "--port " + std::to_string(port) + " --rate 250 --duration 60", dir);
+  ASSERT_EQ(cluster.exitCode, 0) << cluster.output;
+  EXPECT_EQ(count(cluster.output, "listening for DTrack"), 1) << cluster.output;  // rank 0 only
+  const auto one = runSandstorm(args + " --screenshot " + (dir / "one").string() + " --replay " +
+                                (dir / "session.log").string() + " --hash-log " +
+                                (dir / "one.txt").string());
+  ASSERT_EQ(one.exitCode, 0) << one.output;
+  int tracked = 0;
+  for (const std::string& line : readLines(dir / "session.log"))
+    tracked += line.find(" track ") != std::string::npos ? 1 : 0;
+  EXPECT_GT(tracked, 10) << "the session recorded no tracking";
+  for (const std::string wall : {"front", "left", "right", "floor"})
+    for (const std::string frame : {"_0", "_30", "_60", ""}) {
+      const std::string a = readBytes(dir / "one" / (wall + frame + ".png"));
+      ASSERT_FALSE(a.empty()) << wall << frame;
+      EXPECT_TRUE(a == readBytes(dir / "three" / (wall + frame + ".png")))
+          << wall << frame << ".png differs between three ranks and one process";
+    }
+  const auto reference = hashLines(dir / "one.txt");
+  std::size_t compared = 0;
+  for (int rank = 0; rank < 3; ++rank)
+    for (const auto& [key, line] : hashLines(dir / ("rank" + std::to_string(rank) + ".txt"))) {
+      EXPECT_EQ(line, reference.at(key)) << "rank " << rank;
+      ++compared;
+    }
+  EXPECT_EQ(compared, reference.size());
 }
 
 TEST(Cluster, AWallOnAMissingRankFailsBeforeAnythingStarts) {

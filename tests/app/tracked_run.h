@@ -52,12 +52,11 @@ struct TrackedResult {
   std::string simOutput;
 };
 
-inline TrackedResult runTracked(const std::string& args, const std::string& simArgs,
-                                const std::filesystem::path& dir) {
+// `command`: a whole shell command line that runs sandstorm (with 2>&1), e.g. through mpirun.
+inline TrackedResult runTrackedCommand(const std::string& command, const std::string& simArgs,
+                                       const std::filesystem::path& dir) {
   TrackedResult r;
-  const std::string cmd = std::string("cd '") + SANDSTORM_SOURCE_DIR + "' && '" +
-                          SANDSTORM_BINARY + "' " + args + " 2>&1";
-  FILE* app = popen(cmd.c_str(), "r");
+  FILE* app = popen(command.c_str(), "r");
   if (!app) return r;
   const std::filesystem::path pidFile = dir / "sim.pid", simLog = dir / "sim.log";
   bool started = false;
@@ -82,6 +81,13 @@ inline TrackedResult runTracked(const std::string& args, const std::string& simA
     r.simOutput.assign(std::istreambuf_iterator<char>(log), {});
   }
   return r;
+}
+
+inline TrackedResult runTracked(const std::string& args, const std::string& simArgs,
+                                const std::filesystem::path& dir) {
+  return runTrackedCommand(std::string("cd '") + SANDSTORM_SOURCE_DIR + "' && '" +
+                               SANDSTORM_BINARY + "' " + args + " 2>&1",
+                           simArgs, dir);
 }
 
 }  // namespace sandstorm::test
