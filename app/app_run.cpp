@@ -248,10 +248,8 @@ void AppRun::track(float dt) {
   if (tracking_) {
     sample = tracking_->sample(frame);
     const ParticleState state = main_.pendingState();
-    const WandScene scene{.state = &state,
-                          .navigation = navigation_,
-                          .ground = terrain_.get(),
-                          .menu = menuTarget()};
+    const WandScene scene{
+        .state = &state, .navigation = navigation_, .ground = terrain_.get(), .menu = menuTarget()};
     WandActions actions = tracking_->wand(sample, scene, dt);
     ray = actions.ray;
     if (!tracking_->replaying()) {
@@ -297,8 +295,8 @@ void AppRun::showMenu(float dt) {
   }
   if (tracking_) {
     const TrackingStatus t = tracking_->status();
-    stats.tracking = MenuTrackingStats{t.source, t.stats.received, t.stats.dropped, t.waiting,
-                                       t.lost, t.trackerFrame, t.stats.lastError};
+    stats.tracking = MenuTrackingStats{t.source, t.stats.received, t.stats.dropped,  t.waiting,
+                                       t.lost,   t.trackerFrame,   t.stats.lastError};
   }
   menu_->frame(main_.nextFrame(), dt, stats);
 }

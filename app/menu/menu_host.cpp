@@ -33,7 +33,8 @@ void MenuHost::frame(std::uint32_t frame, float dt, const MenuStats& stats) {
   if (wand_) {
     session_.injectMouse(wand_->first, wand_->second);
   } else if (wandPointed_) {
-    session_.injectMouse(glm::vec2(-1e9f), false);  // the wand left the panel: let go, hover nothing
+    session_.injectMouse(glm::vec2(-1e9f),
+                         false);  // the wand left the panel: let go, hover nothing
   }
   wandPointed_ = wand_.has_value();
   wand_.reset();

@@ -45,7 +45,7 @@ class MenuHost {
   std::optional<MenuScript> script_;
   std::optional<std::pair<glm::vec2, bool>> wand_;  // this frame's wand pointer
   bool wandPointed_ = false;                        // the wand drove the mouse last frame
-  std::unique_ptr<UiRenderer> renderer_;  // operator window only, on this thread
+  std::unique_ptr<UiRenderer> renderer_;            // operator window only, on this thread
   mutable std::mutex mutex_;
   std::shared_ptr<const UiDrawData> latest_;
 };

@@ -72,8 +72,8 @@ int main(int argc, char** argv) {
   }
 
   try {
-    const TrackerScript script = pathFile.empty() ? TrackerScript::builtIn()
-                                                  : TrackerScript::load(pathFile);
+    const TrackerScript script =
+        pathFile.empty() ? TrackerScript::builtIn() : TrackerScript::load(pathFile);
     addrinfo hints{};
     hints.ai_family = AF_INET;
     hints.ai_socktype = SOCK_DGRAM;
@@ -99,8 +99,8 @@ int main(int argc, char** argv) {
     for (std::uint64_t i = 0; !interrupted; ++i) {
       const double t = double(i) / rate;
       if (duration > 0.0 && t >= duration) break;
-      std::this_thread::sleep_until(start + std::chrono::duration_cast<std::chrono::nanoseconds>(
-                                                period * double(i)));
+      std::this_thread::sleep_until(
+          start + std::chrono::duration_cast<std::chrono::nanoseconds>(period * double(i)));
       TrackerFrame frame = script.at(t, firstFrame + std::uint32_t(i));
       if (jitter > 0.0) {
         for (TrackedBody& b : frame.bodies)
@@ -118,8 +118,8 @@ int main(int argc, char** argv) {
         ++bad;
       }
       if (print) std::fwrite(datagram.data(), 1, datagram.size(), stdout);
-      if (::sendto(fd, datagram.data(), datagram.size(), 0, target->ai_addr,
-                   target->ai_addrlen) >= 0)
+      if (::sendto(fd, datagram.data(), datagram.size(), 0, target->ai_addr, target->ai_addrlen) >=
+          0)
         ++sent;
     }
     ::close(fd);

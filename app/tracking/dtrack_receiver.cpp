@@ -18,8 +18,7 @@
 namespace sandstorm {
 
 double steadySeconds() {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-      .count();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
 namespace {
@@ -43,8 +42,8 @@ DTrackReceiver::DTrackReceiver(Options options) : options_(std::move(options)) {
     if (::inet_pton(AF_INET, options_.multicast.c_str(), &group) != 1 ||
         !IN_MULTICAST(ntohl(group.s_addr))) {
       ::close(fd);
-      throw Error(concat("tracking.multicast: '", options_.multicast,
-                         "' is not an IPv4 multicast group"));
+      throw Error(
+          concat("tracking.multicast: '", options_.multicast, "' is not an IPv4 multicast group"));
     }
     // Several programs may listen to one multicast stream.
     const int yes = 1;

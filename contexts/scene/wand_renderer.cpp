@@ -50,9 +50,9 @@ void WandRenderer::draw() const {
   for (std::size_t i = 0; i < emitters_.size(); ++i) {
     const glm::vec3 room = glm::vec3(worldToRoom * glm::vec4(emitters_[i].position, 1.0f));
     const bool chosen = int(i) == ray_.emitter;
-    box(cubeAt(room, kHandleSize),
-        ray_.holding && chosen ? glm::vec3(1.0f, 0.45f, 0.1f)
-                               : (chosen ? glm::vec3(1.0f, 0.7f, 0.3f) : glm::vec3(0.3f, 0.5f, 0.8f)));
+    box(cubeAt(room, kHandleSize), ray_.holding && chosen ? glm::vec3(1.0f, 0.45f, 0.1f)
+                                                          : (chosen ? glm::vec3(1.0f, 0.7f, 0.3f)
+                                                                    : glm::vec3(0.3f, 0.5f, 0.8f)));
   }
   if (ray_.target != WandTarget::None && !ray_.holding) {
     const glm::vec3 color = ray_.target == WandTarget::Menu      ? glm::vec3(1.0f)

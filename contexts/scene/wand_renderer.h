@@ -19,9 +19,9 @@ namespace sandstorm {
 
 class WandRenderer {
  public:
-  static constexpr float kBeamWidth = 0.006f;    // m (room)
-  static constexpr float kMarkerSize = 0.03f;    // m (room)
-  static constexpr float kHandleSize = 0.06f;    // m (room)
+  static constexpr float kBeamWidth = 0.006f;  // m (room)
+  static constexpr float kMarkerSize = 0.03f;  // m (room)
+  static constexpr float kHandleSize = 0.06f;  // m (room)
 
   WandRenderer();
   void set(const WandRay& ray, const Navigation& navigation, std::vector<Emitter> emitters);

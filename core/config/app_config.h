@@ -72,8 +72,8 @@ struct NavigationSpec {
   glm::vec3 offset{0.0f};
   float yawDegrees = 0.0f;
   float scale = 1.0f;
-  float flySpeed = 1.5f;        // m/s at full joystick (tracked wand)
-  float turnSpeedDeg = 45.0f;   // degrees/s at full joystick (tracked wand)
+  float flySpeed = 1.5f;       // m/s at full joystick (tracked wand)
+  float turnSpeedDeg = 45.0f;  // degrees/s at full joystick (tracked wand)
 };
 
 enum class TrackingSource { None, DTrack, Replay };
@@ -81,25 +81,25 @@ enum class TrackingSource { None, DTrack, Replay };
 // A tracker for the head and the wand (config [tracking], core/tracking/).
 struct TrackingSpec {
   TrackingSource source = TrackingSource::None;
-  int port = 5000;         // UDP port DTrack sends to
-  std::string multicast;   // a multicast group to join ("239.0.0.1"); empty: unicast
-  int headBody = 0;        // the glasses: standard body id (6d)
-  int wandFlystick = 0;    // the wand: Flystick id (6df2 / 6df)
+  int port = 5000;        // UDP port DTrack sends to
+  std::string multicast;  // a multicast group to join ("239.0.0.1"); empty: unicast
+  int headBody = 0;       // the glasses: standard body id (6d)
+  int wandFlystick = 0;   // the wand: Flystick id (6df2 / 6df)
   // Tracker room -> Sandstorm room: room = offset + rotation * (millimetres / 1000).
   glm::vec3 offset{0.0f};
   glm::mat3 rotation{1.0f};
-  float staleMs = 250.0f;         // no measurement this long: hold the last pose, "tracking lost"
-  glm::vec3 eyeOffset{0.0f};      // glasses body origin -> between the eyes (body axes, metres)
+  float staleMs = 250.0f;     // no measurement this long: hold the last pose, "tracking lost"
+  glm::vec3 eyeOffset{0.0f};  // glasses body origin -> between the eyes (body axes, metres)
   // The bodies' own axes (body coordinates): which way is right/up on the
   // glasses, forward/up on the wand. The defaults fit bodies calibrated
   // "due to room" while facing +y in a z-up tracker room.
   glm::vec3 headRight{1.0f, 0.0f, 0.0f}, headUp{0.0f, 0.0f, 1.0f};
   glm::vec3 wandForward{0.0f, 1.0f, 0.0f}, wandUp{0.0f, 0.0f, 1.0f};
-  int triggerButton = 0;      // clicks the menu
-  int grabButton = 1;         // grabs emitters
-  float grabRadius = 0.25f;   // m (room): how near the ray an emitter handle is grabbed
-  float rayLength = 20.0f;    // m (room): the ray's length when it hits nothing
-  int line = 0;               // where [tracking] was declared, for messages
+  int triggerButton = 0;     // clicks the menu
+  int grabButton = 1;        // grabs emitters
+  float grabRadius = 0.25f;  // m (room): how near the ray an emitter handle is grabbed
+  float rayLength = 20.0f;   // m (room): the ray's length when it hits nothing
+  int line = 0;              // where [tracking] was declared, for messages
 };
 
 struct FieldSpec {

@@ -256,7 +256,8 @@ void readScene(const Reader& r, const toml::value& t, SceneSpec& s) {
 }
 
 void readHead(const Reader& r, const toml::value& t, HeadSpec& h) {
-  r.checkKeys(t, "head", {"mode", "position", "yaw_deg", "right", "eye_separation", "path", "loop"});
+  r.checkKeys(t, "head",
+              {"mode", "position", "yaw_deg", "right", "eye_separation", "path", "loop"});
   h.mode = r.choice(t, "mode", "head", h.mode,
                     {{"fixed", HeadMode::Fixed},
                      {"scripted", HeadMode::Scripted},
@@ -330,7 +331,8 @@ void readTracking(const Reader& r, const toml::value& t, TrackingSpec& k) {
   if (!k.multicast.empty()) {
     int a = -1, b = -1, c = -1, d = -1;
     char tail = 0;
-    const bool dotted = std::sscanf(k.multicast.c_str(), "%d.%d.%d.%d%c", &a, &b, &c, &d, &tail) == 4;
+    const bool dotted =
+        std::sscanf(k.multicast.c_str(), "%d.%d.%d.%d%c", &a, &b, &c, &d, &tail) == 4;
     if (!dotted || a < 224 || a > 239 || b < 0 || b > 255 || c < 0 || c > 255 || d < 0 || d > 255)
       r.fail(*r.find(t, "multicast"), "tracking.multicast",
              "expected an IPv4 multicast group (224.0.0.0 .. 239.255.255.255), got '" +
@@ -520,10 +522,10 @@ AppConfig readWithIncludes(const toml::value& root, const std::string& file,
 void read(const toml::value& root, const std::string& file, std::optional<int> monitors,
           AppConfig& c, int depth) {
   const Reader r(file);
-  r.checkKeys(root, "",
-              {"include", "run", "field", "scene", "sim", "render", "field_playback", "helicopter",
-               "emitter", "head", "navigation", "tracking", "menu", "cluster", "wall", "pvx",
-               "pvx_up"});
+  r.checkKeys(
+      root, "",
+      {"include", "run", "field", "scene", "sim", "render", "field_playback", "helicopter",
+       "emitter", "head", "navigation", "tracking", "menu", "cluster", "wall", "pvx", "pvx_up"});
   // include = "scene.toml": that file's settings first, this file's on top.
   if (const toml::value* include = r.find(root, "include")) {
     if (!include->is_string()) r.fail(*include, "include", "expected a file name");

@@ -226,8 +226,8 @@ WandRay wandRay(ByteReader& r) {
   ray.target = WandTarget(target);
   ray.emitter = r.i32("wand.emitter");
   if (ray.emitter < -1 || ray.emitter >= ParticleState::kMaxEmitters)
-    r.fail("wand.emitter", concat("expected -1..", ParticleState::kMaxEmitters - 1, ", got ",
-                                  ray.emitter));
+    r.fail("wand.emitter",
+           concat("expected -1..", ParticleState::kMaxEmitters - 1, ", got ", ray.emitter));
   ray.holding = r.boolean("wand.holding");
   return ray;
 }

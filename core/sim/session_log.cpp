@@ -118,7 +118,8 @@ TrackingSample parseTracking(std::istringstream& words) {
       throw Error("track: unknown item '" + key + "'; expected frame, stale, head and wand");
     }
   }
-  if (!frame || !stale || !head || !wand) throw Error("track: expected frame=, stale=, head= and wand=");
+  if (!frame || !stale || !head || !wand)
+    throw Error("track: expected frame=, stale=, head= and wand=");
   return s;
 }
 

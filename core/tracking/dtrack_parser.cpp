@@ -11,8 +11,8 @@
 namespace sandstorm {
 
 const TrackedBody* TrackerFrame::body(int id) const {
-  const auto it = std::find_if(bodies.begin(), bodies.end(),
-                               [id](const TrackedBody& b) { return b.id == id; });
+  const auto it =
+      std::find_if(bodies.begin(), bodies.end(), [id](const TrackedBody& b) { return b.id == id; });
   return it == bodies.end() ? nullptr : &*it;
 }
 
@@ -241,7 +241,8 @@ void readFlysticksV2(LineReader& r, TrackerFrame& f) {
     if (!s.tracked()) s.position = glm::vec3(0.0f);
     s.rotation = rotation(r, item, s.tracked());
     const int words = (s.buttonCount + 31) / 32;
-    const auto& input = r.block(item + " buttons/controllers", std::size_t(words + s.controllerCount));
+    const auto& input =
+        r.block(item + " buttons/controllers", std::size_t(words + s.controllerCount));
     for (int w = 0; w < words; ++w) {
       const auto bits = std::uint32_t(
           r.integer(input[std::size_t(w)], item + " buttons", -0x80000000LL, 0xffffffffLL));
@@ -288,8 +289,8 @@ void checkText(std::string_view d) {
 
 TrackerFrame parseDTrack(std::string_view d) {
   if (d.size() > L::kMaxDatagram)
-    throw Error(concat("DTrack datagram: ", d.size(), " bytes exceed the limit of ",
-                       L::kMaxDatagram));
+    throw Error(
+        concat("DTrack datagram: ", d.size(), " bytes exceed the limit of ", L::kMaxDatagram));
   while (!d.empty() && d.back() == '\0')
     d.remove_suffix(1);  // some senders end the text with NULs
   checkText(d);
@@ -317,8 +318,8 @@ TrackerFrame parseDTrack(std::string_view d) {
       r.fail("a second line of this type in one datagram");
     seen.push_back(type);
     if (type == "fr") {
-      f.frame = std::uint32_t(r.integer(r.word("the frame counter"), "frame counter", 0,
-                                        0xffffffffLL));
+      f.frame =
+          std::uint32_t(r.integer(r.word("the frame counter"), "frame counter", 0, 0xffffffffLL));
     } else if (type == "ts") {
       const double t = r.real(r.word("the timestamp"), "timestamp");
       if (t < 0.0 || t > 1.0e7) r.fail(concat("timestamp: expected 0..1e7 s, got ", t));

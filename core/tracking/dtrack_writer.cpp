@@ -35,8 +35,8 @@ std::string writeDTrack(const TrackerFrame& f, FlystickFormat format) {
   if (f.frame) out += "fr " + std::to_string(*f.frame) + "\r\n";
   if (f.timestamp) {
     char buffer[32];
-    const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, *f.timestamp,
-                                         std::chars_format::fixed, 6);
+    const auto [end, ec] =
+        std::to_chars(buffer, buffer + sizeof buffer, *f.timestamp, std::chars_format::fixed, 6);
     out += "ts " + std::string(buffer, ec == std::errc() ? end : buffer) + "\r\n";
   }
   out += "6dcal " + std::to_string(f.bodies.size()) + "\r\n";
@@ -51,8 +51,8 @@ std::string writeDTrack(const TrackerFrame& f, FlystickFormat format) {
   }
   out += "\r\n";
   if (format == FlystickFormat::V2) {
-    out += "6df2 " + std::to_string(f.flysticks.size()) + " " +
-           std::to_string(f.flysticks.size()) + " ";
+    out += "6df2 " + std::to_string(f.flysticks.size()) + " " + std::to_string(f.flysticks.size()) +
+           " ";
     for (const TrackedFlystick& s : f.flysticks) {
       out += "[" + std::to_string(s.id) + " ";
       number(out, s.quality);

@@ -113,21 +113,32 @@ TrackerScript TrackerScript::parse(const std::string& text, const std::string& n
         bool timed = false;
         for (const auto& [item, v] : t.as_table()) {
           const std::string where = "key." + item;
-          if (item == "time") k.time = r.number(v, where), timed = true;
-          else if (item == "head") k.head = r.vec<3>(v, where);
-          else if (item == "head_yaw_deg") k.headYawDeg = float(r.number(v, where));
-          else if (item == "head_pitch_deg") k.headPitchDeg = float(r.number(v, where));
-          else if (item == "head_roll_deg") k.headRollDeg = float(r.number(v, where));
-          else if (item == "wand") k.wand = r.vec<3>(v, where);
-          else if (item == "wand_yaw_deg") k.wandYawDeg = float(r.number(v, where));
-          else if (item == "wand_pitch_deg") k.wandPitchDeg = float(r.number(v, where));
-          else if (item == "buttons") k.buttons = std::uint32_t(r.integer(v, where, 0, 0x7fffffff));
+          if (item == "time")
+            k.time = r.number(v, where), timed = true;
+          else if (item == "head")
+            k.head = r.vec<3>(v, where);
+          else if (item == "head_yaw_deg")
+            k.headYawDeg = float(r.number(v, where));
+          else if (item == "head_pitch_deg")
+            k.headPitchDeg = float(r.number(v, where));
+          else if (item == "head_roll_deg")
+            k.headRollDeg = float(r.number(v, where));
+          else if (item == "wand")
+            k.wand = r.vec<3>(v, where);
+          else if (item == "wand_yaw_deg")
+            k.wandYawDeg = float(r.number(v, where));
+          else if (item == "wand_pitch_deg")
+            k.wandPitchDeg = float(r.number(v, where));
+          else if (item == "buttons")
+            k.buttons = std::uint32_t(r.integer(v, where, 0, 0x7fffffff));
           else if (item == "joystick") {
             k.joystick = r.vec<2>(v, where);
             if (std::abs(k.joystick.x) > 1.0f || std::abs(k.joystick.y) > 1.0f)
               r.fail(v, where, "expected two numbers in -1..1");
-          } else if (item == "head_visible") k.headVisible = r.flag(v, where);
-          else if (item == "wand_visible") k.wandVisible = r.flag(v, where);
+          } else if (item == "head_visible")
+            k.headVisible = r.flag(v, where);
+          else if (item == "wand_visible")
+            k.wandVisible = r.flag(v, where);
           else
             r.fail(v, where,
                    "unknown key; expected time, head, head_yaw_deg, head_pitch_deg, "

@@ -21,9 +21,9 @@ struct TrackedPose {
 };
 
 struct WandSample {
-  bool present = false;  // the Flystick is known (its buttons are valid)
-  bool tracked = false;  // its pose is valid (fresh, or held within tracking.stale_ms)
-  TrackedPose pose;      // the wand's tip; forward() is where it points
+  bool present = false;       // the Flystick is known (its buttons are valid)
+  bool tracked = false;       // its pose is valid (fresh, or held within tracking.stale_ms)
+  TrackedPose pose;           // the wand's tip; forward() is where it points
   std::uint32_t buttons = 0;  // bit i: button i pressed
   glm::vec2 joystick{0.0f};   // x right, y up, -1..1
 
@@ -34,11 +34,11 @@ struct WandSample {
 };
 
 struct TrackingSample {
-  bool active = false;        // a tracker (or a replayed session) drives this frame
-  bool stale = false;         // no fresh head measurement within tracking.stale_ms: held
+  bool active = false;             // a tracker (or a replayed session) drives this frame
+  bool stale = false;              // no fresh head measurement within tracking.stale_ms: held
   std::uint32_t trackerFrame = 0;  // the tracker's own frame counter of the measurement used
-  bool headTracked = false;   // `head` is a measured pose (fresh or held)
-  TrackedPose head;           // between the eyes
+  bool headTracked = false;        // `head` is a measured pose (fresh or held)
+  TrackedPose head;                // between the eyes
   WandSample wand;
 
   bool operator==(const TrackingSample&) const = default;

@@ -32,8 +32,7 @@ glm::vec2 wallPixel(const WallSpec& wall, glm::ivec2 size, glm::vec2 uv) {
 WandController::WandController(const TrackingSpec& tracking, const NavigationSpec& navigation)
     : tracking_(tracking), navigation_(navigation) {}
 
-WandActions WandController::update(const TrackingSample& sample, const WandScene& scene,
-                                   float dt) {
+WandActions WandController::update(const TrackingSample& sample, const WandScene& scene, float dt) {
   WandActions out;
   const WandSample& wand = sample.wand;
   const std::uint32_t pressedNow = wand.present ? wand.buttons : 0u;
@@ -70,8 +69,8 @@ WandActions WandController::update(const TrackingSample& sample, const WandScene
     }
   }
   for (int i = 0; i < emitterCount && !held_; ++i) {
-    const glm::vec3 handle =
-        glm::vec3(scene.navigation.worldToRoom() * glm::vec4(state->emitters[std::size_t(i)].position, 1.0f));
+    const glm::vec3 handle = glm::vec3(scene.navigation.worldToRoom() *
+                                       glm::vec4(state->emitters[std::size_t(i)].position, 1.0f));
     if (const std::optional<float> t = hitSphere(ray, handle, tracking_.grabRadius);
         t && *t < nearest) {
       nearest = *t;
@@ -91,15 +90,17 @@ WandActions WandController::update(const TrackingSample& sample, const WandScene
   out.ray.end = ray.at(nearest);
 
   // The menu takes the trigger while the ray is on it.
-  if (menuPixel) out.menu = WandActions::MenuPointer{*menuPixel, wand.pressed(tracking_.triggerButton)};
+  if (menuPixel)
+    out.menu = WandActions::MenuPointer{*menuPixel, wand.pressed(tracking_.triggerButton)};
 
   // Grab and carry.
   const glm::mat4 wandFrame(glm::vec4(wand.pose.axes[0], 0.0f), glm::vec4(wand.pose.axes[1], 0.0f),
-                            glm::vec4(wand.pose.axes[2], 0.0f), glm::vec4(wand.pose.position, 1.0f));
+                            glm::vec4(wand.pose.axes[2], 0.0f),
+                            glm::vec4(wand.pose.position, 1.0f));
   if (!held_ && !menuPixel && edge(tracking_.grabButton) && out.ray.target == WandTarget::Emitter) {
-    const glm::vec3 room = glm::vec3(
-        scene.navigation.worldToRoom() *
-        glm::vec4(state->emitters[std::size_t(out.ray.emitter)].position, 1.0f));
+    const glm::vec3 room =
+        glm::vec3(scene.navigation.worldToRoom() *
+                  glm::vec4(state->emitters[std::size_t(out.ray.emitter)].position, 1.0f));
     held_ = Held{out.ray.emitter, glm::vec3(glm::inverse(wandFrame) * glm::vec4(room, 1.0f))};
     // What the carry below computes for the wand standing still: no change until it moves.
     held_->lastWorld =
@@ -122,17 +123,17 @@ WandActions WandController::update(const TrackingSample& sample, const WandScene
   if (state && state->helicopter.enabled && state->helicopter.wandThrottle && !held_ &&
       !menuPixel) {
     const float tilt = glm::degrees(std::asin(std::clamp(ray.direction.z, -1.0f, 1.0f)));
-    const float beyond = std::max(std::abs(tilt) - kTiltDeadZoneDeg, 0.0f) /
-                         (kTiltFullDeg - kTiltDeadZoneDeg);
+    const float beyond =
+        std::max(std::abs(tilt) - kTiltDeadZoneDeg, 0.0f) / (kTiltFullDeg - kTiltDeadZoneDeg);
     throttleDrift_ += std::copysign(std::min(beyond, 1.0f), tilt) * kThrottleRate * dt;
     // Whole steps only, so the wash is re-baked a step at a time; the rest stays stored up.
     const float current = state->helicopter.throttle;
     const float steps = std::trunc(throttleDrift_ / kThrottleStep);
     if (steps != 0.0f) {
       // On the grid of steps, so repeated steps land on 0 and 1 exactly.
-      const float next = std::clamp(
-          std::round((current + steps * kThrottleStep) / kThrottleStep) * kThrottleStep, 0.0f,
-          1.0f);
+      const float next =
+          std::clamp(std::round((current + steps * kThrottleStep) / kThrottleStep) * kThrottleStep,
+                     0.0f, 1.0f);
       throttleDrift_ -= steps * kThrottleStep;
       if (next != current) out.sets.emplace_back("helicopter.throttle", next);
       if (next <= 0.0f || next >= 1.0f) throttleDrift_ = 0.0f;  // pinned: store nothing up
@@ -147,7 +148,8 @@ WandActions WandController::update(const TrackingSample& sample, const WandScene
   if ((fly != 0.0f || turn != 0.0f) && dt > 0.0f) {
     Navigation n = scene.navigation;
     glm::vec3 ahead(ray.direction.x, ray.direction.y, 0.0f);
-    if (glm::length(ahead) > 1e-3f) n.offset -= glm::normalize(ahead) * (fly * navigation_.flySpeed * dt);
+    if (glm::length(ahead) > 1e-3f)
+      n.offset -= glm::normalize(ahead) * (fly * navigation_.flySpeed * dt);
     if (turn != 0.0f) {
       // Joystick right turns the user right: the world turns the other way about the head.
       const float a = glm::radians(turn * navigation_.turnSpeedDeg * dt);

@@ -57,7 +57,7 @@ struct WandActions {
   };
   std::optional<MenuPointer> menu;
   std::vector<std::pair<std::string, AttributeValue>> sets;  // emitter moves, throttle
-  std::optional<Navigation> navigation;                       // flying and turning
+  std::optional<Navigation> navigation;                      // flying and turning
 };
 
 // A point on a wall in that wall's image pixels (y down), for the stereo
@@ -68,8 +68,8 @@ class WandController {
  public:
   static constexpr float kThrottleStep = 0.02f;
   static constexpr float kTiltDeadZoneDeg = 15.0f;
-  static constexpr float kTiltFullDeg = 50.0f;     // full rate from here
-  static constexpr float kThrottleRate = 0.4f;     // per second at full tilt
+  static constexpr float kTiltFullDeg = 50.0f;  // full rate from here
+  static constexpr float kThrottleRate = 0.4f;  // per second at full tilt
   static constexpr float kJoystickDeadZone = 0.1f;
 
   WandController(const TrackingSpec& tracking, const NavigationSpec& navigation);

@@ -174,9 +174,9 @@ TEST(Cluster, TrackedRanksDrawWhatOneProcessReplaysWithoutTheTracker) {
       "--port " + std::to_string(port) + " --rate 250 --duration 60", dir);
   ASSERT_EQ(cluster.exitCode, 0) << cluster.output;
   EXPECT_EQ(count(cluster.output, "listening for DTrack"), 1) << cluster.output;  // rank 0 only
-  const auto one = runSandstorm(args + " --screenshot " + (dir / "one").string() + " --replay " +
-                                (dir / "session.log").string() + " --hash-log " +
-                                (dir / "one.txt").string());
+  const auto one =
+      runSandstorm(args + " --screenshot " + (dir / "one").string() + " --replay " +
+                   (dir / "session.log").string() + " --hash-log " + (dir / "one.txt").string());
   ASSERT_EQ(one.exitCode, 0) << one.output;
   int tracked = 0;
   for (const std::string& line : readLines(dir / "session.log"))

@@ -116,8 +116,9 @@ TEST(Identity, ARecordedSessionReplaysToTheSameParticles) {
                    " --hash-log " + (dir / "first.txt").string());
   ASSERT_EQ(first.exitCode, 0) << first.output;
   const std::vector<std::string> recorded = readLines(dir / "rec.session");
-  ASSERT_EQ(recorded.size(),
-            5u);  // a header and the four changes that took effect before frame 180
+  // A header, the navigation at frame 0 and the four changes that took effect before frame 180.
+  ASSERT_EQ(recorded.size(), 6u);
+  EXPECT_EQ(recorded[1], "0 navigate -1,2.6,0,0,0.35");
   const auto again =
       runSandstorm("--config tests/data/identity.toml --frames 180 --walls front --replay " +
                    (dir / "rec.session").string() + " --hash-log " + (dir / "again.txt").string());

@@ -199,8 +199,7 @@ TEST(TrackedCave, EachWallShowsWhatAFixedHeadAtTheTrackedPoseShows) {
       "--config " + config.string() + " --frames 122 --screenshot-every 40 --screenshot " +
           (dir / "tracked").string() + " --record " + (dir / "session.log").string() +
           " --hash-log " + (dir / "hashes.txt").string(),
-      "--port " + std::to_string(port) + " --rate 250 --duration 60 --path " + path.string(),
-      dir);
+      "--port " + std::to_string(port) + " --rate 250 --duration 60 --path " + path.string(), dir);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   const auto tracks = trackLines(dir / "session.log");
   ASSERT_FALSE(tracks.empty()) << r.output << r.simOutput;
@@ -217,12 +216,12 @@ TEST(TrackedCave, EachWallShowsWhatAFixedHeadAtTheTrackedPoseShows) {
     test::writeFile(dir / "fixed.toml",
                     std::string("include = \"") + SANDSTORM_SOURCE_DIR +
                         "/tests/data/tracked.toml\"\n[tracking]\nsource = \"none\"\n[head]\n"
-                        "mode = \"fixed\"\nposition = [" + head[0] + ", " + head[1] + ", " +
-                        head[2] + "]\nright = [" + head[3] + ", " + head[4] + ", " + head[5] +
-                        "]\n");
-    const auto still = test::runSandstorm("--config " + (dir / "fixed.toml").string() +
-                                          " --frames " + std::to_string(frame + 1) +
-                                          " --screenshot " + fixed.string());
+                        "mode = \"fixed\"\nposition = [" +
+                        head[0] + ", " + head[1] + ", " + head[2] + "]\nright = [" + head[3] +
+                        ", " + head[4] + ", " + head[5] + "]\n");
+    const auto still =
+        test::runSandstorm("--config " + (dir / "fixed.toml").string() + " --frames " +
+                           std::to_string(frame + 1) + " --screenshot " + fixed.string());
     ASSERT_EQ(still.exitCode, 0) << still.output;
     for (const std::string wall : {"front", "left", "right", "floor"}) {
       const std::string tracked =
@@ -288,10 +287,9 @@ TEST(TrackedWand, AClickThroughTheRayResetsEveryWallAtTheRecordedFrame) {
                 "[[key]]\ntime = 1.0\nbuttons = 1\n[[key]]\ntime = 1.3\nbuttons = 0\n"
                 "[[key]]\ntime = 1.8\nbuttons = 1\n[[key]]\ntime = 2.1\nbuttons = 0\n"));
   const auto r = test::runTracked(
-      "--config " + config.string() + " --frames 300 --record " +
-          (dir / "session.log").string() + " --hash-log " + (dir / "hashes.txt").string(),
-      "--port " + std::to_string(port) + " --rate 250 --duration 60 --path " + path.string(),
-      dir);
+      "--config " + config.string() + " --frames 300 --record " + (dir / "session.log").string() +
+          " --hash-log " + (dir / "hashes.txt").string(),
+      "--port " + std::to_string(port) + " --rate 250 --duration 60 --path " + path.string(), dir);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::vector<std::uint32_t> resets;
   for (const std::string& line : readLines(dir / "session.log"))
@@ -308,13 +306,13 @@ TEST(TrackedWand, AClickThroughTheRayResetsEveryWallAtTheRecordedFrame) {
     counts[{frame, wall}] = count;
   }
   for (const std::string wall : {"front", "floor"}) {
-    const std::size_t before = counts.at({resets[0] - 1, wall}), after = counts.at({resets[0], wall});
+    const std::size_t before = counts.at({resets[0] - 1, wall}),
+                      after = counts.at({resets[0], wall});
     EXPECT_GT(before, 1000u) << wall;
     EXPECT_LT(after, before / 4) << wall << " at frame " << resets[0];
   }
   // The session replays without the tracker: the same particles every frame.
-  const auto replay = test::runSandstorm("--config " + config.string() +
-                                         " --frames 300 --replay " +
+  const auto replay = test::runSandstorm("--config " + config.string() + " --frames 300 --replay " +
                                          (dir / "session.log").string() + " --hash-log " +
                                          (dir / "replayed.txt").string());
   ASSERT_EQ(replay.exitCode, 0) << replay.output;
@@ -328,18 +326,17 @@ TEST(TrackedWand, GrabCarriesEmitterZeroByTheWandsDisplacement) {
   const auto config = test::trackedConfig(dir, "tests/data/tracked.toml", port);
   // Emitter 0 sits at world (0, 0, 0.05): room (-1, 2.6, 0.0175) through the navigation.
   const glm::vec3 from{-1.0f, 1.2f, 1.0f};
-  const auto path = test::writeFile(
-      dir / "grab.toml",
-      aimedPath(from, {-1.0f, 2.6f, 0.0175f},
-                "[[key]]\ntime = 0.8\nbuttons = 2\n"                      // grab (button 1)
-                "[[key]]\ntime = 1.2\nwand = [-1.0, 1.2, 1.0]\n"          // hold still
-                "[[key]]\ntime = 2.0\nwand = [-0.7, 1.2, 1.2]\n"          // carry it
-                "[[key]]\ntime = 2.4\nbuttons = 0\n"                      // let go
-                "[[key]]\ntime = 3.0\nwand = [0.0, 0.0, 1.0]\n"));        // and move away
+  const auto path =
+      test::writeFile(dir / "grab.toml",
+                      aimedPath(from, {-1.0f, 2.6f, 0.0175f},
+                                "[[key]]\ntime = 0.8\nbuttons = 2\n"              // grab (button 1)
+                                "[[key]]\ntime = 1.2\nwand = [-1.0, 1.2, 1.0]\n"  // hold still
+                                "[[key]]\ntime = 2.0\nwand = [-0.7, 1.2, 1.2]\n"  // carry it
+                                "[[key]]\ntime = 2.4\nbuttons = 0\n"              // let go
+                                "[[key]]\ntime = 3.0\nwand = [0.0, 0.0, 1.0]\n"));  // and move away
   const auto r = test::runTracked(
       "--config " + config.string() + " --frames 400 --record " + (dir / "session.log").string(),
-      "--port " + std::to_string(port) + " --rate 250 --duration 60 --path " + path.string(),
-      dir);
+      "--port " + std::to_string(port) + " --rate 250 --duration 60 --path " + path.string(), dir);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::string last;
   for (const std::string& line : readLines(dir / "session.log"))
@@ -366,8 +363,7 @@ TEST(TrackedWand, TiltingTheWandUpRaisesTheHelicoptersThrottle) {
       "--config " + config.string() +
           " --frames 300 --set helicopter.enabled=true --set helicopter.throttle=0.5 --record " +
           (dir / "session.log").string(),
-      "--port " + std::to_string(port) + " --rate 250 --duration 60 --path " + path.string(),
-      dir);
+      "--port " + std::to_string(port) + " --rate 250 --duration 60 --path " + path.string(), dir);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::vector<float> throttles;
   for (const std::string& line : readLines(dir / "session.log"))
@@ -405,8 +401,7 @@ TEST(TrackedCave, APortInUseStopsTheStartNamingThePort) {
 
 TEST(TrackedCave, ReplayAsASourceNeedsARecordedSession) {
   const auto dir = test::scratchDir("tracked-replay-source");
-  const auto config =
-      test::trackedConfig(dir, "tests/data/tracked.toml", 5000, "");
+  const auto config = test::trackedConfig(dir, "tests/data/tracked.toml", 5000, "");
   test::writeFile(dir / "replay.toml", "include = \"run.toml\"\n[tracking]\nsource = \"replay\"\n");
   const auto r = test::runSandstorm("--config " + (dir / "replay.toml").string() + " --frames 5");
   EXPECT_EQ(r.exitCode, 1) << r.output;

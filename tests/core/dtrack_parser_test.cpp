@@ -94,7 +94,7 @@ TEST(DTrackParser, AnUntrackedFlystickKeepsItsButtons) {
   EXPECT_FALSE(f.flysticks[0].tracked());
   EXPECT_TRUE(f.flysticks[0].pressed(0));
   EXPECT_EQ(f.flysticks[0].rotation, glm::mat3(1.0f));  // not a zero matrix to compute with
-  EXPECT_EQ(f.flysticks[1].buttonCount, 40);  // two words of buttons
+  EXPECT_EQ(f.flysticks[1].buttonCount, 40);            // two words of buttons
   EXPECT_EQ(f.flysticks[1].buttons, 7u);
 }
 
@@ -241,8 +241,7 @@ TEST(DTrackParser, RandomJunkAndEditsAreRefusedOrReadSane) {
     std::string d = kManual;
     const int edits = 1 + i % 8;
     for (int e = 0; e < edits; ++e)
-      d[std::size_t(random() % d.size())] =
-          char(i % 2 ? byte(random) : " []0.-9e\n"[random() % 9]);
+      d[std::size_t(random() % d.size())] = char(i % 2 ? byte(random) : " []0.-9e\n"[random() % 9]);
     TrackerFrame f;
     try {
       f = parseDTrack(d);

@@ -99,9 +99,9 @@ TEST(SessionLog, BadTrackingLinesNameTheirLine) {
             std::string::npos);
   EXPECT_NE(errorOf("1 track frame=1 stale=0 head=- wand=- x=1\n").find("unknown item"),
             std::string::npos);
-  EXPECT_NE(errorOf("1 track frame=1 stale=0 head=nan,0,0,1,0,0,0,1,0,0,0,1 wand=-\n")
-                .find("track head"),
-            std::string::npos);
+  EXPECT_NE(
+      errorOf("1 track frame=1 stale=0 head=nan,0,0,1,0,0,0,1,0,0,0,1 wand=-\n").find("track head"),
+      std::string::npos);
   EXPECT_NE(errorOf("1 navigate 1,2,3,0,0\n").find("positive scale"), std::string::npos);
   EXPECT_NE(errorOf("1 navigate 1,2,3\n").find("expected 5"), std::string::npos);
 }

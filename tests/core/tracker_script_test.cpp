@@ -102,8 +102,7 @@ TEST(TrackerScript, BadPathFilesNameTheirLineAndKey) {
             std::string::npos);
   EXPECT_NE(errorOf("[[key]]\nhead = [0, 0]\ntime = 0\n").find("key.head"), std::string::npos);
   EXPECT_NE(errorOf("[[key]]\ntime = 0\njoystick = [2, 0]\n").find("-1..1"), std::string::npos);
-  EXPECT_NE(errorOf("[[key]]\ntime = 0\nhed = [0, 0, 1]\n").find("unknown key"),
-            std::string::npos);
+  EXPECT_NE(errorOf("[[key]]\ntime = 0\nhed = [0, 0, 1]\n").find("unknown key"), std::string::npos);
   EXPECT_NE(errorOf("[[key]]\nhead = [0, 0, 1]\n").find("needs a time"), std::string::npos);
   EXPECT_NE(errorOf("loop = true\n").find("at least one [[key]]"), std::string::npos);
   EXPECT_NE(errorOf("[[key]]\ntime = nan\n").find("finite"), std::string::npos);
