@@ -86,6 +86,11 @@ void ImGuiSession::injectMouse(glm::vec2 position, bool down) {
   mouseDown_ = down;
 }
 
+void ImGuiSession::drawCursor(bool on) {
+  ImGui::SetCurrentContext(context_);
+  ImGui::GetIO().MouseDrawCursor = on;
+}
+
 bool ImGuiSession::wantsMouse() const {
   ImGui::SetCurrentContext(context_);
   return ImGui::GetIO().WantCaptureMouse;

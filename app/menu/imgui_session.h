@@ -29,6 +29,8 @@ class ImGuiSession {
 
   // Injected input for this frame (overrides the window's).
   void injectMouse(glm::vec2 position, bool down);
+  // Draw ImGui's own cursor into the menu (a wand on a wall has no system cursor).
+  void drawCursor(bool on);
   bool wantsMouse() const;
   bool wantsKeyboard() const;
 

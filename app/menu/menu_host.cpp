@@ -36,6 +36,7 @@ void MenuHost::frame(std::uint32_t frame, float dt, const MenuStats& stats) {
     session_.injectMouse(glm::vec2(-1e9f),
                          false);  // the wand left the panel: let go, hover nothing
   }
+  session_.drawCursor(wand_.has_value());  // where on the panel the ray is
   wandPointed_ = wand_.has_value();
   wand_.reset();
   if (script_) script_->inject(frame, session_, panel_);

@@ -389,6 +389,15 @@ TEST(TrackedCave, AMalformedDatagramStormLeavesItRunning) {
   EXPECT_EQ(r.output.find(" 0 dropped"), std::string::npos) << r.output;
 }
 
+TEST(TrackedCave, NoTrackerAtAllNeitherHangsNorStopsTheRun) {
+  const auto dir = test::scratchDir("tracked-silent");
+  const auto config = test::trackedConfig(dir, "tests/data/tracked.toml", test::freeUdpPort());
+  const auto r = test::runSandstorm("--config " + config.string() + " --frames 30");
+  EXPECT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("0 frames received, 0 dropped, none measured"), std::string::npos)
+      << r.output;
+}
+
 TEST(TrackedCave, APortInUseStopsTheStartNamingThePort) {
   DTrackReceiver holder({.port = 0});
   const auto dir = test::scratchDir("tracked-port");
