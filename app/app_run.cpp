@@ -307,7 +307,7 @@ void AppRun::reportProgress(Clock::time_point now) {
   const WallStats s = walls_[0]->stats();
   log::info("frame ", s.frame, lastFrame_ >= 0 ? concat("/", lastFrame_ + 1) : std::string(), ": ",
             s.liveParticles, " particles, ", s.frameMs, " ms per frame on '", walls_[0]->name(),
-            "'");
+            "'", tracking_ && tracking_->status().lost ? "; tracking lost" : "");
 }
 
 void AppRun::runOneProcess() {
