@@ -94,8 +94,9 @@ void VtkMessageTrap::watch(vtkAlgorithm* algorithm) {
   vtkNew<vtkCallbackCommand> callback;
   callback->SetCallback(onEvent);
   callback->SetClientData(this);
-  observers_.emplace_back(algorithm, algorithm->AddObserver(vtkCommand::ErrorEvent, callback));
-  observers_.emplace_back(algorithm, algorithm->AddObserver(vtkCommand::WarningEvent, callback));
+  const vtkSmartPointer<vtkAlgorithm> held(algorithm);
+  observers_.emplace_back(held, algorithm->AddObserver(vtkCommand::ErrorEvent, callback));
+  observers_.emplace_back(held, algorithm->AddObserver(vtkCommand::WarningEvent, callback));
 }
 
 void VtkMessageTrap::record(std::string message, bool isError) {

@@ -11,11 +11,12 @@
 // a trap). throwIfFailed() then throws with the messages.
 #pragma once
 
+#include <vtkAlgorithm.h>
+#include <vtkSmartPointer.h>
+
 #include <filesystem>
 #include <string>
 #include <vector>
-
-class vtkAlgorithm;
 
 namespace sandstorm {
 
@@ -27,6 +28,8 @@ class VtkMessageTrap {
   VtkMessageTrap& operator=(const VtkMessageTrap&) = delete;
 
   // Records the error and warning events of `algorithm` (and its executive).
+  // The trap holds a reference to it, so it outlives the observers whatever the
+  // order of destruction.
   void watch(vtkAlgorithm* algorithm);
 
   void record(std::string message, bool isError);
@@ -46,7 +49,7 @@ class VtkMessageTrap {
   std::vector<std::string> errors_;
   std::vector<std::string> warnings_;
   VtkMessageTrap* previous_;
-  std::vector<std::pair<vtkAlgorithm*, unsigned long>> observers_;
+  std::vector<std::pair<vtkSmartPointer<vtkAlgorithm>, unsigned long>> observers_;
 };
 
 }  // namespace sandstorm

@@ -19,6 +19,7 @@
 
 #include "core/field/vector_field.h"
 #include "core/io/vtk_message_trap.h"
+#include "core/io/vtk_xml_check.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -79,6 +80,7 @@ template <class Reader>
 vtkSmartPointer<vtkDataSet> run(const std::filesystem::path& path, const LoadOptions& options,
                                 const std::string& what) {
   const std::string file = path.string();
+  checkVtkXml(path, options.memoryBudget);  // before VTK allocates what the attributes claim
   VtkMessageTrap trap(path);
   vtkNew<Reader> reader;
   trap.watch(reader);

@@ -1,0 +1,554 @@
+#include "core/io/vtk_xml_check.h"
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cstdint>
+#include <fstream>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+constexpr std::size_t kMaxTag = 1 << 20;          // bytes in one tag: far above any real one
+constexpr std::size_t kHeaderPrefix = 64 * 1024;  // decoded bytes kept of a binary payload
+
+// Reads a file byte by byte through a buffer; seeks for appended data.
+class Scanner {
+ public:
+  explicit Scanner(const std::filesystem::path& path) : in_(path, std::ios::binary) {}
+  bool ok() const { return bool(in_) || in_.eof(); }
+  int get() {
+    if (at_ == end_ && !fill()) return -1;
+    ++position_;
+    return static_cast<unsigned char>(buffer_[at_++]);
+  }
+  std::uint64_t position() const { return position_; }
+  void seek(std::uint64_t position) {
+    in_.clear();
+    in_.seekg(std::streamoff(position));
+    position_ = position;
+    at_ = end_ = 0;
+  }
+
+ private:
+  bool fill() {
+    in_.read(buffer_.data(), std::streamsize(buffer_.size()));
+    end_ = std::size_t(in_.gcount());
+    at_ = 0;
+    return end_ > 0;
+  }
+  std::ifstream in_;
+  std::array<char, 1 << 16> buffer_{};
+  std::size_t at_ = 0, end_ = 0;
+  std::uint64_t position_ = 0;
+};
+
+struct Tag {
+  std::string name;
+  std::map<std::string, std::string> attributes;
+  bool closing = false, selfClosing = false, special = false;  // special: <?..?>, <!..>
+  std::uint64_t end = 0;  // file position after '>'
+};
+
+int typeSize(const std::string& type) {
+  if (type == "Int8" || type == "UInt8" || type == "Char") return 1;
+  if (type == "Int16" || type == "UInt16") return 2;
+  if (type == "Int32" || type == "UInt32" || type == "Float32") return 4;
+  if (type == "Int64" || type == "UInt64" || type == "Float64") return 8;
+  return 0;
+}
+
+int base64Value(int c) {
+  if (c >= 'A' && c <= 'Z') return c - 'A';
+  if (c >= 'a' && c <= 'z') return c - 'a' + 26;
+  if (c >= '0' && c <= '9') return c - '0' + 52;
+  if (c == '+') return 62;
+  if (c == '/') return 63;
+  return -1;
+}
+
+bool isSpace(int c) {
+  return c == ' ' || c == '\t' || c == '\n' || c == '\r';
+}
+
+// A binary payload as far as the check needs it: its first decoded bytes and how many there are.
+struct Payload {
+  std::vector<std::uint8_t> prefix;
+  std::uint64_t bytes = 0;
+};
+
+// Decodes base64 four characters at a time, as VTK writes it: the header and
+// the data of a compressed array are separate units, each padded with '='.
+class Base64Decoder {
+ public:
+  // Returns false for a character that is not base64.
+  bool add(int c, Payload& out) {
+    if (c == '=') {
+      ++pad_;
+    } else {
+      const int v = base64Value(c);
+      if (v < 0 || pad_ > 0) return false;
+      value_ = (value_ << 6) | std::uint32_t(v);
+    }
+    if (++count_ < 4) return true;
+    const int bytes = 3 - pad_;
+    if (bytes < 1) return false;
+    value_ <<= 6 * pad_;
+    for (int i = 0; i < bytes; ++i) {
+      if (out.prefix.size() < kHeaderPrefix)
+        out.prefix.push_back(std::uint8_t(value_ >> (16 - 8 * i)));
+      ++out.bytes;
+    }
+    count_ = pad_ = 0;
+    value_ = 0;
+    return true;
+  }
+  bool complete() const { return count_ == 0; }
+
+ private:
+  std::uint32_t value_ = 0;
+  int count_ = 0, pad_ = 0;
+};
+
+struct Array {
+  std::string where;
+  std::string type;
+  int size = 0;
+  std::uint64_t components = 1;
+  std::optional<std::uint64_t> declaredTuples;
+  std::optional<std::uint64_t> expectedTuples;
+  std::string format;
+  std::uint64_t offset = 0;
+  std::uint64_t asciiValues = 0;
+  Payload payload;  // inline binary
+  bool base64Broken = false;
+};
+
+class Checker {
+ public:
+  Checker(std::filesystem::path path, std::size_t budget)
+      : path_(std::move(path)), file_(path_.string()), in_(path_), budget_(budget) {}
+
+  void run() {
+    if (!in_.ok()) fail(file_ + ": cannot open");
+    std::error_code ec;
+    fileSize_ = std::uint64_t(std::filesystem::file_size(path_, ec));
+    while (true) {
+      const std::optional<Tag> tag = next();
+      if (!tag) break;
+      if (tag->special) continue;
+      if (tag->closing) {
+        if (stack_.empty() || stack_.back() != tag->name)
+          fail(concat(file_, ": the closing tag </", tag->name, "> does not match ",
+                      stack_.empty() ? "anything" : "<" + stack_.back() + ">"));
+        stack_.pop_back();
+        continue;
+      }
+      open(*tag);
+      if (!tag->selfClosing) stack_.push_back(tag->name);
+      if (tag->name == "AppendedData") {
+        appended(*tag);
+        break;  // raw bytes follow: the XML is over
+      }
+    }
+    if (sawFile_ && !stack_.empty() && !appendedSeen_)
+      fail(concat(file_, ": truncated: <", stack_.back(), "> is never closed"));
+    for (Array& a : appendedArrays_)
+      checkAppended(a);
+    if (totalBytes_ > 2.0 * double(budget_))
+      fail(concat(file_, ": its arrays need ", totalBytes_, " bytes together, beyond twice the ",
+                  "memory budget of ", budget_, " bytes"));
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& message) const { throw Error(message); }
+
+  std::optional<Tag> next() {
+    int c;
+    while ((c = in_.get()) >= 0 && c != '<') {
+      if (!isSpace(c) && stack_.empty() && !sawFile_ && c != 0xEF && c != 0xBB && c != 0xBF)
+        fail(concat(file_, ": not XML: text before the first tag"));
+    }
+    if (c < 0) return std::nullopt;
+    Tag t;
+    std::string text;
+    char quote = 0;
+    while ((c = in_.get()) >= 0) {
+      if (quote) {
+        if (c == quote) quote = 0;
+      } else if (c == '"' || c == '\'') {
+        quote = char(c);
+      } else if (c == '>') {
+        break;
+      }
+      text.push_back(char(c));
+      if (text.size() > kMaxTag)
+        fail(concat(file_, ": a tag longer than ", kMaxTag, " bytes at byte ", in_.position()));
+      if (text.size() == 3 && text == "!--") {  // a comment: skip to -->
+        int a = 0, b = 0;
+        while ((c = in_.get()) >= 0 && !(a == '-' && b == '-' && c == '>'))
+          a = b, b = c;
+        t.special = true;
+        return t;
+      }
+    }
+    if (c < 0) fail(concat(file_, ": truncated inside a tag ('<", text.substr(0, 40), "')"));
+    t.end = in_.position();
+    if (!text.empty() && (text[0] == '?' || text[0] == '!')) {
+      t.special = true;
+      return t;
+    }
+    std::size_t i = 0;
+    if (!text.empty() && text[0] == '/') t.closing = true, ++i;
+    const std::size_t nameStart = i;
+    while (i < text.size() && !isSpace(text[i]) && text[i] != '/')
+      ++i;
+    t.name = text.substr(nameStart, i - nameStart);
+    if (t.name.empty()) fail(concat(file_, ": a tag without a name at byte ", t.end));
+    if (!text.empty() && text.back() == '/') t.selfClosing = true, text.pop_back();
+    while (i < text.size()) {
+      while (i < text.size() && isSpace(text[i]))
+        ++i;
+      if (i >= text.size()) break;
+      const std::size_t eq = text.find('=', i);
+      if (eq == std::string::npos) break;
+      std::string key = text.substr(i, eq - i);
+      while (!key.empty() && isSpace(key.back()))
+        key.pop_back();
+      std::size_t v = eq + 1;
+      while (v < text.size() && isSpace(text[v]))
+        ++v;
+      if (v >= text.size() || (text[v] != '"' && text[v] != '\''))
+        fail(concat(file_, ": <", t.name, "> attribute ", key, ": expected a quoted value"));
+      const std::size_t close = text.find(text[v], v + 1);
+      if (close == std::string::npos)
+        fail(concat(file_, ": <", t.name, "> attribute ", key, ": unterminated value"));
+      t.attributes[key] = text.substr(v + 1, close - v - 1);
+      i = close + 1;
+    }
+    return t;
+  }
+
+  std::uint64_t whole(const std::string& text, const std::string& what) const {
+    std::uint64_t v = 0;
+    const char* first = text.data();
+    while (first < text.data() + text.size() && isSpace(*first))
+      ++first;
+    const auto [end, ec] = std::from_chars(first, text.data() + text.size(), v);
+    if (ec != std::errc() || end == first)
+      fail(concat(file_, ": ", what, ": expected a whole number, got '", text.substr(0, 40), "'"));
+    return v;
+  }
+
+  void open(const Tag& t) {
+    if (t.name == "VTKFile") {
+      sawFile_ = true;
+      const auto header = t.attributes.find("header_type");
+      if (header != t.attributes.end()) {
+        if (header->second == "UInt64")
+          headerSize_ = 8;
+        else if (header->second != "UInt32")
+          fail(concat(file_, ": VTKFile header_type '", header->second,
+                      "': expected UInt32 or UInt64"));
+      }
+      const auto order = t.attributes.find("byte_order");
+      bigEndian_ = order != t.attributes.end() && order->second == "BigEndian";
+      compressed_ = t.attributes.count("compressor") > 0 && !t.attributes.at("compressor").empty();
+    } else if (t.name == "Piece") {
+      ++piece_;
+      dims_.reset();
+      coordinate_ = 0;
+      const auto extent = t.attributes.find("Extent");
+      if (extent != t.attributes.end()) {
+        std::array<long long, 6> e{};
+        const char* p = extent->second.data();
+        const char* end = p + extent->second.size();
+        for (long long& v : e) {
+          while (p < end && isSpace(*p))
+            ++p;
+          const auto [q, ec] = std::from_chars(p, end, v);
+          if (ec != std::errc())
+            fail(concat(file_, ": Piece ", piece_, " Extent '", extent->second,
+                        "': expected six whole numbers"));
+          p = q;
+        }
+        std::array<std::uint64_t, 3> n{};
+        for (int a = 0; a < 3; ++a) {
+          const long long count = e[std::size_t(2 * a + 1)] - e[std::size_t(2 * a)] + 1;
+          if (count < 1 || count > (1LL << 31))
+            fail(concat(file_, ": Piece ", piece_, " Extent '", extent->second, "' along ",
+                        "xyz"[a], " holds ", count, " points"));
+          n[std::size_t(a)] = std::uint64_t(count);
+        }
+        dims_ = n;
+      } else if (t.attributes.count("NumberOfPoints")) {
+        points_ = whole(t.attributes.at("NumberOfPoints"), concat("Piece ", piece_, " NumberOfPoints"));
+      }
+    } else if (t.name == "Coordinates") {
+      coordinate_ = 0;
+    } else if (t.name == "DataArray") {
+      dataArray(t);
+    }
+  }
+
+  std::optional<std::uint64_t> expectedTuples() {
+    const std::string section = stack_.empty() ? "" : stack_.back();
+    if (dims_) {
+      const auto& n = *dims_;
+      if (section == "PointData" || section == "Points") return n[0] * n[1] * n[2];
+      if (section == "CellData") {
+        std::uint64_t cells = 1;
+        for (std::uint64_t k : n)
+          cells *= k > 1 ? k - 1 : 1;
+        return cells;
+      }
+      if (section == "Coordinates" && coordinate_ < 3) return n[coordinate_];
+    } else if (points_ && (section == "PointData" || section == "Points")) {
+      return *points_;
+    }
+    return std::nullopt;
+  }
+
+  void dataArray(const Tag& t) {
+    Array a;
+    const auto attribute = [&](const char* key) {
+      const auto it = t.attributes.find(key);
+      return it == t.attributes.end() ? std::string() : it->second;
+    };
+    const std::string section = stack_.empty() ? "?" : stack_.back();
+    const std::string name = attribute("Name");
+    a.where = concat(file_, ": Piece ", std::max(piece_, 1), " ", section, " DataArray",
+                     name.empty() ? std::string() : " '" + name + "'");
+    a.type = attribute("type");
+    a.size = typeSize(a.type);
+    if (a.size == 0)
+      fail(concat(a.where, ": type '", a.type,
+                  "' is not a numeric type (Int8..UInt64, Float32, Float64)"));
+    if (t.attributes.count("NumberOfComponents")) {
+      a.components = whole(attribute("NumberOfComponents"), a.where + " NumberOfComponents");
+      if (a.components < 1 || a.components > 0x7fffffffULL)
+        fail(concat(a.where, ": NumberOfComponents ", a.components, ": expected 1..2147483647"));
+    }
+    if (t.attributes.count("NumberOfTuples"))
+      a.declaredTuples = whole(attribute("NumberOfTuples"), a.where + " NumberOfTuples");
+    a.expectedTuples = expectedTuples();
+    if (section == "Coordinates") ++coordinate_;
+    if (a.declaredTuples && a.expectedTuples && *a.declaredTuples != *a.expectedTuples)
+      fail(concat(a.where, ": NumberOfTuples ", *a.declaredTuples, ", but the piece's extent gives ",
+                  *a.expectedTuples));
+    const std::optional<std::uint64_t> known =
+        a.declaredTuples ? a.declaredTuples : a.expectedTuples;
+    const std::uint64_t tuples = known.value_or(0);
+    const double bytes = double(tuples) * double(a.components) * double(a.size);
+    if (bytes > double(budget_))
+      fail(concat(a.where, ": ", tuples, " tuples x ", a.components, " components x ", a.size,
+                  " bytes = ", bytes, " bytes, beyond the memory budget of ", budget_, " bytes"));
+    totalBytes_ += bytes;
+    a.format = attribute("format");
+    if (a.format.empty()) a.format = "ascii";
+    if (a.format == "appended") {
+      a.offset = whole(attribute("offset"), a.where + " offset");
+      appendedArrays_.push_back(a);
+      return;
+    }
+    if (a.format != "ascii" && a.format != "binary")
+      fail(concat(a.where, ": format '", a.format, "': expected ascii, binary or appended"));
+    if (t.selfClosing) {
+      if (tuples * a.components > 0)
+        fail(concat(a.where, ": no data for ", tuples * a.components, " values"));
+      return;
+    }
+    readInline(a);
+    const std::uint64_t words = tuples * a.components;
+    if (a.format == "ascii") {
+      if (known && a.asciiValues != words)
+        fail(concat(a.where, ": holds ", a.asciiValues, " ascii values; ", tuples, " tuples x ",
+                    a.components, " components need ", words,
+                    " (the extent and the data disagree)"));
+      return;
+    }
+    if (a.base64Broken) fail(concat(a.where, ": the inline binary data is not valid base64"));
+    checkBinary(a, a.payload,
+                known ? std::optional<std::uint64_t>(words * std::uint64_t(a.size)) : std::nullopt);
+  }
+
+  // The inline data: up to the next '<' (a nested element or the closing tag).
+  void readInline(Array& a) {
+    Base64Decoder decoder;
+    bool inToken = false;
+    int c;
+    while ((c = in_.get()) >= 0 && c != '<') {
+      if (a.format == "ascii") {
+        if (isSpace(c)) {
+          inToken = false;
+        } else if (!inToken) {
+          inToken = true;
+          ++a.asciiValues;
+        }
+      } else if (!isSpace(c) && !a.base64Broken) {
+        a.base64Broken = !decoder.add(c, a.payload);
+      }
+    }
+    if (c < 0) fail(concat(a.where, ": truncated: the file ends inside the array's data"));
+    if (a.format == "binary" && !decoder.complete()) a.base64Broken = true;
+    // Put the '<' back: the tag reader needs it.
+    in_.seek(in_.position() - 1);
+  }
+
+  std::uint64_t word(const Payload& p, std::size_t index) const {
+    const std::size_t at = index * std::size_t(headerSize_);
+    std::uint64_t v = 0;
+    for (int i = 0; i < headerSize_; ++i) {
+      const std::uint8_t b = p.prefix[at + std::size_t(i)];
+      v |= std::uint64_t(b) << (8 * (bigEndian_ ? headerSize_ - 1 - i : i));
+    }
+    return v;
+  }
+
+  // `needed`: the bytes the array's tuples and components take; unknown (no
+  // extent, no NumberOfTuples): the header's count, checked against the budget.
+  void checkBinary(const Array& a, const Payload& p, std::optional<std::uint64_t> needed) const {
+    const std::uint64_t hs = std::uint64_t(headerSize_);
+    const auto expect = [&](std::uint64_t declared, const char* what) {
+      if (needed && declared != *needed)
+        fail(concat(a.where, ": its ", what, " declares ", declared, " bytes; its tuples and ",
+                    "components need ", *needed));
+      if (!needed && declared > budget_)
+        fail(concat(a.where, ": its ", what, " declares ", declared,
+                    " bytes, beyond the memory budget of ", budget_, " bytes"));
+    };
+    if (!compressed_) {
+      if (p.bytes < hs || p.prefix.size() < hs)
+        fail(concat(a.where, ": truncated: ", p.bytes, " bytes, not even the ", hs,
+                    "-byte header"));
+      const std::uint64_t declared = word(p, 0);
+      expect(declared, "header");
+      if (p.bytes - hs < declared)
+        fail(concat(a.where, ": truncated: the header declares ", declared, " bytes, ",
+                    p.bytes - hs, " follow it"));
+      return;
+    }
+    if (p.bytes < 3 * hs || p.prefix.size() < 3 * hs)
+      fail(concat(a.where, ": truncated: ", p.bytes, " bytes, not even the compression header"));
+    const std::uint64_t blocks = word(p, 0), blockSize = word(p, 1), last = word(p, 2);
+    if (blocks > (p.bytes - 3 * hs) / hs)
+      fail(concat(a.where, ": the compression header lists ", blocks, " blocks; only ", p.bytes,
+                  " bytes are there"));
+    if (blockSize > budget_)
+      fail(concat(a.where, ": compression blocks of ", blockSize,
+                  " bytes, beyond the memory budget of ", budget_, " bytes"));
+    if (last > blockSize)
+      fail(concat(a.where, ": the last compressed block (", last, " bytes) is larger than a block (",
+                  blockSize, ")"));
+    const std::uint64_t uncompressed =
+        blocks == 0 ? 0 : (blocks - 1) * blockSize + (last ? last : blockSize);
+    expect(uncompressed, "compression header (uncompressed size)");
+    const std::uint64_t header = (3 + blocks) * hs;
+    if (p.prefix.size() >= header) {
+      std::uint64_t sum = 0;
+      for (std::uint64_t b = 0; b < blocks; ++b) {
+        const std::uint64_t size = word(p, std::size_t(3 + b));
+        if (size > p.bytes) sum = p.bytes + 1;
+        else sum += size;
+        if (sum > p.bytes) break;
+      }
+      if (sum > p.bytes - header)
+        fail(concat(a.where, ": truncated: its compressed blocks need ", sum, " bytes, ",
+                    p.bytes - header, " follow the header"));
+    }
+  }
+
+  void appended(const Tag& t) {
+    appendedSeen_ = true;
+    const auto encoding = t.attributes.find("encoding");
+    base64Appended_ = encoding != t.attributes.end() && encoding->second == "base64";
+    if (encoding != t.attributes.end() && encoding->second != "base64" && encoding->second != "raw")
+      fail(concat(file_, ": AppendedData encoding '", encoding->second,
+                  "': expected raw or base64"));
+    int c;
+    while ((c = in_.get()) >= 0 && isSpace(c)) {
+    }
+    if (c != '_')
+      fail(concat(file_, ": AppendedData: expected '_' before the data"));
+    appendedStart_ = in_.position();
+    // The section ends at the last </AppendedData> (raw bytes may hold anything before it).
+    appendedEnd_ = fileSize_;
+    const std::uint64_t tail = std::min<std::uint64_t>(fileSize_ - appendedStart_, 4096);
+    std::ifstream in(path_, std::ios::binary);
+    in.seekg(std::streamoff(fileSize_ - tail));
+    std::string end(tail, '\0');
+    in.read(end.data(), std::streamsize(tail));
+    const std::size_t close = end.rfind("</AppendedData>");
+    if (close != std::string::npos) appendedEnd_ = fileSize_ - tail + close;
+  }
+
+  void checkAppended(Array& a) {
+    if (!appendedSeen_) fail(concat(a.where, ": format appended, but the file has no AppendedData"));
+    const std::optional<std::uint64_t> known =
+        a.declaredTuples ? a.declaredTuples : a.expectedTuples;
+    const std::optional<std::uint64_t> needed =
+        known ? std::optional<std::uint64_t>(*known * a.components * std::uint64_t(a.size))
+              : std::nullopt;
+    const std::uint64_t at = appendedStart_ + a.offset;
+    if (at > appendedEnd_ || a.offset > appendedEnd_)
+      fail(concat(a.where, ": offset ", a.offset, " lies beyond the appended data (",
+                  appendedEnd_ - appendedStart_, " bytes)"));
+    Payload p;
+    in_.seek(at);
+    const std::uint64_t length = appendedEnd_ - at;
+    if (base64Appended_) {
+      Base64Decoder decoder;
+      for (std::uint64_t i = 0; i < length; ++i) {
+        const int c = in_.get();
+        if (c < 0) break;
+        if (isSpace(c)) continue;
+        if (!decoder.add(c, p)) break;  // the end
+        // Past the header prefix only the count matters: estimate the rest.
+        if (p.prefix.size() >= kHeaderPrefix) {
+          p.bytes += (length - i - 1) / 4 * 3;
+          break;
+        }
+      }
+    } else {
+      p.bytes = length;
+      const std::uint64_t keep = std::min<std::uint64_t>(length, kHeaderPrefix);
+      for (std::uint64_t i = 0; i < keep; ++i) {
+        const int c = in_.get();
+        if (c < 0) break;
+        p.prefix.push_back(std::uint8_t(c));
+      }
+    }
+    checkBinary(a, p, needed);
+  }
+
+  std::filesystem::path path_;
+  std::string file_;
+  Scanner in_;
+  std::size_t budget_;
+  std::uint64_t fileSize_ = 0;
+  std::vector<std::string> stack_;
+  bool sawFile_ = false, bigEndian_ = false, compressed_ = false;
+  int headerSize_ = 4;
+  int piece_ = 0;
+  std::optional<std::array<std::uint64_t, 3>> dims_;
+  std::optional<std::uint64_t> points_;
+  std::size_t coordinate_ = 0;
+  double totalBytes_ = 0.0;
+  std::vector<Array> appendedArrays_;
+  bool appendedSeen_ = false, base64Appended_ = false;
+  std::uint64_t appendedStart_ = 0, appendedEnd_ = 0;
+};
+
+}  // namespace
+
+void checkVtkXml(const std::filesystem::path& path, std::size_t memoryBudget) {
+  Checker(path, memoryBudget).run();
+}
+
+}  // namespace sandstorm

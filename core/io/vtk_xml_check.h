@@ -1,0 +1,27 @@
+// checkVtkXml: a VTK XML file (.vti .vtr .vts, or any VTKFile) checked before
+// VTK reads it, because vtkXML*Reader allocates what a DataArray's attributes
+// claim before it notices that the payload is short.
+//
+// One streaming pass: the XML is read tag by tag, inline data is measured
+// without being kept, appended data is visited at each array's offset for its
+// header. Every DataArray of every Piece is checked:
+// - `type` is a numeric VTK type; NumberOfComponents a whole number >= 1;
+// - NumberOfTuples, when given, is what the piece's Extent gives the array
+//   (its points, its cells, or one axis of its coordinates);
+// - tuples x components x type size is within the memory budget, and all
+//   arrays together within twice it;
+// - the payload can hold it: ascii values are counted; a binary header's byte
+//   count (or a compressed header's uncompressed size) must equal it, and the
+//   header and blocks must fit in the bytes that are there (inline base64,
+//   appended raw or base64, UInt32 or UInt64 headers, either byte order).
+// Throws Error naming the file, the piece and array, and the numbers.
+#pragma once
+
+#include <cstddef>
+#include <filesystem>
+
+namespace sandstorm {
+
+void checkVtkXml(const std::filesystem::path& path, std::size_t memoryBudget);
+
+}  // namespace sandstorm
