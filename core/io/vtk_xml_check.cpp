@@ -53,7 +53,7 @@ struct Tag {
   std::string name;
   std::map<std::string, std::string> attributes;
   bool closing = false, selfClosing = false, special = false;  // special: <?..?>, <!..>
-  std::uint64_t end = 0;  // file position after '>'
+  std::uint64_t end = 0;                                       // file position after '>'
 };
 
 int typeSize(const std::string& type) {
@@ -288,7 +288,8 @@ class Checker {
         }
         dims_ = n;
       } else if (t.attributes.count("NumberOfPoints")) {
-        points_ = whole(t.attributes.at("NumberOfPoints"), concat("Piece ", piece_, " NumberOfPoints"));
+        points_ =
+            whole(t.attributes.at("NumberOfPoints"), concat("Piece ", piece_, " NumberOfPoints"));
       }
     } else if (t.name == "Coordinates") {
       coordinate_ = 0;
@@ -340,8 +341,8 @@ class Checker {
     a.expectedTuples = expectedTuples();
     if (section == "Coordinates") ++coordinate_;
     if (a.declaredTuples && a.expectedTuples && *a.declaredTuples != *a.expectedTuples)
-      fail(concat(a.where, ": NumberOfTuples ", *a.declaredTuples, ", but the piece's extent gives ",
-                  *a.expectedTuples));
+      fail(concat(a.where, ": NumberOfTuples ", *a.declaredTuples,
+                  ", but the piece's extent gives ", *a.expectedTuples));
     const std::optional<std::uint64_t> known =
         a.declaredTuples ? a.declaredTuples : a.expectedTuples;
     const std::uint64_t tuples = known.value_or(0);
@@ -417,16 +418,17 @@ class Checker {
     const std::uint64_t hs = std::uint64_t(headerSize_);
     const auto expect = [&](std::uint64_t declared, const char* what) {
       if (needed && declared != *needed)
-        fail(concat(a.where, ": its ", what, " declares ", declared, " bytes; its tuples and ",
-                    "components need ", *needed));
+        fail(concat(a.where, ": its ", what, " declares ", declared, " bytes; ",
+                    *needed / (a.components * std::uint64_t(a.size)), " tuples x ", a.components,
+                    " components need ", *needed, " (", a.size, " bytes each)"));
       if (!needed && declared > budget_)
         fail(concat(a.where, ": its ", what, " declares ", declared,
                     " bytes, beyond the memory budget of ", budget_, " bytes"));
     };
     if (!compressed_) {
       if (p.bytes < hs || p.prefix.size() < hs)
-        fail(concat(a.where, ": truncated: ", p.bytes, " bytes, not even the ", hs,
-                    "-byte header"));
+        fail(
+            concat(a.where, ": truncated: ", p.bytes, " bytes, not even the ", hs, "-byte header"));
       const std::uint64_t declared = word(p, 0);
       expect(declared, "header");
       if (p.bytes - hs < declared)
@@ -444,8 +446,8 @@ class Checker {
       fail(concat(a.where, ": compression blocks of ", blockSize,
                   " bytes, beyond the memory budget of ", budget_, " bytes"));
     if (last > blockSize)
-      fail(concat(a.where, ": the last compressed block (", last, " bytes) is larger than a block (",
-                  blockSize, ")"));
+      fail(concat(a.where, ": the last compressed block (", last,
+                  " bytes) is larger than a block (", blockSize, ")"));
     const std::uint64_t uncompressed =
         blocks == 0 ? 0 : (blocks - 1) * blockSize + (last ? last : blockSize);
     expect(uncompressed, "compression header (uncompressed size)");
@@ -454,8 +456,10 @@ class Checker {
       std::uint64_t sum = 0;
       for (std::uint64_t b = 0; b < blocks; ++b) {
         const std::uint64_t size = word(p, std::size_t(3 + b));
-        if (size > p.bytes) sum = p.bytes + 1;
-        else sum += size;
+        if (size > p.bytes)
+          sum = p.bytes + 1;
+        else
+          sum += size;
         if (sum > p.bytes) break;
       }
       if (sum > p.bytes - header)
@@ -474,8 +478,7 @@ class Checker {
     int c;
     while ((c = in_.get()) >= 0 && isSpace(c)) {
     }
-    if (c != '_')
-      fail(concat(file_, ": AppendedData: expected '_' before the data"));
+    if (c != '_') fail(concat(file_, ": AppendedData: expected '_' before the data"));
     appendedStart_ = in_.position();
     // The section ends at the last </AppendedData> (raw bytes may hold anything before it).
     appendedEnd_ = fileSize_;
@@ -489,7 +492,8 @@ class Checker {
   }
 
   void checkAppended(Array& a) {
-    if (!appendedSeen_) fail(concat(a.where, ": format appended, but the file has no AppendedData"));
+    if (!appendedSeen_)
+      fail(concat(a.where, ": format appended, but the file has no AppendedData"));
     const std::optional<std::uint64_t> known =
         a.declaredTuples ? a.declaredTuples : a.expectedTuples;
     const std::optional<std::uint64_t> needed =

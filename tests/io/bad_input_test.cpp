@@ -136,8 +136,7 @@ TEST(BadInput, XmlExtentsEmptyOrHuge) {
                   replaced(replaced(test::readAll(appended), "WholeExtent=\"0 2 0 3 0 1\"",
                                     "WholeExtent=\"0 2 0 2 0 1\""),
                            "Extent=\"0 2 0 3 0 1\"", "Extent=\"0 2 0 2 0 1\""));
-  expectError([&] { loadField(appended); },
-              {appended.string(), "declares 96 bytes", "need 72"});
+  expectError([&] { loadField(appended); }, {appended.string(), "declares 96 bytes", "need 72"});
 }
 
 TEST(BadInput, ScalarArrayWhereVectorsWereAsked) {

@@ -1,0 +1,274 @@
+// VTK XML files are checked before VTK reads them: for every encoding VTK's
+// own writers produce (ascii, inline base64, appended raw and base64, zlib or
+// not, UInt32 or UInt64 headers, little or big endian), a good file passes and
+// loads, and a file whose attributes claim more than its payload holds, or
+// more than the memory budget, is refused with the file, the array and the
+// numbers, before VTK allocates anything.
+#include "core/io/vtk_xml_check.h"
+
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkRectilinearGrid.h>
+#include <vtkStructuredGrid.h>
+#include <vtkXMLImageDataWriter.h>
+#include <vtkXMLRectilinearGridWriter.h>
+#include <vtkXMLStructuredGridWriter.h>
+
+#include <regex>
+
+#include "core/io/field_loader.h"
+#include "tests/io/io_test_util.h"
+
+namespace sandstorm {
+namespace {
+
+struct Encoding {
+  const char* name;
+  int mode;  // vtkXMLWriter::Ascii, Binary, Appended
+  bool base64Appended, zlib, header64, bigEndian;
+};
+
+const Encoding kEncodings[] = {
+    {"ascii", 0, false, false, false, false},
+    {"binary", 1, false, false, false, false},
+    {"binary_zlib", 1, false, true, false, false},
+    {"binary_uint64", 1, false, false, true, false},
+    {"binary_zlib64", 1, false, true, true, false},
+    {"raw", 2, false, false, false, false},
+    {"raw_zlib", 2, false, true, false, false},
+    {"raw_uint64", 2, false, false, true, false},
+    {"base64", 2, true, false, false, false},
+    {"base64_zlib", 2, true, true, false, false},
+    {"raw_big_endian", 2, false, false, false, true},
+    {"binary_zlib_big_endian", 1, false, true, true, true},
+};
+
+vtkNew<vtkImageData> image() {
+  vtkNew<vtkImageData> img;
+  img->SetDimensions(4, 3, 2);
+  vtkNew<vtkFloatArray> v;
+  v->SetName("velocity");
+  v->SetNumberOfComponents(3);
+  v->SetNumberOfTuples(24);
+  for (vtkIdType i = 0; i < 72; ++i)
+    v->SetValue(i, float(i) * 0.25f);
+  img->GetPointData()->SetVectors(v);
+  return img;
+}
+
+template <class Writer>
+void configure(Writer* w, const Encoding& e) {
+  w->SetDataMode(e.mode);
+  w->SetEncodeAppendedData(e.base64Appended);
+  if (e.zlib)
+    w->SetCompressorTypeToZLib();
+  else
+    w->SetCompressorTypeToNone();
+  if (e.header64)
+    w->SetHeaderTypeToUInt64();
+  else
+    w->SetHeaderTypeToUInt32();
+  if (e.bigEndian)
+    w->SetByteOrderToBigEndian();
+  else
+    w->SetByteOrderToLittleEndian();
+}
+
+std::filesystem::path write(const std::filesystem::path& dir, const Encoding& e) {
+  const auto path = dir / (std::string(e.name) + ".vti");
+  vtkNew<vtkXMLImageDataWriter> w;
+  w->SetInputData(image());
+  w->SetFileName(path.c_str());
+  configure(w.Get(), e);
+  w->Write();
+  return path;
+}
+
+std::filesystem::path edited(const std::filesystem::path& path, const std::string& pattern,
+                             const std::string& with, const std::string& suffix) {
+  const std::string text = test::readAll(path);
+  const std::string out = std::regex_replace(text, std::regex(pattern), with);
+  EXPECT_NE(out, text) << pattern;
+  auto to = path;
+  to.replace_filename(path.stem().string() + "_" + suffix + ".vti");
+  test::writeText(to, out);
+  return to;
+}
+
+constexpr std::size_t kBudget = std::size_t{2} << 30;
+
+class VtkXmlCheck : public testing::TestWithParam<Encoding> {};
+
+TEST_P(VtkXmlCheck, AGoodFilePassesAndLoads) {
+  const auto path = write(test::scratch(), GetParam());
+  EXPECT_NO_THROW(checkVtkXml(path, kBudget));
+  const VectorField f = loadField(path);
+  EXPECT_EQ(f.at(3, 2, 1), glm::vec3(23 * 0.75f, 23 * 0.75f + 0.25f, 23 * 0.75f + 0.5f));
+}
+
+TEST_P(VtkXmlCheck, ComponentsBeyondTheBudgetAreRefusedBeforeVtkReads) {
+  const auto path = write(test::scratch(), GetParam());
+  const auto bad =
+      edited(path, "NumberOfComponents=\"3\"", "NumberOfComponents=\"1000000000\"", "huge");
+  test::expectError([&] { loadField(bad); }, {bad.string(), "DataArray 'velocity'",
+                                              "1000000000 components", "memory budget"});
+}
+
+TEST_P(VtkXmlCheck, ComponentsThePayloadCannotHoldAreRefused) {
+  const auto path = write(test::scratch(), GetParam());
+  const auto bad =
+      edited(path, "NumberOfComponents=\"3\"", "NumberOfComponents=\"100000\"", "short");
+  test::expectError([&] { loadField(bad); },
+                    {bad.string(), "DataArray 'velocity'", "100000 components need"});
+}
+
+TEST_P(VtkXmlCheck, ATupleCountThatIsNotTheExtentsIsRefused) {
+  const auto path = write(test::scratch(), GetParam());
+  const auto bad = edited(path, "NumberOfComponents=\"3\"",
+                          "NumberOfComponents=\"3\" NumberOfTuples=\"999999\"", "tuples");
+  test::expectError([&] { loadField(bad); }, {bad.string(), "NumberOfTuples 999999", "gives 24"});
+}
+
+// A cut file is refused, or (cut only in its closing tags) reads every value.
+TEST_P(VtkXmlCheck, EveryTruncationIsRefusedOrReadWhole) {
+  const auto path = write(test::scratch(), GetParam());
+  const VectorField whole = loadField(path);
+  const std::string text = test::readAll(path);
+  const auto cut = path.parent_path() / "cut.vti";
+  int refused = 0;
+  for (std::size_t n = 0; n < text.size(); n += 7) {
+    test::writeText(cut, text.substr(0, n));
+    try {
+      checkVtkXml(cut, kBudget);
+      const VectorField part = loadField(cut);
+      EXPECT_TRUE(std::equal(part.values().begin(), part.values().end(), whole.values().begin(),
+                             whole.values().end()))
+          << "a file cut at byte " << n << " of " << text.size() << " loaded other values";
+    } catch (const Error&) {
+      ++refused;
+    }
+  }
+  EXPECT_GT(refused, int(text.size() / 7) * 9 / 10);
+}
+
+INSTANTIATE_TEST_SUITE_P(Encodings, VtkXmlCheck, testing::ValuesIn(kEncodings),
+                         [](const testing::TestParamInfo<Encoding>& i) { return i.param.name; });
+
+TEST(VtkXmlCheckHeaders, ACompressionHeaderListingEndlessBlocksIsRefused) {
+  const auto dir = test::scratch();
+  const auto path = write(dir, kEncodings[6]);  // appended raw, zlib, UInt32
+  std::string text = test::readAll(path);
+  const std::size_t data = text.find('_', text.find("<AppendedData")) + 1;
+  // The first header word is the block count: two thousand million blocks.
+  text[data] = '\x00', text[data + 1] = '\x94', text[data + 2] = '\x35', text[data + 3] = '\x77';
+  test::writeText(path, text);
+  test::expectError([&] { checkVtkXml(path, kBudget); },
+                    {path.string(), "lists 2000000000 blocks", "bytes are there"});
+}
+
+TEST(VtkXmlCheckHeaders, AnUncompressedByteCountBeyondThePayloadIsRefused) {
+  const auto dir = test::scratch();
+  const auto path = write(dir, kEncodings[5]);  // appended raw, UInt32
+  std::string text = test::readAll(path);
+  const std::size_t data = text.find('_', text.find("<AppendedData")) + 1;
+  text.resize(data + 100);  // the header says 288 bytes; 96 follow it
+  text += "\n</AppendedData>\n</VTKFile>\n";
+  test::writeText(path, text);
+  test::expectError([&] { checkVtkXml(path, kBudget); },
+                    {path.string(), "truncated", "declares 288 bytes", "follow it"});
+}
+
+TEST(VtkXmlCheckHeaders, ASmallBudgetRefusesAGoodFileSayingSo) {
+  const auto path = write(test::scratch(), kEncodings[5]);
+  test::expectError([&] { checkVtkXml(path, 100); }, {"288 bytes", "memory budget of 100"});
+}
+
+TEST(VtkXmlCheckGrids, RectilinearAndStructuredGridsPassAndTheirCoordinatesAreChecked) {
+  const auto dir = test::scratch();
+  vtkNew<vtkRectilinearGrid> r;
+  r->SetDimensions(3, 2, 2);
+  for (int a = 0; a < 3; ++a) {
+    vtkNew<vtkFloatArray> c;
+    const int n = a == 0 ? 3 : 2;
+    c->SetNumberOfTuples(n);
+    for (int i = 0; i < n; ++i)
+      c->SetValue(i, float(i));
+    if (a == 0) r->SetXCoordinates(c);
+    if (a == 1) r->SetYCoordinates(c);
+    if (a == 2) r->SetZCoordinates(c);
+  }
+  vtkNew<vtkFloatArray> v;
+  v->SetName("velocity");
+  v->SetNumberOfComponents(3);
+  v->SetNumberOfTuples(12);
+  v->Fill(1.0f);
+  r->GetPointData()->SetVectors(v);
+  const auto vtr = dir / "grid.vtr";
+  vtkNew<vtkXMLRectilinearGridWriter> rw;
+  rw->SetInputData(r);
+  rw->SetFileName(vtr.c_str());
+  rw->SetDataModeToAscii();
+  rw->Write();
+  EXPECT_NO_THROW(checkVtkXml(vtr, kBudget));
+  // The x coordinates claim four values where the extent has three points along x.
+  const std::string text = test::readAll(vtr);
+  const std::size_t coordinates = text.find("<Coordinates>");
+  const std::size_t values = text.find(">", text.find("<DataArray", coordinates)) + 1;
+  test::writeText(vtr, text.substr(0, values) + " 7 " + text.substr(values));
+  test::expectError([&] { checkVtkXml(vtr, kBudget); },
+                    {vtr.string(), "Coordinates DataArray", "holds 4 ascii values", "need 3"});
+
+  vtkNew<vtkStructuredGrid> s;
+  s->SetDimensions(2, 2, 2);
+  vtkNew<vtkPoints> points;
+  for (int i = 0; i < 8; ++i)
+    points->InsertNextPoint(i & 1, (i >> 1) & 1, (i >> 2) & 1);
+  s->SetPoints(points);
+  v->SetNumberOfTuples(8);
+  s->GetPointData()->SetVectors(v);
+  const auto vts = dir / "grid.vts";
+  vtkNew<vtkXMLStructuredGridWriter> sw;
+  sw->SetInputData(s);
+  sw->SetFileName(vts.c_str());
+  sw->Write();
+  EXPECT_NO_THROW(checkVtkXml(vts, kBudget));
+}
+
+TEST(VtkXmlCheckText, MalformedXmlIsRefused) {
+  const auto dir = test::scratch();
+  const auto path = dir / "bad.vti";
+  const auto errorOf = [&](const std::string& text) {
+    test::writeText(path, text);
+    try {
+      checkVtkXml(path, kBudget);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("(no error)");
+  };
+  EXPECT_NE(errorOf("<VTKFile type=\"ImageData\"><ImageData").find("truncated inside a tag"),
+            std::string::npos);
+  EXPECT_NE(errorOf("<VTKFile><ImageData></VTKFile>").find("does not match"), std::string::npos);
+  EXPECT_NE(errorOf("<VTKFile header_type=\"UInt16\">").find("header_type"), std::string::npos);
+  EXPECT_NE(errorOf("<VTKFile><Piece Extent=\"0 1 0 1\">").find("six whole numbers"),
+            std::string::npos);
+  EXPECT_NE(errorOf("<VTKFile><Piece Extent=\"0 1 0 1 0 1\"><PointData><DataArray type=\"String\">")
+                .find("not a numeric type"),
+            std::string::npos);
+  EXPECT_NE(errorOf("<VTKFile><Piece Extent=\"0 1 0 1 0 1\"><PointData><DataArray "
+                    "type=\"Float32\" format=\"binary\">!!!!</DataArray>")
+                .find("not valid base64"),
+            std::string::npos);
+  EXPECT_NE(errorOf("<VTKFile><Piece Extent=\"0 1 0 1 0 1\"><PointData><DataArray "
+                    "type=\"Float32\" format=\"appended\" offset=\"0\"/></PointData></Piece>"
+                    "</VTKFile>")
+                .find("no AppendedData"),
+            std::string::npos);
+  EXPECT_NE(errorOf("junk").find("not XML"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sandstorm
