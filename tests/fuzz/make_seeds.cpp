@@ -1,0 +1,179 @@
+// make_seeds: writes the fuzzers' seed corpora into DIR/<target>/, from the
+// project's own writers (the .vti and .vdb writers, the DTrack writer, the
+// session log and packet codecs, the height-map writer), VTK's writers for
+// the VTK formats Sandstorm only reads, the bundled configurations and
+// sample data, and small hand-made engine files. Run by scripts/fuzz.
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkRectilinearGrid.h>
+#include <vtkStructuredGrid.h>
+#include <vtkStructuredPointsWriter.h>
+#include <vtkXMLImageDataWriter.h>
+#include <vtkXMLRectilinearGridWriter.h>
+#include <vtkXMLStructuredGridWriter.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "core/field/analytic_field_factory.h"
+#include "core/field/height_map_io.h"
+#include "core/io/field_writer.h"
+#include "core/sim/frame_packet_codec.h"
+#include "core/sim/session_log.h"
+#include "core/tracking/dtrack_writer.h"
+#include "core/tracking/tracker_script.h"
+
+namespace fs = std::filesystem;
+using namespace sandstorm;
+
+namespace {
+
+void text(const fs::path& path, const std::string& content) {
+  fs::create_directories(path.parent_path());
+  std::ofstream(path, std::ios::binary) << content;
+}
+
+vtkNew<vtkFloatArray> velocity(int n) {
+  vtkNew<vtkFloatArray> v;
+  v->SetName("velocity");
+  v->SetNumberOfComponents(3);
+  v->SetNumberOfTuples(n);
+  for (int i = 0; i < 3 * n; ++i)
+    v->SetValue(i, 0.5f * float(i % 7) - 1.0f);
+  return v;
+}
+
+template <class Writer, class Data>
+void xml(Data* data, const fs::path& path, int mode, bool zlib) {
+  vtkNew<Writer> w;
+  w->SetInputData(data);
+  w->SetFileName(path.c_str());
+  w->SetDataMode(mode);
+  if (zlib)
+    w->SetCompressorTypeToZLib();
+  else
+    w->SetCompressorTypeToNone();
+  w->Write();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 3) {
+    std::fprintf(stderr, "usage: make_seeds OUT_DIR SOURCE_DIR\n");
+    return 2;
+  }
+  const fs::path out = argv[1], source = argv[2];
+  for (const char* t : {"fuzz_field_vtk", "fuzz_field_vti", "fuzz_field_vtr", "fuzz_field_vts",
+                        "fuzz_field_vdb", "fuzz_field_fga", "fuzz_field_vf", "fuzz_height_map",
+                        "fuzz_config", "fuzz_session_log", "fuzz_cluster_packet", "fuzz_dtrack",
+                        "fuzz_pvx", "fuzz_tracker_path"})
+    fs::create_directories(out / t);
+
+  // Image data in every encoding VTK writes, and the legacy format.
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(3, 2, 2);
+  image->GetPointData()->SetVectors(velocity(12));
+  for (int mode = 0; mode < 3; ++mode)
+    for (bool zlib : {false, true})
+      xml<vtkXMLImageDataWriter>(image.Get(), out / "fuzz_field_vti" /
+                                     ("mode" + std::to_string(mode) + (zlib ? "z" : "") + ".vti"),
+                                 mode, zlib);
+  for (bool binary : {false, true}) {
+    vtkNew<vtkStructuredPointsWriter> w;
+    w->SetInputData(image);
+    w->SetFileName((out / "fuzz_field_vtk" / (binary ? "binary.vtk" : "ascii.vtk")).c_str());
+    if (binary) w->SetFileTypeToBinary();
+    w->Write();
+  }
+  vtkNew<vtkRectilinearGrid> rect;
+  rect->SetDimensions(3, 2, 2);
+  for (int a = 0; a < 3; ++a) {
+    vtkNew<vtkFloatArray> c;
+    const int n = a == 0 ? 3 : 2;
+    c->SetNumberOfTuples(n);
+    for (int i = 0; i < n; ++i)
+      c->SetValue(i, float(i * i));
+    (a == 0 ? rect->SetXCoordinates(c) : a == 1 ? rect->SetYCoordinates(c) : rect->SetZCoordinates(c));
+  }
+  rect->GetPointData()->SetVectors(velocity(12));
+  xml<vtkXMLRectilinearGridWriter>(rect.Get(), out / "fuzz_field_vtr" / "ascii.vtr", 0, false);
+  xml<vtkXMLRectilinearGridWriter>(rect.Get(), out / "fuzz_field_vtr" / "appended.vtr", 2, true);
+  vtkNew<vtkStructuredGrid> grid;
+  grid->SetDimensions(2, 2, 2);
+  vtkNew<vtkPoints> points;
+  for (int i = 0; i < 8; ++i)
+    points->InsertNextPoint(i & 1, ((i >> 1) & 1) + 0.2 * (i & 1), (i >> 2) & 1);
+  grid->SetPoints(points);
+  grid->GetPointData()->SetVectors(velocity(8));
+  xml<vtkXMLStructuredGridWriter>(grid.Get(), out / "fuzz_field_vts" / "ascii.vts", 0, false);
+  xml<vtkXMLStructuredGridWriter>(grid.Get(), out / "fuzz_field_vts" / "binary.vts", 1, false);
+
+  // The project's own writers.
+  const auto tornado = makeAnalyticField("tornado", {});
+  const VectorField small = bake(*tornado, Box{{-1, -1, 0}, {1, 1, 1}}, {4, 3, 2});
+  saveField(out / "fuzz_field_vti" / "sandstorm.vti", small);
+  saveField(out / "fuzz_field_vdb" / "sandstorm.vdb", small);
+  fs::copy_file(source / "data" / "downwash.vdb", out / "fuzz_field_vdb" / "downwash.vdb",
+                fs::copy_options::overwrite_existing);
+  writeHeightMapPgm(HeightMap({-1, -1}, {1, 1}, {3, 2}, {0, 0.5f, 1, 0.25f, 0.75f, 0.1f}),
+                    out / "fuzz_height_map" / "small.pgm", 0.0f, 1.0f);
+  text(out / "fuzz_field_fga" / "small.fga",
+       "2,1,1,\n-100,-50,0,\n100,50,100,\n1,2,3,\n-4,5.5,6e-1,\n");
+  std::string vf = "VF_V";
+  for (std::uint16_t d : {2, 1, 1})
+    vf.append(reinterpret_cast<const char*>(&d), 2);
+  for (float f : {1.0f, 2.0f, 3.0f, -1.0f, 0.5f, 0.25f})
+    vf.append(reinterpret_cast<const char*>(&f), 4);
+  text(out / "fuzz_field_vf" / "small.vf", vf);
+
+  // Configurations, the bundled ones and one with an include.
+  for (const auto& e : fs::directory_iterator(source / "config"))
+    if (e.path().extension() == ".toml")
+      fs::copy_file(e.path(), out / "fuzz_config" / e.path().filename(),
+                    fs::copy_options::overwrite_existing);
+  text(out / "fuzz_config" / "include.toml",
+       "include = \"part.toml\"\n[[wall]]\nname = \"w\"\nlower_left = [0, 0, 0]\n"
+       "lower_right = [1, 0, 0]\nupper_left = [0, 0, 1]\n#---\n[sim]\nmaximum = 500\n");
+  fs::copy_file(source / "config" / "cave4.pvx", out / "fuzz_pvx" / "cave4.pvx",
+                fs::copy_options::overwrite_existing);
+
+  // A session log with every kind of line, a packet of every member, datagrams.
+  TrackingSample s;
+  s.active = s.headTracked = true;
+  s.trackerFrame = 42;
+  s.head.position = {0.1f, 0.2f, 1.7f};
+  s.wand.present = s.wand.tracked = true;
+  s.wand.buttons = 3;
+  Emitter e;
+  text(out / "fuzz_session_log" / "session.log",
+       "# log\n0 set render.size 0.2\n1 add-emitter " + formatChange(StateChange::addEmitter(e)).substr(12) +
+           "\n2 remove-emitter 0\n3 reset\n4 " + formatTracking(s) + "\n5 " +
+           formatNavigation(Navigation{}) + "\n");
+  FramePacket p;
+  p.frame = 7;
+  p.changes = {StateChange::set("sim.maximum", 100), StateChange::addEmitter(e)};
+  p.emission = {3, 4};
+  p.tracking = s;
+  p.fieldUpdate = std::make_shared<const FieldUpdate>();
+  const std::vector<std::byte> packet = encodePacket(p, {1, 2});
+  text(out / "fuzz_cluster_packet" / "packet.bin",
+       std::string(reinterpret_cast<const char*>(packet.data()), packet.size()));
+  const std::vector<std::byte> field = encodeField(small);
+  text(out / "fuzz_cluster_packet" / "field.bin",
+       std::string(reinterpret_cast<const char*>(field.data()), field.size()));
+  const TrackerScript walk = TrackerScript::builtIn();
+  text(out / "fuzz_dtrack" / "frame.txt", writeDTrack(walk.at(2.0, 17)));
+  text(out / "fuzz_dtrack" / "old.txt", writeDTrack(walk.at(3.0, 18), FlystickFormat::V1));
+  text(out / "fuzz_tracker_path" / "path.toml",
+       "loop = true\nhead_body = 1\n[[key]]\ntime = 0.0\nhead = [0, 0, 1.7]\nbuttons = 1\n"
+       "[[key]]\ntime = 1.0\nwand = [0.2, 0.3, 1.1]\nwand_pitch_deg = 20.0\n"
+       "joystick = [0.5, -0.5]\nwand_visible = false\n");
+  std::printf("make_seeds: wrote the seed corpora to %s\n", out.c_str());
+  return 0;
+}

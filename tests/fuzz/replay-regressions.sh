@@ -1,0 +1,10 @@
+#!/usr/bin/env bash
+# Replays every input in a regression folder through a fuzz target (libFuzzer
+# runs each file once when given files). An empty or missing folder passes.
+set -euo pipefail
+target="$1"
+folder="$2"
+shopt -s nullglob
+inputs=("$folder"/*)
+[ ${#inputs[@]} -eq 0 ] && { echo "no regression inputs in $folder"; exit 0; }
+exec "$target" -rss_limit_mb=2560 -malloc_limit_mb=2048 -timeout=30 "${inputs[@]}"
