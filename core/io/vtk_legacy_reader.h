@@ -1,13 +1,9 @@
 // readVtkLegacy(): a legacy VTK file (.vtk, ASCII or BINARY) holding
-// STRUCTURED_POINTS, RECTILINEAR_GRID or STRUCTURED_GRID, read by VTK's own
-// readers.
-//
-// Before VTK sees the file, its header is checked here: the dataset type, the
-// DIMENSIONS (positive, their product within VectorField::kMaxPoints and the
-// memory budget), SPACING > 0, and every POINTS / *_COORDINATES / POINT_DATA
-// count against the dimensions and the file's size, so a damaged header gives
-// an Error naming the line instead of a huge allocation. Afterwards any error
-// VTK reported (including its warnings about short data) becomes an Error.
+// STRUCTURED_POINTS, RECTILINEAR_GRID or STRUCTURED_GRID, parsed and checked
+// whole by Sandstorm's own parser (vtk_legacy_parser.h: VTK's legacy readers
+// crash on some malformed files) and handed on as the VTK dataset the rest of
+// the loader works with: the file's VECTORS are its active vectors, point and
+// cell arrays keep their names.
 #pragma once
 
 #include <filesystem>

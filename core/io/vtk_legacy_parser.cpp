@@ -1,0 +1,447 @@
+#include "core/io/vtk_legacy_parser.h"
+
+#include <algorithm>
+#include <bit>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <optional>
+
+#include "core/field/vector_field.h"
+#include "core/util/error.h"
+
+namespace sandstorm {
+
+long long LegacyVtkData::cellCount() const {
+  long long cells = 1;
+  for (long long n : dims)
+    cells *= n > 1 ? n - 1 : 1;
+  return cells;
+}
+
+namespace {
+
+std::string lower(std::string_view s) {
+  std::string out(s);
+  std::transform(out.begin(), out.end(), out.begin(),
+                 [](unsigned char c) { return char(std::tolower(c)); });
+  return out;
+}
+
+bool isSpace(char c) {
+  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
+}
+
+// The bytes of a legacy type in BINARY data; 0 for types refused.
+int typeSize(const std::string& type) {
+  static const std::pair<const char*, int> sizes[] = {
+      {"unsigned_char", 1}, {"char", 1},           {"signed_char", 1}, {"unsigned_short", 2},
+      {"short", 2},         {"unsigned_int", 4},   {"int", 4},         {"unsigned_long", 8},
+      {"long", 8},          {"vtktypeint64", 8},   {"vtktypeuint64", 8}, {"vtkidtype", 8},
+      {"float", 4},         {"double", 8}};
+  for (const auto& [name, size] : sizes)
+    if (type == name) return size;
+  return 0;
+}
+
+class Parser {
+ public:
+  Parser(std::string text, std::string file, std::size_t budget)
+      : text_(std::move(text)), file_(std::move(file)), budget_(budget) {}
+
+  LegacyVtkData run() {
+    header();
+    geometry();
+    while (skipSpace(), at_ < text_.size()) {
+      const std::string key = keyword("POINT_DATA or CELL_DATA");
+      if (key == "point_data")
+        attributes(data_.pointData, data_.pointCount(), "POINT_DATA");
+      else if (key == "cell_data")
+        attributes(data_.cellData, data_.cellCount(), "CELL_DATA");
+      else
+        fail(concat("'", last_, "'; expected POINT_DATA or CELL_DATA"));
+    }
+    // An ASCII file cut inside its last number still parses ("12.5" -> "1"):
+    // VTK's writers end every file with a newline, so one that ends in a value is truncated.
+    if (!binary_ && !text_.empty() && !isSpace(text_.back())) {
+      start_ = text_.size() - 1;
+      fail("the file ends inside a value, without the final newline; it is truncated (if it is "
+           "complete, end it with a newline)");
+    }
+    return std::move(data_);
+  }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const {
+    throw Error(concat(file_, ":", line(), ": ", what));
+  }
+  long long line() const { return std::count(text_.begin(), text_.begin() + long(start_), '\n') + 1; }
+
+  // A whole line (without its end), from the current position.
+  std::string_view readLine() {
+    start_ = at_;
+    const std::size_t end = text_.find('\n', at_);
+    const std::size_t stop = end == std::string::npos ? text_.size() : end;
+    std::string_view l(text_.data() + at_, stop - at_);
+    if (!l.empty() && l.back() == '\r') l.remove_suffix(1);
+    at_ = end == std::string::npos ? text_.size() : end + 1;
+    return l;
+  }
+
+  void skipSpace() {
+    while (at_ < text_.size() && isSpace(text_[at_]))
+      ++at_;
+  }
+
+  std::string_view token(const std::string& what) {
+    skipSpace();
+    start_ = at_;
+    if (at_ >= text_.size()) fail(concat("the file ends; expected ", what));
+    while (at_ < text_.size() && !isSpace(text_[at_]))
+      ++at_;
+    last_ = std::string(text_.data() + start_, std::min<std::size_t>(at_ - start_, 40));
+    return std::string_view(text_.data() + start_, at_ - start_);
+  }
+
+  std::string keyword(const std::string& what) { return lower(token(what)); }
+
+  long long integer(const std::string& what, long long min, long long max) {
+    const std::string_view t = token(what);
+    long long v = 0;
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (ec != std::errc() || end != t.data() + t.size())
+      fail(concat("'", last_, "'; expected ", what, " (a whole number)"));
+    if (v < min || v > max) fail(concat(what, " is ", v, "; expected ", min, "..", max));
+    return v;
+  }
+
+  double number(const std::string& what) {
+    const std::string_view t = token(what);
+    double v = 0.0;
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+    if ((ec != std::errc() && ec != std::errc::result_out_of_range) ||
+        end != t.data() + t.size())
+      fail(concat("'", last_, "'; expected ", what, " (a number)"));
+    return v;
+  }
+
+  // The rest of the current line must be empty (binary data starts on the next).
+  void endOfLine(const std::string& after) {
+    while (at_ < text_.size() && text_[at_] != '\n') {
+      if (!isSpace(text_[at_]))
+        fail(concat("unexpected '", text_.substr(at_, 20), "' after ", after));
+      ++at_;
+    }
+    if (at_ < text_.size()) ++at_;
+  }
+
+  void header() {
+    const std::string_view first = readLine();
+    if (first.rfind("# vtk DataFile Version", 0) != 0)
+      fail("this is not a legacy VTK file; expected '# vtk DataFile Version x.x' on line 1");
+    if (at_ >= text_.size()) fail("the file ends before its title line (line 2)");
+    readLine();  // the title: anything
+    const std::string mode = lower(token("ASCII or BINARY"));
+    if (mode != "ascii" && mode != "binary")
+      fail(concat("'", last_, "'; expected ASCII or BINARY on line 3"));
+    binary_ = mode == "binary";
+    if (keyword("DATASET") != "dataset") fail(concat("'", last_, "'; expected DATASET"));
+    const std::string type = keyword("the dataset type");
+    if (type == "structured_points")
+      data_.type = LegacyVtkData::Type::StructuredPoints;
+    else if (type == "rectilinear_grid")
+      data_.type = LegacyVtkData::Type::RectilinearGrid;
+    else if (type == "structured_grid")
+      data_.type = LegacyVtkData::Type::StructuredGrid;
+    else
+      fail(concat("DATASET ", last_,
+                  " is not a grid; expected STRUCTURED_POINTS, RECTILINEAR_GRID or "
+                  "STRUCTURED_GRID"));
+  }
+
+  void geometry() {
+    bool dims = false, origin = false, spacing = false;
+    std::array<bool, 3> coordinates{};
+    bool points = false;
+    while (skipSpace(), at_ < text_.size()) {
+      const std::size_t before = at_;
+      const std::string key = keyword("the dataset's geometry");
+      if (key == "point_data" || key == "cell_data") {
+        at_ = before;
+        break;
+      }
+      if (key == "dimensions") {
+        if (dims) fail("a second DIMENSIONS");
+        for (int a = 0; a < 3; ++a) {
+          const std::string what = concat("DIMENSIONS along ", "xyz"[a]);
+          const long long n = integer(what, -(1LL << 62), 1LL << 31);
+          if (n < 1) fail(concat(what, " is ", n, "; expected a positive point count"));
+          data_.dims[std::size_t(a)] = n;
+        }
+        const double n = double(data_.dims[0]) * double(data_.dims[1]) * double(data_.dims[2]);
+        if (n > double(VectorField::kMaxPoints) || n * 12.0 > double(budget_))
+          fail(concat("DIMENSIONS ", data_.dims[0], " ", data_.dims[1], " ", data_.dims[2], " = ",
+                      n, " points exceed the memory budget of ", budget_,
+                      " bytes (12 per point, at most ", VectorField::kMaxPoints, " points)"));
+        dims = true;
+      } else if (key == "field") {
+        token("the field data's name");
+        std::vector<LegacyArray> discard;
+        fieldArrays(discard, std::nullopt);
+      } else if (data_.type == LegacyVtkData::Type::StructuredPoints &&
+                 (key == "origin" || key == "spacing" || key == "aspect_ratio")) {
+        const bool isOrigin = key == "origin";
+        if (isOrigin ? origin : spacing) fail(concat("a second ", lower(last_)));
+        (isOrigin ? origin : spacing) = true;
+        const std::string name = isOrigin ? "ORIGIN" : (key == "spacing" ? "SPACING" : "ASPECT_RATIO");
+        for (int a = 0; a < 3; ++a) {
+          const double v = number(concat(name, " along ", "xyz"[a]));
+          if (!std::isfinite(v)) fail(concat(name, " along ", "xyz"[a], " is ", v));
+          if (!isOrigin && !(v > 0.0) && !(dims && data_.dims[std::size_t(a)] == 1))
+            fail(concat(name, " along ", "xyz"[a], " is ", v, "; expected a positive spacing"));
+          (isOrigin ? data_.origin : data_.spacing)[std::size_t(a)] = v;
+        }
+      } else if (data_.type == LegacyVtkData::Type::RectilinearGrid &&
+                 (key == "x_coordinates" || key == "y_coordinates" || key == "z_coordinates")) {
+        const int a = key[0] - 'x';
+        if (!dims) fail(concat(lower(last_), " before DIMENSIONS"));
+        if (coordinates[std::size_t(a)]) fail(concat("a second ", key));
+        coordinates[std::size_t(a)] = true;
+        const long long n = integer(concat(key, " count"), 0, 1LL << 31);
+        if (n != data_.dims[std::size_t(a)])
+          fail(concat(key, " ", n, " but DIMENSIONS make ", data_.dims[std::size_t(a)],
+                      " along ", "xyz"[a], "; expected the counts to agree"));
+        const std::string type = keyword("the coordinates' type");
+        data_.coordinates[std::size_t(a)] = values(type, n, key);
+      } else if (data_.type == LegacyVtkData::Type::StructuredGrid && key == "points") {
+        if (!dims) fail("POINTS before DIMENSIONS");
+        if (points) fail("a second POINTS");
+        points = true;
+        const long long n = integer("POINTS count", 0, 1LL << 40);
+        if (n != data_.pointCount())
+          fail(concat("POINTS ", n, " but DIMENSIONS make ", data_.pointCount(),
+                      "; expected the counts to agree"));
+        const std::string type = keyword("the points' type");
+        data_.points = values(type, 3 * n, "POINTS");
+      } else {
+        fail(concat("'", last_, "' in the ", lower(datasetName()),
+                    " geometry; expected DIMENSIONS",
+                    data_.type == LegacyVtkData::Type::StructuredPoints
+                        ? ", ORIGIN, SPACING"
+                        : (data_.type == LegacyVtkData::Type::RectilinearGrid
+                               ? ", X_COORDINATES, Y_COORDINATES, Z_COORDINATES"
+                               : ", POINTS"),
+                    ", FIELD, POINT_DATA or CELL_DATA"));
+      }
+      metadata();
+    }
+    if (!dims) fail("no DIMENSIONS in the dataset");
+    if (data_.type == LegacyVtkData::Type::RectilinearGrid)
+      for (int a = 0; a < 3; ++a)
+        if (!coordinates[std::size_t(a)]) fail(concat("no ", "XYZ"[a], "_COORDINATES"));
+    if (data_.type == LegacyVtkData::Type::StructuredGrid && !points) fail("no POINTS");
+  }
+
+  std::string datasetName() const {
+    switch (data_.type) {
+      case LegacyVtkData::Type::StructuredPoints:
+        return "STRUCTURED_POINTS";
+      case LegacyVtkData::Type::RectilinearGrid:
+        return "RECTILINEAR_GRID";
+      case LegacyVtkData::Type::StructuredGrid:
+        break;
+    }
+    return "STRUCTURED_GRID";
+  }
+
+  // `count` values of `type`: ASCII numbers, or BINARY big-endian words starting on the next line.
+  std::vector<double> values(const std::string& type, long long count, const std::string& what) {
+    const int size = typeSize(type);
+    if (size == 0)
+      fail(concat(what, ": data type '", last_,
+                  "' is not a number type Sandstorm reads (unsigned_char .. double; bit and "
+                  "string arrays are not supported)"));
+    if (count < 0 || double(count) * 8.0 > double(budget_))
+      fail(concat(what, ": ", count, " values exceed the memory budget of ", budget_, " bytes"));
+    const std::size_t n = std::size_t(count);
+    if (binary_) {
+      endOfLine(concat(what, "'s type"));
+      const double bytes = double(n) * double(size);
+      if (bytes > double(text_.size() - at_))
+        fail(concat(what, ": ", n, " values of ", size, " bytes need ", bytes, " bytes; ",
+                    text_.size() - at_, " are left; the file is truncated"));
+    } else if (double(n) * 2.0 - 1.0 > double(text_.size() - at_)) {
+      fail(concat(what, ": ", n, " values cannot fit in the ", text_.size() - at_,
+                  " bytes left; the file is truncated"));
+    }
+    std::vector<double> out(n);
+    if (!binary_) {
+      for (std::size_t i = 0; i < n; ++i)
+        out[i] = number(concat(what, " value ", i + 1, " of ", n));
+      return out;
+    }
+    const auto* p = reinterpret_cast<const unsigned char*>(text_.data() + at_);
+    const bool isFloat = type == "float" || type == "double";
+    const bool isSigned = type == "char" || type == "signed_char" || type == "short" ||
+                          type == "int" || type == "long" || type == "vtktypeint64" ||
+                          type == "vtkidtype";
+    for (std::size_t i = 0; i < n; ++i, p += size) {
+      std::uint64_t word = 0;
+      for (int b = 0; b < size; ++b)
+        word = (word << 8) | p[b];
+      if (isFloat)
+        out[i] = size == 4 ? double(std::bit_cast<float>(std::uint32_t(word)))
+                           : std::bit_cast<double>(word);
+      else if (isSigned)
+        out[i] = double(std::int64_t(word << (64 - 8 * size)) >> (64 - 8 * size));
+      else
+        out[i] = double(word);
+    }
+    at_ += n * std::size_t(size);
+    return out;
+  }
+
+  // Skips an array's METADATA block: "METADATA", then lines up to an empty one.
+  void metadata() {
+    const std::size_t before = at_;
+    skipSpace();
+    if (at_ + 8 > text_.size() || lower(std::string_view(text_.data() + at_, 8)) != "metadata") {
+      at_ = before;
+      return;
+    }
+    token("METADATA");
+    endOfLine("METADATA");
+    while (at_ < text_.size()) {
+      const std::string_view l = readLine();
+      if (l.find_first_not_of(" \t\r") == std::string_view::npos) return;
+    }
+  }
+
+  void attributes(std::vector<LegacyArray>& out, long long expected, const char* section) {
+    const long long n = integer(concat(section, " count"), 0, 1LL << 40);
+    if (n != expected)
+      fail(concat(section, " ", n, " but DIMENSIONS ", data_.dims[0], " ", data_.dims[1], " ",
+                  data_.dims[2], " make ", expected, "; expected the counts to agree"));
+    while (skipSpace(), at_ < text_.size()) {
+      const std::size_t before = at_;
+      const std::string key = keyword(concat("an attribute of ", section));
+      LegacyArray a;
+      a.kind = key;
+      if (key == "point_data" || key == "cell_data") {
+        at_ = before;
+        return;
+      }
+      if (key == "scalars") {
+        a.name = std::string(token("the scalars' name"));
+        const std::string type = keyword("the scalars' type");
+        a.components = 1;
+        // An optional component count, then LOOKUP_TABLE on its own line.
+        std::string next = keyword("LOOKUP_TABLE or the component count");
+        if (next != "lookup_table") {
+          long long c = 0;
+          const auto [end, ec] = std::from_chars(next.data(), next.data() + next.size(), c);
+          if (ec != std::errc() || end != next.data() + next.size() || c < 1 || c > 4)
+            fail(concat("'", last_, "'; expected the scalars' component count (1..4)"));
+          a.components = int(c);
+          next = keyword("LOOKUP_TABLE");
+        }
+        if (next != "lookup_table") fail(concat("'", last_, "'; expected LOOKUP_TABLE"));
+        token("the lookup table's name");
+        a.singlePrecision = type != "double";
+        a.values = values(type, n * a.components, "SCALARS " + a.name);
+        out.push_back(std::move(a));
+      } else if (key == "vectors" || key == "normals") {
+        a.name = std::string(token("the array's name"));
+        const std::string type = keyword("the array's type");
+        a.components = 3;
+        a.singlePrecision = type != "double";
+        a.values = values(type, n * 3, lower(key) + " " + a.name);
+        out.push_back(std::move(a));
+      } else if (key == "tensors" || key == "tensors6") {
+        a.name = std::string(token("the tensors' name"));
+        const std::string type = keyword("the tensors' type");
+        a.components = key == "tensors" ? 9 : 6;
+        a.singlePrecision = type != "double";
+        a.values = values(type, n * a.components, "TENSORS " + a.name);
+        out.push_back(std::move(a));
+      } else if (key == "texture_coordinates") {
+        a.name = std::string(token("the texture coordinates' name"));
+        a.components = int(integer("the texture coordinates' dimension", 1, 3));
+        const std::string type = keyword("the texture coordinates' type");
+        a.values = values(type, n * a.components, "TEXTURE_COORDINATES " + a.name);
+        out.push_back(std::move(a));
+      } else if (key == "color_scalars") {
+        a.name = std::string(token("the colour scalars' name"));
+        a.components = int(integer("the colour scalars' value count", 1, 4));
+        a.values = values(binary_ ? "unsigned_char" : "float", n * a.components,
+                          "COLOR_SCALARS " + a.name);
+        out.push_back(std::move(a));
+      } else if (key == "lookup_table") {
+        token("the lookup table's name");
+        const long long size = integer("the lookup table's size", 0, 1 << 24);
+        values(binary_ ? "unsigned_char" : "float", size * 4, "LOOKUP_TABLE");
+      } else if (key == "field") {
+        token("the field data's name");
+        fieldArrays(out, n);
+        continue;  // each array had its own METADATA
+      } else {
+        fail(concat("'", last_, "' in ", section,
+                    "; expected SCALARS, COLOR_SCALARS, LOOKUP_TABLE, VECTORS, NORMALS, "
+                    "TEXTURE_COORDINATES, TENSORS or FIELD"));
+      }
+      metadata();
+    }
+  }
+
+  // FIELD name n: n arrays "name components tuples type" + values. With
+  // `tuples`, every array must have that many (attribute data).
+  void fieldArrays(std::vector<LegacyArray>& out, std::optional<long long> tuples) {
+    const long long arrays = integer("the field's array count", 0, 4096);
+    for (long long i = 0; i < arrays; ++i) {
+      LegacyArray a;
+      a.kind = "FIELD";
+      a.name = std::string(token("a field array's name"));
+      a.components = int(integer(concat("field array '", a.name, "' components"), 1, 4096));
+      const long long n = integer(concat("field array '", a.name, "' tuples"), 0, 1LL << 40);
+      if (tuples && n != *tuples)
+        fail(concat("field array '", a.name, "' has ", n, " tuples; the section has ", *tuples));
+      const std::string type = keyword(concat("field array '", a.name, "' type"));
+      a.singlePrecision = type != "double";
+      a.values = values(type, n * a.components, "field array '" + a.name + "'");
+      metadata();
+      if (tuples) out.push_back(std::move(a));
+    }
+  }
+
+  std::string text_;
+  std::string file_;
+  std::size_t budget_;
+  std::size_t at_ = 0, start_ = 0;
+  std::string last_;
+  bool binary_ = false;
+  LegacyVtkData data_;
+};
+
+}  // namespace
+
+LegacyVtkData parseVtkLegacy(const std::filesystem::path& path, std::size_t memoryBudget) {
+  const std::string file = path.string();
+  std::error_code ec;
+  const auto size = std::filesystem::file_size(path, ec);
+  if (ec) throw Error(concat(file, ": cannot read its size: ", ec.message()));
+  // ASCII takes at least two bytes a value and BINARY four: a file larger than
+  // four times the budget holds more than the budget allows.
+  if (double(size) > 4.0 * double(memoryBudget) + 65536.0)
+    throw Error(concat(file, ": ", size, " bytes, more than a grid within the memory budget of ",
+                       memoryBudget, " bytes can take"));
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw Error(concat(file, ": cannot open the file for reading"));
+  std::string text(std::size_t(size), '\0');
+  in.read(text.data(), std::streamsize(text.size()));
+  text.resize(std::size_t(in.gcount()));
+  return Parser(std::move(text), file, memoryBudget).run();
+}
+
+}  // namespace sandstorm
