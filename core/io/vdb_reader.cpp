@@ -180,6 +180,8 @@ VectorField readVdb(const std::filesystem::path& path, const LoadOptions& option
     report.available.push_back(concat(g.name, " (", valueType(g.type), " grid)"));
   const std::string name = chooseGrid(grids, file, options);
   report.arrayName = name;
+  for (std::size_t i = 0; i < grids.size(); ++i)
+    if (grids[i].name == name) checkVdbGrid(path, grids, i, options.memoryBudget);
 
   openvdb::GridBase::Ptr base;
   try {
