@@ -9,6 +9,9 @@
 #include <tuple>
 #include <vector>
 
+#include <blosc.h>
+#include <zlib.h>
+
 #include "core/io/file_cursor.h"
 #include "core/io/vdb_file_check.h"
 #include "core/util/error.h"
@@ -115,8 +118,10 @@ class GridWalk {
   }
 
   // io::readCompressedValues for `level` nodes whose value mask is `mask`.
+  // `unpack`: decompress the values as OpenVDB will, and refuse what it would
+  // fail on (internal nodes: OpenVDB leaks a node whose values fail).
   void compressedValues(const Level& level, const std::vector<std::uint8_t>& mask,
-                        const char* what) {
+                        const char* what, bool unpack = false) {
     std::int8_t meta = 6;  // NO_MASK_AND_ALL_VALS
     if (version_ >= kNodeMaskCompression) meta = c_.value<std::int8_t>("value compression tag");
     if (meta < 0 || meta > 6) fail(concat(what, ": value compression tag ", int(meta), "; expected 0..6"));
@@ -137,6 +142,26 @@ class GridWalk {
           fail(concat(what, ": ", -stored, " uncompressed bytes for ", count, " values of ",
                       bytes / std::max<std::uint64_t>(count, 1), " bytes"));
         c_.skip(bytes, "values");
+      } else if (unpack) {
+        if (std::uint64_t(stored) > c_.left())
+          fail(concat(what, ": ", stored, " compressed bytes; ", c_.left(), " are left"));
+        std::vector<char> packed(std::size_t(stored), '\0');
+        c_.read(packed.data(), packed.size(), "compressed values");
+        std::vector<char> values(bytes ? bytes : 1);
+        std::uint64_t got = 0;
+        if (flags_ & kBlosc) {
+          const int n = blosc_decompress_ctx(packed.data(), values.data(), values.size(), 1);
+          got = n > 0 ? std::uint64_t(n) : 0;
+        } else {
+          uLongf length = uLongf(values.size());
+          if (::uncompress(reinterpret_cast<Bytef*>(values.data()), &length,
+                           reinterpret_cast<const Bytef*>(packed.data()), uLong(packed.size())) ==
+              Z_OK)
+            got = length;
+        }
+        if (got != bytes)
+          fail(concat(what, ": its ", stored, " compressed bytes do not unpack to the ", bytes,
+                      " bytes of its ", count, " values"));
       } else {
         c_.skip(std::uint64_t(stored), "compressed values");
       }
@@ -196,7 +221,8 @@ class GridWalk {
     reserve(double(level.values) * 16.0);  // the node's table
     const std::vector<std::uint8_t> children = mask(level, "child mask");
     const std::vector<std::uint8_t> values = mask(level, "value mask");
-    compressedValues(level, values, upper ? "an upper internal node" : "a lower internal node");
+    compressedValues(level, values, upper ? "an upper internal node" : "a lower internal node",
+                     true);
     std::uint64_t count = 0;
     for (std::uint8_t b : children)
       count += std::uint64_t(std::popcount(b));
