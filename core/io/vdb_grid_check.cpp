@@ -142,26 +142,39 @@ class GridWalk {
           fail(concat(what, ": ", -stored, " uncompressed bytes for ", count, " values of ",
                       bytes / std::max<std::uint64_t>(count, 1), " bytes"));
         c_.skip(bytes, "values");
-      } else if (unpack) {
+      } else if (unpack || (flags_ & kBlosc)) {
         if (std::uint64_t(stored) > c_.left())
           fail(concat(what, ": ", stored, " compressed bytes; ", c_.left(), " are left"));
         std::vector<char> packed(std::size_t(stored), '\0');
         c_.read(packed.data(), packed.size(), "compressed values");
-        std::vector<char> values(bytes ? bytes : 1);
-        std::uint64_t got = 0;
         if (flags_ & kBlosc) {
-          const int n = blosc_decompress_ctx(packed.data(), values.data(), values.size(), 1);
-          got = n > 0 ? std::uint64_t(n) : 0;
-        } else {
-          uLongf length = uLongf(values.size());
-          if (::uncompress(reinterpret_cast<Bytef*>(values.data()), &length,
-                           reinterpret_cast<const Bytef*>(packed.data()), uLong(packed.size())) ==
-              Z_OK)
-            got = length;
+          // Blosc trusts its chunk's header for every offset it reads: the
+          // header must describe this chunk and these values, or OpenVDB's
+          // decompression reads outside the chunk.
+          std::size_t nbytes = 0;
+          if (packed.size() < 16 ||
+              blosc_cbuffer_validate(packed.data(), packed.size(), &nbytes) != 0 ||
+              nbytes != bytes)
+            fail(concat(what, ": its blosc chunk (", stored, " bytes) does not describe the ",
+                        bytes, " bytes of its ", count, " values"));
         }
-        if (got != bytes)
-          fail(concat(what, ": its ", stored, " compressed bytes do not unpack to the ", bytes,
-                      " bytes of its ", count, " values"));
+        if (unpack) {
+          std::vector<char> values(bytes ? bytes : 1);
+          std::uint64_t got = 0;
+          if (flags_ & kBlosc) {
+            const int n = blosc_decompress_ctx(packed.data(), values.data(), values.size(), 1);
+            got = n > 0 ? std::uint64_t(n) : 0;
+          } else {
+            uLongf length = uLongf(values.size());
+            if (::uncompress(reinterpret_cast<Bytef*>(values.data()), &length,
+                             reinterpret_cast<const Bytef*>(packed.data()),
+                             uLong(packed.size())) == Z_OK)
+              got = length;
+          }
+          if (got != bytes)
+            fail(concat(what, ": its ", stored, " compressed bytes do not unpack to the ", bytes,
+                        " bytes of its ", count, " values"));
+        }
       } else {
         c_.skip(std::uint64_t(stored), "compressed values");
       }
