@@ -272,10 +272,11 @@ VectorField decodeField(std::span<const std::byte> bytes, std::string_view name)
   for (int a = 0; a < 3; ++a) {
     if (dims[a] < 1)
       r.fail("dims", concat("expected positive dims, got ", dims.x, "x", dims.y, "x", dims.z));
-    points *= std::uint64_t(dims[a]);
+    points *= std::uint64_t(dims[a]);  // at most 2^31 x 2^31 each step: no wrap below the check
+    if (points > VectorField::kMaxPoints)
+      r.fail("dims", concat(dims.x, "x", dims.y, "x", dims.z, " points exceed the limit of ",
+                            VectorField::kMaxPoints));
   }
-  if (points > VectorField::kMaxPoints)
-    r.fail("dims", concat(points, " points exceed the limit of ", VectorField::kMaxPoints));
   if (points * 12 != r.remaining())
     r.fail("values", concat("expected ", points * 12, " bytes of vectors for ", dims.x, "x", dims.y,
                             "x", dims.z, ", got ", r.remaining()));

@@ -8,6 +8,7 @@
 #include <toml.hpp>
 
 #include "core/util/error.h"
+#include "core/util/utf8.h"
 
 namespace sandstorm {
 
@@ -87,6 +88,7 @@ class KeyReader {
 }  // namespace
 
 TrackerScript TrackerScript::parse(const std::string& text, const std::string& name) {
+  checkUtf8(text, name);
   toml::value root;
   try {
     std::istringstream in(text);
