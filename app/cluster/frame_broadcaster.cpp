@@ -14,7 +14,8 @@ namespace sandstorm {
 namespace {
 
 constexpr std::uint32_t kSlotMagic = 0x4d535353;  // "SSSM"
-constexpr std::size_t kHeaderBytes = 20;          // magic, kind + 3 spare, sequence, length (u64)
+// magic, kind + 3 spare, sequence, length (u64), checksum (FNV-1a 64 of the payload)
+constexpr std::size_t kHeaderBytes = 28;
 constexpr std::size_t kInline = FrameBroadcaster::kSlotBytes - kHeaderBytes;
 
 }  // namespace
@@ -32,10 +33,13 @@ void FrameBroadcaster::post(Kind kind, std::span<const std::byte> payload, bool 
   slot.u16(0);
   slot.u32(sequence_++);
   slot.u64(payload.size());
+  slot.u64(fnv1a64(payload));
   const std::size_t inlined = std::min(payload.size(), kInline);
   slot.raw(payload.first(inlined));
   std::vector<std::byte> bytes = slot.take();
   bytes.resize(kSlotBytes);
+  if (kind == Kind::Packet && int(nextFrame_) == corruptFrame_ && !payload.empty())
+    bytes[kHeaderBytes] ^= std::byte{0x5a};  // --debug-corrupt-at-frame
   const std::string what = kind == Kind::Packet
                                ? concat("every rank to take the packet of frame ", nextFrame_)
                                : concat("every rank to take a message before frame ", nextFrame_);
@@ -81,6 +85,7 @@ FrameBroadcaster::Message FrameBroadcaster::take(const std::string& what, bool p
   const std::uint64_t length = header.u64("length");
   if (length > (std::uint64_t{1} << 36))
     header.fail("length", concat(length, " bytes is beyond any packet or grid"));
+  const std::uint64_t checksum = header.u64("checksum");
   Message m{Kind(kind), std::vector<std::byte>(std::size_t(length))};
   const std::size_t inlined = std::min<std::size_t>(m.payload.size(), kInline);
   std::copy_n(slot.begin() + kHeaderBytes, inlined, m.payload.begin());
@@ -91,6 +96,11 @@ FrameBroadcaster::Message FrameBroadcaster::take(const std::string& what, bool p
     seconds += mpi_.wait(request, what);
     moved += n;
   }
+  const std::uint64_t got = fnv1a64(m.payload);
+  if (got != checksum)
+    throw Error(concat("rank ", mpi_.rank(), ": ", what, " arrived damaged (", m.payload.size(),
+                       " bytes, checksum ", std::hex, got, " where rank 0 sent ", checksum,
+                       "); stopping every rank rather than drawing different frames"));
   if (perFrame && m.kind == Kind::Packet) {
     stats_.broadcastBytes += moved;
     stats_.broadcastSeconds += seconds;

@@ -54,6 +54,8 @@ class FrameBroadcaster {
   bool pinLocal(const std::vector<std::shared_ptr<const VectorField>>& grids);
 
   const Stats& stats() const { return stats_; }
+  // Fault injection for the tests: rank 0 damages the packet of `frame` after checksumming it.
+  void corruptAt(int frame) { corruptFrame_ = frame; }
 
  private:
   enum class Kind : std::uint8_t { Packet = 1, Grid = 2, Stop = 3, Hashes = 4 };
@@ -64,6 +66,7 @@ class FrameBroadcaster {
 
   void post(Kind kind, std::span<const std::byte> payload, bool perFrame);
   Message take(const std::string& what, bool perFrame);
+  int corruptFrame_ = -1;
 
   MpiSession& mpi_;
   std::size_t chunkBytes_;

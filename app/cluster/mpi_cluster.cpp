@@ -164,6 +164,7 @@ bool MpiCluster::start(const AppConfig* config, const std::string& fingerprint,
   startupTimeout_ = config->cluster.startupTimeoutSeconds;
   broadcaster_ = std::make_unique<FrameBroadcaster>(
       mpi_, std::size_t(config->cluster.chunkKiB) * 1024, std::size_t(config->cluster.fieldCache));
+  if (root()) broadcaster_->corruptAt(options_.corruptAtFrame);
   if (root()) {
     std::string plan;
     for (std::size_t i = 0; i < owner_.size(); ++i)

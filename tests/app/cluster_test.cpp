@@ -234,6 +234,15 @@ TEST(Cluster, ADeadRankStopsEveryRankWithAClearError) {
   EXPECT_LT(r.seconds, 3.0 /* cluster.timeout_s */ + 15.0) << r.output;
 }
 
+TEST(Cluster, ADamagedPacketStopsEveryRankWithAClearMessage) {
+  // Rank 0 flips a byte of frame 30's packet after checksumming it.
+  const MpiRun r = ranks(3, "--config tests/data/identity-cluster.toml --debug-corrupt-at-frame 30");
+  EXPECT_NE(r.exitCode, 0) << r.output;
+  EXPECT_TRUE(has(r.output, "the packet of frame 30 from rank 0 arrived damaged")) << r.output;
+  EXPECT_TRUE(has(r.output, "stopping every rank")) << r.output;
+  EXPECT_FALSE(has(r.output, "stats:")) << "no rank should have finished:\n" << r.output;
+}
+
 TEST(Cluster, AHungRankStopsEveryRankWithinTheTimeout) {
   const MpiRun r =
       ranks(3, "--config tests/data/identity-cluster.toml --debug-hang-at-frame 30 --debug-rank 1");
