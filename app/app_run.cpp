@@ -10,6 +10,7 @@
 #include "core/sim/particle_dump.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
+#include "core/util/output_file.h"
 
 namespace sandstorm {
 namespace {
@@ -62,7 +63,10 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
       // Cluster mode: the main thread joins the swap barrier, to hold the walls until every rank
       // drew.
       barrier_(std::ptrdiff_t(config.walls.size()) + (cluster ? 1 : 0)) {
-  if (options_.screenshotDir) std::filesystem::create_directories(*options_.screenshotDir);
+  // Every output is tried before anything runs: a bad path stops the start, not the end.
+  if (options_.screenshotDir) checkOutputDirectory(*options_.screenshotDir, "--screenshot");
+  if (options_.dumpParticles) checkOutputFile(*options_.dumpParticles, "--dump-particles");
+  if (options_.hashLog) checkOutputFile(*options_.hashLog, "--hash-log");
   if (field_.timeline) useField(main_, field_);
   if (options_.record) {
     recorder_ = std::make_unique<SessionRecorder>(*options_.record);
@@ -328,6 +332,10 @@ void AppRun::runOneProcess() {
     }
     for (const auto& w : walls_)
       failed_ = failed_ || w->error().has_value();
+    if (recorder_ && recorder_->error()) {
+      log::error(*recorder_->error());
+      failed_ = true;
+    }
     if (failed_) break;
     track(dt);
     if (menu_) showMenu(dt);

@@ -27,7 +27,9 @@ void HashLog::write(const std::filesystem::path& path) {
   std::ofstream out(path);
   for (const std::string& line : lines_)
     out << line << "\n";
-  if (!out) throw Error(concat("--hash-log: cannot write ", path.string()));
+  out.close();
+  if (!out)
+    throw Error(concat("--hash-log ", path.string(), ": writing failed (is the disk full?)"));
 }
 
 }  // namespace sandstorm

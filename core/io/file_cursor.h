@@ -14,8 +14,7 @@ namespace sandstorm {
 class FileCursor {
  public:
   // `end`: the first byte not to read; `scope` names what ends there in messages.
-  FileCursor(std::ifstream& in, std::uint64_t end, std::string file,
-             std::string scope = "the file")
+  FileCursor(std::ifstream& in, std::uint64_t end, std::string file, std::string scope = "the file")
       : in_(in), size_(end), file_(std::move(file)), scope_(std::move(scope)) {}
 
   std::uint64_t offset() const { return offset_; }

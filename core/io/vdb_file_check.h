@@ -18,8 +18,8 @@
 namespace sandstorm {
 
 struct VdbGridEntry {
-  std::string name;  // as written (unique name, with a "[n]" suffix if repeated)
-  std::string type;  // tree type, e.g. "Tree_vec3s_5_4_3"
+  std::string name;            // as written (unique name, with a "[n]" suffix if repeated)
+  std::string type;            // tree type, e.g. "Tree_vec3s_5_4_3"
   std::string instanceParent;  // a grid instance shares this grid's tree
   std::uint64_t gridPos = 0, blockPos = 0, endPos = 0;
 };

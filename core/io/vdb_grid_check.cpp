@@ -27,9 +27,9 @@ struct Level {
   std::uint32_t values;
   std::uint32_t maskBytes() const { return values / 8; }
 };
-constexpr Level kRootChild{32768};  // InternalNode<..., 5>: 32^3
-constexpr Level kInner{4096};       // InternalNode<..., 4>: 16^3
-constexpr Level kLeaf{512};         // LeafNode<..., 3>: 8^3
+constexpr Level kRootChild{32768};             // InternalNode<..., 5>: 32^3
+constexpr Level kInner{4096};                  // InternalNode<..., 4>: 16^3
+constexpr Level kLeaf{512};                    // LeafNode<..., 3>: 8^3
 constexpr std::int32_t kRootChildSpan = 4096;  // voxels a root child spans per axis
 
 class GridWalk {
@@ -71,8 +71,9 @@ class GridWalk {
     for (std::uint64_t i = 0; i < leaves_; ++i)
       leafBuffer();
     if (c_.left() != 0)
-      fail(concat(c_.left(), " bytes are left after the tree; the grid's layout is not what "
-                             "its counts say"));
+      fail(concat(c_.left(),
+                  " bytes are left after the tree; the grid's layout is not what "
+                  "its counts say"));
   }
 
  private:
@@ -85,10 +86,9 @@ class GridWalk {
     if (count > c_.left() / 12) fail(concat(count, " metadata entries cannot fit in the grid"));
     // OpenVDB reads these types' values at their own size, whatever the entry says.
     static const std::pair<const char*, std::uint32_t> fixed[] = {
-        {"bool", 1},   {"int32", 4},  {"int64", 8},  {"float", 4},  {"double", 8},
-        {"vec2i", 8},  {"vec2s", 8},  {"vec2d", 16}, {"vec3i", 12}, {"vec3s", 12},
-        {"vec3d", 24}, {"vec4i", 16}, {"vec4s", 16}, {"vec4d", 32}, {"mat4s", 64},
-        {"mat4d", 128}};
+        {"bool", 1},   {"int32", 4},  {"int64", 8},  {"float", 4},  {"double", 8}, {"vec2i", 8},
+        {"vec2s", 8},  {"vec2d", 16}, {"vec3i", 12}, {"vec3s", 12}, {"vec3d", 24}, {"vec4i", 16},
+        {"vec4s", 16}, {"vec4d", 32}, {"mat4s", 64}, {"mat4d", 128}};
     for (std::uint32_t i = 0; i < count; ++i) {
       const std::string name = c_.string("metadata name");
       const std::string type = c_.string("metadata type");
@@ -104,9 +104,12 @@ class GridWalk {
   void transform(int depth) {
     const std::string type = c_.string("transform type");
     static const std::pair<const char*, std::uint64_t> sizes[] = {
-        {"AffineMap", 128},         {"UnitaryMap", 128},
-        {"ScaleMap", 120},          {"UniformScaleMap", 120},
-        {"TranslationMap", 24},     {"ScaleTranslateMap", 144},
+        {"AffineMap", 128},
+        {"UnitaryMap", 128},
+        {"ScaleMap", 120},
+        {"UniformScaleMap", 120},
+        {"TranslationMap", 24},
+        {"ScaleTranslateMap", 144},
         {"UniformScaleTranslateMap", 144}};
     for (const auto& [t, bytes] : sizes)
       if (type == t) return c_.skip(bytes, "transform");
@@ -120,11 +123,12 @@ class GridWalk {
   // io::readCompressedValues for `level` nodes whose value mask is `mask`.
   // `unpack`: decompress the values as OpenVDB will, and refuse what it would
   // fail on (internal nodes: OpenVDB leaks a node whose values fail).
-  void compressedValues(const Level& level, const std::vector<std::uint8_t>& mask,
-                        const char* what, bool unpack = false) {
+  void compressedValues(const Level& level, const std::vector<std::uint8_t>& mask, const char* what,
+                        bool unpack = false) {
     std::int8_t meta = 6;  // NO_MASK_AND_ALL_VALS
     if (version_ >= kNodeMaskCompression) meta = c_.value<std::int8_t>("value compression tag");
-    if (meta < 0 || meta > 6) fail(concat(what, ": value compression tag ", int(meta), "; expected 0..6"));
+    if (meta < 0 || meta > 6)
+      fail(concat(what, ": value compression tag ", int(meta), "; expected 0..6"));
     if (meta == 2 || meta == 4 || meta == 5) c_.skip(valueSize_, "inactive value");
     if (meta == 5) c_.skip(valueSize_, "second inactive value");
     if (meta == 3 || meta == 4 || meta == 5) c_.skip(level.maskBytes(), "selection mask");
@@ -153,8 +157,7 @@ class GridWalk {
           // decompression reads outside the chunk.
           std::size_t nbytes = 0;
           if (packed.size() < 16 ||
-              blosc_cbuffer_validate(packed.data(), packed.size(), &nbytes) != 0 ||
-              nbytes != bytes)
+              blosc_cbuffer_validate(packed.data(), packed.size(), &nbytes) != 0 || nbytes != bytes)
             fail(concat(what, ": its blosc chunk (", stored, " bytes) does not describe the ",
                         bytes, " bytes of its ", count, " values"));
         }
@@ -204,8 +207,8 @@ class GridWalk {
     const std::uint64_t childBytes = 12 + 2 * kRootChild.maskBytes() + 1;
     if (double(tiles) * double(tileBytes) + double(children) * double(childBytes) >
         double(c_.left()))
-      fail(concat(tiles, " root tiles and ", children, " children cannot fit in the ",
-                  c_.left(), " bytes left"));
+      fail(concat(tiles, " root tiles and ", children, " children cannot fit in the ", c_.left(),
+                  " bytes left"));
     std::set<std::tuple<std::int32_t, std::int32_t, std::int32_t>> origins;
     const auto origin = [&](const char* what) {
       std::int32_t v[3];

@@ -37,9 +37,9 @@ bool isSpace(char c) {
 // The bytes of a legacy type in BINARY data; 0 for types refused.
 int typeSize(const std::string& type) {
   static const std::pair<const char*, int> sizes[] = {
-      {"unsigned_char", 1}, {"char", 1},           {"signed_char", 1}, {"unsigned_short", 2},
-      {"short", 2},         {"unsigned_int", 4},   {"int", 4},         {"unsigned_long", 8},
-      {"long", 8},          {"vtktypeint64", 8},   {"vtktypeuint64", 8}, {"vtkidtype", 8},
+      {"unsigned_char", 1}, {"char", 1},         {"signed_char", 1},   {"unsigned_short", 2},
+      {"short", 2},         {"unsigned_int", 4}, {"int", 4},           {"unsigned_long", 8},
+      {"long", 8},          {"vtktypeint64", 8}, {"vtktypeuint64", 8}, {"vtkidtype", 8},
       {"float", 4},         {"double", 8}};
   for (const auto& [name, size] : sizes)
     if (type == name) return size;
@@ -67,8 +67,9 @@ class Parser {
     // VTK's writers end every file with a newline, so one that ends in a value is truncated.
     if (!binary_ && !text_.empty() && !isSpace(text_.back())) {
       start_ = text_.size() - 1;
-      fail("the file ends inside a value, without the final newline; it is truncated (if it is "
-           "complete, end it with a newline)");
+      fail(
+          "the file ends inside a value, without the final newline; it is truncated (if it is "
+          "complete, end it with a newline)");
     }
     return std::move(data_);
   }
@@ -77,7 +78,9 @@ class Parser {
   [[noreturn]] void fail(const std::string& what) const {
     throw Error(concat(file_, ":", line(), ": ", what));
   }
-  long long line() const { return std::count(text_.begin(), text_.begin() + long(start_), '\n') + 1; }
+  long long line() const {
+    return std::count(text_.begin(), text_.begin() + long(start_), '\n') + 1;
+  }
 
   // A whole line (without its end), from the current position.
   std::string_view readLine() {
@@ -121,8 +124,7 @@ class Parser {
     const std::string_view t = token(what);
     double v = 0.0;
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-    if ((ec != std::errc() && ec != std::errc::result_out_of_range) ||
-        end != t.data() + t.size())
+    if ((ec != std::errc() && ec != std::errc::result_out_of_range) || end != t.data() + t.size())
       fail(concat("'", last_, "'; expected ", what, " (a number)"));
     return v;
   }
@@ -195,7 +197,8 @@ class Parser {
         const bool isOrigin = key == "origin";
         if (isOrigin ? origin : spacing) fail(concat("a second ", lower(last_)));
         (isOrigin ? origin : spacing) = true;
-        const std::string name = isOrigin ? "ORIGIN" : (key == "spacing" ? "SPACING" : "ASPECT_RATIO");
+        const std::string name =
+            isOrigin ? "ORIGIN" : (key == "spacing" ? "SPACING" : "ASPECT_RATIO");
         for (int a = 0; a < 3; ++a) {
           const double v = number(concat(name, " along ", "xyz"[a]));
           if (!std::isfinite(v)) fail(concat(name, " along ", "xyz"[a], " is ", v));
@@ -211,8 +214,8 @@ class Parser {
         coordinates[std::size_t(a)] = true;
         const long long n = integer(concat(key, " count"), 0, 1LL << 31);
         if (n != data_.dims[std::size_t(a)])
-          fail(concat(key, " ", n, " but DIMENSIONS make ", data_.dims[std::size_t(a)],
-                      " along ", "xyz"[a], "; expected the counts to agree"));
+          fail(concat(key, " ", n, " but DIMENSIONS make ", data_.dims[std::size_t(a)], " along ",
+                      "xyz"[a], "; expected the counts to agree"));
         const std::string type = keyword("the coordinates' type");
         data_.coordinates[std::size_t(a)] = values(type, n, key);
       } else if (data_.type == LegacyVtkData::Type::StructuredGrid && key == "points") {
@@ -226,8 +229,7 @@ class Parser {
         const std::string type = keyword("the points' type");
         data_.points = values(type, 3 * n, "POINTS");
       } else {
-        fail(concat("'", last_, "' in the ", lower(datasetName()),
-                    " geometry; expected DIMENSIONS",
+        fail(concat("'", last_, "' in the ", lower(datasetName()), " geometry; expected DIMENSIONS",
                     data_.type == LegacyVtkData::Type::StructuredPoints
                         ? ", ORIGIN, SPACING"
                         : (data_.type == LegacyVtkData::Type::RectilinearGrid

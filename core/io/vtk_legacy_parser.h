@@ -36,8 +36,8 @@ struct LegacyVtkData {
   Type type = Type::StructuredPoints;
   std::array<long long, 3> dims{1, 1, 1};
   std::array<double, 3> origin{0, 0, 0}, spacing{1, 1, 1};  // structured points
-  std::array<std::vector<double>, 3> coordinates;            // rectilinear grid
-  std::vector<double> points;                                // structured grid, x y z each
+  std::array<std::vector<double>, 3> coordinates;           // rectilinear grid
+  std::vector<double> points;                               // structured grid, x y z each
   std::vector<LegacyArray> pointData, cellData;
 
   long long pointCount() const { return dims[0] * dims[1] * dims[2]; }

@@ -40,7 +40,8 @@ void attach(vtkDataSetAttributes* to, const std::vector<LegacyArray>& arrays) {
   for (const LegacyArray& a : arrays) {
     vtkSmartPointer<vtkDataArray> array = toVtk(a);
     if (a.kind == "vectors" && !to->GetVectors())
-      to->SetVectors(array);  // the file's VECTORS are the active vectors, as VTK's reader makes them
+      to->SetVectors(
+          array);  // the file's VECTORS are the active vectors, as VTK's reader makes them
     else
       to->AddArray(array);
   }

@@ -51,7 +51,7 @@ void writeParticlesVtp(std::span<const Particle> particles, const std::filesyste
   }
 
   std::ofstream out(path, std::ios::binary);
-  if (!out) throw Error(concat("writeParticlesVtp: cannot open ", path.string(), " for writing"));
+  if (!out) throw Error(concat("--dump-particles ", path.string(), ": cannot open for writing"));
   out << "<?xml version=\"1.0\"?>\n"
       << "<VTKFile type=\"PolyData\" version=\"1.0\" byte_order=\"LittleEndian\" "
          "header_type=\"UInt64\">\n"
@@ -87,7 +87,9 @@ void writeParticlesVtp(std::span<const Particle> particles, const std::filesyste
     out.write(b.bytes.data(), std::streamsize(b.bytes.size()));
   }
   out << "\n  </AppendedData>\n</VTKFile>\n";
-  if (!out) throw Error(concat("writeParticlesVtp: writing ", path.string(), " failed"));
+  out.close();  // the last bytes reach the disk here: a full disk shows only now
+  if (!out)
+    throw Error(concat("--dump-particles ", path.string(), ": writing failed (is the disk full?)"));
 }
 
 }  // namespace sandstorm

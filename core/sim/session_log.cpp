@@ -263,7 +263,7 @@ std::vector<ScheduledChange> readSessionLog(const std::filesystem::path& path) {
 }
 
 SessionRecorder::SessionRecorder(const std::filesystem::path& path) : out_(path), path_(path) {
-  if (!out_) throw Error(concat(path.string(), ": cannot open for recording"));
+  if (!out_) throw Error(concat("--record ", path.string(), ": cannot open for recording"));
   out_ << "# Sandstorm session log: frame, then the change that took effect at that frame\n";
 }
 
@@ -271,6 +271,18 @@ void SessionRecorder::record(std::uint32_t frame, const StateChange& change) {
   std::lock_guard lock(mutex_);
   out_ << frame << " " << formatChange(change) << "\n";
   out_.flush();
+  checkWritten();
+}
+
+void SessionRecorder::checkWritten() {
+  if (!out_ && !error_)
+    error_ =
+        concat("--record ", path_.string(), ": writing the session log failed (is the disk full?)");
+}
+
+std::optional<std::string> SessionRecorder::error() const {
+  std::lock_guard lock(mutex_);
+  return error_;
 }
 
 void SessionRecorder::recordTracking(std::uint32_t frame, const TrackingSample& sample) {
@@ -279,6 +291,7 @@ void SessionRecorder::recordTracking(std::uint32_t frame, const TrackingSample& 
   lastTracking_ = sample;
   out_ << frame << " " << formatTracking(sample) << "\n";
   out_.flush();
+  checkWritten();
 }
 
 void SessionRecorder::recordNavigation(std::uint32_t frame, const Navigation& navigation) {
@@ -290,6 +303,7 @@ void SessionRecorder::recordNavigation(std::uint32_t frame, const Navigation& na
   lastNavigation_ = navigation;
   out_ << frame << " " << formatNavigation(navigation) << "\n";
   out_.flush();
+  checkWritten();
 }
 
 }  // namespace sandstorm

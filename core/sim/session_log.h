@@ -72,13 +72,17 @@ class SessionRecorder {
   // Written only when different from the last one recorded.
   void recordTracking(std::uint32_t frame, const TrackingSample& sample);
   void recordNavigation(std::uint32_t frame, const Navigation& navigation);
+  // Set once a write failed (a full disk): the run should stop and say so.
+  std::optional<std::string> error() const;
 
  private:
-  std::mutex mutex_;
+  mutable std::mutex mutex_;
   std::ofstream out_;
   std::filesystem::path path_;
   std::optional<TrackingSample> lastTracking_;
   std::optional<Navigation> lastNavigation_;
+  std::optional<std::string> error_;
+  void checkWritten();
 };
 
 }  // namespace sandstorm

@@ -12,6 +12,7 @@
 #pragma GCC diagnostic pop
 
 #include "core/util/error.h"
+#include "core/util/output_file.h"
 
 namespace sandstorm {
 
@@ -19,9 +20,17 @@ void writePng(const Image& image, const std::filesystem::path& path) {
   if (image.width <= 0 || image.height <= 0 ||
       image.rgba.size() != std::size_t(image.width) * std::size_t(image.height) * 4)
     throw Error(concat("writePng(", path.string(), "): the image is empty or inconsistent"));
-  if (!stbi_write_png(path.c_str(), image.width, image.height, 4, image.rgba.data(),
-                      image.width * 4))
-    throw Error(concat("writePng: cannot write ", path.string()));
+  // Encoded in memory, then written with every write checked: stb's own file
+  // writer ignores a failed write or close (a full disk).
+  std::vector<char> png;
+  const auto append = [](void* context, void* data, int size) {
+    auto* out = static_cast<std::vector<char>*>(context);
+    out->insert(out->end(), static_cast<char*>(data), static_cast<char*>(data) + size);
+  };
+  if (!stbi_write_png_to_func(append, &png, image.width, image.height, 4, image.rgba.data(),
+                              image.width * 4))
+    throw Error(concat("writePng(", path.string(), "): the PNG encoder failed"));
+  writeFile(path, png, "screenshot");
 }
 
 Image readPng(const std::filesystem::path& path) {

@@ -236,7 +236,8 @@ TEST(Cluster, ADeadRankStopsEveryRankWithAClearError) {
 
 TEST(Cluster, ADamagedPacketStopsEveryRankWithAClearMessage) {
   // Rank 0 flips a byte of frame 30's packet after checksumming it.
-  const MpiRun r = ranks(3, "--config tests/data/identity-cluster.toml --debug-corrupt-at-frame 30");
+  const MpiRun r =
+      ranks(3, "--config tests/data/identity-cluster.toml --debug-corrupt-at-frame 30");
   EXPECT_NE(r.exitCode, 0) << r.output;
   EXPECT_TRUE(has(r.output, "the packet of frame 30 from rank 0 arrived damaged")) << r.output;
   EXPECT_TRUE(has(r.output, "stopping every rank")) << r.output;

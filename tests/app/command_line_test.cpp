@@ -69,3 +69,42 @@ TEST(CommandLine, HeadlessRunsWriteImagesAndParticles) {
 
 }  // namespace
 }  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+// Outputs that cannot be written: a missing folder, a folder where a file
+// was named, an uncreatable folder and a full disk (/dev/full behind the
+// name) each stop the run with an error naming the path; the paths that can
+// be tried first are tried before anything runs.
+TEST(CommandLine, OutputsThatCannotBeWrittenAreClearErrors) {
+  const auto dir = test::scratchDir("outputs");
+  std::filesystem::create_directories(dir / "shots");
+  std::filesystem::create_symlink("/dev/full", dir / "full.vtp");
+  std::filesystem::create_symlink("/dev/full", dir / "full.session");
+  std::filesystem::create_symlink("/dev/full", dir / "shots" / "front.png");
+  const std::string run = "--config tests/data/identity.toml --walls front --frames 12 ";
+  struct Case {
+    std::string args, says;
+    bool beforeTheRun;
+  };
+  const Case cases[] = {
+      {"--dump-particles " + (dir / "missing" / "x.vtp").string(), "folder", true},
+      {"--hash-log " + dir.string(), "is a folder; expected a file name", true},
+      {"--screenshot /proc/sandstorm-cannot-be-here", "cannot make the folder", true},
+      {"--dump-particles " + (dir / "full.vtp").string(), "writing failed", false},
+      {"--screenshot " + (dir / "shots").string(), "No space left on device", false},
+      {"--record " + (dir / "full.session").string(), "writing the session log failed", false},
+  };
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.args);
+    const auto r = runSandstorm(run + c.args);
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_NE(r.output.find(c.says), std::string::npos) << r.output;
+    EXPECT_EQ(r.output.find("unexpected"), std::string::npos) << r.output;
+    if (c.beforeTheRun) EXPECT_EQ(r.output.find("wall 'front':"), std::string::npos) << r.output;
+  }
+}
+
+}  // namespace
+}  // namespace sandstorm

@@ -17,8 +17,8 @@ namespace sandstorm::fuzz {
 
 inline std::filesystem::path scratch() {
   static const std::filesystem::path dir = [] {
-    const auto d = std::filesystem::temp_directory_path() /
-                   ("sandstorm-fuzz-" + std::to_string(::getpid()));
+    const auto d =
+        std::filesystem::temp_directory_path() / ("sandstorm-fuzz-" + std::to_string(::getpid()));
     std::filesystem::create_directories(d);
     return d;
   }();

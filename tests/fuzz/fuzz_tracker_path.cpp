@@ -6,7 +6,8 @@
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace sandstorm;
   try {
-    const TrackerScript s = TrackerScript::parse(std::string(fuzz::asText(data, size)), "path.toml");
+    const TrackerScript s =
+        TrackerScript::parse(std::string(fuzz::asText(data, size)), "path.toml");
     s.at(1.5, 1);
   } catch (const Error&) {
   }

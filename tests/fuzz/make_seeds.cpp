@@ -69,10 +69,10 @@ int main(int argc, char** argv) {
     return 2;
   }
   const fs::path out = argv[1], source = argv[2];
-  for (const char* t : {"fuzz_field_vtk", "fuzz_field_vti", "fuzz_field_vtr", "fuzz_field_vts",
-                        "fuzz_field_vdb", "fuzz_field_fga", "fuzz_field_vf", "fuzz_height_map",
-                        "fuzz_config", "fuzz_session_log", "fuzz_cluster_packet", "fuzz_dtrack",
-                        "fuzz_pvx", "fuzz_tracker_path"})
+  for (const char* t :
+       {"fuzz_field_vtk", "fuzz_field_vti", "fuzz_field_vtr", "fuzz_field_vts", "fuzz_field_vdb",
+        "fuzz_field_fga", "fuzz_field_vf", "fuzz_height_map", "fuzz_config", "fuzz_session_log",
+        "fuzz_cluster_packet", "fuzz_dtrack", "fuzz_pvx", "fuzz_tracker_path"})
     fs::create_directories(out / t);
 
   // Image data in every encoding VTK writes, and the legacy format.
@@ -81,9 +81,10 @@ int main(int argc, char** argv) {
   image->GetPointData()->SetVectors(velocity(12));
   for (int mode = 0; mode < 3; ++mode)
     for (bool zlib : {false, true})
-      xml<vtkXMLImageDataWriter>(image.Get(), out / "fuzz_field_vti" /
-                                     ("mode" + std::to_string(mode) + (zlib ? "z" : "") + ".vti"),
-                                 mode, zlib);
+      xml<vtkXMLImageDataWriter>(
+          image.Get(),
+          out / "fuzz_field_vti" / ("mode" + std::to_string(mode) + (zlib ? "z" : "") + ".vti"),
+          mode, zlib);
   for (bool binary : {false, true}) {
     vtkNew<vtkStructuredPointsWriter> w;
     w->SetInputData(image);
@@ -99,7 +100,9 @@ int main(int argc, char** argv) {
     c->SetNumberOfTuples(n);
     for (int i = 0; i < n; ++i)
       c->SetValue(i, float(i * i));
-    (a == 0 ? rect->SetXCoordinates(c) : a == 1 ? rect->SetYCoordinates(c) : rect->SetZCoordinates(c));
+    (a == 0   ? rect->SetXCoordinates(c)
+     : a == 1 ? rect->SetYCoordinates(c)
+              : rect->SetZCoordinates(c));
   }
   rect->GetPointData()->SetVectors(velocity(12));
   xml<vtkXMLRectilinearGridWriter>(rect.Get(), out / "fuzz_field_vtr" / "ascii.vtr", 0, false);
@@ -152,7 +155,8 @@ int main(int argc, char** argv) {
   s.wand.buttons = 3;
   Emitter e;
   text(out / "fuzz_session_log" / "session.log",
-       "# log\n0 set render.size 0.2\n1 add-emitter " + formatChange(StateChange::addEmitter(e)).substr(12) +
+       "# log\n0 set render.size 0.2\n1 add-emitter " +
+           formatChange(StateChange::addEmitter(e)).substr(12) +
            "\n2 remove-emitter 0\n3 reset\n4 " + formatTracking(s) + "\n5 " +
            formatNavigation(Navigation{}) + "\n");
   FramePacket p;

@@ -96,8 +96,8 @@ TEST_P(VdbGridCheck, GridsOpenVdbWritesWalkToTheirEndAndLoad) {
   empty->setName("empty");
   auto instance = s->copyGrid();  // shares the tree: written as an instance
   instance->setName("copy");
-  const auto path = write(dir / (std::string(v.name) + ".vdb"),
-                          {s, d, frustum, empty, instance}, v.compression);
+  const auto path =
+      write(dir / (std::string(v.name) + ".vdb"), {s, d, frustum, empty, instance}, v.compression);
   walkEvery(path);
   LoadOptions options;
   options.arrayName = "vel";
@@ -113,8 +113,8 @@ INSTANTIATE_TEST_SUITE_P(
     testing::Values(Variant{"none", openvdb::io::COMPRESS_NONE, false},
                     Variant{"zip", openvdb::io::COMPRESS_ZIP, false},
                     Variant{"mask", openvdb::io::COMPRESS_ACTIVE_MASK, false},
-                    Variant{"zip_mask", openvdb::io::COMPRESS_ZIP | openvdb::io::COMPRESS_ACTIVE_MASK,
-                            false},
+                    Variant{"zip_mask",
+                            openvdb::io::COMPRESS_ZIP | openvdb::io::COMPRESS_ACTIVE_MASK, false},
                     Variant{"blosc_mask",
                             openvdb::io::COMPRESS_BLOSC | openvdb::io::COMPRESS_ACTIVE_MASK, false},
                     Variant{"half", openvdb::io::COMPRESS_ACTIVE_MASK, true},
