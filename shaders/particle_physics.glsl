@@ -73,6 +73,31 @@ vec3 fieldSample(bool next, vec3 p) {
 }
 #endif
 
+// Whether every corner of the cell fieldSample() interpolates in at p is a
+// point the field has data for (its validity mask: w / alpha 1).
+bool cellValid(bool next, vec3 p) {
+  Cell c = fieldCell(p);
+#ifdef FIELD_BUFFER
+  ivec3 stride = ivec3(1, sim.fieldDims.x, sim.fieldDims.x * sim.fieldDims.y);
+  int b = c.i0.x + c.i0.y * stride.y + c.i0.z * stride.z;
+  ivec3 d = (c.i1 - c.i0) * stride;
+  float w = 1.0;
+  for (int k = 0; k < 8; ++k) {
+    int at = b + ((k & 1) != 0 ? d.x : 0) + ((k & 2) != 0 ? d.y : 0) + ((k & 4) != 0 ? d.z : 0);
+    w = min(w, next ? fieldGridNext[at].w : fieldGrid[at].w);
+  }
+  return w > 0.5;
+#else
+  float w = 1.0;
+  for (int k = 0; k < 8; ++k) {
+    ivec3 at = ivec3((k & 1) != 0 ? c.i1.x : c.i0.x, (k & 2) != 0 ? c.i1.y : c.i0.y,
+                     (k & 4) != 0 ? c.i1.z : c.i0.z);
+    w = min(w, next ? texelFetch(uFieldNext, at, 0).w : texelFetch(uField, at, 0).w);
+  }
+  return w > 0.5;
+#endif
+}
+
 mat3 placementRotation() {
   return mat3(sim.placementRotation[0].xyz, sim.placementRotation[1].xyz, sim.placementRotation[2].xyz);
 }
@@ -201,6 +226,16 @@ bool advance(inout Particle p) {
         }
         x = toRoom(wrapped);
       }
+    }
+  }
+  // Cells the field has no data for (its validity mask) are outside too:
+  // killed, or held where they were (clamp); wrapping has nowhere to go.
+  if (sim.fieldDims.w != 0 && sim.fieldBlend.z != 0.0) {
+    vec3 local = toLocal(x);
+    if (!cellValid(false, local) || (sim.fieldBlend.y != 0.0 && !cellValid(true, local))) {
+      if (sim.modes.z != kBoundaryClamp) return false;
+      x = p.positionLife.xyz;
+      v = vec3(0.0);
     }
   }
   if (sim.modes.w != 0 && sim.terrainDims.z != 0) {

@@ -28,17 +28,18 @@ layout(std140, binding = 0) uniform SimBlock {
   uvec4 frameSeed;        // frame, seed lo, seed hi, emitter count
   vec4 terrainMinScale;   // min xy, index scale xy
   ivec4 terrainDims;      // xy, z: 1 when there is terrain
-  vec4 fieldBlend;        // x: weight towards the next frame, y: 1 when there is one
+  vec4 fieldBlend;        // x: weight towards the next frame, y: 1 when there is one,
+                          // z: 1 when a frame has a validity mask (in w / alpha)
   EmitterBlock emitters[kMaxEmitters];
 } sim;
 
 // The field's grid (GpuField): FIELD_BUFFER programs (the compute backend)
 // read it from storage buffers, the others from textures.
 #ifdef FIELD_BUFFER
-layout(std430, binding = 14) readonly restrict buffer FieldGrid { vec4 fieldGrid[]; };  // xyz, x fastest
+layout(std430, binding = 14) readonly restrict buffer FieldGrid { vec4 fieldGrid[]; };  // xyz, w: valid; x fastest
 layout(std430, binding = 15) readonly restrict buffer FieldGridNext { vec4 fieldGridNext[]; };
 #else
-layout(binding = 0) uniform sampler3D uField;      // RGB32F, read with texelFetch only
+layout(binding = 0) uniform sampler3D uField;      // RGB32F (RGBA32F: alpha valid), texelFetch only
 layout(binding = 2) uniform sampler3D uFieldNext;  // a time-varying field's next frame
 #endif
 layout(binding = 1) uniform sampler2D uTerrain;    // R32F heights

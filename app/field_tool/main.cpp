@@ -79,7 +79,9 @@ void info(const std::string& file, const Common& c) {
             << "magnitude:   min " << s.minMagnitude << "  max " << s.maxMagnitude << "  mean "
             << s.meanMagnitude << "\n"
             << "zero:        " << s.zero << " vectors\n"
-            << "NaN/Inf:     " << report.nonFinite << " vectors (replaced by zero)\n";
+            << "NaN/Inf:     " << report.nonFinite << " vectors (replaced by zero)\n"
+            << "outside:     " << f.invalidCount()
+            << " points outside the file's cells (vtkValidPointMask)\n";
   for (const std::string& note : report.notes)
     std::cout << "note:        " << note << "\n";
 }

@@ -25,6 +25,7 @@ void GpuField::upload(const VectorField& field) {
   else
     uploadBuffer(field);
   dims_ = field.dims();
+  masked_ = field.hasValidity();
   lastUploadMs_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -36,21 +37,32 @@ void GpuField::uploadTexture(const VectorField& field) {
   if (d.x > maxSize || d.y > maxSize || d.z > maxSize)
     throw Error(concat("GpuField: a ", d.x, "x", d.y, "x", d.z, " field exceeds this GPU's 3D ",
                        "texture limit of ", maxSize, " per axis; resample it to a coarser grid"));
-  if (!texture_ || dims_ != d) {
+  // RGB32F (texelFetch reads alpha 1: every point valid), or RGBA32F with the
+  // validity mask in alpha when the field has one.
+  const bool masked = field.hasValidity();
+  if (!texture_ || dims_ != d || masked_ != masked) {
     texture_ = gl::createTexture(GL_TEXTURE_3D);
-    // RGB32F; SANDSTORM_FIELD_FORMAT=rgba32f stores the same values padded to
-    // four (measured on an H200: no faster for the compute update, slower for
-    // transform feedback; docs/PERFORMANCE.md).
-    const char* format = std::getenv("SANDSTORM_FIELD_FORMAT");
-    const GLenum internal =
-        format && std::string_view(format) == "rgba32f" ? GL_RGBA32F : GL_RGB32F;
-    glTextureStorage3D(texture_.id(), 1, internal, d.x, d.y, d.z);
+    glTextureStorage3D(texture_.id(), 1, masked ? GL_RGBA32F : GL_RGB32F, d.x, d.y, d.z);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  glTextureSubImage3D(texture_.id(), 0, 0, 0, 0, d.x, d.y, d.z, GL_RGB, GL_FLOAT,
-                      field.values().data());
+  if (!masked) {
+    glTextureSubImage3D(texture_.id(), 0, 0, 0, 0, d.x, d.y, d.z, GL_RGB, GL_FLOAT,
+                        field.values().data());
+    return;
+  }
+  const std::vector<glm::vec4> padded = withValidity(field);
+  glTextureSubImage3D(texture_.id(), 0, 0, 0, 0, d.x, d.y, d.z, GL_RGBA, GL_FLOAT, padded.data());
+}
+
+std::vector<glm::vec4> GpuField::withValidity(const VectorField& field) {
+  const std::span<const glm::vec3> values = field.values();
+  const std::span<const std::uint8_t> valid = field.validity();
+  std::vector<glm::vec4> padded(values.size());
+  for (std::size_t i = 0; i < values.size(); ++i)
+    padded[i] = glm::vec4(values[i], valid.empty() || valid[i] ? 1.0f : 0.0f);
+  return padded;
 }
 
 GpuField::Storage GpuField::preferred() const {
@@ -68,10 +80,7 @@ bool GpuField::fitsBuffer(const VectorField& field) {
 }
 
 void GpuField::uploadBuffer(const VectorField& field) {
-  const std::span<const glm::vec3> values = field.values();
-  std::vector<glm::vec4> padded(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i)
-    padded[i] = glm::vec4(values[i], 0.0f);
+  const std::vector<glm::vec4> padded = withValidity(field);  // w: 1 valid, 0 not
   const GLsizeiptr bytes = GLsizeiptr(padded.size() * sizeof(glm::vec4));
   if (!buffer_ || dims_ != field.dims()) {
     buffer_ = gl::createBuffer();

@@ -3,8 +3,9 @@
 // without the sampler's filter and interpolate themselves
 // (shaders/particle_physics.glsl), so the GPU agrees with the CPU bit for bit.
 //   Texture: an RGB32F 3D texture read with texelFetch (thesis 5.2); the
-//     transform-feedback backend's.
-//   Buffer: a shader storage buffer of vec4 (xyz, padding), x fastest; what
+//     transform-feedback backend's. A field with a validity mask
+//     (VectorField::setValidity) is RGBA32F, the mask in alpha.
+//   Buffer: a shader storage buffer of vec4 (xyz, w: 1 valid, 0 not), x fastest; what
 //     the compute backend prefers: on an H200 its eight loads a sample made
 //     the update 12% (RK2) to 23% (RK4) faster than eight texelFetch
 //     (docs/PERFORMANCE.md). A grid larger than the GPU's storage-buffer
@@ -14,6 +15,7 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "contexts/gl/objects.h"
 #include "core/field/height_map.h"
@@ -48,12 +50,14 @@ class GpuField {
   static bool fitsBuffer(const VectorField& field);
   void uploadTexture(const VectorField& field);
   void uploadBuffer(const VectorField& field);
+  static std::vector<glm::vec4> withValidity(const VectorField& field);
 
   Storage preferred_, storage_;
   gl::Texture texture_;
   gl::Buffer buffer_;
   std::shared_ptr<const VectorField> holds_;
   glm::ivec3 dims_{0};
+  bool masked_ = false;
   double lastUploadMs_ = 0.0;
 };
 

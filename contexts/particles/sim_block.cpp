@@ -15,7 +15,10 @@ int fillSimBlock(const SimBlockInputs& in, SimBlock& b) {
     b.domainMin = glm::vec4(domain.min, 0.0f);
     b.domainMax = glm::vec4(domain.max, 0.0f);
   }
-  b.fieldBlend = glm::vec4(in.step.fieldBlend, in.nextField ? 1.0f : 0.0f, 0.0f, 0.0f);
+  const bool masked =
+      (in.field && in.field->hasValidity()) || (in.nextField && in.nextField->hasValidity());
+  b.fieldBlend =
+      glm::vec4(in.step.fieldBlend, in.nextField ? 1.0f : 0.0f, masked ? 1.0f : 0.0f, 0.0f);
   b.placementOffset = glm::vec4(in.placement.offset, in.placement.scale);
   for (int c = 0; c < 3; ++c)
     b.placementRotation[c] = glm::vec4(in.placement.rotation[c], 0.0f);

@@ -38,7 +38,8 @@ struct alignas(16) SimBlock {
   glm::uvec4 frameSeed;
   glm::vec4 terrainMinScale;
   glm::ivec4 terrainDims;
-  glm::vec4 fieldBlend;  // x: weight towards the next frame, y: 1 when there is one
+  glm::vec4 fieldBlend;  // x: weight towards the next frame, y: 1 when there is one,
+                         // z: 1 when a frame has a validity mask
   EmitterBlock emitters[ParticleState::kMaxEmitters];
 };
 

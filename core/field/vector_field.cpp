@@ -77,6 +77,34 @@ glm::vec3 VectorField::sample(const glm::vec3& p) const {
   return c0 + (c1 - c0) * f.z;
 }
 
+void VectorField::setValidity(std::vector<std::uint8_t> valid) {
+  if (!valid.empty() && valid.size() != values_.size())
+    throw Error(concat("VectorField: a validity mask of ", valid.size(), " points for ",
+                       values_.size(), " grid points"));
+  for (std::uint8_t& v : valid)
+    v = v != 0;
+  const bool all = std::all_of(valid.begin(), valid.end(), [](std::uint8_t v) { return v != 0; });
+  valid_ = all ? std::vector<std::uint8_t>() : std::move(valid);
+}
+
+std::size_t VectorField::invalidCount() const {
+  return std::size_t(std::count(valid_.begin(), valid_.end(), std::uint8_t{0}));
+}
+
+bool VectorField::cellValid(const glm::vec3& p) const {
+  if (valid_.empty()) return true;
+  // The cell as sample() finds it.
+  const glm::vec3 last = glm::vec3(dims_ - 1);
+  const glm::vec3 u = glm::clamp((p - bounds_.min) * indexScale_, glm::vec3(0.0f), last);
+  const glm::ivec3 i0 = glm::min(glm::ivec3(glm::floor(u)), glm::max(dims_ - 2, glm::ivec3(0)));
+  const glm::ivec3 i1 = glm::min(i0 + 1, dims_ - 1);
+  for (int k : {i0.z, i1.z})
+    for (int j : {i0.y, i1.y})
+      for (int i : {i0.x, i1.x})
+        if (!valid_[index(i, j, k)]) return false;
+  return true;
+}
+
 float VectorField::maxMagnitude() const {
   float m = 0.0f;
   for (const glm::vec3& v : values_)

@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <vector>
 
@@ -62,6 +63,21 @@ class VectorField {
 
   glm::vec3 sample(const glm::vec3& p) const;
 
+  // Points the grid has no data for (a curvilinear or unstructured file
+  // resampled onto this box leaves points outside the file's cells): one byte
+  // per point, 1 valid, 0 not; empty when every point is valid. Particles
+  // treat a cell with any invalid corner as outside the field
+  // (particle_physics.h), on the GPU too. Throws Error when the size is not
+  // the point count; a mask with every point valid is dropped.
+  void setValidity(std::vector<std::uint8_t> valid);
+  bool hasValidity() const { return !valid_.empty(); }
+  std::span<const std::uint8_t> validity() const { return valid_; }
+  bool valid(int i, int j, int k) const { return valid_.empty() || valid_[index(i, j, k)] != 0; }
+  std::size_t invalidCount() const;
+  // Whether every corner of the cell that sample(p) interpolates in is valid
+  // (the same cell, found by the same operations, as the shaders').
+  bool cellValid(const glm::vec3& p) const;
+
   // The largest vector length, for colour scales and summaries.
   float maxMagnitude() const;
 
@@ -70,6 +86,7 @@ class VectorField {
   glm::ivec3 dims_{0};
   glm::vec3 indexScale_{0.0f};
   std::vector<glm::vec3> values_;
+  std::vector<std::uint8_t> valid_;
 };
 
 }  // namespace sandstorm

@@ -49,6 +49,7 @@ struct LoadReport {
   glm::ivec3 sourceDims{0};            // the file's own grid dimensions (VDB: active bbox)
   bool resampled = false;              // values were interpolated onto a new grid
   std::size_t nonFinite = 0;           // NaN or Inf vectors replaced by zero
+  std::size_t outside = 0;             // points outside the file's cells (the validity mask)
   std::vector<std::string> notes;      // anything else worth telling the user
 };
 

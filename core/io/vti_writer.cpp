@@ -1,5 +1,6 @@
 #include "core/io/vti_writer.h"
 
+#include <vtkCharArray.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -29,6 +30,16 @@ void writeVti(const std::filesystem::path& path, const VectorField& field,
   for (std::size_t i = 0; i < v.size(); ++i)
     values->SetTypedTuple(vtkIdType(i), &v[i].x);
   image->GetPointData()->SetVectors(values);
+  if (field.hasValidity()) {
+    // As VTK marks resampled points: vtkValidPointMask, 1 where there is data.
+    vtkNew<vtkCharArray> mask;
+    mask->SetName("vtkValidPointMask");
+    mask->SetNumberOfTuples(vtkIdType(field.pointCount()));
+    const auto valid = field.validity();
+    for (std::size_t i = 0; i < valid.size(); ++i)
+      mask->SetValue(vtkIdType(i), char(valid[i]));
+    image->GetPointData()->AddArray(mask);
+  }
 
   VtkMessageTrap trap(path);
   vtkNew<vtkXMLImageDataWriter> writer;

@@ -144,6 +144,30 @@ std::size_t copyVectors(vtkDataArray* array, vtkDataArray* mask, std::vector<glm
   return nonFinite;
 }
 
+// VTK's validity mask (vtkResampleToImage's output, or a file that carries
+// one, as our converted files do): 1 where the point has data.
+constexpr const char* kValidMaskName = "vtkValidPointMask";
+
+std::vector<std::uint8_t> validityOf(vtkDataArray* mask) {
+  std::vector<std::uint8_t> valid;
+  if (!mask) return valid;
+  valid.resize(std::size_t(mask->GetNumberOfTuples()));
+  for (vtkIdType i = 0; i < mask->GetNumberOfTuples(); ++i)
+    valid[std::size_t(i)] = mask->GetComponent(i, 0) != 0.0 ? 1 : 0;
+  return valid;
+}
+
+void noteOutside(const VectorField& field, const std::filesystem::path& path, LoadReport& report) {
+  report.outside = field.invalidCount();
+  if (report.outside == 0) return;
+  const std::string note =
+      concat(report.outside, " of ", field.pointCount(),
+             " points lie outside the file's cells: marked outside the field (particles there "
+             "follow sim.boundary)");
+  report.notes.push_back(note);
+  log::info(path.string(), ": ", note);
+}
+
 void checkBudget(const glm::ivec3& dims, const std::filesystem::path& path,
                  const LoadOptions& options) {
   for (int a = 0; a < 3; ++a)
@@ -204,9 +228,14 @@ VectorField copyImage(vtkImageData* image, const std::string& name,
   if (array->GetNumberOfTuples() != image->GetNumberOfPoints())
     throw Error(concat(file, ": array '", name, "' holds ", array->GetNumberOfTuples(),
                        " vectors for ", image->GetNumberOfPoints(), " grid points"));
+  vtkDataArray* mask = image->GetPointData()->GetArray(kValidMaskName);
+  if (mask && mask->GetNumberOfTuples() != image->GetNumberOfPoints()) mask = nullptr;
   std::vector<glm::vec3> values;
-  reportNonFinite(copyVectors(array, nullptr, values), path, name, report);
-  return VectorField(bounds, dims, std::move(values));
+  reportNonFinite(copyVectors(array, mask, values), path, name, report);
+  VectorField field(bounds, dims, std::move(values));
+  field.setValidity(validityOf(mask));
+  noteOutside(field, path, report);
+  return field;
 }
 
 }  // namespace
@@ -250,7 +279,10 @@ VectorField extractVectorField(vtkDataSet* data, const std::filesystem::path& pa
   double b[6];
   image->GetBounds(b);
   Box bounds{{float(b[0]), float(b[2]), float(b[4])}, {float(b[1]), float(b[3]), float(b[5])}};
-  return VectorField(bounds, dims, std::move(out));
+  VectorField field(bounds, dims, std::move(out));
+  field.setValidity(validityOf(mask));
+  noteOutside(field, path, report);
+  return field;
 }
 
 }  // namespace sandstorm

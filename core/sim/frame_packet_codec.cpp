@@ -11,7 +11,8 @@ namespace {
 
 constexpr std::uint32_t kPacketMagic = 0x50465353;  // "SSFP"
 constexpr std::uint32_t kFieldMagic = 0x46565353;   // "SSVF"
-constexpr std::uint16_t kVersion = 3;  // 2: equation terms, lod scale; 3: tracking, wand ray
+constexpr std::uint16_t kVersion =
+    4;  // 2: equation terms, lod scale; 3: tracking, wand ray; 4: grid validity
 
 // Limits far above any real packet, so a corrupt count cannot make us allocate gigabytes.
 constexpr std::uint32_t kMaxChanges = 4096;
@@ -256,6 +257,8 @@ std::vector<std::byte> encodeField(const VectorField& grid) {
     w.i32(grid.dims()[a]);
   const std::span<const glm::vec3> values = grid.values();
   w.f32s(std::span<const float>(&values.data()->x, values.size() * 3));
+  w.boolean(grid.hasValidity());
+  if (grid.hasValidity()) w.raw(std::as_bytes(grid.validity()));
   return w.take();
 }
 
@@ -277,14 +280,27 @@ VectorField decodeField(std::span<const std::byte> bytes, std::string_view name)
       r.fail("dims", concat(dims.x, "x", dims.y, "x", dims.z, " points exceed the limit of ",
                             VectorField::kMaxPoints));
   }
-  if (points * 12 != r.remaining())
-    r.fail("values", concat("expected ", points * 12, " bytes of vectors for ", dims.x, "x", dims.y,
+  // The vectors, a flag, and the validity mask when the flag says there is one.
+  if (r.remaining() != points * 12 + 1 && r.remaining() != points * 13 + 1)
+    r.fail("values", concat("expected ", points * 12 + 1, " or ", points * 13 + 1,
+                            " bytes of vectors (and a validity mask) for ", dims.x, "x", dims.y,
                             "x", dims.z, ", got ", r.remaining()));
   std::vector<glm::vec3> values(points);
   r.f32s(std::span<float>(&values.data()->x, values.size() * 3), "values");
+  std::vector<std::uint8_t> valid;
+  if (r.boolean("validity mask")) {
+    const std::span<const std::byte> mask = r.raw(points, "validity mask");
+    valid.resize(points);
+    for (std::size_t i = 0; i < points; ++i) {
+      valid[i] = std::to_integer<std::uint8_t>(mask[i]);
+      if (valid[i] > 1) r.fail("validity mask", concat("point ", i, ": expected 0 or 1"));
+    }
+  }
   r.finish();
   try {
-    return VectorField(bounds, dims, std::move(values));
+    VectorField field(bounds, dims, std::move(values));
+    field.setValidity(std::move(valid));
+    return field;
   } catch (const Error& e) {
     throw Error(concat(name, ": ", e.what()));
   }

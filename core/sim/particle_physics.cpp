@@ -145,6 +145,16 @@ bool advance(Particle& p, const PhysicsInputs& in) {
       }
     }
   }
+  // Cells the field has no data for (its validity mask) are outside too:
+  // killed, or held where they were (clamp); wrapping has nowhere to go.
+  if (in.field && (in.field->hasValidity() || (in.nextField && in.nextField->hasValidity()))) {
+    const glm::vec3 local = in.placement.toLocal(x);
+    if (!in.field->cellValid(local) || (in.nextField && !in.nextField->cellValid(local))) {
+      if (in.settings.boundary != BoundaryMode::Clamp) return false;
+      x = p.position();
+      v = glm::vec3(0.0f);
+    }
+  }
   if (in.settings.groundCollision && in.terrain) {
     const float ground = in.terrain->heightAt(glm::vec2(x));
     if (x.z < ground) {

@@ -34,8 +34,8 @@ void checkOutputFile(const std::filesystem::path& path, const std::string& what)
   const std::filesystem::path folder =
       path.has_parent_path() ? path.parent_path() : std::filesystem::path(".");
   if (!std::filesystem::is_directory(folder, ec))
-    throw Error(concat(what, " ", path.string(), ": the folder ", folder.string(),
-                       " does not exist"));
+    throw Error(
+        concat(what, " ", path.string(), ": the folder ", folder.string(), " does not exist"));
   if (std::filesystem::is_directory(path, ec))
     throw Error(concat(what, " ", path.string(), ": is a folder; expected a file name"));
   const bool existed = std::filesystem::exists(path, ec);

@@ -13,6 +13,7 @@
 #include "core/field/vortex_field.h"
 #include "core/sim/main_context.h"
 #include "core/sim/reference_simulator.h"
+#include "core/util/error.h"
 #include "tests/contexts/gl_test.h"
 
 namespace sandstorm {
@@ -169,6 +170,35 @@ TEST_P(ParticleBackendTest, GridsKeptAsTexturesMoveParticlesTheSame) {
   EXPECT_EQ(a.frames, 60u);
   EXPECT_LT(a.maxError, 1e-4f);
   EXPECT_GT(a.peak, 4000u);
+}
+
+// A field with a validity mask (points a resampled file had no data for):
+// the same particles die (kill) or stop (clamp) on the GPU as on the CPU,
+// whether the grid is a storage buffer (w) or a texture (alpha).
+TEST_P(ParticleBackendTest, CellsOutsideTheDataAreOutsideTheFieldOnBothSides) {
+  for (const BoundaryMode mode : {BoundaryMode::Kill, BoundaryMode::Clamp})
+    for (const bool texture : {false, true}) {
+      SCOPED_TRACE(concat(mode == BoundaryMode::Kill ? "kill" : "clamp",
+                          texture ? ", texture" : ", buffer"));
+      Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, mode);
+      auto masked = std::make_shared<VectorField>(*s.field);
+      std::vector<std::uint8_t> valid(masked->pointCount(), 1);
+      const glm::ivec3 d = masked->dims();
+      for (int k = 0; k < d.z; ++k)
+        for (int j = 0; j < d.y; ++j)
+          for (int i = 0; i < d.x; ++i) {
+            const glm::vec3 p = masked->pointPosition(i, j, k);
+            if (p.x > 0.5f && p.z > 1.0f) valid[masked->index(i, j, k)] = 0;
+          }
+      masked->setValidity(valid);
+      s.field = masked;
+      if (texture) setenv("SANDSTORM_FIELD_STORAGE", "texture", 1);
+      const Agreement a = compare(GetParam(), s, 60, 16384);
+      unsetenv("SANDSTORM_FIELD_STORAGE");
+      EXPECT_EQ(a.frames, 60u);
+      EXPECT_LT(a.maxError, 1e-4f);
+      EXPECT_GT(a.peak, 2000u);
+    }
 }
 
 TEST_P(ParticleBackendTest, MaximumCapsTheLiveCountAndCapacityTheBuffer) {
