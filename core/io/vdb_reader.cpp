@@ -87,11 +87,24 @@ void checkBudget(const glm::ivec3& dims, const std::string& file, const std::str
 template <class GridT>
 VectorField densify(const GridT& grid, const std::string& file, const LoadOptions& options,
                     LoadReport& report) {
-  const openvdb::CoordBBox bbox = grid.evalActiveVoxelBoundingBox();
+  openvdb::CoordBBox bbox = grid.evalActiveVoxelBoundingBox();
   if (bbox.empty()) throw Error(concat(file, ": grid '", grid.getName(), "' has no active voxels"));
   const openvdb::math::Transform& xform = grid.transform();
   const bool aligned = axisAligned(xform);
   const bool staggered = grid.getGridClass() == openvdb::GRID_STAGGERED;
+  if (staggered) {
+    // A MAC voxel holds its -x, -y and -z faces; its centre needs the next
+    // voxel's too. The last layer along +x, +y, +z has no next voxel, so the
+    // field covers only the cells whose faces all exist.
+    openvdb::Coord top = bbox.max();
+    for (int a = 0; a < 3; ++a)
+      if (bbox.dim()[a] > 1) top[a] -= 1;
+    bbox = openvdb::CoordBBox(bbox.min(), top);
+    report.notes.push_back(
+        "staggered (MAC) grid: face values averaged to centres; the last layer of voxels along "
+        "+x, +y and +z lacks its upper faces, so the field ends at the cells whose faces all "
+        "exist");
+  }
   const openvdb::Coord extent = bbox.dim();
   report.sourceDims = glm::ivec3(extent.x(), extent.y(), extent.z());
 
@@ -160,7 +173,6 @@ VectorField densify(const GridT& grid, const std::string& file, const LoadOption
   if (nonFinite > 0)
     log::warn(file, ": ", nonFinite, " vectors of grid '", grid.getName(),
               "' are NaN or Inf; replaced by zero");
-  if (staggered) report.notes.push_back("staggered (MAC) grid: face values averaged to centres");
   return field;
 }
 

@@ -119,11 +119,31 @@ TEST(VdbFormat, StaggeredGridsAreSampledAtVoxelCentres) {
   write(path, {grid});
   LoadReport report;
   const VectorField f = loadField(path, {}, &report);
-  EXPECT_EQ(f.dims(), glm::ivec3(6));
-  // Inside (where both faces of each voxel are present) the centre value is exact;
-  // sampling the faces as cell-centred values would be off by half a voxel.
-  expectAsymmetricAt(f, 1e-4f, 1);
+  // Six voxels a side, the last layer without its upper faces: five cells
+  // whose faces all exist, every centre value exact, boundary included
+  // (sampling the faces as cell-centred values would be off by half a voxel;
+  // averaging with a missing face, by half the velocity).
+  EXPECT_EQ(f.dims(), glm::ivec3(5));
+  expectAsymmetricAt(f, 1e-4f, 0);
   ASSERT_FALSE(report.notes.empty());
+}
+
+TEST(VdbFormat, AUniformMacFlowIsUniformUpToItsBoundary) {
+  // 1 m/s along x on every face of a MAC grid: the loaded field is 1 m/s
+  // everywhere, its outermost layer too (not 0.5 where a face is missing).
+  initializeOpenVdb();
+  const auto dir = test::scratch();
+  auto grid = openvdb::Vec3SGrid::create();
+  grid->setTransform(openvdb::math::Transform::createLinearTransform(0.25));
+  grid->setName("mac");
+  grid->setGridClass(openvdb::GRID_STAGGERED);
+  grid->fill(openvdb::CoordBBox(openvdb::Coord(-3), openvdb::Coord(4)), openvdb::Vec3s(1, 0, 0));
+  const auto path = dir / "uniform.vdb";
+  write(path, {grid});
+  const VectorField f = loadField(path);
+  EXPECT_EQ(f.dims(), glm::ivec3(7));
+  for (const glm::vec3& v : f.values())
+    ASSERT_EQ(v, glm::vec3(1, 0, 0));
 }
 
 TEST(VdbFormat, SparseGridsAreDensifiedOverTheActiveBox) {
