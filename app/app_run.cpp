@@ -49,6 +49,8 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
       headless_(headless),
       cluster_(cluster),
       configDir_(config.path.parent_path()),
+      // The project's data/ sits beside config/.
+      projectRoot_(std::filesystem::absolute(configDir_).parent_path()),
       lastFrame_(config.run.frames > 0 ? config.run.frames - 1 : -1),
       // In cluster mode only rank 0 makes the field (unless every rank reads it): it travels in
       // packets.
@@ -204,13 +206,12 @@ void AppRun::openMenu() {
                                : nullptr;
   std::optional<MenuScript> script;
   if (options_.menuScript) script = MenuScript::load(*options_.menuScript);
-  // The project's data/ sits beside config/.
-  const std::filesystem::path root = std::filesystem::absolute(configDir_).parent_path();
   menu_ = std::make_unique<MenuHost>(
       main_, std::move(console), wallWindow, wall.window ? wall.window->size : wall.offscreenSize,
-      fieldChoices(root / "data", root),
-      [this, root](const std::string& choice) {
-        useField(main_, makeField(fieldSpecFor(choice, config_.field), root));
+      fieldChoices(projectRoot_ / "data", projectRoot_),
+      [this](const std::string& choice) {
+        loadField(choice);
+        if (recorder_) recorder_->recordField(main_.nextFrame(), choice);
       },
       std::move(script));
   if (!operatorWindow_ && wallCount > 0)
@@ -241,8 +242,15 @@ void AppRun::hookWalls() {
   }
 }
 
+void AppRun::loadField(const std::string& choice) {
+  useField(main_, makeField(fieldSpecFor(choice, config_.field), projectRoot_));
+}
+
 void AppRun::track(float dt) {
   const std::uint32_t frame = main_.nextFrame();
+  // A replayed session's field switches, at their frames.
+  while (replayFieldAt_ < replay_.fields.size() && replay_.fields[replayFieldAt_].frame <= frame)
+    loadField(replay_.fields[replayFieldAt_++].source);
   // A replayed session's navigation, when it recorded one.
   while (replayNavigationAt_ < replay_.navigation.size() &&
          replay_.navigation[replayNavigationAt_].frame <= frame)
@@ -415,7 +423,8 @@ int AppRun::finish() {
     const WallStats s = w->stats();
     log::info("  wall '", w->name(), "': ", s.liveParticles, " live particles at frame ", s.frame,
               ", last frame ", s.frameMs, " ms; ", s.fieldUploads, " field upload(s), the last ",
-              s.fieldUploadMs, " ms", w->error() ? " FAILED: " + *w->error() : std::string());
+              s.fieldUploadMs, " ms; ", s.glErrors, " GL error(s)",
+              w->error() ? " FAILED: " + *w->error() : std::string());
   }
   if (tracking_) {
     const TrackingStatus t = tracking_->status();

@@ -56,14 +56,16 @@ class AppRun {
   const bool headless_;
   ClusterLink* const cluster_;
   const std::filesystem::path configDir_;
-  const int lastFrame_;  // -1: until a window closes
+  const std::filesystem::path projectRoot_;  // menu choices and recorded fields are named from here
+  const int lastFrame_;                      // -1: until a window closes
 
   FieldSource field_;
   std::shared_ptr<const HeightMap> terrain_;
   MainContext main_;
   std::unique_ptr<SessionRecorder> recorder_;
   SessionLog replay_;
-  std::size_t replayNavigationAt_ = 0;
+  std::size_t replayNavigationAt_ = 0, replayFieldAt_ = 0;
+  void loadField(const std::string& choice);
   std::unique_ptr<TrackingInput> tracking_;  // null: no tracker (or not the main context's rank)
   HelicopterController helicopter_;
   std::unique_ptr<HeadTracker> head_;

@@ -1,5 +1,7 @@
 #include "contexts/render/render_context.h"
 
+#include <epoxy/gl.h>
+
 #include <chrono>
 
 #include "contexts/particles/simulation_share.h"
@@ -53,6 +55,14 @@ void RenderContext::run() {
           renderer->drawOverlay(*menu, font_);
       if (hook_) hook_(*renderer, *packet);
       renderer->endFrame();
+      // Read once a frame: a client-side query, no wait for the GPU.
+      std::uint64_t errors = 0;
+      for (GLenum e = glGetError(); e != GL_NO_ERROR && errors < 16; e = glGetError()) {
+        if (stats_.glErrors + errors == 0)
+          log::warn("wall '", name(), "': GL error 0x", std::hex, e, std::dec, " at frame ",
+                    packet->frame, " (further ones are counted in the stats)");
+        ++errors;
+      }
       const std::size_t live = countParticles_ ? renderer->particles().update().liveCount() : 0;
       const double ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -79,6 +89,7 @@ void RenderContext::run() {
       if (interval > 0.0)
         stats_.fps = stats_.fps > 0.0 ? 0.9 * stats_.fps + 0.1 / interval : 1.0 / interval;
       stats_.liveParticles = live;
+      stats_.glErrors += errors;
     }
     renderer.reset();  // GL objects go with their own context current
     context_->releaseCurrent();

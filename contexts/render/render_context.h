@@ -33,6 +33,7 @@ struct WallStats {
   double updateMs = 0.0, renderMs = 0.0, postMs = 0.0;  // GPU time per stage (a few frames old)
   double fieldUploadMs = 0.0;  // CPU time of the last field upload to this wall's GPU
   int fieldUploads = 0;        // how many field grids this wall has received
+  std::uint64_t glErrors = 0;  // GL errors raised by this wall's frames (glGetError once a frame)
 };
 
 class RenderContext {

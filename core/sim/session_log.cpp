@@ -197,9 +197,10 @@ SessionLog parseSession(const std::string& text, const std::string& name) {
       throw Error(where + concat("frame ", frame, " comes after frame ", lastFrame));
     lastFrame = frame;
     if (!(words >> verb))
-      throw Error(where +
-                  "expected set, add-emitter, remove-emitter, reset, track or navigate after the "
-                  "frame");
+      throw Error(
+          where +
+          "expected set, add-emitter, remove-emitter, reset, track, navigate or field after "
+          "the frame");
     try {
       if (verb == "set") {
         std::string key, value, extra;
@@ -227,6 +228,11 @@ SessionLog parseSession(const std::string& text, const std::string& name) {
         changes.push_back({frame, StateChange::reset()});
       } else if (verb == "track") {
         log.tracking.push_back({frame, parseTracking(words)});
+      } else if (verb == "field") {
+        std::string source, extra;
+        if (!(words >> source) || (words >> extra))
+          throw Error("expected 'field SOURCE' (analytic:NAME, or a file path without spaces)");
+        log.fields.push_back({frame, source});
       } else if (verb == "navigate") {
         std::string values, extra;
         if (!(words >> values) || (words >> extra))
@@ -235,8 +241,9 @@ SessionLog parseSession(const std::string& text, const std::string& name) {
         if (!(v[4] > 0.0f)) throw Error("navigate: expected a positive scale");
         log.navigation.push_back({frame, Navigation{{v[0], v[1], v[2]}, v[3], v[4]}});
       } else {
-        throw Error("unknown change '" + verb +
-                    "'; expected set, add-emitter, remove-emitter, reset, track or navigate");
+        throw Error(
+            "unknown change '" + verb +
+            "'; expected set, add-emitter, remove-emitter, reset, track, navigate or field");
       }
     } catch (const Error& e) {
       const std::string what = e.what();
@@ -290,6 +297,13 @@ void SessionRecorder::recordTracking(std::uint32_t frame, const TrackingSample& 
   if (lastTracking_ && *lastTracking_ == sample) return;
   lastTracking_ = sample;
   out_ << frame << " " << formatTracking(sample) << "\n";
+  out_.flush();
+  checkWritten();
+}
+
+void SessionRecorder::recordField(std::uint32_t frame, const std::string& source) {
+  std::lock_guard lock(mutex_);
+  out_ << frame << " field " << source << "\n";
   out_.flush();
   checkWritten();
 }

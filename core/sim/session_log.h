@@ -10,6 +10,7 @@
 //   300 reset
 //   301 track frame=8812 stale=0 head=x,y,z,r0..r8 wand=present,tracked,x,y,z,r0..r8,buttons,jx,jy
 //   302 navigate 0.5,2.6,0,0.1,0.35        (offset x y z, yaw in radians, scale)
+//   400 field data/tornado.vti              (the menu loaded this field; or analytic:NAME)
 //
 // A `track` line is the tracking sample the frame used (core/tracking), in
 // room coordinates, written when it differs from the frame before; a
@@ -47,8 +48,14 @@ struct ScheduledNavigation {
   Navigation navigation;
 };
 
+struct ScheduledField {
+  std::uint32_t frame = 0;
+  std::string source;  // a menu choice: "analytic:tornado", or a file relative to the project
+};
+
 struct SessionLog {
   std::vector<ScheduledChange> changes;
+  std::vector<ScheduledField> fields;           // in frame order
   std::vector<ScheduledTracking> tracking;      // in frame order
   std::vector<ScheduledNavigation> navigation;  // in frame order
 };
@@ -72,6 +79,7 @@ class SessionRecorder {
   // Written only when different from the last one recorded.
   void recordTracking(std::uint32_t frame, const TrackingSample& sample);
   void recordNavigation(std::uint32_t frame, const Navigation& navigation);
+  void recordField(std::uint32_t frame, const std::string& source);
   // Set once a write failed (a full disk): the run should stop and say so.
   std::optional<std::string> error() const;
 

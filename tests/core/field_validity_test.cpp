@@ -83,9 +83,9 @@ TEST(FieldValidity, TheMaskTravelsWithTheGrid) {
   ASSERT_TRUE(g.hasValidity());
   EXPECT_TRUE(std::equal(f.validity().begin(), f.validity().end(), g.validity().begin(),
                          g.validity().end()));
-  EXPECT_NE(fieldHash(f), fieldHash(VectorField(f.bounds(), f.dims(),
-                                                std::vector<glm::vec3>(f.values().begin(),
-                                                                       f.values().end()))));
+  EXPECT_NE(fieldHash(f),
+            fieldHash(VectorField(f.bounds(), f.dims(),
+                                  std::vector<glm::vec3>(f.values().begin(), f.values().end()))));
 }
 
 }  // namespace

@@ -83,6 +83,22 @@ TEST(SessionLog, TrackingAndNavigationReadBackBitForBit) {
   EXPECT_EQ(log.changes.size(), 1u);
 }
 
+TEST(SessionLog, FieldSwitchesReadBack) {
+  const SessionLog log =
+      parseSession("10 field data/tornado.vti\n20 field analytic:tornado\n", "log");
+  ASSERT_EQ(log.fields.size(), 2u);
+  EXPECT_EQ(log.fields[0].frame, 10u);
+  EXPECT_EQ(log.fields[0].source, "data/tornado.vti");
+  EXPECT_EQ(log.fields[1].source, "analytic:tornado");
+  try {
+    parseSession("5 field a b\n", "s.log");
+    FAIL() << "two sources accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("s.log:1: expected 'field SOURCE'"), std::string::npos)
+        << e.what();
+  }
+}
+
 TEST(SessionLog, BadTrackingLinesNameTheirLine) {
   const auto errorOf = [](const std::string& text) {
     try {

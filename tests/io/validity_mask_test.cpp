@@ -16,8 +16,8 @@
 namespace sandstorm {
 namespace {
 
-constexpr int kN = 9;            // points per axis
-constexpr double kShear = 0.5;   // x moves 0.5 per unit of z
+constexpr int kN = 9;           // points per axis
+constexpr double kShear = 0.5;  // x moves 0.5 per unit of z
 
 // x = i + 0.5 k, y = j, z = k: a box sheared along x by z.
 std::filesystem::path shearedGrid(const std::filesystem::path& dir) {
@@ -48,8 +48,8 @@ std::filesystem::path shearedGrid(const std::filesystem::path& dir) {
 // How far inside the sheared box a point is (negative: outside).
 double inside(const glm::vec3& p) {
   const double u = p.x - kShear * p.z;
-  return std::min({u, (kN - 1) - u, double(p.y), (kN - 1) - double(p.y), double(p.z),
-                   (kN - 1) - double(p.z)});
+  return std::min(
+      {u, (kN - 1) - u, double(p.y), (kN - 1) - double(p.y), double(p.z), (kN - 1) - double(p.z)});
 }
 
 TEST(ValidityMask, PointsOutsideTheFilesCellsAreMarkedAndCounted) {
