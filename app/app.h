@@ -30,6 +30,7 @@ struct AppOptions {
       replay;  // apply a recorded session's changes at their frames
   std::optional<std::filesystem::path> menuScript;  // scripted clicks on the menu (tests, demos)
   bool noMenu = false;
+  std::optional<std::filesystem::path> stats;  // --stats: the run's measurements as JSON
 };
 
 // Applies --set overrides to the configuration's particle state. Throws Error.

@@ -5,6 +5,7 @@
 #include <csignal>
 
 #include "app/cluster/cluster_link.h"
+#include "app/run_stats.h"
 #include "contexts/particles/simulation_share.h"
 #include "contexts/platform/egl_context.h"
 #include "core/sim/particle_dump.h"
@@ -69,6 +70,7 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
   if (options_.screenshotDir) checkOutputDirectory(*options_.screenshotDir, "--screenshot");
   if (options_.dumpParticles) checkOutputFile(*options_.dumpParticles, "--dump-particles");
   if (options_.hashLog) checkOutputFile(*options_.hashLog, "--hash-log");
+  if (options_.stats) checkOutputFile(*options_.stats, "--stats");
   if (field_.timeline) useField(main_, field_);
   if (options_.record) {
     recorder_ = std::make_unique<SessionRecorder>(*options_.record);
@@ -188,6 +190,7 @@ void AppRun::openWalls() {
                             .farPlane = config_.run.farPlane};
     walls_.push_back(
         std::make_unique<RenderContext>(std::move(context), setup, channel_, i, barrier_));
+    walls_.back()->sampleFrom(std::uint32_t(config_.run.statsWarmup));
   }
 }
 
@@ -432,6 +435,15 @@ int AppRun::finish() {
               t.stats.dropped, " dropped",
               t.waiting ? ", none measured" : (t.lost ? ", lost at the end" : ""),
               t.stats.lastError.empty() ? std::string() : "; last refused: " + t.stats.lastError);
+  }
+  std::vector<WallRunStats> measured;
+  for (const auto& w : walls_)
+    measured.push_back(summarize(w->name(), w->renderer(), w->samples()));
+  const RunStats stats = summarize(std::size_t(config_.run.statsWarmup), std::move(measured));
+  logRunStats(stats);
+  if (options_.stats) {
+    writeRunStats(stats, *options_.stats);
+    log::info("run statistics in ", options_.stats->string());
   }
   if (options_.screenshotDir) log::info("images in ", options_.screenshotDir->string(), "/");
   return failed_ ? 1 : 0;

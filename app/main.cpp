@@ -33,6 +33,10 @@ int main(int argc, char** argv) {
                  "Write each frame's particle count and buffer hash per wall to FILE");
   cli.add_option("--walls", options.walls, "Run only these walls of the configuration (by name)")
       ->delimiter(',');
+  std::string statsPath;
+  cli.add_option("--stats", statsPath,
+                 "Write the run's frame times and per-wall GPU stage times (after "
+                 "run.stats_warmup frames) to FILE as JSON");
   std::string record, replay;
   cli.add_option("--record", record, "Record every attribute change with its frame to FILE");
   cli.add_option("--replay", replay, "Replay a recorded session: its changes at their frames")
@@ -75,6 +79,7 @@ int main(int argc, char** argv) {
   if (!screenshotDir.empty()) options.screenshotDir = screenshotDir;
   if (!hashLog.empty()) options.hashLog = hashLog;
   if (!record.empty()) options.record = record;
+  if (!statsPath.empty()) options.stats = statsPath;
   if (!replay.empty()) options.replay = replay;
   if (!menuScript.empty()) options.menuScript = menuScript;
   if (!dumpPath.empty()) {

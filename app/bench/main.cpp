@@ -234,10 +234,9 @@ class Bench {
     else
       unsetenv("SANDSTORM_SPLAT");
     auto system = std::make_unique<ParticleSystem>(
-        benchState(c), ParticleSystem::Options{.capacity = c.particles,
-                                               .capacityLimit = c.particles,
-                                               .backend = backend,
-                                               .stageTimers = false});
+        benchState(c),
+        ParticleSystem::Options{
+            .capacity = c.particles, .capacityLimit = c.particles, .backend = backend});
     system->setTerrain(terrain_);
     return system;
   }

@@ -61,7 +61,10 @@ class ParticleBackend {
   virtual void endFrame() {}
 
   virtual std::size_t capacity() const = 0;
-  // These wait for the GPU; for tests, stats and dumps, not the frame loop.
+  // The live count of a recent update, known without waiting (a frame or two
+  // old): for the statistics of the frame loop, which must never stall.
+  virtual std::size_t lateCount() const = 0;
+  // These wait for the GPU; for tests and dumps, not the frame loop.
   virtual std::size_t liveCount() const = 0;
   virtual std::vector<Particle> readBack() const = 0;
   virtual double lastFieldUploadMs() const = 0;

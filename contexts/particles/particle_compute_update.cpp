@@ -171,6 +171,7 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
 
   // Count(u - 2) was produced a whole update ago, so this rarely waits.
   const std::size_t count2 = updates_ >= 2 ? countAfter(updates_ - 2) : 0;
+  lateCount_ = count2;
   const std::size_t limit = std::min(std::size_t(std::max(state.sim.maximum, 0)), capacity_);
   SimBlockInputs inputs;
   environment_.describe(inputs);

@@ -59,6 +59,7 @@ class ParticleComputeUpdate final : public ParticleBackend {
 
   std::size_t capacity() const override { return capacity_; }
   std::size_t liveCount() const override;
+  std::size_t lateCount() const override { return lateCount_; }
   std::vector<Particle> readBack() const override;
   double lastFieldUploadMs() const override { return environment_.lastUploadMs(); }
   const char* name() const override { return "compute"; }
@@ -94,6 +95,7 @@ class ParticleComputeUpdate final : public ParticleBackend {
 
   EmissionBudget budget_;
   std::uint64_t updates_ = 0;
+  std::size_t lateCount_ = 0;  // count(u - 2), read by the last step
 };
 
 }  // namespace sandstorm

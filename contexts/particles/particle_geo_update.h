@@ -53,6 +53,7 @@ class ParticleGeoUpdate final : public ParticleBackend {
 
   std::size_t capacity() const override { return capacity_; }
   std::size_t liveCount() const override;
+  std::size_t lateCount() const override { return lateCount_; }
   std::vector<Particle> readBack() const override;
   double lastFieldUploadMs() const override { return environment_.lastUploadMs(); }
   const char* name() const override { return "tf-gs"; }
@@ -92,6 +93,7 @@ class ParticleGeoUpdate final : public ParticleBackend {
   std::array<gl::Query, kHistory> survivorQueries_;
   std::array<std::uint32_t, kHistory> bornHistory_{};
   std::array<bool, kHistory> queried_{};
+  std::size_t lateCount_ = 0;  // count(u - 2), read by the last step
 };
 
 }  // namespace sandstorm

@@ -33,8 +33,7 @@ std::unique_ptr<ParticleBackend> backendFor(const ParticleSystem::Options& o) {
 ParticleSystem::ParticleSystem(const ParticleState& initial, const Options& options)
     : state_(initial),
       capacityLimit_(std::max(options.capacity, options.capacityLimit)),
-      update_(backendFor(options)),
-      stageTimers_(options.stageTimers) {}
+      update_(backendFor(options)) {}
 
 void ParticleSystem::endFrame() {
   update_->endFrame();
@@ -63,20 +62,14 @@ void ParticleSystem::advance(const FramePacket& packet) {
     update_->setEquation(field_->equation);
     log::debug("frame ", packet.frame, ": field uploaded in ", update_->lastFieldUploadMs(), " ms");
   }
-  if (stageTimers_) updateTimer_.begin();
   update_->step(packet.step(), state_);
-  if (stageTimers_) updateTimer_.end();
   frame_ = packet.frame;
 }
 
 void ParticleSystem::render(const ViewTargets& targets, std::uint32_t destination,
                             glm::ivec2 origin, const View* view) const {
-  if (stageTimers_) renderTimer_.begin();
   renderParticles(targets, view);
-  if (stageTimers_) renderTimer_.end();
-  if (stageTimers_) postTimer_.begin();
   composite(targets, destination, origin);
-  if (stageTimers_) postTimer_.end();
 }
 
 bool ParticleSystem::splats(const View* view, glm::ivec2 size) const {
@@ -102,10 +95,6 @@ void ParticleSystem::renderParticles(const ViewTargets& targets, const View* vie
 void ParticleSystem::composite(const ViewTargets& targets, std::uint32_t destination,
                                glm::ivec2 origin) const {
   post_.draw(targets, destination, origin);
-}
-
-ParticleSystem::Timings ParticleSystem::timings() {
-  return {updateTimer_.lastMs(), renderTimer_.lastMs(), postTimer_.lastMs()};
 }
 
 }  // namespace sandstorm

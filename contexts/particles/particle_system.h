@@ -9,7 +9,6 @@
 #include <memory>
 #include <string>
 
-#include "contexts/gl/gpu_timer.h"
 #include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_post.h"
 #include "contexts/particles/particle_render.h"
@@ -32,8 +31,7 @@ class ParticleSystem {
     std::size_t capacity = 1u << 20;
     std::size_t capacityLimit = 1u << 26;  // how far raising sim.maximum may grow the buffers
     std::string backend =
-        "compute";            // "compute" (default: the faster, docs/PERFORMANCE.md) or "tf-gs"
-    bool stageTimers = true;  // timings(); off where the caller times the stages itself
+        "compute";  // "compute" (default: the faster, docs/PERFORMANCE.md) or "tf-gs"
     // One simulation for the walls of one GPU (contexts sharing objects):
     // with a share, shareReader < 0 runs the simulation and publishes it,
     // shareReader = k >= 0 draws the owner's particles as reader k.
@@ -68,12 +66,6 @@ class ParticleSystem {
   std::shared_ptr<const FieldUpdate> field() const { return field_; }
   std::uint32_t frame() const { return frame_; }
 
-  // GPU milliseconds of the update, render and post stages, a few frames old.
-  struct Timings {
-    double updateMs = 0, renderMs = 0, postMs = 0;
-  };
-  Timings timings();
-
  private:
   ParticleState state_;
   std::size_t capacityLimit_;
@@ -83,9 +75,6 @@ class ParticleSystem {
   ParticlePost post_;
   std::shared_ptr<const FieldUpdate> field_;
   std::uint32_t frame_ = 0;
-  bool stageTimers_;
-  gl::GpuTimer updateTimer_;
-  mutable gl::GpuTimer renderTimer_, postTimer_;
 };
 
 }  // namespace sandstorm

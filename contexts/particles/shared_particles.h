@@ -36,6 +36,7 @@ class SharingBackend final : public ParticleBackend {
   Records records() const override { return inner_->records(); }
   std::size_t capacity() const override { return inner_->capacity(); }
   std::size_t liveCount() const override { return inner_->liveCount(); }
+  std::size_t lateCount() const override { return inner_->lateCount(); }
   std::vector<Particle> readBack() const override { return inner_->readBack(); }
   double lastFieldUploadMs() const override { return inner_->lastFieldUploadMs(); }
   const char* name() const override { return inner_->name(); }
@@ -64,6 +65,7 @@ class SharedParticles final : public ParticleBackend {
 
   std::size_t capacity() const override { return current_.capacity; }
   std::size_t liveCount() const override;
+  std::size_t lateCount() const override { return current_.lateCount; }
   std::vector<Particle> readBack() const override;
   double lastFieldUploadMs() const override { return 0.0; }
   const char* name() const override { return "shared"; }

@@ -29,6 +29,7 @@ class SimulationShare {
   struct Publication {
     ParticleBackend::Records records;
     std::size_t capacity = 0;
+    std::size_t lateCount = 0;  // the owner's ParticleBackend::lateCount()
   };
 
   explicit SimulationShare(int readers);

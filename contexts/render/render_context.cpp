@@ -34,6 +34,11 @@ std::optional<std::string> RenderContext::error() const {
   return error_;
 }
 
+std::vector<WallFrameSample> RenderContext::samples() const {
+  std::lock_guard lock(mutex_);
+  return samples_;
+}
+
 WallStats RenderContext::stats() const {
   std::lock_guard lock(mutex_);
   return stats_;
@@ -47,8 +52,10 @@ void RenderContext::run() {
     // Wall-clock time on this thread is for the statistics only; the
     // simulation's time comes from the packets.
     std::optional<std::chrono::steady_clock::time_point> lastSwap;
+    auto waiting = std::chrono::steady_clock::now();
     while (std::shared_ptr<const FramePacket> packet = channel_.take(consumer_)) {
       const auto start = std::chrono::steady_clock::now();
+      const double packetWait = std::chrono::duration<double, std::milli>(start - waiting).count();
       renderer->frame(*packet, context_->framebufferSize());
       if (overlay_)
         if (const std::shared_ptr<const UiDrawData> menu = overlay_())
@@ -63,23 +70,32 @@ void RenderContext::run() {
                     packet->frame, " (further ones are counted in the stats)");
         ++errors;
       }
-      const std::size_t live = countParticles_ ? renderer->particles().update().liveCount() : 0;
+      // A count a frame or two old: waiting for this frame's would drain the GPU every frame.
+      const std::size_t live = renderer->particles().update().lateCount();
       const double ms =
           std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
               .count();
-      const ParticleSystem::Timings timings = renderer->particles().timings();
+      const std::optional<gl::FrameStageTimer::Times> gpu = renderer->stageTimes();
+      const auto drawn = std::chrono::steady_clock::now();
       barrier_
           .arrive_and_wait();  // the swap barrier: nobody presents frame f before all have drawn it
+      const double barrierWait =
+          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - drawn)
+              .count();
       context_->swapBuffers();
       const auto swapped = std::chrono::steady_clock::now();
+      waiting = swapped;
       const double interval =
           lastSwap ? std::chrono::duration<double>(swapped - *lastSwap).count() : 0.0;
       lastSwap = swapped;
       std::lock_guard lock(mutex_);
       stats_.capacity = renderer->particles().update().capacity();
-      stats_.updateMs = timings.updateMs;
-      stats_.renderMs = timings.renderMs;
-      stats_.postMs = timings.postMs;
+      if (gpu) {
+        stats_.updateMs = (*gpu)[gl::FrameStageTimer::Update];
+        stats_.sceneMs = (*gpu)[gl::FrameStageTimer::Scene];
+        stats_.renderMs = (*gpu)[gl::FrameStageTimer::Particles];
+        stats_.postMs = (*gpu)[gl::FrameStageTimer::Post];
+      }
       if (packet->fieldUpdate) {
         stats_.fieldUploadMs = renderer->particles().update().lastFieldUploadMs();
         ++stats_.fieldUploads;
@@ -90,6 +106,9 @@ void RenderContext::run() {
         stats_.fps = stats_.fps > 0.0 ? 0.9 * stats_.fps + 0.1 / interval : 1.0 / interval;
       stats_.liveParticles = live;
       stats_.glErrors += errors;
+      renderer_ = renderer->renderer();
+      if (packet->frame >= warmup_)
+        samples_.push_back({interval * 1e3, ms, barrierWait, packetWait, gpu, live});
     }
     renderer.reset();  // GL objects go with their own context current
     context_->releaseCurrent();

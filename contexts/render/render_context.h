@@ -17,6 +17,7 @@
 #include <optional>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "contexts/platform/gl_context.h"
 #include "contexts/render/wall_renderer.h"
@@ -30,10 +31,22 @@ struct WallStats {
   double fps = 0.0;      // smoothed
   std::size_t liveParticles = 0;
   std::size_t capacity = 0;
-  double updateMs = 0.0, renderMs = 0.0, postMs = 0.0;  // GPU time per stage (a few frames old)
+  // GPU time per stage, all views of a frame (a few frames old); render: the particles.
+  double updateMs = 0.0, sceneMs = 0.0, renderMs = 0.0, postMs = 0.0;
   double fieldUploadMs = 0.0;  // CPU time of the last field upload to this wall's GPU
   int fieldUploads = 0;        // how many field grids this wall has received
   std::uint64_t glErrors = 0;  // GL errors raised by this wall's frames (glGetError once a frame)
+};
+
+// One frame of one wall, as measured on its thread: what the run statistics
+// (app/run_stats.h) are made of.
+struct WallFrameSample {
+  double intervalMs = 0.0;                        // present to present
+  double cpuMs = 0.0;                             // this thread's work on the frame
+  double waitMs = 0.0;                            // at the swap barrier, for the other walls
+  double packetWaitMs = 0.0;                      // for the main context's packet
+  std::optional<gl::FrameStageTimer::Times> gpu;  // a few frames old
+  std::size_t live = 0;
 };
 
 class RenderContext {
@@ -56,8 +69,6 @@ class RenderContext {
     overlay_ = std::move(source);
     font_ = std::move(font);
   }
-  // Whether the live particle count is read back each frame for stats (a GPU wait).
-  void setCountParticles(bool on) { countParticles_ = on; }
   void start();
   void join();
 
@@ -65,6 +76,10 @@ class RenderContext {
   GlContext& glContext() { return *context_; }
   std::optional<std::string> error() const;
   WallStats stats() const;
+  // Every frame from `warmup` on (after join(): the whole run).
+  void sampleFrom(std::uint32_t warmup) { warmup_ = warmup; }
+  std::vector<WallFrameSample> samples() const;
+  const char* renderer() const { return renderer_; }
   bool finished() const { return finished_; }
 
  private:
@@ -78,12 +93,14 @@ class RenderContext {
   FrameHook hook_;
   OverlaySource overlay_;
   UiFont font_;
-  bool countParticles_ = true;
   std::thread thread_;
   std::atomic<bool> finished_{false};
   mutable std::mutex mutex_;
   std::optional<std::string> error_;
   WallStats stats_;
+  std::uint32_t warmup_ = 0xffffffffu;  // no samples unless asked
+  std::vector<WallFrameSample> samples_;
+  const char* renderer_ = "";
 };
 
 }  // namespace sandstorm

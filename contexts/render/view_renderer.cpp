@@ -13,9 +13,18 @@ ViewRenderer::ViewRenderer() : viewBlock_(gl::createBuffer()), renderBlock_(gl::
 }
 
 void ViewRenderer::render(const ParticleSystem& particles, const View& view, glm::ivec2 size,
-                          std::uint32_t destination, glm::ivec2 origin) {
+                          std::uint32_t destination, glm::ivec2 origin,
+                          gl::FrameStageTimer* timer) {
+  using Stage = gl::FrameStageTimer::Stage;
+  if (timer) timer->begin(Stage::Scene);
   drawScene(particles, view, size);
-  particles.render(targets_, destination, origin, &view);
+  if (timer) timer->end();
+  if (timer) timer->begin(Stage::Particles);
+  particles.renderParticles(targets_, &view);
+  if (timer) timer->end();
+  if (timer) timer->begin(Stage::Post);
+  particles.composite(targets_, destination, origin);
+  if (timer) timer->end();
 }
 
 void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, glm::ivec2 size) {

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 
+#include "contexts/gl/frame_stage_timer.h"
 #include "contexts/gl/objects.h"
 #include "contexts/render/view_targets.h"
 #include "contexts/scene/scene_renderer.h"
@@ -21,8 +22,9 @@ class ViewRenderer {
   ViewRenderer();
 
   SceneRenderer& scene() { return scene_; }
+  // `timer` (may be null) measures the scene, particle and post stages.
   void render(const ParticleSystem& particles, const View& view, glm::ivec2 size,
-              std::uint32_t destination, glm::ivec2 origin);
+              std::uint32_t destination, glm::ivec2 origin, gl::FrameStageTimer* timer = nullptr);
   // render()'s first half, for callers that time the stages apart
   // (sandstorm-bench): binds the view and render blocks and draws the scene
   // into targets(); the particle system's passes follow.

@@ -24,7 +24,9 @@ WallRenderer::WallRenderer(const WallRendererSetup& s)
 }
 
 void WallRenderer::frame(const FramePacket& packet, glm::ivec2 windowSize) {
+  timer_.begin(gl::FrameStageTimer::Update);
   system_.advance(packet);
+  timer_.end();
   drewOffscreen_ = windowSize.x <= 0 || windowSize.y <= 0;
   if (drewOffscreen_) {
     offscreen_.resize(wall_.offscreenSize);
@@ -33,6 +35,7 @@ void WallRenderer::frame(const FramePacket& packet, glm::ivec2 windowSize) {
     drawViews(packet, 0, windowSize);
   }
   lastSize_ = drewOffscreen_ ? wall_.offscreenSize : windowSize;
+  timer_.endFrame();
 }
 
 void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destination,
@@ -40,34 +43,42 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
   const float aspect = float(size.x) / float(size.y);
   const std::vector<View> views = wallViews(wall_, packet.viewer, aspect, near_, far_);
   viewRenderer_.scene().setWand(packet.wand, packet.viewer.navigation, system_.state().emitters);
+  const glm::ivec2 viewSize =
+      wall_.stereo == StereoMode::SideBySide  ? glm::ivec2(size.x / 2, size.y)
+      : wall_.stereo == StereoMode::TopBottom ? glm::ivec2(size.x, size.y / 2)
+                                              : size;
+  renderer_ = system_.state().render.mode == RenderMode::Points ? "points"
+              : system_.splats(&views[0], viewSize)             ? "splats"
+                                                                : "billboards";
   switch (wall_.stereo) {
     case StereoMode::Mono:
-      viewRenderer_.render(system_, views[0], size, destination, {0, 0});
+      viewRenderer_.render(system_, views[0], size, destination, {0, 0}, &timer_);
       break;
     case StereoMode::SideBySide: {
       const glm::ivec2 half(size.x / 2, size.y);
-      viewRenderer_.render(system_, views[0], half, destination, {0, 0});
-      viewRenderer_.render(system_, views[1], half, destination, {half.x, 0});
+      viewRenderer_.render(system_, views[0], half, destination, {0, 0}, &timer_);
+      viewRenderer_.render(system_, views[1], half, destination, {half.x, 0}, &timer_);
       break;
     }
     case StereoMode::TopBottom: {
       const glm::ivec2 half(size.x, size.y / 2);
-      viewRenderer_.render(system_, views[0], half, destination, {0, half.y});  // left eye on top
-      viewRenderer_.render(system_, views[1], half, destination, {0, 0});
+      viewRenderer_.render(system_, views[0], half, destination, {0, half.y},
+                           &timer_);  // left eye on top
+      viewRenderer_.render(system_, views[1], half, destination, {0, 0}, &timer_);
       break;
     }
     case StereoMode::QuadBuffer:
       glNamedFramebufferDrawBuffer(0, GL_BACK_LEFT);
-      viewRenderer_.render(system_, views[0], size, 0, {0, 0});
+      viewRenderer_.render(system_, views[0], size, 0, {0, 0}, &timer_);
       glNamedFramebufferDrawBuffer(0, GL_BACK_RIGHT);
-      viewRenderer_.render(system_, views[1], size, 0, {0, 0});
+      viewRenderer_.render(system_, views[1], size, 0, {0, 0}, &timer_);
       glNamedFramebufferDrawBuffer(0, GL_BACK);
       break;
     case StereoMode::Anaglyph: {
       for (int eye = 0; eye < 2; ++eye) {
         eyes_[eye].resize(size);
         viewRenderer_.render(system_, views[std::size_t(eye)], size, eyes_[eye].framebuffer(),
-                             {0, 0});
+                             {0, 0}, &timer_);
       }
       glBindFramebuffer(GL_FRAMEBUFFER, destination);
       glViewport(0, 0, size.x, size.y);

@@ -7,6 +7,7 @@
 #include <memory>
 #include <optional>
 
+#include "contexts/gl/frame_stage_timer.h"
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
 #include "contexts/particles/particle_system.h"
@@ -45,6 +46,11 @@ class WallRenderer {
   // The image last drawn (offscreen) or the back buffer (window).
   Image capture() const;
 
+  // GPU milliseconds of this wall's stages in a recent frame (a few frames old).
+  const std::optional<gl::FrameStageTimer::Times>& stageTimes() const { return timer_.latest(); }
+  // The particle renderer the last view used: "splats" or "billboards" (or "points").
+  const char* renderer() const { return renderer_; }
+
   const ParticleSystem& particles() const { return system_; }
   ParticleSystem& particles() { return system_; }
   const WallSpec& wall() const { return wall_; }
@@ -62,6 +68,8 @@ class WallRenderer {
   gl::VertexArray emptyVao_;
   std::unique_ptr<UiRenderer> ui_;
   glm::ivec2 lastSize_{0};
+  gl::FrameStageTimer timer_;
+  const char* renderer_ = "billboards";
   bool drewOffscreen_ = false;
 };
 

@@ -135,6 +135,7 @@ struct RunSpec {
   bool sharedSimulation = false;
   float nearPlane = 0.05f;
   float farPlane = 500.0f;
+  int statsWarmup = 60;  // frames left out of the run statistics (start-up, filling)
 };
 
 // Cluster mode (mpirun, app/cluster/): how rank 0 feeds the other ranks.
