@@ -13,7 +13,7 @@
 #include "core/config/pvx_import.h"
 #include "core/sim/attribute_table.h"
 #include "core/util/error.h"
-#include "core/util/utf8.h"
+#include "core/util/toml_text.h"
 
 namespace sandstorm {
 namespace {
@@ -494,7 +494,7 @@ void placeWalls(AppConfig& c) {
 }
 
 toml::value parseToml(const std::string& text, const std::string& name) {
-  checkUtf8(text, name);
+  checkTomlText(text, name);
   try {
     std::istringstream in(text);
     return toml::parse(in, name);

@@ -3,20 +3,24 @@
 #include <algorithm>
 #include <array>
 #include <charconv>
+#include <cmath>
 #include <cstdint>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
+#include "core/io/vtk_xml_payload.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
 namespace {
 
-constexpr std::size_t kMaxTag = 1 << 20;          // bytes in one tag: far above any real one
-constexpr std::size_t kHeaderPrefix = 64 * 1024;  // decoded bytes kept of a binary payload
+constexpr std::size_t kMaxTag = 1 << 20;  // bytes in one tag: far above any real one
+constexpr std::size_t kMaxToken = 64;     // characters in one ascii value: far above any real one
 
 // Reads a file byte by byte through a buffer; seeks for appended data.
 class Scanner {
@@ -77,37 +81,29 @@ bool isSpace(int c) {
   return c == ' ' || c == '\t' || c == '\n' || c == '\r';
 }
 
-// A binary payload as far as the check needs it: its first decoded bytes and how many there are.
-struct Payload {
-  std::vector<std::uint8_t> prefix;
-  std::uint64_t bytes = 0;
-};
-
 // Decodes base64 four characters at a time, as VTK writes it: the header and
 // the data of a compressed array are separate units, each padded with '='.
 class Base64Decoder {
  public:
-  // Returns false for a character that is not base64.
-  bool add(int c, Payload& out) {
+  // The bytes decoded so far into `out` (0 until a group of four is complete),
+  // or -1 for a character that is not base64.
+  int add(int c, std::uint8_t out[3]) {
     if (c == '=') {
       ++pad_;
     } else {
       const int v = base64Value(c);
-      if (v < 0 || pad_ > 0) return false;
+      if (v < 0 || pad_ > 0) return -1;
       value_ = (value_ << 6) | std::uint32_t(v);
     }
-    if (++count_ < 4) return true;
+    if (++count_ < 4) return 0;
     const int bytes = 3 - pad_;
-    if (bytes < 1) return false;
+    if (bytes < 1) return -1;
     value_ <<= 6 * pad_;
-    for (int i = 0; i < bytes; ++i) {
-      if (out.prefix.size() < kHeaderPrefix)
-        out.prefix.push_back(std::uint8_t(value_ >> (16 - 8 * i)));
-      ++out.bytes;
-    }
+    for (int i = 0; i < bytes; ++i)
+      out[i] = std::uint8_t(value_ >> (16 - 8 * i));
     count_ = pad_ = 0;
     value_ = 0;
-    return true;
+    return bytes;
   }
   bool complete() const { return count_ == 0; }
 
@@ -115,6 +111,32 @@ class Base64Decoder {
   std::uint32_t value_ = 0;
   int count_ = 0, pad_ = 0;
 };
+
+// Whether an ascii token is a value of the array's type, as VTK's reader
+// (operator>>) will take it: a finite number in the type's range.
+bool asciiValueFits(std::string_view token, const std::string& type) {
+  if (!token.empty() && token[0] == '+') token.remove_prefix(1);
+  const char* first = token.data();
+  const char* last = first + token.size();
+  const auto whole = [&](auto value) {
+    const auto [end, ec] = std::from_chars(first, last, value);
+    return ec == std::errc() && end == last;
+  };
+  if (type == "Float32" || type == "Float64") {
+    double v = 0.0;
+    const auto [end, ec] = std::from_chars(first, last, v);
+    if (ec != std::errc() || end != last || !std::isfinite(v)) return false;
+    return type == "Float64" || std::fabs(v) <= double(std::numeric_limits<float>::max());
+  }
+  if (type == "Int8" || type == "Char") return whole(std::int8_t{});
+  if (type == "UInt8") return whole(std::uint8_t{});
+  if (type == "Int16") return whole(std::int16_t{});
+  if (type == "UInt16") return whole(std::uint16_t{});
+  if (type == "Int32") return whole(std::int32_t{});
+  if (type == "UInt32") return whole(std::uint32_t{});
+  if (type == "Int64") return whole(std::int64_t{});
+  return whole(std::uint64_t{});
+}
 
 struct Array {
   std::string where;
@@ -126,8 +148,6 @@ struct Array {
   std::string format;
   std::uint64_t offset = 0;
   std::uint64_t asciiValues = 0;
-  Payload payload;  // inline binary
-  bool base64Broken = false;
 };
 
 class Checker {
@@ -259,24 +279,26 @@ class Checker {
       }
       const auto order = t.attributes.find("byte_order");
       bigEndian_ = order != t.attributes.end() && order->second == "BigEndian";
-      compressed_ = t.attributes.count("compressor") > 0 && !t.attributes.at("compressor").empty();
+      const auto compressor = t.attributes.find("compressor");
+      compressor_ = vtkCompressorNamed(
+          compressor == t.attributes.end() ? std::string() : compressor->second, file_);
+    } else if (t.attributes.count("WholeExtent") && stack_.size() == 1) {
+      wholeText_ = t.attributes.at("WholeExtent");
+      wholeExtent_ = parseExtent(wholeText_, t.name + " WholeExtent");
     } else if (t.name == "Piece") {
       ++piece_;
       dims_.reset();
       coordinate_ = 0;
       const auto extent = t.attributes.find("Extent");
       if (extent != t.attributes.end()) {
-        std::array<long long, 6> e{};
-        const char* p = extent->second.data();
-        const char* end = p + extent->second.size();
-        for (long long& v : e) {
-          while (p < end && isSpace(*p))
-            ++p;
-          const auto [q, ec] = std::from_chars(p, end, v);
-          if (ec != std::errc())
-            fail(concat(file_, ": Piece ", piece_, " Extent '", extent->second,
-                        "': expected six whole numbers"));
-          p = q;
+        const std::string what = concat("Piece ", piece_, " Extent");
+        const std::array<long long, 6> e = parseExtent(extent->second, what);
+        for (int i = 0; i < 6 && wholeExtent_; i += 2) {
+          const auto& w = *wholeExtent_;
+          if (e[std::size_t(i)] < w[std::size_t(i)] ||
+              e[std::size_t(i + 1)] > w[std::size_t(i + 1)])
+            fail(concat(file_, ": ", what, " '", extent->second, "' reaches outside the ",
+                        "WholeExtent '", wholeText_, "' along ", "xyz"[i / 2]));
         }
         std::array<std::uint64_t, 3> n{};
         for (int a = 0; a < 3; ++a) {
@@ -296,6 +318,24 @@ class Checker {
     } else if (t.name == "DataArray") {
       dataArray(t);
     }
+  }
+
+  std::array<long long, 6> parseExtent(const std::string& text, const std::string& what) const {
+    std::array<long long, 6> e{};
+    const char* p = text.data();
+    const char* end = p + text.size();
+    for (long long& v : e) {
+      while (p < end && isSpace(*p))
+        ++p;
+      const auto [q, ec] = std::from_chars(p, end, v);
+      if (ec != std::errc())
+        fail(concat(file_, ": ", what, " '", text.substr(0, 80), "': expected six whole numbers"));
+      if (v < -(1LL << 40) || v > (1LL << 40))
+        fail(concat(file_, ": ", what, " '", text.substr(0, 80), "': ", v,
+                    " is far outside any grid"));
+      p = q;
+    }
+    return e;
   }
 
   std::optional<std::uint64_t> expectedTuples() {
@@ -365,107 +405,79 @@ class Checker {
         fail(concat(a.where, ": no data for ", tuples * a.components, " values"));
       return;
     }
-    readInline(a);
     const std::uint64_t words = tuples * a.components;
     if (a.format == "ascii") {
+      readAscii(a);
       if (known && a.asciiValues != words)
         fail(concat(a.where, ": holds ", a.asciiValues, " ascii values; ", tuples, " tuples x ",
                     a.components, " components need ", words,
                     " (the extent and the data disagree)"));
       return;
     }
-    if (a.base64Broken) fail(concat(a.where, ": the inline binary data is not valid base64"));
-    checkBinary(a, a.payload,
-                known ? std::optional<std::uint64_t>(words * std::uint64_t(a.size)) : std::nullopt);
+    VtkXmlPayload payload(format(), a.where, needed(a), needText(a));
+    readBase64(a, payload);
+    payload.finish();
   }
 
-  // The inline data: up to the next '<' (a nested element or the closing tag).
-  void readInline(Array& a) {
+  VtkPayloadFormat format() const {
+    return {headerSize_, bigEndian_, compressor_, std::uint64_t(budget_)};
+  }
+
+  static std::string needText(const Array& a) {
+    const std::optional<std::uint64_t> bytes = needed(a);
+    if (!bytes) return {};
+    return concat(*bytes / (a.components * std::uint64_t(a.size)), " tuples x ", a.components,
+                  " components need ", *bytes, " (", a.size, " bytes each)");
+  }
+
+  static std::optional<std::uint64_t> needed(const Array& a) {
+    const std::optional<std::uint64_t> known =
+        a.declaredTuples ? a.declaredTuples : a.expectedTuples;
+    if (!known) return std::nullopt;
+    return *known * a.components * std::uint64_t(a.size);
+  }
+
+  // Inline data runs up to the next '<' (a nested element or the closing
+  // tag), which is put back for the tag reader.
+  void readAscii(Array& a) {
+    std::string token;
+    int c;
+    do {
+      c = in_.get();
+      if (c >= 0 && c != '<' && !isSpace(c)) {
+        if (token.size() < kMaxToken) token.push_back(char(c));
+        continue;
+      }
+      if (token.empty()) continue;
+      ++a.asciiValues;
+      if (!asciiValueFits(token, a.type))
+        fail(concat(a.where, ": ascii value ", a.asciiValues, " ('", token.substr(0, 40),
+                    "') is not ", a.type == "Float32" || a.type == "Float64" ? "a finite " : "an ",
+                    a.type, " number"));
+      token.clear();
+    } while (c >= 0 && c != '<');
+    endInline(a, c);
+  }
+
+  void readBase64(const Array& a, VtkXmlPayload& payload) {
     Base64Decoder decoder;
-    bool inToken = false;
+    std::uint8_t bytes[3];
     int c;
     while ((c = in_.get()) >= 0 && c != '<') {
-      if (a.format == "ascii") {
-        if (isSpace(c)) {
-          inToken = false;
-        } else if (!inToken) {
-          inToken = true;
-          ++a.asciiValues;
-        }
-      } else if (!isSpace(c) && !a.base64Broken) {
-        a.base64Broken = !decoder.add(c, a.payload);
-      }
+      if (isSpace(c) || payload.complete()) continue;
+      const int n = decoder.add(c, bytes);
+      if (n < 0)
+        fail(concat(a.where, ": the inline binary data is not valid base64 (byte ", in_.position(),
+                    ")"));
+      for (int i = 0; i < n; ++i)
+        payload.push(bytes[i]);
     }
+    endInline(a, c);
+  }
+
+  void endInline(const Array& a, int c) {
     if (c < 0) fail(concat(a.where, ": truncated: the file ends inside the array's data"));
-    if (a.format == "binary" && !decoder.complete()) a.base64Broken = true;
-    // Put the '<' back: the tag reader needs it.
     in_.seek(in_.position() - 1);
-  }
-
-  std::uint64_t word(const Payload& p, std::size_t index) const {
-    const std::size_t at = index * std::size_t(headerSize_);
-    std::uint64_t v = 0;
-    for (int i = 0; i < headerSize_; ++i) {
-      const std::uint8_t b = p.prefix[at + std::size_t(i)];
-      v |= std::uint64_t(b) << (8 * (bigEndian_ ? headerSize_ - 1 - i : i));
-    }
-    return v;
-  }
-
-  // `needed`: the bytes the array's tuples and components take; unknown (no
-  // extent, no NumberOfTuples): the header's count, checked against the budget.
-  void checkBinary(const Array& a, const Payload& p, std::optional<std::uint64_t> needed) const {
-    const std::uint64_t hs = std::uint64_t(headerSize_);
-    const auto expect = [&](std::uint64_t declared, const char* what) {
-      if (needed && declared != *needed)
-        fail(concat(a.where, ": its ", what, " declares ", declared, " bytes; ",
-                    *needed / (a.components * std::uint64_t(a.size)), " tuples x ", a.components,
-                    " components need ", *needed, " (", a.size, " bytes each)"));
-      if (!needed && declared > budget_)
-        fail(concat(a.where, ": its ", what, " declares ", declared,
-                    " bytes, beyond the memory budget of ", budget_, " bytes"));
-    };
-    if (!compressed_) {
-      if (p.bytes < hs || p.prefix.size() < hs)
-        fail(
-            concat(a.where, ": truncated: ", p.bytes, " bytes, not even the ", hs, "-byte header"));
-      const std::uint64_t declared = word(p, 0);
-      expect(declared, "header");
-      if (p.bytes - hs < declared)
-        fail(concat(a.where, ": truncated: the header declares ", declared, " bytes, ",
-                    p.bytes - hs, " follow it"));
-      return;
-    }
-    if (p.bytes < 3 * hs || p.prefix.size() < 3 * hs)
-      fail(concat(a.where, ": truncated: ", p.bytes, " bytes, not even the compression header"));
-    const std::uint64_t blocks = word(p, 0), blockSize = word(p, 1), last = word(p, 2);
-    if (blocks > (p.bytes - 3 * hs) / hs)
-      fail(concat(a.where, ": the compression header lists ", blocks, " blocks; only ", p.bytes,
-                  " bytes are there"));
-    if (blockSize > budget_)
-      fail(concat(a.where, ": compression blocks of ", blockSize,
-                  " bytes, beyond the memory budget of ", budget_, " bytes"));
-    if (last > blockSize)
-      fail(concat(a.where, ": the last compressed block (", last,
-                  " bytes) is larger than a block (", blockSize, ")"));
-    const std::uint64_t uncompressed =
-        blocks == 0 ? 0 : (blocks - 1) * blockSize + (last ? last : blockSize);
-    expect(uncompressed, "compression header (uncompressed size)");
-    const std::uint64_t header = (3 + blocks) * hs;
-    if (p.prefix.size() >= header) {
-      std::uint64_t sum = 0;
-      for (std::uint64_t b = 0; b < blocks; ++b) {
-        const std::uint64_t size = word(p, std::size_t(3 + b));
-        if (size > p.bytes)
-          sum = p.bytes + 1;
-        else
-          sum += size;
-        if (sum > p.bytes) break;
-      }
-      if (sum > p.bytes - header)
-        fail(concat(a.where, ": truncated: its compressed blocks need ", sum, " bytes, ",
-                    p.bytes - header, " follow the header"));
-    }
   }
 
   void appended(const Tag& t) {
@@ -491,44 +503,44 @@ class Checker {
     if (close != std::string::npos) appendedEnd_ = fileSize_ - tail + close;
   }
 
-  void checkAppended(Array& a) {
+  void checkAppended(const Array& a) {
     if (!appendedSeen_)
       fail(concat(a.where, ": format appended, but the file has no AppendedData"));
-    const std::optional<std::uint64_t> known =
-        a.declaredTuples ? a.declaredTuples : a.expectedTuples;
-    const std::optional<std::uint64_t> needed =
-        known ? std::optional<std::uint64_t>(*known * a.components * std::uint64_t(a.size))
-              : std::nullopt;
     const std::uint64_t at = appendedStart_ + a.offset;
     if (at > appendedEnd_ || a.offset > appendedEnd_)
       fail(concat(a.where, ": offset ", a.offset, " lies beyond the appended data (",
                   appendedEnd_ - appendedStart_, " bytes)"));
-    Payload p;
+    VtkXmlPayload payload(format(), a.where, needed(a), needText(a));
     in_.seek(at);
-    const std::uint64_t length = appendedEnd_ - at;
     if (base64Appended_) {
       Base64Decoder decoder;
-      for (std::uint64_t i = 0; i < length; ++i) {
+      std::uint8_t bytes[3];
+      while (!payload.complete() && in_.position() < appendedEnd_) {
         const int c = in_.get();
         if (c < 0) break;
         if (isSpace(c)) continue;
-        if (!decoder.add(c, p)) break;  // the end
-        // Past the header prefix only the count matters: estimate the rest.
-        if (p.prefix.size() >= kHeaderPrefix) {
-          p.bytes += (length - i - 1) / 4 * 3;
-          break;
-        }
+        const int n = decoder.add(c, bytes);
+        if (n < 0)
+          fail(concat(a.where, ": the appended base64 data is not valid base64 (byte ",
+                      in_.position(), ")"));
+        for (int i = 0; i < n && !payload.complete(); ++i)
+          payload.push(bytes[i]);
       }
     } else {
-      p.bytes = length;
-      const std::uint64_t keep = std::min<std::uint64_t>(length, kHeaderPrefix);
-      for (std::uint64_t i = 0; i < keep; ++i) {
+      while (!payload.complete() && in_.position() < appendedEnd_) {
+        // Uncompressed data needs no look: skip over what the file holds of it.
+        if (const std::uint64_t skip = payload.skippable(); skip > 0) {
+          const std::uint64_t n = std::min(skip, appendedEnd_ - in_.position());
+          in_.seek(in_.position() + n);
+          payload.skipped(n);
+          continue;
+        }
         const int c = in_.get();
         if (c < 0) break;
-        p.prefix.push_back(std::uint8_t(c));
+        payload.push(std::uint8_t(c));
       }
     }
-    checkBinary(a, p, needed);
+    payload.finish();
   }
 
   std::filesystem::path path_;
@@ -537,10 +549,13 @@ class Checker {
   std::size_t budget_;
   std::uint64_t fileSize_ = 0;
   std::vector<std::string> stack_;
-  bool sawFile_ = false, bigEndian_ = false, compressed_ = false;
+  bool sawFile_ = false, bigEndian_ = false;
+  VtkCompressor compressor_ = VtkCompressor::None;
   int headerSize_ = 4;
   int piece_ = 0;
   std::optional<std::array<std::uint64_t, 3>> dims_;
+  std::optional<std::array<long long, 6>> wholeExtent_;
+  std::string wholeText_;
   std::optional<std::uint64_t> points_;
   std::size_t coordinate_ = 0;
   double totalBytes_ = 0.0;

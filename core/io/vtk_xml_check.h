@@ -2,18 +2,22 @@
 // VTK reads it, because vtkXML*Reader allocates what a DataArray's attributes
 // claim before it notices that the payload is short.
 //
-// One streaming pass: the XML is read tag by tag, inline data is measured
-// without being kept, appended data is visited at each array's offset for its
-// header. Every DataArray of every Piece is checked:
+// One streaming pass: the XML is read tag by tag, inline data is decoded
+// without being kept, appended data is visited at each array's offset and
+// decoded. Every DataArray of every Piece is checked:
 // - `type` is a numeric VTK type; NumberOfComponents a whole number >= 1;
 // - NumberOfTuples, when given, is what the piece's Extent gives the array
 //   (its points, its cells, or one axis of its coordinates);
 // - tuples x components x type size is within the memory budget, and all
 //   arrays together within twice it;
-// - the payload can hold it: ascii values are counted; a binary header's byte
-//   count (or a compressed header's uncompressed size) must equal it, and the
-//   header and blocks must fit in the bytes that are there (inline base64,
-//   appended raw or base64, UInt32 or UInt64 headers, either byte order).
+// - a Piece's Extent lies inside the WholeExtent; the compressor is one VTK has;
+// - the payload holds exactly it (VtkXmlPayload): a binary header's byte count,
+//   or a compressed header's uncompressed size, must equal it; every byte is
+//   there (inline base64, appended raw or base64, UInt32 or UInt64 headers,
+//   either byte order); every compressed block (zlib, LZ4, LZMA) decompresses
+//   to its size; every ascii value is a finite number of the array's type.
+// VTK's structured readers leak the arrays they were filling when a payload
+// fails halfway, so a payload VTK would fail on must not reach it.
 // Throws Error naming the file, the piece and array, and the numbers.
 #pragma once
 

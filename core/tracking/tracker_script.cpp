@@ -8,7 +8,7 @@
 #include <toml.hpp>
 
 #include "core/util/error.h"
-#include "core/util/utf8.h"
+#include "core/util/toml_text.h"
 
 namespace sandstorm {
 
@@ -88,7 +88,7 @@ class KeyReader {
 }  // namespace
 
 TrackerScript TrackerScript::parse(const std::string& text, const std::string& name) {
-  checkUtf8(text, name);
+  checkTomlText(text, name);
   toml::value root;
   try {
     std::istringstream in(text);

@@ -131,6 +131,22 @@ TEST(Config, BadValuesAreRefusedWithTheirLine) {
   EXPECT_ERROR(kWall + kWall, "test.toml:8", "'front' is used twice");
 }
 
+TEST(Config, IntegersBeyond64BitsAreRefusedNotClamped) {
+  const std::string big = "0b1" + std::string(64, '0');  // 2^64
+  EXPECT_ERROR("[run]\nseed = " + big + "\n" + kWall, "test.toml:2", "does not fit in 64 bits");
+  EXPECT_ERROR("[run]\nseed = 0x1_0000_0000_0000_0000\n" + kWall, "test.toml:2", "64 bits");
+  EXPECT_ERROR("[run]\nseed = 0o2000000000000000000000\n" + kWall, "test.toml:2", "64 bits");
+  EXPECT_ERROR("[sim]\nmaximum = 9223372036854775808\n" + kWall, "test.toml:2", "64 bits");
+  EXPECT_ERROR("[sim]\nmaximum = [1,\n -9223372036854775809]\n" + kWall, "test.toml:3", "64 bits");
+  // The extremes themselves fit (and are then judged by the key's own range);
+  // digits inside strings and comments are not integers.
+  EXPECT_ERROR("[sim]\nmaximum = -9223372036854775808\n" + kWall, "sim.maximum");
+  EXPECT_EQ(
+      errorOf("# 99999999999999999999\n[run]\nname = \"0b" + std::string(70, '1') + "\"\n" + kWall)
+          .find("64 bits"),
+      std::string::npos);
+}
+
 }  // namespace
 }  // namespace sandstorm
 

@@ -28,7 +28,9 @@ namespace {
 struct Encoding {
   const char* name;
   int mode;  // vtkXMLWriter::Ascii, Binary, Appended
-  bool base64Appended, zlib, header64, bigEndian;
+  bool base64Appended;
+  int compressor;  // 0 none, 1 zlib, 2 LZ4, 3 LZMA
+  bool header64, bigEndian;
 };
 
 const Encoding kEncodings[] = {
@@ -44,6 +46,10 @@ const Encoding kEncodings[] = {
     {"base64_zlib", 2, true, true, false, false},
     {"raw_big_endian", 2, false, false, false, true},
     {"binary_zlib_big_endian", 1, false, true, true, true},
+    {"binary_lz4", 1, false, 2, false, false},
+    {"raw_lz4", 2, false, 2, false, false},
+    {"base64_lzma", 2, true, 3, false, false},
+    {"raw_lzma64", 2, false, 3, true, false},
 };
 
 vtkNew<vtkImageData> image() {
@@ -63,8 +69,12 @@ template <class Writer>
 void configure(Writer* w, const Encoding& e) {
   w->SetDataMode(e.mode);
   w->SetEncodeAppendedData(e.base64Appended);
-  if (e.zlib)
+  if (e.compressor == 1)
     w->SetCompressorTypeToZLib();
+  else if (e.compressor == 2)
+    w->SetCompressorTypeToLZ4();
+  else if (e.compressor == 3)
+    w->SetCompressorTypeToLZMA();
   else
     w->SetCompressorTypeToNone();
   if (e.header64)
@@ -154,6 +164,49 @@ TEST_P(VtkXmlCheck, EveryTruncationIsRefusedOrReadWhole) {
   EXPECT_GT(refused, int(text.size() / 7) * 9 / 10);
 }
 
+// VTK's reader leaks what it was filling when a payload fails halfway (zlib
+// errors, bad base64, values that are not numbers), so the check must refuse
+// every damaged payload VTK would fail on. Each byte of the data is damaged in
+// turn: the check refuses the file, or VTK reads it (other values, maybe).
+TEST_P(VtkXmlCheck, DamagedDataIsRefusedUnlessVtkReadsIt) {
+  const auto path = write(test::scratch(), GetParam());
+  const std::string text = test::readAll(path);
+  // The data: each inline DataArray's text, or the appended section.
+  std::vector<std::size_t> bytes;
+  const std::size_t appended = text.find("<AppendedData");
+  if (appended != std::string::npos) {
+    for (std::size_t i = text.find('_', appended) + 1; i < text.rfind("</AppendedData>"); ++i)
+      bytes.push_back(i);
+  } else {
+    for (std::size_t at = text.find("<DataArray"); at != std::string::npos;
+         at = text.find("<DataArray", at + 1))
+      for (std::size_t i = text.find('>', at) + 1; text[i] != '<'; ++i)
+        bytes.push_back(i);
+  }
+  const auto damaged = path.parent_path() / "damaged.vti";
+  int refused = 0;
+  for (std::size_t k = 0; k < bytes.size(); k += 3) {
+    const std::size_t i = bytes[k];
+    std::string bad = text;
+    bad[i] = char(bad[i] ^ (GetParam().mode == 0 ? 0x04 : 0x5A));
+    test::writeText(damaged, bad);
+    try {
+      checkVtkXml(damaged, kBudget);
+    } catch (const Error&) {
+      ++refused;
+      continue;
+    }
+    try {
+      loadField(damaged);
+    } catch (const Error& e) {
+      const std::string what = e.what();
+      EXPECT_EQ(what.find("VTK says"), std::string::npos)
+          << "byte " << i << " damaged: the check passed, then VTK failed: " << what;
+    }
+  }
+  EXPECT_GT(refused, 0);
+}
+
 INSTANTIATE_TEST_SUITE_P(Encodings, VtkXmlCheck, testing::ValuesIn(kEncodings),
                          [](const testing::TestParamInfo<Encoding>& i) { return i.param.name; });
 
@@ -166,7 +219,7 @@ TEST(VtkXmlCheckHeaders, ACompressionHeaderListingEndlessBlocksIsRefused) {
   text[data] = '\x00', text[data + 1] = '\x94', text[data + 2] = '\x35', text[data + 3] = '\x77';
   test::writeText(path, text);
   test::expectError([&] { checkVtkXml(path, kBudget); },
-                    {path.string(), "lists 2000000000 blocks", "bytes are there"});
+                    {path.string(), "2000000000 compressed blocks", "memory budget"});
 }
 
 TEST(VtkXmlCheckHeaders, AnUncompressedByteCountBeyondThePayloadIsRefused) {
@@ -268,6 +321,53 @@ TEST(VtkXmlCheckText, MalformedXmlIsRefused) {
                 .find("no AppendedData"),
             std::string::npos);
   EXPECT_NE(errorOf("junk").find("not XML"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+TEST(VtkXmlCheckValues, AsciiValuesThatAreNotNumbersOfTheTypeAreRefused) {
+  const auto path = write(test::scratch(), kEncodings[0]);
+  const auto word = edited(path, ">\\s*0 0.25 0.5", ">\n0 2(-1 0.5", "word");
+  test::expectError([&] { checkVtkXml(word, kBudget); },
+                    {word.string(), "DataArray 'velocity'", "ascii value 2", "'2(-1'",
+                     "not a finite Float32 number"});
+  const auto huge = edited(path, ">\\s*0 0.25 0.5", ">\n0 1e39 0.5", "huge");
+  test::expectError([&] { checkVtkXml(huge, kBudget); }, {"'1e39'", "Float32"});
+  const auto nan = edited(path, ">\\s*0 0.25 0.5", ">\n0 nan 0.5", "nan");
+  test::expectError([&] { checkVtkXml(nan, kBudget); }, {"'nan'", "not a finite"});
+}
+
+TEST(VtkXmlCheckValues, APieceOutsideTheWholeExtentIsRefused) {
+  const auto path = write(test::scratch(), kEncodings[5]);
+  const auto bad = edited(path, "WholeExtent=\"0 3", "WholeExtent=\"1 3", "outside");
+  test::expectError(
+      [&] { checkVtkXml(bad, kBudget); },
+      {bad.string(), "Piece 1 Extent '0 3 0 2 0 1'", "outside the WholeExtent", "along x"});
+}
+
+TEST(VtkXmlCheckValues, AnUnknownCompressorIsRefused) {
+  const auto path = write(test::scratch(), kEncodings[6]);
+  const auto bad = edited(path, "vtkZLibDataCompressor", "vtkZstdDataCompressor", "zstd");
+  test::expectError([&] { checkVtkXml(bad, kBudget); },
+                    {bad.string(), "compressor 'vtkZstdDataCompressor'", "vtkLZ4DataCompressor"});
+}
+
+TEST(VtkXmlCheckValues, ACorruptCompressedBlockIsRefused) {
+  for (int e : {6, 13}) {  // appended raw: zlib, LZ4
+    const auto path = write(test::scratch(), kEncodings[e]);
+    std::string text = test::readAll(path);
+    // The block starts after the 16-byte header; its middle is overwritten.
+    const std::size_t data = text.find('_', text.find("<AppendedData")) + 1 + 16;
+    for (std::size_t i = 4; i < 12; ++i)
+      text[data + i] = '\xff';
+    test::writeText(path, text);
+    test::expectError([&] { checkVtkXml(path, kBudget); },
+                      {path.string(), "DataArray 'velocity'", "compressed block 1 of 1"});
+  }
 }
 
 }  // namespace
