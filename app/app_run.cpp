@@ -186,6 +186,7 @@ void AppRun::openWalls() {
                             .backend = config_.run.backend,
                             .share = group.share,
                             .shareReader = shareReader,
+                            .tuning = config_.gpu,
                             .nearPlane = config_.run.nearPlane,
                             .farPlane = config_.run.farPlane};
     walls_.push_back(

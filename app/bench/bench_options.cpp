@@ -18,7 +18,7 @@ const char* kUsage = R"(sandstorm-bench: GPU particle benchmark (headless EGL)
                   [--billboard-limit N] [--walls 1,2,4,8] [--wall-particles N]
                   [--wall-sims per-wall,shared] [--wall-renderers billboards,splat]
                   [--wall-backend compute] [--particle-size M] [--memory-gib G]
-                  [--integrator euler|rk2|rk4]
+                  [--integrator euler|rk2|rk4] [--update-items 1|2|4|8]
 
 A fixed scene (a tornado, particles in steady state at each count) timed over
 fixed frames. Sections:
@@ -144,6 +144,10 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       checkChoices({v}, {"tf-gs", "compute"}, a);
     } else if (a == "--particle-size") {
       o.particleSize = float(number(v, a));
+    } else if (a == "--update-items") {
+      o.updateItems = int(count(v, a));
+      if (o.updateItems != 1 && o.updateItems != 2 && o.updateItems != 4 && o.updateItems != 8)
+        throw Error(concat(a, ": ", v, ": expected 1, 2, 4 or 8 records an invocation"));
     } else if (a == "--integrator") {
       o.integrator = v;
       checkChoices({v}, {"euler", "rk2", "rk4"}, a);

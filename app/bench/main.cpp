@@ -193,7 +193,7 @@ class Bench {
 
   double bareCompute(std::size_t n) {
     return bareRecords(n, bareComputeMs_, "bare compute update", "bare-compute",
-                       [&] { return BareComputeUpdate(n).passMs(o_.frames); });
+                       [&] { return BareComputeUpdate(n, o_.updateItems).passMs(o_.frames); });
   }
 
   double bareTf(std::size_t n) {
@@ -228,15 +228,14 @@ class Bench {
   static double ratio(double rate, double ceiling) { return ceiling > 0 ? rate / ceiling : 0.0; }
 
   std::unique_ptr<ParticleSystem> makeSystem(const SceneChoice& c, const std::string& backend) {
-    // ParticleSplat reads its variant when it is made.
-    if (c.renderer == "splat-atomic")
-      setenv("SANDSTORM_SPLAT", "atomic", 1);
-    else
-      unsetenv("SANDSTORM_SPLAT");
+    GpuTuning tuning;
+    tuning.updateItems = o_.updateItems;
+    if (c.renderer == "splat-atomic") tuning.splat = GpuTuning::Splat::Atomic;
     auto system = std::make_unique<ParticleSystem>(
-        benchState(c),
-        ParticleSystem::Options{
-            .capacity = c.particles, .capacityLimit = c.particles, .backend = backend});
+        benchState(c), ParticleSystem::Options{.capacity = c.particles,
+                                               .capacityLimit = c.particles,
+                                               .backend = backend,
+                                               .tuning = tuning});
     system->setTerrain(terrain_);
     return system;
   }

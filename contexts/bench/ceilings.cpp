@@ -82,24 +82,23 @@ double shaderCopyBandwidth(std::size_t bytes, int repeats) {
   return best;
 }
 
-BareComputeUpdate::BareComputeUpdate(std::size_t records)
+BareComputeUpdate::BareComputeUpdate(std::size_t records, int items)
     : records_(records),
+      items_(items),
       in_{recordBuffer(records, 0.5f), recordBuffer(records, 0.25f)},
       out_{recordBuffer(records, 0.0f), recordBuffer(records, 0.0f)},
       control_(gl::createBuffer()),
       tiles_(gl::createBuffer()),
       simBlock_(gl::createBuffer()),
-      program_(gl::ProgramDesc{
-          {"particle_update.comp"},
-          {"BARE_UPDATE", concat("ITEMS ", ParticleComputeUpdate::itemsPerInvocation())},
-          {}}) {
+      program_(
+          gl::ProgramDesc{{"particle_update.comp"}, {"BARE_UPDATE", concat("ITEMS ", items)}, {}}) {
   glNamedBufferStorage(control_.id(), 64, nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(tiles_.id(), GLsizeiptr((records / 256 + 2) * 4), nullptr, 0);
   glNamedBufferStorage(simBlock_.id(), 4096, nullptr, 0);
 }
 
 double BareComputeUpdate::passMs(int repeats) {
-  const std::uint32_t tile = 256u * std::uint32_t(ParticleComputeUpdate::itemsPerInvocation());
+  const std::uint32_t tile = 256u * std::uint32_t(items_);
   const std::uint32_t tiles = std::uint32_t((records_ + tile - 1) / tile);
   const std::uint32_t control[16] = {std::uint32_t(records_), 0, 0,
                                      tiles};  // count[0], count[1], ticket, tiles

@@ -32,11 +32,13 @@ double shaderCopyBandwidth(std::size_t bytes, int repeats);
 // scan over `records` records, the ceiling of the compute backend's structure.
 class BareComputeUpdate {
  public:
-  explicit BareComputeUpdate(std::size_t records);
+  // `items`: records an invocation, as the compute backend is tuned (GpuTuning).
+  BareComputeUpdate(std::size_t records, int items);
   double passMs(int repeats);
 
  private:
   std::size_t records_;
+  int items_;
   gl::Buffer in_[2], out_[2], control_, tiles_, simBlock_;
   gl::Program program_;
 };

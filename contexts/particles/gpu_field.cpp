@@ -14,7 +14,7 @@ namespace sandstorm {
 void GpuField::upload(const VectorField& field) {
   const auto start = std::chrono::steady_clock::now();
   const Storage storage =
-      preferred() == Storage::Buffer && fitsBuffer(field) ? Storage::Buffer : Storage::Texture;
+      preferred_ == Storage::Buffer && fitsBuffer(field) ? Storage::Buffer : Storage::Texture;
   if (storage != storage_) {
     texture_ = {};
     buffer_ = {};
@@ -63,14 +63,6 @@ std::vector<glm::vec4> GpuField::withValidity(const VectorField& field) {
   for (std::size_t i = 0; i < values.size(); ++i)
     padded[i] = glm::vec4(values[i], valid.empty() || valid[i] ? 1.0f : 0.0f);
   return padded;
-}
-
-GpuField::Storage GpuField::preferred() const {
-  const char* text = std::getenv("SANDSTORM_FIELD_STORAGE");
-  if (!text) return preferred_;
-  if (std::string_view(text) == "texture") return Storage::Texture;
-  throw Error(
-      concat("SANDSTORM_FIELD_STORAGE: '", text, "': expected texture (or leave it unset)"));
 }
 
 bool GpuField::fitsBuffer(const VectorField& field) {

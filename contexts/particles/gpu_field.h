@@ -10,8 +10,8 @@
 //     the update 12% (RK2) to 23% (RK4) faster than eight texelFetch
 //     (docs/PERFORMANCE.md). A grid larger than the GPU's storage-buffer
 //     limit (GL_MAX_SHADER_STORAGE_BLOCK_SIZE: 128 MiB on llvmpipe) is kept
-//     as a texture instead; storage() says which. SANDSTORM_FIELD_STORAGE=
-//     texture makes every grid take that fallback (tests, comparisons).
+//     as a texture instead; storage() says which. [gpu] field_storage =
+//     "texture" makes every grid take that fallback (tests, comparisons).
 #pragma once
 
 #include <memory>
@@ -46,7 +46,6 @@ class GpuField {
   double lastUploadMs() const { return lastUploadMs_; }
 
  private:
-  Storage preferred() const;
   static bool fitsBuffer(const VectorField& field);
   void uploadTexture(const VectorField& field);
   void uploadBuffer(const VectorField& field);

@@ -37,39 +37,45 @@ enum Binding : GLuint {
 // survivors itself. GPUs run the workgroups of a dispatch side by side, so a
 // predecessor publishes soon; a CPU rasterizer may not (and llvmpipe caps a
 // shader's loop iterations), so there the tile counts for itself at once.
-// SANDSTORM_SCAN_SPIN overrides (tests of both paths).
-std::uint32_t spinLimit() {
-  if (const char* env = std::getenv("SANDSTORM_SCAN_SPIN")) return std::uint32_t(std::stoul(env));
+// [gpu] scan_spin sets it (tests of both paths).
+std::uint32_t spinLimit(const GpuTuning& tuning) {
+  if (tuning.scanSpin) return *tuning.scanSpin;
   const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   const bool software =
       renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe"));
   return software ? 64u : 1u << 20;
 }
 
-std::string itemsDefine() {
-  return concat("ITEMS ", ParticleComputeUpdate::itemsPerInvocation());
+std::string itemsDefine(int items) {
+  return concat("ITEMS ", items);
+}
+
+int checkedItems(int items) {
+  if (items != 1 && items != 2 && items != 4 && items != 8)
+    throw Error(
+        concat("ParticleComputeUpdate: ", items, " records an invocation; expected 1, 2, 4 or 8"));
+  return items;
 }
 
 }  // namespace
 
-int ParticleComputeUpdate::itemsPerInvocation() {
-  const char* env = std::getenv("SANDSTORM_UPDATE_ITEMS");
-  const int items = env ? std::atoi(env) : 4;
-  return items == 1 || items == 2 || items == 8 ? items : 4;
-}
-
-ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity)
+ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity, const GpuTuning& tuning)
     : capacity_(capacity),
       control_(gl::createBuffer()),
       simBlock_(gl::createBuffer()),
       history_(gl::createBuffer()),
-      prepareProgram_(std::vector<std::string>{"particle_prepare.comp"}, {itemsDefine()}),
+      prepareProgram_(std::vector<std::string>{"particle_prepare.comp"},
+                      {itemsDefine(checkedItems(tuning.updateItems))}),
       emitProgram_(std::vector<std::string>{"particle_emit.comp"}),
       // The field's grid is a storage buffer (environment_).
       updateProgram_(std::vector<std::string>{"particle_update.comp"},
-                     {itemsDefine(), "FIELD_BUFFER"}),
-      spinLimit_(spinLimit()),
-      tile_(256u * std::uint32_t(itemsPerInvocation())) {
+                     {itemsDefine(tuning.updateItems), "FIELD_BUFFER"}),
+      items_(tuning.updateItems),
+      spinLimit_(spinLimit(tuning)),
+      tile_(256u * std::uint32_t(items_)),
+      environment_(tuning.fieldStorage == GpuTuning::FieldStorage::Texture
+                       ? GpuField::Storage::Texture
+                       : GpuField::Storage::Buffer) {
   if (capacity == 0 || capacity > (std::size_t{1} << 31) / kRecord)
     throw Error(concat("ParticleComputeUpdate: capacity ", capacity, " is outside 1..",
                        (1u << 31) / kRecord));
@@ -187,11 +193,11 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   const bool equation = environment_.bind(state);
   if (equation && !updateEquationProgram_)
     updateEquationProgram_ = std::make_unique<gl::Program>(
-        gl::ProgramDesc{{"particle_update.comp"}, {"FIELD_EQUATION", itemsDefine()}, {}});
+        gl::ProgramDesc{{"particle_update.comp"}, {"FIELD_EQUATION", itemsDefine(items_)}, {}});
   const bool texture = environment_.gridStorage() == GpuField::Storage::Texture;
   if (!equation && texture && !updateTextureProgram_)
     updateTextureProgram_ = std::make_unique<gl::Program>(
-        gl::ProgramDesc{{"particle_update.comp"}, {itemsDefine()}, {}});
+        gl::ProgramDesc{{"particle_update.comp"}, {itemsDefine(items_)}, {}});
   const gl::Program& update = equation  ? *updateEquationProgram_
                               : texture ? *updateTextureProgram_
                                         : updateProgram_;

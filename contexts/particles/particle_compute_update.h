@@ -33,17 +33,16 @@
 #include "contexts/gl/program.h"
 #include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_environment.h"
+#include "core/config/gpu_tuning.h"
 #include "core/sim/emission_budget.h"
 
 namespace sandstorm {
 
 class ParticleComputeUpdate final : public ParticleBackend {
  public:
-  // Records per invocation of the update pass (a tile is 256 invocations):
-  // 4 by default; SANDSTORM_UPDATE_ITEMS = 1, 2, 4 or 8 picks another (the benchmark).
-  static int itemsPerInvocation();
-
-  explicit ParticleComputeUpdate(std::size_t capacity);
+  // `tuning`: the records an invocation of the update pass advances (a tile is
+  // 256 invocations), the scan's patience, where the field's grid is kept.
+  explicit ParticleComputeUpdate(std::size_t capacity, const GpuTuning& tuning = {});
 
   void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
                 std::shared_ptr<const VectorField> next = nullptr) override;
@@ -88,10 +87,11 @@ class ParticleComputeUpdate final : public ParticleBackend {
   gl::Program prepareProgram_, emitProgram_, updateProgram_;
   std::unique_ptr<gl::Program> updateEquationProgram_;  // FIELD_EQUATION, made on first use
   std::unique_ptr<gl::Program> updateTextureProgram_;   // grids too large for a buffer, ditto
+  int items_;                                           // records an invocation
   std::uint32_t spinLimit_;
   std::uint32_t tile_;  // records per tile
 
-  ParticleEnvironment environment_{GpuField::Storage::Buffer};
+  ParticleEnvironment environment_;
 
   EmissionBudget budget_;
   std::uint64_t updates_ = 0;

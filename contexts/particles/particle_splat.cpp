@@ -48,27 +48,15 @@ void zero(const gl::Buffer& buffer) {
   glClearNamedBufferData(buffer.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
 }
 
-// A whole number from the environment variable `name`, or `otherwise`.
-std::size_t fromEnvironment(const char* name, std::size_t otherwise) {
-  const char* text = std::getenv(name);
-  if (!text) return otherwise;
-  char* end = nullptr;
-  const long long value = std::strtoll(text, &end, 10);
-  if (end == text || *end != '\0' || value < 1 || value > (1ll << 31))
-    throw Error(concat(name, ": '", text, "': expected a whole number from 1 to ", 1ll << 31));
-  return std::size_t(value);
-}
-
 }  // namespace
 
-ParticleSplat::ParticleSplat()
-    : tiled_(!std::getenv("SANDSTORM_SPLAT") ||
-             std::string_view(std::getenv("SANDSTORM_SPLAT")) != "atomic"),
+ParticleSplat::ParticleSplat(const GpuTuning& tuning)
+    : tiled_(tuning.splat == GpuTuning::Splat::Tiled),
       // Records a chunk: 16 an invocation; tiles with more spread over
       // several workgroups. Tests make them small to put several in a tile.
-      chunk_(GLuint(fromEnvironment("SANDSTORM_SPLAT_CHUNK", 8192))),
+      chunk_(GLuint(tuning.splatChunk)),
       // Records the lists hold (0: two a particle of capacity); tests make it small.
-      listRecords_(fromEnvironment("SANDSTORM_SPLAT_LIST", 0)),
+      listRecords_(tuning.splatList),
       prepare_(std::vector<std::string>{"splat_prepare.comp"}),
       splat_(std::vector<std::string>{"particle_splat.comp"}),
       resolve_(std::vector<std::string>{"particle_splat_resolve.comp"}),

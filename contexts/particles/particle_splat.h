@@ -17,9 +17,9 @@
 //     workgroups. Views beyond 4K (8192 tiles) take the atomic path.
 //   atomic: one invocation a particle adds to the sums with global atomics
 //     (six a pixel): simple, and 6x slower on an H200 at 10^7 particles.
-// SANDSTORM_SPLAT=atomic picks the second (benchmark and tests);
-// SANDSTORM_SPLAT_CHUNK and SANDSTORM_SPLAT_LIST set the chunk size and the
-// records the lists hold (tests make both small). The result
+// [gpu] splat = "atomic" picks the second (GpuTuning; benchmark and tests);
+// splat_chunk and splat_list set the chunk size and the records the lists
+// hold (tests make both small). The result
 // matches blending "over" exactly in alpha and, where overlapping particles
 // share a colour, in colour (tests/contexts/particle_splat_test.cpp states the
 // image tolerance). Particles wider than 31 pixels are drawn 31 pixels wide:
@@ -35,6 +35,7 @@
 
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
+#include "core/config/gpu_tuning.h"
 
 namespace sandstorm {
 
@@ -43,7 +44,8 @@ class ViewTargets;
 
 class ParticleSplat {
  public:
-  ParticleSplat();
+  // `tuning`: tiled or atomic, the chunk and list sizes (GpuTuning).
+  explicit ParticleSplat(const GpuTuning& tuning = {});
   // Replaces the view's particle buffers with the splatted particles. `sprite`:
   // ParticleRender's puff texture.
   void draw(const ParticleBackend& particles, const ViewTargets& targets,

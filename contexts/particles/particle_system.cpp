@@ -10,10 +10,10 @@
 
 namespace sandstorm {
 
-std::unique_ptr<ParticleBackend> makeParticleBackend(const std::string& name,
-                                                     std::size_t capacity) {
+std::unique_ptr<ParticleBackend> makeParticleBackend(const std::string& name, std::size_t capacity,
+                                                     const GpuTuning& tuning) {
   if (name == "tf-gs") return std::make_unique<ParticleGeoUpdate>(capacity);
-  if (name == "compute") return std::make_unique<ParticleComputeUpdate>(capacity);
+  if (name == "compute") return std::make_unique<ParticleComputeUpdate>(capacity, tuning);
   throw Error(concat("unknown particle backend '", name, "'; expected tf-gs or compute"));
 }
 
@@ -23,7 +23,7 @@ namespace {
 std::unique_ptr<ParticleBackend> backendFor(const ParticleSystem::Options& o) {
   if (o.share && o.shareReader >= 0)
     return std::make_unique<SharedParticles>(o.share, o.shareReader);
-  std::unique_ptr<ParticleBackend> own = makeParticleBackend(o.backend, o.capacity);
+  std::unique_ptr<ParticleBackend> own = makeParticleBackend(o.backend, o.capacity, o.tuning);
   if (o.share) return std::make_unique<SharingBackend>(std::move(own), o.share);
   return own;
 }
@@ -33,7 +33,8 @@ std::unique_ptr<ParticleBackend> backendFor(const ParticleSystem::Options& o) {
 ParticleSystem::ParticleSystem(const ParticleState& initial, const Options& options)
     : state_(initial),
       capacityLimit_(std::max(options.capacity, options.capacityLimit)),
-      update_(backendFor(options)) {}
+      update_(backendFor(options)),
+      splat_(options.tuning) {}
 
 void ParticleSystem::endFrame() {
   update_->endFrame();

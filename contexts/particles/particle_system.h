@@ -14,6 +14,7 @@
 #include "contexts/particles/particle_render.h"
 #include "contexts/particles/particle_splat.h"
 #include "core/cave/view.h"
+#include "core/config/gpu_tuning.h"
 #include "core/sim/frame_packet.h"
 #include "core/sim/particle_state.h"
 
@@ -23,7 +24,8 @@ class SimulationShare;
 class ViewTargets;
 
 // The backend of that name ("tf-gs" or "compute"); throws Error for others.
-std::unique_ptr<ParticleBackend> makeParticleBackend(const std::string& name, std::size_t capacity);
+std::unique_ptr<ParticleBackend> makeParticleBackend(const std::string& name, std::size_t capacity,
+                                                     const GpuTuning& tuning = {});
 
 class ParticleSystem {
  public:
@@ -37,6 +39,7 @@ class ParticleSystem {
     // shareReader = k >= 0 draws the owner's particles as reader k.
     std::shared_ptr<SimulationShare> share;
     int shareReader = -1;
+    GpuTuning tuning;  // how the backend and the splats work ([gpu])
   };
 
   ParticleSystem(const ParticleState& initial, const Options& options);

@@ -14,7 +14,8 @@ WallRenderer::WallRenderer(const WallRendererSetup& s)
                                                  .capacityLimit = s.capacityLimit,
                                                  .backend = s.backend,
                                                  .share = s.share,
-                                                 .shareReader = s.shareReader}),
+                                                 .shareReader = s.shareReader,
+                                                 .tuning = s.tuning}),
       anaglyph_(std::vector<std::string>{"fullscreen.vert", "anaglyph.frag"}),
       emptyVao_(gl::createVertexArray()) {
   if (s.terrain) {

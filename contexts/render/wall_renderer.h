@@ -28,6 +28,7 @@ struct WallRendererSetup {
   std::string backend = "compute";
   std::shared_ptr<SimulationShare> share;  // one simulation per GPU (ParticleSystem::Options)
   int shareReader = -1;
+  GpuTuning tuning;
   float nearPlane = 0.05f;
   float farPlane = 500.0f;
 };

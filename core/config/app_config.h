@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "core/cave/wall.h"
+#include "core/config/gpu_tuning.h"
 #include "core/field/box.h"
 #include "core/field/field_placement.h"
 #include "core/sim/particle_state.h"
@@ -173,6 +174,7 @@ struct AppConfig {
   NavigationSpec navigation;
   TrackingSpec tracking;
   RunSpec run;
+  GpuTuning gpu;
   MenuSpec menu;
   ClusterSpec cluster;
   std::vector<WallSpec> walls;

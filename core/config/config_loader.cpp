@@ -188,6 +188,27 @@ void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
   run.statsWarmup = r.integer(t, "stats_warmup", "run", run.statsWarmup, 0, 100000000);
 }
 
+void readGpu(const Reader& r, const toml::value& t, GpuTuning& g) {
+  r.checkKeys(t, "gpu",
+              {"splat", "splat_chunk", "splat_list", "field_storage", "update_items", "scan_spin"});
+  g.splat = r.choice<GpuTuning::Splat>(
+      t, "splat", "gpu", g.splat,
+      {{"tiled", GpuTuning::Splat::Tiled}, {"atomic", GpuTuning::Splat::Atomic}});
+  g.splatChunk = std::size_t(r.integer(t, "splat_chunk", "gpu", int(g.splatChunk), 16, 1 << 20));
+  g.splatList = std::size_t(r.integer(t, "splat_list", "gpu", int(g.splatList), 0, 1 << 30));
+  g.fieldStorage = r.choice<GpuTuning::FieldStorage>(
+      t, "field_storage", "gpu", g.fieldStorage,
+      {{"auto", GpuTuning::FieldStorage::Auto}, {"texture", GpuTuning::FieldStorage::Texture}});
+  if (const toml::value* items = r.find(t, "update_items")) {
+    const int n = r.integer(t, "update_items", "gpu", 4, 1, 8);
+    if (n != 1 && n != 2 && n != 4 && n != 8)
+      r.fail(*items, "gpu.update_items", "expected 1, 2, 4 or 8");
+    g.updateItems = n;
+  }
+  if (r.find(t, "scan_spin"))
+    g.scanSpin = std::uint32_t(r.integer(t, "scan_spin", "gpu", 0, 0, 1 << 24));
+}
+
 glm::mat3 rotationFromDegrees(const glm::vec3& degrees) {
   const glm::vec3 a = glm::radians(degrees);
   const glm::mat3 x(1, 0, 0, 0, std::cos(a.x), std::sin(a.x), 0, -std::sin(a.x), std::cos(a.x));
@@ -525,10 +546,10 @@ AppConfig readWithIncludes(const toml::value& root, const std::string& file,
 void read(const toml::value& root, const std::string& file, std::optional<int> monitors,
           AppConfig& c, int depth) {
   const Reader r(file);
-  r.checkKeys(
-      root, "",
-      {"include", "run", "field", "scene", "sim", "render", "field_playback", "helicopter",
-       "emitter", "head", "navigation", "tracking", "menu", "cluster", "wall", "pvx", "pvx_up"});
+  r.checkKeys(root, "",
+              {"include", "run", "field", "scene", "sim", "render", "field_playback", "helicopter",
+               "emitter", "head", "navigation", "tracking", "menu", "cluster", "wall", "pvx",
+               "pvx_up", "gpu"});
   // include = "scene.toml": that file's settings first, this file's on top.
   if (const toml::value* include = r.find(root, "include")) {
     if (!include->is_string()) r.fail(*include, "include", "expected a file name");
@@ -545,6 +566,7 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
     return v;
   };
   if (const auto* t = section("run")) readRun(r, *t, c.run);
+  if (const auto* t = section("gpu")) readGpu(r, *t, c.gpu);
   if (const auto* t = section("field")) {
     readField(r, *t, c.field);
     // field.mode (texture | equation) is an attribute: the menu and --set change it too.

@@ -2,21 +2,14 @@
 
 #include <atomic>
 #include <cstdio>
-#include <cstdlib>
 #include <mutex>
 #include <string>
 
 namespace sandstorm::log {
 namespace {
 
-Level initialLevel() {
-  Level level = Level::Info;
-  if (const char* env = std::getenv("SANDSTORM_LOG")) parseLevel(env, level);
-  return level;
-}
-
 std::atomic<Level>& currentLevel() {
-  static std::atomic<Level> level{initialLevel()};
+  static std::atomic<Level> level{Level::Info};
   return level;
 }
 

@@ -1,7 +1,7 @@
 // Levelled logging to stderr. Thread-safe: each line is written whole.
 //   log::info("loaded ", n, " points from ", path);
-// The level comes from setLevel() or the SANDSTORM_LOG environment variable
-// (error, warn, info, debug); the default is info.
+// The level comes from setLevel() (sandstorm --log-level: error, warn, info,
+// debug); the default is info.
 #pragma once
 
 #include <sstream>

@@ -1,24 +1,19 @@
 // GpuField's choice of storage: the compute backend's storage buffer where the
 // grid fits this GPU's storage-buffer limit, a texture where it does not or
-// SANDSTORM_FIELD_STORAGE=texture says; particles moved through a grid kept
+// [gpu] field_storage = "texture" says; particles moved through a grid kept
 // either way match the CPU reference (particle_geo_update_test.cpp).
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdlib>
 
 #include "contexts/particles/gpu_field.h"
-#include "core/util/error.h"
 #include "tests/contexts/gl_test.h"
 
 namespace sandstorm {
 namespace {
 
-class GpuFieldTest : public GlTest {
- protected:
-  void TearDown() override { unsetenv("SANDSTORM_FIELD_STORAGE"); }
-};
+class GpuFieldTest : public GlTest {};
 
 VectorField grid(glm::ivec3 dims) {
   return VectorField(Box{{0, 0, 0}, {1, 1, 1}}, dims);
@@ -44,22 +39,6 @@ TEST_F(GpuFieldTest, AGridBeyondTheStorageBufferLimitIsKeptAsATexture) {
   EXPECT_EQ(field.storage(), GpuField::Storage::Texture);
   field.upload(grid({8, 8, 8}));  // and back when the next grid fits
   EXPECT_EQ(field.storage(), GpuField::Storage::Buffer);
-}
-
-TEST_F(GpuFieldTest, TheEnvironmentForcesTheTextureFallback) {
-  setenv("SANDSTORM_FIELD_STORAGE", "texture", 1);
-  GpuField field(GpuField::Storage::Buffer);
-  field.upload(grid({8, 8, 8}));
-  EXPECT_EQ(field.storage(), GpuField::Storage::Texture);
-  setenv("SANDSTORM_FIELD_STORAGE", "ssbo", 1);
-  try {
-    field.upload(grid({8, 8, 8}));
-    ADD_FAILURE() << "no error for an unknown storage";
-  } catch (const Error& e) {
-    EXPECT_NE(std::string(e.what()).find("SANDSTORM_FIELD_STORAGE: 'ssbo': expected texture"),
-              std::string::npos)
-        << e.what();
-  }
 }
 
 }  // namespace

@@ -42,10 +42,8 @@ std::shared_ptr<const VectorField> vortex() {
 
 // Runs `frames` updates of the compute backend with the given look-back spin
 // limit against the CPU; returns the frames whose records all matched bit for bit.
-int matchingFrames(const char* spin, int frames) {
-  setenv("SANDSTORM_SCAN_SPIN", spin, 1);
-  ParticleComputeUpdate gpu(16384);
-  unsetenv("SANDSTORM_SCAN_SPIN");
+int matchingFrames(std::uint32_t spin, int frames) {
+  ParticleComputeUpdate gpu(16384, GpuTuning{.scanSpin = spin});
   ReferenceSimulator cpu(16384);
   MainContext::Options options;
   options.fixedDt = 1.0f / 60.0f;
@@ -79,7 +77,7 @@ TEST_F(ParticleComputeTest, TheScanMatchesTheReferenceWhetherTilesWaitOrCountFor
   // 0: every tile counts its predecessors itself; larger: tiles wait for one
   // another more, as on a GPU (llvmpipe caps a shader's loop iterations in all,
   // so its waits stay short).
-  for (const char* spin : {"0", "3", "200"}) {
+  for (const std::uint32_t spin : {0u, 3u, 200u}) {
     SCOPED_TRACE(spin);
     EXPECT_EQ(matchingFrames(spin, 40), 40);
   }

@@ -68,13 +68,14 @@ struct Agreement {
   std::size_t peak = 0;
 };
 
-Agreement compare(const std::string& backend, Scenario s, int frames, std::size_t capacity) {
+Agreement compare(const std::string& backend, Scenario s, int frames, std::size_t capacity,
+                  const GpuTuning& tuning = {}) {
   MainContext::Options options;
   options.fixedDt = 1.0f / 60.0f;
   options.seed = 0xC0FFEEull;
   MainContext main(s.state, FieldUpdate{.field = s.field, .placement = s.placement}, options);
   if (s.timeline) main.setFieldTimeline(*s.timeline, s.placement);
-  std::unique_ptr<ParticleBackend> backendPtr = makeParticleBackend(backend, capacity);
+  std::unique_ptr<ParticleBackend> backendPtr = makeParticleBackend(backend, capacity, tuning);
   ParticleBackend& gpu = *backendPtr;
   EXPECT_STREQ(gpu.name(), backend.c_str());
   ReferenceSimulator cpu(capacity);
@@ -163,10 +164,9 @@ TEST_P(ParticleBackendTest, GridsKeptAsTexturesMoveParticlesTheSame) {
   // The compute backend's texture fallback for grids beyond the
   // storage-buffer limit (GpuField), forced; transform feedback keeps its
   // texture either way.
-  setenv("SANDSTORM_FIELD_STORAGE", "texture", 1);
-  const Agreement a = compare(
-      GetParam(), tornado(MotionModel::Tracer, Integrator::RK4, BoundaryMode::Clamp), 60, 16384);
-  unsetenv("SANDSTORM_FIELD_STORAGE");
+  const Agreement a =
+      compare(GetParam(), tornado(MotionModel::Tracer, Integrator::RK4, BoundaryMode::Clamp), 60,
+              16384, GpuTuning{.fieldStorage = GpuTuning::FieldStorage::Texture});
   EXPECT_EQ(a.frames, 60u);
   EXPECT_LT(a.maxError, 1e-4f);
   EXPECT_GT(a.peak, 4000u);
@@ -192,9 +192,9 @@ TEST_P(ParticleBackendTest, CellsOutsideTheDataAreOutsideTheFieldOnBothSides) {
           }
       masked->setValidity(valid);
       s.field = masked;
-      if (texture) setenv("SANDSTORM_FIELD_STORAGE", "texture", 1);
-      const Agreement a = compare(GetParam(), s, 60, 16384);
-      unsetenv("SANDSTORM_FIELD_STORAGE");
+      GpuTuning tuning;
+      if (texture) tuning.fieldStorage = GpuTuning::FieldStorage::Texture;
+      const Agreement a = compare(GetParam(), s, 60, 16384, tuning);
       EXPECT_EQ(a.frames, 60u);
       EXPECT_LT(a.maxError, 1e-4f);
       EXPECT_GT(a.peak, 2000u);

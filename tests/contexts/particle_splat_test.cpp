@@ -38,7 +38,8 @@ ParticleState cloud(RenderMode mode, float size, bool twoColours) {
   return s;
 }
 
-Image render(const ParticleState& state, const std::string& backend, int frames = 2) {
+Image render(const ParticleState& state, const std::string& backend, int frames = 2,
+             const GpuTuning& tuning = {}) {
   MainContext::Options options;
   options.fixedDt = 0.25f;
   options.seed = 3;
@@ -53,6 +54,7 @@ Image render(const ParticleState& state, const std::string& backend, int frames 
                         .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
                         .capacity = 4096,
                         .backend = backend,
+                        .tuning = tuning,
                         .nearPlane = 0.1f,
                         .farPlane = 100.0f});
   for (int f = 0; f < frames; ++f) {
@@ -125,25 +127,19 @@ TEST_P(ParticleSplatTest, SplatsLookLikeBillboardsForSmallParticles) {
 
 TEST_P(ParticleSplatTest, TiledAndAtomicSplatsAddTheSameSumsSoDrawTheSameImage) {
   const ParticleState state = cloud(RenderMode::Splat, 0.25f, true);
-  setenv("SANDSTORM_SPLAT", "atomic", 1);
-  const Image atomic = render(state, GetParam());
-  unsetenv("SANDSTORM_SPLAT");
+  const Image atomic = render(state, GetParam(), 2, GpuTuning{.splat = GpuTuning::Splat::Atomic});
   ParticleState none = state;
   none.emitters[0].rate = 0.0f;
   EXPECT_FALSE(atomic.rgba == render(none, GetParam()).rgba);
   // The tiled variant, as it runs; with chunks of 37 records (dense tiles
   // split over several workgroups, which add their sums with atomics); with
   // lists that hold 500 records (the scatter pass adds the rest); and both.
-  const std::vector<std::pair<const char*, const char*>> variants{
-      {nullptr, nullptr}, {"37", nullptr}, {nullptr, "500"}, {"37", "500"}};
+  const std::vector<std::pair<std::size_t, std::size_t>> variants{
+      {8192, 0}, {37, 0}, {8192, 500}, {37, 500}};
   for (const auto& [chunk, list] : variants) {
-    if (chunk) setenv("SANDSTORM_SPLAT_CHUNK", chunk, 1);
-    if (list) setenv("SANDSTORM_SPLAT_LIST", list, 1);
-    const Image tiled = render(state, GetParam());
-    unsetenv("SANDSTORM_SPLAT_CHUNK");
-    unsetenv("SANDSTORM_SPLAT_LIST");
-    EXPECT_TRUE(tiled.rgba == atomic.rgba)
-        << "chunk " << (chunk ? chunk : "default") << ", list " << (list ? list : "default");
+    const Image tiled =
+        render(state, GetParam(), 2, GpuTuning{.splatChunk = chunk, .splatList = list});
+    EXPECT_TRUE(tiled.rgba == atomic.rgba) << "chunk " << chunk << ", list " << list;
   }
 }
 
