@@ -113,8 +113,8 @@ int AppRun::execute() {
   else
     runOneProcess();
   channel_.close();
-  for (auto& w : walls_)
-    w->join();
+  for (auto& c : contexts_)
+    c->join();
   std::signal(SIGINT, SIG_DFL);
   std::signal(SIGTERM, SIG_DFL);
   return finish();
@@ -152,6 +152,10 @@ void AppRun::openWalls() {
     for (ShareGroup* g : {&windowGroup, &offscreenGroup})
       if (g->readers-- > 0) g->share = std::make_shared<SimulationShare>(g->readers);
   }
+  // Offscreen walls draw from one context (run.offscreen_contexts = "one"):
+  // contexts on one GPU take turns on it, at a cost far above their work.
+  const bool oneOffscreenContext = config_.run.offscreenContexts == RunSpec::OffscreenContexts::One;
+  RenderContext* offscreen = nullptr;
   for (int i = 0; i < wallCount; ++i) {
     const WallSpec& spec = config_.walls[std::size_t(i)];
     ShareGroup& group = spec.window ? windowGroup : offscreenGroup;
@@ -164,20 +168,24 @@ void AppRun::openWalls() {
       windows_.push_back(window.get());
       wallWindows_[std::size_t(i)] = window.get();
       context = std::move(window);
-    } else {
+    } else if (!offscreen || !oneOffscreenContext) {
       context = std::make_unique<EglContext>(
           EglContext::Options{.share = static_cast<const EglContext*>(group.owner)});
     }
+    const GlContext* drawsWith = context ? context.get() : &offscreen->glContext();
     // The group's first wall simulates; the others read (reader numbers 0, 1, ...).
     int shareReader = -1;
     if (group.share) {
       if (group.owner)
         shareReader = group.readers++;
       else
-        group.owner = context.get(), group.readers = 0;
+        group.owner = drawsWith, group.readers = 0;
     }
     if (spec.menu) menuWall_ = i;
-    log::info("wall '", spec.name, "': ", context->description());
+    log::info("wall '", spec.name, "': ", drawsWith->description(),
+              context
+                  ? std::string()
+                  : concat(" (the context of wall '", offscreen->walls().front()->name(), "')"));
     WallRendererSetup setup{.wall = spec,
                             .initial = main_.initialState(),
                             .terrain = terrain_,
@@ -189,9 +197,15 @@ void AppRun::openWalls() {
                             .tuning = config_.gpu,
                             .nearPlane = config_.run.nearPlane,
                             .farPlane = config_.run.farPlane};
-    walls_.push_back(
-        std::make_unique<RenderContext>(std::move(context), setup, channel_, i, barrier_));
+    walls_.push_back(std::make_unique<RenderWall>(setup, i));
     walls_.back()->sampleFrom(std::uint32_t(config_.run.statsWarmup));
+    if (context) {
+      contexts_.push_back(std::make_unique<RenderContext>(
+          std::move(context), std::vector<RenderWall*>{walls_.back().get()}, channel_, barrier_));
+      if (!spec.window) offscreen = contexts_.back().get();
+    } else {
+      offscreen->addWall(walls_.back().get());
+    }
   }
 }
 
@@ -242,8 +256,9 @@ void AppRun::hookWalls() {
       if (cluster_)
         cluster_->drawn(int(i), packet.frame);  // the main thread holds the swap for every rank
     });
-    walls_[i]->start();
   }
+  for (auto& c : contexts_)
+    c->start();
 }
 
 void AppRun::loadField(const std::string& choice) {

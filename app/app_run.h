@@ -80,7 +80,8 @@ class AppRun {
   int menuWall_ = -1;
   std::unique_ptr<DesktopInput> input_;
   std::unique_ptr<MenuHost> menu_;
-  std::vector<std::unique_ptr<RenderContext>> walls_;
+  std::vector<std::unique_ptr<RenderWall>> walls_;        // one a wall, by index
+  std::vector<std::unique_ptr<RenderContext>> contexts_;  // after walls_: joined first
   HashLog hashes_;
 
   int frames_ = 0;

@@ -1,21 +1,19 @@
 #include "contexts/render/render_context.h"
 
-#include <epoxy/gl.h>
-
 #include <chrono>
+#include <optional>
 
 #include "contexts/particles/simulation_share.h"
+#include "core/util/error.h"
 #include "core/util/log.h"
 
 namespace sandstorm {
 
-RenderContext::RenderContext(std::unique_ptr<GlContext> context, WallRendererSetup setup,
-                             FrameChannel& channel, int consumer, SwapBarrier& barrier)
-    : context_(std::move(context)),
-      setup_(std::move(setup)),
-      channel_(channel),
-      consumer_(consumer),
-      barrier_(barrier) {}
+RenderContext::RenderContext(std::unique_ptr<GlContext> context, std::vector<RenderWall*> walls,
+                             FrameChannel& channel, SwapBarrier& barrier)
+    : context_(std::move(context)), walls_(std::move(walls)), channel_(channel), barrier_(barrier) {
+  if (walls_.empty()) throw Error("RenderContext: no wall to draw");
+}
 
 RenderContext::~RenderContext() {
   join();
@@ -29,100 +27,60 @@ void RenderContext::join() {
   if (thread_.joinable()) thread_.join();
 }
 
-std::optional<std::string> RenderContext::error() const {
-  std::lock_guard lock(mutex_);
-  return error_;
-}
-
-std::vector<WallFrameSample> RenderContext::samples() const {
-  std::lock_guard lock(mutex_);
-  return samples_;
-}
-
-WallStats RenderContext::stats() const {
-  std::lock_guard lock(mutex_);
-  return stats_;
-}
-
 void RenderContext::run() {
+  using Clock = std::chrono::steady_clock;
+  const auto ms = [](Clock::duration d) {
+    return std::chrono::duration<double, std::milli>(d).count();
+  };
+  const auto arrivals = std::ptrdiff_t(walls_.size());
   try {
     context_->makeCurrent();
-    std::unique_ptr<WallRenderer> renderer = std::make_unique<WallRenderer>(setup_);
-    log::debug("wall '", name(), "': ", context_->description());
+    for (RenderWall* wall : walls_)
+      wall->open();
+    log::debug("context of wall '", walls_.front()->name(), "': ", context_->description());
     // Wall-clock time on this thread is for the statistics only; the
     // simulation's time comes from the packets.
-    std::optional<std::chrono::steady_clock::time_point> lastSwap;
-    auto waiting = std::chrono::steady_clock::now();
-    while (std::shared_ptr<const FramePacket> packet = channel_.take(consumer_)) {
-      const auto start = std::chrono::steady_clock::now();
-      const double packetWait = std::chrono::duration<double, std::milli>(start - waiting).count();
-      renderer->frame(*packet, context_->framebufferSize());
-      if (overlay_)
-        if (const std::shared_ptr<const UiDrawData> menu = overlay_())
-          renderer->drawOverlay(*menu, font_);
-      if (hook_) hook_(*renderer, *packet);
-      renderer->endFrame();
-      // Read once a frame: a client-side query, no wait for the GPU.
-      std::uint64_t errors = 0;
-      for (GLenum e = glGetError(); e != GL_NO_ERROR && errors < 16; e = glGetError()) {
-        if (stats_.glErrors + errors == 0)
-          log::warn("wall '", name(), "': GL error 0x", std::hex, e, std::dec, " at frame ",
-                    packet->frame, " (further ones are counted in the stats)");
-        ++errors;
-      }
-      // A count a frame or two old: waiting for this frame's would drain the GPU every frame.
-      const std::size_t live = renderer->particles().update().lateCount();
-      const double ms =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-              .count();
-      const std::optional<gl::FrameStageTimer::Times> gpu = renderer->stageTimes();
-      const auto drawn = std::chrono::steady_clock::now();
-      barrier_
-          .arrive_and_wait();  // the swap barrier: nobody presents frame f before all have drawn it
-      const double barrierWait =
-          std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - drawn)
-              .count();
+    std::optional<Clock::time_point> lastSwap;
+    auto waiting = Clock::now();
+    std::vector<RenderWall::Drawn> drawn(walls_.size());
+    for (;;) {
+      // Every wall takes the same packet (the first take waits for it).
+      std::shared_ptr<const FramePacket> packet;
+      for (RenderWall* wall : walls_)
+        packet = channel_.take(wall->consumer());
+      if (!packet) break;
+      const double packetWait = ms(Clock::now() - waiting);
+      for (std::size_t i = 0; i < walls_.size(); ++i)
+        drawn[i] = walls_[i]->draw(*packet, context_->framebufferSize());
+      const auto done = Clock::now();
+      // The swap barrier: nobody presents frame f before all have drawn it.
+      barrier_.wait(barrier_.arrive(arrivals));
+      const double barrierWait = ms(Clock::now() - done);
       context_->swapBuffers();
-      const auto swapped = std::chrono::steady_clock::now();
+      const auto swapped = Clock::now();
       waiting = swapped;
-      const double interval =
-          lastSwap ? std::chrono::duration<double>(swapped - *lastSwap).count() : 0.0;
+      const double interval = lastSwap ? ms(swapped - *lastSwap) : 0.0;
       lastSwap = swapped;
-      std::lock_guard lock(mutex_);
-      stats_.capacity = renderer->particles().update().capacity();
-      if (gpu) {
-        stats_.updateMs = (*gpu)[gl::FrameStageTimer::Update];
-        stats_.sceneMs = (*gpu)[gl::FrameStageTimer::Scene];
-        stats_.renderMs = (*gpu)[gl::FrameStageTimer::Particles];
-        stats_.postMs = (*gpu)[gl::FrameStageTimer::Post];
-      }
-      if (packet->fieldUpdate) {
-        stats_.fieldUploadMs = renderer->particles().update().lastFieldUploadMs();
-        ++stats_.fieldUploads;
-      }
-      stats_.frame = packet->frame;
-      stats_.frameMs = ms;
-      if (interval > 0.0)
-        stats_.fps = stats_.fps > 0.0 ? 0.9 * stats_.fps + 0.1 / interval : 1.0 / interval;
-      stats_.liveParticles = live;
-      stats_.glErrors += errors;
-      renderer_ = renderer->renderer();
-      if (packet->frame >= warmup_)
-        samples_.push_back({interval * 1e3, ms, barrierWait, packetWait, gpu, live});
+      for (std::size_t i = 0; i < walls_.size(); ++i)
+        walls_[i]->record(*packet, drawn[i], interval, barrierWait, packetWait);
     }
-    renderer.reset();  // GL objects go with their own context current
+    for (RenderWall* wall : walls_)
+      wall->close();
     context_->releaseCurrent();
   } catch (const std::exception& e) {
-    {
-      std::lock_guard lock(mutex_);
-      error_ = "wall '" + name() + "': " + e.what();
+    for (RenderWall* wall : walls_)
+      wall->fail("wall '" + wall->name() + "': " + e.what());
+    log::error(*walls_.front()->error());
+    for (std::ptrdiff_t i = 0; i < arrivals; ++i)
+      barrier_.arrive_and_drop();
+    for (RenderWall* wall : walls_) {
+      channel_.leave(wall->consumer());
+      // Walls drawing a shared simulation must not wait for it.
+      if (wall->setup().share) wall->setup().share->abandon();
     }
-    log::error(*error_);
-    barrier_.arrive_and_drop();
-    channel_.leave(consumer_);
-    if (setup_.share)
-      setup_.share->abandon();  // walls drawing a shared simulation must not wait for it
     try {
+      for (RenderWall* wall : walls_)
+        wall->close();
       context_->releaseCurrent();
     } catch (...) {
     }

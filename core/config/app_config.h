@@ -137,6 +137,10 @@ struct RunSpec {
   float nearPlane = 0.05f;
   float farPlane = 500.0f;
   int statsWarmup = 60;  // frames left out of the run statistics (start-up, filling)
+  // Offscreen walls: one GL context (and thread) draws them all, or one each.
+  // Contexts on one GPU take turns on it: one is much faster (docs/PERFORMANCE.md).
+  enum class OffscreenContexts { One, PerWall };
+  OffscreenContexts offscreenContexts = OffscreenContexts::One;
 };
 
 // Cluster mode (mpirun, app/cluster/): how rank 0 feeds the other ranks.

@@ -160,7 +160,7 @@ void setAttributes(const Reader& r, const toml::value& table, const std::string&
 void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
   r.checkKeys(t, "run",
               {"seed", "capacity", "capacity_limit", "fixed_dt", "frames", "backend",
-               "shared_simulation", "near", "far", "stats_warmup"});
+               "shared_simulation", "near", "far", "stats_warmup", "offscreen_contexts"});
   if (const toml::value* seed = r.find(t, "seed")) {
     if (!seed->is_integer() || seed->as_integer() < 0)
       r.fail(*seed, "run.seed", "expected a non-negative integer");
@@ -186,6 +186,10 @@ void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
   if (!(run.nearPlane > 0.0f) || !(run.farPlane > run.nearPlane))
     r.fail(t, "run.near/far", "expected 0 < near < far");
   run.statsWarmup = r.integer(t, "stats_warmup", "run", run.statsWarmup, 0, 100000000);
+  run.offscreenContexts =
+      r.choice<RunSpec::OffscreenContexts>(t, "offscreen_contexts", "run", run.offscreenContexts,
+                                           {{"one", RunSpec::OffscreenContexts::One},
+                                            {"per-wall", RunSpec::OffscreenContexts::PerWall}});
 }
 
 void readGpu(const Reader& r, const toml::value& t, GpuTuning& g) {

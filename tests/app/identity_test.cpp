@@ -1,7 +1,8 @@
 // Split first, proven: four walls, each with its own GL context on its own
 // thread, hold bitwise identical particle buffers at every one of 200 frames
 // (emission, death and mid-run changes included); so do four processes with
-// one wall each; and a recorded session replays to the same particles.
+// one wall each, and four walls drawn in turn from one context; and a recorded
+// session replays to the same particles.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -105,6 +106,33 @@ TEST(Identity, OneSimulationPerGpuMatchesOnePerWall) {
     };
     EXPECT_EQ(read(dir / "own" / (std::string(wall) + ".png")),
               read(dir / "shared" / (std::string(wall) + ".png")))
+        << wall << ": the images differ";
+  }
+}
+
+TEST(Identity, WallsDrawnFromOneContextMatchWallsOnTheirOwnThreads) {
+  // run.offscreen_contexts = "one": one thread draws the four walls in turn.
+  const auto dir = test::scratchDir("one-context");
+  const std::string args = " --replay tests/data/midrun.session --frames 120 --hash-log ";
+  const auto threads =
+      runSandstorm("--config tests/data/identity-shared.toml" + args +
+                   (dir / "threads.txt").string() + " --screenshot " + (dir / "threads").string());
+  const auto one =
+      runSandstorm("--config tests/data/identity-one-context.toml" + args +
+                   (dir / "one.txt").string() + " --screenshot " + (dir / "one").string());
+  ASSERT_EQ(threads.exitCode, 0) << threads.output;
+  ASSERT_EQ(one.exitCode, 0) << one.output;
+  EXPECT_NE(one.output.find("(the context of wall 'front')"), std::string::npos) << one.output;
+  EXPECT_EQ(threads.output.find("(the context of wall"), std::string::npos) << threads.output;
+  const std::vector<HashLine> a = readHashes(dir / "threads.txt"), b = readHashes(dir / "one.txt");
+  ASSERT_EQ(a.size(), 4u * 120u);
+  ASSERT_EQ(a.size(), b.size());
+  for (std::size_t i = 0; i < a.size(); ++i)
+    EXPECT_EQ(a[i].hash, b[i].hash) << a[i].wall << " frame " << a[i].frame;
+  for (const char* wall : {"front", "left", "right", "floor"}) {
+    const std::string image = test::readBytes(dir / "threads" / (std::string(wall) + ".png"));
+    EXPECT_FALSE(image.empty()) << wall;
+    EXPECT_EQ(image, test::readBytes(dir / "one" / (std::string(wall) + ".png")))
         << wall << ": the images differ";
   }
 }

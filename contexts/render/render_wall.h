@@ -1,0 +1,104 @@
+// RenderWall: one wall as a RenderContext draws it: its WallRenderer (made and
+// released on the context's thread), the hooks and the menu drawn over it, and
+// its statistics, which other threads read. The app keeps one per wall; the
+// RenderContext whose GL context the wall lives in draws it each frame.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "contexts/render/wall_renderer.h"
+#include "core/sim/frame_packet.h"
+
+namespace sandstorm {
+
+struct WallStats {
+  std::uint32_t frame = 0;
+  double frameMs = 0.0;  // CPU time of this wall's part of the last frame
+  double fps = 0.0;      // smoothed
+  std::size_t liveParticles = 0;
+  std::size_t capacity = 0;
+  // GPU time per stage, all views of a frame (a few frames old); render: the particles.
+  double updateMs = 0.0, sceneMs = 0.0, renderMs = 0.0, postMs = 0.0;
+  double fieldUploadMs = 0.0;  // CPU time of the last field upload to this wall's GPU
+  int fieldUploads = 0;        // how many field grids this wall has received
+  std::uint64_t glErrors = 0;  // GL errors raised by this wall's frames (glGetError once a frame)
+};
+
+// One frame of one wall, as measured on its thread: what the run statistics
+// (app/run_stats.h) are made of.
+struct WallFrameSample {
+  double intervalMs = 0.0;                        // present to present
+  double cpuMs = 0.0;                             // this wall's part of its thread's work
+  double waitMs = 0.0;                            // at the swap barrier, for the other walls
+  double packetWaitMs = 0.0;                      // for the main context's packet
+  std::optional<gl::FrameStageTimer::Times> gpu;  // a few frames old
+  std::size_t live = 0;
+};
+
+class RenderWall {
+ public:
+  // Called on the drawing thread after each frame of this wall is drawn,
+  // before the swap barrier: screenshots, particle dumps, test probes.
+  using FrameHook = std::function<void(WallRenderer&, const FramePacket&)>;
+  // The menu to draw over this wall each frame (latest wins); null: none.
+  using OverlaySource = std::function<std::shared_ptr<const UiDrawData>()>;
+
+  // `consumer`: this wall's place in the FrameChannel.
+  RenderWall(WallRendererSetup setup, int consumer);
+  ~RenderWall();
+  RenderWall(const RenderWall&) = delete;
+  RenderWall& operator=(const RenderWall&) = delete;
+
+  // Before the drawing thread starts.
+  void setFrameHook(FrameHook hook) { hook_ = std::move(hook); }
+  void setOverlay(OverlaySource source, UiFont font) {
+    overlay_ = std::move(source);
+    font_ = std::move(font);
+  }
+  // Every frame from `warmup` on (after the thread ends: the whole run).
+  void sampleFrom(std::uint32_t warmup) { warmup_ = warmup; }
+
+  const std::string& name() const { return setup_.wall.name; }
+  int consumer() const { return consumer_; }
+  const WallRendererSetup& setup() const { return setup_; }
+  std::optional<std::string> error() const;
+  WallStats stats() const;
+  std::vector<WallFrameSample> samples() const;
+  const char* renderer() const;
+
+  // The drawing thread's side (RenderContext), with the wall's GL context current.
+  struct Drawn {
+    double cpuMs = 0.0;
+    std::uint64_t glErrors = 0;
+    std::size_t live = 0;
+    std::optional<gl::FrameStageTimer::Times> gpu;
+  };
+  void open();
+  Drawn draw(const FramePacket& packet, glm::ivec2 framebufferSize);
+  void record(const FramePacket& packet, const Drawn& drawn, double intervalMs, double waitMs,
+              double packetWaitMs);
+  void fail(const std::string& message);
+  void close();
+
+ private:
+  WallRendererSetup setup_;
+  int consumer_;
+  FrameHook hook_;
+  OverlaySource overlay_;
+  UiFont font_;
+  std::unique_ptr<WallRenderer> renderer_;  // on the drawing thread only
+  mutable std::mutex mutex_;
+  std::optional<std::string> error_;
+  WallStats stats_;
+  std::uint32_t warmup_ = 0xffffffffu;  // no samples unless asked
+  std::vector<WallFrameSample> samples_;
+  const char* rendererName_ = "";
+};
+
+}  // namespace sandstorm
