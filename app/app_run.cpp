@@ -454,7 +454,8 @@ int AppRun::finish() {
   }
   std::vector<WallRunStats> measured;
   for (const auto& w : walls_)
-    measured.push_back(summarize(w->name(), w->renderer(), w->samples()));
+    measured.push_back(summarize(w->name(), w->renderer(), w->samples(), w->measuredFrames(),
+                                 w->stats().liveParticles));
   const RunStats stats = summarize(std::size_t(config_.run.statsWarmup), std::move(measured));
   logRunStats(stats);
   if (options_.stats) {

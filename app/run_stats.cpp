@@ -19,11 +19,12 @@ double quantile(std::vector<double> v, double q) {
 }  // namespace
 
 WallRunStats summarize(const std::string& name, const std::string& renderer,
-                       const std::vector<WallFrameSample>& samples) {
+                       const std::vector<WallFrameSample>& samples, std::size_t frames,
+                       std::size_t live) {
   WallRunStats w;
   w.name = name;
   w.renderer = renderer;
-  w.frames = samples.size();
+  w.frames = frames;
   std::vector<double> interval, cpu, barrier, packet, stage[4], total;
   for (const WallFrameSample& s : samples) {
     if (s.intervalMs > 0.0) interval.push_back(s.intervalMs);
@@ -49,7 +50,7 @@ WallRunStats summarize(const std::string& name, const std::string& renderer,
   w.gpuMs = quantile(total, 0.5);
   w.barrierWaitMs = quantile(barrier, 0.5);
   w.packetWaitMs = quantile(packet, 0.5);
-  w.live = samples.empty() ? 0 : samples.back().live;
+  w.live = live;
   return w;
 }
 

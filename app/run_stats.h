@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "contexts/render/render_context.h"
+#include "contexts/render/render_wall.h"
 
 namespace sandstorm {
 
@@ -20,9 +20,9 @@ struct WallRunStats {
   std::string renderer;
   std::size_t frames = 0;
   double frameMs = 0.0, frameP95Ms = 0.0;  // present to present
-  double cpuMs = 0.0;                       // this wall's thread, its own work
+  double cpuMs = 0.0;                      // this wall's thread, its own work
   double updateMs = 0.0, sceneMs = 0.0, particlesMs = 0.0, postMs = 0.0;  // GPU, medians
-  double gpuMs = 0.0;                       // median of their per-frame sum
+  double gpuMs = 0.0;  // median of their per-frame sum
   double barrierWaitMs = 0.0, packetWaitMs = 0.0;
   std::size_t live = 0;
 };
@@ -34,8 +34,12 @@ struct RunStats {
   std::vector<WallRunStats> walls;
 };
 
+// `samples`: every measured frame, or a uniform sample of them in a long run
+// (RenderWall keeps at most 65536); `frames`: how many were measured; `live`:
+// the particles at the end.
 WallRunStats summarize(const std::string& name, const std::string& renderer,
-                       const std::vector<WallFrameSample>& samples);
+                       const std::vector<WallFrameSample>& samples, std::size_t frames,
+                       std::size_t live);
 RunStats summarize(std::size_t warmup, std::vector<WallRunStats> walls);
 
 void logRunStats(const RunStats& stats);

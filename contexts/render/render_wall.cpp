@@ -25,7 +25,12 @@ WallStats RenderWall::stats() const {
 
 std::vector<WallFrameSample> RenderWall::samples() const {
   std::lock_guard lock(mutex_);
-  return samples_;
+  return samples_.values();
+}
+
+std::size_t RenderWall::measuredFrames() const {
+  std::lock_guard lock(mutex_);
+  return std::size_t(samples_.seen());
 }
 
 const char* RenderWall::renderer() const {
@@ -83,7 +88,7 @@ void RenderWall::record(const FramePacket& packet, const Drawn& drawn, double in
   stats_.glErrors += drawn.glErrors;
   rendererName_ = renderer_->renderer();
   if (packet.frame >= warmup_)
-    samples_.push_back({intervalMs, drawn.cpuMs, waitMs, packetWaitMs, drawn.gpu, drawn.live});
+    samples_.offer({intervalMs, drawn.cpuMs, waitMs, packetWaitMs, drawn.gpu, drawn.live});
 }
 
 void RenderWall::fail(const std::string& message) {

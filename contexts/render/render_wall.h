@@ -14,6 +14,7 @@
 
 #include "contexts/render/wall_renderer.h"
 #include "core/sim/frame_packet.h"
+#include "core/util/reservoir.h"
 
 namespace sandstorm {
 
@@ -61,7 +62,9 @@ class RenderWall {
     overlay_ = std::move(source);
     font_ = std::move(font);
   }
-  // Every frame from `warmup` on (after the thread ends: the whole run).
+  // Every frame from `warmup` on (after the thread ends: the whole run); past
+  // kMaxSamples frames, a uniform sample of them (bounded memory in long runs).
+  static constexpr std::size_t kMaxSamples = 65536;
   void sampleFrom(std::uint32_t warmup) { warmup_ = warmup; }
 
   const std::string& name() const { return setup_.wall.name; }
@@ -70,6 +73,7 @@ class RenderWall {
   std::optional<std::string> error() const;
   WallStats stats() const;
   std::vector<WallFrameSample> samples() const;
+  std::size_t measuredFrames() const;
   const char* renderer() const;
 
   // The drawing thread's side (RenderContext), with the wall's GL context current.
@@ -97,7 +101,7 @@ class RenderWall {
   std::optional<std::string> error_;
   WallStats stats_;
   std::uint32_t warmup_ = 0xffffffffu;  // no samples unless asked
-  std::vector<WallFrameSample> samples_;
+  Reservoir<WallFrameSample> samples_{kMaxSamples};
   const char* rendererName_ = "";
 };
 
