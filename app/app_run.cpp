@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <csignal>
+#include <map>
 
 #include "app/cluster/cluster_link.h"
 #include "app/run_stats.h"
@@ -135,30 +136,48 @@ void AppRun::openWindowLibrary() {
   }
 }
 
+// The GPU each wall draws on: -1 for windows (their display's), else the
+// wall's `gpu`, or run.gpus's choice.
+std::vector<int> AppRun::wallGpus() const {
+  std::vector<int> gpus;
+  int offscreen = 0;
+  const int available = config_.run.gpusRoundRobin ? EglContext::deviceCount() : 1;
+  for (const WallSpec& w : config_.walls) {
+    if (w.window)
+      gpus.push_back(-1);
+    else
+      gpus.push_back(w.gpu.value_or(offscreen % available));
+    offscreen += w.window ? 0 : 1;
+  }
+  return gpus;
+}
+
 void AppRun::openWalls() {
   const int wallCount = int(config_.walls.size());
   wallWindows_.assign(std::size_t(wallCount), nullptr);
-  // One simulation per GPU: windows share objects with the first window, offscreen
-  // walls with the first offscreen wall (GLX and EGL contexts cannot share).
+  const std::vector<int> gpus = wallGpus();
+  // One simulation per GPU: windows share objects with the first window, the
+  // offscreen walls of a GPU with its first offscreen wall (GLX and EGL
+  // contexts cannot share, nor can two GPUs).
   struct ShareGroup {
     const GlContext* owner = nullptr;
     std::shared_ptr<SimulationShare> share;
     int readers = 0;
+    RenderContext* offscreen = nullptr;  // the context drawing this GPU's offscreen walls
   };
-  ShareGroup windowGroup, offscreenGroup;
-  if (config_.run.sharedSimulation) {
-    for (const WallSpec& w : config_.walls)
-      ++(w.window ? windowGroup : offscreenGroup).readers;
-    for (ShareGroup* g : {&windowGroup, &offscreenGroup})
-      if (g->readers-- > 0) g->share = std::make_shared<SimulationShare>(g->readers);
-  }
-  // Offscreen walls draw from one context (run.offscreen_contexts = "one"):
+  std::map<int, ShareGroup> groups;  // by GPU, -1: windows
+  for (int gpu : gpus)
+    ++groups[gpu].readers;
+  for (auto& [gpu, g] : groups)
+    if (g.readers-- > 0 && config_.run.sharedSimulation)
+      g.share = std::make_shared<SimulationShare>(g.readers);
+  // Offscreen walls draw from one context a GPU (run.offscreen_contexts = "one"):
   // contexts on one GPU take turns on it, at a cost far above their work.
   const bool oneOffscreenContext = config_.run.offscreenContexts == RunSpec::OffscreenContexts::One;
-  RenderContext* offscreen = nullptr;
   for (int i = 0; i < wallCount; ++i) {
     const WallSpec& spec = config_.walls[std::size_t(i)];
-    ShareGroup& group = spec.window ? windowGroup : offscreenGroup;
+    const int gpu = gpus[std::size_t(i)];
+    ShareGroup& group = groups[gpu];
     std::unique_ptr<GlContext> context;
     if (spec.window) {
       GlfwWindow::Options o = windowOptions("Sandstorm: " + spec.name, *spec.window);
@@ -168,11 +187,16 @@ void AppRun::openWalls() {
       windows_.push_back(window.get());
       wallWindows_[std::size_t(i)] = window.get();
       context = std::move(window);
-    } else if (!offscreen || !oneOffscreenContext) {
-      context = std::make_unique<EglContext>(
-          EglContext::Options{.share = static_cast<const EglContext*>(group.owner)});
+    } else if (!group.offscreen || !oneOffscreenContext) {
+      try {
+        context = std::make_unique<EglContext>(EglContext::Options{
+            .share = static_cast<const EglContext*>(group.owner), .device = gpu});
+      } catch (const Error& e) {
+        throw Error(concat(config_.path.string(), ":", spec.line, ": wall '", spec.name,
+                           "' on GPU ", gpu, ": ", e.what()));
+      }
     }
-    const GlContext* drawsWith = context ? context.get() : &offscreen->glContext();
+    const GlContext* drawsWith = context ? context.get() : &group.offscreen->glContext();
     // The group's first wall simulates; the others read (reader numbers 0, 1, ...).
     int shareReader = -1;
     if (group.share) {
@@ -183,9 +207,9 @@ void AppRun::openWalls() {
     }
     if (spec.menu) menuWall_ = i;
     log::info("wall '", spec.name, "': ", drawsWith->description(),
-              context
-                  ? std::string()
-                  : concat(" (the context of wall '", offscreen->walls().front()->name(), "')"));
+              context ? std::string()
+                      : concat(" (the context of wall '", group.offscreen->walls().front()->name(),
+                               "')"));
     WallRendererSetup setup{.wall = spec,
                             .initial = main_.initialState(),
                             .terrain = terrain_,
@@ -202,9 +226,9 @@ void AppRun::openWalls() {
     if (context) {
       contexts_.push_back(std::make_unique<RenderContext>(
           std::move(context), std::vector<RenderWall*>{walls_.back().get()}, channel_, barrier_));
-      if (!spec.window) offscreen = contexts_.back().get();
+      if (!spec.window) group.offscreen = contexts_.back().get();
     } else {
-      offscreen->addWall(walls_.back().get());
+      group.offscreen->addWall(walls_.back().get());
     }
   }
 }

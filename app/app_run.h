@@ -40,6 +40,7 @@ class AppRun {
   using Clock = std::chrono::steady_clock;
 
   void openWindowLibrary();
+  std::vector<int> wallGpus() const;
   void openWalls();
   void openMenu();
   void hookWalls();

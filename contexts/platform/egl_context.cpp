@@ -23,7 +23,8 @@ bool hasExtension(const char* list, const char* name) {
   return all.find(std::string(" ") + name + " ") != std::string::npos;
 }
 
-Display tryDevicePlatform(const char* clientExtensions) {
+// Every device offering desktop OpenGL with surfaceless contexts, in EGL's order.
+std::vector<Display> tryDevicePlatform(const char* clientExtensions) {
   if (!hasExtension(clientExtensions, "EGL_EXT_platform_device") ||
       !hasExtension(clientExtensions, "EGL_EXT_device_enumeration"))
     return {};
@@ -31,19 +32,21 @@ Display tryDevicePlatform(const char* clientExtensions) {
   eglQueryDevicesEXT(0, nullptr, &count);
   std::vector<EGLDeviceEXT> devices(std::size_t(std::max(count, 0)));
   eglQueryDevicesEXT(count, devices.data(), &count);
+  std::vector<Display> usable;
   for (EGLint i = 0; i < count; ++i) {
     EGLDisplay d =
         eglGetPlatformDisplayEXT(EGL_PLATFORM_DEVICE_EXT, devices[std::size_t(i)], nullptr);
     EGLint major = 0, minor = 0;
     if (d != EGL_NO_DISPLAY && eglInitialize(d, &major, &minor)) {
-      // A display must offer desktop OpenGL with surfaceless contexts to be of use.
       const char* ext = eglQueryString(d, EGL_EXTENSIONS);
-      if (hasExtension(ext, "EGL_KHR_surfaceless_context") && eglBindAPI(EGL_OPENGL_API))
-        return {d, concat("EGL device platform, device ", i)};
+      if (hasExtension(ext, "EGL_KHR_surfaceless_context") && eglBindAPI(EGL_OPENGL_API)) {
+        usable.push_back({d, concat("EGL device platform, device ", usable.size())});
+        continue;
+      }
       eglTerminate(d);
     }
   }
-  return {};
+  return usable;
 }
 
 Display trySurfaceless(const char* clientExtensions) {
@@ -55,27 +58,43 @@ Display trySurfaceless(const char* clientExtensions) {
   return {d, "EGL Mesa surfaceless platform"};
 }
 
-const Display& display() {
+// The displays, found once per process: a display per GPU on the EGL device
+// platform, else Mesa's surfaceless platform (one display: llvmpipe).
+const std::vector<Display>& displays() {
   static std::once_flag once;
-  static Display chosen;
+  static std::vector<Display> chosen;
   static std::string failure;
   std::call_once(once, [] {
     const char* client = eglQueryString(EGL_NO_DISPLAY, EGL_EXTENSIONS);
     chosen = tryDevicePlatform(client);
-    if (chosen.display == EGL_NO_DISPLAY) chosen = trySurfaceless(client);
-    if (chosen.display == EGL_NO_DISPLAY)
+    if (chosen.empty())
+      if (Display d = trySurfaceless(client); d.display != EGL_NO_DISPLAY) chosen.push_back(d);
+    if (chosen.empty())
       failure = concat("EglContext: no usable EGL display. Tried EGL_EXT_platform_device and ",
                        "EGL_MESA_platform_surfaceless; client extensions: ",
                        client ? client : "(none: is libEGL installed?)");
   });
-  if (chosen.display == EGL_NO_DISPLAY) throw Error(failure);
+  if (chosen.empty()) throw Error(failure);
   return chosen;
 }
 
 }  // namespace
 
-EglContext::EglContext(const Options& options) {
-  const Display& d = display();
+int EglContext::deviceCount() {
+  return int(displays().size());
+}
+
+EglContext::EglContext(const Options& options) : device_(options.device) {
+  const std::vector<Display>& all = displays();
+  if (options.device < 0 || options.device >= int(all.size()))
+    throw Error(concat("GPU ", options.device, " does not exist: OpenGL can use ", all.size(),
+                       " GPU(s) here through the ",
+                       all.front().platform.substr(0, all.front().platform.find(',')),
+                       "; expected gpu 0..", all.size() - 1));
+  if (options.share && options.share->device_ != options.device)
+    throw Error("EglContext: contexts on different GPUs cannot share objects");
+  const Display& d = all[std::size_t(options.device)];
+  display_ = d.display;
   if (!eglBindAPI(EGL_OPENGL_API)) throw Error("EglContext: eglBindAPI(EGL_OPENGL_API) failed");
 
   const EGLint configAttribs[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT, EGL_NONE};
@@ -117,19 +136,18 @@ EglContext::EglContext(const Options& options) {
 }
 
 EglContext::~EglContext() {
-  const Display& d = display();
   if (eglGetCurrentContext() == context_) releaseCurrent();
-  eglDestroyContext(d.display, context_);
+  eglDestroyContext(display_, context_);
 }
 
 void EglContext::makeCurrent() {
-  if (!eglMakeCurrent(display().display, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
+  if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_))
     throw Error(
         concat("EglContext: eglMakeCurrent failed (EGL error 0x", std::hex, eglGetError(), ")"));
 }
 
 void EglContext::releaseCurrent() {
-  eglMakeCurrent(display().display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
+  eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
 }
 
 }  // namespace sandstorm

@@ -1,10 +1,12 @@
 // EglContext: an offscreen OpenGL 4.5 core context through EGL, with no window
 // and no display server. It has no default framebuffer: draw into FBOs.
 //
-// The display is chosen once per process: the EGL device platform
-// (EGL_EXT_platform_device: NVIDIA and other GPU drivers), then Mesa's
-// surfaceless platform (llvmpipe on machines without a GPU). Contexts may share
-// objects with another EglContext. A new context is not current on any thread.
+// The displays are found once per process: one per GPU on the EGL device
+// platform (EGL_EXT_platform_device: NVIDIA and other GPU drivers), else
+// Mesa's surfaceless platform (llvmpipe on machines without a GPU: one
+// "GPU"). A context is made on the GPU Options::device names (0: the first).
+// Contexts may share objects with another EglContext of the same GPU. A new
+// context is not current on any thread.
 #pragma once
 
 #include <memory>
@@ -18,7 +20,11 @@ class EglContext final : public GlContext {
   struct Options {
     const EglContext* share = nullptr;
     bool debug = false;
+    int device = 0;  // the GPU: an index into the usable EGL devices
   };
+
+  // The GPUs contexts can be made on (at least 1, or the constructor throws).
+  static int deviceCount();
 
   explicit EglContext(const Options& options);
   EglContext() : EglContext(Options{}) {}
@@ -33,6 +39,8 @@ class EglContext final : public GlContext {
   std::string description() const override { return description_; }
 
  private:
+  int device_ = 0;
+  void* display_ = nullptr;  // EGLDisplay
   void* context_ = nullptr;  // EGLContext
   std::string description_;
 };

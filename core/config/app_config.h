@@ -48,7 +48,10 @@ struct WallSpec {
   bool menu = false;  // show the menu panel on this wall
   int rank = 0;       // cluster mode: the MPI rank that drives this wall
   std::string host;   // cluster mode: or the first rank on this host (overrides rank)
-  int line = 0;       // where the wall was declared, for messages
+  // An offscreen wall's GPU (EGL device index); unset: run.gpus decides (GPU 0
+  // unless round-robin). Windows draw on their display's GPU.
+  std::optional<int> gpu;
+  int line = 0;  // where the wall was declared, for messages
 };
 
 enum class HeadMode { Fixed, Scripted, Desktop };
@@ -141,6 +144,9 @@ struct RunSpec {
   // Contexts on one GPU take turns on it: one is much faster (docs/PERFORMANCE.md).
   enum class OffscreenContexts { One, PerWall };
   OffscreenContexts offscreenContexts = OffscreenContexts::One;
+  // Offscreen walls without a `gpu` of their own: all on GPU 0, or wall i (the
+  // i-th offscreen wall this process draws) on GPU i mod the GPUs there are.
+  bool gpusRoundRobin = false;
 };
 
 // Cluster mode (mpirun, app/cluster/): how rank 0 feeds the other ranks.

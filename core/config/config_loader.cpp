@@ -160,7 +160,7 @@ void setAttributes(const Reader& r, const toml::value& table, const std::string&
 void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
   r.checkKeys(t, "run",
               {"seed", "capacity", "capacity_limit", "fixed_dt", "frames", "backend",
-               "shared_simulation", "near", "far", "stats_warmup", "offscreen_contexts"});
+               "shared_simulation", "near", "far", "stats_warmup", "offscreen_contexts", "gpus"});
   if (const toml::value* seed = r.find(t, "seed")) {
     if (!seed->is_integer() || seed->as_integer() < 0)
       r.fail(*seed, "run.seed", "expected a non-negative integer");
@@ -190,6 +190,8 @@ void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
       r.choice<RunSpec::OffscreenContexts>(t, "offscreen_contexts", "run", run.offscreenContexts,
                                            {{"one", RunSpec::OffscreenContexts::One},
                                             {"per-wall", RunSpec::OffscreenContexts::PerWall}});
+  run.gpusRoundRobin = r.choice<bool>(t, "gpus", "run", run.gpusRoundRobin,
+                                      {{"first", false}, {"round-robin", true}});
 }
 
 void readGpu(const Reader& r, const toml::value& t, GpuTuning& g) {
@@ -416,7 +418,7 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
   const std::string path = concat("wall[", index, "]");
   r.checkKeys(t, path,
               {"name", "lower_left", "lower_right", "upper_left", "camera", "window", "offscreen",
-               "stereo", "menu", "rank", "host"});
+               "stereo", "menu", "rank", "host", "gpu"});
   WallSpec w;
   w.line = int(t.location().line());
   w.name = r.string(t, "name", path, concat("wall", index));
@@ -461,6 +463,12 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
   w.menu = r.boolean(t, "menu", path, w.menu);
   w.rank = r.integer(t, "rank", path, 0, 0, 4095);
   w.host = r.string(t, "host", path, "");
+  if (r.find(t, "gpu")) {
+    if (w.window)
+      r.fail(*r.find(t, "gpu"), path + ".gpu",
+             "a window draws on its display's GPU; gpu is for offscreen walls");
+    w.gpu = r.integer(t, "gpu", path, 0, 0, 63);
+  }
   return w;
 }
 

@@ -43,6 +43,34 @@ TEST(CommandLine, BadConfigsNameTheirFileAndLine) {
   EXPECT_NE(r.output.find("bad.toml:5: wall[0].stereo"), std::string::npos) << r.output;
 }
 
+TEST(CommandLine, AWallOnAGpuThatIsNotThereIsAClearError) {
+  // This machine's GPUs (llvmpipe's one, here) and round-robin over them draw
+  // the same particles as every wall on GPU 0; a GPU beyond them stops the start.
+  const auto dir = test::scratchDir("gpus");
+  const std::string include =
+      std::string("include = \"") + SANDSTORM_SOURCE_DIR + "/tests/data/identity.toml\"\n";
+  std::ofstream(dir / "robin.toml") << include << "[run]\ngpus = \"round-robin\"\n";
+  const auto first = runSandstorm("--config tests/data/identity.toml --frames 30 --hash-log " +
+                                  (dir / "first.txt").string());
+  const auto robin = runSandstorm("--config " + (dir / "robin.toml").string() +
+                                  " --frames 30 --hash-log " + (dir / "robin.txt").string());
+  ASSERT_EQ(first.exitCode, 0) << first.output;
+  ASSERT_EQ(robin.exitCode, 0) << robin.output;
+  EXPECT_EQ(test::readLines(dir / "first.txt"), test::readLines(dir / "robin.txt"));
+  EXPECT_EQ(test::readLines(dir / "first.txt").size(), 4u * 30u);
+  std::ofstream(dir / "far.toml")
+      << "include = \"" << SANDSTORM_SOURCE_DIR << "/tests/data/identity.toml\"\n"
+      << "[[wall]]\nname = \"far\"\nlower_left = [-1.5, 1.5, 0.0]\n"
+      << "lower_right = [1.5, 1.5, 0.0]\nupper_left = [-1.5, 1.5, 3.0]\n"
+      << "offscreen = { size = [64, 64] }\ngpu = 63\n";
+  const auto far = runSandstorm("--config " + (dir / "far.toml").string() + " --frames 2");
+  EXPECT_NE(far.exitCode, 0);
+  EXPECT_NE(far.output.find("far.toml:2: wall 'far' on GPU 63: GPU 63 does not exist"),
+            std::string::npos)
+      << far.output;
+  EXPECT_NE(far.output.find("expected gpu 0..0"), std::string::npos) << far.output;
+}
+
 TEST(CommandLine, WithoutOpenGL45TheMessageSaysWhatIsMissing) {
   // Mesa can be told to offer only OpenGL 3.3.
   const auto r =

@@ -156,6 +156,18 @@ TEST(Config, ReadsAndChecksGpuTuning) {
   EXPECT_ERROR("[gpu]\nwarp = 32\n" + kWall, "test.toml", "warp");
 }
 
+TEST(Config, OffscreenWallsChooseTheirGpu) {
+  const std::string wall = kWall + "gpu = 1\noffscreen = { size = [64, 64] }\n";
+  const AppConfig c = parseConfig("[run]\ngpus = \"round-robin\"\n" + wall, "test.toml");
+  EXPECT_TRUE(c.run.gpusRoundRobin);
+  EXPECT_EQ(c.walls[0].gpu, 1);
+  EXPECT_FALSE(parseConfig(kWall, "test.toml").walls[0].gpu.has_value());
+  EXPECT_ERROR(kWall + "gpu = 64\n", "test.toml:7", "wall[0].gpu", "0..63");
+  EXPECT_ERROR(kWall + "gpu = 1\nwindow = { size = [64, 64] }\n", "test.toml:7", "wall[0].gpu",
+               "display's GPU");
+  EXPECT_ERROR("[run]\ngpus = \"all\"\n" + kWall, "test.toml:2", "run.gpus", "first, round-robin");
+}
+
 TEST(Config, IntegersBeyond64BitsAreRefusedNotClamped) {
   const std::string big = "0b1" + std::string(64, '0');  // 2^64
   EXPECT_ERROR("[run]\nseed = " + big + "\n" + kWall, "test.toml:2", "does not fit in 64 bits");
