@@ -25,8 +25,10 @@ bool hasExtension(const char* list, const char* name) {
 
 // Every device offering desktop OpenGL with surfaceless contexts, in EGL's order.
 std::vector<Display> tryDevicePlatform(const char* clientExtensions) {
+  // NVIDIA's libEGL names enumeration and query together as EGL_EXT_device_base.
   if (!hasExtension(clientExtensions, "EGL_EXT_platform_device") ||
-      !hasExtension(clientExtensions, "EGL_EXT_device_enumeration"))
+      !(hasExtension(clientExtensions, "EGL_EXT_device_enumeration") ||
+        hasExtension(clientExtensions, "EGL_EXT_device_base")))
     return {};
   EGLint count = 0;
   eglQueryDevicesEXT(0, nullptr, &count);
