@@ -18,7 +18,7 @@ const char* kUsage = R"(sandstorm-bench: GPU particle benchmark (headless EGL)
                   [--billboard-limit N] [--walls 1,2,4,8] [--wall-particles N]
                   [--wall-sims per-wall,shared] [--wall-renderers billboards,splat]
                   [--wall-backend compute] [--particle-size M] [--memory-gib G]
-                  [--integrator euler|rk2|rk4] [--update-items 1|2|4|8]
+                  [--integrator euler|rk2|rk4] [--update-items 1|2|4|8] [--gpu-warmup S]
 
 A fixed scene (a tornado, particles in steady state at each count) timed over
 fixed frames. Sections:
@@ -87,6 +87,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       o.wallParticles = 2000;
       o.particleSize = 0.2f;
       o.verifyParticles = 3000;
+      o.gpuWarmupSeconds = 0.0;
     }
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -144,6 +145,10 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       checkChoices({v}, {"tf-gs", "compute"}, a);
     } else if (a == "--particle-size") {
       o.particleSize = float(number(v, a));
+    } else if (a == "--gpu-warmup") {
+      o.gpuWarmupSeconds = number(v, a);
+      if (!(o.gpuWarmupSeconds >= 0.0 && o.gpuWarmupSeconds <= 600.0))
+        throw Error(concat(a, ": ", v, ": expected 0..600 seconds"));
     } else if (a == "--update-items") {
       o.updateItems = int(count(v, a));
       if (o.updateItems != 1 && o.updateItems != 2 && o.updateItems != 4 && o.updateItems != 8)

@@ -29,6 +29,7 @@ struct BenchOptions {
   std::vector<std::string> wallRenderers{"billboards", "splat"};
   std::string wallBackend = "compute";
   std::string integrator = "rk2";  // euler | rk2 | rk4 (tracer particles)
+  double gpuWarmupSeconds = 5.0;   // the GPU kept busy before the first measurement
   int updateItems = 4;             // records an invocation of the compute update ([gpu])
   double memoryGiB = 0;            // 0: what the driver reports, else unlimited
 };

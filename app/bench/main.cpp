@@ -44,6 +44,7 @@ class Bench {
       for (const std::string& field : o_.fields)
         verify(field);
     }
+    warmUpGpu();
     copyBandwidth();
     if (has("ceilings"))
       for (std::size_t n : o_.particles) {
@@ -82,6 +83,18 @@ class Bench {
         for (const std::string& r : o_.renderers)
           total_ += (r != "billboards" || n <= o_.billboardLimit) ? 1 : 0;
     if (walls) total_ += int(o_.walls.size() * o_.wallSims.size() * o_.wallRenderers.size());
+  }
+
+  // A GPU just started (or idle) runs its first seconds slow: on a fresh H100
+  // the second and third stages of an update sweep measured 4-5x their later
+  // time (docs/PERFORMANCE.md). Keep it busy first.
+  void warmUpGpu() {
+    if (o_.gpuWarmupSeconds <= 0.0) return;
+    progress(concat("warming the GPU up for ", o_.gpuWarmupSeconds, " s"));
+    const auto until = std::chrono::steady_clock::now() +
+                       std::chrono::duration<double>(o_.gpuWarmupSeconds);
+    while (std::chrono::steady_clock::now() < until)
+      bench::shaderCopyBandwidth(std::size_t{256} << 20, 5);
   }
 
   void progress(const std::string& what) {
