@@ -11,12 +11,14 @@ layout(binding = 3) uniform sampler2D uSceneDepth;  // the scene's depth, same s
 
 #ifdef POINTS
 in float vAge;
+in float vColor;
 #else
 in vec2 gCorner;
 in vec3 gRight;
 in vec3 gUp;
 in vec3 gToEye;
 in float gAge;
+in float gColor;
 #endif
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out vec4 outNormal;
@@ -25,11 +27,13 @@ void main() {
 #ifdef POINTS
   vec2 corner = 2.0 * gl_PointCoord - 1.0;
   float age = vAge;
+  float colorT = vColor;
   float shape = dot(corner, corner) <= 1.0 ? 1.0 : 0.0;
   vec3 normal = vec3(0.0);  // points are coloured, not lit
 #else
   vec2 corner = gCorner;
   float age = gAge;
+  float colorT = gColor;
   float r2 = dot(corner, corner);
   if (r2 > 1.0) discard;
   float shape = texture(uSprite, 0.5 * corner + 0.5).r;
@@ -43,7 +47,7 @@ void main() {
   alpha = shape * (fade > 0.0 ? 1.0 : 0.0);  // opaque points, hidden behind the scene
 #endif
   if (alpha < 1.0 / 512.0) discard;
-  vec3 color = mix(look.colorBirth.rgb, look.colorDeath.rgb, age);
+  vec3 color = colorAt(colorT);
   outColor = vec4(color * alpha, alpha);
   outNormal = vec4(normal * alpha, alpha);
 }

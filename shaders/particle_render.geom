@@ -10,11 +10,13 @@ layout(points) in;
 layout(triangle_strip, max_vertices = 4) out;
 in vec3 vCenter[];
 in float vAge[];
+in float vColor[];
 out vec2 gCorner;  // -1..1 across the quad
 out vec3 gRight;
 out vec3 gUp;
 out vec3 gToEye;
 out float gAge;
+out float gColor;
 
 void main() {
   vec3 center = vCenter[0];
@@ -33,6 +35,7 @@ void main() {
     gUp = up;
     gToEye = n;
     gAge = vAge[0];
+    gColor = vColor[0];
     gl_Position = view.viewProjection * vec4(center + radius * (corners[i].x * right + corners[i].y * up), 1.0);
     EmitVertex();
   }

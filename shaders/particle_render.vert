@@ -7,11 +7,13 @@
 layout(location = 0) in vec4 inPositionLife;
 layout(location = 1) in vec4 inVelocityKind;
 out vec3 vCenter;
-out float vAge;  // 0 at birth, 1 at death
+out float vAge;    // 0 at birth, 1 at death
+out float vColor;  // the colour map's coordinate
 
 void main() {
   vCenter = inPositionLife.xyz;
   vAge = clamp(1.0 - inPositionLife.w / max(inVelocityKind.w, 1e-6), 0.0, 1.0);
+  vColor = colorCoordinate(vAge, inVelocityKind.xyz);
 #ifdef POINTS
   gl_Position = view.viewProjection * vec4(vCenter, 1.0);
   float pixels = look.params.x * view.viewport.w * view.projection[1][1] / (2.0 * max(gl_Position.w, 1e-4));

@@ -58,7 +58,7 @@ void main() {
     uvec3 where;
     Splat s;
     if (!splatCentre(pl.xyz, where) || !splatBounds(where, s)) continue;
-    uvec4 record = uvec4(where, uScatter ? splatLook(pl.xyz, pl.w, velocityKind[i].w) : 0u);
+    uvec4 record = uvec4(where, uScatter ? splatLook(pl, velocityKind[i]) : 0u);
     ivec2 t0 = s.lo / kSplatTile, t1 = s.hi / kSplatTile;
     for (int ty = t0.y; ty <= t1.y; ++ty)
       for (int tx = t0.x; tx <= t1.x; ++tx) {

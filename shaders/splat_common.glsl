@@ -2,10 +2,10 @@
 // kSplatScale steps per unit, added to with atomicAdd (integer addition is
 // associative, so the sums do not depend on the order particles arrive in, and
 // signed values add as two's complement):
-//   0 sum of alpha,  1 sum of alpha * age,  2 sum of -ln(1 - alpha),
-//   3-5 sum of alpha * normal (signed).
-// Colour is linear in age (mix of the birth and death colours), so alpha * age
-// carries the colour sums in one channel instead of three.
+//   0 sum of alpha,  1 sum of alpha * t (the colour map's coordinate),
+//   2 sum of -ln(1 - alpha),  3-5 sum of alpha * normal (signed).
+// One channel for colour, not three: the resolve maps the mean t, exact for
+// the life map (linear in t) and close for the others.
 // The atomic pass keeps them in a buffer, kSplatStride uints (32 bytes, one
 // memory sector) a pixel; the tiled pass in shared memory, a tile at a time.
 const uint kSplatStride = 8u;

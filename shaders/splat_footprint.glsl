@@ -18,26 +18,15 @@ struct Splat {
   float distance; // camera-space distance of the centre
   float opacity;
   float age;
+  float color;    // the colour map's coordinate
   ivec2 lo, hi;   // the pixels it may cover (inclusive, inside the view)
 };
 
 // A splat in 16 bytes, as the tiled pass lists it and both passes use it (so
 // both add the same integers): the centre's window coordinates and distance
-// as floats; the age in 10 bits and the direction to the eye in 2 x 11 bits
-// (octahedral: a tenth of a degree, far below what lighting a 4-pixel puff shows).
-vec2 octahedral(vec3 n) {
-  n /= abs(n.x) + abs(n.y) + abs(n.z);
-  vec2 signs = vec2(n.x >= 0.0 ? 1.0 : -1.0, n.y >= 0.0 ? 1.0 : -1.0);
-  return n.z >= 0.0 ? n.xy : (1.0 - abs(n.yx)) * signs;
-}
-
-vec3 fromOctahedral(vec2 p) {
-  vec3 n = vec3(p, 1.0 - abs(p.x) - abs(p.y));
-  vec2 signs = vec2(p.x >= 0.0 ? 1.0 : -1.0, p.y >= 0.0 ? 1.0 : -1.0);
-  if (n.z < 0.0) n.xy = (1.0 - abs(n.yx)) * signs;
-  return normalize(n);
-}
-
+// as floats; the age and the colour map's coordinate in 16 bits each. The
+// direction to the eye is not stored: the centre lies on the eye's ray
+// through its pixel, so unpackSplat finds it from the pixel.
 // A record's first three words: the centre's window coordinates and
 // distance. False when the particle is behind the eye (or at it).
 bool splatCentre(vec3 center, out uvec3 where) {
@@ -48,17 +37,17 @@ bool splatCentre(vec3 center, out uvec3 where) {
   return true;
 }
 
-// A record's last word: the age and the direction to the eye.
-uint splatLook(vec3 center, float life, float lifetime) {
-  float age = clamp(1.0 - life / max(lifetime, 1e-6), 0.0, 1.0);
-  uvec2 direction = uvec2(round((octahedral(view.eye.xyz - center) * 0.5 + 0.5) * 2047.0));
-  return uint(round(age * 1023.0)) | direction.x << 10 | direction.y << 21;
+// A record's last word: the age and the colour map's coordinate.
+uint splatLook(vec4 positionLife, vec4 velocityKind) {
+  float age = clamp(1.0 - positionLife.w / max(velocityKind.w, 1e-6), 0.0, 1.0);
+  float color = colorCoordinate(age, velocityKind.xyz);
+  return uint(round(age * 65535.0)) | uint(round(color * 65535.0)) << 16;
 }
 
 bool makeSplatRecord(vec4 positionLife, vec4 velocityKind, out uvec4 record) {
   uvec3 where;
   if (!splatCentre(positionLife.xyz, where)) return false;
-  record = uvec4(where, splatLook(positionLife.xyz, positionLife.w, velocityKind.w));
+  record = uvec4(where, splatLook(positionLife, velocityKind));
   return true;
 }
 
@@ -83,8 +72,11 @@ bool splatBounds(uvec3 where, out Splat s) {
 // The whole splat from its record. False when it shows nowhere in this view.
 bool unpackSplat(uvec4 record, out Splat s) {
   if (!splatBounds(record.xyz, s)) return false;
-  s.age = float(record.w & 1023u) / 1023.0;
-  s.toEye = fromOctahedral(vec2(uvec2(record.w >> 10, record.w >> 21) & 2047u) / 2047.0 * 2.0 - 1.0);
+  s.age = float(record.w & 65535u) / 65535.0;
+  s.color = float(record.w >> 16) / 65535.0;
+  // The eye's ray through the centre's pixel, to the far plane.
+  vec4 far = view.inverseViewProjection * vec4(s.pixel / view.viewport.zw * 2.0 - 1.0, 1.0, 1.0);
+  s.toEye = normalize(view.eye.xyz - far.xyz / far.w);
   // The billboard's frame, as particle_render.geom builds it.
   vec3 worldUp = abs(s.toEye.z) < 0.999 ? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
   s.right = normalize(cross(worldUp, s.toEye));
@@ -122,7 +114,7 @@ bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
   // A unit vector: right, up and toEye are orthonormal.
   vec3 normal = corner.x * s.right + corner.y * s.up + sqrt(1.0 - r2) * s.toEye;
   v[0] = uint(alpha * kSplatScale + 0.5);
-  v[1] = uint(alpha * s.age * kSplatScale + 0.5);
+  v[1] = uint(alpha * s.color * kSplatScale + 0.5);
   v[2] = uint(-log(1.0 - min(alpha, 0.999)) * kSplatScale + 0.5);
   ivec3 nn = ivec3(round(alpha * normal * kSplatScale));
   v[3] = uint(nn.x);
@@ -139,7 +131,9 @@ void resolveSplat(uint sums[kSplatChannels], out vec4 color, out vec4 normal) {
   float weight = float(sums[0]);
   if (weight <= 0.0) return;
   float alpha = 1.0 - exp(-float(sums[2]) / kSplatScale);
-  float age = float(sums[1]) / weight;  // alpha-weighted mean age: the mean colour, colour being linear in age
-  color = vec4(mix(look.colorBirth.rgb, look.colorDeath.rgb, age) * alpha, alpha);
+  // The alpha-weighted mean coordinate: the mean colour where the map is linear
+  // (life), and close to it where it bends slowly (the perceptual maps).
+  float t = float(sums[1]) / weight;
+  color = vec4(colorAt(t) * alpha, alpha);
   normal = vec4(vec3(int(sums[3]), int(sums[4]), int(sums[5])) / weight * alpha, alpha);
 }

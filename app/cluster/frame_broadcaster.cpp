@@ -175,7 +175,9 @@ std::shared_ptr<const FramePacket> FrameBroadcaster::receive() {
             packet->fieldUpdate = std::make_shared<const FieldUpdate>(
                 FieldUpdate{.field = store_.find(refs.field),
                             .placement = packet->fieldUpdate->placement,
-                            .next = store_.find(refs.next)});
+                            .next = store_.find(refs.next),
+                            .equation = packet->fieldUpdate->equation,
+                            .range = packet->fieldUpdate->range});
           }
           incoming_.clear();
           if (packet->frame != nextFrame_)

@@ -13,7 +13,7 @@ ViewBlock makeViewBlock(const View& v, glm::ivec2 size) {
   return b;
 }
 
-RenderBlock makeRenderBlock(const RenderSettings& s) {
+RenderBlock makeRenderBlock(const RenderSettings& s, const FieldRange& field) {
   RenderBlock b;
   b.colorBirth = glm::vec4(s.colorBirth, s.opacityBirth);
   b.colorDeath = glm::vec4(s.colorDeath, s.opacityDeath);
@@ -21,6 +21,11 @@ RenderBlock makeRenderBlock(const RenderSettings& s) {
   const glm::vec3 light = len > 0.0f ? s.lightDirection / len : glm::vec3(0, 0, 1);
   b.lightDirection = glm::vec4(light, s.ambient);
   b.params = glm::vec4(s.size, s.softness, s.mode != RenderMode::Points ? 1.0f : 0.0f, 0.0f);
+  const ColorScale scale =
+      resolveColorScale(s.colorBy, s.colorRange, s.colorMin, s.colorMax, s.colorLog, field);
+  b.colorScale = glm::vec4(float(int(scale.quantity)), scale.low, scale.high, scale.log ? 1.0f : 0.0f);
+  const ColorMap::Table table = ColorMap(s.colorMap, s.colorBirth, s.colorDeath).gpuTable();
+  for (std::size_t i = 0; i < table.size(); ++i) b.colorTable[i] = glm::vec4(table[i], 1.0f);
   return b;
 }
 

@@ -5,6 +5,8 @@
 #include <glm/glm.hpp>
 
 #include "core/cave/view.h"
+#include "core/color/color_map.h"
+#include "core/field/field_range.h"
 #include "core/sim/sim_settings.h"
 
 namespace sandstorm {
@@ -24,10 +26,14 @@ struct alignas(16) RenderBlock {
   glm::vec4 colorDeath;
   glm::vec4 lightDirection;
   glm::vec4 params;
+  glm::vec4 colorScale;  // x: ColorQuantity, y: value at t = 0, z: at t = 1, w: 1 for a log scale
+  glm::vec4 colorTable[ColorMap::kGpuSamples];  // rgb at t = i / (kGpuSamples - 1)
 };
-static_assert(sizeof(RenderBlock) == 4 * 16);
+static_assert(sizeof(RenderBlock) == (5 + ColorMap::kGpuSamples) * 16);
 
 ViewBlock makeViewBlock(const View& view, glm::ivec2 size);
-RenderBlock makeRenderBlock(const RenderSettings& settings);
+// `field`: the range of the field the particles move in (the colour scale's
+// default ends).
+RenderBlock makeRenderBlock(const RenderSettings& settings, const FieldRange& field);
 
 }  // namespace sandstorm

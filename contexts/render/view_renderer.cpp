@@ -30,7 +30,8 @@ void ViewRenderer::render(const ParticleSystem& particles, const View& view, glm
 void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, glm::ivec2 size) {
   targets_.resize(size);
   const ViewBlock vb = makeViewBlock(view, size);
-  const RenderBlock rb = makeRenderBlock(particles.state().render);
+  const auto field = particles.field();
+  const RenderBlock rb = makeRenderBlock(particles.state().render, field ? field->range : FieldRange{});
   glNamedBufferSubData(viewBlock_.id(), 0, sizeof(vb), &vb);
   glNamedBufferSubData(renderBlock_.id(), 0, sizeof(rb), &rb);
   glBindBufferBase(GL_UNIFORM_BUFFER, 1, viewBlock_.id());
@@ -41,8 +42,7 @@ void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, 
   glDepthMask(GL_TRUE);
   const float depth = 1.0f;
   glClearNamedFramebufferfv(targets_.sceneFramebuffer(), GL_DEPTH, 0, &depth);
-  if (const auto field = particles.field();
-      field && field->field && particles.state().render.fieldBox)
+  if (field && field->field && particles.state().render.fieldBox)
     scene_.setFieldBox(field->field->bounds(), field->placement);
   else
     scene_.setFieldBox(std::nullopt, {});

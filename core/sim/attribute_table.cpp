@@ -143,6 +143,31 @@ std::vector<AttributeInfo> makeEntries() {
                     RENDER(splatPixels)));
   v.push_back(
       entry("render.field_box", T::Bool, 0, 1, "", "Outline the field's bounds", RENDER(fieldBox)));
+  v.push_back(enumEntry("render.color_by", {"age", "speed", "velocity_x", "velocity_y", "velocity_z"},
+                        "What colours a particle: its age (fraction of life) or its velocity's "
+                        "length or a component (m/s)",
+                        RENDER(colorBy)));
+  v.push_back(enumEntry(
+      "render.color_map",
+      {"life", "viridis", "plasma", "inferno", "cividis", "cool_warm", "grey"},
+      "Colour map: life (colour_birth to colour_death), the perceptually uniform viridis, plasma, "
+      "inferno and cividis, ParaView's diverging cool_warm, or a grey ramp",
+      RENDER(colorMap)));
+  v.push_back(enumEntry("render.color_range", {"field", "fixed"},
+                        "The colour scale's ends: the field's range of the quantity, or "
+                        "render.color_min and render.color_max",
+                        RENDER(colorRange)));
+  v.push_back(entry("render.color_min", T::Float, -kBig, kBig, "",
+                    "Fixed colour range: the value at the map's start (the quantity's unit)",
+                    RENDER(colorMin)));
+  v.push_back(entry("render.color_max", T::Float, -kBig, kBig, "",
+                    "Fixed colour range: the value at the map's end (the quantity's unit)",
+                    RENDER(colorMax)));
+  v.push_back(entry("render.color_log", T::Bool, 0, 1, "",
+                    "Logarithmic colour scale (for positive quantities)", RENDER(colorLog)));
+  v.push_back(entry("render.legend", T::Bool, 0, 1, "",
+                    "Show the colour legend on the legend's wall (the menu always shows it)",
+                    RENDER(legend)));
   // A time-varying field's playback.
   v.push_back(entry("field.speed", T::Float, 0, 100, "x",
                     "Field seconds per simulated second (time-varying fields)", FIELD(speed)));

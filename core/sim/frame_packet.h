@@ -11,6 +11,7 @@
 #include "core/cave/viewer.h"
 #include "core/field/field_equation.h"
 #include "core/field/field_placement.h"
+#include "core/field/field_range.h"
 #include "core/field/vector_field.h"
 #include "core/sim/counter_rng.h"
 #include "core/sim/sim_step.h"
@@ -27,6 +28,9 @@ struct FieldUpdate {
   // An analytic field's equation (field.mode = equation evaluates it in place of
   // `field`, whose bounds still bound the particles), or null.
   std::shared_ptr<const FieldEquation> equation;
+  // `field`'s range of speed and velocity (the colour scale's ends by default):
+  // computed once by the main context (MainContext::setField and its timeline).
+  FieldRange range;
 };
 
 struct FramePacket {

@@ -12,7 +12,7 @@ namespace {
 constexpr std::uint32_t kPacketMagic = 0x50465353;  // "SSFP"
 constexpr std::uint32_t kFieldMagic = 0x46565353;   // "SSVF"
 constexpr std::uint16_t kVersion =
-    4;  // 2: equation terms, lod scale; 3: tracking, wand ray; 4: grid validity
+    5;  // 2: equation terms, lod scale; 3: tracking, wand ray; 4: grid validity; 5: field range
 
 // Limits far above any real packet, so a corrupt count cannot make us allocate gigabytes.
 constexpr std::uint32_t kMaxChanges = 4096;
@@ -327,6 +327,11 @@ std::vector<std::byte> encodePacket(const FramePacket& p, const FieldRefs& refs)
     w.u64(refs.field);
     w.u64(refs.next);
     placement(w, p.fieldUpdate->placement);
+    const FieldRange& range = p.fieldUpdate->range;
+    w.f32(range.minSpeed);
+    w.f32(range.maxSpeed);
+    vec3(w, range.minVelocity);
+    vec3(w, range.maxVelocity);
     // An analytic field's equation (field.mode = equation) travels whole: it is small.
     const FieldEquation* e = p.fieldUpdate->equation.get();
     w.u32(e ? std::uint32_t(e->terms.size()) : 0u);
@@ -380,6 +385,10 @@ FramePacket decodePacket(std::span<const std::byte> bytes, FieldRefs* refs) {
     found.field = r.u64("field hash");
     found.next = r.u64("next field hash");
     FieldUpdate update{.placement = placement(r)};
+    update.range.minSpeed = r.f32("field range min speed");
+    update.range.maxSpeed = r.f32("field range max speed");
+    update.range.minVelocity = vec3(r, "field range min velocity");
+    update.range.maxVelocity = vec3(r, "field range max velocity");
     const std::uint32_t terms = r.u32("equation term count");
     if (terms > std::uint32_t(FieldEquation::kMaxTerms))
       r.fail("equation term count",

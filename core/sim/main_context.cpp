@@ -8,13 +8,23 @@
 #include "core/util/log.h"
 
 namespace sandstorm {
+namespace {
+
+// Every field the main context sends carries its range (the colour scale's
+// default ends), computed here once rather than on every wall.
+FieldUpdate withRange(FieldUpdate update) {
+  if (update.field) update.range = FieldRange::of(*update.field);
+  return update;
+}
+
+}  // namespace
 
 MainContext::MainContext(ParticleState initial, FieldUpdate field, Options options)
     : initial_(initial),
       options_(options),
       state_(initial),
       pending_(std::move(initial)),
-      field_(std::make_shared<const FieldUpdate>(std::move(field))) {}
+      field_(std::make_shared<const FieldUpdate>(withRange(std::move(field)))) {}
 
 AttributeResult MainContext::set(std::string_view key, const AttributeValue& value) {
   const AttributeTable& table = AttributeTable::instance();
@@ -58,7 +68,7 @@ void MainContext::enqueue(const StateChange& change) {
 
 void MainContext::setField(FieldUpdate field) {
   std::lock_guard lock(mutex_);
-  field_ = std::make_shared<const FieldUpdate>(std::move(field));
+  field_ = std::make_shared<const FieldUpdate>(withRange(std::move(field)));
   timeline_.reset();
   fieldChanged_ = true;
 }
@@ -70,9 +80,9 @@ void MainContext::setFieldTimeline(FieldTimeline timeline, const FieldPlacement&
   fieldTime_ = timeline_->time(0);
   fieldPosition_ = timeline_->at(fieldTime_, state_.field.loop);
   field_ = std::make_shared<const FieldUpdate>(
-      FieldUpdate{.field = timeline_->frame(fieldPosition_.first),
-                  .placement = placement,
-                  .next = timeline_->frame(fieldPosition_.second)});
+      withRange(FieldUpdate{.field = timeline_->frame(fieldPosition_.first),
+                            .placement = placement,
+                            .next = timeline_->frame(fieldPosition_.second)}));
   fieldChanged_ = true;
 }
 
@@ -157,10 +167,10 @@ FramePacket MainContext::next() {
     // The field's clock runs on simulated time, at the playback speed.
     const FieldTimeline::Position at = timeline_->at(fieldTime_, state_.field.loop);
     if (at.first != fieldPosition_.first || at.second != fieldPosition_.second) {
-      field_ =
-          std::make_shared<const FieldUpdate>(FieldUpdate{.field = timeline_->frame(at.first),
-                                                          .placement = timelinePlacement_,
-                                                          .next = timeline_->frame(at.second)});
+      field_ = std::make_shared<const FieldUpdate>(
+          withRange(FieldUpdate{.field = timeline_->frame(at.first),
+                                .placement = timelinePlacement_,
+                                .next = timeline_->frame(at.second)}));
       fieldChanged_ = true;
     }
     fieldPosition_ = at;

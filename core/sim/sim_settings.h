@@ -5,6 +5,9 @@
 
 #include <glm/glm.hpp>
 
+#include "core/color/color_map.h"
+#include "core/color/color_scale.h"
+
 namespace sandstorm {
 
 // How the field drives a particle (position x, velocity v, field f at x):
@@ -70,6 +73,14 @@ struct RenderSettings {
   float softness = 0.3f;     // m: particles fade out this close to scene geometry
   float splatPixels = 4.0f;  // Auto mode: splat particles up to this projected diameter
   bool fieldBox = true;      // outline the field's bounds
+  // Colour by a quantity (core/color): which, through which map, over which range.
+  ColorQuantity colorBy = ColorQuantity::Age;
+  ColorMapName colorMap = ColorMapName::Life;  // Life: colorBirth to colorDeath
+  ColorRange colorRange = ColorRange::Field;
+  float colorMin = 0.0f;  // the fixed range's ends (ColorRange::Fixed)
+  float colorMax = 1.0f;
+  bool colorLog = false;
+  bool legend = false;  // show the colour bar (the menu always has one)
 };
 
 }  // namespace sandstorm

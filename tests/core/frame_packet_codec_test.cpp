@@ -67,7 +67,11 @@ FramePacket fullPacket() {
                   .placement = {.offset = {1, 2, 3},
                                 .scale = 0.35f,
                                 .rotation = glm::mat3(0, 1, 0, -1, 0, 0, 0, 0, 1)},
-                  .next = grid(2)});
+                  .next = grid(2),
+                  .range = {.minSpeed = 0.25f,
+                            .maxSpeed = 9.5f,
+                            .minVelocity = {-1, -2, -3},
+                            .maxVelocity = {4, 5, 6}}});
   p.viewer.head.position = {0.1f, 0.2f, 1.7f};
   p.viewer.head.right = {0, -1, 0};
   p.viewer.head.eyeSeparation = 0.063f;
@@ -147,6 +151,7 @@ TEST(FramePacketCodec, EveryMemberSurvivesARoundTrip) {
   EXPECT_EQ(q.fieldUpdate->placement.offset, p.fieldUpdate->placement.offset);
   EXPECT_EQ(q.fieldUpdate->placement.scale, p.fieldUpdate->placement.scale);
   EXPECT_EQ(q.fieldUpdate->placement.rotation, p.fieldUpdate->placement.rotation);
+  EXPECT_EQ(q.fieldUpdate->range, p.fieldUpdate->range);
   EXPECT_EQ(q.viewer.head.position, p.viewer.head.position);
   EXPECT_EQ(q.viewer.head.right, p.viewer.head.right);
   EXPECT_EQ(q.viewer.head.eyeSeparation, p.viewer.head.eyeSeparation);

@@ -1,0 +1,47 @@
+// ColorScale: which quantity colours a particle and how its value becomes the
+// colour map's coordinate t in [0, 1]. The shaders compute the same t
+// (colorCoordinate in shaders/render_block.glsl) from the same four numbers
+// (RenderBlock::colorScale), so a test can predict a rendered colour.
+#pragma once
+
+#include <string>
+#include <string_view>
+
+#include "core/field/field_range.h"
+#include "core/sim/particle.h"
+
+namespace sandstorm {
+
+// What colours a particle. Age is the fraction of its life gone (0 at birth,
+// 1 at death); the others are its velocity's length or a component, in m/s.
+enum class ColorQuantity : int { Age = 0, Speed = 1, VelocityX = 2, VelocityY = 3, VelocityZ = 4 };
+
+// Where the scale's ends come from: the current field's range of the quantity
+// (as ParaView's "data range"; age: 0..1), or render.color_min/max.
+enum class ColorRange : int { Field = 0, Fixed = 1 };
+
+struct ColorScale {
+  ColorQuantity quantity = ColorQuantity::Age;
+  float low = 0.0f;   // the value at t = 0
+  float high = 1.0f;  // the value at t = 1
+  bool log = false;   // t from log(value); needs 0 < low < high
+  std::string note;   // why the scale differs from what was asked, or empty
+
+  // t for a value: clamped to [0, 1]; 0.5 for every value when low == high.
+  float coordinate(float value) const;
+  // The value at t (the legend's ticks sit at coordinate(value)).
+  float valueAt(float t) const;
+};
+
+// The quantity's value for a particle.
+float colorValue(const Particle& particle, ColorQuantity quantity);
+std::string_view quantityName(ColorQuantity quantity);  // "speed"
+std::string_view quantityUnit(ColorQuantity quantity);  // "m/s"; "" for age
+
+// The scale the walls use: ends from the field's range or the fixed ones; a
+// log scale with an end at or below 0 keeps three decades below the upper end
+// (or falls back to linear when the upper end is not above 0), saying so in `note`.
+ColorScale resolveColorScale(ColorQuantity quantity, ColorRange range, float fixedLow,
+                             float fixedHigh, bool log, const FieldRange& field);
+
+}  // namespace sandstorm

@@ -1,0 +1,30 @@
+#include "core/field/field_range.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace sandstorm {
+
+FieldRange FieldRange::of(const VectorField& field) {
+  const auto values = field.values();
+  const auto valid = field.validity();
+  FieldRange r;
+  r.minSpeed = std::numeric_limits<float>::max();
+  r.maxSpeed = 0.0f;
+  r.minVelocity = glm::vec3(std::numeric_limits<float>::max());
+  r.maxVelocity = glm::vec3(std::numeric_limits<float>::lowest());
+  bool any = false;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (!valid.empty() && valid[i] == 0) continue;
+    const glm::vec3 v = values[i];
+    const float speed = glm::length(v);
+    r.minSpeed = std::min(r.minSpeed, speed);
+    r.maxSpeed = std::max(r.maxSpeed, speed);
+    r.minVelocity = glm::min(r.minVelocity, v);
+    r.maxVelocity = glm::max(r.maxVelocity, v);
+    any = true;
+  }
+  return any ? r : FieldRange{};
+}
+
+}  // namespace sandstorm

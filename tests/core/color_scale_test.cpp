@@ -1,0 +1,124 @@
+// ColorScale, FieldRange and ColorLegend against values worked out by hand.
+#include <gtest/gtest.h>
+
+#include "core/color/color_legend.h"
+#include "core/color/color_scale.h"
+#include "core/field/field_range.h"
+
+namespace sandstorm {
+namespace {
+
+std::vector<std::string> labels(const ColorLegend& legend) {
+  std::vector<std::string> out;
+  for (const LegendTick& t : legend.ticks) out.push_back(t.label);
+  return out;
+}
+
+TEST(ColorScale, MapsValuesLinearlyOrByTheirLogarithm) {
+  ColorScale s{.quantity = ColorQuantity::Speed, .low = 2.0f, .high = 6.0f};
+  EXPECT_FLOAT_EQ(s.coordinate(3.0f), 0.25f);
+  EXPECT_FLOAT_EQ(s.coordinate(-10.0f), 0.0f);
+  EXPECT_FLOAT_EQ(s.coordinate(10.0f), 1.0f);
+  EXPECT_FLOAT_EQ(s.valueAt(0.75f), 5.0f);
+  ColorScale log{.quantity = ColorQuantity::Speed, .low = 1.0f, .high = 100.0f, .log = true};
+  EXPECT_NEAR(log.coordinate(10.0f), 0.5f, 1e-6f);
+  EXPECT_NEAR(log.coordinate(0.0f), 0.0f, 1e-6f);
+  EXPECT_NEAR(log.valueAt(0.5f), 10.0f, 1e-4f);
+  ColorScale flat{.quantity = ColorQuantity::Speed, .low = 3.0f, .high = 3.0f};
+  EXPECT_FLOAT_EQ(flat.coordinate(100.0f), 0.5f);
+}
+
+TEST(ColorScale, ParticleValuesAreAgeFractionSpeedAndComponents) {
+  Particle p{glm::vec4(0.0f, 0.0f, 0.0f, 1.0f), glm::vec4(3.0f, -4.0f, 12.0f, 4.0f)};
+  EXPECT_FLOAT_EQ(colorValue(p, ColorQuantity::Age), 0.75f);  // 1 s of 4 left
+  EXPECT_FLOAT_EQ(colorValue(p, ColorQuantity::Speed), 13.0f);
+  EXPECT_FLOAT_EQ(colorValue(p, ColorQuantity::VelocityY), -4.0f);
+  EXPECT_FLOAT_EQ(colorValue(p, ColorQuantity::VelocityZ), 12.0f);
+}
+
+TEST(FieldRange, CoversTheValidPointsOnly) {
+  VectorField f(Box{glm::vec3(0.0f), glm::vec3(1.0f)}, glm::ivec3(2, 1, 1),
+                {glm::vec3(3.0f, 4.0f, 0.0f), glm::vec3(-100.0f, 0.0f, 0.0f)});
+  FieldRange all = FieldRange::of(f);
+  EXPECT_FLOAT_EQ(all.minSpeed, 5.0f);
+  EXPECT_FLOAT_EQ(all.maxSpeed, 100.0f);
+  EXPECT_FLOAT_EQ(all.minVelocity.x, -100.0f);
+  EXPECT_FLOAT_EQ(all.maxVelocity.y, 4.0f);
+  f.setValidity({1, 0});
+  FieldRange valid = FieldRange::of(f);
+  EXPECT_FLOAT_EQ(valid.maxSpeed, 5.0f);
+  EXPECT_FLOAT_EQ(valid.minVelocity.x, 3.0f);
+}
+
+TEST(ColorScale, TheFieldRangeOrTheFixedEndsBoundTheScale) {
+  FieldRange field{.minSpeed = 0.5f, .maxSpeed = 8.0f, .minVelocity = glm::vec3(-1, -2, -3),
+                   .maxVelocity = glm::vec3(1, 2, 3)};
+  ColorScale s = resolveColorScale(ColorQuantity::Speed, ColorRange::Field, 0, 1, false, field);
+  EXPECT_FLOAT_EQ(s.low, 0.5f);
+  EXPECT_FLOAT_EQ(s.high, 8.0f);
+  s = resolveColorScale(ColorQuantity::VelocityZ, ColorRange::Field, 0, 1, false, field);
+  EXPECT_FLOAT_EQ(s.low, -3.0f);
+  EXPECT_FLOAT_EQ(s.high, 3.0f);
+  s = resolveColorScale(ColorQuantity::Age, ColorRange::Field, 5, 9, false, field);
+  EXPECT_FLOAT_EQ(s.high, 1.0f);
+  s = resolveColorScale(ColorQuantity::Speed, ColorRange::Fixed, 2, 4, false, field);
+  EXPECT_FLOAT_EQ(s.low, 2.0f);
+  EXPECT_FLOAT_EQ(s.high, 4.0f);
+  EXPECT_TRUE(s.note.empty());
+}
+
+TEST(ColorScale, ALogScaleThatReachesZeroKeepsThreeDecadesAndSaysSo) {
+  FieldRange field{.minSpeed = 0.0f, .maxSpeed = 8.0f};
+  ColorScale s = resolveColorScale(ColorQuantity::Speed, ColorRange::Field, 0, 1, true, field);
+  EXPECT_TRUE(s.log);
+  EXPECT_FLOAT_EQ(s.low, 0.008f);
+  EXPECT_NE(s.note.find("three decades"), std::string::npos) << s.note;
+  s = resolveColorScale(ColorQuantity::VelocityX, ColorRange::Fixed, -5, -1, true, field);
+  EXPECT_FALSE(s.log);
+  EXPECT_NE(s.note.find("needs values above 0"), std::string::npos) << s.note;
+}
+
+TEST(ColorLegend, LinearTicksAreNiceNumbersInsideTheRange) {
+  ColorScale s{.quantity = ColorQuantity::Speed, .low = 0.0f, .high = 7.99763f};
+  ColorLegend legend = ColorLegend::of(s);
+  EXPECT_EQ(legend.title, "speed (m/s)");
+  EXPECT_EQ(labels(legend), (std::vector<std::string>{"0", "2", "4", "6"}));
+  EXPECT_NEAR(legend.ticks[2].t, 4.0f / 7.99763f, 1e-6f);
+  s.low = -3.0f;
+  s.high = 3.0f;
+  EXPECT_EQ(labels(ColorLegend::of(s)),
+            (std::vector<std::string>{"-2", "0", "2"}));
+  s.low = 0.013f;
+  s.high = 0.0871f;
+  EXPECT_EQ(labels(ColorLegend::of(s)),
+            (std::vector<std::string>{"0.02", "0.04", "0.06", "0.08"}));
+  s.quantity = ColorQuantity::Age;
+  s.low = 0.0f;
+  s.high = 1.0f;
+  EXPECT_EQ(ColorLegend::of(s).title, "age (fraction of life)");
+  EXPECT_EQ(labels(ColorLegend::of(s)),
+            (std::vector<std::string>{"0.0", "0.2", "0.4", "0.6", "0.8", "1.0"}));
+}
+
+TEST(ColorLegend, LogTicksAreDecadesWithTwosAndFivesWhenFew) {
+  ColorScale s{.quantity = ColorQuantity::Speed, .low = 1.0f, .high = 1000.0f, .log = true};
+  ColorLegend legend = ColorLegend::of(s);
+  EXPECT_EQ(labels(legend), (std::vector<std::string>{"1", "10", "100", "1000"}));
+  EXPECT_NEAR(legend.ticks[1].t, 1.0f / 3.0f, 1e-5f);
+  EXPECT_EQ(legend.title, "speed (m/s), log scale");
+  s.low = 0.5f;
+  s.high = 20.0f;
+  EXPECT_EQ(labels(ColorLegend::of(s)),
+            (std::vector<std::string>{"0.5", "1", "2", "5", "10", "20"}));
+}
+
+TEST(ColorLegend, AFlatRangeHasOneTickInTheMiddle) {
+  ColorScale s{.quantity = ColorQuantity::Speed, .low = 2.5f, .high = 2.5f};
+  ColorLegend legend = ColorLegend::of(s);
+  ASSERT_EQ(legend.ticks.size(), 1u);
+  EXPECT_FLOAT_EQ(legend.ticks[0].t, 0.5f);
+  EXPECT_FLOAT_EQ(legend.ticks[0].value, 2.5f);
+}
+
+}  // namespace
+}  // namespace sandstorm
