@@ -157,6 +157,23 @@ void setAttributes(const Reader& r, const toml::value& table, const std::string&
   }
 }
 
+// A fixed colour range must be a range, and a log scale's must lie above 0
+// (the menu may do either on the fly; a file that does is a mistake).
+void checkColorRange(const Reader& r, const toml::value& t, const RenderSettings& s) {
+  if (s.colorRange != ColorRange::Fixed) return;
+  const toml::value* at = r.find(t, "color_max");
+  if (!at) at = r.find(t, "color_range");
+  if (!(s.colorMax > s.colorMin))
+    r.fail(at ? *at : t, "render.color_max",
+           concat("expected color_max > color_min for a fixed colour range (got ", s.colorMin,
+                  " to ", s.colorMax, ")"));
+  if (s.colorLog && !(s.colorMin > 0.0f)) {
+    const toml::value* min = r.find(t, "color_min");
+    r.fail(min ? *min : t, "render.color_min",
+           concat("expected color_min > 0 for a log scale (color_log = true), got ", s.colorMin));
+  }
+}
+
 void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
   r.checkKeys(t, "run",
               {"seed", "capacity", "capacity_limit", "fixed_dt", "frames", "backend",
@@ -599,7 +616,10 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
   }
   if (const auto* t = section("cluster")) readCluster(r, *t, c.cluster);
   if (const auto* t = section("sim")) setAttributes(r, *t, "sim.", c.particles);
-  if (const auto* t = section("render")) setAttributes(r, *t, "render.", c.particles);
+  if (const auto* t = section("render")) {
+    setAttributes(r, *t, "render.", c.particles);
+    checkColorRange(r, *t, c.particles.render);
+  }
   if (const auto* t = section("field_playback")) setAttributes(r, *t, "field.", c.particles);
   if (const auto* t = section("helicopter")) setAttributes(r, *t, "helicopter.", c.particles);
   if (const toml::value* emitters = r.find(root, "emitter")) {

@@ -173,3 +173,76 @@ TEST_F(RenderTest, DeferredShadingLightsTheSideFacingTheLight) {
 
 }  // namespace
 }  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+// v = (0, 1 + x, 0): speeds 0 to 4 over x in [-1, 3], exactly 1 m/s at x = 0
+// (linear, so the baked grid interpolates it exactly).
+struct Shear final : AnalyticField {
+  glm::vec3 evaluate(const glm::vec3& p) const override { return {0.0f, 1.0f + p.x, 0.0f}; }
+};
+
+// Particles born at (0, 0, 2) on the camera's axis, moving away from it at
+// `speed` m/s (born with the field's velocity, so every one has it): they all
+// cover the centre pixel, opaque, unlit.
+ParticleState alongTheAxis(float speed, RenderMode mode) {
+  ParticleState s = onePerFrame({{0.0f, 0.0f, 2.0f}}, 1.0f);
+  s.emitters[0].velocity = {0.0f, speed, 0.0f};
+  s.render.mode = mode;
+  s.render.size = 0.6f;
+  s.render.colorBy = ColorQuantity::Speed;
+  s.render.colorMap = ColorMapName::Viridis;
+  return s;
+}
+
+glm::vec3 centre(const Image& image) {
+  const glm::ivec2 px = project({0.0f, 0.0f, 2.0f});
+  return glm::vec3(glm::vec4(image.at(px.x, px.y))) / 255.0f;
+}
+
+glm::vec3 expected(ColorMapName map, float t) {
+  return ColorMap::lookupTable(ColorMap(map).gpuTable(), t);
+}
+
+void expectNear(glm::vec3 got, glm::vec3 want, float tolerance, const std::string& what) {
+  for (int c = 0; c < 3; ++c)
+    EXPECT_NEAR(got[c] * 255.0f, want[c] * 255.0f, tolerance) << what << ", channel " << c;
+}
+
+TEST_F(RenderTest, AParticlesSpeedGetsTheColourTheMapGivesItInEveryMode) {
+  auto field = std::make_shared<VectorField>(
+      bake(Uniform({0.0f, 3.0f, 0.0f}), Box{{-5, -5, 0}, {5, 50, 5}}, {2, 2, 2}));
+  for (const RenderMode mode : {RenderMode::Points, RenderMode::Billboards, RenderMode::Splat}) {
+    ParticleState s = alongTheAxis(3.0f, mode);
+    s.render.colorRange = ColorRange::Fixed;
+    s.render.colorMin = 0.0f;
+    s.render.colorMax = 4.0f;  // 3 m/s: t = 0.75
+    // Points are drawn exactly; billboards and splats blend a few opaque
+    // layers of the soft puff (1 - 0.0x of the background stays), and splats
+    // carry t in 16 bits.
+    const float tolerance = mode == RenderMode::Points ? 1.0f : 6.0f;
+    expectNear(centre(render(s, 6, field)), expected(ColorMapName::Viridis, 0.75f), tolerance,
+               "mode " + std::to_string(int(mode)));
+    s.render.colorLog = true;
+    s.render.colorMin = 0.3f;
+    s.render.colorMax = 30.0f;  // log: 3 is halfway from 0.3 to 30
+    expectNear(centre(render(s, 6, field)), expected(ColorMapName::Viridis, 0.5f), tolerance,
+               "log, mode " + std::to_string(int(mode)));
+  }
+}
+
+TEST_F(RenderTest, TheFieldsRangeSetsTheScaleByDefault) {
+  // Speeds 0..4 over the field: 1 m/s is a quarter of the way.
+  auto field = std::make_shared<VectorField>(bake(Shear(), Box{{-1, -5, 0}, {3, 50, 5}}, {5, 2, 2}));
+  ParticleState s = alongTheAxis(1.0f, RenderMode::Points);
+  s.render.colorMap = ColorMapName::CoolWarm;
+  expectNear(centre(render(s, 6, field)), expected(ColorMapName::CoolWarm, 0.25f), 1.0f,
+             "speed in the field's range");
+  s.render.colorBy = ColorQuantity::VelocityY;  // -> 0..4 as well
+  s.render.colorMap = ColorMapName::Grey;
+  expectNear(centre(render(s, 6, field)), glm::vec3(0.25f), 1.0f, "velocity y");
+}
+
+}  // namespace
+}  // namespace sandstorm

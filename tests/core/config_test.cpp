@@ -90,6 +90,33 @@ TEST(Config, UnknownKeysAreRefused) {
   EXPECT_ERROR("[sim]\nmaximun = 4\n" + kWall, "test.toml:2", "sim.maximun", "sim.maximum");
 }
 
+TEST(Config, ColourSettingsAreReadAndAnEmptyOrNonPositiveLogRangeIsRefused) {
+  const AppConfig c = parseConfig(R"([render]
+color_by = "velocity_z"
+color_map = "cool_warm"
+color_range = "fixed"
+color_min = -2.0
+color_max = 2.0
+legend = true
+)" + kWall,
+                                  "test.toml");
+  EXPECT_EQ(c.particles.render.colorBy, ColorQuantity::VelocityZ);
+  EXPECT_EQ(c.particles.render.colorMap, ColorMapName::CoolWarm);
+  EXPECT_EQ(c.particles.render.colorRange, ColorRange::Fixed);
+  EXPECT_FLOAT_EQ(c.particles.render.colorMin, -2.0f);
+  EXPECT_TRUE(c.particles.render.legend);
+  EXPECT_ERROR("[render]\ncolor_range = \"fixed\"\ncolor_min = 3.0\ncolor_max = 1.0\n" + kWall,
+               "test.toml:4", "render.color_max", "expected color_max > color_min", "3 to 1");
+  EXPECT_ERROR("[render]\ncolor_range = \"fixed\"\ncolor_log = true\ncolor_min = 0.0\n" + kWall,
+               "test.toml:4", "render.color_min", "expected color_min > 0 for a log scale");
+  EXPECT_ERROR("[render]\ncolor_map = \"jet\"\n" + kWall, "test.toml:2", "render.color_map",
+               "viridis");
+  // The field's range (the default) is not checked here: the menu's log switch
+  // on a range from 0 keeps three decades (ColorScale's note says so).
+  EXPECT_NO_THROW(parseConfig("[render]\ncolor_by = \"speed\"\ncolor_log = true\n" + kWall,
+                              "test.toml"));
+}
+
 TEST(Config, MissingCornersAreRefused) {
   EXPECT_ERROR("[[wall]]\nname = \"w\"\nlower_left = [0, 0, 0]\nlower_right = [1, 0, 0]\n",
                "test.toml:1", "wall[0]", "missing required key 'upper_left'");
