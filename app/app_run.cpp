@@ -99,6 +99,7 @@ int AppRun::execute() {
     inputWindows.push_back(w->handle());
   input_ = std::make_unique<DesktopInput>(inputWindows);  // before the menu's ImGui callbacks
   openMenu();
+  openLegend();
   if (cluster_) {
     if (!cluster_->ready("")) return 1;  // some rank could not open its walls; rank 0 said why
     cluster_->shareField(field_);
@@ -257,7 +258,19 @@ void AppRun::openMenu() {
       },
       std::move(script));
   if (!operatorWindow_ && wallCount > 0)
-    walls_[std::size_t(shown)]->setOverlay([this] { return menu_->latest(); }, menu_->font());
+    walls_[std::size_t(shown)]->addOverlay([this] { return menu_->latest(); }, menu_->font());
+}
+
+// The legend's wall: the one marked `legend = true`, else the menu's, else the
+// first. (In a cluster, rank 0 builds it, so only its walls can show it.)
+void AppRun::openLegend() {
+  if (walls_.empty()) return;
+  int shown = menuWall_ >= 0 ? menuWall_ : 0;
+  for (std::size_t i = 0; i < walls_.size(); ++i)
+    if (walls_[i]->setup().wall.legend) shown = int(i);
+  const WallSpec& wall = walls_[std::size_t(shown)]->setup().wall;
+  legend_ = std::make_unique<LegendHost>(main_, wall.window ? wall.window->size : wall.offscreenSize);
+  walls_[std::size_t(shown)]->addOverlay([this] { return legend_->latest(); }, legend_->font());
 }
 
 void AppRun::hookWalls() {
@@ -390,6 +403,7 @@ void AppRun::runOneProcess() {
     if (failed_) break;
     track(dt);
     if (menu_) showMenu(dt);
+    if (legend_) legend_->frame(dt);
     if (!channel_.publish(std::make_shared<const FramePacket>(main_.next()))) break;
     helicopter_.update(main_);
     ++frames_;
@@ -426,6 +440,7 @@ void AppRun::runCluster() {
     } else if (lastFrame_ < 0 || frames_ <= lastFrame_) {
       track(dt);
       if (menu_) showMenu(dt);
+      if (legend_) legend_->frame(dt);
       packet = std::make_shared<const FramePacket>(main_.next());
       cluster_->send(*packet);
       helicopter_.update(main_);

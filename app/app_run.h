@@ -16,6 +16,7 @@
 #include "app/desktop_input.h"
 #include "app/hash_log.h"
 #include "app/helicopter_controller.h"
+#include "app/menu/legend_host.h"
 #include "app/menu/menu_host.h"
 #include "app/scene_setup.h"
 #include "app/tracking/tracking_input.h"
@@ -43,6 +44,7 @@ class AppRun {
   std::vector<int> wallGpus() const;
   void openWalls();
   void openMenu();
+  void openLegend();
   void hookWalls();
   void runOneProcess();
   void runCluster();
@@ -81,6 +83,7 @@ class AppRun {
   int menuWall_ = -1;
   std::unique_ptr<DesktopInput> input_;
   std::unique_ptr<MenuHost> menu_;
+  std::unique_ptr<LegendHost> legend_;
   std::vector<std::unique_ptr<RenderWall>> walls_;        // one a wall, by index
   std::vector<std::unique_ptr<RenderContext>> contexts_;  // after walls_: joined first
   HashLog hashes_;

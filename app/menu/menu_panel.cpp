@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/menu/legend_widget.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
 
@@ -71,6 +72,11 @@ void MenuPanel::build(const MenuStats& stats) {
         attributeWidget(info, info.key, state);
   }
   if (ImGui::CollapsingHeader("Look")) {
+    const RenderSettings& r = state.render;
+    const auto field = main_.field();
+    drawColorLegend(resolveColorScale(r.colorBy, r.colorRange, r.colorMin, r.colorMax, r.colorLog,
+                                      field ? field->range : FieldRange{}),
+                    ColorMap(r.colorMap, r.colorBirth, r.colorDeath), 320.0f);
     for (const AttributeInfo& info : AttributeTable::instance().entries())
       if (info.key.starts_with("render.")) attributeWidget(info, info.key, state);
   }

@@ -45,9 +45,9 @@ void RenderWall::open() {
 RenderWall::Drawn RenderWall::draw(const FramePacket& packet, glm::ivec2 framebufferSize) {
   const auto start = std::chrono::steady_clock::now();
   renderer_->frame(packet, framebufferSize);
-  if (overlay_)
-    if (const std::shared_ptr<const UiDrawData> menu = overlay_())
-      renderer_->drawOverlay(*menu, font_);
+  for (const OverlaySource& overlay : overlays_)
+    if (const std::shared_ptr<const UiDrawData> data = overlay())
+      renderer_->drawOverlay(*data, font_);
   if (hook_) hook_(*renderer_, packet);
   renderer_->endFrame();
   Drawn d;

@@ -47,7 +47,7 @@ class RenderWall {
   // Called on the drawing thread after each frame of this wall is drawn,
   // before the swap barrier: screenshots, particle dumps, test probes.
   using FrameHook = std::function<void(WallRenderer&, const FramePacket&)>;
-  // The menu to draw over this wall each frame (latest wins); null: none.
+  // What to draw over this wall each frame, the menu or the legend (latest wins); null: nothing.
   using OverlaySource = std::function<std::shared_ptr<const UiDrawData>()>;
 
   // `consumer`: this wall's place in the FrameChannel.
@@ -58,9 +58,11 @@ class RenderWall {
 
   // Before the drawing thread starts.
   void setFrameHook(FrameHook hook) { hook_ = std::move(hook); }
-  void setOverlay(OverlaySource source, UiFont font) {
-    overlay_ = std::move(source);
-    font_ = std::move(font);
+  // Overlays are drawn in the order added (the menu, then the legend); they
+  // share one font atlas (Dear ImGui's default), the first one's.
+  void addOverlay(OverlaySource source, UiFont font) {
+    overlays_.push_back(std::move(source));
+    if (font_.rgba.empty()) font_ = std::move(font);
   }
   // Every frame from `warmup` on (after the thread ends: the whole run); past
   // kMaxSamples frames, a uniform sample of them (bounded memory in long runs).
@@ -94,7 +96,7 @@ class RenderWall {
   WallRendererSetup setup_;
   int consumer_;
   FrameHook hook_;
-  OverlaySource overlay_;
+  std::vector<OverlaySource> overlays_;
   UiFont font_;
   std::unique_ptr<WallRenderer> renderer_;  // on the drawing thread only
   mutable std::mutex mutex_;

@@ -46,6 +46,9 @@ struct WallSpec {
   glm::ivec2 offscreenSize{960, 540};  // image size of an offscreen wall
   StereoMode stereo = StereoMode::Mono;
   bool menu = false;  // show the menu panel on this wall
+  // Show the colour legend here (when render.legend is on); with no wall
+  // marked, the menu's wall or else the first shows it.
+  bool legend = false;
   int rank = 0;       // cluster mode: the MPI rank that drives this wall
   std::string host;   // cluster mode: or the first rank on this host (overrides rank)
   // An offscreen wall's GPU (EGL device index); unset: run.gpus decides (GPU 0

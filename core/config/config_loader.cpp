@@ -435,7 +435,7 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
   const std::string path = concat("wall[", index, "]");
   r.checkKeys(t, path,
               {"name", "lower_left", "lower_right", "upper_left", "camera", "window", "offscreen",
-               "stereo", "menu", "rank", "host", "gpu"});
+               "stereo", "menu", "legend", "rank", "host", "gpu"});
   WallSpec w;
   w.line = int(t.location().line());
   w.name = r.string(t, "name", path, concat("wall", index));
@@ -478,6 +478,7 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
     r.fail(t, path + ".stereo",
            "quad-buffer stereo needs a window; offscreen walls can use side-by-side");
   w.menu = r.boolean(t, "menu", path, w.menu);
+  w.legend = r.boolean(t, "legend", path, w.legend);
   w.rank = r.integer(t, "rank", path, 0, 0, 4095);
   w.host = r.string(t, "host", path, "");
   if (r.find(t, "gpu")) {
@@ -661,6 +662,12 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
     menus += w.menu ? 1 : 0;
   if (menus > 1)
     throw Error(concat(file, ": the menu is shown on ", menus, " walls; expected at most one"));
+  int legends = 0;
+  for (const WallSpec& w : c.walls)
+    legends += w.legend ? 1 : 0;
+  if (legends > 1)
+    throw Error(
+        concat(file, ": the colour legend is shown on ", legends, " walls; expected at most one"));
 }
 
 }  // namespace

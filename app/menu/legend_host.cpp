@@ -1,0 +1,47 @@
+#include "app/menu/legend_host.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+
+#include "app/menu/legend_widget.h"
+
+namespace sandstorm {
+
+LegendHost::LegendHost(const MainContext& main, glm::ivec2 wallSize)
+    : main_(main), wallSize_(wallSize), session_(nullptr, wallSize) {}
+
+void LegendHost::frame(float dt) {
+  const ParticleState state = main_.pendingState();
+  std::shared_ptr<const UiDrawData> data;
+  if (state.render.legend) {
+    const auto field = main_.field();
+    const RenderSettings& r = state.render;
+    const ColorScale scale = resolveColorScale(r.colorBy, r.colorRange, r.colorMin, r.colorMax,
+                                               r.colorLog, field ? field->range : FieldRange{});
+    // Large enough to read on a CAVE wall from its middle: a quarter of the
+    // wall's width, text one and a half times the menu's.
+    const float width = std::clamp(0.25f * float(wallSize_.x), 160.0f, 640.0f);
+    session_.begin(dt);
+    ImGui::SetNextWindowPos(ImVec2(float(wallSize_.x) - 12.0f, float(wallSize_.y) - 12.0f),
+                            ImGuiCond_Always, ImVec2(1.0f, 1.0f));
+    ImGui::SetNextWindowBgAlpha(0.55f);
+    ImGui::Begin("Legend", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoInputs |
+                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+    ImGui::SetWindowFontScale(width >= 320.0f ? 1.5f : 1.0f);
+    drawColorLegend(scale, ColorMap(r.colorMap, r.colorBirth, r.colorDeath), width);
+    ImGui::End();
+    data = session_.end();
+  }
+  std::lock_guard lock(mutex_);
+  latest_ = std::move(data);
+}
+
+std::shared_ptr<const UiDrawData> LegendHost::latest() const {
+  std::lock_guard lock(mutex_);
+  return latest_;
+}
+
+}  // namespace sandstorm
