@@ -14,7 +14,9 @@ ImU32 packed(glm::vec3 c) {
 }  // namespace
 
 void drawColorLegend(const ColorScale& scale, const ColorMap& map, float width) {
-  const ColorLegend legend = ColorLegend::of(scale);
+  // As many ticks as labels of a few characters fit, each label a gap apart.
+  const float labelWidth = ImGui::CalcTextSize("-0.00").x * 1.8f;
+  const ColorLegend legend = ColorLegend::of(scale, std::clamp(int(width / labelWidth), 2, 6));
   ImGui::TextUnformatted(legend.title.c_str());
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 at = ImGui::GetCursorScreenPos();
@@ -29,12 +31,15 @@ void drawColorLegend(const ColorScale& scale, const ColorMap& map, float width) 
   }
   const ImU32 ink = ImGui::GetColorU32(ImGuiCol_Text);
   draw->AddRect(at, ImVec2(at.x + width, at.y + height), ink);
+  float free = at.x;  // labels start right of here (none overlaps the one before)
   for (const LegendTick& t : legend.ticks) {
     const float x = at.x + t.t * width;
     draw->AddLine(ImVec2(x, at.y + height), ImVec2(x, at.y + height + tick), ink);
     const float textWidth = ImGui::CalcTextSize(t.label.c_str()).x;
     const float left = std::clamp(x - 0.5f * textWidth, at.x, at.x + width - textWidth);
+    if (left < free) continue;
     draw->AddText(ImVec2(left, at.y + height + tick), ink, t.label.c_str());
+    free = left + textWidth + ImGui::CalcTextSize(" ").x;
   }
   ImGui::Dummy(ImVec2(width, height + tick + ImGui::GetTextLineHeight()));
   if (!scale.note.empty()) ImGui::TextWrapped("%s", scale.note.c_str());

@@ -1,0 +1,49 @@
+// The colour legend on its wall: run the app with and without it and look
+// at what changed.
+#include <gtest/gtest.h>
+
+#include "core/color/color_map.h"
+#include "core/util/image.h"
+#include "tests/app/run_process.h"
+
+namespace sandstorm {
+namespace {
+
+using test::runSandstorm;
+
+bool near(glm::u8vec4 pixel, glm::vec3 color, float tolerance) {
+  const glm::vec3 p = glm::vec3(glm::vec4(pixel)) / 255.0f;
+  return glm::all(glm::lessThanEqual(glm::abs(p - color), glm::vec3(tolerance)));
+}
+
+TEST(Legend, TheMarkedWallShowsTheMapsColourBarInItsCornerAndNoOtherWallChanges) {
+  const auto without = test::scratchDir("legend-off"), with = test::scratchDir("legend-on");
+  const std::string run = "--config tests/data/legend.toml --screenshot ";
+  const auto a = runSandstorm(run + without.string());
+  ASSERT_EQ(a.exitCode, 0) << a.output;
+  const auto b = runSandstorm(run + with.string() + " --set render.legend=true");
+  ASSERT_EQ(b.exitCode, 0) << b.output;
+
+  EXPECT_EQ(readPng(without / "front.png").rgba, readPng(with / "front.png").rgba)
+      << "the legend belongs on 'left' only";
+  const Image plain = readPng(without / "left.png"), legend = readPng(with / "left.png");
+  ASSERT_EQ(plain.width, legend.width);
+  const ColorMap viridis(ColorMapName::Viridis);
+  int changed = 0, outsideCorner = 0;
+  bool start = false, end = false;
+  for (int y = 0; y < plain.height; ++y)
+    for (int x = 0; x < plain.width; ++x) {
+      if (plain.at(x, y) == legend.at(x, y)) continue;
+      ++changed;
+      if (x < plain.width / 5 || y < plain.height / 2) ++outsideCorner;
+      start = start || near(legend.at(x, y), viridis.at(0.0f), 6.0f / 255.0f);
+      end = end || near(legend.at(x, y), viridis.at(1.0f), 6.0f / 255.0f);
+    }
+  EXPECT_GT(changed, 500) << "no legend drawn";
+  EXPECT_EQ(outsideCorner, 0) << "the legend sits in the lower right corner";
+  EXPECT_TRUE(start) << "no pixel of the bar's low end (viridis 0)";
+  EXPECT_TRUE(end) << "no pixel of the bar's high end (viridis 1)";
+}
+
+}  // namespace
+}  // namespace sandstorm
