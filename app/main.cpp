@@ -3,6 +3,8 @@
 
 #include "app/app.h"
 #include "app/cluster/cluster_link.h"
+#include "app/file_scene.h"
+#include "core/io/field_loader.h"
 #ifdef SANDSTORM_MPI
 #include "app/cluster/cluster_main.h"
 #endif
@@ -17,7 +19,15 @@ int main(int argc, char** argv) {
   AppOptions options;
   std::string screenshotDir, dumpPath, logLevel;
   int frames = -1;
-  cli.add_option("-c,--config", configPath, "Configuration file (TOML)")->check(CLI::ExistingFile);
+  CLI::Option* configOption = cli.add_option("-c,--config", configPath, "Configuration file (TOML)")
+                                  ->check(CLI::ExistingFile);
+  std::string fieldFile, arrayName;
+  cli.add_option("field,--field", fieldFile,
+                 "Open this field file (.vti .vtr .vts .vtk .pvd .vdb .fga .vf) as ParaView "
+                 "does: in the desktop scene, or in --config's walls")
+      ->check(CLI::ExistingFile);
+  cli.add_option("--array", arrayName,
+                 "The field file's vector array or grid (a file with several asks for one)");
   cli.add_option("-n,--frames", frames, "Frames to run, then exit (0: until a window closes)")
       ->check(CLI::NonNegativeNumber);
   cli.add_option("--screenshot", screenshotDir, "Write each wall's last frame as DIR/<wall>.png");
@@ -90,6 +100,12 @@ int main(int argc, char** argv) {
     options.dumpParticles = dumpPath;
   }
 #ifdef SANDSTORM_MPI
+  if (!fieldFile.empty() && (cluster || launchedByMpirun())) {
+    log::error(fieldFile,
+               ": cluster mode opens fields from its configuration's [field]; "
+               "give the file there");
+    return 2;
+  }
   if (cluster || launchedByMpirun()) return runCluster(configPath, options, clusterOptions);
 #else
   if (cluster) {
@@ -100,6 +116,17 @@ int main(int argc, char** argv) {
   }
 #endif
   try {
+    if (!fieldFile.empty()) {
+      // The desktop scene unless a configuration was named.
+      AppConfig config = loadConfig(configOption->count() > 0 ? configPath : "config/desktop.toml");
+      LoadOptions load;
+      load.arrayName = arrayName;
+      openFileScene(config, fieldFile, arrayName, loadField(fieldFile, load));
+      App app(std::move(config), options);
+      return app.run();
+    }
+    if (!arrayName.empty())
+      throw Error("--array " + arrayName + ": names an array of a field file; give the file too");
     App app(loadConfig(configPath), options);
     return app.run();
   } catch (const Error& e) {

@@ -14,6 +14,9 @@ static_assert(sizeof(ImDrawVert) == sizeof(UiVertex), "UiVertex mirrors ImDrawVe
 
 ImGuiSession::ImGuiSession(GLFWwindow* window, glm::ivec2 size) : window_(window), size_(size) {
   IMGUI_CHECKVERSION();
+  // Another session's context (the menu's) stays current between frames: its
+  // GLFW callbacks use whichever context is current when events arrive.
+  ImGuiContext* const previous = ImGui::GetCurrentContext();
   context_ = ImGui::CreateContext();
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
@@ -27,15 +30,19 @@ ImGuiSession::ImGuiSession(GLFWwindow* window, glm::ivec2 size) : window_(window
       UiFont{w, h, std::vector<std::uint8_t>(pixels, pixels + std::size_t(w) * std::size_t(h) * 4)};
   io.Fonts->SetTexID(reinterpret_cast<ImTextureID>(std::intptr_t(1)));
   if (window_) ImGui_ImplGlfw_InitForOther(window_, true);
+  if (previous) ImGui::SetCurrentContext(previous);
 }
 
 ImGuiSession::~ImGuiSession() {
+  ImGuiContext* const previous = ImGui::GetCurrentContext();
   ImGui::SetCurrentContext(context_);
   if (window_) ImGui_ImplGlfw_Shutdown();
   ImGui::DestroyContext(context_);
+  if (previous && previous != context_) ImGui::SetCurrentContext(previous);
 }
 
 void ImGuiSession::begin(float dt) {
+  previous_ = ImGui::GetCurrentContext();
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
   if (window_) {
@@ -77,6 +84,7 @@ std::shared_ptr<const UiDrawData> ImGuiSession::end() {
                     std::int32_t(vertexBase + cmd.VtxOffset)});
     }
   }
+  if (previous_ && previous_ != context_) ImGui::SetCurrentContext(previous_);
   return out;
 }
 

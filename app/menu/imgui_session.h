@@ -36,6 +36,7 @@ class ImGuiSession {
 
  private:
   ImGuiContext* context_ = nullptr;
+  ImGuiContext* previous_ = nullptr;  // current before begin(); current again after end()
   GLFWwindow* window_;
   glm::ivec2 size_;
   UiFont font_;

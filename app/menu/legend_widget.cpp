@@ -26,8 +26,9 @@ void drawColorLegend(const ColorScale& scale, const ColorMap& map, float width) 
   for (int i = 0; i < kSegments; ++i) {
     const float t0 = float(i) / kSegments, t1 = float(i + 1) / kSegments;
     const ImU32 left = packed(map.at(t0)), right = packed(map.at(t1));
-    draw->AddRectFilledMultiColor(ImVec2(at.x + t0 * width, at.y), ImVec2(at.x + t1 * width, at.y + height),
-                                  left, right, right, left);
+    draw->AddRectFilledMultiColor(ImVec2(at.x + t0 * width, at.y),
+                                  ImVec2(at.x + t1 * width, at.y + height), left, right, right,
+                                  left);
   }
   const ImU32 ink = ImGui::GetColorU32(ImGuiCol_Text);
   draw->AddRect(at, ImVec2(at.x + width, at.y + height), ink);

@@ -23,9 +23,11 @@ RenderBlock makeRenderBlock(const RenderSettings& s, const FieldRange& field) {
   b.params = glm::vec4(s.size, s.softness, s.mode != RenderMode::Points ? 1.0f : 0.0f, 0.0f);
   const ColorScale scale =
       resolveColorScale(s.colorBy, s.colorRange, s.colorMin, s.colorMax, s.colorLog, field);
-  b.colorScale = glm::vec4(float(int(scale.quantity)), scale.low, scale.high, scale.log ? 1.0f : 0.0f);
+  b.colorScale =
+      glm::vec4(float(int(scale.quantity)), scale.low, scale.high, scale.log ? 1.0f : 0.0f);
   const ColorMap::Table table = ColorMap(s.colorMap, s.colorBirth, s.colorDeath).gpuTable();
-  for (std::size_t i = 0; i < table.size(); ++i) b.colorTable[i] = glm::vec4(table[i], 1.0f);
+  for (std::size_t i = 0; i < table.size(); ++i)
+    b.colorTable[i] = glm::vec4(table[i], 1.0f);
   return b;
 }
 

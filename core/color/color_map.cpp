@@ -9,8 +9,7 @@ namespace sandstorm {
 namespace {
 
 constexpr glm::vec3 hex(unsigned rgb) {
-  return glm::vec3(float((rgb >> 16) & 255u), float((rgb >> 8) & 255u), float(rgb & 255u)) /
-         255.0f;
+  return glm::vec3(float((rgb >> 16) & 255u), float((rgb >> 8) & 255u), float(rgb & 255u)) / 255.0f;
 }
 
 // The published maps at evenly spaced stops (matplotlib's colours, which
@@ -40,7 +39,9 @@ glm::vec3 stops(std::span<const glm::vec3> colors, float t) {
 // sRGB <-> CIELAB (D65), and Moreland's Msh: the polar form of Lab.
 constexpr glm::vec3 kWhite{0.95047f, 1.0f, 1.08883f};
 
-double toLinear(double c) { return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4); }
+double toLinear(double c) {
+  return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
 double fromLinear(double c) {
   return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
 }
@@ -84,7 +85,8 @@ glm::vec3 fromMsh(Msh c) {
 // its hue gradually (Moreland's AdjustHue).
 double adjustHue(Msh saturated, double unsaturatedM) {
   if (saturated.m >= unsaturatedM) return saturated.h;
-  const double spin = saturated.s * std::sqrt(unsaturatedM * unsaturatedM - saturated.m * saturated.m) /
+  const double spin = saturated.s *
+                      std::sqrt(unsaturatedM * unsaturatedM - saturated.m * saturated.m) /
                       (saturated.m * std::sin(saturated.s));
   return saturated.h > -std::numbers::pi / 3.0 ? saturated.h + spin : saturated.h - spin;
 }
@@ -119,20 +121,28 @@ ColorMap::ColorMap(ColorMapName name, glm::vec3 birth, glm::vec3 death)
 glm::vec3 ColorMap::at(float t) const {
   t = std::isfinite(t) ? std::clamp(t, 0.0f, 1.0f) : 0.0f;
   switch (name_) {
-    case ColorMapName::Life: return glm::mix(birth_, death_, t);
-    case ColorMapName::Viridis: return stops(kViridis, t);
-    case ColorMapName::Plasma: return stops(kPlasma, t);
-    case ColorMapName::Inferno: return stops(kInferno, t);
-    case ColorMapName::Cividis: return stops(kCividis, t);
-    case ColorMapName::CoolWarm: return divergingColor(kCool, kWarm, t);
-    case ColorMapName::Grey: return glm::vec3(t);
+    case ColorMapName::Life:
+      return glm::mix(birth_, death_, t);
+    case ColorMapName::Viridis:
+      return stops(kViridis, t);
+    case ColorMapName::Plasma:
+      return stops(kPlasma, t);
+    case ColorMapName::Inferno:
+      return stops(kInferno, t);
+    case ColorMapName::Cividis:
+      return stops(kCividis, t);
+    case ColorMapName::CoolWarm:
+      return divergingColor(kCool, kWarm, t);
+    case ColorMapName::Grey:
+      return glm::vec3(t);
   }
   return glm::vec3(t);
 }
 
 ColorMap::Table ColorMap::gpuTable() const {
   Table table;
-  for (int i = 0; i < kGpuSamples; ++i) table[std::size_t(i)] = at(float(i) / float(kGpuSamples - 1));
+  for (int i = 0; i < kGpuSamples; ++i)
+    table[std::size_t(i)] = at(float(i) / float(kGpuSamples - 1));
   return table;
 }
 

@@ -27,26 +27,37 @@ float colorValue(const Particle& p, ColorQuantity q) {
   switch (q) {
     case ColorQuantity::Age:
       return std::clamp(1.0f - p.life() / std::max(p.lifetime(), 1e-6f), 0.0f, 1.0f);
-    case ColorQuantity::Speed: return glm::length(p.velocity());
-    case ColorQuantity::VelocityX: return p.velocity().x;
-    case ColorQuantity::VelocityY: return p.velocity().y;
-    case ColorQuantity::VelocityZ: return p.velocity().z;
+    case ColorQuantity::Speed:
+      return glm::length(p.velocity());
+    case ColorQuantity::VelocityX:
+      return p.velocity().x;
+    case ColorQuantity::VelocityY:
+      return p.velocity().y;
+    case ColorQuantity::VelocityZ:
+      return p.velocity().z;
   }
   return 0.0f;
 }
 
 std::string_view quantityName(ColorQuantity q) {
   switch (q) {
-    case ColorQuantity::Age: return "age (fraction of life)";
-    case ColorQuantity::Speed: return "speed";
-    case ColorQuantity::VelocityX: return "velocity x";
-    case ColorQuantity::VelocityY: return "velocity y";
-    case ColorQuantity::VelocityZ: return "velocity z";
+    case ColorQuantity::Age:
+      return "age (fraction of life)";
+    case ColorQuantity::Speed:
+      return "speed";
+    case ColorQuantity::VelocityX:
+      return "velocity x";
+    case ColorQuantity::VelocityY:
+      return "velocity y";
+    case ColorQuantity::VelocityZ:
+      return "velocity z";
   }
   return "";
 }
 
-std::string_view quantityUnit(ColorQuantity q) { return q == ColorQuantity::Age ? "" : "m/s"; }
+std::string_view quantityUnit(ColorQuantity q) {
+  return q == ColorQuantity::Age ? "" : "m/s";
+}
 
 ColorScale resolveColorScale(ColorQuantity quantity, ColorRange range, float fixedLow,
                              float fixedHigh, bool log, const FieldRange& field) {
@@ -68,8 +79,7 @@ ColorScale resolveColorScale(ColorQuantity quantity, ColorRange range, float fix
   }
   if (log) {
     if (!(s.high > 0.0f)) {
-      s.note = concat("log scale needs values above 0 (range ", s.low, " to ", s.high,
-                      "): linear");
+      s.note = concat("log scale needs values above 0 (range ", s.low, " to ", s.high, "): linear");
     } else {
       if (!(s.low > 0.0f)) {
         s.note = concat("log scale: lower end ", s.low, " is not above 0; using ", s.high / 1000.0f,

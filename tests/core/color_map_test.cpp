@@ -6,14 +6,18 @@
 namespace sandstorm {
 namespace {
 
-glm::vec3 rgb(int r, int g, int b) { return glm::vec3(float(r), float(g), float(b)) / 255.0f; }
+glm::vec3 rgb(int r, int g, int b) {
+  return glm::vec3(float(r), float(g), float(b)) / 255.0f;
+}
 
 void expectColor(glm::vec3 got, glm::vec3 want, float tolerance, const char* what) {
   for (int c = 0; c < 3; ++c)
     EXPECT_NEAR(got[c], want[c], tolerance) << what << ", channel " << c;
 }
 
-float luminance(glm::vec3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+float luminance(glm::vec3 c) {
+  return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
 
 TEST(ColorMap, PerceptualMapsHaveTheirPublishedEndsAndMiddles) {
   // matplotlib's viridis(0), viridis(0.5), viridis(1), and likewise.
@@ -29,8 +33,9 @@ TEST(ColorMap, PerceptualMapsHaveTheirPublishedEndsAndMiddles) {
 }
 
 TEST(ColorMap, SequentialMapsGetBrighterAllTheWay) {
-  for (const ColorMapName name : {ColorMapName::Viridis, ColorMapName::Plasma,
-                                  ColorMapName::Inferno, ColorMapName::Cividis, ColorMapName::Grey}) {
+  for (const ColorMapName name :
+       {ColorMapName::Viridis, ColorMapName::Plasma, ColorMapName::Inferno, ColorMapName::Cividis,
+        ColorMapName::Grey}) {
     const ColorMap map(name);
     float previous = -1.0f;
     for (int i = 0; i <= 100; ++i) {
@@ -79,8 +84,9 @@ TEST(ColorMap, OutOfRangeAndNonFiniteCoordinatesAreClamped) {
 // The listed maps' stops are samples of the table, so between them the table
 // is exact; cool-warm bends between samples, most near its warm end.
 TEST(ColorMap, TheGpuTableIsWithinOneStepOfEightBitsOfTheMap) {
-  for (const ColorMapName name : {ColorMapName::Viridis, ColorMapName::Plasma, ColorMapName::Inferno,
-                                  ColorMapName::Cividis, ColorMapName::CoolWarm}) {
+  for (const ColorMapName name :
+       {ColorMapName::Viridis, ColorMapName::Plasma, ColorMapName::Inferno, ColorMapName::Cividis,
+        ColorMapName::CoolWarm}) {
     const ColorMap map(name);
     const ColorMap::Table table = map.gpuTable();
     float worst = 0.0f;
@@ -89,7 +95,8 @@ TEST(ColorMap, TheGpuTableIsWithinOneStepOfEightBitsOfTheMap) {
       const glm::vec3 d = glm::abs(ColorMap::lookupTable(table, t) - map.at(t));
       worst = std::max({worst, d.x, d.y, d.z});
     }
-    EXPECT_LT(worst, (name == ColorMapName::CoolWarm ? 1.5f : 0.01f) / 255.0f) << "map " << int(name);
+    EXPECT_LT(worst, (name == ColorMapName::CoolWarm ? 1.5f : 0.01f) / 255.0f)
+        << "map " << int(name);
   }
 }
 

@@ -10,7 +10,8 @@ namespace {
 
 std::vector<std::string> labels(const ColorLegend& legend) {
   std::vector<std::string> out;
-  for (const LegendTick& t : legend.ticks) out.push_back(t.label);
+  for (const LegendTick& t : legend.ticks)
+    out.push_back(t.label);
   return out;
 }
 
@@ -51,7 +52,9 @@ TEST(FieldRange, CoversTheValidPointsOnly) {
 }
 
 TEST(ColorScale, TheFieldRangeOrTheFixedEndsBoundTheScale) {
-  FieldRange field{.minSpeed = 0.5f, .maxSpeed = 8.0f, .minVelocity = glm::vec3(-1, -2, -3),
+  FieldRange field{.minSpeed = 0.5f,
+                   .maxSpeed = 8.0f,
+                   .minVelocity = glm::vec3(-1, -2, -3),
                    .maxVelocity = glm::vec3(1, 2, 3)};
   ColorScale s = resolveColorScale(ColorQuantity::Speed, ColorRange::Field, 0, 1, false, field);
   EXPECT_FLOAT_EQ(s.low, 0.5f);
@@ -86,12 +89,10 @@ TEST(ColorLegend, LinearTicksAreNiceNumbersInsideTheRange) {
   EXPECT_NEAR(legend.ticks[2].t, 4.0f / 7.99763f, 1e-6f);
   s.low = -3.0f;
   s.high = 3.0f;
-  EXPECT_EQ(labels(ColorLegend::of(s)),
-            (std::vector<std::string>{"-2", "0", "2"}));
+  EXPECT_EQ(labels(ColorLegend::of(s)), (std::vector<std::string>{"-2", "0", "2"}));
   s.low = 0.013f;
   s.high = 0.0871f;
-  EXPECT_EQ(labels(ColorLegend::of(s)),
-            (std::vector<std::string>{"0.02", "0.04", "0.06", "0.08"}));
+  EXPECT_EQ(labels(ColorLegend::of(s)), (std::vector<std::string>{"0.02", "0.04", "0.06", "0.08"}));
   s.quantity = ColorQuantity::Age;
   s.low = 0.0f;
   s.high = 1.0f;

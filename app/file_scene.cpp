@@ -1,0 +1,125 @@
+#include "app/file_scene.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/util/error.h"
+#include "core/util/log.h"
+
+namespace sandstorm {
+namespace {
+
+// The mean velocity and mean speed over the field's valid points.
+struct Flow {
+  glm::vec3 mean{0.0f};
+  float meanSpeed = 0.0f;
+};
+
+Flow meanFlow(const VectorField& field) {
+  const auto values = field.values();
+  const auto valid = field.validity();
+  glm::dvec3 sum(0.0);
+  double speed = 0.0;
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    if (!valid.empty() && valid[i] == 0) continue;
+    sum += glm::dvec3(values[i]);
+    speed += glm::length(values[i]);
+    ++n;
+  }
+  if (n == 0) return {};
+  return {glm::vec3(sum / double(n)), float(speed / double(n))};
+}
+
+}  // namespace
+
+Emitter seedingPlane(const VectorField& field, int maximum) {
+  const Box box = field.bounds();
+  const glm::vec3 size = box.max - box.min, centre = 0.5f * (box.min + box.max);
+  const Flow flow = meanFlow(field);
+  Emitter e;
+  e.shape = EmitterShape::Box;
+  e.position = centre;
+  e.width = 0.98f * size.x;
+  e.depth = 0.98f * size.y;
+  e.height = 0.98f * size.z;
+  // The axis the mean flow runs along, if it runs somewhere (a vortex's does not).
+  int axis = 2;
+  for (int a = 0; a < 3; ++a)
+    if (std::abs(flow.mean[a]) > std::abs(flow.mean[axis])) axis = a;
+  const bool through = flow.meanSpeed > 0.0f && std::abs(flow.mean[axis]) > 0.1f * flow.meanSpeed;
+  float crossing = 0.0f;  // seconds a particle needs to cross the field
+  if (through) {
+    // A thin slab just inside the upstream face.
+    const float upstream = flow.mean[axis] > 0.0f ? box.min[axis] : box.max[axis];
+    const float inward = flow.mean[axis] > 0.0f ? 1.0f : -1.0f;
+    e.position[axis] = upstream + inward * 0.02f * size[axis];
+    crossing = size[axis] / std::abs(flow.mean[axis]);
+  } else {
+    axis = 2;  // the horizontal middle plane
+    crossing = flow.meanSpeed > 0.0f ? glm::length(size) / flow.meanSpeed : 10.0f;
+  }
+  float* extent[3] = {&e.width, &e.depth, &e.height};
+  *extent[axis] = 0.01f * size[axis];
+  e.lifetime = std::clamp(crossing, 1.0f, 60.0f);
+  e.lifetimeVariance = 0.1f * e.lifetime;
+  e.rate = float(maximum) / e.lifetime;  // the field holds `maximum` particles once filled
+  return e;
+}
+
+void openFileScene(AppConfig& config, const std::filesystem::path& file, const std::string& array,
+                   const VectorField& field) {
+  config.field = FieldSpec{};
+  config.field.source = std::filesystem::absolute(file).string();
+  config.field.name = array;
+  config.scene = SceneSpec{};
+  const Box box = field.bounds();
+  const glm::vec3 size = box.max - box.min, centre = 0.5f * (box.min + box.max);
+  const float radius = 0.5f * glm::length(size);
+  config.scene.groundHeight = box.min.z;  // the ground under the field, not through it
+
+  ParticleState& state = config.particles;
+  state.emitters = {seedingPlane(field, state.sim.maximum)};
+  state.sim.motion = MotionModel::Tracer;
+  state.sim.boundary = BoundaryMode::Kill;
+  state.sim.groundCollision = false;
+  state.helicopter.enabled = false;
+  state.render.colorBy = ColorQuantity::Speed;
+  state.render.colorMap = ColorMapName::Viridis;
+  state.render.colorRange = ColorRange::Field;
+  state.render.legend = true;
+  state.render.fieldBox = true;
+  state.render.opacityBirth = 0.8f;
+  state.render.opacityDeath = 0.3f;
+
+  bool roomWalls = false;
+  for (WallSpec& wall : config.walls) {
+    if (!wall.camera) {
+      roomWalls = true;
+      continue;
+    }
+    // ParaView's reset camera: the bounds' sphere fills the view, seen from
+    // the front right and a little above.
+    const float fov = glm::radians(wall.camera->fovDegrees);
+    const float distance = radius / std::sin(0.5f * fov) * 1.05f;
+    wall.camera->target = centre;
+    wall.camera->position = centre + glm::normalize(glm::vec3(1.0f, -1.0f, 0.45f)) * distance;
+    config.run.nearPlane = std::min(config.run.nearPlane, 0.01f * distance);
+    config.run.farPlane = std::max(config.run.farPlane, 4.0f * (distance + radius));
+  }
+  float scale = 1.0f;
+  if (roomWalls) {
+    // Into the room: the field's largest side 2.4 m, its centre 1.5 m up in the middle.
+    scale = 2.4f / std::max({size.x, size.y, size.z});
+    config.navigation.scale = scale;
+    config.navigation.yawDegrees = 0.0f;
+    config.navigation.offset = glm::vec3(0.0f, 0.0f, 1.5f) - scale * centre;
+  }
+  state.render.size = std::max(0.004f * 2.0f * radius, 1e-4f);
+  log::info("file scene: ", file.string(), " over [", box.min.x, ",", box.min.y, ",", box.min.z,
+            "]..[", box.max.x, ",", box.max.y, ",", box.max.z, "] m; seeding ",
+            state.emitters[0].rate, " particles/s living ", state.emitters[0].lifetime, " s",
+            roomWalls ? concat("; scaled by ", scale, " into the room") : std::string());
+}
+
+}  // namespace sandstorm

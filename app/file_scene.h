@@ -1,0 +1,25 @@
+// openFileScene: `sandstorm data.vti` opens a field file as ParaView opens
+// one: the field where the walls see it (a desktop camera framing its bounds,
+// or, for a configuration with room walls, the field scaled into the room),
+// its outline drawn, an emitter seeding a plane across its bounds upstream of
+// the mean flow (or its horizontal middle plane when there is none) at a rate
+// that fills it, and the particles coloured by speed with a legend.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+#include "core/config/app_config.h"
+#include "core/field/vector_field.h"
+
+namespace sandstorm {
+
+// Rewrites `config` (the desktop scene, or the configuration the user gave)
+// around `field`, loaded from `file`. `array`: the file's array or grid, as given.
+void openFileScene(AppConfig& config, const std::filesystem::path& file, const std::string& array,
+                   const VectorField& field);
+
+// The emitter the file scene seeds with: exposed for tests.
+Emitter seedingPlane(const VectorField& field, int maximum);
+
+}  // namespace sandstorm

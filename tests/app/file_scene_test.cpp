@@ -1,0 +1,98 @@
+// `sandstorm FILE`: the seeding plane worked out by hand, and the command line
+// on a file of our own with two vector arrays.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "app/file_scene.h"
+#include "core/field/analytic_field.h"
+#include "tests/app/run_process.h"
+
+namespace sandstorm {
+namespace {
+
+struct Uniform final : AnalyticField {
+  glm::vec3 v;
+  explicit Uniform(glm::vec3 value) : v(value) {}
+  glm::vec3 evaluate(const glm::vec3&) const override { return v; }
+};
+
+struct Spin final : AnalyticField {  // solid-body rotation about z: no mean flow
+  glm::vec3 evaluate(const glm::vec3& p) const override { return {-p.y, p.x, 0.0f}; }
+};
+
+TEST(FileScene, AStreamIsSeededJustInsideItsUpstreamFace) {
+  // 2 m/s towards -x through a box 10 m long: the plane sits at the +x face,
+  // particles live the 5 s it takes to cross, 1000 of them alive at once.
+  const VectorField f = bake(Uniform({-2.0f, 0.0f, 0.0f}), Box{{0, -1, 0}, {10, 3, 2}}, {3, 3, 3});
+  const Emitter e = seedingPlane(f, 1000);
+  EXPECT_EQ(e.shape, EmitterShape::Box);
+  EXPECT_NEAR(e.position.x, 9.8f, 1e-4f);
+  EXPECT_NEAR(e.position.y, 1.0f, 1e-5f);
+  EXPECT_NEAR(e.width, 0.1f, 1e-5f);  // thin along the flow
+  EXPECT_NEAR(e.depth, 0.98f * 4.0f, 1e-5f);
+  EXPECT_NEAR(e.height, 0.98f * 2.0f, 1e-5f);
+  EXPECT_NEAR(e.lifetime, 5.0f, 1e-4f);
+  EXPECT_NEAR(e.rate, 200.0f, 1e-2f);
+}
+
+TEST(FileScene, AFieldWithoutMeanFlowIsSeededOnItsMiddlePlane) {
+  const VectorField f = bake(Spin(), Box{{-2, -2, 0}, {2, 2, 4}}, {5, 5, 5});
+  const Emitter e = seedingPlane(f, 1000);
+  EXPECT_NEAR(e.position.z, 2.0f, 1e-5f);
+  EXPECT_NEAR(e.height, 0.04f, 1e-5f);
+  EXPECT_NEAR(e.width, 0.98f * 4.0f, 1e-5f);
+}
+
+// Two vector arrays, neither marked active: VTK XML image data, ascii.
+std::filesystem::path twoArrays(const std::filesystem::path& dir) {
+  const auto path = dir / "two.vti";
+  std::ofstream out(path);
+  out << R"(<?xml version="1.0"?>
+<VTKFile type="ImageData" version="1.0" byte_order="LittleEndian">
+<ImageData WholeExtent="0 2 0 2 0 2" Origin="0 0 0" Spacing="1 1 1">
+<Piece Extent="0 2 0 2 0 2">
+<PointData>
+<DataArray type="Float32" Name="wind" NumberOfComponents="3" format="ascii">)";
+  for (int i = 0; i < 27; ++i)
+    out << "1 0 0 ";
+  out << R"(</DataArray>
+<DataArray type="Float32" Name="gust" NumberOfComponents="3" format="ascii">)";
+  for (int i = 0; i < 27; ++i)
+    out << "0 0 3 ";
+  out << R"(</DataArray>
+</PointData>
+</Piece>
+</ImageData>
+</VTKFile>
+)";
+  return path;
+}
+
+TEST(FileScene, AFileWithSeveralArraysAsksWhichAndOpensTheOneNamed) {
+  const auto dir = test::scratchDir("file-scene");
+  const std::string file = twoArrays(dir).string();
+  const auto asks = test::runSandstorm(file + " --frames 3");
+  EXPECT_EQ(asks.exitCode, 1) << asks.output;
+  for (const char* part : {"two.vti", "several vector arrays", "--array", "wind", "gust"})
+    EXPECT_NE(asks.output.find(part), std::string::npos) << part << " in:\n" << asks.output;
+
+  const auto wrong = test::runSandstorm(file + " --array breeze --frames 3");
+  EXPECT_EQ(wrong.exitCode, 1);
+  EXPECT_NE(wrong.output.find("no array named 'breeze'"), std::string::npos) << wrong.output;
+
+  const auto opens = test::runSandstorm(file + " --array gust --frames 3 --screenshot " +
+                                        dir.string() + " --set sim.maximum=2000");
+  ASSERT_EQ(opens.exitCode, 0) << opens.output;
+  EXPECT_NE(opens.output.find("'gust'"), std::string::npos) << opens.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "desktop.png"));
+}
+
+TEST(FileScene, AnArrayWithoutAFileIsRefused) {
+  const auto r = test::runSandstorm("--array wind --frames 1");
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.output.find("--array wind"), std::string::npos) << r.output;
+}
+
+}  // namespace
+}  // namespace sandstorm
