@@ -147,7 +147,7 @@ ColorMap::Table ColorMap::gpuTable() const {
 }
 
 glm::vec3 ColorMap::lookupTable(const Table& table, float t) {
-  const float x = std::clamp(t, 0.0f, 1.0f) * float(kGpuSamples - 1);
+  const float x = (std::isfinite(t) ? std::clamp(t, 0.0f, 1.0f) : 0.0f) * float(kGpuSamples - 1);
   const int i = std::min(int(x), kGpuSamples - 2);
   return glm::mix(table[std::size_t(i)], table[std::size_t(i + 1)], x - float(i));
 }
