@@ -65,6 +65,9 @@ AttributeInfo enumEntry(std::string key, std::vector<std::string> choices, std::
 #define HELICOPTER(member)                   \
   Ref<decltype(HelicopterSettings::member)>( \
       [](ParticleState & s, int) -> auto& { return s.helicopter.member; })
+#define STREAMLINES(member)                   \
+  Ref<decltype(StreamlineSettings::member)>( \
+      [](ParticleState & s, int) -> auto& { return s.streamlines.member; })
 #define EMITTER(member)           \
   Ref<decltype(Emitter::member)>( \
       [](ParticleState & s, int e) -> auto& { return s.emitters[std::size_t(e)].member; })
@@ -179,6 +182,27 @@ std::vector<AttributeInfo> makeEntries() {
       FIELD(mode)));
   v.push_back(entry("field.paused", T::Bool, 0, 1, "",
                     "Hold the time-varying field's current frame", FIELD(paused)));
+  // Streamlines of the current field from a seed rake (core/flow).
+  v.push_back(entry("streamlines.enabled", T::Bool, 0, 1, "",
+                    "Draw streamlines of the field from the seed rake", STREAMLINES(enabled)));
+  v.push_back(enumEntry("streamlines.shape", {"line", "plane"},
+                        "Seeds on the line from..to, or on the plane from..to x from..across",
+                        STREAMLINES(shape)));
+  v.push_back(entry("streamlines.from", T::Vec3, -kBig, kBig, "m", "The rake's first corner (room)",
+                    STREAMLINES(from)));
+  v.push_back(entry("streamlines.to", T::Vec3, -kBig, kBig, "m", "The rake's line ends here (room)",
+                    STREAMLINES(to)));
+  v.push_back(entry("streamlines.across", T::Vec3, -kBig, kBig, "m",
+                    "A plane rake's second edge ends here (room)", STREAMLINES(across)));
+  v.push_back(entry("streamlines.seeds", T::Int, 1, 64, "", "Seeds along each edge of the rake",
+                    STREAMLINES(seeds)));
+  v.push_back(entry("streamlines.step", T::Float, 1e-3f, 10, "m",
+                    "Integration step (arc length)", STREAMLINES(step)));
+  v.push_back(entry("streamlines.length", T::Float, 0, 1e5f, "m",
+                    "Longest streamline each way from its seed (at most 4096 steps)",
+                    STREAMLINES(length)));
+  v.push_back(entry("streamlines.width", T::Float, 0, 1, "m",
+                    "Ribbon width (0: one-pixel lines)", STREAMLINES(width)));
   // The downdraft demo's helicopter.
   v.push_back(entry("helicopter.enabled", T::Bool, 0, 1, "",
                     "Show the helicopter; its controls drive the dust", HELICOPTER(enabled)));

@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "core/flow/streamline_settings.h"
 #include "core/sim/emitter.h"
 #include "core/sim/helicopter.h"
 #include "core/sim/sim_settings.h"
@@ -19,6 +20,7 @@ struct ParticleState {
   RenderSettings render;
   FieldPlayback field;
   HelicopterSettings helicopter;
+  StreamlineSettings streamlines;
   std::vector<Emitter> emitters{Emitter{}};
 };
 

@@ -1,0 +1,46 @@
+// traceStreamlines: streamlines of the field the particles feel (strength,
+// placement and a time-varying field's blend included: fieldAt in
+// core/sim/particle_physics.h), from each seed of the rake, both ways. The
+// path is integrated in arc length, dx/ds = f / |f|, with the simulation's
+// integrator (Euler, RK2, RK4) and a fixed step of `step` metres, so a step is
+// as long in slow air as in fast; each direction stops where it leaves the
+// field (or its valid cells), where the flow stands still (|f| < 1e-6 m/s),
+// after `length` metres, or after kMaxSteps steps.
+//
+// The GPU twin is shaders/streamline_trace.comp (contexts/scene/streamline_renderer):
+// the same operations on the same samples.
+#pragma once
+
+#include <vector>
+
+#include "core/flow/streamline_settings.h"
+#include "core/sim/particle_physics.h"
+
+namespace sandstorm {
+
+struct StreamlinePoint {
+  glm::vec3 position;  // room
+  glm::vec3 velocity;  // the field there (m/s)
+};
+
+// One seed's line, from its backward end through the seed to its forward end.
+struct Streamline {
+  std::vector<StreamlinePoint> points;
+  int seedIndex = 0;  // where the seed is in `points`
+};
+
+inline constexpr int kMaxStreamlineSteps = 4096;  // per direction
+inline constexpr int kMaxStreamlineSeeds = 64;    // per rake edge
+
+// The rake's seeds: `seeds` along the line (ends included), or seeds x seeds
+// on the plane. Seeds are clamped to 1..kMaxStreamlineSeeds.
+std::vector<glm::vec3> rakeSeeds(const StreamlineSettings& rake);
+
+// Steps one direction takes: min(round(length / step), kMaxStreamlineSteps).
+int streamlineSteps(const StreamlineSettings& rake);
+
+// `in`: the field, placement, blend, strength and integrator (motion and dt
+// are ignored).
+std::vector<Streamline> traceStreamlines(const StreamlineSettings& rake, const PhysicsInputs& in);
+
+}  // namespace sandstorm
