@@ -9,6 +9,7 @@
 #include "app/run_stats.h"
 #include "contexts/particles/simulation_share.h"
 #include "contexts/platform/egl_context.h"
+#include "core/flow/streamline_vtp.h"
 #include "core/sim/particle_dump.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
@@ -70,6 +71,7 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
   // Every output is tried before anything runs: a bad path stops the start, not the end.
   if (options_.screenshotDir) checkOutputDirectory(*options_.screenshotDir, "--screenshot");
   if (options_.dumpParticles) checkOutputFile(*options_.dumpParticles, "--dump-particles");
+  if (options_.dumpStreamlines) checkOutputFile(*options_.dumpStreamlines, "--dump-streamlines");
   if (options_.hashLog) checkOutputFile(*options_.hashLog, "--hash-log");
   if (options_.stats) checkOutputFile(*options_.stats, "--stats");
   if (field_.timeline) useField(main_, field_);
@@ -269,8 +271,27 @@ void AppRun::openLegend() {
   for (std::size_t i = 0; i < walls_.size(); ++i)
     if (walls_[i]->setup().wall.legend) shown = int(i);
   const WallSpec& wall = walls_[std::size_t(shown)]->setup().wall;
-  legend_ = std::make_unique<LegendHost>(main_, wall.window ? wall.window->size : wall.offscreenSize);
+  legend_ =
+      std::make_unique<LegendHost>(main_, wall.window ? wall.window->size : wall.offscreenSize);
   walls_[std::size_t(shown)]->addOverlay([this] { return legend_->latest(); }, legend_->font());
+}
+
+// The streamlines this wall draws, traced on the CPU (their twin) from its
+// replica of the state and field at this frame.
+void AppRun::dumpStreamlines(const WallRenderer& wall, const FramePacket& packet) {
+  const ParticleState& state = wall.particles().state();
+  const auto field = wall.particles().field();
+  PhysicsInputs in;
+  in.field = field ? field->field.get() : nullptr;
+  in.nextField = field ? field->next.get() : nullptr;
+  in.blend = packet.fieldBlend;
+  in.placement = field ? field->placement : FieldPlacement{};
+  in.settings = state.sim;
+  StreamlineSettings rake = state.streamlines;
+  const std::vector<Streamline> lines = traceStreamlines(rake, in);
+  writeStreamlinesVtp(lines, state.render.colorBy, *options_.dumpStreamlines);
+  log::info("wrote ", lines.size(), " streamlines to ", options_.dumpStreamlines->string(),
+            state.streamlines.enabled ? "" : " (streamlines.enabled is off: not drawn)");
 }
 
 void AppRun::hookWalls() {
@@ -290,6 +311,7 @@ void AppRun::hookWalls() {
         writeParticlesVtp(particles, *options_.dumpParticles);
         log::info("wrote ", particles.size(), " particles to ", options_.dumpParticles->string());
       }
+      if (first && last && options_.dumpStreamlines) dumpStreamlines(wall, packet);
       if (cluster_)
         cluster_->drawn(int(i), packet.frame);  // the main thread holds the swap for every rank
     });

@@ -45,6 +45,7 @@ class AppRun {
   void openWalls();
   void openMenu();
   void openLegend();
+  void dumpStreamlines(const WallRenderer& wall, const FramePacket& packet);
   void hookWalls();
   void runOneProcess();
   void runCluster();

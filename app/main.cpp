@@ -36,6 +36,10 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   cli.add_option("--dump-particles", dumpPath,
                  "Write the last frame's particles as VTK PolyData (.vtp)");
+  std::string streamlinePath;
+  cli.add_option("--dump-streamlines", streamlinePath,
+                 "Write the last frame's streamlines (the [streamlines] rake) as VTK PolyData "
+                 "polylines (.vtp)");
   cli.add_option("--set", options.sets,
                  "Set an attribute, e.g. --set emitter.0.rate=50000 (repeatable)");
   std::string hashLog;
@@ -98,6 +102,13 @@ int main(int argc, char** argv) {
       return 2;
     }
     options.dumpParticles = dumpPath;
+  }
+  if (!streamlinePath.empty()) {
+    if (!streamlinePath.ends_with(".vtp")) {
+      log::error("--dump-streamlines ", streamlinePath, ": expected a .vtp file name");
+      return 2;
+    }
+    options.dumpStreamlines = streamlinePath;
   }
 #ifdef SANDSTORM_MPI
   if (!fieldFile.empty() && (cluster || launchedByMpirun())) {

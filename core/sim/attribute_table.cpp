@@ -65,7 +65,7 @@ AttributeInfo enumEntry(std::string key, std::vector<std::string> choices, std::
 #define HELICOPTER(member)                   \
   Ref<decltype(HelicopterSettings::member)>( \
       [](ParticleState & s, int) -> auto& { return s.helicopter.member; })
-#define STREAMLINES(member)                   \
+#define STREAMLINES(member)                  \
   Ref<decltype(StreamlineSettings::member)>( \
       [](ParticleState & s, int) -> auto& { return s.streamlines.member; })
 #define EMITTER(member)           \
@@ -146,13 +146,13 @@ std::vector<AttributeInfo> makeEntries() {
                     RENDER(splatPixels)));
   v.push_back(
       entry("render.field_box", T::Bool, 0, 1, "", "Outline the field's bounds", RENDER(fieldBox)));
-  v.push_back(enumEntry("render.color_by", {"age", "speed", "velocity_x", "velocity_y", "velocity_z"},
+  v.push_back(enumEntry("render.color_by",
+                        {"age", "speed", "velocity_x", "velocity_y", "velocity_z"},
                         "What colours a particle: its age (fraction of life) or its velocity's "
                         "length or a component (m/s)",
                         RENDER(colorBy)));
   v.push_back(enumEntry(
-      "render.color_map",
-      {"life", "viridis", "plasma", "inferno", "cividis", "cool_warm", "grey"},
+      "render.color_map", {"life", "viridis", "plasma", "inferno", "cividis", "cool_warm", "grey"},
       "Colour map: life (colour_birth to colour_death), the perceptually uniform viridis, plasma, "
       "inferno and cividis, ParaView's diverging cool_warm, or a grey ramp",
       RENDER(colorMap)));
@@ -188,21 +188,21 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(enumEntry("streamlines.shape", {"line", "plane"},
                         "Seeds on the line from..to, or on the plane from..to x from..across",
                         STREAMLINES(shape)));
-  v.push_back(entry("streamlines.from", T::Vec3, -kBig, kBig, "m", "The rake's first corner (room)",
-                    STREAMLINES(from)));
-  v.push_back(entry("streamlines.to", T::Vec3, -kBig, kBig, "m", "The rake's line ends here (room)",
+  v.push_back(entry("streamlines.from", T::Vec3, -kBig, kBig, "m",
+                    "The rake's first corner (the particles' coordinates)", STREAMLINES(from)));
+  v.push_back(entry("streamlines.to", T::Vec3, -kBig, kBig, "m", "The rake's line ends here",
                     STREAMLINES(to)));
   v.push_back(entry("streamlines.across", T::Vec3, -kBig, kBig, "m",
-                    "A plane rake's second edge ends here (room)", STREAMLINES(across)));
+                    "A plane rake's second edge ends here", STREAMLINES(across)));
   v.push_back(entry("streamlines.seeds", T::Int, 1, 64, "", "Seeds along each edge of the rake",
                     STREAMLINES(seeds)));
-  v.push_back(entry("streamlines.step", T::Float, 1e-3f, 10, "m",
-                    "Integration step (arc length)", STREAMLINES(step)));
+  v.push_back(entry("streamlines.step", T::Float, 1e-3f, 10, "m", "Integration step (arc length)",
+                    STREAMLINES(step)));
   v.push_back(entry("streamlines.length", T::Float, 0, 1e5f, "m",
                     "Longest streamline each way from its seed (at most 4096 steps)",
                     STREAMLINES(length)));
-  v.push_back(entry("streamlines.width", T::Float, 0, 1, "m",
-                    "Ribbon width (0: one-pixel lines)", STREAMLINES(width)));
+  v.push_back(entry("streamlines.width", T::Float, 0, 1, "m", "Ribbon width (0: one-pixel lines)",
+                    STREAMLINES(width)));
   // The downdraft demo's helicopter.
   v.push_back(entry("helicopter.enabled", T::Bool, 0, 1, "",
                     "Show the helicopter; its controls drive the dust", HELICOPTER(enabled)));

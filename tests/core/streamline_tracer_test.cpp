@@ -57,7 +57,8 @@ TEST(StreamlineTracer, StreamlinesOfSolidBodyRotationAreCircles) {
 
 TEST(StreamlineTracer, EulerDriftsOutwardWhereRk4StaysOnTheCircle) {
   const VectorField f = bake(Spin(), Box{{-4, -4, 0}, {4, 4, 2}}, {9, 9, 3});
-  const auto euler = traceStreamlines(lineRake({2, 0, 1}, {2, 0, 1}, 1), inputs(f, Integrator::Euler));
+  const auto euler =
+      traceStreamlines(lineRake({2, 0, 1}, {2, 0, 1}, 1), inputs(f, Integrator::Euler));
   ASSERT_EQ(euler.size(), 1u);
   EXPECT_GT(glm::length(glm::vec2(euler[0].points.back().position)), 2.01f);
 }

@@ -25,9 +25,11 @@
 #include <vtkStreamTracer.h>
 #include <vtkXMLImageDataReader.h>
 #include <vtkXMLImageDataWriter.h>
+#include <vtkXMLPolyDataReader.h>
 
 #include "core/field/vortex_field.h"
 #include "core/flow/streamline_tracer.h"
+#include "core/flow/streamline_vtp.h"
 #include "core/io/field_loader.h"
 #include "core/sim/particle_physics.h"
 #include "tests/io/io_test_util.h"
@@ -76,7 +78,6 @@ void writeTornado(const std::filesystem::path& path) {
   writer->SetInputData(image);
   writer->SetFileName(path.c_str());
   ASSERT_EQ(writer->Write(), 1);
-
 }
 
 TEST(StreamTracer, Rk4TrajectoriesMatchVtkStreamTracer) {
@@ -220,7 +221,8 @@ TEST(StreamTracer, StreamlinesMatchVtkStreamTracerBothWays) {
     // Our line of the same seed, from the seed the same way.
     const Streamline* line = nullptr;
     for (const Streamline& l : ours)
-      if (glm::length(glm::dvec3(l.points[std::size_t(l.seedIndex)].position) - theirs.points[0]) < 1e-5)
+      if (glm::length(glm::dvec3(l.points[std::size_t(l.seedIndex)].position) - theirs.points[0]) <
+          1e-5)
         line = &l;
     ASSERT_NE(line, nullptr) << "no streamline of ours from the seed of VTK's";
     Path mine;
@@ -233,8 +235,41 @@ TEST(StreamTracer, StreamlinesMatchVtkStreamTracerBothWays) {
         worst = std::max(worst, glm::length(atArc(mine, theirs.arc[i]) - theirs.points[i]));
     ++compared;
   }
-  std::printf("[ measured ] streamlines vs vtkStreamTracer, %d directions of up to 4 m: max %.3g m\n",
-              compared, worst);
+  // Exported, the same lines read back in VTK point for point, with their arrays.
+  const auto vtp = dir / "streamlines.vtp";
+  writeStreamlinesVtp(ours, ColorQuantity::VelocityZ, vtp);
+  vtkNew<vtkXMLPolyDataReader> back;
+  back->SetFileName(vtp.c_str());
+  back->Update();
+  vtkPolyData* read = back->GetOutput();
+  ASSERT_EQ(read->GetNumberOfLines(), vtkIdType(ours.size()));
+  std::size_t total = 0;
+  for (const Streamline& l : ours)
+    total += l.points.size();
+  ASSERT_EQ(read->GetNumberOfPoints(), vtkIdType(total));
+  for (const char* name : {"velocity", "speed", "arc_length", "velocity_z"})
+    ASSERT_NE(read->GetPointData()->GetArray(name), nullptr) << name;
+  read->GetLines()->InitTraversal();
+  for (const Streamline& l : ours) {
+    ASSERT_TRUE(read->GetLines()->GetNextCell(ids));
+    ASSERT_EQ(ids->GetNumberOfIds(), vtkIdType(l.points.size()));
+    for (std::size_t i = 0; i < l.points.size(); i += 37) {
+      double x[3];
+      read->GetPoint(ids->GetId(vtkIdType(i)), x);
+      EXPECT_FLOAT_EQ(float(x[0]), l.points[i].position.x);
+      EXPECT_FLOAT_EQ(float(x[2]), l.points[i].position.z);
+      EXPECT_FLOAT_EQ(
+          float(read->GetPointData()->GetArray("velocity_z")->GetTuple1(ids->GetId(vtkIdType(i)))),
+          l.points[i].velocity.z);
+    }
+    EXPECT_FLOAT_EQ(float(read->GetPointData()
+                              ->GetArray("arc_length")
+                              ->GetTuple1(ids->GetId(vtkIdType(l.seedIndex)))),
+                    0.0f);
+  }
+  std::printf(
+      "[ measured ] streamlines vs vtkStreamTracer, %d directions of up to 4 m: max %.3g m\n",
+      compared, worst);
   EXPECT_GE(compared, 8);
   EXPECT_LT(worst, 2e-3);
 }
