@@ -143,6 +143,7 @@ void SceneRenderer::draw() const {
   }
 
   wand_.draw();
+  streamlines_.draw();
 
   // The sky last, on the far plane, where nothing else is: each pixel is
   // shaded once (fill rate is what a datacenter GPU's raster pipeline lacks).

@@ -1,6 +1,6 @@
 // SceneRenderer: the scene particles are composited against: a sky, the
 // terrain (or flat ground), the downdraft demo's helicopter, the tracked
-// wand's ray and, as a guide, the field's bounding box. It draws
+// wand's ray, the streamlines and, as a guide, the field's bounding box. It draws
 // into the bound framebuffer with depth, using the view and render blocks
 // already bound (bindings 1 and 2).
 #pragma once
@@ -10,6 +10,7 @@
 
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
+#include "contexts/scene/streamline_renderer.h"
 #include "contexts/scene/unit_cube.h"
 #include "contexts/scene/wand_renderer.h"
 #include "core/field/box.h"
@@ -30,6 +31,8 @@ class SceneRenderer {
   void setHelicopter(const HelicopterSettings& helicopter, float rotorRadius);
   // The tracked wand's ray and the emitters' handles (nothing while the ray is hidden).
   void setWand(const WandRay& ray, const Navigation& navigation, std::vector<Emitter> emitters);
+  // Updated once a frame by the wall (it traces when something changed).
+  StreamlineRenderer& streamlines() { return streamlines_; }
   void draw() const;
 
  private:
@@ -39,6 +42,7 @@ class SceneRenderer {
   gl::Buffer terrainVertices_, terrainIndices_, boxVertices_;
   UnitCube cube_;
   WandRenderer wand_;
+  StreamlineRenderer streamlines_;
   std::shared_ptr<const HeightMap> ground_;
   HelicopterSettings helicopter_;
   float rotorRadius_ = 7.0f;

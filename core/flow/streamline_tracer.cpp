@@ -69,9 +69,11 @@ std::vector<glm::vec3> rakeSeeds(const StreamlineSettings& rake) {
 
 int streamlineSteps(const StreamlineSettings& rake) {
   if (!(rake.step > 0.0f) || !(rake.length > 0.0f)) return 0;
+  const int lines = 2 * int(rakeSeeds(rake).size());
   // Rounded: 12 m in steps of 0.05f (a little over 0.05) is 240 steps, not 239.
-  return int(
-      std::min(std::round(double(rake.length) / double(rake.step)), double(kMaxStreamlineSteps)));
+  const double wanted = std::round(double(rake.length) / double(rake.step));
+  return int(std::min({wanted, double(kMaxStreamlineSteps),
+                       double(kMaxStreamlinePoints / lines - 1)}));
 }
 
 std::vector<Streamline> traceStreamlines(const StreamlineSettings& rake, const PhysicsInputs& in) {

@@ -31,12 +31,15 @@ struct Streamline {
 
 inline constexpr int kMaxStreamlineSteps = 4096;  // per direction
 inline constexpr int kMaxStreamlineSeeds = 64;    // per rake edge
+// Points of all lines together (the GPU's buffer: 32 bytes a point, 128 MiB).
+inline constexpr int kMaxStreamlinePoints = 1 << 22;
 
 // The rake's seeds: `seeds` along the line (ends included), or seeds x seeds
 // on the plane. Seeds are clamped to 1..kMaxStreamlineSeeds.
 std::vector<glm::vec3> rakeSeeds(const StreamlineSettings& rake);
 
-// Steps one direction takes: min(round(length / step), kMaxStreamlineSteps).
+// Steps one direction takes: round(length / step), at most kMaxStreamlineSteps
+// and fewer where the rake's lines would pass kMaxStreamlinePoints together.
 int streamlineSteps(const StreamlineSettings& rake);
 
 // `in`: the field, placement, blend, strength and integrator (motion and dt

@@ -1,0 +1,59 @@
+// StreamlineRenderer: the streamlines of the rake (ParticleState::streamlines)
+// through this wall's field, traced on the GPU (shaders/streamline_trace.comp,
+// the twin of core/flow's traceStreamlines) whenever the field, its blend, the
+// rake, the integrator or the field strength changes, and drawn into the scene
+// as ribbons (streamlines.width metres) or one-pixel lines, coloured like the
+// particles (render.color_by, render.color_map).
+//
+// It keeps its own copy of the field on the GPU (a 3D texture), independent
+// of the particle backend's storage and of a shared simulation. Needs its GL
+// context current for every call.
+#pragma once
+
+#include <memory>
+#include <optional>
+
+#include "contexts/gl/objects.h"
+#include "contexts/gl/program.h"
+#include "contexts/particles/particle_environment.h"
+#include "core/flow/streamline_tracer.h"
+#include "core/sim/frame_packet.h"
+
+namespace sandstorm {
+
+class StreamlineRenderer {
+ public:
+  StreamlineRenderer();
+
+  // Once a frame, before the views are drawn.
+  void update(const ParticleState& state, std::shared_ptr<const FieldUpdate> field, float blend);
+  // Into the bound framebuffer, with the view and render blocks bound.
+  void draw() const;
+  // The lines last traced, read back (tests); empty while streamlines are off.
+  std::vector<Streamline> readBack() const;
+
+ private:
+  struct Key {
+    const VectorField* field = nullptr;
+    const VectorField* next = nullptr;
+    float blend = 0.0f;
+    FieldPlacement placement;
+    StreamlineSettings rake;
+    Integrator integrator = Integrator::RK2;
+    float strength = 1.0f;
+    bool operator==(const Key& o) const;
+  };
+  void trace(const ParticleState& state, const FieldUpdate& field, float blend);
+
+  gl::Program trace_, ribbons_, lines_;
+  gl::VertexArray emptyVao_;
+  gl::Buffer simBlock_, seeds_, points_, counts_;
+  ParticleEnvironment environment_{GpuField::Storage::Texture};
+  std::optional<Key> traced_;
+  bool enabled_ = false;
+  float width_ = 0.0f;
+  int lineCount_ = 0, steps_ = 0;  // as traced: two lines a seed, steps_ + 1 points a line
+  std::size_t pointCapacity_ = 0, seedCapacity_ = 0, countCapacity_ = 0;
+};
+
+}  // namespace sandstorm
