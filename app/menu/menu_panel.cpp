@@ -84,6 +84,10 @@ void MenuPanel::build(const MenuStats& stats) {
     for (const AttributeInfo& info : AttributeTable::instance().entries())
       if (info.key.starts_with("streamlines.")) attributeWidget(info, info.key, state);
   }
+  if (ImGui::CollapsingHeader("Slice")) {
+    for (const AttributeInfo& info : AttributeTable::instance().entries())
+      if (info.key.starts_with("slice.")) attributeWidget(info, info.key, state);
+  }
   emitterSection(state);
   fieldSection();
   if (ImGui::CollapsingHeader("Field playback")) {

@@ -44,7 +44,7 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
   const float aspect = float(size.x) / float(size.y);
   const std::vector<View> views = wallViews(wall_, packet.viewer, aspect, near_, far_);
   viewRenderer_.scene().setWand(packet.wand, packet.viewer.navigation, system_.state().emitters);
-  viewRenderer_.scene().streamlines().update(system_.state(), system_.field(), packet.fieldBlend);
+  viewRenderer_.scene().updateFlow(system_.state(), system_.field(), packet.fieldBlend);
   const glm::ivec2 viewSize =
       wall_.stereo == StereoMode::SideBySide  ? glm::ivec2(size.x / 2, size.y)
       : wall_.stereo == StereoMode::TopBottom ? glm::ivec2(size.x, size.y / 2)

@@ -91,6 +91,14 @@ void SceneRenderer::setFieldBox(std::optional<Box> bounds, const FieldPlacement&
   placement_ = placement;
 }
 
+void SceneRenderer::updateFlow(const ParticleState& state, std::shared_ptr<const FieldUpdate> field,
+                               float blend) {
+  if ((state.streamlines.enabled || state.slice.enabled) && field && field->field)
+    sceneField_.set(state, *field, blend);
+  streamlines_.update(state, field, blend);
+  slice_.update(state, field.get());
+}
+
 void SceneRenderer::draw() const {
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
@@ -144,6 +152,7 @@ void SceneRenderer::draw() const {
 
   wand_.draw();
   streamlines_.draw();
+  slice_.draw();
 
   // The sky last, on the far plane, where nothing else is: each pixel is
   // shaded once (fill rate is what a datacenter GPU's raster pipeline lacks).

@@ -10,6 +10,8 @@
 
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
+#include "contexts/scene/scene_field.h"
+#include "contexts/scene/slice_renderer.h"
 #include "contexts/scene/streamline_renderer.h"
 #include "contexts/scene/unit_cube.h"
 #include "contexts/scene/wand_renderer.h"
@@ -31,8 +33,12 @@ class SceneRenderer {
   void setHelicopter(const HelicopterSettings& helicopter, float rotorRadius);
   // The tracked wand's ray and the emitters' handles (nothing while the ray is hidden).
   void setWand(const WandRay& ray, const Navigation& navigation, std::vector<Emitter> emitters);
-  // Updated once a frame by the wall (it traces when something changed).
-  StreamlineRenderer& streamlines() { return streamlines_; }
+  // Once a frame, before the views: the field's streamlines and slice follow
+  // the state (streamlines are traced again only when something changed).
+  void updateFlow(const ParticleState& state, std::shared_ptr<const FieldUpdate> field,
+                  float blend);
+  const StreamlineRenderer& streamlines() const { return streamlines_; }
+  const SliceRenderer& slice() const { return slice_; }
   void draw() const;
 
  private:
@@ -42,7 +48,9 @@ class SceneRenderer {
   gl::Buffer terrainVertices_, terrainIndices_, boxVertices_;
   UnitCube cube_;
   WandRenderer wand_;
-  StreamlineRenderer streamlines_;
+  SceneField sceneField_;  // before the passes that read it
+  StreamlineRenderer streamlines_{sceneField_};
+  SliceRenderer slice_{sceneField_};
   std::shared_ptr<const HeightMap> ground_;
   HelicopterSettings helicopter_;
   float rotorRadius_ = 7.0f;

@@ -2,8 +2,6 @@
 
 #include <epoxy/gl.h>
 
-#include "contexts/particles/sim_block.h"
-
 namespace sandstorm {
 namespace {
 
@@ -26,14 +24,12 @@ bool StreamlineRenderer::Key::operator==(const Key& o) const {
          a.length == b.length && integrator == o.integrator && strength == o.strength;
 }
 
-StreamlineRenderer::StreamlineRenderer()
+StreamlineRenderer::StreamlineRenderer(SceneField& field)
     : trace_(std::vector<std::string>{"streamline_trace.comp"}),
       ribbons_(std::vector<std::string>{"streamline.vert", "streamline.geom", "streamline.frag"}),
       lines_(std::vector<std::string>{"streamline.vert", "streamline.frag"}, {"LINES"}),
       emptyVao_(gl::createVertexArray()),
-      simBlock_(gl::createBuffer()) {
-  glNamedBufferStorage(simBlock_.id(), sizeof(SimBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
-}
+      field_(field) {}
 
 void StreamlineRenderer::update(const ParticleState& state,
                                 std::shared_ptr<const FieldUpdate> field, float blend) {
@@ -44,24 +40,15 @@ void StreamlineRenderer::update(const ParticleState& state,
                 field->placement,       state.streamlines, state.sim.integrator,
                 state.sim.fieldStrength};
   if (traced_ && *traced_ == key) return;
-  trace(state, *field, key.blend);
+  trace(state);
   traced_ = key;
 }
 
-void StreamlineRenderer::trace(const ParticleState& state, const FieldUpdate& field, float blend) {
+void StreamlineRenderer::trace(const ParticleState& state) {
   const std::vector<glm::vec3> seeds = rakeSeeds(state.streamlines);
   steps_ = streamlineSteps(state.streamlines);
   lineCount_ = steps_ > 0 ? 2 * int(seeds.size()) : 0;
   if (lineCount_ == 0) return;
-  environment_.setField(field.field, field.placement, field.next);
-  SimBlockInputs inputs;
-  environment_.describe(inputs);
-  inputs.state = &state;
-  inputs.step.fieldBlend = blend;
-  SimBlock block;
-  fillSimBlock(inputs, block);
-  glNamedBufferSubData(simBlock_.id(), 0, sizeof(block), &block);
-
   std::vector<glm::vec4> seedData;
   for (const glm::vec3& s : seeds)
     seedData.emplace_back(s, 1.0f);
@@ -72,11 +59,7 @@ void StreamlineRenderer::trace(const ParticleState& state, const FieldUpdate& fi
           std::size_t(lineCount_) * std::size_t(steps_ + 1) * 2 * sizeof(glm::vec4));
   reserve(counts_, countCapacity_, std::size_t(lineCount_) * sizeof(std::uint32_t));
 
-  // The particle update keeps its own block at binding 0: put it back after.
-  GLint previous = 0;
-  glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, 0, &previous);
-  glBindBufferBase(GL_UNIFORM_BUFFER, 0, simBlock_.id());
-  environment_.bind(state);
+  const SceneField::Binding binding(field_, state);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, seeds_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, points_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, counts_.id());
@@ -86,7 +69,6 @@ void StreamlineRenderer::trace(const ParticleState& state, const FieldUpdate& fi
   glProgramUniform1f(trace_.id(), 2, state.streamlines.step);
   glDispatchCompute(GLuint((lineCount_ + 63) / 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  glBindBufferBase(GL_UNIFORM_BUFFER, 0, GLuint(previous));
 }
 
 void StreamlineRenderer::draw() const {

@@ -5,9 +5,8 @@
 // as ribbons (streamlines.width metres) or one-pixel lines, coloured like the
 // particles (render.color_by, render.color_map).
 //
-// It keeps its own copy of the field on the GPU (a 3D texture), independent
-// of the particle backend's storage and of a shared simulation. Needs its GL
-// context current for every call.
+// It reads the scene's copy of the field (SceneField). Needs its GL context
+// current for every call.
 #pragma once
 
 #include <memory>
@@ -15,7 +14,7 @@
 
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
-#include "contexts/particles/particle_environment.h"
+#include "contexts/scene/scene_field.h"
 #include "core/flow/streamline_tracer.h"
 #include "core/sim/frame_packet.h"
 
@@ -23,9 +22,9 @@ namespace sandstorm {
 
 class StreamlineRenderer {
  public:
-  StreamlineRenderer();
+  explicit StreamlineRenderer(SceneField& field);
 
-  // Once a frame, before the views are drawn.
+  // Once a frame, before the views are drawn, after `field` has this frame's field.
   void update(const ParticleState& state, std::shared_ptr<const FieldUpdate> field, float blend);
   // Into the bound framebuffer, with the view and render blocks bound.
   void draw() const;
@@ -43,12 +42,12 @@ class StreamlineRenderer {
     float strength = 1.0f;
     bool operator==(const Key& o) const;
   };
-  void trace(const ParticleState& state, const FieldUpdate& field, float blend);
+  void trace(const ParticleState& state);
 
   gl::Program trace_, ribbons_, lines_;
   gl::VertexArray emptyVao_;
-  gl::Buffer simBlock_, seeds_, points_, counts_;
-  ParticleEnvironment environment_{GpuField::Storage::Texture};
+  SceneField& field_;
+  gl::Buffer seeds_, points_, counts_;
   std::optional<Key> traced_;
   bool enabled_ = false;
   float width_ = 0.0f;

@@ -576,10 +576,11 @@ AppConfig readWithIncludes(const toml::value& root, const std::string& file,
 void read(const toml::value& root, const std::string& file, std::optional<int> monitors,
           AppConfig& c, int depth) {
   const Reader r(file);
-  r.checkKeys(root, "",
-              {"include", "run", "field", "scene", "sim", "render", "field_playback", "helicopter",
-               "emitter", "head", "navigation", "tracking", "menu", "cluster", "wall", "pvx",
-               "pvx_up", "gpu", "streamlines"});
+  r.checkKeys(
+      root, "",
+      {"include",    "run",     "field",  "scene",      "sim",         "render", "field_playback",
+       "helicopter", "emitter", "head",   "navigation", "tracking",    "menu",   "cluster",
+       "wall",       "pvx",     "pvx_up", "gpu",        "streamlines", "slice"});
   // include = "scene.toml": that file's settings first, this file's on top.
   if (const toml::value* include = r.find(root, "include")) {
     if (!include->is_string()) r.fail(*include, "include", "expected a file name");
@@ -624,6 +625,12 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
   if (const auto* t = section("field_playback")) setAttributes(r, *t, "field.", c.particles);
   if (const auto* t = section("helicopter")) setAttributes(r, *t, "helicopter.", c.particles);
   if (const auto* t = section("streamlines")) setAttributes(r, *t, "streamlines.", c.particles);
+  if (const auto* t = section("slice")) {
+    setAttributes(r, *t, "slice.", c.particles);
+    if (const toml::value* n = r.find(*t, "normal");
+        n && !(glm::length(c.particles.slice.normal) > 0.0f))
+      r.fail(*n, "slice.normal", "expected a direction, not (0, 0, 0)");
+  }
   if (const toml::value* emitters = r.find(root, "emitter")) {
     if (!emitters->is_array()) r.fail(*emitters, "emitter", "expected [[emitter]] tables");
     if (emitters->as_array().size() > std::size_t(ParticleState::kMaxEmitters))

@@ -72,8 +72,8 @@ int streamlineSteps(const StreamlineSettings& rake) {
   const int lines = 2 * int(rakeSeeds(rake).size());
   // Rounded: 12 m in steps of 0.05f (a little over 0.05) is 240 steps, not 239.
   const double wanted = std::round(double(rake.length) / double(rake.step));
-  return int(std::min({wanted, double(kMaxStreamlineSteps),
-                       double(kMaxStreamlinePoints / lines - 1)}));
+  return int(
+      std::min({wanted, double(kMaxStreamlineSteps), double(kMaxStreamlinePoints / lines - 1)}));
 }
 
 std::vector<Streamline> traceStreamlines(const StreamlineSettings& rake, const PhysicsInputs& in) {

@@ -68,6 +68,9 @@ AttributeInfo enumEntry(std::string key, std::vector<std::string> choices, std::
 #define STREAMLINES(member)                  \
   Ref<decltype(StreamlineSettings::member)>( \
       [](ParticleState & s, int) -> auto& { return s.streamlines.member; })
+#define SLICE(member)                   \
+  Ref<decltype(SliceSettings::member)>( \
+      [](ParticleState & s, int) -> auto& { return s.slice.member; })
 #define EMITTER(member)           \
   Ref<decltype(Emitter::member)>( \
       [](ParticleState & s, int e) -> auto& { return s.emitters[std::size_t(e)].member; })
@@ -203,6 +206,16 @@ std::vector<AttributeInfo> makeEntries() {
                     STREAMLINES(length)));
   v.push_back(entry("streamlines.width", T::Float, 0, 1, "m", "Ribbon width (0: one-pixel lines)",
                     STREAMLINES(width)));
+  // A slice plane through the field, coloured like the particles.
+  v.push_back(entry("slice.enabled", T::Bool, 0, 1, "",
+                    "Draw a slice plane through the field, coloured by render.color_by",
+                    SLICE(enabled)));
+  v.push_back(entry("slice.origin", T::Vec3, -kBig, kBig, "m", "A point of the slice plane",
+                    SLICE(origin)));
+  v.push_back(entry("slice.normal", T::Vec3, -1, 1, "",
+                    "The slice plane's normal: (1 0 0), (0 1 0), (0 0 1) or any direction",
+                    SLICE(normal)));
+  v.push_back(entry("slice.opacity", T::Float, 0, 1, "", "The slice's opacity", SLICE(opacity)));
   // The downdraft demo's helicopter.
   v.push_back(entry("helicopter.enabled", T::Bool, 0, 1, "",
                     "Show the helicopter; its controls drive the dust", HELICOPTER(enabled)));

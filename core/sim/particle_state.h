@@ -6,6 +6,7 @@
 
 #include <vector>
 
+#include "core/flow/slice_settings.h"
 #include "core/flow/streamline_settings.h"
 #include "core/sim/emitter.h"
 #include "core/sim/helicopter.h"
@@ -21,6 +22,7 @@ struct ParticleState {
   FieldPlayback field;
   HelicopterSettings helicopter;
   StreamlineSettings streamlines;
+  SliceSettings slice;
   std::vector<Emitter> emitters{Emitter{}};
 };
 

@@ -234,7 +234,8 @@ TEST_F(RenderTest, AParticlesSpeedGetsTheColourTheMapGivesItInEveryMode) {
 
 TEST_F(RenderTest, TheFieldsRangeSetsTheScaleByDefault) {
   // Speeds 0..4 over the field: 1 m/s is a quarter of the way.
-  auto field = std::make_shared<VectorField>(bake(Shear(), Box{{-1, -5, 0}, {3, 50, 5}}, {5, 2, 2}));
+  auto field =
+      std::make_shared<VectorField>(bake(Shear(), Box{{-1, -5, 0}, {3, 50, 5}}, {5, 2, 2}));
   ParticleState s = alongTheAxis(1.0f, RenderMode::Points);
   s.render.colorMap = ColorMapName::CoolWarm;
   expectNear(centre(render(s, 6, field)), expected(ColorMapName::CoolWarm, 0.25f), 1.0f,
@@ -242,6 +243,39 @@ TEST_F(RenderTest, TheFieldsRangeSetsTheScaleByDefault) {
   s.render.colorBy = ColorQuantity::VelocityY;  // -> 0..4 as well
   s.render.colorMap = ColorMapName::Grey;
   expectNear(centre(render(s, 6, field)), glm::vec3(0.25f), 1.0f, "velocity y");
+}
+
+}  // namespace
+}  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+// The slice y = 0 through the shear field (speed 1 + x over x in [-1, 3]),
+// facing the camera: each pixel has the map's colour of the speed there.
+TEST_F(RenderTest, TheSliceShowsTheFieldsSpeedThroughTheColourMap) {
+  auto field = std::make_shared<VectorField>(bake(Shear(), Box{{-1, -5, 0}, {3, 5, 5}}, {5, 2, 2}));
+  ParticleState s = onePerFrame({}, 1.0f);
+  s.render.colorBy = ColorQuantity::Speed;
+  s.render.colorMap = ColorMapName::Plasma;
+  s.slice.enabled = true;
+  s.slice.origin = {0.0f, 0.0f, 2.0f};
+  s.slice.normal = {0.0f, 1.0f, 0.0f};
+  const Image image = render(s, 1, field);
+  for (const float x : {-0.5f, 0.0f, 1.0f, 2.5f}) {
+    const glm::ivec2 px = project({x, 0.0f, 2.0f});
+    const glm::vec3 got = glm::vec3(glm::vec4(image.at(px.x, px.y))) / 255.0f;
+    // Where that pixel's centre sees the plane y = 0, 8 m ahead of the camera.
+    const float ndc = (float(px.x) + 0.5f) / float(kSize.x) * 2.0f - 1.0f;
+    const float seen = ndc * 8.0f * std::tan(glm::radians(20.0f)) * float(kSize.x) / float(kSize.y);
+    expectNear(got, expected(ColorMapName::Plasma, (1.0f + seen) / 4.0f), 1.5f,
+               "x = " + std::to_string(seen));
+  }
+  // Off: the same pixels show the sky again.
+  s.slice.enabled = false;
+  const Image plain = render(s, 1, field);
+  const glm::ivec2 px = project({1.0f, 0.0f, 2.0f});
+  EXPECT_NE(plain.at(px.x, px.y), image.at(px.x, px.y));
 }
 
 }  // namespace

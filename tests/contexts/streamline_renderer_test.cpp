@@ -61,7 +61,9 @@ TEST_F(StreamlineGpuTest, TheGpuTracesTheCpusStreamlines) {
   for (const Integrator integrator : {Integrator::RK4, Integrator::RK2, Integrator::Euler}) {
     state.sim.integrator = integrator;
     in.settings = state.sim;
-    StreamlineRenderer renderer;
+    SceneField sceneField;
+    sceneField.set(state, update, 0.0f);
+    StreamlineRenderer renderer(sceneField);
     renderer.update(state, std::make_shared<const FieldUpdate>(update), 0.0f);
     expectSame(renderer.readBack(), traceStreamlines(state.streamlines, in),
                "tornado, integrator " + std::to_string(int(integrator)));
@@ -73,7 +75,9 @@ TEST_F(StreamlineGpuTest, TheGpuTracesTheCpusStreamlines) {
   in.settings = state.sim;
   in.nextField = next.get();
   in.blend = 0.5f;
-  StreamlineRenderer renderer;
+  SceneField sceneField;
+  sceneField.set(state, update, 0.5f);
+  StreamlineRenderer renderer(sceneField);
   renderer.update(state, std::make_shared<const FieldUpdate>(update), 0.5f);
   expectSame(renderer.readBack(), traceStreamlines(state.streamlines, in), "blended");
 }
@@ -82,7 +86,8 @@ TEST_F(StreamlineGpuTest, NothingIsTracedWhileStreamlinesAreOff) {
   auto tornado = std::make_shared<VectorField>(
       bake(VortexField(VortexParams{}), Box{{-6, -6, 0}, {6, 6, 10}}, {9, 9, 9}));
   ParticleState state;  // streamlines.enabled is false by default
-  StreamlineRenderer renderer;
+  SceneField sceneField;
+  StreamlineRenderer renderer(sceneField);
   renderer.update(state, std::make_shared<const FieldUpdate>(FieldUpdate{.field = tornado}), 0.0f);
   EXPECT_TRUE(renderer.readBack().empty());
 }

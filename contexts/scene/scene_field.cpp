@@ -1,0 +1,37 @@
+#include "contexts/scene/scene_field.h"
+
+#include <epoxy/gl.h>
+
+#include "contexts/particles/sim_block.h"
+
+namespace sandstorm {
+
+SceneField::SceneField() : block_(gl::createBuffer()) {
+  glNamedBufferStorage(block_.id(), sizeof(SimBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
+void SceneField::set(const ParticleState& state, const FieldUpdate& field, float blend) {
+  environment_.setField(field.field, field.placement, field.next);
+  SimBlockInputs inputs;
+  environment_.describe(inputs);
+  inputs.state = &state;
+  inputs.step.fieldBlend = field.next ? blend : 0.0f;
+  SimBlock block;
+  fillSimBlock(inputs, block);
+  glNamedBufferSubData(block_.id(), 0, sizeof(block), &block);
+  has_ = field.field != nullptr;
+}
+
+SceneField::Binding::Binding(const SceneField& field, const ParticleState& state) {
+  GLint previous = 0;
+  glGetIntegeri_v(GL_UNIFORM_BUFFER_BINDING, 0, &previous);
+  previous_ = previous;
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, field.block_.id());
+  field.environment_.bind(state);
+}
+
+SceneField::Binding::~Binding() {
+  glBindBufferBase(GL_UNIFORM_BUFFER, 0, GLuint(previous_));
+}
+
+}  // namespace sandstorm

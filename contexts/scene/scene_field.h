@@ -1,0 +1,45 @@
+// SceneField: the field as the scene's own passes read it (streamlines, the
+// slice): a copy of the grid on the GPU (a 3D texture, ParticleEnvironment)
+// and a SimBlock describing it (placement, strength, blend, integrator), so
+// their shaders sample it with particle_physics.glsl's fieldAt(), the
+// particles' very function. Independent of the particle backend and of a
+// shared simulation. Needs its GL context current for every call.
+#pragma once
+
+#include <memory>
+
+#include "contexts/gl/objects.h"
+#include "contexts/particles/particle_environment.h"
+#include "core/sim/frame_packet.h"
+
+namespace sandstorm {
+
+class SceneField {
+ public:
+  SceneField();
+
+  // Uploads a field it does not hold yet and refills the block.
+  void set(const ParticleState& state, const FieldUpdate& field, float blend);
+  bool has() const { return has_; }
+
+  // Binds the block (binding 0) and the grids for a pass; the destructor of
+  // the returned guard puts back the uniform buffer that was at binding 0
+  // (the particle update's).
+  class Binding {
+   public:
+    explicit Binding(const SceneField& field, const ParticleState& state);
+    ~Binding();
+    Binding(const Binding&) = delete;
+    Binding& operator=(const Binding&) = delete;
+
+   private:
+    int previous_ = 0;
+  };
+
+ private:
+  ParticleEnvironment environment_{GpuField::Storage::Texture};
+  gl::Buffer block_;
+  bool has_ = false;
+};
+
+}  // namespace sandstorm
