@@ -22,11 +22,14 @@ layout(std430, binding = 1) readonly restrict buffer InVelocityKind { vec4 inVel
 layout(std430, binding = 2) writeonly restrict buffer OutPositionLife { vec4 outPositionLife[]; };
 layout(std430, binding = 3) writeonly restrict buffer OutVelocityKind { vec4 outVelocityKind[]; };
 layout(std430, binding = 5) coherent volatile restrict buffer TileStatus { uint status[]; };
+// Trails (ParticleTrails): each survivor's input record, so its trail can follow it.
+layout(std430, binding = 6) writeonly restrict buffer TrailSource { uint trailSource[]; };
 
 layout(location = 0) uniform int uIn;
 layout(location = 1) uniform uint uBorn;
 layout(location = 2) uniform uint uCapacity;
 layout(location = 3) uniform uint uSpinLimit;  // reads of a predecessor's status before counting it here
+layout(location = 4) uniform bool uTrails;     // write trailSource
 
 const uint kAggregate = 0x40000000u;  // status: this tile's own count is published
 const uint kPrefix = 0x80000000u;     // status: the count of tiles 0..t is published
@@ -161,6 +164,7 @@ void main() {
     if (alive[k] && o < uCapacity) {
       outPositionLife[o] = p[k].positionLife;
       outVelocityKind[o] = p[k].velocityKind;
+      if (uTrails) trailSource[o] = tile * kTile + uint(k) * 256u + lid;
     }
   }
 }

@@ -202,6 +202,12 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
                               : texture ? *updateTextureProgram_
                                         : updateProgram_;
 
+  if (state.render.trailLength > 0) {
+    if (!trails_) trails_ = std::make_unique<ParticleTrails>();
+    trails_->prepare(capacity_, state.render.trailLength);
+  } else {
+    trails_.reset();
+  }
   const BufferSet& in = sets_[std::size_t(current_)];
   const BufferSet& out = sets_[std::size_t(1 - current_)];
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInPosition, in.positionLife.id());
@@ -230,6 +236,7 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   glProgramUniform1ui(update.id(), 1, born);
   glProgramUniform1ui(update.id(), 2, std::uint32_t(capacity_));
   glProgramUniform1ui(update.id(), 3, spinLimit_);
+  glProgramUniform1i(update.id(), 4, trails_ ? 1 : 0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, control_.id());
   glDispatchComputeIndirect(kDispatchOffset);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
@@ -237,6 +244,7 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   // Drawing, the next update and the count's copy all read what this wrote.
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
                   GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
+  if (trails_) trails_->advance(out.positionLife.id(), born, 1 - current_);
   const std::size_t slot = std::size_t(updates_ % kHistory);
   glCopyNamedBufferSubData(control_.id(), history_.id(), kCountOffset + (1 - current_) * 4,
                            GLintptr(slot * sizeof(std::uint32_t)), sizeof(std::uint32_t));
@@ -262,7 +270,14 @@ ParticleBackend::Records ParticleComputeUpdate::records() const {
           control_.id(),
           std::uint32_t(kCountOffset + current_ * 4),
           0,
-          std::int64_t(kDrawOffset + current_ * 16)};
+          std::int64_t(kDrawOffset + current_ * 16),
+          trails_ ? trails_->ring() : 0u,
+          trails_ ? trails_->length() : 0,
+          trails_ ? trails_->head() : 0};
+}
+
+std::vector<std::vector<glm::vec3>> ParticleComputeUpdate::readBackTrails() const {
+  return trails_ ? trails_->readBack(liveCount()) : std::vector<std::vector<glm::vec3>>{};
 }
 
 std::size_t ParticleComputeUpdate::liveCount() const {

@@ -33,6 +33,7 @@
 #include "contexts/gl/program.h"
 #include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_environment.h"
+#include "contexts/particles/particle_trails.h"
 #include "core/config/gpu_tuning.h"
 #include "core/sim/emission_budget.h"
 
@@ -60,6 +61,8 @@ class ParticleComputeUpdate final : public ParticleBackend {
   std::size_t liveCount() const override;
   std::size_t lateCount() const override { return lateCount_; }
   std::vector<Particle> readBack() const override;
+  // The trails of the records readBack() returns, newest first (tests); empty without trails.
+  std::vector<std::vector<glm::vec3>> readBackTrails() const;
   double lastFieldUploadMs() const override { return environment_.lastUploadMs(); }
   const char* name() const override { return "compute"; }
 
@@ -92,6 +95,7 @@ class ParticleComputeUpdate final : public ParticleBackend {
   std::uint32_t tile_;  // records per tile
 
   ParticleEnvironment environment_;
+  std::unique_ptr<ParticleTrails> trails_;  // while render.trail_length > 0
 
   EmissionBudget budget_;
   std::uint64_t updates_ = 0;

@@ -99,3 +99,18 @@ void ParticleSystem::composite(const ViewTargets& targets, std::uint32_t destina
 }
 
 }  // namespace sandstorm
+
+namespace sandstorm {
+
+void ParticleSystem::drawTrails() const {
+  if (state_.render.trailLength < 2) return;
+  const ParticleBackend::Records records = update_->records();
+  if (records.trails == 0 && !trailsWarned_) {
+    log::warn("render.trail_length ", state_.render.trailLength, ": the ", update_->name(),
+              " backend keeps no trails; run.backend = \"compute\" does");
+    trailsWarned_ = true;
+  }
+  trails_.draw(records, update_->capacity());
+}
+
+}  // namespace sandstorm

@@ -13,6 +13,7 @@
 #include "contexts/particles/particle_post.h"
 #include "contexts/particles/particle_render.h"
 #include "contexts/particles/particle_splat.h"
+#include "contexts/particles/trail_renderer.h"
 #include "core/cave/view.h"
 #include "core/config/gpu_tuning.h"
 #include "core/sim/frame_packet.h"
@@ -63,6 +64,9 @@ class ParticleSystem {
   // at the field's centre cover at most render.splat_pixels pixels).
   bool splats(const View* view, glm::ivec2 size) const;
   void composite(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const;
+  // The particles' trails (render.trail_length) into the bound scene
+  // framebuffer, with the view and render blocks bound.
+  void drawTrails() const;
 
   const ParticleState& state() const { return state_; }
   const ParticleBackend& update() const { return *update_; }
@@ -76,6 +80,8 @@ class ParticleSystem {
   ParticleRender render_;
   ParticleSplat splat_;
   ParticlePost post_;
+  TrailRenderer trails_;
+  mutable bool trailsWarned_ = false;  // a backend without trails was asked for them
   std::shared_ptr<const FieldUpdate> field_;
   std::uint32_t frame_ = 0;
 };

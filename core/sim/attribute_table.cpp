@@ -171,6 +171,10 @@ std::vector<AttributeInfo> makeEntries() {
                     RENDER(colorMax)));
   v.push_back(entry("render.color_log", T::Bool, 0, 1, "",
                     "Logarithmic colour scale (for positive quantities)", RENDER(colorLog)));
+  v.push_back(entry("render.trail_length", T::Int, 0, 64, "frames",
+                    "Trails: the last positions each particle keeps, drawn as fading lines behind "
+                    "it (0: none; the compute backend)",
+                    RENDER(trailLength)));
   v.push_back(entry("render.legend", T::Bool, 0, 1, "",
                     "Show the colour legend on the legend's wall (the menu always shows it)",
                     RENDER(legend)));

@@ -81,6 +81,7 @@ struct RenderSettings {
   float colorMax = 1.0f;
   bool colorLog = false;
   bool legend = false;  // show the colour bar (the menu always has one)
+  int trailLength = 0;  // positions each particle's trail keeps (0: no trails; compute backend)
 };
 
 }  // namespace sandstorm

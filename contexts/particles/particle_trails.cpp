@@ -1,0 +1,70 @@
+#include "contexts/particles/particle_trails.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+
+#include "core/util/error.h"
+
+namespace sandstorm {
+
+ParticleTrails::ParticleTrails() : program_(std::vector<std::string>{"trail_update.comp"}) {}
+
+void ParticleTrails::prepare(std::size_t capacity, int length) {
+  length = std::clamp(length, 1, kMaxLength);
+  if (capacity != capacity_ || length != length_) {
+    const GLsizeiptr ringBytes = GLsizeiptr(capacity) * length * GLsizeiptr(sizeof(glm::vec4));
+    glGetError();
+    source_ = gl::createBuffer();
+    glNamedBufferStorage(source_.id(), GLsizeiptr(capacity) * 4, nullptr, 0);
+    for (gl::Buffer& ring : rings_) {
+      ring = gl::createBuffer();
+      glNamedBufferStorage(ring.id(), ringBytes, nullptr, 0);
+    }
+    if (glGetError() == GL_OUT_OF_MEMORY)
+      throw Error(concat("render.trail_length ", length, ": ", capacity, " particles' trails need ",
+                         ringBytes * 2 / (1 << 20), " MiB the GPU does not have"));
+    capacity_ = capacity;
+    length_ = length;
+    fresh_ = true;
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, source_.id());
+}
+
+void ParticleTrails::advance(std::uint32_t positions, std::uint32_t born, int set) {
+  const int next = 1 - current_;
+  head_ = fresh_ ? 0 : (head_ + 1) % length_;
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, positions);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, source_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, rings_[std::size_t(current_)].id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, rings_[std::size_t(next)].id());
+  program_.use();
+  const GLuint groups = GLuint((capacity_ + 255) / 256);
+  const GLuint row = std::min<GLuint>(groups, 32768u);
+  glProgramUniform1i(program_.id(), 0, set);
+  glProgramUniform1ui(program_.id(), 1, born);
+  glProgramUniform1i(program_.id(), 2, length_);
+  glProgramUniform1i(program_.id(), 3, head_);
+  glProgramUniform1i(program_.id(), 4, fresh_ ? 1 : 0);
+  glProgramUniform1ui(program_.id(), 5, row);
+  glDispatchCompute(row, (groups + row - 1) / row, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  current_ = next;
+  fresh_ = false;
+}
+
+std::vector<std::vector<glm::vec3>> ParticleTrails::readBack(std::size_t count) const {
+  std::vector<glm::vec4> slots(count * std::size_t(length_));
+  if (!slots.empty())
+    glGetNamedBufferSubData(ring(), 0, GLsizeiptr(slots.size() * sizeof(glm::vec4)), slots.data());
+  std::vector<std::vector<glm::vec3>> trails(count);
+  for (std::size_t i = 0; i < count; ++i)
+    for (int j = 0; j < length_; ++j) {
+      const glm::vec4 slot =
+          slots[i * std::size_t(length_) + std::size_t((head_ - j + length_) % length_)];
+      if (slot.w > 0.5f) trails[i].push_back(glm::vec3(slot));
+    }
+  return trails;
+}
+
+}  // namespace sandstorm
