@@ -21,6 +21,7 @@ struct AppOptions {
   int screenshotEvery = 0;  // also every N frames (0: only the last)
   std::optional<std::filesystem::path> dumpParticles;
   std::optional<std::filesystem::path> dumpStreamlines;  // the last frame's streamlines (.vtp)
+  std::optional<std::filesystem::path> dumpTrails;       // the last frame's trails (.vtp)
   std::vector<std::string> sets;  // "key=value" attribute overrides
   bool headless = false;          // force offscreen walls
   std::optional<std::filesystem::path>

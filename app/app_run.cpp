@@ -294,6 +294,25 @@ void AppRun::dumpStreamlines(const WallRenderer& wall, const FramePacket& packet
             state.streamlines.enabled ? "" : " (streamlines.enabled is off: not drawn)");
 }
 
+// The particles' trails as polylines, each ending at its particle.
+void AppRun::dumpTrails(const WallRenderer& wall) {
+  const std::vector<Particle> particles = wall.particles().update().readBack();
+  const std::vector<std::vector<glm::vec3>> trails = wall.particles().readBackTrails();
+  std::vector<Streamline> lines;
+  for (std::size_t i = 0; i < trails.size() && i < particles.size(); ++i) {
+    if (trails[i].size() < 2) continue;
+    Streamline line;
+    for (auto it = trails[i].rbegin(); it != trails[i].rend(); ++it)
+      line.points.push_back({*it, particles[i].velocity()});
+    line.seedIndex = int(line.points.size()) - 1;  // arc length 0 at the particle
+    lines.push_back(std::move(line));
+  }
+  writeStreamlinesVtp(lines, wall.particles().state().render.colorBy, *options_.dumpTrails,
+                      "--dump-trails");
+  log::info("wrote ", lines.size(), " trails to ", options_.dumpTrails->string(),
+            wall.particles().state().render.trailLength > 0 ? "" : " (render.trail_length is 0)");
+}
+
 void AppRun::hookWalls() {
   for (std::size_t i = 0; i < walls_.size(); ++i) {
     const bool first = i == 0;
@@ -312,6 +331,7 @@ void AppRun::hookWalls() {
         log::info("wrote ", particles.size(), " particles to ", options_.dumpParticles->string());
       }
       if (first && last && options_.dumpStreamlines) dumpStreamlines(wall, packet);
+      if (first && last && options_.dumpTrails) dumpTrails(wall);
       if (cluster_)
         cluster_->drawn(int(i), packet.frame);  // the main thread holds the swap for every rank
     });

@@ -46,6 +46,7 @@ class AppRun {
   void openMenu();
   void openLegend();
   void dumpStreamlines(const WallRenderer& wall, const FramePacket& packet);
+  void dumpTrails(const WallRenderer& wall);
   void hookWalls();
   void runOneProcess();
   void runCluster();

@@ -36,7 +36,10 @@ int main(int argc, char** argv) {
       ->check(CLI::NonNegativeNumber);
   cli.add_option("--dump-particles", dumpPath,
                  "Write the last frame's particles as VTK PolyData (.vtp)");
-  std::string streamlinePath;
+  std::string streamlinePath, trailPath;
+  cli.add_option("--dump-trails", trailPath,
+                 "Write the last frame's particle trails (render.trail_length) as VTK PolyData "
+                 "polylines (.vtp)");
   cli.add_option("--dump-streamlines", streamlinePath,
                  "Write the last frame's streamlines (the [streamlines] rake) as VTK PolyData "
                  "polylines (.vtp)");
@@ -109,6 +112,13 @@ int main(int argc, char** argv) {
       return 2;
     }
     options.dumpStreamlines = streamlinePath;
+  }
+  if (!trailPath.empty()) {
+    if (!trailPath.ends_with(".vtp")) {
+      log::error("--dump-trails ", trailPath, ": expected a .vtp file name");
+      return 2;
+    }
+    options.dumpTrails = trailPath;
   }
 #ifdef SANDSTORM_MPI
   if (!fieldFile.empty() && (cluster || launchedByMpirun())) {

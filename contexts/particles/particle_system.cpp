@@ -2,6 +2,7 @@
 
 #include "contexts/particles/particle_compute_update.h"
 #include "contexts/particles/particle_geo_update.h"
+#include "contexts/particles/particle_trails.h"
 #include "contexts/particles/shared_particles.h"
 #include "contexts/render/view_targets.h"
 #include "core/sim/capacity.h"
@@ -111,6 +112,11 @@ void ParticleSystem::drawTrails() const {
     trailsWarned_ = true;
   }
   trails_.draw(records, update_->capacity());
+}
+
+std::vector<std::vector<glm::vec3>> ParticleSystem::readBackTrails() const {
+  const ParticleBackend::Records r = update_->records();
+  return ParticleTrails::read(r.trails, r.trailLength, r.trailHead, update_->liveCount());
 }
 
 }  // namespace sandstorm

@@ -67,6 +67,8 @@ class ParticleSystem {
   // The particles' trails (render.trail_length) into the bound scene
   // framebuffer, with the view and render blocks bound.
   void drawTrails() const;
+  // The live particles' trails, newest point first (waits for the GPU: dumps, tests).
+  std::vector<std::vector<glm::vec3>> readBackTrails() const;
 
   const ParticleState& state() const { return state_; }
   const ParticleBackend& update() const { return *update_; }

@@ -54,14 +54,20 @@ void ParticleTrails::advance(std::uint32_t positions, std::uint32_t born, int se
 }
 
 std::vector<std::vector<glm::vec3>> ParticleTrails::readBack(std::size_t count) const {
-  std::vector<glm::vec4> slots(count * std::size_t(length_));
+  return read(ring(), length_, head_, count);
+}
+
+std::vector<std::vector<glm::vec3>> ParticleTrails::read(std::uint32_t ring, int length, int head,
+                                                         std::size_t count) {
+  if (ring == 0 || length <= 0) return {};
+  std::vector<glm::vec4> slots(count * std::size_t(length));
   if (!slots.empty())
-    glGetNamedBufferSubData(ring(), 0, GLsizeiptr(slots.size() * sizeof(glm::vec4)), slots.data());
+    glGetNamedBufferSubData(ring, 0, GLsizeiptr(slots.size() * sizeof(glm::vec4)), slots.data());
   std::vector<std::vector<glm::vec3>> trails(count);
   for (std::size_t i = 0; i < count; ++i)
-    for (int j = 0; j < length_; ++j) {
+    for (int j = 0; j < length; ++j) {
       const glm::vec4 slot =
-          slots[i * std::size_t(length_) + std::size_t((head_ - j + length_) % length_)];
+          slots[i * std::size_t(length) + std::size_t((head - j + length) % length)];
       if (slot.w > 0.5f) trails[i].push_back(glm::vec3(slot));
     }
   return trails;

@@ -38,6 +38,9 @@ class ParticleTrails {
   int head() const { return head_; }
   // Record i's trail, newest first, the slots holding a position (tests).
   std::vector<std::vector<glm::vec3>> readBack(std::size_t count) const;
+  // The same from any context that shares the ring buffer (waits for the GPU).
+  static std::vector<std::vector<glm::vec3>> read(std::uint32_t ring, int length, int head,
+                                                  std::size_t count);
 
  private:
   gl::Program program_;

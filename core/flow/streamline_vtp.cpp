@@ -33,7 +33,7 @@ std::string componentName(ColorQuantity q) {
 }  // namespace
 
 void writeStreamlinesVtp(std::span<const Streamline> lines, ColorQuantity colorBy,
-                         const std::filesystem::path& path) {
+                         const std::filesystem::path& path, const std::string& what) {
   std::size_t points = 0;
   for (const Streamline& l : lines)
     points += l.points.size();
@@ -97,7 +97,7 @@ void writeStreamlinesVtp(std::span<const Streamline> lines, ColorQuantity colorB
   });
   out << "      </Lines>\n    </Piece>\n  </PolyData>\n</VTKFile>\n";
   const std::string text = out.str();
-  writeFile(path, std::span<const char>(text.data(), text.size()), "--dump-streamlines");
+  writeFile(path, std::span<const char>(text.data(), text.size()), what);
 }
 
 }  // namespace sandstorm

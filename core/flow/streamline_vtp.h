@@ -2,19 +2,23 @@
 // ParaView and VTK open: one line cell per streamline, point data "velocity"
 // (vector, m/s), "speed" (m/s), "arc_length" (m from the seed, negative
 // behind it) and, when the colour quantity is a velocity component, that
-// component under its attribute name ("velocity_z").
+// component under its attribute name ("velocity_z"). Particles' trails are
+// written the same way (app: --dump-trails), each a line ending at its
+// particle, with the particle's velocity along it.
 #pragma once
 
 #include <filesystem>
 #include <span>
+#include <string>
 
 #include "core/color/color_scale.h"
 #include "core/flow/streamline_tracer.h"
 
 namespace sandstorm {
 
-// Throws Error "--dump-streamlines path: reason" when it cannot be written.
+// Throws Error "`what` path: reason" when it cannot be written.
 void writeStreamlinesVtp(std::span<const Streamline> lines, ColorQuantity colorBy,
-                         const std::filesystem::path& path);
+                         const std::filesystem::path& path,
+                         const std::string& what = "--dump-streamlines");
 
 }  // namespace sandstorm

@@ -47,3 +47,32 @@ TEST(Legend, TheMarkedWallShowsTheMapsColourBarInItsCornerAndNoOtherWallChanges)
 
 }  // namespace
 }  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+// Trails and streamlines leave the run as .vtp polylines (the writer's own
+// test reads them back with VTK).
+TEST(FlowExport, TrailsAndStreamlinesAreWrittenAsPolylines) {
+  const auto dir = test::scratchDir("flow-export");
+  const auto r = runSandstorm(
+      "--config tests/data/legend.toml --walls front --frames 12 "
+      "--set render.trail_length=4 --set streamlines.enabled=true "
+      "--dump-trails " +
+      (dir / "trails.vtp").string() + " --dump-streamlines " + (dir / "lines.vtp").string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  for (const char* name : {"trails.vtp", "lines.vtp"}) {
+    const std::string text = test::readBytes(dir / name);
+    EXPECT_NE(text.find("<Lines>"), std::string::npos) << name;
+    EXPECT_NE(text.find("Name=\"arc_length\""), std::string::npos) << name;
+    EXPECT_EQ(text.find("NumberOfLines=\"0\""), std::string::npos) << name << ": no lines";
+  }
+  const auto bad = runSandstorm("--config tests/data/legend.toml --dump-trails " +
+                                (dir / "trails.txt").string());
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.output.find("--dump-trails"), std::string::npos) << bad.output;
+  EXPECT_NE(bad.output.find("expected a .vtp file name"), std::string::npos) << bad.output;
+}
+
+}  // namespace
+}  // namespace sandstorm
