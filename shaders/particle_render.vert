@@ -13,7 +13,7 @@ out float vColor;  // the colour map's coordinate
 void main() {
   vCenter = inPositionLife.xyz;
   vAge = clamp(1.0 - inPositionLife.w / max(inVelocityKind.w, 1e-6), 0.0, 1.0);
-  vColor = colorCoordinate(vAge, inVelocityKind.xyz);
+  vColor = colorCoordinate(vAge, inVelocityKind.xyz, inPositionLife.xyz);
 #ifdef POINTS
   gl_Position = view.viewProjection * vec4(vCenter, 1.0);
   float pixels = look.params.x * view.viewport.w * view.projection[1][1] / (2.0 * max(gl_Position.w, 1e-4));

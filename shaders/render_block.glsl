@@ -7,13 +7,54 @@ layout(std140, binding = 2) uniform RenderBlock {
   vec4 params;          // x: size (m), y: softness (m), z: 1 for billboards, 0 for points
   vec4 colorScale;      // x: quantity (ColorQuantity), y: value at t = 0, z: at t = 1, w: 1 log scale
   vec4 colorTable[kColorSamples];  // the colour map's rgb at t = i / (kColorSamples - 1)
+  // The vorticity grids' place (units 5 and 6), as the particles' field's.
+  vec4 fieldMin;
+  vec4 fieldIndexScale;
+  ivec4 fieldDims;
+  vec4 placementOffset;  // xyz, w: scale
+  vec4 placementRotation[3];
+  vec4 vorticity;  // x: blend, y: 1 with a next frame, z: |strength|, w: 1 with a grid
 } look;
 
-// The colour map's coordinate for a particle: ColorScale::coordinate of
-// colorValue (core/color/color_scale.h), in the same operations.
-float colorCoordinate(float age, vec3 velocity) {
+layout(binding = 5) uniform sampler3D uVorticity;      // R: |curl| (VectorField x)
+layout(binding = 6) uniform sampler3D uVorticityNext;  // a time-varying field's next frame
+
+// The vorticity the particles feel at x: VectorField::sample of the grid at
+// the placement's local point (as fieldCell() and trilinear() in
+// particle_physics.glsl), blended, times |strength| (core/field/vorticity.h).
+float vorticityGrid(sampler3D grid, ivec3 i0, ivec3 i1, vec3 f) {
+  float c000 = texelFetch(grid, ivec3(i0.x, i0.y, i0.z), 0).x, c100 = texelFetch(grid, ivec3(i1.x, i0.y, i0.z), 0).x;
+  float c010 = texelFetch(grid, ivec3(i0.x, i1.y, i0.z), 0).x, c110 = texelFetch(grid, ivec3(i1.x, i1.y, i0.z), 0).x;
+  float c001 = texelFetch(grid, ivec3(i0.x, i0.y, i1.z), 0).x, c101 = texelFetch(grid, ivec3(i1.x, i0.y, i1.z), 0).x;
+  float c011 = texelFetch(grid, ivec3(i0.x, i1.y, i1.z), 0).x, c111 = texelFetch(grid, ivec3(i1.x, i1.y, i1.z), 0).x;
+  float c00 = c000 + (c100 - c000) * f.x, c10 = c010 + (c110 - c010) * f.x;
+  float c01 = c001 + (c101 - c001) * f.x, c11 = c011 + (c111 - c011) * f.x;
+  float c0 = c00 + (c10 - c00) * f.y, c1 = c01 + (c11 - c01) * f.y;
+  return c0 + (c1 - c0) * f.z;
+}
+
+float vorticityAt(vec3 x) {
+  if (look.vorticity.w == 0.0) return 0.0;
+  mat3 rotation = mat3(look.placementRotation[0].xyz, look.placementRotation[1].xyz, look.placementRotation[2].xyz);
+  vec3 local = (transpose(rotation) * (x - look.placementOffset.xyz)) * (1.0 / look.placementOffset.w);
+  ivec3 dims = look.fieldDims.xyz;
+  vec3 u = clamp((local - look.fieldMin.xyz) * look.fieldIndexScale.xyz, vec3(0.0), vec3(dims - 1));
+  ivec3 i0 = min(ivec3(floor(u)), max(dims - 2, ivec3(0)));
+  ivec3 i1 = min(i0 + 1, dims - 1);
+  vec3 f = u - vec3(i0);
+  float w = vorticityGrid(uVorticity, i0, i1, f);
+  if (look.vorticity.y != 0.0) w = w + (vorticityGrid(uVorticityNext, i0, i1, f) - w) * look.vorticity.x;
+  return look.vorticity.z * w;
+}
+
+// The colour map's coordinate for a particle at `position`: ColorScale::coordinate
+// of colorValue (core/color/color_scale.h), in the same operations.
+float colorCoordinate(float age, vec3 velocity, vec3 position) {
   int quantity = int(look.colorScale.x);
-  float v = quantity == 0 ? age : quantity == 1 ? length(velocity) : velocity[clamp(quantity - 2, 0, 2)];
+  float v = quantity == 0   ? age
+            : quantity == 1 ? length(velocity)
+            : quantity == 5 ? vorticityAt(position)
+                            : velocity[clamp(quantity - 2, 0, 2)];
   float lo = look.colorScale.y, hi = look.colorScale.z;
   if (look.colorScale.w > 0.5) {
     v = log(max(v, lo));

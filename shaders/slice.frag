@@ -16,5 +16,5 @@ void main() {
       (!cellValid(false, local) || (sim.fieldBlend.y != 0.0 && !cellValid(true, local))))
     discard;
   vec3 f = fieldAt(vPosition);
-  fragColor = vec4(colorAt(colorCoordinate(0.0, f)), uOpacity);
+  fragColor = vec4(colorAt(colorCoordinate(0.0, f, vPosition)), uOpacity);
 }

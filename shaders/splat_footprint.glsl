@@ -40,7 +40,7 @@ bool splatCentre(vec3 center, out uvec3 where) {
 // A record's last word: the age and the colour map's coordinate.
 uint splatLook(vec4 positionLife, vec4 velocityKind) {
   float age = clamp(1.0 - positionLife.w / max(velocityKind.w, 1e-6), 0.0, 1.0);
-  float color = colorCoordinate(age, velocityKind.xyz);
+  float color = colorCoordinate(age, velocityKind.xyz, positionLife.xyz);
   return uint(round(age * 65535.0)) | uint(round(color * 65535.0)) << 16;
 }
 

@@ -19,7 +19,7 @@ void main() {
   bool valid = uint(k + 1) < counts[line];
   int at = (line * (uSteps + 1) + (valid ? k + end : 0)) * 2;
   vPosition = points[at].xyz;
-  vColor = colorCoordinate(0.0, points[at + 1].xyz);
+  vColor = colorCoordinate(0.0, points[at + 1].xyz, points[at].xyz);
   vValid = valid ? 1.0 : 0.0;
 #ifdef LINES
   gl_Position = valid ? view.viewProjection * vec4(vPosition, 1.0) : vec4(2.0, 2.0, 2.0, 1.0);

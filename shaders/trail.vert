@@ -28,7 +28,7 @@ void main() {
   vec4 slot = ring[o * uint(uLength) + uint(end == 0 ? newer : older)];
   vec4 pl = valid ? positionLife[o] : vec4(0.0), vk = valid ? velocityKind[o] : vec4(1.0);
   float age = clamp(1.0 - pl.w / max(vk.w, 1e-6), 0.0, 1.0);
-  vColor = colorCoordinate(age, vk.xyz);
+  vColor = colorCoordinate(age, vk.xyz, pl.xyz);
   // Fading towards the trail's end, from the particle's own opacity.
   float along = (float(j + end)) / float(segments);
   vAlpha = mix(look.colorBirth.a, look.colorDeath.a, age) * (1.0 - along);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <climits>
 
+#include "core/field/vorticity.h"
 #include "core/sim/frame_packet_codec.h"
 #include "core/util/byte_reader.h"
 #include "core/util/byte_writer.h"
@@ -172,12 +173,19 @@ std::shared_ptr<const FramePacket> FrameBroadcaster::receive() {
           if (packet->fieldUpdate) {
             const std::uint64_t used[2] = {refs.field, refs.next};
             store_.use(used, incoming_);
-            packet->fieldUpdate = std::make_shared<const FieldUpdate>(
-                FieldUpdate{.field = store_.find(refs.field),
-                            .placement = packet->fieldUpdate->placement,
-                            .next = store_.find(refs.next),
-                            .equation = packet->fieldUpdate->equation,
-                            .range = packet->fieldUpdate->range});
+            FieldUpdate update{.field = store_.find(refs.field),
+                               .placement = packet->fieldUpdate->placement,
+                               .next = store_.find(refs.next),
+                               .equation = packet->fieldUpdate->equation,
+                               .range = packet->fieldUpdate->range};
+            if (refs.vorticity && update.field) {
+              update.vorticity =
+                  std::make_shared<const VectorField>(vorticityMagnitude(*update.field));
+              if (update.next)
+                update.nextVorticity =
+                    std::make_shared<const VectorField>(vorticityMagnitude(*update.next));
+            }
+            packet->fieldUpdate = std::make_shared<const FieldUpdate>(std::move(update));
           }
           incoming_.clear();
           if (packet->frame != nextFrame_)

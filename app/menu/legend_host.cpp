@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include "app/menu/legend_widget.h"
+#include "core/sim/state_color_scale.h"
 
 namespace sandstorm {
 
@@ -17,8 +18,7 @@ void LegendHost::frame(float dt) {
   if (state.render.legend) {
     const auto field = main_.field();
     const RenderSettings& r = state.render;
-    const ColorScale scale = resolveColorScale(r.colorBy, r.colorRange, r.colorMin, r.colorMax,
-                                               r.colorLog, field ? field->range : FieldRange{});
+    const ColorScale scale = stateColorScale(state, field.get());
     // Large enough to read on a CAVE wall from its middle: a quarter of the
     // wall's width, text one and a half times the menu's.
     const float width = std::clamp(0.25f * float(wallSize_.x), 160.0f, 640.0f);

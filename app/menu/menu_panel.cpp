@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "app/menu/legend_widget.h"
+#include "core/sim/state_color_scale.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
 
@@ -73,9 +74,7 @@ void MenuPanel::build(const MenuStats& stats) {
   }
   if (ImGui::CollapsingHeader("Look")) {
     const RenderSettings& r = state.render;
-    const auto field = main_.field();
-    drawColorLegend(resolveColorScale(r.colorBy, r.colorRange, r.colorMin, r.colorMax, r.colorLog,
-                                      field ? field->range : FieldRange{}),
+    drawColorLegend(stateColorScale(state, main_.field().get()),
                     ColorMap(r.colorMap, r.colorBirth, r.colorDeath), 320.0f);
     for (const AttributeInfo& info : AttributeTable::instance().entries())
       if (info.key.starts_with("render.")) attributeWidget(info, info.key, state);

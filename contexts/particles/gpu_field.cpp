@@ -116,4 +116,8 @@ void TerrainTexture::bind(int unit) const {
   glBindTextureUnit(GLuint(unit), texture_.id());
 }
 
+void GpuField::bindTexture(int unit) const {
+  glBindTextureUnit(GLuint(unit), texture_.id());
+}
+
 }  // namespace sandstorm

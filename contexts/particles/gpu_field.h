@@ -43,6 +43,8 @@ class GpuField {
   // Texture: units 0 (current) and 2 (next); buffer: storage-buffer bindings
   // 14 and 15 (shaders/sim_block.glsl).
   void bind(Slot slot) const;
+  // A texture-stored grid on any texture unit (the vorticity grids: units 5 and 6).
+  void bindTexture(int unit) const;
   double lastUploadMs() const { return lastUploadMs_; }
 
  private:

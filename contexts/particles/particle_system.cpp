@@ -46,6 +46,7 @@ void ParticleSystem::setTerrain(std::shared_ptr<const HeightMap> terrain) {
 }
 
 void ParticleSystem::advance(const FramePacket& packet) {
+  fieldBlend_ = packet.fieldBlend;
   if (packet.reset) update_->clear();
   // The main context validated every change; a replica applies them as they come.
   for (const StateChange& change : packet.changes)

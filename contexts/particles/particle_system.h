@@ -73,6 +73,8 @@ class ParticleSystem {
   const ParticleState& state() const { return state_; }
   const ParticleBackend& update() const { return *update_; }
   std::shared_ptr<const FieldUpdate> field() const { return field_; }
+  // The last packet's weight towards a time-varying field's next frame.
+  float fieldBlend() const { return fieldBlend_; }
   std::uint32_t frame() const { return frame_; }
 
  private:
@@ -86,6 +88,7 @@ class ParticleSystem {
   mutable bool trailsWarned_ = false;  // a backend without trails was asked for them
   std::shared_ptr<const FieldUpdate> field_;
   std::uint32_t frame_ = 0;
+  float fieldBlend_ = 0.0f;
 };
 
 }  // namespace sandstorm

@@ -1,5 +1,7 @@
 #include "contexts/render/frame_blocks.h"
 
+#include "core/sim/state_color_scale.h"
+
 namespace sandstorm {
 
 ViewBlock makeViewBlock(const View& v, glm::ivec2 size) {
@@ -13,21 +15,32 @@ ViewBlock makeViewBlock(const View& v, glm::ivec2 size) {
   return b;
 }
 
-RenderBlock makeRenderBlock(const RenderSettings& s, const FieldRange& field) {
-  RenderBlock b;
+RenderBlock makeRenderBlock(const ParticleState& state, const FieldUpdate* field, float blend) {
+  const RenderSettings& s = state.render;
+  RenderBlock b{};
   b.colorBirth = glm::vec4(s.colorBirth, s.opacityBirth);
   b.colorDeath = glm::vec4(s.colorDeath, s.opacityDeath);
   const float len = glm::length(s.lightDirection);
   const glm::vec3 light = len > 0.0f ? s.lightDirection / len : glm::vec3(0, 0, 1);
   b.lightDirection = glm::vec4(light, s.ambient);
   b.params = glm::vec4(s.size, s.softness, s.mode != RenderMode::Points ? 1.0f : 0.0f, 0.0f);
-  const ColorScale scale =
-      resolveColorScale(s.colorBy, s.colorRange, s.colorMin, s.colorMax, s.colorLog, field);
+  const ColorScale scale = stateColorScale(state, field);
   b.colorScale =
       glm::vec4(float(int(scale.quantity)), scale.low, scale.high, scale.log ? 1.0f : 0.0f);
   const ColorMap::Table table = ColorMap(s.colorMap, s.colorBirth, s.colorDeath).gpuTable();
   for (std::size_t i = 0; i < table.size(); ++i)
     b.colorTable[i] = glm::vec4(table[i], 1.0f);
+  if (field && field->vorticity) {
+    const VectorField& w = *field->vorticity;
+    b.fieldMin = glm::vec4(w.bounds().min, 0.0f);
+    b.fieldIndexScale = glm::vec4(w.indexScale(), 0.0f);
+    b.fieldDims = glm::ivec4(w.dims(), 1);
+    b.placementOffset = glm::vec4(field->placement.offset, field->placement.scale);
+    for (int c = 0; c < 3; ++c)
+      b.placementRotation[c] = glm::vec4(field->placement.rotation[c], 0.0f);
+    b.vorticity = glm::vec4(field->nextVorticity ? blend : 0.0f, field->nextVorticity ? 1.0f : 0.0f,
+                            std::abs(state.sim.fieldStrength), 1.0f);
+  }
   return b;
 }
 

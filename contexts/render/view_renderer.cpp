@@ -31,11 +31,12 @@ void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, 
   targets_.resize(size);
   const ViewBlock vb = makeViewBlock(view, size);
   const auto field = particles.field();
-  const RenderBlock rb = makeRenderBlock(particles.state().render, field ? field->range : FieldRange{});
+  const RenderBlock rb = makeRenderBlock(particles.state(), field.get(), particles.fieldBlend());
   glNamedBufferSubData(viewBlock_.id(), 0, sizeof(vb), &vb);
   glNamedBufferSubData(renderBlock_.id(), 0, sizeof(rb), &rb);
   glBindBufferBase(GL_UNIFORM_BUFFER, 1, viewBlock_.id());
   glBindBufferBase(GL_UNIFORM_BUFFER, 2, renderBlock_.id());
+  scene_.bindVorticity();  // texture units 5 and 6, for colouring by vorticity
 
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.sceneFramebuffer());
   glViewport(0, 0, size.x, size.y);

@@ -20,6 +20,13 @@ void SceneField::set(const ParticleState& state, const FieldUpdate& field, float
   fillSimBlock(inputs, block);
   glNamedBufferSubData(block_.id(), 0, sizeof(block), &block);
   has_ = field.field != nullptr;
+  if (field.vorticity) vorticity_.show(field.vorticity);
+  if (field.nextVorticity) nextVorticity_.show(field.nextVorticity);
+}
+
+void SceneField::bindVorticity() const {
+  if (vorticity_.holds()) vorticity_.bindTexture(5);
+  if (nextVorticity_.holds()) nextVorticity_.bindTexture(6);
 }
 
 SceneField::Binding::Binding(const SceneField& field, const ParticleState& state) {

@@ -21,6 +21,9 @@ class SceneField {
   // Uploads a field it does not hold yet and refills the block.
   void set(const ParticleState& state, const FieldUpdate& field, float blend);
   bool has() const { return has_; }
+  // The field's vorticity grids (FieldUpdate::vorticity), when it has them, on
+  // texture units 5 (current) and 6 (next): shaders/render_block.glsl's vorticityAt().
+  void bindVorticity() const;
 
   // Binds the block (binding 0) and the grids for a pass; the destructor of
   // the returned guard puts back the uniform buffer that was at binding 0
@@ -39,6 +42,7 @@ class SceneField {
  private:
   ParticleEnvironment environment_{GpuField::Storage::Texture};
   gl::Buffer block_;
+  GpuField vorticity_{GpuField::Storage::Texture}, nextVorticity_{GpuField::Storage::Texture};
   bool has_ = false;
 };
 

@@ -93,7 +93,8 @@ void SceneRenderer::setFieldBox(std::optional<Box> bounds, const FieldPlacement&
 
 void SceneRenderer::updateFlow(const ParticleState& state, std::shared_ptr<const FieldUpdate> field,
                                float blend) {
-  if ((state.streamlines.enabled || state.slice.enabled) && field && field->field)
+  if ((state.streamlines.enabled || state.slice.enabled || field && field->vorticity) && field &&
+      field->field)
     sceneField_.set(state, *field, blend);
   streamlines_.update(state, field, blend);
   slice_.update(state, field.get());

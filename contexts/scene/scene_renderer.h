@@ -39,6 +39,7 @@ class SceneRenderer {
                   float blend);
   const StreamlineRenderer& streamlines() const { return streamlines_; }
   const SliceRenderer& slice() const { return slice_; }
+  void bindVorticity() const { sceneField_.bindVorticity(); }
   void draw() const;
 
  private:

@@ -23,7 +23,7 @@ float ColorScale::valueAt(float t) const {
   return low + t * (high - low);
 }
 
-float colorValue(const Particle& p, ColorQuantity q) {
+float colorValue(const Particle& p, ColorQuantity q, float vorticity) {
   switch (q) {
     case ColorQuantity::Age:
       return std::clamp(1.0f - p.life() / std::max(p.lifetime(), 1e-6f), 0.0f, 1.0f);
@@ -35,6 +35,8 @@ float colorValue(const Particle& p, ColorQuantity q) {
       return p.velocity().y;
     case ColorQuantity::VelocityZ:
       return p.velocity().z;
+    case ColorQuantity::Vorticity:
+      return vorticity;
   }
   return 0.0f;
 }
@@ -51,18 +53,24 @@ std::string_view quantityName(ColorQuantity q) {
       return "velocity y";
     case ColorQuantity::VelocityZ:
       return "velocity z";
+    case ColorQuantity::Vorticity:
+      return "vorticity";
   }
   return "";
 }
 
 std::string_view quantityUnit(ColorQuantity q) {
-  return q == ColorQuantity::Age ? "" : "m/s";
+  return q == ColorQuantity::Age ? "" : q == ColorQuantity::Vorticity ? "1/s" : "m/s";
 }
 
 ColorScale resolveColorScale(ColorQuantity quantity, ColorRange range, float fixedLow,
-                             float fixedHigh, bool log, const FieldRange& field) {
+                             float fixedHigh, bool log, const FieldRange& field, FieldFeel feel) {
   ColorScale s;
   s.quantity = quantity;
+  auto scaled = [&](float lo, float hi, float factor) {
+    s.low = std::min(lo * factor, hi * factor);
+    s.high = std::max(lo * factor, hi * factor);
+  };
   if (range == ColorRange::Fixed) {
     s.low = fixedLow;
     s.high = fixedHigh;
@@ -70,12 +78,12 @@ ColorScale resolveColorScale(ColorQuantity quantity, ColorRange range, float fix
     s.low = 0.0f;
     s.high = 1.0f;
   } else if (quantity == ColorQuantity::Speed) {
-    s.low = field.minSpeed;
-    s.high = field.maxSpeed;
+    scaled(field.minSpeed, field.maxSpeed, std::abs(feel.velocityFactor));
+  } else if (quantity == ColorQuantity::Vorticity) {
+    scaled(field.minVorticity, field.maxVorticity, std::abs(feel.strength));
   } else {
     const int axis = int(quantity) - int(ColorQuantity::VelocityX);
-    s.low = field.minVelocity[axis];
-    s.high = field.maxVelocity[axis];
+    scaled(field.minVelocity[axis], field.maxVelocity[axis], feel.velocityFactor);
   }
   if (log) {
     if (!(s.high > 0.0f)) {

@@ -14,7 +14,15 @@ namespace sandstorm {
 
 // What colours a particle. Age is the fraction of its life gone (0 at birth,
 // 1 at death); the others are its velocity's length or a component, in m/s.
-enum class ColorQuantity : int { Age = 0, Speed = 1, VelocityX = 2, VelocityY = 3, VelocityZ = 4 };
+// Vorticity is |curl| of the field the particles feel, at the particle (1/s).
+enum class ColorQuantity : int {
+  Age = 0,
+  Speed = 1,
+  VelocityX = 2,
+  VelocityY = 3,
+  VelocityZ = 4,
+  Vorticity = 5
+};
 
 // Where the scale's ends come from: the current field's range of the quantity
 // (as ParaView's "data range"; age: 0..1), or render.color_min/max.
@@ -33,15 +41,26 @@ struct ColorScale {
   float valueAt(float t) const;
 };
 
-// The quantity's value for a particle.
-float colorValue(const Particle& particle, ColorQuantity quantity);
+// The quantity's value for a particle; `vorticity`: the vorticity there
+// (only Vorticity reads it).
+float colorValue(const Particle& particle, ColorQuantity quantity, float vorticity = 0.0f);
 std::string_view quantityName(ColorQuantity quantity);  // "speed"
 std::string_view quantityUnit(ColorQuantity quantity);  // "m/s"; "" for age
 
-// The scale the walls use: ends from the field's range or the fixed ones; a
-// log scale with an end at or below 0 keeps three decades below the upper end
-// (or falls back to linear when the upper end is not above 0), saying so in `note`.
+// How the particles feel the field: velocity = velocityFactor * (rotated)
+// field value (sim.field_strength * the placement's scale), vorticity =
+// |strength| * the field's.
+struct FieldFeel {
+  float velocityFactor = 1.0f;
+  float strength = 1.0f;
+};
+
+// The scale the walls use: ends from the field's range (as the particles feel
+// it) or the fixed ones; a log scale with an end at or below 0 keeps three
+// decades below the upper end (or falls back to linear when the upper end is
+// not above 0), saying so in `note`.
 ColorScale resolveColorScale(ColorQuantity quantity, ColorRange range, float fixedLow,
-                             float fixedHigh, bool log, const FieldRange& field);
+                             float fixedHigh, bool log, const FieldRange& field,
+                             FieldFeel feel = {});
 
 }  // namespace sandstorm

@@ -5,7 +5,8 @@
 
 namespace sandstorm {
 
-FieldRange FieldRange::of(const VectorField& field) {
+FieldRange FieldRange::of(const VectorField& field, const glm::mat3& rotation,
+                          const VectorField* vorticity) {
   const auto values = field.values();
   const auto valid = field.validity();
   FieldRange r;
@@ -16,7 +17,7 @@ FieldRange FieldRange::of(const VectorField& field) {
   bool any = false;
   for (std::size_t i = 0; i < values.size(); ++i) {
     if (!valid.empty() && valid[i] == 0) continue;
-    const glm::vec3 v = values[i];
+    const glm::vec3 v = rotation * values[i];
     const float speed = glm::length(v);
     r.minSpeed = std::min(r.minSpeed, speed);
     r.maxSpeed = std::max(r.maxSpeed, speed);
@@ -24,7 +25,18 @@ FieldRange FieldRange::of(const VectorField& field) {
     r.maxVelocity = glm::max(r.maxVelocity, v);
     any = true;
   }
-  return any ? r : FieldRange{};
+  if (!any) return FieldRange{};
+  if (vorticity && vorticity->pointCount() == values.size()) {
+    r.minVorticity = std::numeric_limits<float>::max();
+    r.maxVorticity = 0.0f;
+    const auto w = vorticity->values();
+    for (std::size_t i = 0; i < w.size(); ++i) {
+      if (!valid.empty() && valid[i] == 0) continue;
+      r.minVorticity = std::min(r.minVorticity, w[i].x);
+      r.maxVorticity = std::max(r.maxVorticity, w[i].x);
+    }
+  }
+  return r;
 }
 
 }  // namespace sandstorm

@@ -149,11 +149,11 @@ std::vector<AttributeInfo> makeEntries() {
                     RENDER(splatPixels)));
   v.push_back(
       entry("render.field_box", T::Bool, 0, 1, "", "Outline the field's bounds", RENDER(fieldBox)));
-  v.push_back(enumEntry("render.color_by",
-                        {"age", "speed", "velocity_x", "velocity_y", "velocity_z"},
-                        "What colours a particle: its age (fraction of life) or its velocity's "
-                        "length or a component (m/s)",
-                        RENDER(colorBy)));
+  v.push_back(enumEntry(
+      "render.color_by", {"age", "speed", "velocity_x", "velocity_y", "velocity_z", "vorticity"},
+      "What colours a particle: its age (fraction of life), its velocity's length or a component "
+      "(m/s), or the field's vorticity magnitude |curl| there (1/s)",
+      RENDER(colorBy)));
   v.push_back(enumEntry(
       "render.color_map", {"life", "viridis", "plasma", "inferno", "cividis", "cool_warm", "grey"},
       "Colour map: life (colour_birth to colour_death), the perceptually uniform viridis, plasma, "

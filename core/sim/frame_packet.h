@@ -28,9 +28,13 @@ struct FieldUpdate {
   // An analytic field's equation (field.mode = equation evaluates it in place of
   // `field`, whose bounds still bound the particles), or null.
   std::shared_ptr<const FieldEquation> equation;
-  // `field`'s range of speed and velocity (the colour scale's ends by default):
-  // computed once by the main context (MainContext::setField and its timeline).
+  // `field`'s range of speed, velocity and vorticity (the colour scale's ends
+  // by default): computed once by the main context (MainContext::setField and
+  // its timeline).
   FieldRange range;
+  // While particles are coloured by vorticity: vorticityMagnitude of `field`
+  // and of `next` (core/field/vorticity.h); null otherwise.
+  std::shared_ptr<const VectorField> vorticity, nextVorticity;
 };
 
 struct FramePacket {

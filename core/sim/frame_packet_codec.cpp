@@ -11,8 +11,8 @@ namespace {
 
 constexpr std::uint32_t kPacketMagic = 0x50465353;  // "SSFP"
 constexpr std::uint32_t kFieldMagic = 0x46565353;   // "SSVF"
-constexpr std::uint16_t kVersion =
-    5;  // 2: equation terms, lod scale; 3: tracking, wand ray; 4: grid validity; 5: field range
+constexpr std::uint16_t kVersion = 6;  // 2: equation terms, lod scale; 3: tracking, wand ray; 4:
+                                       // grid validity; 5: field range; 6: vorticity
 
 // Limits far above any real packet, so a corrupt count cannot make us allocate gigabytes.
 constexpr std::uint32_t kMaxChanges = 4096;
@@ -332,6 +332,9 @@ std::vector<std::byte> encodePacket(const FramePacket& p, const FieldRefs& refs)
     w.f32(range.maxSpeed);
     vec3(w, range.minVelocity);
     vec3(w, range.maxVelocity);
+    w.f32(range.minVorticity);
+    w.f32(range.maxVorticity);
+    w.boolean(p.fieldUpdate->vorticity != nullptr || refs.vorticity);
     // An analytic field's equation (field.mode = equation) travels whole: it is small.
     const FieldEquation* e = p.fieldUpdate->equation.get();
     w.u32(e ? std::uint32_t(e->terms.size()) : 0u);
@@ -389,6 +392,9 @@ FramePacket decodePacket(std::span<const std::byte> bytes, FieldRefs* refs) {
     update.range.maxSpeed = r.f32("field range max speed");
     update.range.minVelocity = vec3(r, "field range min velocity");
     update.range.maxVelocity = vec3(r, "field range max velocity");
+    update.range.minVorticity = r.f32("field range min vorticity");
+    update.range.maxVorticity = r.f32("field range max vorticity");
+    found.vorticity = r.boolean("field vorticity");
     const std::uint32_t terms = r.u32("equation term count");
     if (terms > std::uint32_t(FieldEquation::kMaxTerms))
       r.fail("equation term count",

@@ -30,6 +30,10 @@ namespace sandstorm {
 struct FieldRefs {
   std::uint64_t field = 0;
   std::uint64_t next = 0;
+  // The update carries vorticity grids (when encoding, this or the update's
+  // own pointer says so): the receiver computes them again from the grids
+  // (vorticityMagnitude is deterministic) rather than receiving them.
+  bool vorticity = false;
 };
 
 // FNV-1a of the grid's encoding (bounds, dims, values): the grid's identity on the wire.

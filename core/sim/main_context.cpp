@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <utility>
 
+#include "core/field/vorticity.h"
 #include "core/sim/emission.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
@@ -11,10 +12,24 @@ namespace sandstorm {
 namespace {
 
 // Every field the main context sends carries its range (the colour scale's
-// default ends), computed here once rather than on every wall.
-FieldUpdate withRange(FieldUpdate update) {
-  if (update.field) update.range = FieldRange::of(*update.field);
+// default ends), computed here once rather than on every wall, and, while
+// particles are coloured by it, its vorticity (a grid the size of the field's).
+FieldUpdate withRange(FieldUpdate update, bool vorticity) {
+  if (!update.field) return update;
+  if (vorticity) {
+    update.vorticity = std::make_shared<const VectorField>(vorticityMagnitude(*update.field));
+    if (update.next)
+      update.nextVorticity = std::make_shared<const VectorField>(vorticityMagnitude(*update.next));
+  } else {
+    update.vorticity.reset();
+    update.nextVorticity.reset();
+  }
+  update.range = FieldRange::of(*update.field, update.placement.rotation, update.vorticity.get());
   return update;
+}
+
+bool wantsVorticity(const ParticleState& state) {
+  return state.render.colorBy == ColorQuantity::Vorticity;
 }
 
 }  // namespace
@@ -24,7 +39,8 @@ MainContext::MainContext(ParticleState initial, FieldUpdate field, Options optio
       options_(options),
       state_(initial),
       pending_(std::move(initial)),
-      field_(std::make_shared<const FieldUpdate>(withRange(std::move(field)))) {}
+      field_(std::make_shared<const FieldUpdate>(
+          withRange(std::move(field), wantsVorticity(state_)))) {}
 
 AttributeResult MainContext::set(std::string_view key, const AttributeValue& value) {
   const AttributeTable& table = AttributeTable::instance();
@@ -68,7 +84,7 @@ void MainContext::enqueue(const StateChange& change) {
 
 void MainContext::setField(FieldUpdate field) {
   std::lock_guard lock(mutex_);
-  field_ = std::make_shared<const FieldUpdate>(withRange(std::move(field)));
+  field_ = std::make_shared<const FieldUpdate>(withRange(std::move(field), wantsVorticity(state_)));
   timeline_.reset();
   fieldChanged_ = true;
 }
@@ -82,7 +98,8 @@ void MainContext::setFieldTimeline(FieldTimeline timeline, const FieldPlacement&
   field_ = std::make_shared<const FieldUpdate>(
       withRange(FieldUpdate{.field = timeline_->frame(fieldPosition_.first),
                             .placement = placement,
-                            .next = timeline_->frame(fieldPosition_.second)}));
+                            .next = timeline_->frame(fieldPosition_.second)},
+                wantsVorticity(state_)));
   fieldChanged_ = true;
 }
 
@@ -170,12 +187,18 @@ FramePacket MainContext::next() {
       field_ = std::make_shared<const FieldUpdate>(
           withRange(FieldUpdate{.field = timeline_->frame(at.first),
                                 .placement = timelinePlacement_,
-                                .next = timeline_->frame(at.second)}));
+                                .next = timeline_->frame(at.second)},
+                    wantsVorticity(state_)));
       fieldChanged_ = true;
     }
     fieldPosition_ = at;
     packet.fieldBlend = at.weight;
     if (!state_.field.paused) fieldTime_ += double(packet.simDt) * state_.field.speed;
+  }
+  // Coloured by vorticity now (or no longer): the field goes again with (or without) it.
+  if (field_ && field_->field && (field_->vorticity != nullptr) != wantsVorticity(state_)) {
+    field_ = std::make_shared<const FieldUpdate>(withRange(*field_, wantsVorticity(state_)));
+    fieldChanged_ = true;
   }
   if (fieldChanged_) packet.fieldUpdate = field_;
   fieldChanged_ = false;

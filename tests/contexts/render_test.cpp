@@ -280,3 +280,29 @@ TEST_F(RenderTest, TheSliceShowsTheFieldsSpeedThroughTheColourMap) {
 
 }  // namespace
 }  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+struct Spin final : AnalyticField {  // solid-body rotation, 1 rad/s: vorticity 2
+  glm::vec3 evaluate(const glm::vec3& p) const override { return {-p.y, p.x, 0.0f}; }
+};
+
+// Particles resting on the axis of a rotation whose strength is 2: the
+// vorticity they feel is 4, half of the fixed range 0..8.
+TEST_F(RenderTest, AParticleGetsTheColourOfTheVorticityItFeels) {
+  auto field = std::make_shared<VectorField>(bake(Spin(), Box{{-5, -5, 0}, {5, 5, 5}}, {6, 6, 3}));
+  for (const RenderMode mode : {RenderMode::Points, RenderMode::Splat}) {
+    ParticleState s = alongTheAxis(0.0f, mode);
+    s.sim.fieldStrength = 2.0f;
+    s.render.colorBy = ColorQuantity::Vorticity;
+    s.render.colorRange = ColorRange::Fixed;
+    s.render.colorMin = 0.0f;
+    s.render.colorMax = 8.0f;
+    expectNear(centre(render(s, 4, field)), expected(ColorMapName::Viridis, 0.5f),
+               mode == RenderMode::Points ? 1.0f : 6.0f, "mode " + std::to_string(int(mode)));
+  }
+}
+
+}  // namespace
+}  // namespace sandstorm

@@ -123,3 +123,85 @@ TEST(ColorLegend, AFlatRangeHasOneTickInTheMiddle) {
 
 }  // namespace
 }  // namespace sandstorm
+
+#include "core/field/analytic_field.h"
+#include "core/field/vorticity.h"
+#include "core/sim/main_context.h"
+
+namespace sandstorm {
+namespace {
+
+struct Spin final : AnalyticField {  // solid-body rotation, 1 rad/s: vorticity 2
+  glm::vec3 evaluate(const glm::vec3& p) const override { return {-p.y, p.x, 0.0f}; }
+};
+struct Shear final : AnalyticField {  // v = (0, 3x, 0): vorticity 3
+  glm::vec3 evaluate(const glm::vec3& p) const override { return {0.0f, 3.0f * p.x, 0.0f}; }
+};
+
+TEST(Vorticity, IsTwiceTheRotationRateAndTheShearRate) {
+  const VectorField spin = vorticityMagnitude(bake(Spin(), Box{{-2, -2, 0}, {2, 2, 1}}, {5, 5, 2}));
+  for (const glm::vec3& w : spin.values())
+    EXPECT_NEAR(w.x, 2.0f, 1e-5f);  // edges too (one-sided)
+  const VectorField shear =
+      vorticityMagnitude(bake(Shear(), Box{{-2, -2, 0}, {2, 2, 1}}, {5, 3, 1}));
+  for (const glm::vec3& w : shear.values())
+    EXPECT_NEAR(w.x, 3.0f, 1e-5f);  // a flat grid
+  VectorField masked = bake(Spin(), Box{{-2, -2, 0}, {2, 2, 1}}, {5, 5, 2});
+  std::vector<std::uint8_t> valid(masked.pointCount(), 1);
+  valid[masked.index(1, 2, 0)] = 0;
+  masked.setValidity(valid);
+  const VectorField w = vorticityMagnitude(masked);
+  EXPECT_FALSE(w.valid(1, 2, 0));
+  EXPECT_NEAR(w.at(2, 2, 0).x, 2.0f, 1e-5f);  // one-sided next to the hole: still exact
+  // No neighbour with data along x: dv/dx counts as 0, leaving -du/dy = 1.
+  EXPECT_NEAR(w.at(0, 2, 0).x, 1.0f, 1e-5f);
+}
+
+TEST(ColorScale, TheFieldsRangeIsScaledAsTheParticlesFeelIt) {
+  FieldRange field{.minSpeed = 1.0f,
+                   .maxSpeed = 8.0f,
+                   .minVelocity = glm::vec3(-1, -2, -3),
+                   .maxVelocity = glm::vec3(1, 2, 4),
+                   .minVorticity = 0.5f,
+                   .maxVorticity = 6.0f};
+  // Strength 2, placement scale 0.25: velocities x0.5, vorticity x2.
+  const FieldFeel feel{0.5f, 2.0f};
+  ColorScale s =
+      resolveColorScale(ColorQuantity::Speed, ColorRange::Field, 0, 1, false, field, feel);
+  EXPECT_FLOAT_EQ(s.high, 4.0f);
+  s = resolveColorScale(ColorQuantity::Vorticity, ColorRange::Field, 0, 1, false, field, feel);
+  EXPECT_FLOAT_EQ(s.low, 1.0f);
+  EXPECT_FLOAT_EQ(s.high, 12.0f);
+  // A negative strength turns velocities round: the component range flips.
+  s = resolveColorScale(ColorQuantity::VelocityZ, ColorRange::Field, 0, 1, false, field,
+                        {-1.0f, -1.0f});
+  EXPECT_FLOAT_EQ(s.low, -4.0f);
+  EXPECT_FLOAT_EQ(s.high, 3.0f);
+  // Components are the particles' axes: a quarter turn about z makes field x room y.
+  const VectorField wind = bake(Shear(), Box{{0, 0, 0}, {1, 1, 1}}, {2, 2, 2});  // v = (0, 3x, 0)
+  const FieldRange turned = FieldRange::of(wind, glm::mat3(0, 1, 0, -1, 0, 0, 0, 0, 1));
+  EXPECT_FLOAT_EQ(turned.minVelocity.x, -3.0f);
+  EXPECT_FLOAT_EQ(turned.maxVelocity.y, 0.0f);
+}
+
+TEST(MainContextVorticity, TheFieldCarriesItsVorticityWhileParticlesAreColouredByIt) {
+  auto field = std::make_shared<VectorField>(bake(Spin(), Box{{-2, -2, 0}, {2, 2, 1}}, {5, 5, 2}));
+  MainContext main(ParticleState{}, FieldUpdate{.field = field}, {});
+  FramePacket first = main.next();
+  ASSERT_TRUE(first.fieldUpdate);
+  EXPECT_FALSE(first.fieldUpdate->vorticity);
+  main.set("render.color_by", std::string("vorticity"));
+  const FramePacket later = main.next();  // the change and the field, with its vorticity
+  ASSERT_TRUE(later.fieldUpdate) << "the field goes again, with its vorticity";
+  ASSERT_TRUE(later.fieldUpdate->vorticity);
+  EXPECT_EQ(later.fieldUpdate->field, field);  // the same grid: walls do not upload it again
+  EXPECT_NEAR(later.fieldUpdate->range.maxVorticity, 2.0f, 1e-5f);
+  EXPECT_FALSE(main.next().fieldUpdate);  // once
+  main.set("render.color_by", std::string("speed"));
+  const FramePacket off = main.next();
+  ASSERT_TRUE(off.fieldUpdate);
+  EXPECT_FALSE(off.fieldUpdate->vorticity);
+}
+
+}  // namespace
+}  // namespace sandstorm

@@ -71,7 +71,10 @@ FramePacket fullPacket() {
                   .range = {.minSpeed = 0.25f,
                             .maxSpeed = 9.5f,
                             .minVelocity = {-1, -2, -3},
-                            .maxVelocity = {4, 5, 6}}});
+                            .maxVelocity = {4, 5, 6},
+                            .minVorticity = 0.125f,
+                            .maxVorticity = 7.5f},
+                  .vorticity = grid(3)});
   p.viewer.head.position = {0.1f, 0.2f, 1.7f};
   p.viewer.head.right = {0, -1, 0};
   p.viewer.head.eyeSeparation = 0.063f;
@@ -147,6 +150,7 @@ TEST(FramePacketCodec, EveryMemberSurvivesARoundTrip) {
   EXPECT_EQ(got.field, refs.field);
   EXPECT_EQ(got.next, refs.next);
   EXPECT_NE(got.field, got.next);
+  EXPECT_TRUE(got.vorticity);          // the receiver computes the grid itself
   EXPECT_FALSE(q.fieldUpdate->field);  // grids travel apart
   EXPECT_EQ(q.fieldUpdate->placement.offset, p.fieldUpdate->placement.offset);
   EXPECT_EQ(q.fieldUpdate->placement.scale, p.fieldUpdate->placement.scale);
