@@ -9,6 +9,7 @@
 #include "app/run_stats.h"
 #include "contexts/particles/simulation_share.h"
 #include "contexts/platform/egl_context.h"
+#include "core/flow/probe.h"
 #include "core/flow/streamline_vtp.h"
 #include "core/sim/particle_dump.h"
 #include "core/util/error.h"
@@ -395,7 +396,7 @@ std::optional<WandMenuTarget> AppRun::menuTarget() const {
                         panel.max};
 }
 
-void AppRun::showMenu(float dt) {
+void AppRun::showMenu(float dt, const std::vector<std::string>& probe) {
   MenuStats stats;
   stats.frame = main_.nextFrame();
   for (const auto& w : walls_) {
@@ -408,7 +409,74 @@ void AppRun::showMenu(float dt) {
     stats.tracking = MenuTrackingStats{t.source, t.stats.received, t.stats.dropped,  t.waiting,
                                        t.lost,   t.trackerFrame,   t.stats.lastError};
   }
+  stats.probe = probe;
   menu_->frame(main_.nextFrame(), dt, stats);
+}
+
+// The main thread's work before it makes a frame's packet.
+void AppRun::beforePacket(float dt) {
+  track(dt);
+  autoColorRange();
+  const std::vector<std::string> probe = probeLines();
+  if (menu_) showMenu(dt, probe);
+  if (legend_) legend_->frame(dt, probe);
+}
+
+// render.color_range = particles: every render.color_every frames, the first
+// wall's newest measurement of its particles becomes render.color_min/max, a
+// change like a user's (every wall applies it at one frame; sessions record it).
+void AppRun::autoColorRange() {
+  const ParticleState state = main_.pendingState();
+  if (state.render.colorRange != ColorRange::Particles || walls_.empty() || options_.replay) return;
+  if (main_.nextFrame() < nextColorRangeAt_) return;
+  const std::optional<ParticleMeasurement> m = walls_[0]->stats().measure;
+  if (!m || m->live == 0 || (colorRangeFrom_ && m->frame <= *colorRangeFrom_)) return;
+  colorRangeFrom_ = m->frame;
+  nextColorRangeAt_ = main_.nextFrame() + std::uint32_t(std::max(state.render.colorEvery, 1));
+  float low = m->least, high = m->greatest;
+  if (!(high > low)) {  // one value: a range around it
+    const float pad = std::max(std::abs(low) * 1e-3f, 1e-6f);
+    low -= pad;
+    high += pad;
+  }
+  if (low == state.render.colorMin && high == state.render.colorMax) return;
+  main_.set("render.color_min", low);
+  main_.set("render.color_max", high);
+}
+
+// What the probe reads: the field there (the main context's current field
+// frame) and the first wall's count of particles near it, a few frames old.
+std::vector<std::string> AppRun::probeLines() const {
+  const ParticleState state = main_.pendingState();
+  if (!state.probe.enabled) return {};
+  const auto point = probePoint(state, lastPacket_ ? lastPacket_->wand : WandRay{},
+                                lastPacket_ ? lastPacket_->viewer.navigation : navigation_);
+  if (!point) return {};
+  const auto field = main_.field();
+  PhysicsInputs in;
+  in.field = field ? field->field.get() : nullptr;
+  in.placement = field ? field->placement : FieldPlacement{};
+  in.settings = state.sim;
+  const ProbeReading r = readProbe(*point, in);
+  std::vector<std::string> lines;
+  char text[160];
+  std::snprintf(text, sizeof text, "probe at (%.2f, %.2f, %.2f) m", r.point.x, r.point.y,
+                r.point.z);
+  lines.push_back(text);
+  if (r.inside) {
+    std::snprintf(text, sizeof text, "velocity (%.3g, %.3g, %.3g) m/s, speed %.3g m/s",
+                  r.velocity.x, r.velocity.y, r.velocity.z, r.speed);
+  } else {
+    std::snprintf(text, sizeof text, "outside the field");
+  }
+  lines.push_back(text);
+  if (!walls_.empty())
+    if (const std::optional<ParticleMeasurement> m = walls_[0]->stats().measure) {
+      std::snprintf(text, sizeof text, "%u particles within %.2f m (frame %u)", m->nearProbe,
+                    state.probe.radius, m->frame);
+      lines.push_back(text);
+    }
+  return lines;
 }
 
 void AppRun::reportProgress(Clock::time_point now) {
@@ -443,10 +511,9 @@ void AppRun::runOneProcess() {
       failed_ = true;
     }
     if (failed_) break;
-    track(dt);
-    if (menu_) showMenu(dt);
-    if (legend_) legend_->frame(dt);
-    if (!channel_.publish(std::make_shared<const FramePacket>(main_.next()))) break;
+    beforePacket(dt);
+    lastPacket_ = std::make_shared<const FramePacket>(main_.next());
+    if (!channel_.publish(lastPacket_)) break;
     helicopter_.update(main_);
     ++frames_;
     reportProgress(now);
@@ -480,10 +547,9 @@ void AppRun::runCluster() {
     if (!cluster_->root()) {
       packet = cluster_->receive();  // null: rank 0 sent the last frame
     } else if (lastFrame_ < 0 || frames_ <= lastFrame_) {
-      track(dt);
-      if (menu_) showMenu(dt);
-      if (legend_) legend_->frame(dt);
+      beforePacket(dt);
       packet = std::make_shared<const FramePacket>(main_.next());
+      lastPacket_ = packet;
       cluster_->send(*packet);
       helicopter_.update(main_);
     } else {

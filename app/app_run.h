@@ -52,7 +52,10 @@ class AppRun {
   void runCluster();
   void track(float dt);
   std::optional<WandMenuTarget> menuTarget() const;
-  void showMenu(float dt);
+  void showMenu(float dt, const std::vector<std::string>& probe);
+  void beforePacket(float dt);
+  void autoColorRange();
+  std::vector<std::string> probeLines() const;
   void reportProgress(Clock::time_point now);
   int finish();
 
@@ -86,6 +89,9 @@ class AppRun {
   std::unique_ptr<DesktopInput> input_;
   std::unique_ptr<MenuHost> menu_;
   std::unique_ptr<LegendHost> legend_;
+  std::shared_ptr<const FramePacket> lastPacket_;  // the newest packet made (probe, menu)
+  std::optional<std::uint32_t> colorRangeFrom_;    // the measurement last made the colour range
+  std::uint32_t nextColorRangeAt_ = 0;
   std::vector<std::unique_ptr<RenderWall>> walls_;        // one a wall, by index
   std::vector<std::unique_ptr<RenderContext>> contexts_;  // after walls_: joined first
   HashLog hashes_;

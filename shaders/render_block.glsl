@@ -47,14 +47,20 @@ float vorticityAt(vec3 x) {
   return look.vorticity.z * w;
 }
 
-// The colour map's coordinate for a particle at `position`: ColorScale::coordinate
-// of colorValue (core/color/color_scale.h), in the same operations.
-float colorCoordinate(float age, vec3 velocity, vec3 position) {
+// The colour quantity's value for a particle at `position` (colorValue in
+// core/color/color_scale.h).
+float colorValue(float age, vec3 velocity, vec3 position) {
   int quantity = int(look.colorScale.x);
-  float v = quantity == 0   ? age
-            : quantity == 1 ? length(velocity)
-            : quantity == 5 ? vorticityAt(position)
-                            : velocity[clamp(quantity - 2, 0, 2)];
+  return quantity == 0   ? age
+         : quantity == 1 ? length(velocity)
+         : quantity == 5 ? vorticityAt(position)
+                         : velocity[clamp(quantity - 2, 0, 2)];
+}
+
+// The colour map's coordinate for a particle at `position`: ColorScale::coordinate
+// of colorValue, in the same operations.
+float colorCoordinate(float age, vec3 velocity, vec3 position) {
+  float v = colorValue(age, velocity, position);
   float lo = look.colorScale.y, hi = look.colorScale.z;
   if (look.colorScale.w > 0.5) {
     v = log(max(v, lo));

@@ -12,10 +12,10 @@ namespace sandstorm {
 LegendHost::LegendHost(const MainContext& main, glm::ivec2 wallSize)
     : main_(main), wallSize_(wallSize), session_(nullptr, wallSize) {}
 
-void LegendHost::frame(float dt) {
+void LegendHost::frame(float dt, const std::vector<std::string>& probe) {
   const ParticleState state = main_.pendingState();
   std::shared_ptr<const UiDrawData> data;
-  if (state.render.legend) {
+  if (state.render.legend || !probe.empty()) {
     const auto field = main_.field();
     const RenderSettings& r = state.render;
     const ColorScale scale = stateColorScale(state, field.get());
@@ -31,7 +31,10 @@ void LegendHost::frame(float dt) {
                      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
     ImGui::SetWindowFontScale(width >= 320.0f ? 1.5f : 1.0f);
-    drawColorLegend(scale, ColorMap(r.colorMap, r.colorBirth, r.colorDeath), width);
+    if (state.render.legend)
+      drawColorLegend(scale, ColorMap(r.colorMap, r.colorBirth, r.colorDeath), width);
+    for (const std::string& line : probe)
+      ImGui::TextUnformatted(line.c_str());
     ImGui::End();
     data = session_.end();
   }

@@ -1,4 +1,5 @@
-// LegendHost: the colour legend shown on one wall (render.legend), built with
+// LegendHost: the colour legend shown on one wall (render.legend), and the
+// probe's reading (probe.enabled) under it, built with
 // Dear ImGui on the main thread each frame from the main context's state and
 // field range, and handed to that wall's thread as UiDrawData like the menu.
 // It takes no input. Its font atlas is ImGui's default, the same as the menu's.
@@ -6,6 +7,8 @@
 
 #include <memory>
 #include <mutex>
+#include <string>
+#include <vector>
 
 #include "app/menu/imgui_session.h"
 #include "core/sim/main_context.h"
@@ -18,8 +21,9 @@ class LegendHost {
   // lower right corner).
   LegendHost(const MainContext& main, glm::ivec2 wallSize);
 
-  void frame(float dt);
-  // Null while render.legend is off.
+  // `probe`: the probe's reading, shown under the bar (empty: none).
+  void frame(float dt, const std::vector<std::string>& probe = {});
+  // Null while render.legend is off and there is no probe.
   std::shared_ptr<const UiDrawData> latest() const;
   const UiFont& font() const { return session_.font(); }
 

@@ -87,6 +87,10 @@ void MenuPanel::build(const MenuStats& stats) {
     for (const AttributeInfo& info : AttributeTable::instance().entries())
       if (info.key.starts_with("slice.")) attributeWidget(info, info.key, state);
   }
+  if (ImGui::CollapsingHeader("Probe")) {
+    for (const AttributeInfo& info : AttributeTable::instance().entries())
+      if (info.key.starts_with("probe.")) attributeWidget(info, info.key, state);
+  }
   emitterSection(state);
   fieldSection();
   if (ImGui::CollapsingHeader("Field playback")) {
@@ -142,6 +146,8 @@ void MenuPanel::statsSection(const MenuStats& stats, const ParticleState& state)
     ImGui::ProgressBar(std::min(fraction, 1.0f), ImVec2(-1, 0), label.c_str());
   }
   if (stats.tracking) trackingSection(*stats.tracking);
+  for (const std::string& line : stats.probe)
+    ImGui::TextUnformatted(line.c_str());
 }
 
 void MenuPanel::trackingSection(const MenuTrackingStats& t) {

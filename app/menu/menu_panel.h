@@ -37,6 +37,7 @@ struct MenuStats {
   std::uint32_t frame = 0;
   std::vector<MenuWallStats> walls;
   std::optional<MenuTrackingStats> tracking;
+  std::vector<std::string> probe;  // the probe's reading, a line each (empty: no probe)
 };
 
 class MenuPanel {

@@ -29,6 +29,8 @@ struct WallStats {
   double fieldUploadMs = 0.0;  // CPU time of the last field upload to this wall's GPU
   int fieldUploads = 0;        // how many field grids this wall has received
   std::uint64_t glErrors = 0;  // GL errors raised by this wall's frames (glGetError once a frame)
+  // The newest measurement of its particles (probe count, colour range), if asked for.
+  std::optional<ParticleMeasurement> measure;
 };
 
 // One frame of one wall, as measured on its thread: what the run statistics
@@ -84,6 +86,7 @@ class RenderWall {
     std::uint64_t glErrors = 0;
     std::size_t live = 0;
     std::optional<gl::FrameStageTimer::Times> gpu;
+    std::optional<ParticleMeasurement> measure;
   };
   void open();
   Drawn draw(const FramePacket& packet, glm::ivec2 framebufferSize);

@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include "core/cave/wall_views.h"
+#include "core/flow/probe.h"
 
 namespace sandstorm {
 
@@ -45,6 +46,8 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
   const std::vector<View> views = wallViews(wall_, packet.viewer, aspect, near_, far_);
   viewRenderer_.scene().setWand(packet.wand, packet.viewer.navigation, system_.state().emitters);
   viewRenderer_.scene().updateFlow(system_.state(), system_.field(), packet.fieldBlend);
+  viewRenderer_.scene().setProbe(probePoint(system_.state(), packet.wand, packet.viewer.navigation),
+                                 system_.state().probe.radius);
   const glm::ivec2 viewSize =
       wall_.stereo == StereoMode::SideBySide  ? glm::ivec2(size.x / 2, size.y)
       : wall_.stereo == StereoMode::TopBottom ? glm::ivec2(size.x, size.y / 2)
@@ -94,7 +97,20 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
       break;
     }
   }
+  measure(packet);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+// After the views: the render block (the colour quantity) and the vorticity
+// grids are still bound.
+void WallRenderer::measure(const FramePacket& packet) {
+  const ParticleState& state = system_.state();
+  if (state.render.colorRange != ColorRange::Particles && !state.probe.enabled) return;
+  if (!measure_) measure_ = std::make_unique<ParticleMeasure>();
+  const auto probe = probePoint(state, packet.wand, packet.viewer.navigation);
+  measure_->measure(
+      packet.frame, system_.update().records(), system_.update().capacity(),
+      probe ? std::optional<glm::vec4>(glm::vec4(*probe, state.probe.radius)) : std::nullopt);
 }
 
 void WallRenderer::drawOverlay(const UiDrawData& menu, const UiFont& font) {

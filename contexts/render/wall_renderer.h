@@ -10,6 +10,7 @@
 #include "contexts/gl/frame_stage_timer.h"
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
+#include "contexts/particles/particle_measure.h"
 #include "contexts/particles/particle_system.h"
 #include "contexts/render/view_renderer.h"
 #include "contexts/render/view_targets.h"
@@ -49,6 +50,11 @@ class WallRenderer {
 
   // GPU milliseconds of this wall's stages in a recent frame (a few frames old).
   const std::optional<gl::FrameStageTimer::Times>& stageTimes() const { return timer_.latest(); }
+  // The newest finished measurement of the particles (render.color_range =
+  // particles, probe.enabled), if any; never waits.
+  std::optional<ParticleMeasurement> measurement() {
+    return measure_ ? measure_->latest() : std::nullopt;
+  }
   // The particle renderer the last view used: "splats" or "billboards" (or "points").
   const char* renderer() const { return renderer_; }
 
@@ -69,7 +75,10 @@ class WallRenderer {
   gl::VertexArray emptyVao_;
   std::unique_ptr<UiRenderer> ui_;
   glm::ivec2 lastSize_{0};
+  void measure(const FramePacket& packet);
+
   gl::FrameStageTimer timer_;
+  std::unique_ptr<ParticleMeasure> measure_;  // made when first asked for
   const char* renderer_ = "billboards";
   bool drewOffscreen_ = false;
 };

@@ -152,6 +152,14 @@ void SceneRenderer::draw() const {
   }
 
   wand_.draw();
+  if (probe_) {
+    mesh_.use();
+    const glm::mat4 model =
+        glm::scale(glm::translate(glm::mat4(1.0f), *probe_), glm::vec3(0.3f * probeRadius_));
+    glProgramUniformMatrix4fv(mesh_.id(), 0, 1, GL_FALSE, glm::value_ptr(model));
+    glProgramUniform4f(mesh_.id(), 1, 1.0f, 0.2f, 0.6f, 1.0f);
+    cube_.draw();
+  }
   streamlines_.draw();
   slice_.draw();
 

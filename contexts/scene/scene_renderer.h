@@ -40,6 +40,11 @@ class SceneRenderer {
   const StreamlineRenderer& streamlines() const { return streamlines_; }
   const SliceRenderer& slice() const { return slice_; }
   void bindVorticity() const { sceneField_.bindVorticity(); }
+  // The probe's marker: a small box `radius` across at the point (none: hidden).
+  void setProbe(std::optional<glm::vec3> point, float radius) {
+    probe_ = point;
+    probeRadius_ = radius;
+  }
   void draw() const;
 
  private:
@@ -57,6 +62,8 @@ class SceneRenderer {
   float rotorRadius_ = 7.0f;
   int terrainIndexCount_ = 0;
   std::optional<Box> box_;
+  std::optional<glm::vec3> probe_;
+  float probeRadius_ = 0.25f;
   FieldPlacement placement_;
 };
 

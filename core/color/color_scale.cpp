@@ -71,7 +71,7 @@ ColorScale resolveColorScale(ColorQuantity quantity, ColorRange range, float fix
     s.low = std::min(lo * factor, hi * factor);
     s.high = std::max(lo * factor, hi * factor);
   };
-  if (range == ColorRange::Fixed) {
+  if (range == ColorRange::Fixed || range == ColorRange::Particles) {
     s.low = fixedLow;
     s.high = fixedHigh;
   } else if (quantity == ColorQuantity::Age) {

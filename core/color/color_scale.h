@@ -25,8 +25,10 @@ enum class ColorQuantity : int {
 };
 
 // Where the scale's ends come from: the current field's range of the quantity
-// (as ParaView's "data range"; age: 0..1), or render.color_min/max.
-enum class ColorRange : int { Field = 0, Fixed = 1 };
+// (as ParaView's "data range"; age: 0..1), render.color_min/max, or the live
+// particles' range, which the main context measures and writes into
+// render.color_min/max (so it reaches every wall at one frame, and replays).
+enum class ColorRange : int { Field = 0, Fixed = 1, Particles = 2 };
 
 struct ColorScale {
   ColorQuantity quantity = ColorQuantity::Age;

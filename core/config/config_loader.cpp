@@ -625,6 +625,7 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
   if (const auto* t = section("field_playback")) setAttributes(r, *t, "field.", c.particles);
   if (const auto* t = section("helicopter")) setAttributes(r, *t, "helicopter.", c.particles);
   if (const auto* t = section("streamlines")) setAttributes(r, *t, "streamlines.", c.particles);
+  if (const auto* t = section("probe")) setAttributes(r, *t, "probe.", c.particles);
   if (const auto* t = section("slice")) {
     setAttributes(r, *t, "slice.", c.particles);
     if (const toml::value* n = r.find(*t, "normal");

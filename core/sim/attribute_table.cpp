@@ -71,6 +71,9 @@ AttributeInfo enumEntry(std::string key, std::vector<std::string> choices, std::
 #define SLICE(member)                   \
   Ref<decltype(SliceSettings::member)>( \
       [](ParticleState & s, int) -> auto& { return s.slice.member; })
+#define PROBE(member)                   \
+  Ref<decltype(ProbeSettings::member)>( \
+      [](ParticleState & s, int) -> auto& { return s.probe.member; })
 #define EMITTER(member)           \
   Ref<decltype(Emitter::member)>( \
       [](ParticleState & s, int e) -> auto& { return s.emitters[std::size_t(e)].member; })
@@ -159,10 +162,14 @@ std::vector<AttributeInfo> makeEntries() {
       "Colour map: life (colour_birth to colour_death), the perceptually uniform viridis, plasma, "
       "inferno and cividis, ParaView's diverging cool_warm, or a grey ramp",
       RENDER(colorMap)));
-  v.push_back(enumEntry("render.color_range", {"field", "fixed"},
-                        "The colour scale's ends: the field's range of the quantity, or "
-                        "render.color_min and render.color_max",
-                        RENDER(colorRange)));
+  v.push_back(enumEntry(
+      "render.color_range", {"field", "fixed", "particles"},
+      "The colour scale's ends: the field's range of the quantity, render.color_min and "
+      "render.color_max, or the live particles' range (measured every render.color_every frames; "
+      "the main context writes it into color_min and color_max)",
+      RENDER(colorRange)));
+  v.push_back(entry("render.color_every", T::Int, 1, 100000, "frames",
+                    "color_range = particles: frames between measurements", RENDER(colorEvery)));
   v.push_back(entry("render.color_min", T::Float, -kBig, kBig, "",
                     "Fixed colour range: the value at the map's start (the quantity's unit)",
                     RENDER(colorMin)));
@@ -220,6 +227,18 @@ std::vector<AttributeInfo> makeEntries() {
                     "The slice plane's normal: (1 0 0), (0 1 0), (0 0 1) or any direction",
                     SLICE(normal)));
   v.push_back(entry("slice.opacity", T::Float, 0, 1, "", "The slice's opacity", SLICE(opacity)));
+  // The probe: the field's value and the particles near a point.
+  v.push_back(entry("probe.enabled", T::Bool, 0, 1, "",
+                    "Read the field and count particles at the probe (menu, legend wall, marker)",
+                    PROBE(enabled)));
+  v.push_back(entry("probe.position", T::Vec3, -kBig, kBig, "m",
+                    "The probe without a tracked wand (the particles' coordinates)",
+                    PROBE(position)));
+  v.push_back(entry("probe.radius", T::Float, 1e-3f, 100, "m",
+                    "Particles within this distance of the probe are counted", PROBE(radius)));
+  v.push_back(entry("probe.reach", T::Float, 0, 100, "m",
+                    "With a wand and no slice: the probe is this far (room) along its ray",
+                    PROBE(reach)));
   // The downdraft demo's helicopter.
   v.push_back(entry("helicopter.enabled", T::Bool, 0, 1, "",
                     "Show the helicopter; its controls drive the dust", HELICOPTER(enabled)));

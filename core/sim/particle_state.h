@@ -23,6 +23,7 @@ struct ParticleState {
   HelicopterSettings helicopter;
   StreamlineSettings streamlines;
   SliceSettings slice;
+  ProbeSettings probe;
   std::vector<Emitter> emitters{Emitter{}};
 };
 

@@ -77,7 +77,8 @@ struct RenderSettings {
   ColorQuantity colorBy = ColorQuantity::Age;
   ColorMapName colorMap = ColorMapName::Life;  // Life: colorBirth to colorDeath
   ColorRange colorRange = ColorRange::Field;
-  float colorMin = 0.0f;  // the fixed range's ends (ColorRange::Fixed)
+  int colorEvery = 30;    // ColorRange::Particles: frames between measurements
+  float colorMin = 0.0f;  // the fixed range's ends (ColorRange::Fixed; Particles writes them)
   float colorMax = 1.0f;
   bool colorLog = false;
   bool legend = false;  // show the colour bar (the menu always has one)

@@ -76,3 +76,37 @@ TEST(FlowExport, TrailsAndStreamlinesAreWrittenAsPolylines) {
 
 }  // namespace
 }  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+// render.color_range = particles: the main context turns the first wall's
+// measurements into render.color_min/max changes; they are recorded, so a
+// replay draws the same particles in the same colours without measuring.
+TEST(AutoColorRange, TheMeasuredRangeIsRecordedAndReplaysBitForBit) {
+  const auto dir = test::scratchDir("auto-range");
+  const std::string run =
+      "--config tests/data/legend.toml --frames 40 --set render.color_by=speed "
+      "--set render.color_range=particles --set render.color_every=5 ";
+  const auto recorded =
+      runSandstorm(run + "--record " + (dir / "s.log").string() + " --hash-log " +
+                   (dir / "a.txt").string() + " --screenshot " + (dir / "a").string());
+  ASSERT_EQ(recorded.exitCode, 0) << recorded.output;
+  int mins = 0, maxes = 0;
+  for (const std::string& line : test::readLines(dir / "s.log")) {
+    mins += line.find("render.color_min") != std::string::npos ? 1 : 0;
+    maxes += line.find("render.color_max") != std::string::npos ? 1 : 0;
+  }
+  EXPECT_GE(mins, 2) << "the range follows the particles";
+  EXPECT_EQ(mins, maxes);
+  const auto replayed =
+      runSandstorm(run + "--replay " + (dir / "s.log").string() + " --hash-log " +
+                   (dir / "b.txt").string() + " --screenshot " + (dir / "b").string());
+  ASSERT_EQ(replayed.exitCode, 0) << replayed.output;
+  EXPECT_EQ(test::readLines(dir / "a.txt"), test::readLines(dir / "b.txt"));
+  for (const char* wall : {"front.png", "left.png"})
+    EXPECT_EQ(test::readBytes(dir / "a" / wall), test::readBytes(dir / "b" / wall)) << wall;
+}
+
+}  // namespace
+}  // namespace sandstorm

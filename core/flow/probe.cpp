@@ -1,0 +1,40 @@
+#include "core/flow/probe.h"
+
+namespace sandstorm {
+
+std::optional<glm::vec3> probePoint(const ParticleState& state, const WandRay& wand,
+                                    const Navigation& navigation) {
+  if (!state.probe.enabled) return std::nullopt;
+  if (!wand.visible) return state.probe.position;
+  const glm::vec3 along = wand.end - wand.origin;
+  if (!(glm::length(along) > 0.0f)) return state.probe.position;
+  const glm::vec3 direction = glm::normalize(along);
+  glm::vec3 room = wand.origin + state.probe.reach * direction;
+  if (state.slice.enabled && glm::length(state.slice.normal) > 0.0f) {
+    // The slice plane, carried into the room.
+    const glm::mat4 toRoom = navigation.worldToRoom();
+    const glm::vec3 origin = glm::vec3(toRoom * glm::vec4(state.slice.origin, 1.0f));
+    const glm::vec3 normal =
+        glm::normalize(glm::vec3(toRoom * glm::vec4(state.slice.normal, 0.0f)));
+    const float facing = glm::dot(direction, normal);
+    if (std::abs(facing) > 1e-6f) {
+      const float t = glm::dot(origin - wand.origin, normal) / facing;
+      if (t > 0.0f) room = wand.origin + t * direction;
+    }
+  }
+  return navigation.roomToWorld(room);
+}
+
+ProbeReading readProbe(const glm::vec3& point, const PhysicsInputs& in) {
+  ProbeReading r;
+  r.point = point;
+  if (!in.field) return r;
+  const glm::vec3 local = in.placement.toLocal(point);
+  r.inside = particleDomain(*in.field).contains(local) && in.field->cellValid(local);
+  if (!r.inside) return r;
+  r.velocity = fieldAt(point, in);
+  r.speed = glm::length(r.velocity);
+  return r;
+}
+
+}  // namespace sandstorm
