@@ -45,7 +45,8 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
   const float aspect = float(size.x) / float(size.y);
   const std::vector<View> views = wallViews(wall_, packet.viewer, aspect, near_, far_);
   viewRenderer_.scene().setWand(packet.wand, packet.viewer.navigation, system_.state().emitters);
-  viewRenderer_.scene().updateFlow(system_.state(), system_.field(), packet.fieldBlend);
+  viewRenderer_.scene().updateFlow(system_.state(), system_.field(), packet.fieldBlend,
+                                   packet.simDt, packet.reset);
   viewRenderer_.scene().setProbe(probePoint(system_.state(), packet.wand, packet.viewer.navigation),
                                  system_.state().probe.radius);
   const glm::ivec2 viewSize =

@@ -10,12 +10,13 @@ SceneField::SceneField() : block_(gl::createBuffer()) {
   glNamedBufferStorage(block_.id(), sizeof(SimBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
-void SceneField::set(const ParticleState& state, const FieldUpdate& field, float blend) {
+void SceneField::set(const ParticleState& state, const FieldUpdate& field, float blend, float dt) {
   environment_.setField(field.field, field.placement, field.next);
   SimBlockInputs inputs;
   environment_.describe(inputs);
   inputs.state = &state;
   inputs.step.fieldBlend = field.next ? blend : 0.0f;
+  inputs.step.dt = dt;
   SimBlock block;
   fillSimBlock(inputs, block);
   glNamedBufferSubData(block_.id(), 0, sizeof(block), &block);

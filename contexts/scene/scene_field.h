@@ -18,8 +18,9 @@ class SceneField {
  public:
   SceneField();
 
-  // Uploads a field it does not hold yet and refills the block.
-  void set(const ParticleState& state, const FieldUpdate& field, float blend);
+  // Uploads a field it does not hold yet and refills the block (`dt`: the
+  // frame's simulated seconds, for passes that move points as particles).
+  void set(const ParticleState& state, const FieldUpdate& field, float blend, float dt = 0.0f);
   bool has() const { return has_; }
   // The field's vorticity grids (FieldUpdate::vorticity), when it has them, on
   // texture units 5 (current) and 6 (next): shaders/render_block.glsl's vorticityAt().

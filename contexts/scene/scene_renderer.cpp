@@ -92,12 +92,14 @@ void SceneRenderer::setFieldBox(std::optional<Box> bounds, const FieldPlacement&
 }
 
 void SceneRenderer::updateFlow(const ParticleState& state, std::shared_ptr<const FieldUpdate> field,
-                               float blend) {
-  if ((state.streamlines.enabled || state.slice.enabled || field && field->vorticity) && field &&
-      field->field)
-    sceneField_.set(state, *field, blend);
+                               float blend, float dt, bool reset) {
+  if ((state.streamlines.enabled || state.slice.enabled || state.render.streaklines ||
+       field && field->vorticity) &&
+      field && field->field)
+    sceneField_.set(state, *field, blend, dt);
   streamlines_.update(state, field, blend);
   slice_.update(state, field.get());
+  streaklines_.update(state, dt, reset);
 }
 
 void SceneRenderer::draw() const {
@@ -161,6 +163,7 @@ void SceneRenderer::draw() const {
     cube_.draw();
   }
   streamlines_.draw();
+  streaklines_.draw();
   slice_.draw();
 
   // The sky last, on the far plane, where nothing else is: each pixel is

@@ -12,6 +12,7 @@
 #include "contexts/gl/program.h"
 #include "contexts/scene/scene_field.h"
 #include "contexts/scene/slice_renderer.h"
+#include "contexts/scene/streakline_renderer.h"
 #include "contexts/scene/streamline_renderer.h"
 #include "contexts/scene/unit_cube.h"
 #include "contexts/scene/wand_renderer.h"
@@ -35,10 +36,12 @@ class SceneRenderer {
   void setWand(const WandRay& ray, const Navigation& navigation, std::vector<Emitter> emitters);
   // Once a frame, before the views: the field's streamlines and slice follow
   // the state (streamlines are traced again only when something changed).
-  void updateFlow(const ParticleState& state, std::shared_ptr<const FieldUpdate> field,
-                  float blend);
+  // `dt`, `reset`: the frame's simulated seconds and reset (streaklines).
+  void updateFlow(const ParticleState& state, std::shared_ptr<const FieldUpdate> field, float blend,
+                  float dt = 0.0f, bool reset = false);
   const StreamlineRenderer& streamlines() const { return streamlines_; }
   const SliceRenderer& slice() const { return slice_; }
+  const StreaklineRenderer& streaklines() const { return streaklines_; }
   void bindVorticity() const { sceneField_.bindVorticity(); }
   // The probe's marker: a small box `radius` across at the point (none: hidden).
   void setProbe(std::optional<glm::vec3> point, float radius) {
@@ -57,6 +60,7 @@ class SceneRenderer {
   SceneField sceneField_;  // before the passes that read it
   StreamlineRenderer streamlines_{sceneField_};
   SliceRenderer slice_{sceneField_};
+  StreaklineRenderer streaklines_{sceneField_};
   std::shared_ptr<const HeightMap> ground_;
   HelicopterSettings helicopter_;
   float rotorRadius_ = 7.0f;

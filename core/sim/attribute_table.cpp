@@ -182,6 +182,12 @@ std::vector<AttributeInfo> makeEntries() {
                     "Trails: the last positions each particle keeps, drawn as fading lines behind "
                     "it (0: none; the compute backend)",
                     RENDER(trailLength)));
+  v.push_back(entry("render.streaklines", T::Bool, 0, 1, "",
+                    "Streaklines: each point emitter's last released points, carried by the flow "
+                    "and joined in release order",
+                    RENDER(streaklines)));
+  v.push_back(entry("render.streak_length", T::Int, 2, 1024, "frames",
+                    "Points a streakline keeps (one released a frame)", RENDER(streakLength)));
   v.push_back(entry("render.legend", T::Bool, 0, 1, "",
                     "Show the colour legend on the legend's wall (the menu always shows it)",
                     RENDER(legend)));

@@ -83,6 +83,8 @@ struct RenderSettings {
   bool colorLog = false;
   bool legend = false;  // show the colour bar (the menu always has one)
   int trailLength = 0;  // positions each particle's trail keeps (0: no trails; compute backend)
+  bool streaklines = false;  // point emitters' streaklines (core/flow/streaklines.h)
+  int streakLength = 120;    // points a streakline keeps (one released a frame)
 };
 
 }  // namespace sandstorm
