@@ -31,7 +31,8 @@ enum Binding : GLuint {
   kTileStarts = 9,
   kGroupBase = 10,
   kChunkStarts = 11,
-  kChunkDispatch = 12
+  kChunkDispatch = 12,
+  kTrailDispatch = 13
 };
 
 gl::Buffer allocate(std::size_t bytes, const char* what) {
@@ -106,6 +107,7 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
     addAtomic();
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  if (records.trails != 0 && records.trailLength >= 2) addTrails(records, particles.capacity());
   // Both variants leave the sums in the buffer; the resolve turns them into
   // the particle images and zeroes them for the next view.
   resolve_.use();
@@ -114,6 +116,35 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   // ParticlePost reads the images as textures.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                   GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+}
+
+// Trails (render.trail_length) join the splats in the same sums: drawn by
+// compute, like the particles, where GL lines were 17 times slower on an
+// H100 (docs/PERFORMANCE.md).
+void ParticleSplat::addTrails(const ParticleBackend::Records& r, std::size_t capacity) const {
+  if (!trails_) {
+    trailPrepare_ =
+        std::make_unique<gl::Program>(std::vector<std::string>{"trail_splat_prepare.comp"});
+    trails_ = std::make_unique<gl::Program>(std::vector<std::string>{"trail_splat.comp"});
+    trailDispatch_ = gl::createBuffer();
+    glNamedBufferStorage(trailDispatch_.id(), 16, nullptr, 0);
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTrailDispatch, trailDispatch_.id());
+  trailPrepare_->use();
+  glProgramUniform1ui(trailPrepare_->id(), 0, r.countOffset / 4);
+  glProgramUniform1ui(trailPrepare_->id(), 1, r.countAdd);
+  glProgramUniform1ui(trailPrepare_->id(), 2, GLuint(r.trailLength - 1));
+  glProgramUniform1ui(trailPrepare_->id(), 3, GLuint(capacity));
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, r.trails);
+  trails_->use();
+  glProgramUniform1i(trails_->id(), 0, r.trailLength);
+  glProgramUniform1i(trails_->id(), 1, r.trailHead);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, trailDispatch_.id());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 void ParticleSplat::addAtomic() const {

@@ -29,12 +29,15 @@
 // context current.
 #pragma once
 
+#include <memory>
+
 #include <optional>
 
 #include <glm/glm.hpp>
 
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
+#include "contexts/particles/particle_backend.h"
 #include "core/config/gpu_tuning.h"
 
 namespace sandstorm {
@@ -54,6 +57,7 @@ class ParticleSplat {
  private:
   // Add every particle's footprint to the sums.
   void addAtomic() const;
+  void addTrails(const ParticleBackend::Records& records, std::size_t capacity) const;
   void addTiled(glm::ivec2 tiles, std::size_t capacity) const;
 
   bool tiled_;
@@ -67,6 +71,8 @@ class ParticleSplat {
   mutable gl::Buffer tileCounts_, tileStarts_, chunkStarts_, groupBase_,
       tileLists_;  // tiled: the bins
   mutable std::size_t tiles_ = 0, listCapacity_ = 0;
+  mutable std::unique_ptr<gl::Program> trailPrepare_, trails_;  // made on first use
+  mutable gl::Buffer trailDispatch_;
 };
 
 }  // namespace sandstorm

@@ -104,7 +104,7 @@ void ParticleSystem::composite(const ViewTargets& targets, std::uint32_t destina
 
 namespace sandstorm {
 
-void ParticleSystem::drawTrails() const {
+void ParticleSystem::drawTrails(const View* view, glm::ivec2 size) const {
   if (state_.render.trailLength < 2) return;
   const ParticleBackend::Records records = update_->records();
   if (records.trails == 0 && !trailsWarned_) {
@@ -112,7 +112,7 @@ void ParticleSystem::drawTrails() const {
               " backend keeps no trails; run.backend = \"compute\" does");
     trailsWarned_ = true;
   }
-  trails_.draw(records, update_->capacity());
+  if (!splats(view, size)) trails_.draw(records, update_->capacity());
 }
 
 std::vector<std::vector<glm::vec3>> ParticleSystem::readBackTrails() const {

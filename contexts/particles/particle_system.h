@@ -65,8 +65,9 @@ class ParticleSystem {
   bool splats(const View* view, glm::ivec2 size) const;
   void composite(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const;
   // The particles' trails (render.trail_length) into the bound scene
-  // framebuffer, with the view and render blocks bound.
-  void drawTrails() const;
+  // framebuffer, with the view and render blocks bound; views drawing splats
+  // (splats(view, size)) add them to the splats instead (ParticleSplat).
+  void drawTrails(const View* view, glm::ivec2 size) const;
   // The live particles' trails, newest point first (waits for the GPU: dumps, tests).
   std::vector<std::vector<glm::vec3>> readBackTrails() const;
 

@@ -49,7 +49,7 @@ void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, 
     scene_.setFieldBox(std::nullopt, {});
   scene_.setHelicopter(particles.state().helicopter, HelicopterModel{}.rotorRadius);
   scene_.draw();
-  particles.drawTrails();
+  particles.drawTrails(&view, size);
 }
 
 }  // namespace sandstorm

@@ -306,3 +306,54 @@ TEST_F(RenderTest, AParticleGetsTheColourOfTheVorticityItFeels) {
 
 }  // namespace
 }  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+// A particle crossing the view in a wind leaves a trail where it was: drawn
+// as GL lines with billboards and added to the sums with splats.
+Image oneParticleAfter(ParticleState s, std::shared_ptr<const VectorField> field, int frames) {
+  MainContext::Options options;
+  options.fixedDt = 0.25f;
+  MainContext main(s, FieldUpdate{.field = field}, options);
+  WallRendererSetup setup{.wall = cameraWall(),
+                          .initial = s,
+                          .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
+                          .capacity = 4096,
+                          .nearPlane = 0.1f,
+                          .farPlane = 100.0f};
+  WallRenderer wall(setup);
+  wall.frame(main.next(), {0, 0});   // born at x = -2
+  main.set("emitter.0.rate", 0.0f);  // no more births
+  for (int f = 1; f < frames; ++f)
+    wall.frame(main.next(), {0, 0});
+  return wall.capture();
+}
+
+TEST_F(RenderTest, TrailsShowWhereTheParticleWasWithLinesAndWithSplats) {
+  auto field = std::make_shared<VectorField>(
+      bake(Uniform({1.0f, 0.0f, 0.0f}), Box{{-5, -5, 0}, {5, 50, 5}}, {2, 2, 2}));
+  for (const RenderMode mode : {RenderMode::Billboards, RenderMode::Splat}) {
+    ParticleState s = onePerFrame({{-2.0f, 0.0f, 2.06f}}, 1.0f);  // a row's middle, not its edge
+    s.sim.maximum = 1000;
+    s.emitters[0].velocity = {1.0f, 0.0f, 0.0f};
+    s.render.mode = mode;
+    s.render.size = 0.15f;
+    const Image without = oneParticleAfter(s, field, 9);
+    s.render.trailLength = 8;
+    const Image with = oneParticleAfter(s, field, 9);
+    // After 8 frames of 0.25 s the particle is at x = 0; its trail runs back to x = -1.75.
+    int changed = 0;
+    for (const float x : {-1.5f, -1.0f, -0.5f}) {
+      const glm::ivec2 px = project({x, 0.0f, 2.06f});
+      changed += redness(with.at(px.x, px.y)) > redness(without.at(px.x, px.y)) + 20.0f ? 1 : 0;
+    }
+    EXPECT_EQ(changed, 3) << "mode " << int(mode);
+    // Ahead of the particle nothing changed.
+    const glm::ivec2 ahead = project({1.5f, 0.0f, 2.06f});
+    EXPECT_EQ(with.at(ahead.x, ahead.y), without.at(ahead.x, ahead.y)) << "mode " << int(mode);
+  }
+}
+
+}  // namespace
+}  // namespace sandstorm
