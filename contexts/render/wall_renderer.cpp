@@ -4,6 +4,7 @@
 
 #include "core/cave/wall_views.h"
 #include "core/flow/probe.h"
+#include "core/tracking/wand_handles.h"
 
 namespace sandstorm {
 
@@ -44,7 +45,10 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
                              glm::ivec2 size) {
   const float aspect = float(size.x) / float(size.y);
   const std::vector<View> views = wallViews(wall_, packet.viewer, aspect, near_, far_);
-  viewRenderer_.scene().setWand(packet.wand, packet.viewer.navigation, system_.state().emitters);
+  std::vector<glm::vec3> handles;
+  for (const WandHandle& h : wandHandles(system_.state()))
+    handles.push_back(h.position);
+  viewRenderer_.scene().setWand(packet.wand, packet.viewer.navigation, std::move(handles));
   viewRenderer_.scene().updateFlow(system_.state(), system_.field(), packet.fieldBlend,
                                    packet.simDt, packet.reset);
   viewRenderer_.scene().setProbe(probePoint(system_.state(), packet.wand, packet.viewer.navigation),

@@ -82,8 +82,8 @@ void SceneRenderer::setTerrain(std::shared_ptr<const HeightMap> terrain) {
 }
 
 void SceneRenderer::setWand(const WandRay& ray, const Navigation& navigation,
-                            std::vector<Emitter> emitters) {
-  wand_.set(ray, navigation, std::move(emitters));
+                            std::vector<glm::vec3> handles) {
+  wand_.set(ray, navigation, std::move(handles));
 }
 
 void SceneRenderer::setFieldBox(std::optional<Box> bounds, const FieldPlacement& placement) {

@@ -33,7 +33,8 @@ class SceneRenderer {
   // A simple helicopter proxy (fuselage, tail boom, rotor) at the hub the settings give.
   void setHelicopter(const HelicopterSettings& helicopter, float rotorRadius);
   // The tracked wand's ray and the emitters' handles (nothing while the ray is hidden).
-  void setWand(const WandRay& ray, const Navigation& navigation, std::vector<Emitter> emitters);
+  // `handles`: what the wand can grab (wand_handles.h), world positions.
+  void setWand(const WandRay& ray, const Navigation& navigation, std::vector<glm::vec3> handles);
   // Once a frame, before the views: the field's streamlines and slice follow
   // the state (streamlines are traced again only when something changed).
   // `dt`, `reset`: the frame's simulated seconds and reset (streaklines).

@@ -28,10 +28,10 @@ glm::mat4 cubeAt(const glm::vec3& centre, float size) {
 WandRenderer::WandRenderer() : mesh_(std::vector<std::string>{"mesh.vert", "mesh.frag"}) {}
 
 void WandRenderer::set(const WandRay& ray, const Navigation& navigation,
-                       std::vector<Emitter> emitters) {
+                       std::vector<glm::vec3> handles) {
   ray_ = ray;
   navigation_ = navigation;
-  emitters_ = std::move(emitters);
+  handles_ = std::move(handles);
 }
 
 void WandRenderer::box(const glm::mat4& roomModel, const glm::vec3& color) const {
@@ -47,8 +47,8 @@ void WandRenderer::draw() const {
   mesh_.use();
   box(beam(ray_.origin, ray_.end, kBeamWidth), {1.0f, 0.85f, 0.2f});
   const glm::mat4 worldToRoom = navigation_.worldToRoom();
-  for (std::size_t i = 0; i < emitters_.size(); ++i) {
-    const glm::vec3 room = glm::vec3(worldToRoom * glm::vec4(emitters_[i].position, 1.0f));
+  for (std::size_t i = 0; i < handles_.size(); ++i) {
+    const glm::vec3 room = glm::vec3(worldToRoom * glm::vec4(handles_[i], 1.0f));
     const bool chosen = int(i) == ray_.emitter;
     box(cubeAt(room, kHandleSize), ray_.holding && chosen ? glm::vec3(1.0f, 0.45f, 0.1f)
                                                           : (chosen ? glm::vec3(1.0f, 0.7f, 0.3f)

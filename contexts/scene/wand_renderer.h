@@ -24,7 +24,8 @@ class WandRenderer {
   static constexpr float kHandleSize = 0.06f;  // m (room)
 
   WandRenderer();
-  void set(const WandRay& ray, const Navigation& navigation, std::vector<Emitter> emitters);
+  // `handles`: what the wand can grab (core/tracking/wand_handles.h), world.
+  void set(const WandRay& ray, const Navigation& navigation, std::vector<glm::vec3> handles);
   void draw() const;
 
  private:
@@ -34,7 +35,7 @@ class WandRenderer {
   UnitCube cube_;
   WandRay ray_;
   Navigation navigation_;
-  std::vector<Emitter> emitters_;
+  std::vector<glm::vec3> handles_;  // world
 };
 
 }  // namespace sandstorm

@@ -5,6 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/tracking/wand_handles.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -42,8 +43,11 @@ WandActions WandController::update(const TrackingSample& sample, const WandScene
   };
   const bool grabDown = wand.pressed(tracking_.grabButton);
   const ParticleState* state = scene.state;
-  const int emitterCount = state ? int(state->emitters.size()) : 0;
-  if (held_ && (held_->emitter >= emitterCount || !grabDown)) held_.reset();
+  const std::vector<WandHandle> handles = state ? wandHandles(*state) : std::vector<WandHandle>{};
+  const int handleCount = int(handles.size());
+  if (held_ && (held_->emitter >= handleCount ||
+                handles[std::size_t(held_->emitter)].key != held_->key || !grabDown))
+    held_.reset();
 
   if (!wand.tracked) {
     held_.reset();
@@ -68,9 +72,9 @@ WandActions WandController::update(const TrackingSample& sample, const WandScene
       }
     }
   }
-  for (int i = 0; i < emitterCount && !held_; ++i) {
+  for (int i = 0; i < handleCount && !held_; ++i) {
     const glm::vec3 handle = glm::vec3(scene.navigation.worldToRoom() *
-                                       glm::vec4(state->emitters[std::size_t(i)].position, 1.0f));
+                                       glm::vec4(handles[std::size_t(i)].position, 1.0f));
     if (const std::optional<float> t = hitSphere(ray, handle, tracking_.grabRadius);
         t && *t < nearest) {
       nearest = *t;
@@ -98,10 +102,11 @@ WandActions WandController::update(const TrackingSample& sample, const WandScene
                             glm::vec4(wand.pose.axes[2], 0.0f),
                             glm::vec4(wand.pose.position, 1.0f));
   if (!held_ && !menuPixel && edge(tracking_.grabButton) && out.ray.target == WandTarget::Emitter) {
+    const WandHandle& handle = handles[std::size_t(out.ray.emitter)];
     const glm::vec3 room =
-        glm::vec3(scene.navigation.worldToRoom() *
-                  glm::vec4(state->emitters[std::size_t(out.ray.emitter)].position, 1.0f));
-    held_ = Held{out.ray.emitter, glm::vec3(glm::inverse(wandFrame) * glm::vec4(room, 1.0f))};
+        glm::vec3(scene.navigation.worldToRoom() * glm::vec4(handle.position, 1.0f));
+    held_ = Held{out.ray.emitter, handle.key,
+                 glm::vec3(glm::inverse(wandFrame) * glm::vec4(room, 1.0f))};
     // What the carry below computes for the wand standing still: no change until it moves.
     held_->lastWorld =
         scene.navigation.roomToWorld(glm::vec3(wandFrame * glm::vec4(held_->local, 1.0f)));
@@ -110,7 +115,7 @@ WandActions WandController::update(const TrackingSample& sample, const WandScene
     const glm::vec3 room = glm::vec3(wandFrame * glm::vec4(held_->local, 1.0f));
     const glm::vec3 world = scene.navigation.roomToWorld(room);
     if (world != held_->lastWorld) {
-      out.sets.emplace_back(concat("emitter.", held_->emitter, ".position"), world);
+      out.sets.emplace_back(held_->key, world);
       held_->lastWorld = world;
     }
     out.ray.holding = true;

@@ -5,9 +5,10 @@
 //
 // - menu: when the ray meets the menu panel on its wall, the hit in the wall
 //   image's pixels and the trigger drive the menu's mouse;
-// - grab: the grab button on an emitter's handle picks the nearest one along
-//   the ray; it then moves rigidly with the wand (emitter.N.position) until
-//   the button is let go;
+// - grab: the grab button on a handle (an emitter, the streamline rake's
+//   ends, the slice's point, the probe: wand_handles.h) picks the nearest one
+//   along the ray; it then moves rigidly with the wand (its position
+//   attribute) until the button is let go;
 // - throttle (the thesis's helicopter control, helicopter.wand_throttle): the
 //   wand tilted up, towards the user, raises helicopter.throttle, tilted down
 //   lowers it, at a rate that grows with the tilt past a dead zone; the
@@ -76,12 +77,14 @@ class WandController {
 
   WandActions update(const TrackingSample& sample, const WandScene& scene, float dt);
 
+  // The handle held (its index in wandHandles()), or -1.
   int holding() const { return held_ ? held_->emitter : -1; }
 
  private:
   struct Held {
-    int emitter = -1;
-    glm::vec3 local{0.0f};  // the emitter in the wand's frame (room metres)
+    int emitter = -1;       // the handle's index (wand_handles.h)
+    std::string key;        // the attribute it moves
+    glm::vec3 local{0.0f};  // the handle in the wand's frame (room metres)
     glm::vec3 lastWorld{0.0f};
   };
 

@@ -150,6 +150,45 @@ TEST(WandController, GrabCarriesTheEmitterByTheWandsDisplacement) {
   expectNear(f.state.emitters[0].position, move / 0.35f);
 }
 
+// The rake's ends and the slice's point are handles too while they show.
+TEST(WandController, GrabCarriesTheStreamlineRakeAndTheSlice) {
+  Fixture f;
+  f.state.streamlines.enabled = true;
+  f.state.streamlines.to = {2.0f, 0.0f, 2.0f};  // room (-0.3, 2.6, 0.7)
+  f.state.slice.enabled = true;
+  f.state.slice.origin = {-2.0f, 0.0f, 4.0f};  // room (-1.7, 2.6, 1.4)
+  // Aimed from `from` at a handle, then moved without turning (a rigid carry).
+  struct Aim {
+    float yaw, pitch;
+  };
+  auto aimAt = [&](glm::vec3 world, glm::vec3 from) {
+    const glm::vec3 room = glm::vec3(f.scene.navigation.worldToRoom() * glm::vec4(world, 1.0f));
+    const glm::vec3 d = glm::normalize(room - from);
+    return Aim{glm::degrees(std::atan2(d.y, d.x)), glm::degrees(std::asin(d.z))};
+  };
+  const glm::vec3 from{0.0f, 1.0f, 1.0f};
+  const glm::vec3 to = f.state.streamlines.to;
+  const Aim atTo = aimAt(to, from);
+  WandActions a = f.step(wandAt(from, atTo.yaw, atTo.pitch, 0u));
+  EXPECT_EQ(a.ray.target, WandTarget::Emitter);
+  EXPECT_EQ(a.ray.emitter, 3);  // after the two emitters and the rake's start
+  f.step(wandAt(from, atTo.yaw, atTo.pitch, 2u));
+  a = f.step(wandAt(from + glm::vec3(0.0f, 0.0f, 0.35f), atTo.yaw, atTo.pitch, 2u));  // up 0.35 m
+  ASSERT_EQ(a.sets.size(), 1u);
+  EXPECT_EQ(a.sets[0].first, "streamlines.to");
+  expectNear(f.state.streamlines.to, to + glm::vec3(0.0f, 0.0f, 1.0f));  // 1 m in the world
+  EXPECT_EQ(f.state.streamlines.from, StreamlineSettings{}.from);
+  f.step(wandAt(from, atTo.yaw, atTo.pitch, 0u));  // let go
+  const glm::vec3 origin = f.state.slice.origin;
+  const Aim atOrigin = aimAt(origin, from);
+  f.step(wandAt(from, atOrigin.yaw, atOrigin.pitch, 0u));
+  f.step(wandAt(from, atOrigin.yaw, atOrigin.pitch, 2u));
+  a = f.step(wandAt(from + glm::vec3(0.35f, 0.0f, 0.0f), atOrigin.yaw, atOrigin.pitch, 2u));
+  ASSERT_EQ(a.sets.size(), 1u);
+  EXPECT_EQ(a.sets[0].first, "slice.origin");
+  expectNear(f.state.slice.origin, origin + glm::vec3(1.0f, 0.0f, 0.0f));
+}
+
 TEST(WandController, TiltTowardsTheUserRaisesTheThrottle) {
   Fixture f;
   f.state.helicopter.enabled = true;
