@@ -22,8 +22,8 @@ struct AppOptions {
   std::optional<std::filesystem::path> dumpParticles;
   std::optional<std::filesystem::path> dumpStreamlines;  // the last frame's streamlines (.vtp)
   std::optional<std::filesystem::path> dumpTrails;       // the last frame's trails (.vtp)
-  std::vector<std::string> sets;  // "key=value" attribute overrides
-  bool headless = false;          // force offscreen walls
+  std::vector<std::string> sets;                         // "key=value" attribute overrides
+  bool headless = false;                                 // force offscreen walls
   std::optional<std::filesystem::path>
       hashLog;                     // per frame and wall: particle count and buffer hash
   std::vector<std::string> walls;  // run only these walls (empty: all)

@@ -91,8 +91,8 @@ class Bench {
   void warmUpGpu() {
     if (o_.gpuWarmupSeconds <= 0.0) return;
     progress(concat("warming the GPU up for ", o_.gpuWarmupSeconds, " s"));
-    const auto until = std::chrono::steady_clock::now() +
-                       std::chrono::duration<double>(o_.gpuWarmupSeconds);
+    const auto until =
+        std::chrono::steady_clock::now() + std::chrono::duration<double>(o_.gpuWarmupSeconds);
     while (std::chrono::steady_clock::now() < until)
       bench::shaderCopyBandwidth(std::size_t{256} << 20, 5);
   }

@@ -30,7 +30,7 @@ class FrameStageTimer {
   const std::optional<Times>& latest() const { return latest_; }
 
  private:
-  static constexpr int kFrames = 4;    // frames in flight before a slot is reused
+  static constexpr int kFrames = 4;     // frames in flight before a slot is reused
   static constexpr int kPerFrame = 12;  // stage measurements a frame (views x stages)
   struct Frame {
     std::array<Query, kPerFrame> starts, ends;

@@ -49,8 +49,8 @@ struct WallSpec {
   // Show the colour legend here (when render.legend is on); with no wall
   // marked, the menu's wall or else the first shows it.
   bool legend = false;
-  int rank = 0;       // cluster mode: the MPI rank that drives this wall
-  std::string host;   // cluster mode: or the first rank on this host (overrides rank)
+  int rank = 0;      // cluster mode: the MPI rank that drives this wall
+  std::string host;  // cluster mode: or the first rank on this host (overrides rank)
   // An offscreen wall's GPU (EGL device index); unset: run.gpus decides (GPU 0
   // unless round-robin). Windows draw on their display's GPU.
   std::optional<int> gpu;

@@ -219,7 +219,8 @@ TEST(Cluster, ARankWithoutOpenGLStopsEveryRankBeforeTheFirstFrame) {
   EXPECT_EQ(r.exitCode, 1) << r.output;
   EXPECT_TRUE(has(r.output, "rank 2 (")) << r.output;
   EXPECT_TRUE(has(r.output, "cannot start: tests/data/identity-cluster.toml:")) << r.output;
-  EXPECT_TRUE(has(r.output, "wall 'right' on GPU 0: EglContext: no usable EGL display")) << r.output;
+  EXPECT_TRUE(has(r.output, "wall 'right' on GPU 0: EglContext: no usable EGL display"))
+      << r.output;
   EXPECT_TRUE(has(r.output, "stopping every rank before the first frame")) << r.output;
   EXPECT_FALSE(has(r.output, "stats:")) << r.output;
   EXPECT_LT(r.seconds, 20.0);

@@ -113,8 +113,8 @@ legend = true
                "viridis");
   // The field's range (the default) is not checked here: the menu's log switch
   // on a range from 0 keeps three decades (ColorScale's note says so).
-  EXPECT_NO_THROW(parseConfig("[render]\ncolor_by = \"speed\"\ncolor_log = true\n" + kWall,
-                              "test.toml"));
+  EXPECT_NO_THROW(
+      parseConfig("[render]\ncolor_by = \"speed\"\ncolor_log = true\n" + kWall, "test.toml"));
 }
 
 TEST(Config, MissingCornersAreRefused) {
