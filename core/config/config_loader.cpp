@@ -580,7 +580,7 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
       root, "",
       {"include",    "run",     "field",  "scene",      "sim",         "render", "field_playback",
        "helicopter", "emitter", "head",   "navigation", "tracking",    "menu",   "cluster",
-       "wall",       "pvx",     "pvx_up", "gpu",        "streamlines", "slice"});
+       "wall",       "pvx",     "pvx_up", "gpu",        "streamlines", "slice",  "probe"});
   // include = "scene.toml": that file's settings first, this file's on top.
   if (const toml::value* include = r.find(root, "include")) {
     if (!include->is_string()) r.fail(*include, "include", "expected a file name");

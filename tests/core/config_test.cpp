@@ -117,6 +117,22 @@ legend = true
       parseConfig("[render]\ncolor_by = \"speed\"\ncolor_log = true\n" + kWall, "test.toml"));
 }
 
+TEST(Config, AFlowSectionIsReadAndASliceWithoutANormalIsRefused) {
+  const AppConfig c = parseConfig(
+      "[streamlines]\nenabled = true\nseeds = 4\n[slice]\nenabled = true\nnormal = [1, 0, 0]\n"
+      "[probe]\nradius = 0.5\n" +
+          kWall,
+      "test.toml");
+  EXPECT_TRUE(c.particles.streamlines.enabled);
+  EXPECT_EQ(c.particles.streamlines.seeds, 4);
+  EXPECT_EQ(c.particles.slice.normal, glm::vec3(1, 0, 0));
+  EXPECT_FLOAT_EQ(c.particles.probe.radius, 0.5f);
+  EXPECT_ERROR("[slice]\nnormal = [0, 0, 0]\n" + kWall, "test.toml:2", "slice.normal",
+               "expected a direction");
+  EXPECT_ERROR("[streamlines]\nseeds = \"many\"\n" + kWall, "test.toml:2", "streamlines.seeds");
+  EXPECT_ERROR("[probe]\nradius = 0.5\nreech = 1\n" + kWall, "test.toml:3", "probe.reech");
+}
+
 TEST(Config, MissingCornersAreRefused) {
   EXPECT_ERROR("[[wall]]\nname = \"w\"\nlower_left = [0, 0, 0]\nlower_right = [1, 0, 0]\n",
                "test.toml:1", "wall[0]", "missing required key 'upper_left'");
