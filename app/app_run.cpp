@@ -416,8 +416,9 @@ void AppRun::showMenu(float dt, const std::vector<std::string>& probe) {
 // The main thread's work before it makes a frame's packet.
 void AppRun::beforePacket(float dt) {
   track(dt);
-  autoColorRange();
-  const std::vector<std::string> probe = probeLines();
+  const ParticleState state = main_.pendingState();
+  autoColorRange(state);
+  const std::vector<std::string> probe = probeLines(state);
   if (menu_) showMenu(dt, probe);
   if (legend_) legend_->frame(dt, probe);
 }
@@ -425,8 +426,7 @@ void AppRun::beforePacket(float dt) {
 // render.color_range = particles: every render.color_every frames, the first
 // wall's newest measurement of its particles becomes render.color_min/max, a
 // change like a user's (every wall applies it at one frame; sessions record it).
-void AppRun::autoColorRange() {
-  const ParticleState state = main_.pendingState();
+void AppRun::autoColorRange(const ParticleState& state) {
   if (state.render.colorRange != ColorRange::Particles || walls_.empty() || options_.replay) return;
   if (main_.nextFrame() < nextColorRangeAt_) return;
   const std::optional<ParticleMeasurement> m = walls_[0]->stats().measure;
@@ -446,8 +446,7 @@ void AppRun::autoColorRange() {
 
 // What the probe reads: the field there (the main context's current field
 // frame) and the first wall's count of particles near it, a few frames old.
-std::vector<std::string> AppRun::probeLines() const {
-  const ParticleState state = main_.pendingState();
+std::vector<std::string> AppRun::probeLines(const ParticleState& state) const {
   if (!state.probe.enabled) return {};
   const auto point = probePoint(state, lastPacket_ ? lastPacket_->wand : WandRay{},
                                 lastPacket_ ? lastPacket_->viewer.navigation : navigation_);

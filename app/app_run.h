@@ -54,8 +54,8 @@ class AppRun {
   std::optional<WandMenuTarget> menuTarget() const;
   void showMenu(float dt, const std::vector<std::string>& probe);
   void beforePacket(float dt);
-  void autoColorRange();
-  std::vector<std::string> probeLines() const;
+  void autoColorRange(const ParticleState& state);
+  std::vector<std::string> probeLines(const ParticleState& state) const;
   void reportProgress(Clock::time_point now);
   int finish();
 

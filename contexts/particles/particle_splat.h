@@ -42,7 +42,6 @@
 
 namespace sandstorm {
 
-class ParticleBackend;
 class ViewTargets;
 
 class ParticleSplat {

@@ -15,7 +15,8 @@ ViewBlock makeViewBlock(const View& v, glm::ivec2 size) {
   return b;
 }
 
-RenderBlock makeRenderBlock(const ParticleState& state, const FieldUpdate* field, float blend) {
+RenderBlock makeRenderBlock(const ParticleState& state, const FieldUpdate* field, float blend,
+                            const ColorMap::Table& table) {
   const RenderSettings& s = state.render;
   RenderBlock b{};
   b.colorBirth = glm::vec4(s.colorBirth, s.opacityBirth);
@@ -27,7 +28,6 @@ RenderBlock makeRenderBlock(const ParticleState& state, const FieldUpdate* field
   const ColorScale scale = stateColorScale(state, field);
   b.colorScale =
       glm::vec4(float(int(scale.quantity)), scale.low, scale.high, scale.log ? 1.0f : 0.0f);
-  const ColorMap::Table table = ColorMap(s.colorMap, s.colorBirth, s.colorDeath).gpuTable();
   for (std::size_t i = 0; i < table.size(); ++i)
     b.colorTable[i] = glm::vec4(table[i], 1.0f);
   if (field && field->vorticity) {

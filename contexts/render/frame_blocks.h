@@ -43,6 +43,8 @@ static_assert(sizeof(RenderBlock) == (5 + ColorMap::kGpuSamples + 8) * 16);
 ViewBlock makeViewBlock(const View& view, glm::ivec2 size);
 // `field`: the field the particles move in (the colour scale's default ends,
 // the vorticity grid's place), or null. `blend`: towards its next frame.
-RenderBlock makeRenderBlock(const ParticleState& state, const FieldUpdate* field, float blend);
+// `table`: render.color_map's GPU table (a ColorTableCache keeps it).
+RenderBlock makeRenderBlock(const ParticleState& state, const FieldUpdate* field, float blend,
+                            const ColorMap::Table& table);
 
 }  // namespace sandstorm

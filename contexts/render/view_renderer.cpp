@@ -31,7 +31,10 @@ void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, 
   targets_.resize(size);
   const ViewBlock vb = makeViewBlock(view, size);
   const auto field = particles.field();
-  const RenderBlock rb = makeRenderBlock(particles.state(), field.get(), particles.fieldBlend());
+  const RenderSettings& look = particles.state().render;
+  const RenderBlock rb =
+      makeRenderBlock(particles.state(), field.get(), particles.fieldBlend(),
+                      colorTables_.get(look.colorMap, look.colorBirth, look.colorDeath));
   glNamedBufferSubData(viewBlock_.id(), 0, sizeof(vb), &vb);
   glNamedBufferSubData(renderBlock_.id(), 0, sizeof(rb), &rb);
   glBindBufferBase(GL_UNIFORM_BUFFER, 1, viewBlock_.id());

@@ -12,6 +12,7 @@
 #include "contexts/render/view_targets.h"
 #include "contexts/scene/scene_renderer.h"
 #include "core/cave/view.h"
+#include "core/color/color_map.h"
 
 namespace sandstorm {
 
@@ -35,6 +36,7 @@ class ViewRenderer {
   SceneRenderer scene_;
   ViewTargets targets_;
   gl::Buffer viewBlock_, renderBlock_;
+  ColorTableCache colorTables_;
 };
 
 }  // namespace sandstorm

@@ -51,8 +51,9 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
   viewRenderer_.scene().setWand(packet.wand, packet.viewer.navigation, std::move(handles));
   viewRenderer_.scene().updateFlow(system_.state(), system_.field(), packet.fieldBlend,
                                    packet.simDt, packet.reset);
-  viewRenderer_.scene().setProbe(probePoint(system_.state(), packet.wand, packet.viewer.navigation),
-                                 system_.state().probe.radius);
+  const std::optional<glm::vec3> probe =
+      probePoint(system_.state(), packet.wand, packet.viewer.navigation);
+  viewRenderer_.scene().setProbe(probe, system_.state().probe.radius);
   const glm::ivec2 viewSize =
       wall_.stereo == StereoMode::SideBySide  ? glm::ivec2(size.x / 2, size.y)
       : wall_.stereo == StereoMode::TopBottom ? glm::ivec2(size.x, size.y / 2)
@@ -102,19 +103,18 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
       break;
     }
   }
-  measure(packet);
+  measure(packet.frame, probe);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 // After the views: the render block (the colour quantity) and the vorticity
 // grids are still bound.
-void WallRenderer::measure(const FramePacket& packet) {
+void WallRenderer::measure(std::uint32_t frame, std::optional<glm::vec3> probe) {
   const ParticleState& state = system_.state();
   if (state.render.colorRange != ColorRange::Particles && !state.probe.enabled) return;
   if (!measure_) measure_ = std::make_unique<ParticleMeasure>();
-  const auto probe = probePoint(state, packet.wand, packet.viewer.navigation);
   measure_->measure(
-      packet.frame, system_.update().records(), system_.update().capacity(),
+      frame, system_.update().records(), system_.update().capacity(),
       probe ? std::optional<glm::vec4>(glm::vec4(*probe, state.probe.radius)) : std::nullopt);
 }
 

@@ -75,7 +75,8 @@ class WallRenderer {
   gl::VertexArray emptyVao_;
   std::unique_ptr<UiRenderer> ui_;
   glm::ivec2 lastSize_{0};
-  void measure(const FramePacket& packet);
+  // `probe`: this frame's probe point (probePoint), if any.
+  void measure(std::uint32_t frame, std::optional<glm::vec3> probe);
 
   gl::FrameStageTimer timer_;
   std::unique_ptr<ParticleMeasure> measure_;  // made when first asked for

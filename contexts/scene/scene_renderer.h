@@ -40,9 +40,6 @@ class SceneRenderer {
   // `dt`, `reset`: the frame's simulated seconds and reset (streaklines).
   void updateFlow(const ParticleState& state, std::shared_ptr<const FieldUpdate> field, float blend,
                   float dt = 0.0f, bool reset = false);
-  const StreamlineRenderer& streamlines() const { return streamlines_; }
-  const SliceRenderer& slice() const { return slice_; }
-  const StreaklineRenderer& streaklines() const { return streaklines_; }
   void bindVorticity() const { sceneField_.bindVorticity(); }
   // The probe's marker: a small box `radius` across at the point (none: hidden).
   void setProbe(std::optional<glm::vec3> point, float radius) {

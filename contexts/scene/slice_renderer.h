@@ -21,7 +21,6 @@ class SliceRenderer {
   void update(const ParticleState& state, const FieldUpdate* field);
   // Into the bound framebuffer, with the view and render blocks bound.
   void draw() const;
-  const std::vector<glm::vec3>& polygon() const { return polygon_; }
 
  private:
   SceneField& field_;

@@ -146,6 +146,19 @@ ColorMap::Table ColorMap::gpuTable() const {
   return table;
 }
 
+const ColorMap::Table& ColorTableCache::get(ColorMapName name, glm::vec3 birth, glm::vec3 death) {
+  // Only the life map depends on the birth and death colours.
+  const bool life = name == ColorMapName::Life;
+  if (!valid_ || name != name_ || (life && (birth != birth_ || death != death_))) {
+    table_ = ColorMap(name, birth, death).gpuTable();
+    valid_ = true;
+    name_ = name;
+    birth_ = birth;
+    death_ = death;
+  }
+  return table_;
+}
+
 glm::vec3 ColorMap::lookupTable(const Table& table, float t) {
   const float x = (std::isfinite(t) ? std::clamp(t, 0.0f, 1.0f) : 0.0f) * float(kGpuSamples - 1);
   const int i = std::min(int(x), kGpuSamples - 2);

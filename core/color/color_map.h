@@ -49,6 +49,20 @@ class ColorMap {
   glm::vec3 birth_, death_;
 };
 
+// The last map's GPU table, made again only when the map or its life colours
+// change (a table is 91 evaluations; cool-warm's take ~25 us, every view of
+// every frame otherwise).
+class ColorTableCache {
+ public:
+  const ColorMap::Table& get(ColorMapName name, glm::vec3 birth, glm::vec3 death);
+
+ private:
+  bool valid_ = false;
+  ColorMapName name_ = ColorMapName::Life;
+  glm::vec3 birth_{0.0f}, death_{0.0f};
+  ColorMap::Table table_{};
+};
+
 // Moreland's diverging interpolation between two sRGB colours in Msh space
 // (a white-ish middle when both ends are saturated and far apart in hue).
 glm::vec3 divergingColor(glm::vec3 low, glm::vec3 high, float t);

@@ -88,6 +88,18 @@ TEST(FileScene, AFileWithSeveralArraysAsksWhichAndOpensTheOneNamed) {
   EXPECT_TRUE(std::filesystem::exists(dir / "desktop.png"));
 }
 
+TEST(FileScene, AFileThatIsNotThereOrNotAFieldIsAClearError) {
+  const auto missing = test::runSandstorm("/nonexistent/wind.vti --frames 1");
+  EXPECT_NE(missing.exitCode, 0);
+  EXPECT_NE(missing.output.find("/nonexistent/wind.vti"), std::string::npos) << missing.output;
+  const auto dir = test::scratchDir("file-scene-bad");
+  const auto path = dir / "wind.vti";
+  std::ofstream(path) << "not a VTK file\n";
+  const auto bad = test::runSandstorm(path.string() + " --frames 1");
+  EXPECT_EQ(bad.exitCode, 1);
+  EXPECT_NE(bad.output.find("wind.vti"), std::string::npos) << bad.output;
+}
+
 TEST(FileScene, AnArrayWithoutAFileIsRefused) {
   const auto r = test::runSandstorm("--array wind --frames 1");
   EXPECT_NE(r.exitCode, 0);

@@ -72,6 +72,10 @@ TEST(FlowExport, TrailsAndStreamlinesAreWrittenAsPolylines) {
   EXPECT_EQ(bad.exitCode, 2);
   EXPECT_NE(bad.output.find("--dump-trails"), std::string::npos) << bad.output;
   EXPECT_NE(bad.output.find("expected a .vtp file name"), std::string::npos) << bad.output;
+  const auto badLines = runSandstorm("--config tests/data/legend.toml --dump-streamlines " +
+                                     (dir / "lines.csv").string());
+  EXPECT_EQ(badLines.exitCode, 2);
+  EXPECT_NE(badLines.output.find("--dump-streamlines"), std::string::npos) << badLines.output;
 }
 
 }  // namespace

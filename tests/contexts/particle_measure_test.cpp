@@ -44,7 +44,8 @@ TEST_F(ParticleMeasureTest, MeasuresWhatTheCpuFindsInTheSameParticles) {
   const float radius = 1.2f;
   for (const ColorQuantity q : {ColorQuantity::Speed, ColorQuantity::VelocityZ}) {
     state.render.colorBy = q;
-    const RenderBlock rb = makeRenderBlock(state, nullptr, 0.0f);
+    const RenderBlock rb =
+        makeRenderBlock(state, nullptr, 0.0f, ColorMap(state.render.colorMap).gpuTable());
     glNamedBufferSubData(block.id(), 0, sizeof rb, &rb);
     glBindBufferBase(GL_UNIFORM_BUFFER, 2, block.id());
     ParticleMeasure measure;

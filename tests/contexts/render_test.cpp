@@ -96,27 +96,33 @@ TEST_F(RenderTest, ParticlesAppearWhereTheyAreAndNowhereElse) {
   EXPECT_EQ(one.at(far.x, far.y), empty.at(far.x, far.y));
 }
 
+// One particle born at the first frame (the emitter then stops), after
+// `frames` frames of 0.25 s.
+Image oneParticleAfter(ParticleState s, std::shared_ptr<const VectorField> field, int frames) {
+  MainContext::Options options;
+  options.fixedDt = 0.25f;
+  MainContext main(s, FieldUpdate{.field = field}, options);
+  WallRendererSetup setup{.wall = cameraWall(),
+                          .initial = s,
+                          .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
+                          .capacity = 4096,
+                          .nearPlane = 0.1f,
+                          .farPlane = 100.0f};
+  WallRenderer wall(setup);
+  wall.frame(main.next(), {0, 0});   // born at the emitter
+  main.set("emitter.0.rate", 0.0f);  // no more births
+  for (int f = 1; f < frames; ++f)
+    wall.frame(main.next(), {0, 0});
+  return wall.capture();
+}
+
 TEST_F(RenderTest, TheFieldCarriesParticlesToWhereItSays) {
   // Tracer in a uniform field of 1 m/s along x: born at x = -2, after 3 s at x = +1.
   auto field = std::make_shared<VectorField>(
       bake(Uniform({1.0f, 0, 0}), Box{{-5, -5, 0}, {5, 5, 5}}, {2, 2, 2}));
   ParticleState first = onePerFrame({{-2.0f, 0.0f, 2.5f}}, 0.8f);
   first.emitters[0].lifetime = 100.0f;
-  MainContext::Options options;
-  options.fixedDt = 0.25f;
-  MainContext main(first, FieldUpdate{.field = field}, options);
-  WallRendererSetup setup{.wall = cameraWall(),
-                          .initial = first,
-                          .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
-                          .capacity = 4096,
-                          .nearPlane = 0.1f,
-                          .farPlane = 100.0f};
-  WallRenderer wall(setup);
-  wall.frame(main.next(), {0, 0});   // t = 0: born at x = -2
-  main.set("emitter.0.rate", 0.0f);  // no more births
-  for (int f = 1; f <= 12; ++f)
-    wall.frame(main.next(), {0, 0});  // 12 x 0.25 s
-  const Image image = wall.capture();
+  const Image image = oneParticleAfter(first, field, 13);  // t = 0, then 12 x 0.25 s
   const glm::ivec2 now = project({1.0f, 0.0f, 2.5f}), then = project({-2.0f, 0.0f, 2.5f});
   EXPECT_GT(redness(image.at(now.x, now.y)), 60.0f);
   EXPECT_LT(redness(image.at(then.x, then.y)), 20.0f);
@@ -312,24 +318,6 @@ namespace {
 
 // A particle crossing the view in a wind leaves a trail where it was: drawn
 // as GL lines with billboards and added to the sums with splats.
-Image oneParticleAfter(ParticleState s, std::shared_ptr<const VectorField> field, int frames) {
-  MainContext::Options options;
-  options.fixedDt = 0.25f;
-  MainContext main(s, FieldUpdate{.field = field}, options);
-  WallRendererSetup setup{.wall = cameraWall(),
-                          .initial = s,
-                          .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
-                          .capacity = 4096,
-                          .nearPlane = 0.1f,
-                          .farPlane = 100.0f};
-  WallRenderer wall(setup);
-  wall.frame(main.next(), {0, 0});   // born at x = -2
-  main.set("emitter.0.rate", 0.0f);  // no more births
-  for (int f = 1; f < frames; ++f)
-    wall.frame(main.next(), {0, 0});
-  return wall.capture();
-}
-
 TEST_F(RenderTest, TrailsShowWhereTheParticleWasWithLinesAndWithSplats) {
   auto field = std::make_shared<VectorField>(
       bake(Uniform({1.0f, 0.0f, 0.0f}), Box{{-5, -5, 0}, {5, 50, 5}}, {2, 2, 2}));

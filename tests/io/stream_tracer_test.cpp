@@ -22,6 +22,7 @@
 #include <vtkPointData.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkSmartPointer.h>
 #include <vtkStreamTracer.h>
 #include <vtkXMLImageDataReader.h>
 #include <vtkXMLImageDataWriter.h>
@@ -80,13 +81,11 @@ void writeTornado(const std::filesystem::path& path) {
   ASSERT_EQ(writer->Write(), 1);
 }
 
-TEST(StreamTracer, Rk4TrajectoriesMatchVtkStreamTracer) {
-  const auto dir = test::scratch();
-  const auto path = dir / "tornado.vti";
-  writeTornado(path);
-  const std::vector<glm::dvec3> seeds{
-      {1.5, 0.0, 1.0}, {0.0, 2.5, 2.0}, {-2.0, -1.0, 0.5}, {1.0, 1.0, 3.0}, {-0.3, 0.4, 1.2}};
-  // VTK's tracer on the file.
+// VTK's RK4 tracer on the file from `seeds`, LENGTH_UNIT steps of 0.01 m,
+// `propagation` metres at most, forward only or both ways.
+vtkSmartPointer<vtkPolyData> vtkTrace(const std::filesystem::path& path,
+                                      const std::vector<glm::dvec3>& seeds, double propagation,
+                                      bool bothWays) {
   vtkNew<vtkXMLImageDataReader> reader;
   reader->SetFileName(path.c_str());
   vtkNew<vtkPolyData> seedData;
@@ -100,13 +99,27 @@ TEST(StreamTracer, Rk4TrajectoriesMatchVtkStreamTracer) {
   tracer->SetIntegratorTypeToRungeKutta4();
   tracer->SetIntegrationStepUnit(vtkStreamTracer::LENGTH_UNIT);
   tracer->SetInitialIntegrationStep(0.01);
-  tracer->SetMaximumPropagation(6.0);
+  tracer->SetMaximumPropagation(propagation);
   tracer->SetMaximumNumberOfSteps(100000);
-  tracer->SetIntegrationDirectionToForward();
+  if (bothWays)
+    tracer->SetIntegrationDirectionToBoth();
+  else
+    tracer->SetIntegrationDirectionToForward();
   tracer->SetTerminalSpeed(1e-9);
   tracer->SetComputeVorticity(false);
   tracer->Update();
-  vtkPolyData* lines = tracer->GetOutput();
+  return tracer->GetOutput();
+}
+
+TEST(StreamTracer, Rk4TrajectoriesMatchVtkStreamTracer) {
+  const auto dir = test::scratch();
+  const auto path = dir / "tornado.vti";
+  writeTornado(path);
+  const std::vector<glm::dvec3> seeds{
+      {1.5, 0.0, 1.0}, {0.0, 2.5, 2.0}, {-2.0, -1.0, 0.5}, {1.0, 1.0, 3.0}, {-0.3, 0.4, 1.2}};
+  // VTK's tracer on the file.
+  const vtkSmartPointer<vtkPolyData> traced = vtkTrace(path, seeds, 6.0, false);
+  vtkPolyData* lines = traced;
   ASSERT_EQ(lines->GetNumberOfLines(), vtkIdType(seeds.size()));
   vtkDataArray* times = lines->GetPointData()->GetArray("IntegrationTime");
   ASSERT_NE(times, nullptr);
@@ -175,26 +188,11 @@ TEST(StreamTracer, StreamlinesMatchVtkStreamTracerBothWays) {
   rake.step = 0.01f;
   rake.length = 4.0f;
 
-  vtkNew<vtkXMLImageDataReader> reader;
-  reader->SetFileName(path.c_str());
-  vtkNew<vtkPolyData> seedData;
-  vtkNew<vtkPoints> seedPoints;
+  std::vector<glm::dvec3> seeds;
   for (const glm::vec3& s : rakeSeeds(rake))
-    seedPoints->InsertNextPoint(s.x, s.y, s.z);
-  seedData->SetPoints(seedPoints);
-  vtkNew<vtkStreamTracer> tracer;
-  tracer->SetInputConnection(reader->GetOutputPort());
-  tracer->SetSourceData(seedData);
-  tracer->SetIntegratorTypeToRungeKutta4();
-  tracer->SetIntegrationStepUnit(vtkStreamTracer::LENGTH_UNIT);
-  tracer->SetInitialIntegrationStep(0.01);
-  tracer->SetMaximumPropagation(4.0);
-  tracer->SetMaximumNumberOfSteps(100000);
-  tracer->SetIntegrationDirectionToBoth();
-  tracer->SetTerminalSpeed(1e-9);
-  tracer->SetComputeVorticity(false);
-  tracer->Update();
-  vtkPolyData* lines = tracer->GetOutput();
+    seeds.emplace_back(s);
+  const vtkSmartPointer<vtkPolyData> traced = vtkTrace(path, seeds, 4.0, true);
+  vtkPolyData* lines = traced;
   vtkDataArray* times = lines->GetPointData()->GetArray("IntegrationTime");
   ASSERT_NE(times, nullptr);
 
