@@ -102,3 +102,23 @@ TEST(ColorMap, TheGpuTableIsWithinOneStepOfEightBitsOfTheMap) {
 
 }  // namespace
 }  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+TEST(ColorTableCache, GivesTheMapsTableAndFollowsItsChanges) {
+  ColorTableCache cache;
+  const glm::vec3 red(1, 0, 0), blue(0, 0, 1);
+  EXPECT_EQ(cache.get(ColorMapName::Viridis, red, blue),
+            ColorMap(ColorMapName::Viridis).gpuTable());
+  EXPECT_EQ(cache.get(ColorMapName::Life, red, blue),
+            ColorMap(ColorMapName::Life, red, blue).gpuTable());
+  // Life follows its colours; the others do not depend on them.
+  EXPECT_EQ(cache.get(ColorMapName::Life, blue, red),
+            ColorMap(ColorMapName::Life, blue, red).gpuTable());
+  EXPECT_EQ(cache.get(ColorMapName::CoolWarm, red, red),
+            ColorMap(ColorMapName::CoolWarm).gpuTable());
+}
+
+}  // namespace
+}  // namespace sandstorm
