@@ -38,6 +38,15 @@ void text(const fs::path& path, const std::string& content) {
   std::ofstream(path, std::ios::binary) << content;
 }
 
+// OpenVDB writes a random UUID into every file's header (36 characters at
+// byte 21); a fixed one keeps the seed corpus, and so a --ci fuzz run, the
+// same on every machine.
+void fixVdbUuid(const fs::path& path) {
+  std::fstream f(path, std::ios::binary | std::ios::in | std::ios::out);
+  f.seekp(21);
+  f.write("00000000-0000-4000-8000-000000000000", 36);
+}
+
 vtkNew<vtkFloatArray> velocity(int n) {
   vtkNew<vtkFloatArray> v;
   v->SetName("velocity");
@@ -122,6 +131,7 @@ int main(int argc, char** argv) {
   const VectorField small = bake(*tornado, Box{{-1, -1, 0}, {1, 1, 1}}, {4, 3, 2});
   saveField(out / "fuzz_field_vti" / "sandstorm.vti", small);
   saveField(out / "fuzz_field_vdb" / "sandstorm.vdb", small);
+  fixVdbUuid(out / "fuzz_field_vdb" / "sandstorm.vdb");
   fs::copy_file(source / "data" / "downwash.vdb", out / "fuzz_field_vdb" / "downwash.vdb",
                 fs::copy_options::overwrite_existing);
   writeHeightMapPgm(HeightMap({-1, -1}, {1, 1}, {3, 2}, {0, 0.5f, 1, 0.25f, 0.75f, 0.1f}),
