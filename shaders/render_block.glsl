@@ -7,22 +7,24 @@ layout(std140, binding = 2) uniform RenderBlock {
   vec4 params;          // x: size (m), y: softness (m), z: 1 for billboards, 0 for points
   vec4 colorScale;      // x: quantity (ColorQuantity), y: value at t = 0, z: at t = 1, w: 1 log scale
   vec4 colorTable[kColorSamples];  // the colour map's rgb at t = i / (kColorSamples - 1)
-  // The vorticity grids' place (units 5 and 6), as the particles' field's.
+  // The colour grids' place (units 5 and 6), as the particles' field's.
   vec4 fieldMin;
   vec4 fieldIndexScale;
   ivec4 fieldDims;
   vec4 placementOffset;  // xyz, w: scale
   vec4 placementRotation[3];
-  vec4 vorticity;  // x: blend, y: 1 with a next frame, z: |strength|, w: 1 with a grid
+  vec4 colorGrid;  // x: blend, y: 1 with a next frame, z: factor, w: 1 with a grid
 } look;
 
-layout(binding = 5) uniform sampler3D uVorticity;      // R: |curl| (VectorField x)
-layout(binding = 6) uniform sampler3D uVorticityNext;  // a time-varying field's next frame
+layout(binding = 5) uniform sampler3D uColorGrid;      // R: |curl| (VectorField x)
+layout(binding = 6) uniform sampler3D uColorGridNext;  // a time-varying field's next frame
 
-// The vorticity the particles feel at x: VectorField::sample of the grid at
+// The colour grid's value the particles feel at x (vorticity or a file's
+// scalar array, core/color/color_grid.h): VectorField::sample of the grid at
 // the placement's local point (as fieldCell() and trilinear() in
-// particle_physics.glsl), blended, times |strength| (core/field/vorticity.h).
-float vorticityGrid(sampler3D grid, ivec3 i0, ivec3 i1, vec3 f) {
+// particle_physics.glsl), blended, times the factor (|strength| for
+// vorticity, 1 for an array).
+float colorGridSample(sampler3D grid, ivec3 i0, ivec3 i1, vec3 f) {
   float c000 = texelFetch(grid, ivec3(i0.x, i0.y, i0.z), 0).x, c100 = texelFetch(grid, ivec3(i1.x, i0.y, i0.z), 0).x;
   float c010 = texelFetch(grid, ivec3(i0.x, i1.y, i0.z), 0).x, c110 = texelFetch(grid, ivec3(i1.x, i1.y, i0.z), 0).x;
   float c001 = texelFetch(grid, ivec3(i0.x, i0.y, i1.z), 0).x, c101 = texelFetch(grid, ivec3(i1.x, i0.y, i1.z), 0).x;
@@ -33,8 +35,8 @@ float vorticityGrid(sampler3D grid, ivec3 i0, ivec3 i1, vec3 f) {
   return c0 + (c1 - c0) * f.z;
 }
 
-float vorticityAt(vec3 x) {
-  if (look.vorticity.w == 0.0) return 0.0;
+float colorGridAt(vec3 x) {
+  if (look.colorGrid.w == 0.0) return 0.0;
   mat3 rotation = mat3(look.placementRotation[0].xyz, look.placementRotation[1].xyz, look.placementRotation[2].xyz);
   vec3 local = (transpose(rotation) * (x - look.placementOffset.xyz)) * (1.0 / look.placementOffset.w);
   ivec3 dims = look.fieldDims.xyz;
@@ -42,9 +44,9 @@ float vorticityAt(vec3 x) {
   ivec3 i0 = min(ivec3(floor(u)), max(dims - 2, ivec3(0)));
   ivec3 i1 = min(i0 + 1, dims - 1);
   vec3 f = u - vec3(i0);
-  float w = vorticityGrid(uVorticity, i0, i1, f);
-  if (look.vorticity.y != 0.0) w = w + (vorticityGrid(uVorticityNext, i0, i1, f) - w) * look.vorticity.x;
-  return look.vorticity.z * w;
+  float w = colorGridSample(uColorGrid, i0, i1, f);
+  if (look.colorGrid.y != 0.0) w = w + (colorGridSample(uColorGridNext, i0, i1, f) - w) * look.colorGrid.x;
+  return look.colorGrid.z * w;
 }
 
 // The colour quantity's value for a particle at `position` (colorValue in
@@ -53,7 +55,7 @@ float colorValue(float age, vec3 velocity, vec3 position) {
   int quantity = int(look.colorScale.x);
   return quantity == 0   ? age
          : quantity == 1 ? length(velocity)
-         : quantity == 5 ? vorticityAt(position)
+         : quantity >= 5 ? colorGridAt(position)
                          : velocity[clamp(quantity - 2, 0, 2)];
 }
 

@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <climits>
 
-#include "core/field/vorticity.h"
+#include "core/color/color_grid.h"
 #include "core/sim/frame_packet_codec.h"
 #include "core/util/byte_reader.h"
 #include "core/util/byte_writer.h"
@@ -178,12 +178,10 @@ std::shared_ptr<const FramePacket> FrameBroadcaster::receive() {
                                .next = store_.find(refs.next),
                                .equation = packet->fieldUpdate->equation,
                                .range = packet->fieldUpdate->range};
-            if (refs.vorticity && update.field) {
-              update.vorticity =
-                  std::make_shared<const VectorField>(vorticityMagnitude(*update.field));
-              if (update.next)
-                update.nextVorticity =
-                    std::make_shared<const VectorField>(vorticityMagnitude(*update.next));
+            if (refs.colorGrid && update.field) {
+              update.colorGrid = makeColorGrid(*update.field, *refs.colorGrid);
+              if (update.next) update.nextColorGrid = makeColorGrid(*update.next, *refs.colorGrid);
+              update.colorArray = *refs.colorGrid;
             }
             packet->fieldUpdate = std::make_shared<const FieldUpdate>(std::move(update));
           }

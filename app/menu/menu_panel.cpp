@@ -267,6 +267,23 @@ void MenuPanel::attributeWidget(const AttributeInfo& info, const std::string& ke
       }
       break;
     }
+    case AttributeType::Name: {
+      // The one name attribute, render.color_array, picks among the field's scalar arrays.
+      const std::string current = std::get<std::string>(value);
+      const std::shared_ptr<const FieldUpdate> field = main_.field();
+      const char* first = "(the field's first)";
+      if (ImGui::BeginCombo(label.c_str(), current.empty() ? first : current.c_str())) {
+        if (ImGui::Selectable(first, current.empty())) apply(key, std::string());
+        if (field && field->field) {
+          for (const VectorField::Scalars& a : field->field->scalars())
+            if (ImGui::Selectable(a.name.c_str(), a.name == current)) apply(key, a.name);
+          if (field->field->scalars().empty())
+            ImGui::TextDisabled("the field carries no scalar arrays");
+        }
+        ImGui::EndCombo();
+      }
+      break;
+    }
   }
   remember(key);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s\n%s", key.c_str(), info.description.c_str());

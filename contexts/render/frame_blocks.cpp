@@ -30,16 +30,18 @@ RenderBlock makeRenderBlock(const ParticleState& state, const FieldUpdate* field
       glm::vec4(float(int(scale.quantity)), scale.low, scale.high, scale.log ? 1.0f : 0.0f);
   for (std::size_t i = 0; i < table.size(); ++i)
     b.colorTable[i] = glm::vec4(table[i], 1.0f);
-  if (field && field->vorticity) {
-    const VectorField& w = *field->vorticity;
+  if (field && field->colorGrid) {
+    const VectorField& w = *field->colorGrid;
     b.fieldMin = glm::vec4(w.bounds().min, 0.0f);
     b.fieldIndexScale = glm::vec4(w.indexScale(), 0.0f);
     b.fieldDims = glm::ivec4(w.dims(), 1);
     b.placementOffset = glm::vec4(field->placement.offset, field->placement.scale);
     for (int c = 0; c < 3; ++c)
       b.placementRotation[c] = glm::vec4(field->placement.rotation[c], 0.0f);
-    b.vorticity = glm::vec4(field->nextVorticity ? blend : 0.0f, field->nextVorticity ? 1.0f : 0.0f,
-                            std::abs(state.sim.fieldStrength), 1.0f);
+    b.colorGrid = glm::vec4(
+        field->nextColorGrid ? blend : 0.0f, field->nextColorGrid ? 1.0f : 0.0f,
+        scale.quantity == ColorQuantity::Vorticity ? std::abs(state.sim.fieldStrength) : 1.0f,
+        1.0f);
   }
   return b;
 }

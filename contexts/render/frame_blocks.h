@@ -29,20 +29,20 @@ struct alignas(16) RenderBlock {
   glm::vec4 params;
   glm::vec4 colorScale;  // x: ColorQuantity, y: value at t = 0, z: at t = 1, w: 1 for a log scale
   glm::vec4 colorTable[ColorMap::kGpuSamples];  // rgb at t = i / (kGpuSamples - 1)
-  // Where the vorticity grids (texture units 5 and 6) sit, for colouring by it.
+  // Where the colour grids (texture units 5 and 6) sit, for colouring by them.
   glm::vec4 fieldMin;
   glm::vec4 fieldIndexScale;
   glm::ivec4 fieldDims;
   glm::vec4 placementOffset;  // xyz, w: scale
   glm::vec4 placementRotation[3];
-  glm::vec4 vorticity;  // x: blend towards the next frame, y: 1 with a next frame, z: |strength|,
+  glm::vec4 colorGrid;  // x: blend towards the next frame, y: 1 with a next frame, z: |strength|,
                         // w: 1 with a grid
 };
 static_assert(sizeof(RenderBlock) == (5 + ColorMap::kGpuSamples + 8) * 16);
 
 ViewBlock makeViewBlock(const View& view, glm::ivec2 size);
 // `field`: the field the particles move in (the colour scale's default ends,
-// the vorticity grid's place), or null. `blend`: towards its next frame.
+// the colour grid's place), or null. `blend`: towards its next frame.
 // `table`: render.color_map's GPU table (a ColorTableCache keeps it).
 RenderBlock makeRenderBlock(const ParticleState& state, const FieldUpdate* field, float blend,
                             const ColorMap::Table& table);

@@ -39,7 +39,7 @@ void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, 
   glNamedBufferSubData(renderBlock_.id(), 0, sizeof(rb), &rb);
   glBindBufferBase(GL_UNIFORM_BUFFER, 1, viewBlock_.id());
   glBindBufferBase(GL_UNIFORM_BUFFER, 2, renderBlock_.id());
-  scene_.bindVorticity();  // texture units 5 and 6, for colouring by vorticity
+  scene_.bindColorGrid();  // texture units 5 and 6, for colouring by vorticity or an array
 
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.sceneFramebuffer());
   glViewport(0, 0, size.x, size.y);

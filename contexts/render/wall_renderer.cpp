@@ -107,7 +107,7 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-// After the views: the render block (the colour quantity) and the vorticity
+// After the views: the render block (the colour quantity) and the colour
 // grids are still bound.
 void WallRenderer::measure(std::uint32_t frame, std::optional<glm::vec3> probe) {
   const ParticleState& state = system_.state();

@@ -21,13 +21,13 @@ void SceneField::set(const ParticleState& state, const FieldUpdate& field, float
   fillSimBlock(inputs, block);
   glNamedBufferSubData(block_.id(), 0, sizeof(block), &block);
   has_ = field.field != nullptr;
-  if (field.vorticity) vorticity_.show(field.vorticity);
-  if (field.nextVorticity) nextVorticity_.show(field.nextVorticity);
+  if (field.colorGrid) colorGrid_.show(field.colorGrid);
+  if (field.nextColorGrid) nextColorGrid_.show(field.nextColorGrid);
 }
 
-void SceneField::bindVorticity() const {
-  if (vorticity_.holds()) vorticity_.bindTexture(5);
-  if (nextVorticity_.holds()) nextVorticity_.bindTexture(6);
+void SceneField::bindColorGrid() const {
+  if (colorGrid_.holds()) colorGrid_.bindTexture(5);
+  if (nextColorGrid_.holds()) nextColorGrid_.bindTexture(6);
 }
 
 SceneField::Binding::Binding(const SceneField& field, const ParticleState& state) {

@@ -22,9 +22,9 @@ class SceneField {
   // frame's simulated seconds, for passes that move points as particles).
   void set(const ParticleState& state, const FieldUpdate& field, float blend, float dt = 0.0f);
   bool has() const { return has_; }
-  // The field's vorticity grids (FieldUpdate::vorticity), when it has them, on
-  // texture units 5 (current) and 6 (next): shaders/render_block.glsl's vorticityAt().
-  void bindVorticity() const;
+  // The field's colour grids (FieldUpdate::colorGrid), when it has them, on
+  // texture units 5 (current) and 6 (next): shaders/render_block.glsl's colorGridAt().
+  void bindColorGrid() const;
 
   // Binds the block (binding 0) and the grids for a pass; the destructor of
   // the returned guard puts back the uniform buffer that was at binding 0
@@ -43,7 +43,7 @@ class SceneField {
  private:
   ParticleEnvironment environment_{GpuField::Storage::Texture};
   gl::Buffer block_;
-  GpuField vorticity_{GpuField::Storage::Texture}, nextVorticity_{GpuField::Storage::Texture};
+  GpuField colorGrid_{GpuField::Storage::Texture}, nextColorGrid_{GpuField::Storage::Texture};
   bool has_ = false;
 };
 

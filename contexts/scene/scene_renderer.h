@@ -40,7 +40,7 @@ class SceneRenderer {
   // `dt`, `reset`: the frame's simulated seconds and reset (streaklines).
   void updateFlow(const ParticleState& state, std::shared_ptr<const FieldUpdate> field, float blend,
                   float dt = 0.0f, bool reset = false);
-  void bindVorticity() const { sceneField_.bindVorticity(); }
+  void bindColorGrid() const { sceneField_.bindColorGrid(); }
   // The probe's marker: a small box `radius` across at the point (none: hidden).
   void setProbe(std::optional<glm::vec3> point, float radius) {
     probe_ = point;

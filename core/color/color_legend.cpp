@@ -34,7 +34,9 @@ double niceStep(double low, double high, int target) {
 ColorLegend ColorLegend::of(const ColorScale& scale, int targetTicks) {
   ColorLegend legend;
   const std::string_view unit = quantityUnit(scale.quantity);
-  legend.title = std::string(quantityName(scale.quantity));
+  legend.title = scale.quantity == ColorQuantity::Array && !scale.arrayName.empty()
+                     ? scale.arrayName
+                     : std::string(quantityName(scale.quantity));
   if (!unit.empty()) legend.title += " (" + std::string(unit) + ")";
   if (scale.log) legend.title += ", log scale";
   const double low = scale.low, high = scale.high;

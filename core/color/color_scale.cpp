@@ -23,7 +23,7 @@ float ColorScale::valueAt(float t) const {
   return low + t * (high - low);
 }
 
-float colorValue(const Particle& p, ColorQuantity q, float vorticity) {
+float colorValue(const Particle& p, ColorQuantity q, float gridValue) {
   switch (q) {
     case ColorQuantity::Age:
       return std::clamp(1.0f - p.life() / std::max(p.lifetime(), 1e-6f), 0.0f, 1.0f);
@@ -36,7 +36,8 @@ float colorValue(const Particle& p, ColorQuantity q, float vorticity) {
     case ColorQuantity::VelocityZ:
       return p.velocity().z;
     case ColorQuantity::Vorticity:
-      return vorticity;
+    case ColorQuantity::Array:
+      return gridValue;
   }
   return 0.0f;
 }
@@ -55,12 +56,22 @@ std::string_view quantityName(ColorQuantity q) {
       return "velocity z";
     case ColorQuantity::Vorticity:
       return "vorticity";
+    case ColorQuantity::Array:
+      return "array";
   }
   return "";
 }
 
 std::string_view quantityUnit(ColorQuantity q) {
-  return q == ColorQuantity::Age ? "" : q == ColorQuantity::Vorticity ? "1/s" : "m/s";
+  switch (q) {
+    case ColorQuantity::Age:
+    case ColorQuantity::Array:
+      return "";
+    case ColorQuantity::Vorticity:
+      return "1/s";
+    default:
+      return "m/s";
+  }
 }
 
 ColorScale resolveColorScale(ColorQuantity quantity, ColorRange range, float fixedLow,
@@ -80,7 +91,9 @@ ColorScale resolveColorScale(ColorQuantity quantity, ColorRange range, float fix
   } else if (quantity == ColorQuantity::Speed) {
     scaled(field.minSpeed, field.maxSpeed, std::abs(feel.velocityFactor));
   } else if (quantity == ColorQuantity::Vorticity) {
-    scaled(field.minVorticity, field.maxVorticity, std::abs(feel.strength));
+    scaled(field.minScalar, field.maxScalar, std::abs(feel.strength));
+  } else if (quantity == ColorQuantity::Array) {
+    scaled(field.minScalar, field.maxScalar, 1.0f);
   } else {
     const int axis = int(quantity) - int(ColorQuantity::VelocityX);
     scaled(field.minVelocity[axis], field.maxVelocity[axis], feel.velocityFactor);

@@ -1,12 +1,13 @@
 #include "core/field/field_range.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace sandstorm {
 
 FieldRange FieldRange::of(const VectorField& field, const glm::mat3& rotation,
-                          const VectorField* vorticity) {
+                          const VectorField* colorGrid) {
   const auto values = field.values();
   const auto valid = field.validity();
   FieldRange r;
@@ -26,14 +27,17 @@ FieldRange FieldRange::of(const VectorField& field, const glm::mat3& rotation,
     any = true;
   }
   if (!any) return FieldRange{};
-  if (vorticity && vorticity->pointCount() == values.size()) {
-    r.minVorticity = std::numeric_limits<float>::max();
-    r.maxVorticity = 0.0f;
-    const auto w = vorticity->values();
+  if (colorGrid && colorGrid->pointCount() == values.size()) {
+    float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
+    const auto w = colorGrid->values();
     for (std::size_t i = 0; i < w.size(); ++i) {
-      if (!valid.empty() && valid[i] == 0) continue;
-      r.minVorticity = std::min(r.minVorticity, w[i].x);
-      r.maxVorticity = std::max(r.maxVorticity, w[i].x);
+      if ((!valid.empty() && valid[i] == 0) || !std::isfinite(w[i].x)) continue;
+      lo = std::min(lo, w[i].x);
+      hi = std::max(hi, w[i].x);
+    }
+    if (lo <= hi) {
+      r.minScalar = lo;
+      r.maxScalar = hi;
     }
   }
   return r;

@@ -1,10 +1,10 @@
 // FieldRange: the range of a field's speed, of each velocity component (turned
-// by the placement's rotation into the particles' axes) and of its vorticity
-// magnitude over its valid grid points: the ends of a colour scale that
-// follows the field (ColorRange::Field), as ParaView's "data range". In the
-// field's own units: the particles feel strength * scale times the velocity
-// and strength times the vorticity (resolveColorScale applies both). Computed
-// once per field frame by the main context and carried with it to every wall.
+// by the placement's rotation into the particles' axes) and of its colour
+// grid (vorticity magnitude or a scalar array) over its valid grid points: the ends of a colour
+// scale that follows the field (ColorRange::Field), as ParaView's "data range". In the field's own
+// units: the particles feel strength * scale times the velocity and strength times the vorticity
+// (resolveColorScale applies both). Computed once per field frame by the main context and carried
+// with it to every wall.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -18,13 +18,15 @@ struct FieldRange {
   float maxSpeed = 1.0f;
   glm::vec3 minVelocity{-1.0f};
   glm::vec3 maxVelocity{1.0f};
-  float minVorticity = 0.0f;
-  float maxVorticity = 1.0f;
+  float minScalar = 0.0f;  // the colour grid's range
+  float maxScalar = 1.0f;
 
-  // Over the valid points; an empty field (or one with no valid point) gives
-  // the defaults. `vorticity`: vorticityMagnitude(field), or null (range 0..1).
+  // Over the valid points (and the colour grid's finite values); an empty
+  // field (or one with no valid point) gives the defaults. `colorGrid`: the
+  // quantity in x on the field's points (core/color/color_grid.h), or null
+  // (range 0..1).
   static FieldRange of(const VectorField& field, const glm::mat3& rotation = glm::mat3(1.0f),
-                       const VectorField* vorticity = nullptr);
+                       const VectorField* colorGrid = nullptr);
   bool operator==(const FieldRange&) const = default;
 };
 

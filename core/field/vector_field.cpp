@@ -87,6 +87,28 @@ void VectorField::setValidity(std::vector<std::uint8_t> valid) {
   valid_ = all ? std::vector<std::uint8_t>() : std::move(valid);
 }
 
+void VectorField::addScalars(std::string name, std::vector<float> values) {
+  if (name.empty()) throw Error("VectorField: a scalar array needs a name");
+  if (values.size() != values_.size())
+    throw Error(concat("VectorField: scalar array '", name, "' has ", values.size(), " values for ",
+                       values_.size(), " grid points"));
+  if (findScalars(name)) throw Error(concat("VectorField: two scalar arrays named '", name, "'"));
+  scalars_.push_back({std::move(name), std::move(values)});
+}
+
+const VectorField::Scalars* VectorField::findScalars(std::string_view name) const {
+  for (const Scalars& s : scalars_)
+    if (s.name == name) return &s;
+  return nullptr;
+}
+
+std::string VectorField::scalarNames() const {
+  std::string out;
+  for (const Scalars& s : scalars_)
+    out += (out.empty() ? "'" : ", '") + s.name + "'";
+  return out.empty() ? "none" : out;
+}
+
 std::size_t VectorField::invalidCount() const {
   return std::size_t(std::count(valid_.begin(), valid_.end(), std::uint8_t{0}));
 }

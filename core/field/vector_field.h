@@ -17,6 +17,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <span>
+#include <string>
+#include <string_view>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -81,12 +83,28 @@ class VectorField {
   // The largest vector length, for colour scales and summaries.
   float maxMagnitude() const;
 
+  // Scalar arrays the file carried with the vectors (temperature, pressure),
+  // one float per grid point in the same layout, for colouring particles by
+  // them (render.color_by = array). Non-finite values are stored as given;
+  // users of the values skip them. addScalars throws Error when the count is
+  // not the point count, the name is empty or already taken.
+  struct Scalars {
+    std::string name;
+    std::vector<float> values;
+  };
+  void addScalars(std::string name, std::vector<float> values);
+  std::span<const Scalars> scalars() const { return scalars_; }
+  const Scalars* findScalars(std::string_view name) const;
+  // "'temperature', 'pressure'", or "none": for messages.
+  std::string scalarNames() const;
+
  private:
   Box bounds_;
   glm::ivec3 dims_{0};
   glm::vec3 indexScale_{0.0f};
   std::vector<glm::vec3> values_;
   std::vector<std::uint8_t> valid_;
+  std::vector<Scalars> scalars_;
 };
 
 }  // namespace sandstorm

@@ -52,9 +52,16 @@ class GridWalk {
       valueSize_ = 12;
     else if (type == "Tree_vec3d_5_4_3")
       valueSize_ = 24;
+    else if (type == "Tree_float_5_4_3")
+      valueSize_ = 4;
+    else if (type == "Tree_double_5_4_3")
+      valueSize_ = 8;
     else
       fail(concat("its tree type '", grid.type,
-                  "' is not one Sandstorm reads (Tree_vec3s_5_4_3 or Tree_vec3d_5_4_3)"));
+                  "' is not one Sandstorm reads (Tree_vec3s_5_4_3, Tree_vec3d_5_4_3, "
+                  "Tree_float_5_4_3 or Tree_double_5_4_3)"));
+    // Half floats are stored at 2 bytes a component: a vec3 in 6, a scalar in 2.
+    halfSize_ = valueSize_ >= 12 ? 6 : 2;
   }
 
   // The grid's compression, metadata and transform; then, unless it is an instance, its tree.
@@ -138,12 +145,15 @@ class GridWalk {
       for (std::uint8_t b : mask)
         count += std::uint64_t(std::popcount(b));
     }
-    const std::uint64_t bytes = count * (fromHalf_ ? 6 : valueSize_);
+    const std::uint64_t bytes = count * (fromHalf_ ? halfSize_ : valueSize_);
     if (flags_ & (kZip | kBlosc)) {
       const auto stored = c_.value<std::int64_t>("compressed size");
       if (stored <= 0) {
-        if (std::uint64_t(-stored) != bytes)
-          fail(concat(what, ": ", -stored, " uncompressed bytes for ", count, " values of ",
+        // A non-positive size says the values are stored raw; negate in
+        // unsigned arithmetic, as INT64_MIN has no signed negation.
+        const std::uint64_t raw = std::uint64_t(0) - std::uint64_t(stored);
+        if (raw != bytes)
+          fail(concat(what, ": ", raw, " uncompressed bytes for ", count, " values of ",
                       bytes / std::max<std::uint64_t>(count, 1), " bytes"));
         c_.skip(bytes, "values");
       } else if (unpack || (flags_ & kBlosc)) {
@@ -268,6 +278,7 @@ class GridWalk {
   std::uint32_t version_;
   std::size_t budget_;
   std::uint64_t valueSize_ = 12;
+  std::uint64_t halfSize_ = 6;
   bool fromHalf_ = false;
   std::uint32_t flags_ = 0;
   std::uint64_t leaves_ = 0;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <mutex>
+#include <optional>
 
 #include <openvdb/io/File.h>
 #include <openvdb/math/Maps.h>
@@ -176,6 +177,80 @@ VectorField densify(const GridT& grid, const std::string& file, const LoadOption
   return field;
 }
 
+bool isScalarType(const std::string& treeType) {
+  return treeType == "Tree_float_5_4_3" || treeType == "Tree_double_5_4_3" ||
+         treeType == "Tree_float_5_4_3_HalfFloat" || treeType == "Tree_double_5_4_3_HalfFloat";
+}
+
+openvdb::GridBase::Ptr readGrid(const std::string& file, const std::string& name) {
+  try {
+    openvdb::io::File vdb(file);
+    vdb.open(false);  // no delayed loading: the file may change after we return
+    openvdb::GridBase::Ptr grid = vdb.readGrid(name);
+    vdb.close();
+    return grid;
+  } catch (const std::exception& e) {
+    throw Error(concat(file, ": OpenVDB could not read grid '", name, "': ", e.what()));
+  }
+}
+
+// A float or double grid sampled (trilinearly, in world space) at the field's points.
+template <class GridT>
+std::vector<float> sampleScalars(const GridT& grid, const VectorField& field,
+                                 std::size_t& nonFinite) {
+  auto accessor = grid.getConstAccessor();
+  openvdb::tools::GridSampler<decltype(accessor), openvdb::tools::BoxSampler> box(accessor,
+                                                                                  grid.transform());
+  std::vector<float> values(field.pointCount(), 0.0f);
+  const glm::ivec3 dims = field.dims();
+  for (int k = 0; k < dims.z; ++k)
+    for (int j = 0; j < dims.y; ++j)
+      for (int i = 0; i < dims.x; ++i) {
+        const glm::vec3 p = field.pointPosition(i, j, k);
+        const float v = float(box.wsSample(openvdb::Vec3d(p.x, p.y, p.z)));
+        if (std::isfinite(v))
+          values[field.index(i, j, k)] = v;
+        else
+          ++nonFinite;
+      }
+  return values;
+}
+
+// The file's float and double grids, sampled at the field's points, as its
+// scalar arrays (to colour particles by); validated like the vector grid.
+// Grids beyond the memory budget are left out, with a note.
+void addScalarGrids(const std::filesystem::path& path, const std::vector<VdbGridEntry>& grids,
+                    const LoadOptions& options, VectorField& field, LoadReport& report) {
+  const std::string file = path.string();
+  const double perArray = 4.0 * double(field.pointCount());
+  double used = 12.0 * double(field.pointCount());
+  for (std::size_t i = 0; i < grids.size(); ++i) {
+    if (!isScalarType(grids[i].type) || field.findScalars(grids[i].name)) continue;
+    if (used + perArray > double(options.memoryBudget)) {
+      report.notes.push_back(concat("scalar grid '", grids[i].name,
+                                    "' left out: it would pass the memory budget of ",
+                                    options.memoryBudget, " bytes"));
+      continue;
+    }
+    checkVdbGrid(path, grids, i, options.memoryBudget);
+    const openvdb::GridBase::Ptr base = readGrid(file, grids[i].name);
+    std::size_t nonFinite = 0;
+    std::vector<float> values;
+    if (auto g = openvdb::gridPtrCast<openvdb::FloatGrid>(base))
+      values = sampleScalars(*g, field, nonFinite);
+    else if (auto g = openvdb::gridPtrCast<openvdb::DoubleGrid>(base))
+      values = sampleScalars(*g, field, nonFinite);
+    else
+      continue;
+    if (nonFinite > 0)
+      log::warn(file, ": ", nonFinite, " values of grid '", grids[i].name,
+                "' are NaN or Inf; replaced by zero");
+    report.nonFinite += nonFinite;
+    field.addScalars(grids[i].name, std::move(values));
+    used += perArray;
+  }
+}
+
 }  // namespace
 
 void initializeOpenVdb() {
@@ -195,21 +270,16 @@ VectorField readVdb(const std::filesystem::path& path, const LoadOptions& option
   for (std::size_t i = 0; i < grids.size(); ++i)
     if (grids[i].name == name) checkVdbGrid(path, grids, i, options.memoryBudget);
 
-  openvdb::GridBase::Ptr base;
-  try {
-    openvdb::io::File vdb(file);
-    vdb.open(false);  // no delayed loading: the file may change after we return
-    base = vdb.readGrid(name);
-    vdb.close();
-  } catch (const openvdb::Exception& e) {
-    throw Error(concat(file, ": OpenVDB could not read grid '", name, "': ", e.what()));
-  } catch (const std::exception& e) {
-    throw Error(concat(file, ": OpenVDB could not read grid '", name, "': ", e.what()));
-  }
+  const openvdb::GridBase::Ptr base = readGrid(file, name);
+  std::optional<VectorField> field;
   if (auto g = openvdb::gridPtrCast<openvdb::Vec3SGrid>(base))
-    return densify(*g, file, options, report);
-  if (auto g = openvdb::gridPtrCast<openvdb::Vec3DGrid>(base))
-    return densify(*g, file, options, report);
+    field = densify(*g, file, options, report);
+  else if (auto g = openvdb::gridPtrCast<openvdb::Vec3DGrid>(base))
+    field = densify(*g, file, options, report);
+  if (field) {
+    addScalarGrids(path, grids, options, *field, report);
+    return std::move(*field);
+  }
   throw Error(concat(file, ": grid '", name, "' is a ", base ? base->type() : "null",
                      " grid; expected a Vec3 grid (vec3s or vec3d)"));
 }

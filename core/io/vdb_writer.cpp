@@ -31,9 +31,22 @@ void writeVdb(const std::filesystem::path& path, const VectorField& field,
         const glm::vec3& v = field.at(i, j, k);
         acc.setValueOn(openvdb::Coord(i, j, k), openvdb::Vec3s(v.x, v.y, v.z));
       }
+  // Scalar arrays as float grids on the same transform, every point active.
+  openvdb::GridPtrVec grids{grid};
+  for (const VectorField::Scalars& a : field.scalars()) {
+    auto scalar = openvdb::FloatGrid::create(0.0f);
+    scalar->setTransform(grid->transform().copy());
+    scalar->setName(a.name);
+    auto sa = scalar->getAccessor();
+    for (int k = 0; k < dims.z; ++k)
+      for (int j = 0; j < dims.y; ++j)
+        for (int i = 0; i < dims.x; ++i)
+          sa.setValueOn(openvdb::Coord(i, j, k), a.values[field.index(i, j, k)]);
+    grids.push_back(scalar);
+  }
   try {
     openvdb::io::File out(path.string());
-    out.write({grid});
+    out.write(grids);
     out.close();
   } catch (const std::exception& e) {
     throw Error(concat(path.string(), ": OpenVDB could not write the file: ", e.what()));

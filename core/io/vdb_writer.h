@@ -2,8 +2,9 @@
 // one Vec3SGrid `gridName` whose transform maps voxel (i, j, k) to grid point
 // (i, j, k) (a ScaleTranslateMap: translation bounds.min, scale the spacing,
 // 1 along axes of one point). Every grid point is an active voxel, zero
-// vectors included, so the active bounding box is the whole grid. Throws
-// Error when the file cannot be written.
+// vectors included, so the active bounding box is the whole grid. Each scalar
+// array of the field becomes a FloatGrid of its name on the same transform.
+// Throws Error when the file cannot be written.
 #pragma once
 
 #include <filesystem>

@@ -41,6 +41,15 @@ void writeVti(const std::filesystem::path& path, const VectorField& field,
     image->GetPointData()->AddArray(mask);
   }
 
+  for (const VectorField::Scalars& a : field.scalars()) {
+    vtkNew<vtkFloatArray> scalar;
+    scalar->SetName(a.name.c_str());
+    scalar->SetNumberOfTuples(vtkIdType(a.values.size()));
+    for (std::size_t i = 0; i < a.values.size(); ++i)
+      scalar->SetValue(vtkIdType(i), a.values[i]);
+    image->GetPointData()->AddArray(scalar);
+  }
+
   VtkMessageTrap trap(path);
   vtkNew<vtkXMLImageDataWriter> writer;
   trap.watch(writer);

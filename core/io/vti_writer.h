@@ -1,8 +1,8 @@
 // writeVti(): a VectorField as VTK XML image data (.vti), written by VTK's own
 // vtkXMLImageDataWriter: origin = bounds.min, spacing = the grid spacing (1
 // along axes of one point), one Float32 point array `arrayName` (the active
-// vectors), binary appended and zlib-compressed. Throws Error when VTK cannot
-// write the file.
+// vectors) and one Float32 point array per scalar array of the field, binary
+// appended and zlib-compressed. Throws Error when VTK cannot write the file.
 #pragma once
 
 #include <filesystem>

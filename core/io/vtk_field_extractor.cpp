@@ -49,6 +49,13 @@ void listArrays(vtkDataSet* data, LoadReport& report) {
   list(data->GetCellData(), ", cell data");
 }
 
+int scalarArrays(vtkPointData* pd) {
+  int n = 0;
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
+    if (vtkDataArray* a = pd->GetArray(i); a && a->GetNumberOfComponents() == 1) ++n;
+  return n;
+}
+
 std::vector<std::string> vectorArrays(vtkFieldData* fd) {
   std::vector<std::string> names;
   for (int i = 0; i < fd->GetNumberOfArrays(); ++i) {
@@ -118,6 +125,13 @@ Chosen chooseArray(vtkDataSet* data, const std::filesystem::path& path, const Lo
     report.notes.push_back(concat("array '", name, "' is cell data: moved to the points"));
     return {cellsToPoints(data, path), name};
   }
+  // Scalar arrays in cell data (a simulation's pressure per cell) move to the
+  // points too, as ParaView's Cell Data to Point Data does, to colour by them.
+  for (int i = 0; i < cd->GetNumberOfArrays(); ++i)
+    if (vtkDataArray* a = cd->GetArray(i); a && a->GetNumberOfComponents() == 1 && a->GetName()) {
+      report.notes.push_back("cell-data scalar arrays moved to the points");
+      return {cellsToPoints(data, path), name};
+    }
   return {data, name};
 }
 
@@ -157,6 +171,36 @@ std::vector<std::uint8_t> validityOf(vtkDataArray* mask) {
   return valid;
 }
 
+// Every named one-component numeric point array but VTK's own (vtkGhostType,
+// vtkValidPointMask: names VTK reserves start with "vtk"), as the field's
+// scalar arrays (VectorField::addScalars); non-finite values and points the
+// mask marks invalid become zero, counted and logged.
+void copyScalars(vtkPointData* pd, vtkDataArray* mask, vtkIdType points,
+                 const std::filesystem::path& path, VectorField& field, LoadReport& report) {
+  for (int i = 0; i < pd->GetNumberOfArrays(); ++i) {
+    vtkDataArray* a = pd->GetArray(i);
+    if (!a || !a->GetName() || a->GetNumberOfComponents() != 1 ||
+        a->GetNumberOfTuples() != points || std::string_view(a->GetName()).starts_with("vtk") ||
+        field.findScalars(a->GetName()))
+      continue;
+    std::vector<float> values(std::size_t(points), 0.0f);
+    std::size_t nonFinite = 0;
+    for (vtkIdType p = 0; p < points; ++p) {
+      if (mask && mask->GetComponent(p, 0) == 0.0) continue;
+      const float v = float(a->GetComponent(p, 0));
+      if (std::isfinite(v))
+        values[std::size_t(p)] = v;
+      else
+        ++nonFinite;
+    }
+    if (nonFinite > 0)
+      log::warn(path.string(), ": ", nonFinite, " values of array '", a->GetName(),
+                "' are NaN, Inf or beyond a float; replaced by zero");
+    report.nonFinite += nonFinite;
+    field.addScalars(a->GetName(), std::move(values));
+  }
+}
+
 void noteOutside(const VectorField& field, const std::filesystem::path& path, LoadReport& report) {
   report.outside = field.invalidCount();
   if (report.outside == 0) return;
@@ -168,16 +212,18 @@ void noteOutside(const VectorField& field, const std::filesystem::path& path, Lo
   log::info(path.string(), ": ", note);
 }
 
+// `perPoint`: bytes a point takes (12 for the vector, 4 per scalar array).
 void checkBudget(const glm::ivec3& dims, const std::filesystem::path& path,
-                 const LoadOptions& options) {
+                 const LoadOptions& options, double perPoint) {
   for (int a = 0; a < 3; ++a)
     if (dims[a] <= 0)
       throw Error(concat(path.string(), ": resolution along ", "xyz"[a], " is ", dims[a],
                          "; expected a positive point count"));
   const double points = double(dims.x) * dims.y * dims.z;
-  if (points > double(VectorField::kMaxPoints) || points * 12.0 > double(options.memoryBudget))
+  if (points > double(VectorField::kMaxPoints) || points * perPoint > double(options.memoryBudget))
     throw Error(concat(path.string(), ": a ", dims.x, "x", dims.y, "x", dims.z, " grid needs ",
-                       points * 12.0, " bytes, beyond the memory budget of ", options.memoryBudget,
+                       points * perPoint, " bytes, beyond the memory budget of ",
+                       options.memoryBudget,
                        " bytes; choose a lower resolution (LoadOptions::resolution, --dims)"));
 }
 
@@ -234,6 +280,7 @@ VectorField copyImage(vtkImageData* image, const std::string& name,
   reportNonFinite(copyVectors(array, mask, values), path, name, report);
   VectorField field(bounds, dims, std::move(values));
   field.setValidity(validityOf(mask));
+  copyScalars(image->GetPointData(), mask, image->GetNumberOfPoints(), path, field, report);
   noteOutside(field, path, report);
   return field;
 }
@@ -259,7 +306,7 @@ VectorField extractVectorField(vtkDataSet* data, const std::filesystem::path& pa
 
   const glm::ivec3 dims =
       options.resolution == glm::ivec3(0) ? report.sourceDims : options.resolution;
-  checkBudget(dims, path, options);
+  checkBudget(dims, path, options, 12.0 + 4.0 * scalarArrays(chosen.data->GetPointData()));
   VtkMessageTrap trap(path);
   vtkNew<vtkResampleToImage> resample;
   trap.watch(resample);
@@ -281,6 +328,7 @@ VectorField extractVectorField(vtkDataSet* data, const std::filesystem::path& pa
   Box bounds{{float(b[0]), float(b[2]), float(b[4])}, {float(b[1]), float(b[3]), float(b[5])}};
   VectorField field(bounds, dims, std::move(out));
   field.setValidity(validityOf(mask));
+  copyScalars(image->GetPointData(), mask, image->GetNumberOfPoints(), path, field, report);
   noteOutside(field, path, report);
   return field;
 }

@@ -54,6 +54,25 @@ AttributeInfo enumEntry(std::string key, std::vector<std::string> choices, std::
   return info;
 }
 
+// A name chosen at run time (AttributeType::Name), stored as a std::string.
+AttributeInfo nameEntry(std::string key, std::string description, Ref<std::string> ref) {
+  AttributeInfo info =
+      entry(std::move(key), AttributeType::Name, 0, 0, "", std::move(description), std::move(ref));
+  return info;
+}
+
+// Why `name` is not a valid Name, or empty.
+std::string nameProblem(std::string_view name) {
+  if (name.size() > kMaxNameLength)
+    return concat("a name of ", name.size(), " characters; at most ", kMaxNameLength);
+  for (const char c : name)
+    if (c <= ' ' || c > '~' || c == '=' || c == '#' || c == '"' || c == '\'')
+      return concat("a name with the character '", (c > ' ' && c <= '~') ? std::string(1, c) : "?",
+                    "' (code ", int(static_cast<unsigned char>(c)),
+                    "); expected printable characters without spaces, '=', '#' or quotes");
+  return {};
+}
+
 #define SIM(member) \
   Ref<decltype(SimSettings::member)>([](ParticleState & s, int) -> auto& { return s.sim.member; })
 #define RENDER(member)                   \
@@ -153,10 +172,16 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(
       entry("render.field_box", T::Bool, 0, 1, "", "Outline the field's bounds", RENDER(fieldBox)));
   v.push_back(enumEntry(
-      "render.color_by", {"age", "speed", "velocity_x", "velocity_y", "velocity_z", "vorticity"},
+      "render.color_by",
+      {"age", "speed", "velocity_x", "velocity_y", "velocity_z", "vorticity", "array"},
       "What colours a particle: its age (fraction of life), its velocity's length or a component "
-      "(m/s), or the field's vorticity magnitude |curl| there (1/s)",
+      "(m/s), the field's vorticity magnitude |curl| there (1/s), or a scalar array of the "
+      "field's file there (render.color_array)",
       RENDER(colorBy)));
+  v.push_back(nameEntry("render.color_array",
+                        "color_by = array: the field file's scalar array (temperature, pressure); "
+                        "empty: its first",
+                        RENDER(colorArray)));
   v.push_back(enumEntry(
       "render.color_map", {"life", "viridis", "plasma", "inferno", "cividis", "cool_warm", "grey"},
       "Colour map: life (colour_birth to colour_death), the perceptually uniform viridis, plasma, "
@@ -317,6 +342,8 @@ const char* typeName(AttributeType t) {
       return "three numbers (x y z)";
     case AttributeType::Enum:
       return "one of the listed choices";
+    case AttributeType::Name:
+      return "a name";
   }
   return "?";
 }
@@ -420,6 +447,10 @@ AttributeValue AttributeTable::parse(std::string_view key, std::string_view text
       if (std::find(info.choices.begin(), info.choices.end(), text) == info.choices.end())
         throw fail();
       return std::string(text);
+    case AttributeType::Name:
+      if (!nameProblem(text).empty())
+        throw Error(concat("attribute '", key, "': ", nameProblem(text)));
+      return std::string(text);
   }
   throw fail();
 }
@@ -447,6 +478,7 @@ AttributeResult AttributeTable::validate(std::string_view key, const AttributeVa
       case AttributeType::Vec3:
         return std::size_t{3};
       case AttributeType::Enum:
+      case AttributeType::Name:
         return std::size_t{4};
     }
     return std::size_t{0};
@@ -481,6 +513,10 @@ AttributeResult AttributeTable::validate(std::string_view key, const AttributeVa
           info.choices.end())
         throw Error(concat("attribute '", key, "': '", std::get<std::string>(v),
                            "' is not one of: ", joined(info.choices)));
+      break;
+    case AttributeType::Name:
+      if (const std::string problem = nameProblem(std::get<std::string>(v)); !problem.empty())
+        throw Error(concat("attribute '", key, "': ", problem));
       break;
     case AttributeType::Bool:
       break;

@@ -30,9 +30,13 @@
 
 namespace sandstorm {
 
-enum class AttributeType { Bool, Int, Float, Vec3, Enum };
+// Name: a name chosen at run time (a field array's), 0 to kMaxNameLength
+// printable ASCII characters without spaces, '=', '#' or quotes, so it prints
+// and parses as one word; empty means "the default".
+enum class AttributeType { Bool, Int, Float, Vec3, Enum, Name };
+inline constexpr std::size_t kMaxNameLength = 64;
 
-// Enum values travel as their choice names ("rk4"), so they print and parse as written.
+// Enum and Name values travel as strings ("rk4"), so they print and parse as written.
 using AttributeValue = std::variant<bool, int, float, glm::vec3, std::string>;
 
 struct AttributeInfo {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/cave/viewer.h"
@@ -28,13 +29,16 @@ struct FieldUpdate {
   // An analytic field's equation (field.mode = equation evaluates it in place of
   // `field`, whose bounds still bound the particles), or null.
   std::shared_ptr<const FieldEquation> equation;
-  // `field`'s range of speed, velocity and vorticity (the colour scale's ends
-  // by default): computed once by the main context (MainContext::setField and
-  // its timeline).
+  // `field`'s range of speed, velocity and the colour grid's values (the
+  // colour scale's ends by default): computed once by the main context
+  // (MainContext::setField and its timeline).
   FieldRange range;
-  // While particles are coloured by vorticity: vorticityMagnitude of `field`
-  // and of `next` (core/field/vorticity.h); null otherwise.
-  std::shared_ptr<const VectorField> vorticity, nextVorticity;
+  // While particles are coloured by a grid quantity (usesColorGrid): that
+  // quantity on `field`'s and `next`'s points, in x (core/color/color_grid.h):
+  // vorticityMagnitude, or the scalar array `colorArray` of the file. Null
+  // otherwise, and when the field has no such array.
+  std::shared_ptr<const VectorField> colorGrid, nextColorGrid;
+  std::string colorArray;  // the array colorGrid holds; empty: vorticity
 };
 
 struct FramePacket {

@@ -1,5 +1,6 @@
 #include "core/sim/frame_packet_codec.h"
 
+#include <optional>
 #include <string>
 
 #include "core/util/byte_reader.h"
@@ -11,8 +12,10 @@ namespace {
 
 constexpr std::uint32_t kPacketMagic = 0x50465353;  // "SSFP"
 constexpr std::uint32_t kFieldMagic = 0x46565353;   // "SSVF"
-constexpr std::uint16_t kVersion = 6;  // 2: equation terms, lod scale; 3: tracking, wand ray; 4:
-                                       // grid validity; 5: field range; 6: vorticity
+// 2: equation terms, lod scale; 3: tracking, wand ray; 4: grid validity;
+// 5: field range; 6: vorticity; 7: colour grids by name, grids' scalar arrays.
+constexpr std::uint16_t kVersion = 7;
+constexpr std::uint32_t kMaxScalarArrays = 256;
 
 // Limits far above any real packet, so a corrupt count cannot make us allocate gigabytes.
 constexpr std::uint32_t kMaxChanges = 4096;
@@ -259,6 +262,11 @@ std::vector<std::byte> encodeField(const VectorField& grid) {
   w.f32s(std::span<const float>(&values.data()->x, values.size() * 3));
   w.boolean(grid.hasValidity());
   if (grid.hasValidity()) w.raw(std::as_bytes(grid.validity()));
+  w.u32(std::uint32_t(grid.scalars().size()));
+  for (const VectorField::Scalars& a : grid.scalars()) {
+    w.str(a.name);
+    w.f32s(a.values);
+  }
   return w.take();
 }
 
@@ -280,11 +288,11 @@ VectorField decodeField(std::span<const std::byte> bytes, std::string_view name)
       r.fail("dims", concat(dims.x, "x", dims.y, "x", dims.z, " points exceed the limit of ",
                             VectorField::kMaxPoints));
   }
-  // The vectors, a flag, and the validity mask when the flag says there is one.
-  if (r.remaining() != points * 12 + 1 && r.remaining() != points * 13 + 1)
-    r.fail("values", concat("expected ", points * 12 + 1, " or ", points * 13 + 1,
-                            " bytes of vectors (and a validity mask) for ", dims.x, "x", dims.y,
-                            "x", dims.z, ", got ", r.remaining()));
+  // The vectors, a flag, the validity mask when the flag says there is one,
+  // and the scalar arrays (a count, then a name and a float per point each).
+  if (r.remaining() < points * 12 + 5)
+    r.fail("values", concat("expected at least ", points * 12 + 5, " bytes of vectors for ", dims.x,
+                            "x", dims.y, "x", dims.z, ", got ", r.remaining()));
   std::vector<glm::vec3> values(points);
   r.f32s(std::span<float>(&values.data()->x, values.size() * 3), "values");
   std::vector<std::uint8_t> valid;
@@ -296,10 +304,25 @@ VectorField decodeField(std::span<const std::byte> bytes, std::string_view name)
       if (valid[i] > 1) r.fail("validity mask", concat("point ", i, ": expected 0 or 1"));
     }
   }
+  const std::uint32_t arrays = r.u32("scalar array count");
+  if (arrays > kMaxScalarArrays)
+    r.fail("scalar array count", concat(arrays, " exceeds the limit of ", kMaxScalarArrays));
+  std::vector<VectorField::Scalars> scalars;
+  for (std::uint32_t a = 0; a < arrays; ++a) {
+    VectorField::Scalars array{r.str("scalar array name", kMaxString), {}};
+    if (r.remaining() < points * 4)
+      r.fail("scalar array values", concat("array '", array.name, "': expected ", points * 4,
+                                           " bytes, got ", r.remaining()));
+    array.values.resize(points);
+    r.f32s(array.values, "scalar array values");
+    scalars.push_back(std::move(array));
+  }
   r.finish();
   try {
     VectorField field(bounds, dims, std::move(values));
     field.setValidity(std::move(valid));
+    for (VectorField::Scalars& a : scalars)
+      field.addScalars(std::move(a.name), std::move(a.values));
     return field;
   } catch (const Error& e) {
     throw Error(concat(name, ": ", e.what()));
@@ -332,9 +355,14 @@ std::vector<std::byte> encodePacket(const FramePacket& p, const FieldRefs& refs)
     w.f32(range.maxSpeed);
     vec3(w, range.minVelocity);
     vec3(w, range.maxVelocity);
-    w.f32(range.minVorticity);
-    w.f32(range.maxVorticity);
-    w.boolean(p.fieldUpdate->vorticity != nullptr || refs.vorticity);
+    w.f32(range.minScalar);
+    w.f32(range.maxScalar);
+    // The colour grid travels by name: the receiver makes it again from the
+    // grids (makeColorGrid is deterministic) rather than receiving it.
+    std::optional<std::string> colorGrid = refs.colorGrid;
+    if (p.fieldUpdate->colorGrid) colorGrid = p.fieldUpdate->colorArray;
+    w.boolean(colorGrid.has_value());
+    if (colorGrid) w.str(*colorGrid);
     // An analytic field's equation (field.mode = equation) travels whole: it is small.
     const FieldEquation* e = p.fieldUpdate->equation.get();
     w.u32(e ? std::uint32_t(e->terms.size()) : 0u);
@@ -392,9 +420,9 @@ FramePacket decodePacket(std::span<const std::byte> bytes, FieldRefs* refs) {
     update.range.maxSpeed = r.f32("field range max speed");
     update.range.minVelocity = vec3(r, "field range min velocity");
     update.range.maxVelocity = vec3(r, "field range max velocity");
-    update.range.minVorticity = r.f32("field range min vorticity");
-    update.range.maxVorticity = r.f32("field range max vorticity");
-    found.vorticity = r.boolean("field vorticity");
+    update.range.minScalar = r.f32("field range min scalar");
+    update.range.maxScalar = r.f32("field range max scalar");
+    if (r.boolean("field colour grid")) found.colorGrid = r.str("field colour grid", kMaxString);
     const std::uint32_t terms = r.u32("equation term count");
     if (terms > std::uint32_t(FieldEquation::kMaxTerms))
       r.fail("equation term count",

@@ -17,7 +17,9 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -30,10 +32,11 @@ namespace sandstorm {
 struct FieldRefs {
   std::uint64_t field = 0;
   std::uint64_t next = 0;
-  // The update carries vorticity grids (when encoding, this or the update's
-  // own pointer says so): the receiver computes them again from the grids
-  // (vorticityMagnitude is deterministic) rather than receiving them.
-  bool vorticity = false;
+  // The update carries colour grids (when encoding, this or the update's own
+  // grid says so), named as colorGridName does ("" vorticity, else a scalar
+  // array): the receiver makes them again from the grids (makeColorGrid is
+  // deterministic) rather than receiving them.
+  std::optional<std::string> colorGrid;
 };
 
 // FNV-1a of the grid's encoding (bounds, dims, values): the grid's identity on the wire.

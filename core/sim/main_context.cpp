@@ -1,9 +1,11 @@
 #include "core/sim/main_context.h"
 
 #include <algorithm>
+#include <optional>
+#include <string>
 #include <utility>
 
-#include "core/field/vorticity.h"
+#include "core/color/color_grid.h"
 #include "core/sim/emission.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
@@ -11,25 +13,35 @@
 namespace sandstorm {
 namespace {
 
+// Which colour grid the state asks of the update's field (colorGridName).
+std::optional<std::string> wantedColorGrid(const ParticleState& state, const FieldUpdate& update) {
+  if (!update.field) return std::nullopt;
+  return colorGridName(state.render.colorBy, state.render.colorArray, *update.field);
+}
+
 // Every field the main context sends carries its range (the colour scale's
 // default ends), computed here once rather than on every wall, and, while
-// particles are coloured by it, its vorticity (a grid the size of the field's).
-FieldUpdate withRange(FieldUpdate update, bool vorticity) {
+// particles are coloured by one, its colour grid (a grid the size of the
+// field's: vorticity or a scalar array of the file).
+FieldUpdate withRange(FieldUpdate update, const ParticleState& state) {
   if (!update.field) return update;
-  if (vorticity) {
-    update.vorticity = std::make_shared<const VectorField>(vorticityMagnitude(*update.field));
-    if (update.next)
-      update.nextVorticity = std::make_shared<const VectorField>(vorticityMagnitude(*update.next));
-  } else {
-    update.vorticity.reset();
-    update.nextVorticity.reset();
+  update.colorGrid.reset();
+  update.nextColorGrid.reset();
+  update.colorArray.clear();
+  if (const std::optional<std::string> name = wantedColorGrid(state, update)) {
+    update.colorGrid = makeColorGrid(*update.field, *name);
+    if (update.next) update.nextColorGrid = makeColorGrid(*update.next, *name);
+    // A time-varying file whose next frame lacks the array: blend nothing.
+    if (update.next && !update.nextColorGrid) update.colorGrid.reset();
+    if (update.colorGrid) update.colorArray = *name;
   }
-  update.range = FieldRange::of(*update.field, update.placement.rotation, update.vorticity.get());
+  update.range = FieldRange::of(*update.field, update.placement.rotation, update.colorGrid.get());
   return update;
 }
 
-bool wantsVorticity(const ParticleState& state) {
-  return state.render.colorBy == ColorQuantity::Vorticity;
+// The colour grid the update carries, in colorGridName's terms.
+std::optional<std::string> carriedColorGrid(const FieldUpdate& update) {
+  return update.colorGrid ? std::optional<std::string>(update.colorArray) : std::nullopt;
 }
 
 }  // namespace
@@ -39,8 +51,7 @@ MainContext::MainContext(ParticleState initial, FieldUpdate field, Options optio
       options_(options),
       state_(initial),
       pending_(std::move(initial)),
-      field_(std::make_shared<const FieldUpdate>(
-          withRange(std::move(field), wantsVorticity(state_)))) {}
+      field_(std::make_shared<const FieldUpdate>(withRange(std::move(field), state_))) {}
 
 AttributeResult MainContext::set(std::string_view key, const AttributeValue& value) {
   const AttributeTable& table = AttributeTable::instance();
@@ -55,6 +66,15 @@ AttributeResult MainContext::set(std::string_view key, const AttributeValue& val
                             " exceeds the particle buffers' limit (run.capacity_limit = ",
                             options_.capacityLimit, "); capped to ", options_.capacityLimit);
   }
+  // Colouring by an array the field does not carry is refused, naming those it does.
+  if ((canonical == "render.color_by" || canonical == "render.color_array") &&
+      trial.render.colorBy == ColorQuantity::Array && field_ && field_->field &&
+      !wantedColorGrid(trial, *field_))
+    throw Error(trial.render.colorArray.empty()
+                    ? std::string("render.color_by: array: the field carries no scalar array")
+                    : concat("render.color_array: the field has no scalar array '",
+                             trial.render.colorArray,
+                             "'; its arrays: ", field_->field->scalarNames()));
   if (!result.warning.empty()) log::warn(result.warning);
   const StateChange change = StateChange::set(canonical, result.applied);
   pending_ = std::move(trial);
@@ -84,7 +104,7 @@ void MainContext::enqueue(const StateChange& change) {
 
 void MainContext::setField(FieldUpdate field) {
   std::lock_guard lock(mutex_);
-  field_ = std::make_shared<const FieldUpdate>(withRange(std::move(field), wantsVorticity(state_)));
+  field_ = std::make_shared<const FieldUpdate>(withRange(std::move(field), state_));
   timeline_.reset();
   fieldChanged_ = true;
 }
@@ -99,7 +119,7 @@ void MainContext::setFieldTimeline(FieldTimeline timeline, const FieldPlacement&
       withRange(FieldUpdate{.field = timeline_->frame(fieldPosition_.first),
                             .placement = placement,
                             .next = timeline_->frame(fieldPosition_.second)},
-                wantsVorticity(state_)));
+                state_));
   fieldChanged_ = true;
 }
 
@@ -188,18 +208,28 @@ FramePacket MainContext::next() {
           withRange(FieldUpdate{.field = timeline_->frame(at.first),
                                 .placement = timelinePlacement_,
                                 .next = timeline_->frame(at.second)},
-                    wantsVorticity(state_)));
+                    state_));
       fieldChanged_ = true;
     }
     fieldPosition_ = at;
     packet.fieldBlend = at.weight;
     if (!state_.field.paused) fieldTime_ += double(packet.simDt) * state_.field.speed;
   }
-  // Coloured by vorticity now (or no longer): the field goes again with (or without) it.
-  if (field_ && field_->field && (field_->vorticity != nullptr) != wantsVorticity(state_)) {
-    field_ = std::make_shared<const FieldUpdate>(withRange(*field_, wantsVorticity(state_)));
+  // Coloured by another grid now (or no longer): the field goes again with it.
+  if (field_ && field_->field && carriedColorGrid(*field_) != wantedColorGrid(state_, *field_)) {
+    field_ = std::make_shared<const FieldUpdate>(withRange(*field_, state_));
     fieldChanged_ = true;
   }
+  // A field without the array asked for (a file switched, a config's choice):
+  // particles take the scale's low end; say so once.
+  const bool missing = field_ && field_->field && state_.render.colorBy == ColorQuantity::Array &&
+                       !field_->colorGrid;
+  if (missing && !warnedMissingArray_)
+    log::warn("render.color_array: the field has no scalar array",
+              state_.render.colorArray.empty() ? "" : " '" + state_.render.colorArray + "'",
+              "; its arrays: ", field_->field->scalarNames(),
+              ". Particles take the colour scale's low end");
+  warnedMissingArray_ = missing;
   if (fieldChanged_) packet.fieldUpdate = field_;
   fieldChanged_ = false;
 

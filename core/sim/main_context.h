@@ -92,6 +92,7 @@ class MainContext {
   double fieldTime_ = 0.0;
   FieldTimeline::Position fieldPosition_;
   bool fieldChanged_ = true;  // packet 0 always carries the field
+  bool warnedMissingArray_ = false;
   std::uint32_t frame_ = 0;
   double time_ = 0.0;
   Viewer viewer_;

@@ -3,6 +3,8 @@
 // and documents every field, and is the only way they change at run time.
 #pragma once
 
+#include <string>
+
 #include <glm/glm.hpp>
 
 #include "core/color/color_map.h"
@@ -75,6 +77,7 @@ struct RenderSettings {
   bool fieldBox = true;      // outline the field's bounds
   // Colour by a quantity (core/color): which, through which map, over which range.
   ColorQuantity colorBy = ColorQuantity::Age;
+  std::string colorArray;  // ColorQuantity::Array: the field's scalar array ("": its first)
   ColorMapName colorMap = ColorMapName::Life;  // Life: colorBirth to colorDeath
   ColorRange colorRange = ColorRange::Field;
   int colorEvery = 30;    // ColorRange::Particles: frames between measurements

@@ -310,6 +310,33 @@ TEST_F(RenderTest, AParticleGetsTheColourOfTheVorticityItFeels) {
   }
 }
 
+// A file's scalar array colours the particles: temperature = 10 + 4 z on a
+// grid whose z spacing makes the trilinear sample exact, so the particle at
+// z = 2 feels 18, 0.4 of the way through the field's range 10..30.
+TEST_F(RenderTest, AParticleGetsTheColourOfTheFileArrayItSits) {
+  auto field = std::make_shared<VectorField>(
+      bake(Uniform({0.0f, 0.0f, 0.0f}), Box{{-5, -5, 0}, {5, 5, 5}}, {2, 2, 6}));
+  std::vector<float> pressure(field->pointCount(), 5.0f), temperature(field->pointCount());
+  for (int k = 0; k < 6; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i)
+        temperature[field->index(i, j, k)] = 10.0f + 4.0f * float(k);
+  field->addScalars("pressure", pressure);
+  field->addScalars("temperature", temperature);
+  for (const RenderMode mode : {RenderMode::Points, RenderMode::Splat}) {
+    const float tolerance = mode == RenderMode::Points ? 1.0f : 6.0f;
+    ParticleState s = alongTheAxis(0.0f, mode);
+    s.render.colorBy = ColorQuantity::Array;
+    s.render.colorArray = "temperature";
+    expectNear(centre(render(s, 4, field)), expected(ColorMapName::Viridis, 0.4f), tolerance,
+               "temperature, mode " + std::to_string(int(mode)));
+    // No name: the field's first array, constant, so the scale's middle.
+    s.render.colorArray.clear();
+    expectNear(centre(render(s, 4, field)), expected(ColorMapName::Viridis, 0.5f), tolerance,
+               "the first array, mode " + std::to_string(int(mode)));
+  }
+}
+
 }  // namespace
 }  // namespace sandstorm
 

@@ -1,6 +1,9 @@
 // ColorScale, FieldRange and ColorLegend against values worked out by hand.
 #include <gtest/gtest.h>
 
+#include <limits>
+
+#include "core/color/color_grid.h"
 #include "core/color/color_legend.h"
 #include "core/color/color_scale.h"
 #include "core/field/field_range.h"
@@ -126,7 +129,10 @@ TEST(ColorLegend, AFlatRangeHasOneTickInTheMiddle) {
 
 #include "core/field/analytic_field.h"
 #include "core/field/vorticity.h"
+#include "core/sim/attribute_table.h"
 #include "core/sim/main_context.h"
+#include "core/sim/state_color_scale.h"
+#include "core/util/error.h"
 
 namespace sandstorm {
 namespace {
@@ -162,8 +168,8 @@ TEST(ColorScale, TheFieldsRangeIsScaledAsTheParticlesFeelIt) {
                    .maxSpeed = 8.0f,
                    .minVelocity = glm::vec3(-1, -2, -3),
                    .maxVelocity = glm::vec3(1, 2, 4),
-                   .minVorticity = 0.5f,
-                   .maxVorticity = 6.0f};
+                   .minScalar = 0.5f,
+                   .maxScalar = 6.0f};
   // Strength 2, placement scale 0.25: velocities x0.5, vorticity x2.
   const FieldFeel feel{0.5f, 2.0f};
   ColorScale s =
@@ -189,18 +195,114 @@ TEST(MainContextVorticity, TheFieldCarriesItsVorticityWhileParticlesAreColouredB
   MainContext main(ParticleState{}, FieldUpdate{.field = field}, {});
   FramePacket first = main.next();
   ASSERT_TRUE(first.fieldUpdate);
-  EXPECT_FALSE(first.fieldUpdate->vorticity);
+  EXPECT_FALSE(first.fieldUpdate->colorGrid);
   main.set("render.color_by", std::string("vorticity"));
   const FramePacket later = main.next();  // the change and the field, with its vorticity
   ASSERT_TRUE(later.fieldUpdate) << "the field goes again, with its vorticity";
-  ASSERT_TRUE(later.fieldUpdate->vorticity);
+  ASSERT_TRUE(later.fieldUpdate->colorGrid);
   EXPECT_EQ(later.fieldUpdate->field, field);  // the same grid: walls do not upload it again
-  EXPECT_NEAR(later.fieldUpdate->range.maxVorticity, 2.0f, 1e-5f);
+  EXPECT_NEAR(later.fieldUpdate->range.maxScalar, 2.0f, 1e-5f);
   EXPECT_FALSE(main.next().fieldUpdate);  // once
   main.set("render.color_by", std::string("speed"));
   const FramePacket off = main.next();
   ASSERT_TRUE(off.fieldUpdate);
-  EXPECT_FALSE(off.fieldUpdate->vorticity);
+  EXPECT_FALSE(off.fieldUpdate->colorGrid);
+}
+
+// A field with a validity mask and two scalar arrays, one with a NaN.
+std::shared_ptr<VectorField> withArrays() {
+  auto field = std::make_shared<VectorField>(bake(Spin(), Box{{-2, -2, 0}, {2, 2, 1}}, {3, 2, 2}));
+  std::vector<float> t(field->pointCount()), p(field->pointCount(), 1.0f);
+  for (std::size_t i = 0; i < t.size(); ++i)
+    t[i] = 300.0f + float(i);
+  t[5] = std::numeric_limits<float>::quiet_NaN();
+  std::vector<std::uint8_t> valid(field->pointCount(), 1);
+  valid[11] = 0;  // the largest temperature, 311, lies outside the data
+  field->setValidity(valid);
+  field->addScalars("temperature", t);
+  field->addScalars("pressure", p);
+  return field;
+}
+
+TEST(ColorGrid, AnArraysGridHoldsItsValuesAndTheFieldsValidity) {
+  const auto field = withArrays();
+  const auto grid = scalarGrid(*field, "temperature");
+  ASSERT_TRUE(grid);
+  EXPECT_EQ(grid->dims(), field->dims());
+  EXPECT_EQ(grid->values()[3], glm::vec3(303.0f, 0.0f, 0.0f));
+  EXPECT_EQ(grid->invalidCount(), 1u);
+  EXPECT_FALSE(scalarGrid(*field, "density"));
+  // The range skips the point without data and the NaN.
+  const FieldRange range = FieldRange::of(*field, glm::mat3(1.0f), grid.get());
+  EXPECT_EQ(range.minScalar, 300.0f);
+  EXPECT_EQ(range.maxScalar, 310.0f);
+}
+
+TEST(ColorGrid, TheQuantityNamesTheGridItNeeds) {
+  const auto field = withArrays();
+  const VectorField bare(Box{{0, 0, 0}, {1, 1, 1}}, {2, 2, 2});
+  EXPECT_EQ(colorGridName(ColorQuantity::Speed, "", *field), std::nullopt);
+  EXPECT_EQ(colorGridName(ColorQuantity::Vorticity, "pressure", *field), std::string());
+  EXPECT_EQ(colorGridName(ColorQuantity::Array, "pressure", *field), std::string("pressure"));
+  EXPECT_EQ(colorGridName(ColorQuantity::Array, "", *field), std::string("temperature"));
+  EXPECT_EQ(colorGridName(ColorQuantity::Array, "density", *field), std::nullopt);
+  EXPECT_EQ(colorGridName(ColorQuantity::Array, "", bare), std::nullopt);
+}
+
+TEST(MainContextArrays, TheFieldCarriesTheChosenArrayAndTheLegendNamesIt) {
+  const auto field = withArrays();
+  MainContext main(ParticleState{}, FieldUpdate{.field = field}, {});
+  main.next();
+  main.set("render.color_by", std::string("array"));  // no name: the first array
+  FramePacket p = main.next();
+  ASSERT_TRUE(p.fieldUpdate && p.fieldUpdate->colorGrid);
+  EXPECT_EQ(p.fieldUpdate->colorArray, "temperature");
+  EXPECT_EQ(p.fieldUpdate->range.maxScalar, 310.0f);
+  ParticleState state = main.state();
+  const ColorScale scale = stateColorScale(state, p.fieldUpdate.get());
+  EXPECT_EQ(scale.low, 300.0f);
+  EXPECT_EQ(scale.high, 310.0f);
+  EXPECT_EQ(ColorLegend::of(scale).title, "temperature");
+  main.set("render.color_array", std::string("pressure"));
+  p = main.next();
+  ASSERT_TRUE(p.fieldUpdate && p.fieldUpdate->colorGrid);
+  EXPECT_EQ(p.fieldUpdate->colorArray, "pressure");
+  EXPECT_EQ(p.fieldUpdate->colorGrid->values()[0].x, 1.0f);
+  EXPECT_FALSE(main.next().fieldUpdate);  // once
+}
+
+TEST(MainContextArrays, AnArrayTheFieldLacksIsRefusedNamingThoseItHas) {
+  MainContext main(ParticleState{}, FieldUpdate{.field = withArrays()}, {});
+  main.next();
+  try {
+    main.set("render.color_array", std::string("density"));
+    main.set("render.color_by", std::string("array"));
+    FAIL() << "no error";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("no scalar array 'density'; its arrays: 'temperature', "
+                                         "'pressure'"),
+              std::string::npos)
+        << e.what();
+  }
+  EXPECT_EQ(main.pendingState().render.colorBy, ColorQuantity::Age);  // nothing half-applied
+  MainContext bare(ParticleState{},
+                   FieldUpdate{.field = std::make_shared<VectorField>(Box{{0, 0, 0}, {1, 1, 1}},
+                                                                      glm::ivec3(2, 2, 2))},
+                   {});
+  EXPECT_THROW(bare.set("render.color_by", std::string("array")), Error);
+}
+
+TEST(AttributeTableNames, ANameIsOneWordOfPrintableCharacters) {
+  const AttributeTable& table = AttributeTable::instance();
+  ParticleState s;
+  table.set(s, "render.color_array", table.parse("render.color_array", "Temperature_K"));
+  EXPECT_EQ(s.render.colorArray, "Temperature_K");
+  EXPECT_EQ(toString(table.get(s, "render.color_array")), "Temperature_K");
+  for (const std::string& bad :
+       std::vector<std::string>{"two words", "a=b", "x\ny", "\"q\"", std::string(65, 'a')})
+    EXPECT_THROW(table.set(s, "render.color_array", AttributeValue(bad)), Error) << bad;
+  EXPECT_THROW(table.set(s, "render.color_array", 3), Error);
+  EXPECT_EQ(s.render.colorArray, "Temperature_K");
 }
 
 }  // namespace

@@ -72,9 +72,10 @@ FramePacket fullPacket() {
                             .maxSpeed = 9.5f,
                             .minVelocity = {-1, -2, -3},
                             .maxVelocity = {4, 5, 6},
-                            .minVorticity = 0.125f,
-                            .maxVorticity = 7.5f},
-                  .vorticity = grid(3)});
+                            .minScalar = 0.125f,
+                            .maxScalar = 7.5f},
+                  .colorGrid = grid(3),
+                  .colorArray = "pressure"});
   p.viewer.head.position = {0.1f, 0.2f, 1.7f};
   p.viewer.head.right = {0, -1, 0};
   p.viewer.head.eyeSeparation = 0.063f;
@@ -150,8 +151,8 @@ TEST(FramePacketCodec, EveryMemberSurvivesARoundTrip) {
   EXPECT_EQ(got.field, refs.field);
   EXPECT_EQ(got.next, refs.next);
   EXPECT_NE(got.field, got.next);
-  EXPECT_TRUE(got.vorticity);          // the receiver computes the grid itself
-  EXPECT_FALSE(q.fieldUpdate->field);  // grids travel apart
+  EXPECT_EQ(got.colorGrid, std::optional<std::string>("pressure"));  // the receiver makes it
+  EXPECT_FALSE(q.fieldUpdate->field);                                // grids travel apart
   EXPECT_EQ(q.fieldUpdate->placement.offset, p.fieldUpdate->placement.offset);
   EXPECT_EQ(q.fieldUpdate->placement.scale, p.fieldUpdate->placement.scale);
   EXPECT_EQ(q.fieldUpdate->placement.rotation, p.fieldUpdate->placement.rotation);
@@ -182,7 +183,10 @@ TEST(FramePacketCodec, NaNAndInfinityTravelAsBits) {
 TEST(FramePacketCodec, APacketsSizeDoesNotDependOnTheFieldOrTheParticles) {
   FramePacket p = fullPacket();
   const std::size_t small = encodePacket(p).size();
-  p.fieldUpdate = std::make_shared<const FieldUpdate>(FieldUpdate{.field = grid(1, {64, 64, 64})});
+  p.fieldUpdate =
+      std::make_shared<const FieldUpdate>(FieldUpdate{.field = grid(1, {64, 64, 64}),
+                                                      .colorGrid = grid(3, {64, 64, 64}),
+                                                      .colorArray = "pressure"});
   EXPECT_EQ(encodePacket(p).size(), small);
   // A frame of the identity scene (one emitter, no change) is about a hundred bytes.
   FramePacket plain;
@@ -218,6 +222,31 @@ TEST(FramePacketCodec, FieldGridsRoundTripAndHashByContent) {
   EXPECT_EQ(std::memcmp(b.values().data(), a->values().data(), a->values().size_bytes()), 0);
   EXPECT_EQ(fieldHash(b), fieldHash(*a));
   EXPECT_NE(fieldHash(*grid(1.0001f)), fieldHash(*a));
+}
+
+TEST(FramePacketCodec, AGridsScalarArraysTravelWithIt) {
+  VectorField a = *grid(1);
+  std::vector<float> t(a.pointCount()), p(a.pointCount());
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    t[i] = 280.0f + 0.5f * float(i);
+    p[i] = -float(i * i);
+  }
+  a.addScalars("temperature", t);
+  a.addScalars("p", p);
+  const std::vector<std::byte> bytes = encodeField(a);
+  const VectorField b = decodeField(bytes);
+  ASSERT_EQ(b.scalars().size(), 2u);
+  EXPECT_EQ(b.scalars()[0].name, "temperature");
+  EXPECT_EQ(b.scalars()[0].values, t);
+  EXPECT_EQ(b.scalars()[1].name, "p");
+  EXPECT_EQ(b.scalars()[1].values, p);
+  EXPECT_NE(fieldHash(a), fieldHash(*grid(1)));  // the arrays are part of the grid's identity
+  for (std::size_t n = 0; n < bytes.size(); ++n)
+    try {
+      decodeField(std::span(bytes).first(n));
+      ADD_FAILURE() << "a grid cut to " << n << " bytes decoded";
+    } catch (const Error&) {
+    }
 }
 
 void expectError(std::span<const std::byte> bytes, bool packet, const std::string& expected) {

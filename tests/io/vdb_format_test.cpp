@@ -10,6 +10,7 @@
 #include <openvdb/openvdb.h>
 
 #include "core/io/field_loader.h"
+#include "core/io/field_writer.h"
 #include "core/io/vdb_reader.h"
 #include "core/io/vdb_writer.h"
 #include "tests/io/io_test_util.h"
@@ -209,6 +210,62 @@ TEST(VdbFormat, GridsAreChosenByNameAndListedWhenWrong) {
   const auto scalars = dir / "scalars.vdb";
   write(scalars, {c});
   test::expectError([&] { loadField(scalars); }, {scalars.string(), "no Vec3 grid", "density"});
+}
+
+// Float and double grids come along as scalar arrays, sampled at the field's
+// points even on a transform of their own: density = 2 x - y + 3 z is linear,
+// so trilinear sampling gives it exactly.
+TEST(VdbFormat, ScalarGridsBecomeTheFieldsArrays) {
+  const auto dir = test::scratch();
+  const auto coarse = openvdb::math::Transform::createLinearTransform(0.5);
+  auto fine = openvdb::math::Transform::createLinearTransform(0.25);
+  fine->postTranslate(openvdb::Vec3d(-0.5, 0.0, 0.25));
+  auto vel = asymmetricGrid(coarse, openvdb::CoordBBox({0, 0, 0}, {4, 3, 2}));
+  auto density = openvdb::DoubleGrid::create();
+  density->setTransform(fine);
+  density->setName("density");
+  auto temperature = openvdb::FloatGrid::create();
+  temperature->setTransform(coarse->copy());
+  temperature->setName("temperature");
+  auto d = density->getAccessor();
+  auto t = temperature->getAccessor();
+  for (auto it = openvdb::CoordBBox({-2, -2, -3}, {12, 10, 8}).begin(); it; ++it) {
+    const openvdb::Vec3d w = fine->indexToWorld(*it);
+    d.setValueOn(*it, 2.0 * w.x() - w.y() + 3.0 * w.z());
+  }
+  for (auto it = openvdb::CoordBBox({0, 0, 0}, {4, 3, 2}).begin(); it; ++it)
+    t.setValueOn(*it, 280.0f + float((*it).x()));
+  const auto path = dir / "scalars.vdb";
+  write(path, {vel, density, temperature});
+  const VectorField f = loadField(path);
+  ASSERT_EQ(f.scalars().size(), 2u) << f.scalarNames();
+  const VectorField::Scalars* dens = f.findScalars("density");
+  const VectorField::Scalars* temp = f.findScalars("temperature");
+  ASSERT_TRUE(dens && temp);
+  for (int k = 0; k < f.dims().z; ++k)
+    for (int j = 0; j < f.dims().y; ++j)
+      for (int i = 0; i < f.dims().x; ++i) {
+        const glm::vec3 p = f.pointPosition(i, j, k);
+        EXPECT_NEAR(dens->values[f.index(i, j, k)], 2.0f * p.x - p.y + 3.0f * p.z, 1e-4f);
+        EXPECT_NEAR(temp->values[f.index(i, j, k)], 280.0f + float(i), 1e-4f);
+      }
+}
+
+TEST(VdbFormat, OurWritersKeepTheScalarArrays) {
+  const auto dir = test::scratch();
+  VectorField f(Box{{-1.0f, 0.0f, 2.0f}, {1.0f, 3.0f, 3.0f}}, {3, 4, 2});
+  std::vector<float> t(f.pointCount());
+  for (std::size_t i = 0; i < t.size(); ++i)
+    t[i] = 0.5f * float(i) - 3.0f;
+  f.addScalars("temperature", t);
+  for (const char* name : {"ours.vdb", "ours.vti"}) {
+    saveField(dir / name, f);
+    const VectorField g = loadField(dir / name);
+    const VectorField::Scalars* back = g.findScalars("temperature");
+    ASSERT_TRUE(back) << name << ": " << g.scalarNames();
+    for (std::size_t i = 0; i < t.size(); ++i)
+      EXPECT_NEAR(back->values[i], t[i], 1e-5f) << name << " point " << i;
+  }
 }
 
 TEST(VdbFormat, OurVdbReadsBackThroughOpenVdbUnchanged) {

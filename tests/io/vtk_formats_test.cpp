@@ -219,6 +219,77 @@ TEST(VtkFormats, StructuredGridsAreResampledThroughVtk) {
   }
 }
 
+// The scalar array "pressure" = x y at every point of `f` (bilinear, so
+// resampling by trilinear interpolation keeps it exact).
+void expectPressure(const VectorField& f, float tolerance) {
+  const VectorField::Scalars* p = f.findScalars("pressure");
+  ASSERT_TRUE(p) << "arrays: " << f.scalarNames();
+  for (int k = 0; k < f.dims().z; ++k)
+    for (int j = 0; j < f.dims().y; ++j)
+      for (int i = 0; i < f.dims().x; ++i) {
+        const glm::vec3 x = f.pointPosition(i, j, k);
+        ASSERT_NEAR(p->values[f.index(i, j, k)], x.x * x.y, tolerance)
+            << "at point " << i << " " << j << " " << k;
+      }
+}
+
+TEST(VtkFormats, ScalarArraysComeWithTheFieldInEveryFormat) {
+  const auto dir = test::scratch();
+  const auto image = makeImage();
+  const auto rect = makeRectilinear();
+  {
+    vtkNew<vtkXMLImageDataWriter> vti;
+    vti->SetInputData(image);
+    vti->SetFileName((dir / "image.vti").c_str());
+    ASSERT_EQ(vti->Write(), 1);
+    vtkNew<vtkStructuredPointsWriter> vtk;
+    vtk->SetInputData(image);
+    vtk->SetFileName((dir / "image.vtk").c_str());
+    ASSERT_EQ(vtk->Write(), 1);
+    vtkNew<vtkXMLRectilinearGridWriter> vtr;
+    vtr->SetInputData(rect);
+    vtr->SetFileName((dir / "grid.vtr").c_str());
+    ASSERT_EQ(vtr->Write(), 1);
+  }
+  for (const char* name : {"image.vti", "image.vtk", "grid.vtr"}) {
+    SCOPED_TRACE(name);
+    const VectorField f = loadField(dir / name);
+    ASSERT_EQ(f.scalars().size(), 1u) << f.scalarNames();  // the vectors are not a scalar
+    expectPressure(f, 1e-4f);
+    LoadOptions finer;
+    finer.resolution = {9, 7, 5};
+    expectPressure(loadField(dir / name, finer), 1e-4f);
+  }
+}
+
+TEST(VtkFormats, CellScalarArraysMoveToThePointsAndNonFiniteValuesBecomeZero) {
+  const auto dir = test::scratch();
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(3, 3, 2);
+  addArrays(image);
+  vtkNew<vtkFloatArray> density;
+  density->SetName("density");
+  density->SetNumberOfTuples(image->GetNumberOfCells());
+  density->FillValue(1.25f);
+  image->GetCellData()->AddArray(density);
+  vtkFloatArray::SafeDownCast(image->GetPointData()->GetArray("pressure"))
+      ->SetValue(4, std::numeric_limits<float>::infinity());
+  vtkNew<vtkXMLImageDataWriter> w;
+  w->SetInputData(image);
+  w->SetFileName((dir / "cells.vti").c_str());
+  ASSERT_EQ(w->Write(), 1);
+  LoadReport report;
+  const VectorField f = loadField(dir / "cells.vti", {}, &report);
+  const VectorField::Scalars* d = f.findScalars("density");
+  ASSERT_TRUE(d) << f.scalarNames();
+  for (const float v : d->values)
+    EXPECT_FLOAT_EQ(v, 1.25f);
+  const VectorField::Scalars* p = f.findScalars("pressure");
+  ASSERT_TRUE(p);
+  EXPECT_EQ(p->values[4], 0.0f);
+  EXPECT_EQ(report.nonFinite, 1u);
+}
+
 TEST(VtkFormats, ImageDataResampledToAnotherResolution) {
   const auto dir = test::scratch();
   const auto path = dir / "image.vti";
