@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "core/io/file_cursor.h"
+#include "core/io/vdb_metadata_check.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -30,16 +31,7 @@ std::vector<VdbGridEntry> checkVdbFile(const std::filesystem::path& path) {
                        ": was written as a stream without grid offsets; re-save it with "
                        "openvdb::io::File"));
   c.skip(36, "UUID");
-  const auto metaCount = c.value<std::uint32_t>("file metadata count");
-  if (metaCount > c.left() / 12)
-    throw Error(concat(file, ": declares ", metaCount,
-                       " metadata entries, more than the file "
-                       "can hold"));
-  for (std::uint32_t i = 0; i < metaCount; ++i) {
-    c.string("metadata name");
-    c.string("metadata type");
-    c.skip(c.value<std::uint32_t>("metadata size"), "metadata value");
-  }
+  checkVdbMetadata(c, file + ": file metadata");
   const auto gridCount = c.value<std::int32_t>("grid count");
   if (gridCount < 0 || std::uint64_t(gridCount) > c.left() / 40)
     throw Error(concat(file, ": declares ", gridCount, " grids, which the file cannot hold"));

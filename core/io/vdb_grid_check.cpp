@@ -14,6 +14,7 @@
 
 #include "core/io/file_cursor.h"
 #include "core/io/vdb_file_check.h"
+#include "core/io/vdb_metadata_check.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -88,25 +89,7 @@ class GridWalk {
     throw Error(concat(file_, ": grid '", name_, "' at byte ", c_.offset(), ": ", what));
   }
 
-  void metadata() {
-    const auto count = c_.value<std::uint32_t>("grid metadata count");
-    if (count > c_.left() / 12) fail(concat(count, " metadata entries cannot fit in the grid"));
-    // OpenVDB reads these types' values at their own size, whatever the entry says.
-    static const std::pair<const char*, std::uint32_t> fixed[] = {
-        {"bool", 1},   {"int32", 4},  {"int64", 8},  {"float", 4},  {"double", 8}, {"vec2i", 8},
-        {"vec2s", 8},  {"vec2d", 16}, {"vec3i", 12}, {"vec3s", 12}, {"vec3d", 24}, {"vec4i", 16},
-        {"vec4s", 16}, {"vec4d", 32}, {"mat4s", 64}, {"mat4d", 128}};
-    for (std::uint32_t i = 0; i < count; ++i) {
-      const std::string name = c_.string("metadata name");
-      const std::string type = c_.string("metadata type");
-      const auto size = c_.value<std::uint32_t>("metadata size");
-      for (const auto& [t, bytes] : fixed)
-        if (type == t && size != bytes)
-          fail(concat("metadata '", name, "' of type ", type, " declares ", size,
-                      " bytes; the type has ", bytes));
-      c_.skip(size, "metadata value");
-    }
-  }
+  void metadata() { checkVdbMetadata(c_, concat(file_, ": grid '", name_, "' metadata")); }
 
   void transform(int depth) {
     const std::string type = c_.string("transform type");
