@@ -9,6 +9,7 @@
 #include "app/run_stats.h"
 #include "contexts/particles/simulation_share.h"
 #include "contexts/platform/egl_context.h"
+#include "core/cave/wall_views.h"
 #include "core/flow/probe.h"
 #include "core/flow/streamline_vtp.h"
 #include "core/sim/particle_dump.h"
@@ -444,6 +445,36 @@ void AppRun::autoColorRange(const ParticleState& state) {
   main_.set("render.color_max", high);
 }
 
+// A right click on a wall's window places the probe (probe.position, a change
+// like a menu edit) where the ray through that pixel meets the slice, or
+// nearest the field's centre.
+void AppRun::pickProbe() {
+  const std::optional<DesktopInput::Click> click = input_->takeClick();
+  if (!click || click->window >= windows_.size()) return;
+  const ParticleState state = main_.pendingState();
+  if (!state.probe.enabled) {
+    log::info("right click: the probe is off; turn on probe.enabled to place it");
+    return;
+  }
+  const auto it = std::find(wallWindows_.begin(), wallWindows_.end(), windows_[click->window]);
+  if (it == wallWindows_.end()) return;
+  const WallSpec& wall = config_.walls[std::size_t(it - wallWindows_.begin())];
+  const glm::ivec2 size = glm::max(windows_[click->window]->framebufferSize(), glm::ivec2(1));
+  const Viewer viewer =
+      lastPacket_ ? lastPacket_->viewer : Viewer{head_->pose(main_.time()), navigation_};
+  const WorldRay ray = wallClickRay(wall, viewer, click->at, float(size.x) / float(size.y),
+                                    config_.run.nearPlane, config_.run.farPlane);
+  const auto field = main_.field();
+  const glm::vec3 centre = field && field->field
+                               ? field->placement.toRoom(field->field->bounds().center())
+                               : ray.origin + ray.direction;
+  try {
+    main_.set("probe.position", pickProbePoint(state, ray.origin, ray.direction, centre));
+  } catch (const Error& e) {
+    log::warn("probe: ", e.what());
+  }
+}
+
 // What the probe reads: the field there (the main context's current field
 // frame) and the first wall's count of particles near it, a few frames old.
 std::vector<std::string> AppRun::probeLines(const ParticleState& state) const {
@@ -469,6 +500,10 @@ std::vector<std::string> AppRun::probeLines(const ParticleState& state) const {
     std::snprintf(text, sizeof text, "outside the field");
   }
   lines.push_back(text);
+  for (const auto& [name, value] : r.scalars) {
+    std::snprintf(text, sizeof text, "%.60s %.4g", name.c_str(), value);
+    lines.push_back(text);
+  }
   if (!walls_.empty())
     if (const std::optional<ParticleMeasurement> m = walls_[0]->stats().measure) {
       std::snprintf(text, sizeof text, "%u particles within %.2f m (frame %u)", m->nearProbe,
@@ -502,6 +537,7 @@ void AppRun::runOneProcess() {
       if (close) break;
       input_->update(dt, dynamic_cast<DesktopHead*>(head_.get()), navigation_,
                      menu_ && menu_->wantsMouse(), false);
+      pickProbe();
     }
     for (const auto& w : walls_)
       failed_ = failed_ || w->error().has_value();
@@ -538,9 +574,11 @@ void AppRun::runCluster() {
       for (GlfwWindow* w : windows_)
         close = close || w->shouldClose();
       if (close) stop |= ClusterLink::kClosed;
-      if (cluster_->root())
+      if (cluster_->root()) {
         input_->update(dt, dynamic_cast<DesktopHead*>(head_.get()), navigation_,
                        menu_ && menu_->wantsMouse(), false);
+        pickProbe();
+      }
     }
     std::shared_ptr<const FramePacket> packet;
     if (!cluster_->root()) {

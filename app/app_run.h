@@ -56,6 +56,7 @@ class AppRun {
   void beforePacket(float dt);
   void autoColorRange(const ParticleState& state);
   std::vector<std::string> probeLines(const ParticleState& state) const;
+  void pickProbe();
   void reportProgress(Clock::time_point now);
   int finish();
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <utility>
 
 namespace sandstorm {
 namespace {
@@ -56,9 +57,23 @@ void DesktopInput::update(float dt, DesktopHead* head, Navigation& navigation, b
     dragging_ = false;
   }
   lastX_ = x;
+  const bool right = glfwGetMouseButton(focused, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+  if (right && !rightDown_ && !menuHasMouse) {
+    int width = 0, height = 0;
+    glfwGetWindowSize(focused, &width, &height);
+    const std::size_t index =
+        std::size_t(std::find(windows_.begin(), windows_.end(), focused) - windows_.begin());
+    if (width > 0 && height > 0)
+      click_ = Click{index, glm::vec2(float(x / width), float(y / height))};
+  }
+  rightDown_ = right;
   const double wheel = scrolled.exchange(0.0);
   if (wheel != 0.0 && !menuHasMouse)
     navigation.scale = std::clamp(navigation.scale * float(std::pow(1.1, wheel)), 0.01f, 100.0f);
+}
+
+std::optional<DesktopInput::Click> DesktopInput::takeClick() {
+  return std::exchange(click_, std::nullopt);
 }
 
 }  // namespace sandstorm

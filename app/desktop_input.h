@@ -1,12 +1,16 @@
 // DesktopInput: the desktop simulator's controls, read on the main thread from
 // the windows: W/S/A/D or the arrow keys walk the head (Q/E turn it, R/F raise
 // and lower it); dragging with the left mouse button turns the world about the
-// room's vertical axis, the scroll wheel scales it. Ignored while the menu has
-// the mouse or keyboard. Make it before the menu's ImGuiSession, so ImGui's
-// GLFW callbacks chain to its own.
+// room's vertical axis, the scroll wheel scales it; a right click is kept for
+// the probe (takeClick). Ignored while the menu has the mouse or keyboard. Make it before the
+// menu's ImGuiSession, so ImGui's GLFW callbacks chain to its own.
 #pragma once
 
+#include <cstddef>
+#include <optional>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 #include "core/cave/viewer.h"
 
@@ -22,10 +26,20 @@ class DesktopInput {
   void update(float dt, DesktopHead* head, Navigation& navigation, bool menuHasMouse,
               bool menuHasKeyboard);
 
+  // The last right click since the previous call: the window (an index into
+  // the constructor's list) and where, in [0, 1]^2 of the window, y down.
+  struct Click {
+    std::size_t window = 0;
+    glm::vec2 at{0.0f};
+  };
+  std::optional<Click> takeClick();
+
  private:
   std::vector<GLFWwindow*> windows_;
   bool dragging_ = false;
   double lastX_ = 0.0;
+  bool rightDown_ = false;
+  std::optional<Click> click_;
 };
 
 }  // namespace sandstorm

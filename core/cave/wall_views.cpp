@@ -1,5 +1,7 @@
 #include "core/cave/wall_views.h"
 
+#include <algorithm>
+
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace sandstorm {
@@ -40,6 +42,26 @@ std::vector<View> wallViews(const WallSpec& wall, const Viewer& viewer, float as
     views.push_back(v);
   }
   return views;
+}
+
+WorldRay wallClickRay(const WallSpec& wall, const Viewer& viewer, glm::vec2 at, float aspect,
+                      float nearPlane, float farPlane) {
+  const std::vector<View> views = wallViews(wall, viewer, aspect, nearPlane, farPlane);
+  std::size_t eye = 0;
+  if (wall.stereo == StereoMode::SideBySide) {
+    eye = at.x < 0.5f ? 0 : 1;
+    at.x = at.x < 0.5f ? 2.0f * at.x : 2.0f * at.x - 1.0f;
+  } else if (wall.stereo == StereoMode::TopBottom) {
+    eye = at.y < 0.5f ? 0 : 1;
+    at.y = at.y < 0.5f ? 2.0f * at.y : 2.0f * at.y - 1.0f;
+  }
+  const View& v = views[std::min(eye, views.size() - 1)];
+  const glm::vec2 ndc(2.0f * at.x - 1.0f, 1.0f - 2.0f * at.y);
+  const glm::mat4 inverse = glm::inverse(v.projection * v.view);
+  const glm::vec4 nearPoint = inverse * glm::vec4(ndc, -1.0f, 1.0f);
+  const glm::vec4 farPoint = inverse * glm::vec4(ndc, 1.0f, 1.0f);
+  const glm::vec3 a = glm::vec3(nearPoint) / nearPoint.w, b = glm::vec3(farPoint) / farPoint.w;
+  return {v.eye, glm::normalize(b - a)};
 }
 
 }  // namespace sandstorm

@@ -16,4 +16,15 @@ std::vector<View> wallViews(const WallSpec& wall, const Viewer& viewer, float as
 
 bool isStereo(StereoMode mode);
 
+// The ray (world coordinates) through a point of a wall's image, `at` in
+// [0, 1]^2 of the whole image with y down, from the eye of the view drawn
+// there (side-by-side: left eye on the left half; top-bottom: on the top).
+// `aspect` as wallViews gets it: the whole image's. `direction` is unit.
+struct WorldRay {
+  glm::vec3 origin{0.0f};
+  glm::vec3 direction{0.0f, 1.0f, 0.0f};
+};
+WorldRay wallClickRay(const WallSpec& wall, const Viewer& viewer, glm::vec2 at, float aspect,
+                      float nearPlane, float farPlane);
+
 }  // namespace sandstorm

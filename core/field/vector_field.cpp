@@ -77,6 +77,22 @@ glm::vec3 VectorField::sample(const glm::vec3& p) const {
   return c0 + (c1 - c0) * f.z;
 }
 
+float VectorField::sampleScalars(const Scalars& scalars, const glm::vec3& p) const {
+  const glm::vec3 last = glm::vec3(dims_ - 1);
+  const glm::vec3 u = glm::clamp((p - bounds_.min) * indexScale_, glm::vec3(0.0f), last);
+  const glm::ivec3 i0 = glm::min(glm::ivec3(glm::floor(u)), glm::max(dims_ - 2, glm::ivec3(0)));
+  const glm::ivec3 i1 = glm::min(i0 + 1, dims_ - 1);
+  const glm::vec3 f = u - glm::vec3(i0);
+  const auto v = [&](int i, int j, int k) { return scalars.values[index(i, j, k)]; };
+  const float c00 = v(i0.x, i0.y, i0.z) + (v(i1.x, i0.y, i0.z) - v(i0.x, i0.y, i0.z)) * f.x;
+  const float c10 = v(i0.x, i1.y, i0.z) + (v(i1.x, i1.y, i0.z) - v(i0.x, i1.y, i0.z)) * f.x;
+  const float c01 = v(i0.x, i0.y, i1.z) + (v(i1.x, i0.y, i1.z) - v(i0.x, i0.y, i1.z)) * f.x;
+  const float c11 = v(i0.x, i1.y, i1.z) + (v(i1.x, i1.y, i1.z) - v(i0.x, i1.y, i1.z)) * f.x;
+  const float c0 = c00 + (c10 - c00) * f.y;
+  const float c1 = c01 + (c11 - c01) * f.y;
+  return c0 + (c1 - c0) * f.z;
+}
+
 void VectorField::setValidity(std::vector<std::uint8_t> valid) {
   if (!valid.empty() && valid.size() != values_.size())
     throw Error(concat("VectorField: a validity mask of ", valid.size(), " points for ",

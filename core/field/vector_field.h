@@ -95,6 +95,8 @@ class VectorField {
   void addScalars(std::string name, std::vector<float> values);
   std::span<const Scalars> scalars() const { return scalars_; }
   const Scalars* findScalars(std::string_view name) const;
+  // A scalar array sampled at p as sample() samples the vectors.
+  float sampleScalars(const Scalars& scalars, const glm::vec3& p) const;
   // "'temperature', 'pressure'", or "none": for messages.
   std::string scalarNames() const;
 

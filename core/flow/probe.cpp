@@ -1,5 +1,8 @@
 #include "core/flow/probe.h"
 
+#include <algorithm>
+#include <cmath>
+
 namespace sandstorm {
 
 std::optional<glm::vec3> probePoint(const ParticleState& state, const WandRay& wand,
@@ -25,6 +28,21 @@ std::optional<glm::vec3> probePoint(const ParticleState& state, const WandRay& w
   return navigation.roomToWorld(room);
 }
 
+glm::vec3 pickProbePoint(const ParticleState& state, const glm::vec3& origin,
+                         const glm::vec3& direction, const glm::vec3& centre) {
+  if (!(glm::length(direction) > 0.0f)) return centre;
+  const glm::vec3 d = glm::normalize(direction);
+  if (state.slice.enabled && glm::length(state.slice.normal) > 0.0f) {
+    const glm::vec3 n = glm::normalize(state.slice.normal);
+    const float facing = glm::dot(d, n);
+    if (std::abs(facing) > 1e-6f) {
+      const float t = glm::dot(state.slice.origin - origin, n) / facing;
+      if (t > 0.0f) return origin + t * d;
+    }
+  }
+  return origin + std::max(glm::dot(centre - origin, d), 0.0f) * d;
+}
+
 ProbeReading readProbe(const glm::vec3& point, const PhysicsInputs& in) {
   ProbeReading r;
   r.point = point;
@@ -34,6 +52,8 @@ ProbeReading readProbe(const glm::vec3& point, const PhysicsInputs& in) {
   if (!r.inside) return r;
   r.velocity = fieldAt(point, in);
   r.speed = glm::length(r.velocity);
+  for (const VectorField::Scalars& s : in.field->scalars())
+    r.scalars.emplace_back(s.name, in.field->sampleScalars(s, local));
   return r;
 }
 

@@ -41,6 +41,25 @@ TEST(Probe, FollowsTheWandToTheSlicePlaneOrAlongItsRay) {
   EXPECT_FALSE(probePoint(state, wand, nav));
 }
 
+TEST(Probe, AClickPicksTheSlicePlaneOrThePointNearestTheFieldsCentre) {
+  ParticleState state;
+  const glm::vec3 eye{0, -10, 2}, centre{1, 0, 3};
+  // Looking along +y: the ray's point nearest the centre is (0, 0, 2).
+  EXPECT_EQ(pickProbePoint(state, eye, {0, 5, 0}, centre), glm::vec3(0, 0, 2));
+  // A centre behind the eye: the eye itself, never behind it.
+  EXPECT_EQ(pickProbePoint(state, eye, {0, -1, 0}, centre), eye);
+  state.slice.enabled = true;
+  state.slice.origin = {0, -4, 0};
+  state.slice.normal = {0, 2, 0};  // the plane y = -4, six metres ahead
+  EXPECT_EQ(pickProbePoint(state, eye, {0, 1, 0}, centre), glm::vec3(0, -4, 2));
+  const glm::vec3 slanted = pickProbePoint(state, eye, {1, 1, 0}, centre);
+  EXPECT_NEAR(slanted.x, 6.0f, 1e-5f);
+  EXPECT_NEAR(slanted.y, -4.0f, 1e-5f);
+  // The plane behind the eye, or along the ray: the nearest point again.
+  EXPECT_EQ(pickProbePoint(state, eye, {0, -1, 0}, centre), eye);
+  EXPECT_EQ(pickProbePoint(state, eye, {0, 0, 1}, centre), glm::vec3(0, -10, 3));
+}
+
 TEST(Probe, ReadsTheFieldAsTheParticlesFeelIt) {
   const VectorField f = bake(Spin(), Box{{-2, -2, 0}, {2, 2, 2}}, {5, 5, 3});
   PhysicsInputs in;
@@ -51,6 +70,23 @@ TEST(Probe, ReadsTheFieldAsTheParticlesFeelIt) {
   EXPECT_NEAR(r.velocity.y, 3.0f, 1e-5f);
   EXPECT_NEAR(r.speed, 3.0f, 1e-5f);
   EXPECT_FALSE(readProbe({5, 0, 1}, in).inside);
+}
+
+TEST(Probe, ReadsTheFilesScalarArraysThere) {
+  VectorField f = bake(Spin(), Box{{-2, -2, 0}, {2, 2, 2}}, {5, 5, 3});
+  std::vector<float> t(f.pointCount());
+  for (int k = 0; k < 3; ++k)
+    for (int j = 0; j < 5; ++j)
+      for (int i = 0; i < 5; ++i)
+        t[f.index(i, j, k)] = f.pointPosition(i, j, k).x - 2.0f * f.pointPosition(i, j, k).z;
+  f.addScalars("temperature", t);
+  PhysicsInputs in;
+  in.field = &f;
+  in.placement.offset = {10, 0, 0};                            // the field sits 10 m along x
+  const ProbeReading r = readProbe({10.5f, 0.3f, 1.25f}, in);  // local (0.5, 0.3, 1.25)
+  ASSERT_EQ(r.scalars.size(), 1u);
+  EXPECT_EQ(r.scalars[0].first, "temperature");
+  EXPECT_NEAR(r.scalars[0].second, 0.5f - 2.5f, 1e-5f);  // linear: trilinear is exact
 }
 
 }  // namespace

@@ -144,3 +144,48 @@ TEST(HeadTrackers, DesktopHeadWalksWhereItFaces) {
 
 }  // namespace
 }  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+// Distance from point p to the line through the ray.
+float offRay(const WorldRay& r, const glm::vec3& p) {
+  return glm::length(glm::cross(p - r.origin, r.direction));
+}
+
+// The defining property: the ray through a point of a wall's image passes
+// through that point of the wall, from the eye drawn there.
+TEST(WallClickRay, PassesThroughTheClickedPointOfTheWall) {
+  WallSpec wall;
+  wall.corners = kFront;
+  Viewer viewer;
+  viewer.head.position = {0.3f, -0.2f, 1.2f};
+  viewer.head.eyeSeparation = 0.1f;
+  viewer.navigation.scale = 0.5f;
+  viewer.navigation.offset = {1.0f, 0.0f, 0.0f};
+  viewer.navigation.yawRadians = 0.4f;
+  // at (0.25, 0.2): a quarter from the left, a fifth from the top.
+  const glm::vec3 room = kFront.lowerLeft + 0.25f * (kFront.lowerRight - kFront.lowerLeft) +
+                         0.8f * (kFront.upperLeft - kFront.lowerLeft);
+  const glm::vec3 world = viewer.navigation.roomToWorld(room);
+  const WorldRay mono = wallClickRay(wall, viewer, {0.25f, 0.2f}, 1.0f, 0.1f, 100.0f);
+  EXPECT_NEAR(glm::length(mono.origin - viewer.navigation.roomToWorld(viewer.head.position)), 0.0f,
+              1e-5f);
+  EXPECT_LT(offRay(mono, world), 1e-4f);
+  // Side by side: the same point of the right half is seen from the right eye.
+  wall.stereo = StereoMode::SideBySide;
+  const WorldRay right = wallClickRay(wall, viewer, {0.625f, 0.2f}, 2.0f, 0.1f, 100.0f);
+  EXPECT_NEAR(glm::length(right.origin - viewer.navigation.roomToWorld(viewer.head.rightEye())),
+              0.0f, 1e-5f);
+  EXPECT_LT(offRay(right, world), 1e-4f);
+  // A camera wall: the image's centre lies on the line to the target.
+  WallSpec camera;
+  camera.camera = CameraSpec{};
+  camera.camera->position = {0, -8, 2};
+  camera.camera->target = {1, 0, 3};
+  const WorldRay centre = wallClickRay(camera, Viewer{}, {0.5f, 0.5f}, 1.5f, 0.1f, 100.0f);
+  EXPECT_LT(offRay(centre, camera.camera->target), 1e-4f);
+}
+
+}  // namespace
+}  // namespace sandstorm
