@@ -4,6 +4,7 @@
 //   sandstorm-field convert IN OUT [--array NAME] [--dims X Y Z]
 //   sandstorm-field resample IN OUT --dims X Y Z [--array NAME]
 //   sandstorm-field generate NAME OUT --dims X Y Z --bounds X0 Y0 Z0 X1 Y1 Z1 [--param K=V]...
+//   sandstorm-field derive IN OUT --quantity NAME... [--array NAME] [--dims X Y Z]
 //
 // Reads every format loadField() reads; writes .vti and .vdb. Errors go to
 // stderr with exit status 1; bad arguments exit with CLI11's status (non-zero).
@@ -18,6 +19,7 @@
 
 #include "core/field/analytic_field.h"
 #include "core/field/analytic_field_factory.h"
+#include "core/field/derived_scalars.h"
 #include "core/field/height_map_io.h"
 #include "core/io/field_loader.h"
 #include "core/io/field_statistics.h"
@@ -81,7 +83,8 @@ void info(const std::string& file, const Common& c) {
             << "zero:        " << s.zero << " vectors\n"
             << "NaN/Inf:     " << report.nonFinite << " vectors (replaced by zero)\n"
             << "outside:     " << f.invalidCount()
-            << " points outside the file's cells (vtkValidPointMask)\n";
+            << " points outside the file's cells (vtkValidPointMask)\n"
+            << "scalars:     " << f.scalarNames() << "\n";
   for (const std::string& note : report.notes)
     std::cout << "note:        " << note << "\n";
 }
@@ -92,6 +95,21 @@ void convert(const std::string& in, const std::string& out, const Common& c) {
   saveField(out, f, report.arrayName.empty() ? "velocity" : report.arrayName);
   const glm::ivec3 d = f.dims();
   std::cerr << "wrote " << out << " (" << d.x << "x" << d.y << "x" << d.z << ")\n";
+}
+
+// Adds derived quantities (core/field/derived_scalars.h) to a field's scalar
+// arrays and writes it with them (and those it had).
+void derive(const std::string& in, const std::string& out, const std::vector<std::string>& names,
+            const Common& c) {
+  LoadReport report;
+  VectorField f = loadField(in, optionsFrom(c), &report);
+  for (const std::string& name : names) {
+    if (f.findScalars(name))
+      throw Error(concat(in, ": already has an array '", name, "'; its arrays: ", f.scalarNames()));
+    f.addScalars(name, derivedScalars(f, name).values);
+  }
+  saveField(out, f, report.arrayName.empty() ? "velocity" : report.arrayName);
+  std::cerr << "wrote " << out << " with arrays " << f.scalarNames() << "\n";
 }
 
 FieldParams parseParams(const std::vector<std::string>& items) {
@@ -167,6 +185,20 @@ int main(int argc, char** argv) {
   generateCmd->add_option("--param", gparams, "a field parameter KEY=VALUE (repeatable)");
   generateCmd->footer(fieldList());
 
+  Common deriveOpts;
+  std::string din, dout;
+  std::vector<std::string> dnames;
+  auto* deriveCmd = app.add_subcommand(
+      "derive", "add derived scalar arrays (vortex cores, divergence) to a field");
+  deriveCmd->add_option("IN", din, "input file")->required();
+  deriveCmd->add_option("OUT", dout, "output file (.vti or .vdb)")->required();
+  std::string quantities;
+  for (std::string_view n : derivedScalarNames())
+    quantities += (quantities.empty() ? "" : ", ") + std::string(n);
+  deriveCmd->add_option("--quantity", dnames, "a quantity to add (repeatable): " + quantities)
+      ->required();
+  addCommon(deriveCmd, deriveOpts, false);
+
   std::string tout;
   int tsize = 257;
   double textent = 200.0;
@@ -188,6 +220,7 @@ int main(int argc, char** argv) {
     if (*infoCmd) info(infoFile, infoOpts);
     if (*convertCmd) convert(in, out, convertOpts);
     if (*resampleCmd) convert(rin, rout, resampleOpts);
+    if (*deriveCmd) derive(din, dout, dnames, deriveOpts);
     if (*terrainCmd) {
       const HeightMap dunes = duneTerrain({tsize, tsize}, glm::vec2(float(textent)), tseed);
       writeHeightMapPgm(dunes, tout, 0.0f, 1.0f);

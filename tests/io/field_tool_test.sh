@@ -35,6 +35,12 @@ expect ok "dims: +40 x 40 x 16" -- info "$tmp/downwash.vti"
 expect ok "wrote" -- resample "$data/tornado.vti" "$tmp/small.vdb" --dims 10 10 6
 expect ok "dims: +10 x 10 x 6" -- info "$tmp/small.vdb"
 expect ok "wrote" -- generate gravity "$tmp/g.vti" --dims 4 4 4 --bounds -1 -1 -1 1 1 1 --param power=-2
+expect ok "scalars: +'q_criterion', 'divergence'" -- info "$data/tornado.vti"
+expect ok "with arrays 'q_criterion', 'divergence', 'helicity'" -- derive "$data/tornado.vti" "$tmp/derived.vdb" --quantity helicity
+expect ok "scalars: +'q_criterion', 'divergence', 'helicity'" -- info "$tmp/derived.vdb"
+expect fail "already has an array 'divergence'" -- derive "$data/tornado.vti" "$tmp/x.vti" --quantity divergence
+expect fail "no derived quantity 'lambda2'.*q_criterion" -- derive "$data/tornado.vti" "$tmp/x.vti" --quantity lambda2
+expect fail "quantity|required" -- derive "$data/tornado.vti" "$tmp/x.vti"
 expect fail "no such file" -- info "$tmp/missing.vti"
 expect fail "unknown analytic field 'hurricane'.*tornado" -- generate hurricane "$tmp/x.vti" --dims 2 2 2 --bounds 0 0 0 1 1 1
 expect fail "unknown parameter 'speed'" -- generate wind "$tmp/x.vti" --dims 2 2 2 --bounds 0 0 0 1 1 1 --param speed=3
