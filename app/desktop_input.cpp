@@ -8,6 +8,8 @@
 #include <cmath>
 #include <utility>
 
+#include "core/util/log.h"
+
 namespace sandstorm {
 namespace {
 
@@ -21,8 +23,11 @@ void onScroll(GLFWwindow*, double, double dy) {
 
 DesktopInput::DesktopInput(std::vector<GLFWwindow*> windows) : windows_(std::move(windows)) {
   // Made before the menu's ImGui session, whose GLFW backend then chains to these.
-  for (GLFWwindow* w : windows_)
+  for (GLFWwindow* w : windows_) {
     glfwSetScrollCallback(w, onScroll);
+    // A click shorter than a frame still reads as pressed at the next poll.
+    glfwSetInputMode(w, GLFW_STICKY_MOUSE_BUTTONS, GLFW_TRUE);
+  }
 }
 
 DesktopInput::~DesktopInput() = default;
@@ -58,6 +63,7 @@ void DesktopInput::update(float dt, DesktopHead* head, Navigation& navigation, b
   }
   lastX_ = x;
   const bool right = glfwGetMouseButton(focused, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
+  if (right && !rightDown_) log::debug("right click (the menu has the mouse: ", menuHasMouse, ")");
   if (right && !rightDown_ && !menuHasMouse) {
     int width = 0, height = 0;
     glfwGetWindowSize(focused, &width, &height);
