@@ -266,16 +266,25 @@ void AppRun::openMenu() {
 }
 
 // The legend's wall: the one marked `legend = true`, else the menu's, else the
-// first. (In a cluster, rank 0 builds it, so only its walls can show it.)
+// first. In cluster mode the configuration's walls were split among the ranks
+// with the legend's wall marked (MpiCluster): the rank that drives it builds
+// the legend, a rank other than 0 from the packets it receives
+// (showMirrorLegend); the others show none.
 void AppRun::openLegend() {
-  if (walls_.empty()) return;
-  int shown = menuWall_ >= 0 ? menuWall_ : 0;
-  for (std::size_t i = 0; i < walls_.size(); ++i)
-    if (walls_[i]->setup().wall.legend) shown = int(i);
-  const WallSpec& wall = walls_[std::size_t(shown)]->setup().wall;
-  legend_ =
-      std::make_unique<LegendHost>(main_, wall.window ? wall.window->size : wall.offscreenSize);
-  walls_[std::size_t(shown)]->addOverlay([this] { return legend_->latest(); }, legend_->font());
+  const auto& all = config_.walls;
+  auto chosen = std::find_if(all.begin(), all.end(), [](const WallSpec& w) { return w.legend; });
+  if (chosen == all.end() && cluster_) return;
+  if (chosen == all.end())
+    chosen = std::find_if(all.begin(), all.end(), [](const WallSpec& w) { return w.menu; });
+  if (chosen == all.end()) chosen = all.begin();
+  if (chosen == all.end()) return;
+  for (const auto& wall : walls_) {
+    const WallSpec& spec = wall->setup().wall;
+    if (spec.name != chosen->name) continue;
+    legend_ = std::make_unique<LegendHost>(spec.window ? spec.window->size : spec.offscreenSize);
+    wall->addOverlay([this] { return legend_->latest(); }, legend_->font());
+    return;
+  }
 }
 
 // The streamlines this wall draws, traced on the CPU (their twin) from its
@@ -419,9 +428,10 @@ void AppRun::beforePacket(float dt) {
   track(dt);
   const ParticleState state = main_.pendingState();
   autoColorRange(state);
-  const std::vector<std::string> probe = probeLines(state);
+  const auto field = main_.field();
+  const std::vector<std::string> probe = probeLines(state, field.get(), lastPacket_.get());
   if (menu_) showMenu(dt, probe);
-  if (legend_) legend_->frame(dt, probe);
+  if (legend_) legend_->frame(dt, state, field.get(), probe);
 }
 
 // render.color_range = particles: every render.color_every frames, the first
@@ -475,14 +485,25 @@ void AppRun::pickProbe() {
   }
 }
 
+// A rank other than 0 shows its own legend (when one of its walls is the
+// legend's, or its first wall) from the packets it receives.
+void AppRun::showMirrorLegend(float dt, std::shared_ptr<const FramePacket> packet) {
+  if (!legend_) return;
+  if (!mirror_) mirror_ = std::make_unique<StateMirror>(main_.initialState());
+  mirror_->apply(std::move(packet));
+  const auto field = mirror_->field();
+  legend_->frame(dt, mirror_->state(), field.get(),
+                 probeLines(mirror_->state(), field.get(), mirror_->last()));
+}
+
 // What the probe reads: the field there (the main context's current field
 // frame) and the first wall's count of particles near it, a few frames old.
-std::vector<std::string> AppRun::probeLines(const ParticleState& state) const {
+std::vector<std::string> AppRun::probeLines(const ParticleState& state, const FieldUpdate* field,
+                                            const FramePacket* last) const {
   if (!state.probe.enabled) return {};
-  const auto point = probePoint(state, lastPacket_ ? lastPacket_->wand : WandRay{},
-                                lastPacket_ ? lastPacket_->viewer.navigation : navigation_);
+  const auto point = probePoint(state, last ? last->wand : WandRay{},
+                                last ? last->viewer.navigation : navigation_);
   if (!point) return {};
-  const auto field = main_.field();
   PhysicsInputs in;
   in.field = field ? field->field.get() : nullptr;
   in.placement = field ? field->placement : FieldPlacement{};
@@ -583,6 +604,7 @@ void AppRun::runCluster() {
     std::shared_ptr<const FramePacket> packet;
     if (!cluster_->root()) {
       packet = cluster_->receive();  // null: rank 0 sent the last frame
+      if (packet) showMirrorLegend(dt, packet);
     } else if (lastFrame_ < 0 || frames_ <= lastFrame_) {
       beforePacket(dt);
       packet = std::make_shared<const FramePacket>(main_.next());

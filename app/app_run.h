@@ -26,6 +26,7 @@
 #include "core/sim/frame_channel.h"
 #include "core/sim/main_context.h"
 #include "core/sim/session_log.h"
+#include "core/sim/state_mirror.h"
 
 namespace sandstorm {
 
@@ -55,7 +56,9 @@ class AppRun {
   void showMenu(float dt, const std::vector<std::string>& probe);
   void beforePacket(float dt);
   void autoColorRange(const ParticleState& state);
-  std::vector<std::string> probeLines(const ParticleState& state) const;
+  std::vector<std::string> probeLines(const ParticleState& state, const FieldUpdate* field,
+                                      const FramePacket* last) const;
+  void showMirrorLegend(float dt, std::shared_ptr<const FramePacket> packet);
   void pickProbe();
   void reportProgress(Clock::time_point now);
   int finish();
@@ -90,6 +93,7 @@ class AppRun {
   std::unique_ptr<DesktopInput> input_;
   std::unique_ptr<MenuHost> menu_;
   std::unique_ptr<LegendHost> legend_;
+  std::unique_ptr<StateMirror> mirror_;  // ranks other than 0: the packets' state, for the legend
   std::shared_ptr<const FramePacket> lastPacket_;  // the newest packet made (probe, menu)
   std::optional<std::uint32_t> colorRangeFrom_;    // the measurement last made the colour range
   std::uint32_t nextColorRangeAt_ = 0;

@@ -182,9 +182,26 @@ bool MpiCluster::start(const AppConfig* config, const std::string& fingerprint,
 void MpiCluster::localize(AppConfig& config, AppOptions& options) {
   std::vector<WallSpec> mine;
   std::string menuWall;
+  // The legend's wall in the whole configuration (the marked one, else the
+  // menu's, else the first): marked on the rank that drives it, and no other.
+  std::string legendWall = config.walls.empty() ? "" : config.walls.front().name;
+  bool marked = false;
+  for (const WallSpec& w : config.walls) {
+    if (w.legend && !marked) legendWall = w.name;
+    marked = marked || w.legend;
+  }
+  if (!marked)
+    for (const WallSpec& w : config.walls)
+      if (w.menu) {
+        legendWall = w.name;
+        break;
+      }
   for (std::size_t i = 0; i < config.walls.size(); ++i) {
     if (config.walls[i].menu) menuWall = config.walls[i].name;
-    if (owner_.at(i) == rank()) mine.push_back(config.walls[i]);
+    if (owner_.at(i) == rank()) {
+      mine.push_back(config.walls[i]);
+      mine.back().legend = config.walls[i].name == legendWall;
+    }
   }
   // Only the rank that drives the first wall dumps its particles, as a single process would.
   if (owner_.empty() || owner_[0] != rank()) options.dumpParticles.reset();

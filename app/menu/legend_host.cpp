@@ -9,16 +9,14 @@
 
 namespace sandstorm {
 
-LegendHost::LegendHost(const MainContext& main, glm::ivec2 wallSize)
-    : main_(main), wallSize_(wallSize), session_(nullptr, wallSize) {}
+LegendHost::LegendHost(glm::ivec2 wallSize) : wallSize_(wallSize), session_(nullptr, wallSize) {}
 
-void LegendHost::frame(float dt, const std::vector<std::string>& probe) {
-  const ParticleState state = main_.pendingState();
+void LegendHost::frame(float dt, const ParticleState& state, const FieldUpdate* field,
+                       const std::vector<std::string>& probe) {
   std::shared_ptr<const UiDrawData> data;
   if (state.render.legend || !probe.empty()) {
-    const auto field = main_.field();
     const RenderSettings& r = state.render;
-    const ColorScale scale = stateColorScale(state, field.get());
+    const ColorScale scale = stateColorScale(state, field);
     // Large enough to read on a CAVE wall from its middle: a quarter of the
     // wall's width, text one and a half times the menu's.
     const float width = std::clamp(0.25f * float(wallSize_.x), 160.0f, 640.0f);

@@ -159,6 +159,31 @@ TEST(Cluster, HeadlessPngsEqualTheSingleProcessOnes) {
   }
 }
 
+// The legend on a wall rank 1 drives, turned on and changed mid-run by a
+// replayed session on rank 0: rank 1 builds it from the packets it receives,
+// and the image equals one process's, where the main context builds it.
+TEST(Cluster, ALegendOnAnotherRanksWallEqualsTheSingleProcessOne) {
+  const auto dir = test::scratchDir("cluster-legend");
+  const std::string replay = " --replay tests/data/legend-midrun.session";
+  const auto one = runSandstorm("--config tests/data/cluster-legend.toml --screenshot " +
+                                (dir / "one").string() + replay);
+  ASSERT_EQ(one.exitCode, 0) << one.output;
+  const auto plain = runSandstorm("--config tests/data/cluster-legend.toml --screenshot " +
+                                  (dir / "plain").string());
+  ASSERT_EQ(plain.exitCode, 0) << plain.output;
+  const MpiRun cluster = ranks(3, "--config tests/data/cluster-legend-ranks.toml --screenshot " +
+                                      (dir / "three").string() + replay);
+  ASSERT_EQ(cluster.exitCode, 0) << cluster.output;
+  EXPECT_NE(readBytes(dir / "one" / "left.png"), readBytes(dir / "plain" / "left.png"))
+      << "no legend drawn on 'left'";
+  for (const std::string wall : {"front", "left", "right", "floor"}) {
+    const std::string a = readBytes(dir / "one" / (wall + ".png"));
+    ASSERT_FALSE(a.empty()) << wall;
+    EXPECT_TRUE(a == readBytes(dir / "three" / (wall + ".png")))
+        << wall << ".png differs between one process and three ranks";
+  }
+}
+
 // A tracked CAVE on three ranks: only rank 0 listens to the tracker; every
 // rank's walls draw what one process replaying rank 0's recorded session
 // draws, image for image, with the same particles every frame.

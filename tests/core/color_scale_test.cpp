@@ -132,6 +132,7 @@ TEST(ColorLegend, AFlatRangeHasOneTickInTheMiddle) {
 #include "core/sim/attribute_table.h"
 #include "core/sim/main_context.h"
 #include "core/sim/state_color_scale.h"
+#include "core/sim/state_mirror.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -303,6 +304,34 @@ TEST(AttributeTableNames, ANameIsOneWordOfPrintableCharacters) {
     EXPECT_THROW(table.set(s, "render.color_array", AttributeValue(bad)), Error) << bad;
   EXPECT_THROW(table.set(s, "render.color_array", 3), Error);
   EXPECT_EQ(s.render.colorArray, "Temperature_K");
+}
+
+}  // namespace
+}  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+// A rank that only receives packets mirrors the main context's state and field.
+TEST(StateMirror, EqualsTheMainContextsStateAfterTheSamePackets) {
+  const auto field = withArrays();
+  ParticleState initial;
+  initial.render.colorMap = ColorMapName::Plasma;
+  MainContext main(initial, FieldUpdate{.field = field}, {});
+  StateMirror mirror(main.initialState());
+  const AttributeTable& table = AttributeTable::instance();
+  for (int f = 0; f < 6; ++f) {
+    if (f == 1) main.set("render.color_by", std::string("array"));
+    if (f == 3) main.set("render.legend", true);
+    if (f == 4) main.set("render.color_array", std::string("pressure"));
+    mirror.apply(std::make_shared<const FramePacket>(main.next()));
+    EXPECT_EQ(table.describe(mirror.state()), table.describe(main.state())) << "frame " << f;
+    ASSERT_TRUE(mirror.field());
+    EXPECT_EQ(mirror.field()->colorArray, main.field()->colorArray) << "frame " << f;
+    ASSERT_TRUE(mirror.last());
+    EXPECT_EQ(mirror.last()->frame, std::uint32_t(f));
+  }
+  EXPECT_EQ(stateColorScale(mirror.state(), mirror.field().get()).arrayName, "pressure");
 }
 
 }  // namespace
