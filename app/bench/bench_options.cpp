@@ -17,6 +17,7 @@ const char* kUsage = R"(sandstorm-bench: GPU particle benchmark (headless EGL)
                   [--fields texture,equation] [--renderers billboards,points,splat,splat-atomic]
                   [--billboard-limit N] [--walls 1,2,4,8] [--wall-particles N]
                   [--wall-sims per-wall,shared] [--wall-renderers billboards,splat]
+                  [--wall-trails 0,16]
                   [--wall-backend compute] [--particle-size M] [--memory-gib G]
                   [--integrator euler|rk2|rk4] [--update-items 1|2|4|8] [--gpu-warmup S]
 
@@ -27,7 +28,8 @@ fixed frames. Sections:
   ceilings  buffer-copy bandwidth, a bare transform-feedback pass, a bare point draw
   update    the particle update per backend and field type
   render    scene, particles and composite of one view per renderer
-  walls     whole frames of 1..8 views, each wall simulating or one shared simulation
+  walls     whole frames of 1..8 views, each wall simulating or one shared simulation,
+            with trails of each --wall-trails length (render.trail_length; 0 none)
 Prints a table (each stage as a ratio to its ceiling) and writes JSON.
 --quick: tiny sizes and few frames (seconds on llvmpipe; structure, not speed).
 )";
@@ -140,6 +142,15 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
     } else if (a == "--wall-renderers") {
       o.wallRenderers = split(v);
       checkChoices(o.wallRenderers, {"billboards", "points", "splat", "splat-atomic"}, a);
+    } else if (a == "--wall-trails") {
+      o.wallTrails.clear();
+      for (const std::string& t : split(v)) {
+        const double k = number(t, a);
+        if (!(k >= 0.0 && k <= 64.0) || k != double(int(k)))
+          throw Error(concat(a, ": ", t, ": expected a trail length of 0 to 64 positions"));
+        o.wallTrails.push_back(int(k));
+      }
+      if (o.wallTrails.empty()) throw Error(concat(a, ": expected lengths, e.g. 0,16"));
     } else if (a == "--wall-backend") {
       o.wallBackend = v;
       checkChoices({v}, {"tf-gs", "compute"}, a);

@@ -27,6 +27,7 @@ struct BenchOptions {
   std::size_t wallParticles = 10000000;
   std::vector<std::string> wallSims{"per-wall", "shared"};
   std::vector<std::string> wallRenderers{"billboards", "splat"};
+  std::vector<int> wallTrails{0};  // render.trail_length of the walls' particles (0: none)
   std::string wallBackend = "compute";
   std::string integrator = "rk2";  // euler | rk2 | rk4 (tracer particles)
   double gpuWarmupSeconds = 5.0;   // the GPU kept busy before the first measurement

@@ -34,6 +34,7 @@ ParticleState benchState(const SceneChoice& c) {
   else
     throw Error(concat("sandstorm-bench: unknown renderer '", c.renderer, "'"));
   s.render.size = c.particleSize;
+  s.render.trailLength = c.trailLength;
   s.field.mode = c.field == "equation" ? FieldMode::Equation : FieldMode::Texture;
   if (c.turnover) {
     s.sim.boundary = BoundaryMode::Kill;

@@ -21,6 +21,7 @@ struct SceneChoice {
   std::string renderer = "billboards";  // billboards | points | splat (tiled) | splat-atomic
   float particleSize = 0.045f;
   std::string integrator = "rk2";
+  int trailLength = 0;  // render.trail_length
   bool turnover =
       false;  // short lives, deaths at the box: every frame births, deaths and compaction
 };

@@ -65,7 +65,8 @@ class Bench {
       for (int w : o_.walls)
         for (const std::string& sim : o_.wallSims)
           for (const std::string& renderer : o_.wallRenderers)
-            walls(w, sim, renderer);
+            for (int trails : o_.wallTrails)
+              walls(w, sim, renderer, trails);
   }
 
  private:
@@ -82,7 +83,9 @@ class Bench {
       for (std::size_t n : o_.particles)
         for (const std::string& r : o_.renderers)
           total_ += (r != "billboards" || n <= o_.billboardLimit) ? 1 : 0;
-    if (walls) total_ += int(o_.walls.size() * o_.wallSims.size() * o_.wallRenderers.size());
+    if (walls)
+      total_ += int(o_.walls.size() * o_.wallSims.size() * o_.wallRenderers.size() *
+                    o_.wallTrails.size());
   }
 
   // A GPU just started (or idle) runs its first seconds slow: on a fresh H100
@@ -354,17 +357,19 @@ class Bench {
     });
   }
 
-  void walls(int count, const std::string& sim, const std::string& renderer) {
+  void walls(int count, const std::string& sim, const std::string& renderer, int trails) {
     const std::size_t n = o_.wallParticles;
     progress(concat("walls: ", count, " views of ", o_.size.x, "x", o_.size.y, ", ", sim,
-                    " simulation, ", renderer, ", ", n, " particles"));
+                    " simulation, ", renderer, ", ", n, " particles",
+                    trails > 0 ? concat(", trails of ", trails) : std::string()));
     const int systems = sim == "shared" ? 1 : count;
     if (!fits(4 * n * 16.0 * systems, "walls")) return;
     guarded("walls", [&] {
       const SceneChoice c{.particles = n,
                           .renderer = renderer,
                           .particleSize = o_.particleSize,
-                          .integrator = o_.integrator};
+                          .integrator = o_.integrator,
+                          .trailLength = trails};
       const auto fieldUpdate = benchField("texture");
       std::vector<std::unique_ptr<ParticleSystem>> sims;
       for (int s = 0; s < systems; ++s)
@@ -435,6 +440,7 @@ class Bench {
               .sim = sim,
               .particles = live,
               .walls = count,
+              .trails = trails,
               .width = o_.size.x,
               .height = o_.size.y};
         r.ms = median(ms);
@@ -508,10 +514,10 @@ void printTargets(const Report& r) {
   for (const Row& row : r.rows)
     if (row.section == "walls" && row.stage == "frame")
       std::printf(
-          "  %d views, %s simulation, %s, %zu particles: %.2f ms GPU (%.1f fps), %.2f ms wall "
-          "clock\n",
-          row.walls, row.sim.c_str(), row.renderer.c_str(), row.particles, row.ms, 1000.0 / row.ms,
-          row.wallMs);
+          "  %d views, %s simulation, %s, %zu particles, trails %d: %.2f ms GPU (%.1f fps), %.2f "
+          "ms wall clock\n",
+          row.walls, row.sim.c_str(), row.renderer.c_str(), row.particles, row.trails, row.ms,
+          1000.0 / row.ms, row.wallMs);
 }
 
 }  // namespace

@@ -77,6 +77,28 @@ TEST(BenchQuick, RefusesUnknownOptions) {
   const test::ProcessResult r = runBench("--quick --renderers sprites");
   EXPECT_NE(r.exitCode, 0);
   EXPECT_NE(r.output.find("unknown 'sprites'"), std::string::npos) << r.output;
+  const test::ProcessResult t = runBench("--quick --wall-trails 0,65");
+  EXPECT_NE(t.exitCode, 0);
+  EXPECT_NE(t.output.find("--wall-trails: 65: expected a trail length of 0 to 64"),
+            std::string::npos)
+      << t.output;
+}
+
+// The walls section with and without trails: a row of each, the trail length in it.
+TEST(BenchQuick, TheWallsSectionMeasuresFramesWithTrails) {
+  const auto dir = test::scratchDir("bench-trails");
+  const auto json = dir / "bench.json";
+  const test::ProcessResult r = runBench(
+      "--quick --sections walls --walls 1 --wall-sims shared --wall-renderers splat "
+      "--wall-trails 0,8 --json '" +
+      json.string() + "'");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::set<std::string> trails;
+  for (const std::string& line : test::readLines(json))
+    if (line.find("\"stage\": \"frame\"") != std::string::npos)
+      trails.insert(field(line, "trails"));
+  EXPECT_EQ(trails, (std::set<std::string>{"0", "8"}));
+  EXPECT_NE(r.output.find("trails 8:"), std::string::npos) << r.output;
 }
 
 }  // namespace
