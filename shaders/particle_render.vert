@@ -4,13 +4,24 @@
 #include "view_block.glsl"
 #include "render_block.glsl"
 
+#ifdef SORTED
+// render.order = sorted: record sortedIndex[gl_VertexID], back to front (ParticleSort).
+layout(std430, binding = 0) readonly restrict buffer PositionLife { vec4 positionLife[]; };
+layout(std430, binding = 1) readonly restrict buffer VelocityKind { vec4 velocityKind[]; };
+layout(std430, binding = 2) readonly restrict buffer SortedIndex { uint sortedIndex[]; };
+#else
 layout(location = 0) in vec4 inPositionLife;
 layout(location = 1) in vec4 inVelocityKind;
+#endif
 out vec3 vCenter;
 out float vAge;    // 0 at birth, 1 at death
 out float vColor;  // the colour map's coordinate
 
 void main() {
+#ifdef SORTED
+  uint record = sortedIndex[gl_VertexID];
+  vec4 inPositionLife = positionLife[record], inVelocityKind = velocityKind[record];
+#endif
   vCenter = inPositionLife.xyz;
   vAge = clamp(1.0 - inPositionLife.w / max(inVelocityKind.w, 1e-6), 0.0, 1.0);
   vColor = colorCoordinate(vAge, inVelocityKind.xyz, inPositionLife.xyz);

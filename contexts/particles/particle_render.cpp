@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "contexts/particles/particle_backend.h"
+#include "contexts/particles/particle_sort.h"
 #include "contexts/render/view_targets.h"
 
 namespace sandstorm {
@@ -45,10 +46,13 @@ ParticleRender::ParticleRender()
                                            "particle_render.frag"}),
       points_(std::vector<std::string>{"particle_render.vert", "particle_render.frag"},
               std::vector<std::string>{"POINTS"}),
-      sprite_(makeSprite()) {}
+      sprite_(makeSprite()),
+      empty_(gl::createVertexArray()) {}
+
+ParticleRender::~ParticleRender() = default;
 
 void ParticleRender::draw(const ParticleBackend& particles, const ViewTargets& targets,
-                          RenderMode mode) const {
+                          RenderMode mode, RenderOrder order) const {
   glBindFramebuffer(GL_FRAMEBUFFER, targets.particleFramebuffer());
   glViewport(0, 0, targets.size().x, targets.size().y);
   const float clear[4] = {0, 0, 0, 0};
@@ -64,6 +68,27 @@ void ParticleRender::draw(const ParticleBackend& particles, const ViewTargets& t
   if (mode == RenderMode::Points) {
     glEnable(GL_PROGRAM_POINT_SIZE);
     points_.use();
+  } else if (order == RenderOrder::Sorted && particles.records().countBuffer != 0) {
+    const ParticleBackend::Records r = particles.records();
+    if (!sort_) {
+      sort_ = std::make_unique<ParticleSort>();
+      sortedBillboards_ = std::make_unique<gl::Program>(
+          std::vector<std::string>{"particle_render.vert", "particle_render.geom",
+                                   "particle_render.frag"},
+          std::vector<std::string>{"SORTED"});
+    }
+    sort_->sort(r, particles.capacity());
+    sortedBillboards_->use();
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, r.positionLife);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, r.velocityKind);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, sort_->indices());
+    glBindVertexArray(empty_.id());
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, sort_->command());
+    glDrawArraysIndirect(GL_POINTS, nullptr);
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    glBindVertexArray(0);
+    glDisable(GL_BLEND);
+    return;
   } else {
     billboards_.use();
   }

@@ -92,7 +92,7 @@ void ParticleSystem::renderParticles(const ViewTargets& targets, const View* vie
   if (splats(view, targets.size()))
     splat_.draw(*update_, targets, render_.sprite());
   else
-    render_.draw(*update_, targets, state_.render.mode);
+    render_.draw(*update_, targets, state_.render.mode, state_.render.order);
 }
 
 void ParticleSystem::composite(const ViewTargets& targets, std::uint32_t destination,

@@ -169,6 +169,10 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("render.splat_pixels", T::Float, 0, 64, "px",
                     "Auto mode: views where particles cover at most this many pixels use splats",
                     RENDER(splatPixels)));
+  v.push_back(enumEntry("render.order", {"unsorted", "sorted"},
+                        "Billboards blend in the particles' order, or sorted back to front in "
+                        "each view (a GPU radix sort by depth; splats need no order)",
+                        RENDER(order)));
   v.push_back(
       entry("render.field_box", T::Bool, 0, 1, "", "Outline the field's bounds", RENDER(fieldBox)));
   v.push_back(enumEntry(

@@ -63,8 +63,15 @@ struct FieldPlayback {
 // RenderSettings::splatPixels pixels, billboards otherwise.
 enum class RenderMode : int { Points = 0, Billboards = 1, Splat = 2, Auto = 3 };
 
+// How billboards blend: in the particle buffer's order (fast, and exact for
+// particles of one colour and opacity), or sorted back to front per view on
+// the GPU (GpuRadixSort), so nearer dust covers farther dust as it should.
+// Splats average the particles in a pixel and need no order.
+enum class RenderOrder : int { Unsorted = 0, Sorted = 1 };
+
 struct RenderSettings {
   RenderMode mode = RenderMode::Billboards;
+  RenderOrder order = RenderOrder::Unsorted;
   float size = 0.08f;  // m: billboard diameter; points use it as a projected size
   glm::vec3 colorBirth{0.85f, 0.72f, 0.52f};
   glm::vec3 colorDeath{0.55f, 0.45f, 0.35f};

@@ -54,7 +54,8 @@ ParticleState onePerFrame(std::vector<glm::vec3> positions, float opacity) {
 }
 
 Image render(const ParticleState& state, int frames,
-             std::shared_ptr<const VectorField> field = nullptr) {
+             std::shared_ptr<const VectorField> field = nullptr,
+             const std::string& backend = "compute") {
   MainContext::Options options;
   options.fixedDt = 0.25f;
   MainContext main(state, FieldUpdate{.field = field}, options);
@@ -62,6 +63,7 @@ Image render(const ParticleState& state, int frames,
                           .initial = state,
                           .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
                           .capacity = 4096,
+                          .backend = backend,
                           .nearPlane = 0.1f,
                           .farPlane = 100.0f};
   WallRenderer wall(setup);
@@ -342,6 +344,47 @@ TEST_F(RenderTest, AParticleGetsTheColourOfTheFileArrayItSits) {
 
 namespace sandstorm {
 namespace {
+
+// render.order = sorted: two overlapping billboards on the camera's axis, the
+// near one dark and the far one bright (a scalar array rising with depth,
+// through viridis). Sorted, the near one covers the far one whatever order
+// the particles were born in; unsorted, the one born last lands on top.
+TEST_F(RenderTest, SortedBillboardsBlendBackToFrontWhateverTheirOrder) {
+  auto field = std::make_shared<VectorField>(
+      bake(Uniform({0.0f, 0.0f, 0.0f}), Box{{-5, -5, 0}, {5, 5, 5}}, {2, 2, 2}));
+  std::vector<float> depth(field->pointCount());
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 2; ++j)
+      for (int i = 0; i < 2; ++i)
+        depth[field->index(i, j, k)] = float(j);  // 0 at y = -5, 1 at y = +5
+  field->addScalars("depth", depth);
+  const glm::vec3 nearer(0.0f, -2.0f, 2.0f), farther(0.0f, 2.0f, 2.0f);
+  for (const std::string backend : {"compute", "tf-gs"}) {
+    SCOPED_TRACE(backend);
+    auto image = [&](std::vector<glm::vec3> order, RenderOrder sorting) {
+      ParticleState s = onePerFrame(order, 0.9f);
+      s.render.colorBy = ColorQuantity::Array;
+      s.render.colorMap = ColorMapName::Viridis;
+      s.render.colorRange = ColorRange::Fixed;
+      s.render.colorMin = 0.0f;
+      s.render.colorMax = 1.0f;
+      s.render.order = sorting;
+      return centre(render(s, 1, field, backend));
+    };
+    const glm::vec3 nearFirst = image({nearer, farther}, RenderOrder::Sorted),
+                    farFirst = image({farther, nearer}, RenderOrder::Sorted);
+    expectNear(nearFirst, farFirst, 1.0f, "sorted: the order of birth does not matter");
+    // The near particle's colour (t = 0.3) shows, not the far one's (t = 0.7).
+    const glm::vec3 nearColor = expected(ColorMapName::Viridis, 0.3f),
+                    farColor = expected(ColorMapName::Viridis, 0.7f);
+    EXPECT_LT(glm::length(nearFirst - nearColor), glm::length(nearFirst - farColor));
+    // Unsorted, the far particle drawn last covers the near one.
+    expectNear(image({farther, nearer}, RenderOrder::Unsorted), farFirst, 1.0f,
+               "unsorted, born far to near: already back to front");
+    const glm::vec3 wrong = image({nearer, farther}, RenderOrder::Unsorted);
+    EXPECT_GT(glm::length(wrong - nearFirst) * 255.0f, 20.0f) << "unsorted should show the far one";
+  }
+}
 
 // A particle crossing the view in a wind leaves a trail where it was: drawn
 // as GL lines with billboards and added to the sums with splats.
