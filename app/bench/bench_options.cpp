@@ -12,12 +12,12 @@ namespace {
 const char* kUsage = R"(sandstorm-bench: GPU particle benchmark (headless EGL)
 
   sandstorm-bench [--quick] [--json FILE] [--frames N] [--warmup N] [--size WxH]
-                  [--sections verify,ceilings,update,render,walls] [--verify-particles N]
+                  [--sections verify,ceilings,update,render,walls,sort] [--verify-particles N]
                   [--particles 1e4,1e5,...] [--backends tf-gs,compute]
                   [--fields texture,equation] [--renderers billboards,points,splat,splat-atomic]
                   [--billboard-limit N] [--walls 1,2,4,8] [--wall-particles N]
                   [--wall-sims per-wall,shared] [--wall-renderers billboards,splat]
-                  [--wall-trails 0,16]
+                  [--wall-trails 0,16] [--sort-keys 1e6,1e7]
                   [--wall-backend compute] [--particle-size M] [--memory-gib G]
                   [--integrator euler|rk2|rk4] [--update-items 1|2|4|8] [--gpu-warmup S]
 
@@ -30,6 +30,8 @@ fixed frames. Sections:
   render    scene, particles and composite of one view per renderer
   walls     whole frames of 1..8 views, each wall simulating or one shared simulation,
             with trails of each --wall-trails length (render.trail_length; 0 none)
+  sort      GpuRadixSort (render.order = sorted) of --sort-keys random keys:
+            ms, and its memory traffic against the copy ceiling
 Prints a table (each stage as a ratio to its ceiling) and writes JSON.
 --quick: tiny sizes and few frames (seconds on llvmpipe; structure, not speed).
 )";
@@ -89,6 +91,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       o.wallParticles = 2000;
       o.particleSize = 0.2f;
       o.verifyParticles = 3000;
+      o.sortKeys = {5000};
       o.gpuWarmupSeconds = 0.0;
     }
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -112,7 +115,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       o.size = {int(count(v.substr(0, x), a)), int(count(v.substr(x + 1), a))};
     } else if (a == "--sections") {
       o.sections = split(v);
-      checkChoices(o.sections, {"verify", "ceilings", "update", "render", "walls"}, a);
+      checkChoices(o.sections, {"verify", "ceilings", "update", "render", "walls", "sort"}, a);
     } else if (a == "--particles") {
       o.particles.clear();
       for (const std::string& p : split(v))
@@ -142,6 +145,10 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
     } else if (a == "--wall-renderers") {
       o.wallRenderers = split(v);
       checkChoices(o.wallRenderers, {"billboards", "points", "splat", "splat-atomic"}, a);
+    } else if (a == "--sort-keys") {
+      o.sortKeys.clear();
+      for (const std::string& k : split(v))
+        o.sortKeys.push_back(count(k, a));
     } else if (a == "--wall-trails") {
       o.wallTrails.clear();
       for (const std::string& t : split(v)) {

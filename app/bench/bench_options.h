@@ -16,7 +16,7 @@ struct BenchOptions {
   int frames = 20;  // timed frames; each stage's median is reported
   glm::ivec2 size{1920, 1080};
   float particleSize = 0.045f;  // m: about 3 pixels across at the views' distance
-  std::vector<std::string> sections{"verify", "ceilings", "update", "render", "walls"};
+  std::vector<std::string> sections{"verify", "ceilings", "update", "render", "walls", "sort"};
   std::size_t verifyParticles = 1000000;
   std::vector<std::size_t> particles{10000, 100000, 1000000, 10000000, 30000000, 100000000};
   std::vector<std::string> backends{"tf-gs", "compute"};
@@ -27,7 +27,10 @@ struct BenchOptions {
   std::size_t wallParticles = 10000000;
   std::vector<std::string> wallSims{"per-wall", "shared"};
   std::vector<std::string> wallRenderers{"billboards", "splat"};
-  std::vector<int> wallTrails{0};  // render.trail_length of the walls' particles (0: none)
+  std::vector<int> wallTrails{0};
+  std::vector<std::size_t> sortKeys{1000000,
+                                    10000000};  // the sort section's sizes  // render.trail_length
+                                                // of the walls' particles (0: none)
   std::string wallBackend = "compute";
   std::string integrator = "rk2";  // euler | rk2 | rk4 (tracer particles)
   double gpuWarmupSeconds = 5.0;   // the GPU kept busy before the first measurement

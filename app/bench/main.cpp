@@ -17,6 +17,7 @@
 #include "contexts/bench/bench_view.h"
 #include "contexts/bench/ceilings.h"
 #include "contexts/bench/gpu_info.h"
+#include "contexts/bench/sort_bench.h"
 #include "contexts/particles/particle_system.h"
 #include "contexts/platform/egl_context.h"
 #include "contexts/render/view_targets.h"
@@ -39,6 +40,7 @@ class Bench {
       return false;
     };
     plan(has("ceilings"), has("update"), has("render"), has("walls"));
+    if (has("sort")) total_ += int(o_.sortKeys.size());
     if (has("verify")) {
       ++total_;
       for (const std::string& field : o_.fields)
@@ -61,6 +63,9 @@ class Bench {
       for (std::size_t n : o_.particles)
         for (const std::string& renderer : o_.renderers)
           if (renderer != "billboards" || n <= o_.billboardLimit) render(n, renderer);
+    if (has("sort"))
+      for (std::size_t n : o_.sortKeys)
+        sort(n);
     if (has("walls"))
       for (int w : o_.walls)
         for (const std::string& sim : o_.wallSims)
@@ -354,6 +359,21 @@ class Bench {
       post.ceiling = report_.bandwidthName();
       post.ratio = ratio(post.bytesPerS, report_.bandwidth());
       report_.rows.push_back(post);
+    });
+  }
+
+  // GpuRadixSort of n keys: ms, and its traffic against the copy ceiling.
+  void sort(std::size_t n) {
+    progress(concat("sort: ", n, " keys with values (GpuRadixSort)"));
+    if (!fits(4.0 * 4.0 * double(n), "sort")) return;
+    guarded("sort", [&] {
+      Row r{.section = "sort", .stage = "sort", .particles = n};
+      r.ms = sortMs(n, o_.frames);
+      r.particlesPerS = r.ms > 0 ? double(n) / (r.ms * 1e-3) : 0;
+      r.bytesPerS = r.ms > 0 ? kSortBytesPerKey * double(n) / (r.ms * 1e-3) : 0;
+      r.ceiling = report_.bandwidthName();
+      r.ratio = report_.bandwidth() > 0 ? r.bytesPerS / report_.bandwidth() : 0;
+      report_.rows.push_back(r);
     });
   }
 

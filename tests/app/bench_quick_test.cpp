@@ -61,7 +61,7 @@ TEST(BenchQuick, PrintsTheTableAndWritesEverySectionToJson) {
   for (const char* expected :
        {"verify/agreement", "ceilings/copy", "ceilings/bare-tf", "ceilings/bare-points",
         "update/update", "render/scene", "render/particles", "render/post", "walls/update",
-        "walls/views", "walls/frame"})
+        "walls/views", "walls/frame", "sort/sort"})
     EXPECT_TRUE(seen.count(expected)) << expected;
   // 2 verify; 2 copies + 3 ceilings x 2 counts; 2 particle counts x 2 backends x 2 fields of
   // updates; 4 renderers x 2 counts x 3 stages; 2 wall counts x 2 sims x 2 renderers x 3 stages.
