@@ -11,6 +11,12 @@ in vec4 vPositionLife[];
 in vec4 vVelocityKind[];
 out vec4 outPositionLife;
 out vec4 outVelocityKind;
+#ifdef TRAILS
+// The input record each survivor came from (ParticleTrails moves its trail
+// along): the draw's first record plus the primitive's index in the draw.
+uniform uint uSourceBase;
+flat out uint outSource;
+#endif
 
 void main() {
   Particle p;
@@ -19,6 +25,9 @@ void main() {
   if (!advance(p)) return;
   outPositionLife = p.positionLife;
   outVelocityKind = p.velocityKind;
+#ifdef TRAILS
+  outSource = uSourceBase + uint(gl_PrimitiveIDIn);
+#endif
   EmitVertex();
   EndPrimitive();
 }

@@ -4,13 +4,15 @@
 // along, with the particle's new position at the head; a newborn (record <
 // uBorn, or every record after the rings were made) starts a ring holding only
 // its birth position. w: 1 for a slot that holds a position, 0 not yet.
-#include "particle_control.glsl"
+// The live count: counts[uSet] + uCountAdd (the compute backend's control
+// block, or the transform-feedback backend's survivors plus its newborn).
 
 layout(local_size_x = 256) in;
 layout(std430, binding = 2) readonly restrict buffer PositionLife { vec4 positionLife[]; };
 layout(std430, binding = 6) readonly restrict buffer TrailSource { uint trailSource[]; };
 layout(std430, binding = 7) readonly restrict buffer InRing { vec4 inRing[]; };
 layout(std430, binding = 8) writeonly restrict buffer OutRing { vec4 outRing[]; };
+layout(std430, binding = 4) readonly restrict buffer Counts { uint counts[]; };
 
 layout(location = 0) uniform int uSet;  // whose count: the set the update wrote
 layout(location = 1) uniform uint uBorn;
@@ -18,10 +20,11 @@ layout(location = 2) uniform int uLength;
 layout(location = 3) uniform int uHead;
 layout(location = 4) uniform bool uFresh;
 layout(location = 5) uniform uint uRowGroups;  // workgroups a row of the 2D dispatch
+layout(location = 6) uniform uint uCountAdd;
 
 void main() {
   uint o = (gl_WorkGroupID.y * uRowGroups + gl_WorkGroupID.x) * 256u + gl_LocalInvocationIndex;
-  if (o >= ctl.count[uSet]) return;
+  if (o >= counts[uSet] + uCountAdd) return;
   vec3 x = positionLife[o].xyz;
   uint base = o * uint(uLength);
   if (uFresh || o < uBorn) {

@@ -244,7 +244,9 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   // Drawing, the next update and the count's copy all read what this wrote.
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
                   GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  if (trails_) trails_->advance(out.positionLife.id(), born, 1 - current_);
+  if (trails_)
+    trails_->advance(out.positionLife.id(), born, control_.id(),
+                     int(kCountOffset / 4) + 1 - current_);
   const std::size_t slot = std::size_t(updates_ % kHistory);
   glCopyNamedBufferSubData(control_.id(), history_.id(), kCountOffset + (1 - current_) * 4,
                            GLintptr(slot * sizeof(std::uint32_t)), sizeof(std::uint32_t));

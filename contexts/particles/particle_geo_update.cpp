@@ -15,8 +15,10 @@ namespace {
 constexpr GLsizeiptr kRecord = sizeof(glm::vec4);
 
 gl::Program makeProgram(const char* vert, const char* geom, std::vector<std::string> defines = {}) {
-  return gl::Program(
-      gl::ProgramDesc{{vert, geom}, std::move(defines), {"outPositionLife", "outVelocityKind"}});
+  std::vector<std::string> varyings{"outPositionLife", "outVelocityKind"};
+  if (std::find(defines.begin(), defines.end(), "TRAILS") != defines.end())
+    varyings.push_back("outSource");  // ParticleTrails' source, a third buffer
+  return gl::Program(gl::ProgramDesc{{vert, geom}, std::move(defines), std::move(varyings)});
 }
 
 void attach(GLuint vao, GLuint positionLife, GLuint velocityKind, GLintptr firstRecord) {
@@ -33,7 +35,6 @@ ParticleGeoUpdate::ParticleGeoUpdate(std::size_t capacity)
       survivorCounts_(gl::createBuffer()),
       dummyTarget_(gl::createFramebuffer()),
       dummyColor_(gl::createRenderbuffer()),
-      updateProgram_(makeProgram("particle_update.vert", "particle_update.geom")),
       emitProgram_(makeProgram("particle_emit.vert", "particle_emit.geom")) {
   if (capacity == 0 || capacity > (std::size_t{1} << 31) / kRecord)
     throw Error(
@@ -158,9 +159,22 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
   glNamedBufferSubData(simBlock_.id(), 0, sizeof(block), &block);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, simBlock_.id());
   const bool equation = environment_.bind(state);
-  if (equation && !updateEquationProgram_)
-    updateEquationProgram_ = std::make_unique<gl::Program>(
-        makeProgram("particle_update.vert", "particle_update.geom", {"FIELD_EQUATION"}));
+  if (state.render.trailLength > 0) {
+    if (!trails_) trails_ = std::make_unique<ParticleTrails>();
+    trails_->prepare(capacity_, state.render.trailLength);
+  } else {
+    trails_.reset();
+  }
+  // The update program: with the field's equation or not, capturing each
+  // survivor's source record for the trails or not (made on first use).
+  std::unique_ptr<gl::Program>& variant = updatePrograms_[(equation ? 1 : 0) + (trails_ ? 2 : 0)];
+  if (!variant) {
+    std::vector<std::string> defines;
+    if (equation) defines.push_back("FIELD_EQUATION");
+    if (trails_) defines.push_back("TRAILS");
+    variant = std::make_unique<gl::Program>(
+        makeProgram("particle_update.vert", "particle_update.geom", defines));
+  }
 
   const BufferSet& in = sets_[std::size_t(current_)];
   BufferSet& out = sets_[std::size_t(1 - current_)];
@@ -183,12 +197,15 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
     const GLintptr offset = GLintptr(born) * kRecord, size = GLsizeiptr(capacity_ - born) * kRecord;
     glTransformFeedbackBufferRange(out.update.id(), 0, out.positionLife.id(), offset, size);
     glTransformFeedbackBufferRange(out.update.id(), 1, out.velocityKind.id(), offset, size);
-    (equation ? *updateEquationProgram_ : updateProgram_).use();
+    if (trails_)
+      glTransformFeedbackBufferRange(out.update.id(), 2, trails_->source(), GLintptr(born) * 4,
+                                     GLsizeiptr(capacity_ - born) * 4);
+    variant->use();
     glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, out.update.id());
     glBeginQueryIndexed(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, 0,
                         survivorQueries_[std::size_t(slot)].id());
     glBeginTransformFeedback(GL_POINTS);
-    drawSet(in);
+    drawSet(in, trails_ ? variant->id() : 0u);
     glEndTransformFeedback();
     glEndQueryIndexed(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, 0);
     attach(out.survivors.id(), out.positionLife.id(), out.velocityKind.id(), GLintptr(born));
@@ -205,18 +222,26 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
   glDisable(GL_RASTERIZER_DISCARD);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 
+  if (trails_) {
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_QUERY_BUFFER_BARRIER_BIT);
+    trails_->advance(out.positionLife.id(), born, survivorCounts_.id(), 1 - current_, born);
+  }
   bornHistory_[std::size_t(slot)] = born;
   budget_.recordEmitted(born);
   current_ = 1 - current_;
   ++updates_;
 }
 
-void ParticleGeoUpdate::drawSet(const BufferSet& set) const {
+void ParticleGeoUpdate::drawSet(const BufferSet& set, std::uint32_t sourceProgram) const {
+  // With trails, the update program numbers its survivors' sources by draw.
+  const GLint base = sourceProgram ? glGetUniformLocation(sourceProgram, "uSourceBase") : -1;
   if (set.born > 0) {
+    if (base >= 0) glProgramUniform1ui(sourceProgram, base, 0u);
     glBindVertexArray(set.all.id());
     glDrawArrays(GL_POINTS, 0, GLsizei(set.born));
   }
   if (set.hasSurvivors) {
+    if (base >= 0) glProgramUniform1ui(sourceProgram, base, set.born);
     glBindVertexArray(set.survivors.id());
     glDrawTransformFeedback(GL_POINTS, set.update.id());
   }
@@ -229,8 +254,15 @@ void ParticleGeoUpdate::draw() const {
 
 ParticleBackend::Records ParticleGeoUpdate::records() const {
   const BufferSet& set = sets_[std::size_t(current_)];
-  return {set.positionLife.id(), set.velocityKind.id(), survivorCounts_.id(),
-          std::uint32_t(current_ * 4), set.born};
+  return {set.positionLife.id(),
+          set.velocityKind.id(),
+          survivorCounts_.id(),
+          std::uint32_t(current_ * 4),
+          set.born,
+          -1,
+          trails_ ? trails_->ring() : 0u,
+          trails_ ? trails_->length() : 0,
+          trails_ ? trails_->head() : 0};
 }
 
 std::size_t ParticleGeoUpdate::liveCount() const {

@@ -26,6 +26,7 @@
 #include "contexts/gl/program.h"
 #include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_environment.h"
+#include "contexts/particles/particle_trails.h"
 #include "core/field/field_placement.h"
 #include "core/field/height_map.h"
 #include "core/sim/emission_budget.h"
@@ -71,7 +72,8 @@ class ParticleGeoUpdate final : public ParticleBackend {
   static constexpr int kHistory = 3;
 
   void allocate(BufferSet& set, std::size_t capacity);
-  void drawSet(const BufferSet& set) const;
+  // `sourceProgram`: the update program numbering survivors' sources, or 0.
+  void drawSet(const BufferSet& set, std::uint32_t sourceProgram = 0) const;
   std::size_t countAfter(std::uint64_t update) const;
 
   std::size_t capacity_;
@@ -83,8 +85,10 @@ class ParticleGeoUpdate final : public ParticleBackend {
       survivorCounts_;  // per set: its survivors, written by the GPU from the query (records())
   gl::Framebuffer dummyTarget_;  // drawing needs a framebuffer, even with rasterizer discard
   gl::Renderbuffer dummyColor_;
-  gl::Program updateProgram_, emitProgram_;
-  std::unique_ptr<gl::Program> updateEquationProgram_;  // FIELD_EQUATION, made on first use
+  gl::Program emitProgram_;
+  // The update: [field equation?  + 2 * trails?], each made on first use.
+  std::array<std::unique_ptr<gl::Program>, 4> updatePrograms_;
+  std::unique_ptr<ParticleTrails> trails_;  // while render.trail_length > 0
 
   ParticleEnvironment environment_{GpuField::Storage::Texture};
 

@@ -107,11 +107,6 @@ namespace sandstorm {
 void ParticleSystem::drawTrails(const View* view, glm::ivec2 size) const {
   if (state_.render.trailLength < 2) return;
   const ParticleBackend::Records records = update_->records();
-  if (records.trails == 0 && !trailsWarned_) {
-    log::warn("render.trail_length ", state_.render.trailLength, ": the ", update_->name(),
-              " backend keeps no trails; run.backend = \"compute\" does");
-    trailsWarned_ = true;
-  }
   if (!splats(view, size)) trails_.draw(records, update_->capacity());
 }
 

@@ -86,7 +86,6 @@ class ParticleSystem {
   ParticleSplat splat_;
   ParticlePost post_;
   TrailRenderer trails_;
-  mutable bool trailsWarned_ = false;  // a backend without trails was asked for them
   std::shared_ptr<const FieldUpdate> field_;
   std::uint32_t frame_ = 0;
   float fieldBlend_ = 0.0f;

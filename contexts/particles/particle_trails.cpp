@@ -31,17 +31,20 @@ void ParticleTrails::prepare(std::size_t capacity, int length) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, source_.id());
 }
 
-void ParticleTrails::advance(std::uint32_t positions, std::uint32_t born, int set) {
+void ParticleTrails::advance(std::uint32_t positions, std::uint32_t born, std::uint32_t countBuffer,
+                             int countIndex, std::uint32_t countAdd) {
   const int next = 1 - current_;
   head_ = fresh_ ? 0 : (head_ + 1) % length_;
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, positions);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, countBuffer);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, source_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, rings_[std::size_t(current_)].id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, rings_[std::size_t(next)].id());
   program_.use();
   const GLuint groups = GLuint((capacity_ + 255) / 256);
   const GLuint row = std::min<GLuint>(groups, 32768u);
-  glProgramUniform1i(program_.id(), 0, set);
+  glProgramUniform1i(program_.id(), 0, countIndex);
+  glProgramUniform1ui(program_.id(), 6, countAdd);
   glProgramUniform1ui(program_.id(), 1, born);
   glProgramUniform1i(program_.id(), 2, length_);
   glProgramUniform1i(program_.id(), 3, head_);

@@ -1,6 +1,7 @@
 // ParticleTrails: each particle's last K positions (render.trail_length), in
-// a ring per record on the GPU, for the compute backend. The update writes
-// every survivor's input record (shaders/particle_update.comp, trailSource);
+// a ring per record on the GPU, for both backends. The update writes every
+// survivor's input record (the compute update's trailSource, or the
+// transform-feedback update's captured outSource: source());
 // after it, trail_update.comp moves each ring to its particle's new record and
 // writes the new position at the head, so a trail follows its particle
 // through the compaction. Two sets of rings take turns like the particle
@@ -29,9 +30,12 @@ class ParticleTrails {
   // (made anew, and started afresh, when either changed). Binds the source
   // buffer the update writes.
   void prepare(std::size_t capacity, int length);
-  // After the update wrote `positions` (newborn first, `born` of them) and its
-  // live count at `set` of the control block bound at binding 4.
-  void advance(std::uint32_t positions, std::uint32_t born, int set);
+  // After the update wrote `positions` (newborn first, `born` of them); its
+  // live count is the uint at index `countIndex` of `countBuffer` plus `countAdd`.
+  void advance(std::uint32_t positions, std::uint32_t born, std::uint32_t countBuffer,
+               int countIndex, std::uint32_t countAdd = 0);
+  // The buffer of every output record's input record (uint each), which the update writes.
+  std::uint32_t source() const { return source_.id(); }
 
   std::uint32_t ring() const { return rings_[std::size_t(current_)].id(); }
   int length() const { return length_; }

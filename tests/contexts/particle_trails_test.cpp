@@ -1,9 +1,14 @@
-// Trails follow their particles through births, deaths and the compute
-// backend's compaction: in a uniform wind every trail is its particle's last
+// Trails follow their particles through births, deaths and either backend's
+// compaction (the compute update's scan, the transform feedback's dropped
+// primitives): in a uniform wind every trail is its particle's last
 // positions, one step of wind apart, on its own line.
 #include <gtest/gtest.h>
 
+#include <memory>
+
 #include "contexts/particles/particle_compute_update.h"
+#include "contexts/particles/particle_geo_update.h"
+#include "contexts/particles/particle_trails.h"
 #include "core/field/analytic_field.h"
 #include "core/sim/main_context.h"
 #include "tests/contexts/gl_test.h"
@@ -63,43 +68,50 @@ void checkTrails(const Run& run, int length) {
   EXPECT_GT(full, 10) << "some trails should be full";
 }
 
+std::vector<std::vector<glm::vec3>> trailsOf(const ParticleBackend& gpu) {
+  const ParticleBackend::Records r = gpu.records();
+  return ParticleTrails::read(r.trails, r.trailLength, r.trailHead, gpu.liveCount());
+}
+
 TEST_F(ParticleTrailsTest, EachTrailIsItsParticlesLastPositionsThroughBirthsAndDeaths) {
   auto field =
       std::make_shared<VectorField>(bake(Wind(), Box{{-50, -50, 0}, {50, 50, 10}}, {2, 2, 2}));
-  ParticleComputeUpdate gpu(4096);
-  gpu.setField(field, {});
-  MainContext::Options options;
-  options.fixedDt = kDt;
-  options.seed = 5;
-  MainContext main(windState(5), FieldUpdate{.field = field}, options);
-  ParticleState state = main.initialState();
-  for (int f = 0; f < 24; ++f) {
-    const FramePacket packet = main.next();
-    for (const StateChange& c : packet.changes)
-      applyChange(state, c);
-    gpu.step(packet.step(), state);
-  }
-  checkTrails({gpu.readBack(), gpu.readBackTrails()}, 5);
+  for (const char* backend : {"compute", "tf-gs"}) {
+    SCOPED_TRACE(backend);
+    std::unique_ptr<ParticleBackend> gpu;
+    if (std::string(backend) == "compute")
+      gpu = std::make_unique<ParticleComputeUpdate>(4096);
+    else
+      gpu = std::make_unique<ParticleGeoUpdate>(4096);
+    gpu->setField(field, {});
+    MainContext::Options options;
+    options.fixedDt = kDt;
+    options.seed = 5;
+    MainContext main(windState(5), FieldUpdate{.field = field}, options);
+    ParticleState state = main.initialState();
+    auto step = [&] {
+      const FramePacket packet = main.next();
+      for (const StateChange& c : packet.changes)
+        applyChange(state, c);
+      gpu->step(packet.step(), state);
+    };
+    for (int f = 0; f < 24; ++f)
+      step();
+    checkTrails({gpu->readBack(), trailsOf(*gpu)}, 5);
 
-  // A new length starts every trail afresh.
-  main.set("render.trail_length", 8);
-  for (int f = 0; f < 3; ++f) {
-    const FramePacket packet = main.next();
-    for (const StateChange& c : packet.changes)
-      applyChange(state, c);
-    gpu.step(packet.step(), state);
+    // A new length starts every trail afresh.
+    main.set("render.trail_length", 8);
+    for (int f = 0; f < 3; ++f)
+      step();
+    const auto trails = trailsOf(*gpu);
+    ASSERT_FALSE(trails.empty());
+    for (const auto& t : trails)
+      EXPECT_LE(t.size(), 3u);
+    // Off: no trails.
+    main.set("render.trail_length", 0);
+    step();
+    EXPECT_TRUE(trailsOf(*gpu).empty());
   }
-  const auto trails = gpu.readBackTrails();
-  ASSERT_FALSE(trails.empty());
-  for (const auto& t : trails)
-    EXPECT_LE(t.size(), 3u);
-  // Off: no trails.
-  main.set("render.trail_length", 0);
-  const FramePacket packet = main.next();
-  for (const StateChange& c : packet.changes)
-    applyChange(state, c);
-  gpu.step(packet.step(), state);
-  EXPECT_TRUE(gpu.readBackTrails().empty());
 }
 
 }  // namespace
