@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include "core/flow/slice_arrows.h"
 #include "core/flow/slice_polygon.h"
 
 namespace sandstorm {
@@ -9,14 +10,40 @@ namespace sandstorm {
 SliceRenderer::SliceRenderer(SceneField& field)
     : field_(field),
       program_(std::vector<std::string>{"slice.vert", "slice.frag"}),
-      emptyVao_(gl::createVertexArray()) {}
+      arrowProgram_(std::vector<std::string>{"slice_arrows.vert", "slice_arrows.frag"}),
+      emptyVao_(gl::createVertexArray()),
+      arrowVao_(gl::createVertexArray()) {}
 
-void SliceRenderer::update(const ParticleState& state, const FieldUpdate* field) {
+void SliceRenderer::update(const ParticleState& state, const FieldUpdate* field, float blend) {
   polygon_.clear();
+  arrowPoints_ = 0;
   if (!state.slice.enabled || !field || !field->field) return;
   state_ = state;
   polygon_ = slicePolygon(field->field->bounds(), field->placement, state.slice.origin,
                           state.slice.normal);
+  if (state.slice.arrows <= 0) return;
+  PhysicsInputs in;
+  in.field = field->field.get();
+  in.nextField = field->next.get();
+  in.blend = blend;
+  in.placement = field->placement;
+  in.settings = state.sim;
+  const std::vector<glm::vec3> lines = arrowLines(
+      sliceArrows(polygon_, state.slice.normal, state.slice.arrows, in), state.slice.normal);
+  if (lines.empty()) return;
+  if (lines.size() > arrowCapacity_) {
+    arrowCapacity_ = lines.size();
+    arrowLines_ = gl::createBuffer();
+    glNamedBufferStorage(arrowLines_.id(), GLsizeiptr(arrowCapacity_ * sizeof(glm::vec3)), nullptr,
+                         GL_DYNAMIC_STORAGE_BIT);
+    glVertexArrayVertexBuffer(arrowVao_.id(), 0, arrowLines_.id(), 0, sizeof(glm::vec3));
+    glEnableVertexArrayAttrib(arrowVao_.id(), 0);
+    glVertexArrayAttribFormat(arrowVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
+    glVertexArrayAttribBinding(arrowVao_.id(), 0, 0);
+  }
+  glNamedBufferSubData(arrowLines_.id(), 0, GLsizeiptr(lines.size() * sizeof(glm::vec3)),
+                       lines.data());
+  arrowPoints_ = int(lines.size());
 }
 
 void SliceRenderer::draw() const {
@@ -42,6 +69,13 @@ void SliceRenderer::draw() const {
   if (blend) {
     glDisable(GL_BLEND);
     glDepthMask(GL_TRUE);
+  }
+  if (arrowPoints_ > 0) {
+    // Drawn over the slice they lie in: a small depth offset toward the eye.
+    arrowProgram_.use();
+    glBindVertexArray(arrowVao_.id());
+    glDrawArrays(GL_LINES, 0, arrowPoints_);
+    glBindVertexArray(0);
   }
 }
 

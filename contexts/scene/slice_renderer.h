@@ -3,6 +3,8 @@
 // there (the scene's copy of the field, SceneField) through the particles'
 // colour quantity and map. Opaque slices write depth, so particles behind
 // them are hidden and those in front fade into them like into the ground.
+// With slice.arrows, arrow glyphs of the in-plane flow (core/flow/slice_arrows)
+// are drawn on it as dark lines, made on the CPU from the field each frame.
 #pragma once
 
 #include <vector>
@@ -18,14 +20,17 @@ class SliceRenderer {
   explicit SliceRenderer(SceneField& field);
 
   // Once a frame, after `field` has this frame's field.
-  void update(const ParticleState& state, const FieldUpdate* field);
+  void update(const ParticleState& state, const FieldUpdate* field, float blend);
   // Into the bound framebuffer, with the view and render blocks bound.
   void draw() const;
 
  private:
   SceneField& field_;
-  gl::Program program_;
-  gl::VertexArray emptyVao_;
+  gl::Program program_, arrowProgram_;
+  gl::VertexArray emptyVao_, arrowVao_;
+  gl::Buffer arrowLines_;
+  std::size_t arrowCapacity_ = 0;  // points the buffer holds
+  int arrowPoints_ = 0;            // points of the lines to draw
   std::vector<glm::vec3> polygon_;
   ParticleState state_;
 };

@@ -12,6 +12,7 @@ struct SliceSettings {
   glm::vec3 origin{0.0f, 0.0f, 2.0f};  // a point of the plane (the particles' coordinates)
   glm::vec3 normal{0.0f, 1.0f, 0.0f};  // its normal (any length but 0)
   float opacity = 1.0f;
+  int arrows = 0;  // arrow glyphs along the slice's longer side (0: none; core/flow/slice_arrows.h)
 };
 
 // The probe (core/flow/probe.h): the point where the flow is read.

@@ -262,6 +262,9 @@ std::vector<AttributeInfo> makeEntries() {
                     "The slice plane's normal: (1 0 0), (0 1 0), (0 0 1) or any direction",
                     SLICE(normal)));
   v.push_back(entry("slice.opacity", T::Float, 0, 1, "", "The slice's opacity", SLICE(opacity)));
+  v.push_back(entry("slice.arrows", T::Int, 0, 64, "",
+                    "Arrow glyphs of the in-plane flow along the slice's longer side (0: none)",
+                    SLICE(arrows)));
   // The probe: the field's value and the particles near a point.
   v.push_back(entry("probe.enabled", T::Bool, 0, 1, "",
                     "Read the field and count particles at the probe (menu, legend wall, marker)",

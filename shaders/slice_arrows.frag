@@ -1,0 +1,7 @@
+#version 450 core
+// SliceRenderer: arrow glyphs, dark so they read on every colour map.
+layout(location = 0) out vec4 outColor;
+
+void main() {
+  outColor = vec4(0.06, 0.06, 0.06, 1.0);
+}
