@@ -14,11 +14,7 @@ layout(location = 0) uniform uint uCountIndex;
 layout(location = 1) uniform uint uCountAdd;
 layout(location = 2) uniform uint uRowGroups;
 
-// Float bits that compare as unsigned integers in the floats' order.
-uint ordered(float f) {
-  uint bits = floatBitsToUint(f);
-  return (bits & 0x80000000u) != 0u ? ~bits : bits | 0x80000000u;
-}
+#include "ordered_bits.glsl"
 
 void main() {
   uint i = (gl_WorkGroupID.y * uRowGroups + gl_WorkGroupID.x) * 256u + gl_LocalInvocationIndex;

@@ -205,7 +205,7 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
     glBeginQueryIndexed(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, 0,
                         survivorQueries_[std::size_t(slot)].id());
     glBeginTransformFeedback(GL_POINTS);
-    drawSet(in, trails_ ? variant->id() : 0u);
+    drawSet(in, trails_ ? variant.get() : nullptr);
     glEndTransformFeedback();
     glEndQueryIndexed(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, 0);
     attach(out.survivors.id(), out.positionLife.id(), out.velocityKind.id(), GLintptr(born));
@@ -232,16 +232,16 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
   ++updates_;
 }
 
-void ParticleGeoUpdate::drawSet(const BufferSet& set, std::uint32_t sourceProgram) const {
+void ParticleGeoUpdate::drawSet(const BufferSet& set, const gl::Program* sourceProgram) const {
   // With trails, the update program numbers its survivors' sources by draw.
-  const GLint base = sourceProgram ? glGetUniformLocation(sourceProgram, "uSourceBase") : -1;
+  const int base = sourceProgram ? sourceProgram->uniform("uSourceBase") : -1;
   if (set.born > 0) {
-    if (base >= 0) glProgramUniform1ui(sourceProgram, base, 0u);
+    if (base >= 0) glProgramUniform1ui(sourceProgram->id(), base, 0u);
     glBindVertexArray(set.all.id());
     glDrawArrays(GL_POINTS, 0, GLsizei(set.born));
   }
   if (set.hasSurvivors) {
-    if (base >= 0) glProgramUniform1ui(sourceProgram, base, set.born);
+    if (base >= 0) glProgramUniform1ui(sourceProgram->id(), base, set.born);
     glBindVertexArray(set.survivors.id());
     glDrawTransformFeedback(GL_POINTS, set.update.id());
   }

@@ -72,8 +72,8 @@ class ParticleGeoUpdate final : public ParticleBackend {
   static constexpr int kHistory = 3;
 
   void allocate(BufferSet& set, std::size_t capacity);
-  // `sourceProgram`: the update program numbering survivors' sources, or 0.
-  void drawSet(const BufferSet& set, std::uint32_t sourceProgram = 0) const;
+  // `sourceProgram`: the update program numbering survivors' sources, or null.
+  void drawSet(const BufferSet& set, const gl::Program* sourceProgram = nullptr) const;
   std::size_t countAfter(std::uint64_t update) const;
 
   std::size_t capacity_;

@@ -98,7 +98,7 @@ void SceneRenderer::updateFlow(const ParticleState& state, std::shared_ptr<const
       field && field->field)
     sceneField_.set(state, *field, blend, dt);
   streamlines_.update(state, field, blend);
-  slice_.update(state, field.get(), blend);
+  slice_.update(state, field, blend);
   streaklines_.update(state, dt, reset);
 }
 

@@ -14,13 +14,27 @@ SliceRenderer::SliceRenderer(SceneField& field)
       emptyVao_(gl::createVertexArray()),
       arrowVao_(gl::createVertexArray()) {}
 
-void SliceRenderer::update(const ParticleState& state, const FieldUpdate* field, float blend) {
+void SliceRenderer::update(const ParticleState& state,
+                           const std::shared_ptr<const FieldUpdate>& field, float blend) {
   polygon_.clear();
-  arrowPoints_ = 0;
-  if (!state.slice.enabled || !field || !field->field) return;
+  if (!state.slice.enabled || !field || !field->field) {
+    arrowPoints_ = 0;
+    arrowsOf_ = {};
+    return;
+  }
   state_ = state;
   polygon_ = slicePolygon(field->field->bounds(), field->placement, state.slice.origin,
                           state.slice.normal);
+  // The arrows are made again only when what they show changed.
+  const ArrowsOf now{field,
+                     blend,
+                     state.slice.origin,
+                     state.slice.normal,
+                     state.slice.arrows,
+                     state.sim.fieldStrength};
+  if (now == arrowsOf_) return;
+  arrowsOf_ = now;
+  arrowPoints_ = 0;
   if (state.slice.arrows <= 0) return;
   PhysicsInputs in;
   in.field = field->field.get();

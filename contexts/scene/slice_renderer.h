@@ -7,6 +7,7 @@
 // are drawn on it as dark lines, made on the CPU from the field each frame.
 #pragma once
 
+#include <memory>
 #include <vector>
 
 #include "contexts/gl/objects.h"
@@ -20,7 +21,8 @@ class SliceRenderer {
   explicit SliceRenderer(SceneField& field);
 
   // Once a frame, after `field` has this frame's field.
-  void update(const ParticleState& state, const FieldUpdate* field, float blend);
+  void update(const ParticleState& state, const std::shared_ptr<const FieldUpdate>& field,
+              float blend);
   // Into the bound framebuffer, with the view and render blocks bound.
   void draw() const;
 
@@ -31,6 +33,17 @@ class SliceRenderer {
   gl::Buffer arrowLines_;
   std::size_t arrowCapacity_ = 0;  // points the buffer holds
   int arrowPoints_ = 0;            // points of the lines to draw
+  // What the arrows were made from (the field's update, its blend, the plane,
+  // the grid and the strength): equal, they need not be made again.
+  struct ArrowsOf {
+    std::shared_ptr<const FieldUpdate> field;
+    float blend = 0.0f;
+    glm::vec3 origin{0.0f}, normal{0.0f};
+    int arrows = 0;
+    float strength = 0.0f;
+    bool operator==(const ArrowsOf&) const = default;
+  };
+  ArrowsOf arrowsOf_;
   std::vector<glm::vec3> polygon_;
   ParticleState state_;
 };
