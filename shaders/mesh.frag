@@ -1,11 +1,15 @@
 #version 450 core
+// Scene props (the helicopter proxy, the probe's marker), lit by the scene
+// light through the dust's shadow.
 #include "render_block.glsl"
+#include "shadow_block.glsl"
 
 layout(location = 1) uniform vec4 uColor;
 in vec3 vNormal;
+in vec3 vPosition;
 out vec4 fragColor;
 
 void main() {
-  float diffuse = max(dot(normalize(vNormal), look.lightDirection.xyz), 0.0);
-  fragColor = vec4(uColor.rgb * (0.35 + 0.65 * diffuse), 1.0);
+  vec3 direct = max(dot(normalize(vNormal), look.lightDirection.xyz), 0.0) * lightTransmittance(vPosition) * look.light.rgb;
+  fragColor = vec4(uColor.rgb * (0.35 + 0.65 * direct), 1.0);
 }

@@ -6,8 +6,11 @@ layout(location = 0) in vec3 inPosition;
 layout(location = 1) in vec3 inNormal;
 layout(location = 0) uniform mat4 uModel;
 out vec3 vNormal;
+out vec3 vPosition;
 
 void main() {
+  vec4 world = uModel * vec4(inPosition, 1.0);
   vNormal = mat3(uModel) * inNormal;
-  gl_Position = view.viewProjection * uModel * vec4(inPosition, 1.0);
+  vPosition = world.xyz;
+  gl_Position = view.viewProjection * world;
 }

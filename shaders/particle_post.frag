@@ -7,6 +7,7 @@
 layout(binding = 0) uniform sampler2D uSceneColor;
 layout(binding = 1) uniform sampler2D uParticleColor;
 layout(binding = 2) uniform sampler2D uParticleNormal;
+layout(binding = 3) uniform sampler2D uParticleLight;  // premultiplied share of the light (shadows)
 layout(location = 0) uniform ivec2 uOrigin;  // this view's corner in the destination
 
 out vec4 fragColor;
@@ -21,7 +22,9 @@ void main() {
     float len = length(accumulated);
     vec3 n = len > 1e-6 ? accumulated / len : look.lightDirection.xyz;
     float ambient = look.lightDirection.w;
-    lit *= ambient + (1.0 - ambient) * max(dot(n, look.lightDirection.xyz), 0.0);
+    // The shadows dim the direct light only: the sky's ambient light comes from everywhere.
+    float reach = look.light.w > 0.5 ? clamp(texelFetch(uParticleLight, p, 0).r / particles.a, 0.0, 1.0) : 1.0;
+    lit *= ambient + (1.0 - ambient) * max(dot(n, look.lightDirection.xyz), 0.0) * reach * look.light.rgb;
   }
   fragColor = vec4(lit + scene.rgb * (1.0 - particles.a), 1.0);
 }

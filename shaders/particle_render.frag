@@ -1,6 +1,7 @@
 #version 450 core
-// ParticleRender: writes premultiplied colour and premultiplied sphere normals
-// into the offscreen particle buffer (blended ONE, ONE_MINUS_SRC_ALPHA, thesis
+// ParticleRender: writes premultiplied colour, premultiplied sphere normals and
+// the premultiplied share of the light reaching it (shadows) into the
+// offscreen particle buffer (blended ONE, ONE_MINUS_SRC_ALPHA, thesis
 // 5.1.3), for ParticlePost to light. Particles behind the scene are hidden and
 // fade out as they near it (soft particles).
 #include "view_block.glsl"
@@ -12,6 +13,7 @@ layout(binding = 3) uniform sampler2D uSceneDepth;  // the scene's depth, same s
 #ifdef POINTS
 in float vAge;
 in float vColor;
+in float vLight;
 #else
 in vec2 gCorner;
 in vec3 gRight;
@@ -19,21 +21,25 @@ in vec3 gUp;
 in vec3 gToEye;
 in float gAge;
 in float gColor;
+in float gLight;
 #endif
 layout(location = 0) out vec4 outColor;
 layout(location = 1) out vec4 outNormal;
+layout(location = 2) out vec4 outLight;  // R16F: red only
 
 void main() {
 #ifdef POINTS
   vec2 corner = 2.0 * gl_PointCoord - 1.0;
   float age = vAge;
   float colorT = vColor;
+  float light = vLight;
   float shape = dot(corner, corner) <= 1.0 ? 1.0 : 0.0;
   vec3 normal = vec3(0.0);  // points are coloured, not lit
 #else
   vec2 corner = gCorner;
   float age = gAge;
   float colorT = gColor;
+  float light = gLight;
   float r2 = dot(corner, corner);
   if (r2 > 1.0) discard;
   float shape = texture(uSprite, 0.5 * corner + 0.5).r;
@@ -50,4 +56,5 @@ void main() {
   vec3 color = colorAt(colorT);
   outColor = vec4(color * alpha, alpha);
   outNormal = vec4(normal * alpha, alpha);
+  outLight = vec4(light * alpha, 0.0, 0.0, alpha);
 }

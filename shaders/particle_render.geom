@@ -11,12 +11,14 @@ layout(triangle_strip, max_vertices = 4) out;
 in vec3 vCenter[];
 in float vAge[];
 in float vColor[];
+in float vLight[];
 out vec2 gCorner;  // -1..1 across the quad
 out vec3 gRight;
 out vec3 gUp;
 out vec3 gToEye;
 out float gAge;
 out float gColor;
+out float gLight;
 
 void main() {
   vec3 center = vCenter[0];
@@ -36,6 +38,7 @@ void main() {
     gToEye = n;
     gAge = vAge[0];
     gColor = vColor[0];
+    gLight = vLight[0];
     gl_Position = view.viewProjection * vec4(center + radius * (corners[i].x * right + corners[i].y * up), 1.0);
     EmitVertex();
   }

@@ -3,6 +3,7 @@
 // the geometry stage; points are sized here to their projected diameter.
 #include "view_block.glsl"
 #include "render_block.glsl"
+#include "shadow_block.glsl"
 
 #ifdef SORTED
 // render.order = sorted: record sortedIndex[gl_VertexID], back to front (ParticleSort).
@@ -16,6 +17,7 @@ layout(location = 1) in vec4 inVelocityKind;
 out vec3 vCenter;
 out float vAge;    // 0 at birth, 1 at death
 out float vColor;  // the colour map's coordinate
+out float vLight;  // the share of the light that reaches it through the dust
 
 void main() {
 #ifdef SORTED
@@ -25,6 +27,7 @@ void main() {
   vCenter = inPositionLife.xyz;
   vAge = clamp(1.0 - inPositionLife.w / max(inVelocityKind.w, 1e-6), 0.0, 1.0);
   vColor = colorCoordinate(vAge, inVelocityKind.xyz, inPositionLife.xyz);
+  vLight = lightTransmittance(vCenter);
 #ifdef POINTS
   gl_Position = view.viewProjection * vec4(vCenter, 1.0);
   float pixels = look.params.x * view.viewport.w * view.projection[1][1] / (2.0 * max(gl_Position.w, 1e-4));

@@ -12,6 +12,7 @@ layout(local_size_x = 16, local_size_y = 16) in;
 layout(std430, binding = 6) restrict buffer SplatAccumulation { uvec4 accum[]; };
 layout(rgba16f, binding = 0) writeonly uniform image2D uColor;
 layout(rgba16f, binding = 1) writeonly uniform image2D uNormal;
+layout(r16f, binding = 2) writeonly uniform image2D uLight;
 layout(location = 0) uniform ivec2 uSize;
 
 void main() {
@@ -22,13 +23,16 @@ void main() {
   if (first.x == 0u) {  // nothing splatted here (each contribution adds at least 8 to the alpha sum)
     imageStore(uColor, p, vec4(0.0));
     imageStore(uNormal, p, vec4(0.0));
+    imageStore(uLight, p, vec4(0.0));
     return;
   }
   accum[base] = uvec4(0u);
   accum[base + 1u] = uvec4(0u);
-  uint sums[kSplatChannels] = uint[](first.x, first.y, first.z, first.w, second.x, second.y);
+  uint sums[kSplatChannels] = uint[](first.x, first.y, first.z, first.w, second.x, second.y, second.z);
   vec4 color, normal;
-  resolveSplat(sums, color, normal);
+  float light;
+  resolveSplat(sums, color, normal, light);
   imageStore(uColor, p, color);
   imageStore(uNormal, p, normal);
+  imageStore(uLight, p, vec4(light));
 }

@@ -14,6 +14,7 @@ layout(std140, binding = 2) uniform RenderBlock {
   vec4 placementOffset;  // xyz, w: scale
   vec4 placementRotation[3];
   vec4 colorGrid;  // x: blend, y: 1 with a next frame, z: factor, w: 1 with a grid
+  vec4 light;      // rgb: the direct light's colour times its strength, w: 1 with shadows
 } look;
 
 layout(binding = 5) uniform sampler3D uColorGrid;      // R: |curl| (VectorField x)

@@ -2,6 +2,7 @@
 // and what it adds to each, shared by the atomic and the tiled splat passes
 // so both add exactly the same numbers. Needs view_block.glsl,
 // render_block.glsl, splat_common.glsl and the sampler bindings below.
+#include "shadow_block.glsl"
 
 layout(binding = 2) uniform sampler2D uSprite;      // R8 puff, as ParticleRender's
 layout(binding = 3) uniform sampler2D uSceneDepth;  // the scene's depth, this view's size
@@ -19,12 +20,14 @@ struct Splat {
   float opacity;
   float age;
   float color;    // the colour map's coordinate
+  float light;    // the share of the light reaching it through the dust
   ivec2 lo, hi;   // the pixels it may cover (inclusive, inside the view)
 };
 
 // A splat in 16 bytes, as the tiled pass lists it and both passes use it (so
 // both add the same integers): the centre's window coordinates and distance
-// as floats; the age and the colour map's coordinate in 16 bits each. The
+// as floats; the age (10 bits), the colour map's coordinate (12) and the
+// share of the light reaching it (10: shadow_block.glsl) in the last. The
 // direction to the eye is not stored: the centre lies on the eye's ray
 // through its pixel, so unpackSplat finds it from the pixel.
 // A record's first three words: the centre's window coordinates and
@@ -37,11 +40,12 @@ bool splatCentre(vec3 center, out uvec3 where) {
   return true;
 }
 
-// A record's last word: the age and the colour map's coordinate.
+// A record's last word: the age, the colour map's coordinate and the light.
 uint splatLook(vec4 positionLife, vec4 velocityKind) {
   float age = clamp(1.0 - positionLife.w / max(velocityKind.w, 1e-6), 0.0, 1.0);
   float color = colorCoordinate(age, velocityKind.xyz, positionLife.xyz);
-  return uint(round(age * 65535.0)) | uint(round(color * 65535.0)) << 16;
+  float light = clamp(lightTransmittance(positionLife.xyz), 0.0, 1.0);
+  return uint(round(age * 1023.0)) | uint(round(color * 4095.0)) << 10 | uint(round(light * 1023.0)) << 22;
 }
 
 bool makeSplatRecord(vec4 positionLife, vec4 velocityKind, out uvec4 record) {
@@ -72,8 +76,9 @@ bool splatBounds(uvec3 where, out Splat s) {
 // The whole splat from its record. False when it shows nowhere in this view.
 bool unpackSplat(uvec4 record, out Splat s) {
   if (!splatBounds(record.xyz, s)) return false;
-  s.age = float(record.w & 65535u) / 65535.0;
-  s.color = float(record.w >> 16) / 65535.0;
+  s.age = float(record.w & 1023u) / 1023.0;
+  s.color = float((record.w >> 10) & 4095u) / 4095.0;
+  s.light = float(record.w >> 22) / 1023.0;
   // The eye's ray through the centre's pixel, to the far plane.
   vec4 far = view.inverseViewProjection * vec4(s.pixel / view.viewport.zw * 2.0 - 1.0, 1.0, 1.0);
   s.toEye = normalize(view.eye.xyz - far.xyz / far.w);
@@ -120,14 +125,17 @@ bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
   v[3] = uint(nn.x);
   v[4] = uint(nn.y);
   v[5] = uint(nn.z);
+  v[6] = uint(alpha * s.light * kSplatScale + 0.5);
   return true;
 }
 
 // The particle buffers' values from a pixel's sums: alpha is "over"'s,
-// 1 - prod(1 - alpha_i); colour and normal are alpha-weighted means times it.
-void resolveSplat(uint sums[kSplatChannels], out vec4 color, out vec4 normal) {
+// 1 - prod(1 - alpha_i); colour, normal and light are alpha-weighted means
+// times it.
+void resolveSplat(uint sums[kSplatChannels], out vec4 color, out vec4 normal, out float light) {
   color = vec4(0.0);
   normal = vec4(0.0);
+  light = 0.0;
   float weight = float(sums[0]);
   if (weight <= 0.0) return;
   float alpha = 1.0 - exp(-float(sums[2]) / kSplatScale);
@@ -136,4 +144,5 @@ void resolveSplat(uint sums[kSplatChannels], out vec4 color, out vec4 normal) {
   float t = float(sums[1]) / weight;
   color = vec4(colorAt(t) * alpha, alpha);
   normal = vec4(vec3(int(sums[3]), int(sums[4]), int(sums[5])) / weight * alpha, alpha);
+  light = float(sums[6]) / weight * alpha;
 }

@@ -9,25 +9,15 @@
 #include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_sort.h"
 #include "contexts/render/view_targets.h"
+#include "core/light/puff_sprite.h"
 
 namespace sandstorm {
 namespace {
 
-// A soft puff of dust: a smooth radial falloff with a little lumpiness, so
-// overlapping billboards read as a cloud rather than as discs.
+// The puff (core/light/puff_sprite.h) as an R8 texture.
 gl::Texture makeSprite() {
-  constexpr int kSize = 64;
-  std::vector<std::uint8_t> pixels(kSize * kSize);
-  for (int y = 0; y < kSize; ++y)
-    for (int x = 0; x < kSize; ++x) {
-      const float u = (x + 0.5f) / kSize * 2.0f - 1.0f, v = (y + 0.5f) / kSize * 2.0f - 1.0f;
-      const float r = std::sqrt(u * u + v * v);
-      const float falloff = r >= 1.0f ? 0.0f : (1.0f - r * r) * (1.0f - r * r);
-      const float lumps =
-          0.8f + 0.2f * std::sin(9.0f * u + 3.0f * std::sin(7.0f * v)) * std::cos(8.0f * v);
-      pixels[std::size_t(y * kSize + x)] =
-          std::uint8_t(std::clamp(falloff * lumps, 0.0f, 1.0f) * 255.0f + 0.5f);
-    }
+  constexpr int kSize = kPuffSize;
+  const std::vector<std::uint8_t> pixels = puffSpritePixels();
   gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
   glTextureStorage2D(t.id(), 1, GL_R8, kSize, kSize);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
@@ -58,6 +48,7 @@ void ParticleRender::draw(const ParticleBackend& particles, const ViewTargets& t
   const float clear[4] = {0, 0, 0, 0};
   glClearNamedFramebufferfv(targets.particleFramebuffer(), GL_COLOR, 0, clear);
   glClearNamedFramebufferfv(targets.particleFramebuffer(), GL_COLOR, 1, clear);
+  glClearNamedFramebufferfv(targets.particleFramebuffer(), GL_COLOR, 2, clear);
 
   glDisable(GL_DEPTH_TEST);  // the fragment stage tests against the scene's depth itself
   glDepthMask(GL_FALSE);

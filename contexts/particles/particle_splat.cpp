@@ -83,6 +83,7 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   glBindTextureUnit(3, targets.sceneDepth());
   glBindImageTexture(0, targets.particleColor(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glBindImageTexture(1, targets.particleNormal(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glBindImageTexture(2, targets.particleLight(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
 
   const glm::ivec2 size = targets.size();
   const std::size_t pixels = std::size_t(size.x) * std::size_t(size.y);

@@ -35,7 +35,9 @@ ParticleSystem::ParticleSystem(const ParticleState& initial, const Options& opti
     : state_(initial),
       capacityLimit_(std::max(options.capacity, options.capacityLimit)),
       update_(backendFor(options)),
-      splat_(options.tuning) {}
+      splat_(options.tuning) {
+  if (update_->simulates()) shadow_ = std::make_unique<OpacityShadowMap>();
+}
 
 void ParticleSystem::endFrame() {
   update_->endFrame();
@@ -66,6 +68,12 @@ void ParticleSystem::advance(const FramePacket& packet) {
     log::debug("frame ", packet.frame, ": field uploaded in ", update_->lastFieldUploadMs(), " ms");
   }
   update_->step(packet.step(), state_);
+  // The shadow map depends on the particles, not the view: built once here
+  // for every wall drawing this simulation, and published with it.
+  if (shadow_) {
+    shadow_->build(update_->records(), update_->capacity(), state_.render);
+    update_->publish(shadow_->handles());
+  }
   frame_ = packet.frame;
 }
 

@@ -14,6 +14,7 @@
 #include "contexts/particles/particle_render.h"
 #include "contexts/particles/particle_splat.h"
 #include "contexts/particles/trail_renderer.h"
+#include "contexts/shadows/opacity_shadow_map.h"
 #include "core/cave/view.h"
 #include "core/config/gpu_tuning.h"
 #include "core/sim/frame_packet.h"
@@ -68,6 +69,11 @@ class ParticleSystem {
   // framebuffer, with the view and render blocks bound; views drawing splats
   // (splats(view, size)) add them to the splats instead (ParticleSplat).
   void drawTrails(const View* view, glm::ivec2 size) const;
+  // This frame's shadow map (render.shadows; says "none" when off), this
+  // system's own or, for a shared simulation's reader, the owner's.
+  ShadowHandles shadow() const { return shadow_ ? shadow_->handles() : update_->sharedShadow(); }
+  // The owner's map itself (tests); null for a shared simulation's reader.
+  const OpacityShadowMap* shadowMap() const { return shadow_.get(); }
   // The live particles' trails, newest point first (waits for the GPU: dumps, tests).
   std::vector<std::vector<glm::vec3>> readBackTrails() const;
 
@@ -86,6 +92,7 @@ class ParticleSystem {
   ParticleSplat splat_;
   ParticlePost post_;
   TrailRenderer trails_;
+  std::unique_ptr<OpacityShadowMap> shadow_;  // the simulation's owner's (once per GPU)
   std::shared_ptr<const FieldUpdate> field_;
   std::uint32_t frame_ = 0;
   float fieldBlend_ = 0.0f;

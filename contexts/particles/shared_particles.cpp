@@ -18,7 +18,11 @@ SharingBackend::SharingBackend(std::unique_ptr<ParticleBackend> inner,
 void SharingBackend::step(const SimStep& step, const ParticleState& state) {
   share_->waitForReaders(step.frame);  // readers are done with the buffers this update overwrites
   inner_->step(step, state);
-  share_->publish(step.frame, {inner_->records(), inner_->capacity(), inner_->lateCount()});
+  frame_ = step.frame;
+}
+
+void SharingBackend::publish(const ShadowHandles& shadow) {
+  share_->publish(frame_, {inner_->records(), inner_->capacity(), inner_->lateCount(), shadow});
 }
 
 SharedParticles::SharedParticles(std::shared_ptr<SimulationShare> share, int reader)

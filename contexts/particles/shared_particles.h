@@ -30,6 +30,7 @@ class SharingBackend final : public ParticleBackend {
     inner_->setTerrain(std::move(terrain));
   }
   void step(const SimStep& step, const ParticleState& state) override;
+  void publish(const ShadowHandles& shadow) override;
   void clear() override { inner_->clear(); }
   void grow(std::size_t capacity) override { inner_->grow(capacity); }
   void draw() const override { inner_->draw(); }
@@ -44,6 +45,7 @@ class SharingBackend final : public ParticleBackend {
  private:
   std::unique_ptr<ParticleBackend> inner_;
   std::shared_ptr<SimulationShare> share_;
+  std::uint32_t frame_ = 0;  // the frame step() updated and publish() publishes
 };
 
 class SharedParticles final : public ParticleBackend {
@@ -61,6 +63,7 @@ class SharedParticles final : public ParticleBackend {
   void draw() const override;
   Records records() const override { return current_.records; }
   bool simulates() const override { return false; }
+  ShadowHandles sharedShadow() const override { return current_.shadow; }
   void endFrame() override;
 
   std::size_t capacity() const override { return current_.capacity; }

@@ -30,6 +30,7 @@ class SimulationShare {
     ParticleBackend::Records records;
     std::size_t capacity = 0;
     std::size_t lateCount = 0;  // the owner's ParticleBackend::lateCount()
+    ShadowHandles shadow;       // the owner's shadow map of the frame
   };
 
   explicit SimulationShare(int readers);

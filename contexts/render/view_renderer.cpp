@@ -39,7 +39,8 @@ void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, 
   glNamedBufferSubData(renderBlock_.id(), 0, sizeof(rb), &rb);
   glBindBufferBase(GL_UNIFORM_BUFFER, 1, viewBlock_.id());
   glBindBufferBase(GL_UNIFORM_BUFFER, 2, renderBlock_.id());
-  scene_.bindColorGrid();  // texture units 5 and 6, for colouring by vorticity or an array
+  scene_.bindColorGrid();     // texture units 5 and 6, for colouring by vorticity or an array
+  particles.shadow().bind();  // uniform binding 4, texture unit 7: the dust's shadow
 
   glBindFramebuffer(GL_FRAMEBUFFER, targets_.sceneFramebuffer());
   glViewport(0, 0, size.x, size.y);

@@ -38,6 +38,7 @@ void ViewTargets::resize(glm::ivec2 size) {
   sceneDepth_ = texture2D(GL_DEPTH_COMPONENT32F, size);
   particleColor_ = texture2D(GL_RGBA16F, size);
   particleNormal_ = texture2D(GL_RGBA16F, size);
+  particleLight_ = texture2D(GL_R16F, size);
 
   sceneFbo_ = gl::createFramebuffer();
   glNamedFramebufferTexture(sceneFbo_.id(), GL_COLOR_ATTACHMENT0, sceneColor_.id(), 0);
@@ -47,8 +48,9 @@ void ViewTargets::resize(glm::ivec2 size) {
   particleFbo_ = gl::createFramebuffer();
   glNamedFramebufferTexture(particleFbo_.id(), GL_COLOR_ATTACHMENT0, particleColor_.id(), 0);
   glNamedFramebufferTexture(particleFbo_.id(), GL_COLOR_ATTACHMENT1, particleNormal_.id(), 0);
-  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-  glNamedFramebufferDrawBuffers(particleFbo_.id(), 2, buffers);
+  glNamedFramebufferTexture(particleFbo_.id(), GL_COLOR_ATTACHMENT2, particleLight_.id(), 0);
+  const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  glNamedFramebufferDrawBuffers(particleFbo_.id(), 3, buffers);
   checkComplete(particleFbo_.id(), "particle");
 }
 

@@ -1,7 +1,8 @@
 // ViewTargets: the offscreen buffers one view renders through, all the view's
 // size: the scene (colour + depth, which particles test against) and the
 // particle accumulation buffer (premultiplied colour + premultiplied normals,
-// both RGBA16F) that ParticlePost lights and composites.
+// both RGBA16F, and the premultiplied share of the light that reaches the
+// particles through the dust, R16F) that ParticlePost lights and composites.
 #pragma once
 
 #include <glm/glm.hpp>
@@ -22,11 +23,12 @@ class ViewTargets {
   std::uint32_t sceneDepth() const { return sceneDepth_.id(); }
   std::uint32_t particleColor() const { return particleColor_.id(); }
   std::uint32_t particleNormal() const { return particleNormal_.id(); }
+  std::uint32_t particleLight() const { return particleLight_.id(); }
 
  private:
   glm::ivec2 size_{0};
   gl::Framebuffer sceneFbo_, particleFbo_;
-  gl::Texture sceneColor_, sceneDepth_, particleColor_, particleNormal_;
+  gl::Texture sceneColor_, sceneDepth_, particleColor_, particleNormal_, particleLight_;
 };
 
 // OutputTarget: an RGBA8 colour texture + depth framebuffer: an offscreen

@@ -163,6 +163,25 @@ std::vector<AttributeInfo> makeEntries() {
                     "Direction towards the light, room space", RENDER(lightDirection)));
   v.push_back(entry("render.ambient", T::Float, 0, 1, "", "Ambient share of particle lighting",
                     RENDER(ambient)));
+  v.push_back(
+      entry("render.light_color", T::Vec3, 0, 1, "rgb", "The light's colour", RENDER(lightColor)));
+  v.push_back(entry("render.light_strength", T::Float, 0, 10, "",
+                    "The direct light's strength (the ambient share is not scaled)",
+                    RENDER(lightStrength)));
+  v.push_back(entry("render.shadows", T::Bool, 0, 1, "",
+                    "Volumetric self-shadowing: the dust shades itself, the ground and the "
+                    "terrain from the light (opacity shadow maps, built once a frame per GPU)",
+                    RENDER(shadows)));
+  v.push_back(entry("render.shadow_density", T::Float, 0, 100, "",
+                    "Shadows: how much light a particle blocks, times its own opacity's share",
+                    RENDER(shadowDensity)));
+  v.push_back(entry("render.shadow_layers", T::Int, 8, 64, "",
+                    "Shadows: opacity layers along the light (more: finer in depth)",
+                    RENDER(shadowLayers)));
+  v.push_back(entry("render.shadow_resolution", T::Int, 16, 2048, "texels",
+                    "Shadows: the map's side across the light (cells never smaller than a "
+                    "particle)",
+                    RENDER(shadowResolution)));
   v.push_back(entry("render.softness", T::Float, 0, 10, "m",
                     "Particles fade out within this distance in front of scene geometry",
                     RENDER(softness)));

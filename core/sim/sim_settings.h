@@ -79,9 +79,16 @@ struct RenderSettings {
   float opacityDeath = 0.0f;
   glm::vec3 lightDirection{0.4f, -0.3f, 0.85f};  // towards the light, room space
   float ambient = 0.35f;
-  float softness = 0.3f;     // m: particles fade out this close to scene geometry
-  float splatPixels = 4.0f;  // Auto mode: splat particles up to this projected diameter
-  bool fieldBox = true;      // outline the field's bounds
+  glm::vec3 lightColor{1.0f, 1.0f, 1.0f};
+  float lightStrength = 1.0f;  // scales the direct (not the ambient) light
+  // Volumetric self-shadowing (opacity shadow maps, core/light/light_model.h).
+  bool shadows = false;
+  float shadowDensity = 1.0f;  // scales how much light each particle blocks
+  int shadowLayers = 16;       // opacity layers along the light
+  int shadowResolution = 256;  // the map's largest side, texels
+  float softness = 0.3f;       // m: particles fade out this close to scene geometry
+  float splatPixels = 4.0f;    // Auto mode: splat particles up to this projected diameter
+  bool fieldBox = true;        // outline the field's bounds
   // Colour by a quantity (core/color): which, through which map, over which range.
   ColorQuantity colorBy = ColorQuantity::Age;
   std::string colorArray;  // ColorQuantity::Array: the field's scalar array ("": its first)
