@@ -2,7 +2,7 @@
 // thread, hold bitwise identical particle buffers at every one of 200 frames
 // (emission, death and mid-run changes included); so do four processes with
 // one wall each, and four walls drawn in turn from one context; and a recorded
-// session replays to the same particles.
+// session replays to the same particles. The shadows they cast agree too.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -135,6 +135,39 @@ TEST(Identity, WallsDrawnFromOneContextMatchWallsOnTheirOwnThreads) {
     EXPECT_EQ(image, test::readBytes(dir / "one" / (std::string(wall) + ".png")))
         << wall << ": the images differ";
   }
+}
+
+// The shadow map is built once per GPU from the particles (render.shadows):
+// walls on their own threads, walls drawing one shared simulation, and a
+// wall alone in its process (as an MPI rank runs it) show the same shadows.
+TEST(Identity, ShadowsAreTheSameOnEveryWallHoweverTheWallsAreRun) {
+  const auto dir = test::scratchDir("shadows");
+  const std::string shadows =
+      " --replay tests/data/midrun.session --frames 90 --set render.shadows=true "
+      "--set render.shadow_density=6 --set render.light_direction=0.6,0.2,0.77 --screenshot ";
+  const auto own =
+      runSandstorm("--config tests/data/identity.toml" + shadows + (dir / "own").string());
+  const auto shared = runSandstorm("--config tests/data/identity-shared.toml" + shadows +
+                                   (dir / "shared").string());
+  const auto alone = runSandstorm("--config tests/data/identity.toml --walls floor" + shadows +
+                                  (dir / "alone").string());
+  const auto unshaded = runSandstorm(
+      "--config tests/data/identity.toml --replay tests/data/midrun.session "
+      "--frames 90 --set render.light_direction=0.6,0.2,0.77 --screenshot " +
+      (dir / "unshaded").string());
+  for (const auto* r : {&own, &shared, &alone, &unshaded})
+    ASSERT_EQ(r->exitCode, 0) << r->output;
+  int shaded = 0;  // walls where the shadows show (32 pixels wide: not every wall's)
+  for (const char* wall : {"front", "left", "right", "floor"}) {
+    const std::string name = std::string(wall) + ".png";
+    const std::string image = test::readBytes(dir / "own" / name);
+    EXPECT_FALSE(image.empty()) << wall;
+    EXPECT_TRUE(image == test::readBytes(dir / "shared" / name)) << wall << ": the images differ";
+    shaded += image != test::readBytes(dir / "unshaded" / name);
+  }
+  EXPECT_GE(shaded, 2);
+  EXPECT_TRUE(test::readBytes(dir / "own" / "floor.png") ==
+              test::readBytes(dir / "alone" / "floor.png"));
 }
 
 TEST(Identity, ARecordedSessionReplaysToTheSameParticles) {
