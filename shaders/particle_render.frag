@@ -6,6 +6,7 @@
 // fade out as they near it (soft particles).
 #include "view_block.glsl"
 #include "render_block.glsl"
+#include "motion_blur.glsl"
 
 layout(binding = 2) uniform sampler2D uSprite;      // R8 puff
 layout(binding = 3) uniform sampler2D uSceneDepth;  // the scene's depth, same size as this target
@@ -16,6 +17,7 @@ in float vColor;
 in float vLight;
 #else
 in vec2 gCorner;
+in vec2 gMotion;
 in vec3 gRight;
 in vec3 gUp;
 in vec3 gToEye;
@@ -40,9 +42,15 @@ void main() {
   float age = gAge;
   float colorT = gColor;
   float light = gLight;
+  float shape;
+  if (gMotion.x > 0.0) {  // motion blur
+    vec2 closest;
+    shape = smearedPuff(corner, gMotion, closest) * puffLumps(closest);
+    corner = closest;
+  }
   float r2 = dot(corner, corner);
   if (r2 > 1.0) discard;
-  float shape = texture(uSprite, 0.5 * corner + 0.5).r;
+  if (gMotion.x == 0.0) shape = texture(uSprite, 0.5 * corner + 0.5).r;
   vec3 normal = normalize(corner.x * gRight + corner.y * gUp + sqrt(1.0 - r2) * gToEye);
 #endif
   float sceneDistance = viewDistance(texelFetch(uSceneDepth, ivec2(gl_FragCoord.xy), 0).r);

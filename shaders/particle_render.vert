@@ -18,6 +18,7 @@ out vec3 vCenter;
 out float vAge;    // 0 at birth, 1 at death
 out float vColor;  // the colour map's coordinate
 out float vLight;  // the share of the light that reaches it through the dust
+out vec3 vVelocity;
 
 void main() {
 #ifdef SORTED
@@ -28,6 +29,7 @@ void main() {
   vAge = clamp(1.0 - inPositionLife.w / max(inVelocityKind.w, 1e-6), 0.0, 1.0);
   vColor = colorCoordinate(vAge, inVelocityKind.xyz, inPositionLife.xyz);
   vLight = lightTransmittance(vCenter);
+  vVelocity = inVelocityKind.xyz;
 #ifdef POINTS
   gl_Position = view.viewProjection * vec4(vCenter, 1.0);
   float pixels = look.params.x * view.viewport.w * view.projection[1][1] / (2.0 * max(gl_Position.w, 1e-4));

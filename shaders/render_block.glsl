@@ -4,7 +4,7 @@ layout(std140, binding = 2) uniform RenderBlock {
   vec4 colorBirth;      // rgb, a: opacity at birth
   vec4 colorDeath;      // rgb, a: opacity at death
   vec4 lightDirection;  // xyz towards the light (unit), w: ambient share
-  vec4 params;          // x: size (m), y: softness (m), z: 1 for billboards, 0 for points
+  vec4 params;          // x: size (m), y: softness (m), z: 1 for billboards, 0 for points, w: shutter (s)
   vec4 colorScale;      // x: quantity (ColorQuantity), y: value at t = 0, z: at t = 1, w: 1 log scale
   vec4 colorTable[kColorSamples];  // the colour map's rgb at t = i / (kColorSamples - 1)
   // The colour grids' place (units 5 and 6), as the particles' field's.

@@ -53,11 +53,12 @@ void main() {
   barrier();
   uint begin = group * args.perGroup, end = min(begin + args.perGroup, args.count);
   for (uint i = begin + lid; i < end; i += kGroup) {
-    // Counting needs only where the splat is (so reads only the positions).
+    // Counting needs only where the splat is (the positions; the velocities for motion blur).
     vec4 pl = positionLife[i];
     uvec3 where;
     Splat s;
-    if (!splatCentre(pl.xyz, where) || !splatBounds(where, s)) continue;
+    vec3 velocity = look.params.w > 0.0 ? velocityKind[i].xyz : vec3(0.0);  // motion blur
+    if (!splatCentre(pl.xyz, velocity, where) || !splatBounds(where, s)) continue;
     uvec4 record = uvec4(where, uScatter ? splatLook(pl, velocityKind[i]) : 0u);
     ivec2 t0 = s.lo / kSplatTile, t1 = s.hi / kSplatTile;
     for (int ty = t0.y; ty <= t1.y; ++ty)

@@ -3,13 +3,19 @@
 // so both add exactly the same numbers. Needs view_block.glsl,
 // render_block.glsl, splat_common.glsl and the sampler bindings below.
 #include "shadow_block.glsl"
+#include "motion_blur.glsl"
 
 layout(binding = 2) uniform sampler2D uSprite;      // R8 puff, as ParticleRender's
 layout(binding = 3) uniform sampler2D uSceneDepth;  // the scene's depth, this view's size
 
 // Pixels: larger particles are drawn this large (use billboards for them).
-// Below 16 so a splat spans at most 33 pixels, two 32-pixel tiles, a side.
+// Below 16 so a still splat spans at most 33 pixels, two 32-pixel tiles, a side.
 const float kMaxRadius = 15.5;
+// Pixels: motion blur smears a splat at most this far (render.shutter).
+const float kMaxSmear = 48.0;
+// The centre's window coordinates in a record: fixed point, 1/8 pixel, from
+// -64 (so views up to 8127 pixels wide; farther splats are not drawn).
+const float kPixelSteps = 8.0, kPixelOrigin = 64.0;
 
 struct Splat {
   vec2 pixel;     // window coordinates of the centre
@@ -21,22 +27,37 @@ struct Splat {
   float age;
   float color;    // the colour map's coordinate
   float light;    // the share of the light reaching it through the dust
+  vec2 motion;    // motion blur: where the centre was when the shutter opened, negated (radii)
   ivec2 lo, hi;   // the pixels it may cover (inclusive, inside the view)
 };
 
 // A splat in 16 bytes, as the tiled pass lists it and both passes use it (so
-// both add the same integers): the centre's window coordinates and distance
-// as floats; the age (10 bits), the colour map's coordinate (12) and the
-// share of the light reaching it (10: shadow_block.glsl) in the last. The
-// direction to the eye is not stored: the centre lies on the eye's ray
-// through its pixel, so unpackSplat finds it from the pixel.
-// A record's first three words: the centre's window coordinates and
-// distance. False when the particle is behind the eye (or at it).
-bool splatCentre(vec3 center, out uvec3 where) {
+// both add the same integers): the centre's window coordinates (16-bit fixed
+// point each), its distance (a float), its motion over the shutter in pixels
+// (two halves), and the age (10 bits), the colour map's coordinate (12) and
+// the share of the light reaching it (10: shadow_block.glsl). The direction
+// to the eye is not stored: the centre lies on the eye's ray through its
+// pixel, so unpackSplat finds it from the pixel.
+// A record's first three words: the centre's window coordinates, distance
+// and motion. False when the particle is behind the eye (or at it) or
+// beyond the coordinates' range.
+bool splatCentre(vec3 center, vec3 velocity, out uvec3 where) {
   vec4 clip = view.viewProjection * vec4(center, 1.0);
   vec3 toEye = view.eye.xyz - center;
   if (clip.w <= 1e-4 || dot(toEye, toEye) < 1e-8) return false;
-  where = uvec3(floatBitsToUint((clip.xy / clip.w * 0.5 + 0.5) * view.viewport.zw), floatBitsToUint(clip.w));
+  vec2 pixel = (clip.xy / clip.w * 0.5 + 0.5) * view.viewport.zw;
+  vec2 fixedPixel = round((pixel + kPixelOrigin) * kPixelSteps);
+  if (any(lessThan(fixedPixel, vec2(0.0))) || any(greaterThan(fixedPixel, vec2(65535.0)))) return false;
+  // Motion blur: the centre's pixel when the shutter opened, on the same side of the eye.
+  vec2 motion = vec2(0.0);
+  if (look.params.w > 0.0) {
+    vec4 before = view.viewProjection * vec4(center - velocity * look.params.w, 1.0);
+    if (before.w > 1e-4) motion = pixel - (before.xy / before.w * 0.5 + 0.5) * view.viewport.zw;
+    float smear = length(motion);
+    if (smear > kMaxSmear) motion *= kMaxSmear / smear;
+  }
+  uvec2 fixedBits = uvec2(fixedPixel);
+  where = uvec3(fixedBits.x | fixedBits.y << 16, floatBitsToUint(clip.w), packHalf2x16(motion));
   return true;
 }
 
@@ -50,7 +71,7 @@ uint splatLook(vec4 positionLife, vec4 velocityKind) {
 
 bool makeSplatRecord(vec4 positionLife, vec4 velocityKind, out uvec4 record) {
   uvec3 where;
-  if (!splatCentre(positionLife.xyz, where)) return false;
+  if (!splatCentre(positionLife.xyz, velocityKind.xyz, where)) return false;
   record = uvec4(where, splatLook(positionLife, velocityKind));
   return true;
 }
@@ -59,17 +80,18 @@ bool makeSplatRecord(vec4 positionLife, vec4 velocityKind, out uvec4 record) {
 // radius in pixels and the pixels it may cover. False when it shows nowhere
 // in this view.
 bool splatBounds(uvec3 where, out Splat s) {
-  s.pixel = uintBitsToFloat(where.xy);
-  s.distance = uintBitsToFloat(where.z);
+  s.pixel = vec2(float(where.x & 65535u), float(where.x >> 16)) / kPixelSteps - kPixelOrigin;
+  s.distance = uintBitsToFloat(where.y);
+  vec2 motion = unpackHalf2x16(where.z);
   vec2 size = view.viewport.zw;
   float radius = 0.5 * look.params.x;
   s.radius = min(radius * vec2(view.projection[0][0], view.projection[1][1]) * 0.5 * size / s.distance, vec2(kMaxRadius));
-  if (s.pixel.x + s.radius.x < 0.0 || s.pixel.y + s.radius.y < 0.0 || s.pixel.x - s.radius.x > size.x ||
-      s.pixel.y - s.radius.y > size.y)
-    return false;
+  vec2 least = min(s.pixel, s.pixel - motion) - s.radius, greatest = max(s.pixel, s.pixel - motion) + s.radius;
+  if (greatest.x < 0.0 || greatest.y < 0.0 || least.x > size.x || least.y > size.y) return false;
   s.invRadius = 1.0 / s.radius;
-  s.lo = max(ivec2(floor(s.pixel - s.radius)), ivec2(0));
-  s.hi = min(ivec2(ceil(s.pixel + s.radius)), ivec2(size) - 1);
+  s.motion = motion * s.invRadius;
+  s.lo = max(ivec2(floor(least)), ivec2(0));
+  s.hi = min(ivec2(ceil(greatest)), ivec2(size) - 1);
   return s.lo.x <= s.hi.x && s.lo.y <= s.hi.y;
 }
 
@@ -100,6 +122,7 @@ bool makeSplat(vec4 positionLife, vec4 velocityKind, out Splat s) {
 // splat's ellipse: the loops visit only these (splatAt still tests each;
 // a pixel at the very rim, where the puff is transparent, may be skipped).
 ivec2 splatRow(Splat s, int y) {
+  if (s.motion != vec2(0.0)) return ivec2(s.lo.x, s.hi.x);  // a smear: splatAt tests each
   float dy = (float(y) + 0.5 - s.pixel.y) * s.invRadius.y;
   float halfWidth = sqrt(max(1.0 - dy * dy, 0.0)) * s.radius.x;
   return ivec2(max(s.lo.x, int(ceil(s.pixel.x - halfWidth - 0.5))), min(s.hi.x, int(floor(s.pixel.x + halfWidth - 0.5))));
@@ -109,9 +132,15 @@ ivec2 splatRow(Splat s, int y) {
 // (splat_common.glsl); false where it adds nothing.
 bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
   vec2 corner = (vec2(p) + 0.5 - s.pixel) * s.invRadius;
+  float shape;
+  if (s.motion != vec2(0.0)) {  // motion blur, as particle_render.frag's
+    vec2 closest;
+    shape = smearedPuff(corner, s.motion, closest) * puffLumps(closest);
+    corner = closest;
+  }
   float r2 = dot(corner, corner);
   if (r2 > 1.0) return false;
-  float shape = textureLod(uSprite, 0.5 * corner + 0.5, 0.0).r;
+  if (s.motion == vec2(0.0)) shape = textureLod(uSprite, 0.5 * corner + 0.5, 0.0).r;
   float sceneDistance = viewDistance(texelFetch(uSceneDepth, p, 0).r);
   float fade = clamp((sceneDistance - s.distance) / max(look.params.y, 1e-4), 0.0, 1.0);
   float alpha = s.opacity * shape * fade;

@@ -24,7 +24,7 @@ RenderBlock makeRenderBlock(const ParticleState& state, const FieldUpdate* field
   const float len = glm::length(s.lightDirection);
   const glm::vec3 light = len > 0.0f ? s.lightDirection / len : glm::vec3(0, 0, 1);
   b.lightDirection = glm::vec4(light, s.ambient);
-  b.params = glm::vec4(s.size, s.softness, s.mode != RenderMode::Points ? 1.0f : 0.0f, 0.0f);
+  b.params = glm::vec4(s.size, s.softness, s.mode != RenderMode::Points ? 1.0f : 0.0f, s.shutter);
   b.light = glm::vec4(s.lightColor * s.lightStrength, s.shadows ? 1.0f : 0.0f);
   const ColorScale scale = stateColorScale(state, field);
   b.colorScale =

@@ -182,6 +182,10 @@ std::vector<AttributeInfo> makeEntries() {
                     "Shadows: the map's side across the light (cells never smaller than a "
                     "particle)",
                     RENDER(shadowResolution)));
+  v.push_back(entry("render.shutter", T::Float, 0, 1, "s",
+                    "Motion blur: each particle is smeared along the path it travelled during "
+                    "this shutter time (0: off; splats smear at most 48 pixels)",
+                    RENDER(shutter)));
   v.push_back(entry("render.softness", T::Float, 0, 10, "m",
                     "Particles fade out within this distance in front of scene geometry",
                     RENDER(softness)));

@@ -228,7 +228,7 @@ TEST_F(RenderTest, AParticlesSpeedGetsTheColourTheMapGivesItInEveryMode) {
     s.render.colorMax = 4.0f;  // 3 m/s: t = 0.75
     // Points are drawn exactly; billboards and splats blend a few opaque
     // layers of the soft puff (1 - 0.0x of the background stays), and splats
-    // carry t in 16 bits.
+    // carry t in 12 bits.
     const float tolerance = mode == RenderMode::Points ? 1.0f : 6.0f;
     expectNear(centre(render(s, 6, field)), expected(ColorMapName::Viridis, 0.75f), tolerance,
                "mode " + std::to_string(int(mode)));
@@ -419,6 +419,53 @@ TEST_F(RenderTest, TrailsShowWhereTheParticleWasWithLinesAndWithSplats) {
     // Ahead of the particle nothing changed.
     const glm::ivec2 ahead = project({1.5f, 0.0f, 2.06f});
     EXPECT_EQ(with.at(ahead.x, ahead.y), without.at(ahead.x, ahead.y)) << "mode " << int(mode);
+  }
+}
+// Motion blur with a box shutter draws a particle convolved with its path
+// over the shutter time: its opacity sums to the same, its centre moves back
+// by half the path, and its spread along the path grows by the path's
+// length squared over 12 (the variance of a uniform distribution).
+TEST_F(RenderTest, MotionBlurSmearsAParticleOverItsPathInTheShutterTime) {
+  const float speed = 4.0f, shutter = 0.25f;  // a 1 m path
+  auto field = std::make_shared<VectorField>(
+      bake(Uniform({speed, 0.0f, 0.0f}), Box{{-5, -5, 0}, {5, 5, 5}}, {2, 2, 2}));
+  const float path = float(project({0.0f, 0.0f, 2.0f}).x - project({-1.0f, 0.0f, 2.0f}).x);
+  for (const RenderMode mode : {RenderMode::Billboards, RenderMode::Splat}) {
+    // Opacity from the green channel: the particle's is 0.1, the sky's near 0.8.
+    const Image empty = render(onePerFrame({}, 0.8f), 1, field);
+    struct Moments {
+      double mass = 0, mean = 0, variance = 0;
+    };
+    auto moments = [&](float shutterTime) {
+      ParticleState s = onePerFrame({{0.0f, 0.0f, 2.0f}}, 0.8f);
+      s.emitters[0].velocity = {speed, 0.0f, 0.0f};  // born moving as the field moves it
+      s.render.mode = mode;
+      s.render.size = 0.6f;
+      s.render.shutter = shutterTime;
+      const Image image = render(s, 1, field);
+      Moments m;
+      double sx = 0, sxx = 0;
+      for (int y = 0; y < kSize.y; ++y)
+        for (int x = 0; x < kSize.x; ++x) {
+          const double bg = empty.at(x, y).y, particle = 0.1 * 255.0;
+          const double alpha = std::max(0.0, (bg - image.at(x, y).y) / (bg - particle));
+          m.mass += alpha;
+          sx += alpha * (x + 0.5);
+          sxx += alpha * (x + 0.5) * (x + 0.5);
+        }
+      m.mean = sx / m.mass;
+      m.variance = sxx / m.mass - m.mean * m.mean;
+      return m;
+    };
+    const Moments still = moments(0.0f), blurred = moments(shutter);
+    std::printf(
+        "mode %d: path %.1f px; opacity %.2f -> %.2f, centre %.2f -> %.2f px, "
+        "variance %.2f -> %.2f px^2 (expected +%.2f)\n",
+        int(mode), path, still.mass, blurred.mass, still.mean, blurred.mean, still.variance,
+        blurred.variance, path * path / 12.0);
+    EXPECT_NEAR(blurred.mass, still.mass, 0.05 * still.mass);
+    EXPECT_NEAR(blurred.mean - still.mean, -0.5 * path, 0.4);
+    EXPECT_NEAR(blurred.variance - still.variance, path * path / 12.0, 0.1 * path * path / 12.0);
   }
 }
 
