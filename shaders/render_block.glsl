@@ -15,6 +15,7 @@ layout(std140, binding = 2) uniform RenderBlock {
   vec4 placementRotation[3];
   vec4 colorGrid;  // x: blend, y: 1 with a next frame, z: factor, w: 1 with a grid
   vec4 light;      // rgb: the direct light's colour times its strength, w: 1 with shadows
+  vec4 haze;       // x: render.scattering (1/m)
 } look;
 
 layout(binding = 5) uniform sampler3D uColorGrid;      // R: |curl| (VectorField x)

@@ -21,6 +21,7 @@ void ParticlePost::draw(const ViewTargets& targets, std::uint32_t destination,
   glBindTextureUnit(1, targets.particleColor());
   glBindTextureUnit(2, targets.particleNormal());
   glBindTextureUnit(3, targets.particleLight());
+  glBindTextureUnit(4, targets.sceneDepth());
   composite_.use();
   glProgramUniform2i(composite_.id(), 0, origin.x, origin.y);
   glBindVertexArray(emptyVao_.id());

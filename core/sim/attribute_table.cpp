@@ -182,6 +182,10 @@ std::vector<AttributeInfo> makeEntries() {
                     "Shadows: the map's side across the light (cells never smaller than a "
                     "particle)",
                     RENDER(shadowResolution)));
+  v.push_back(entry("render.scattering", T::Float, 0, 1, "1/m",
+                    "Light scattering: a haze of this density lit by the light, darker where "
+                    "the dust shadows it (shafts of light with render.shadows); 0: none",
+                    RENDER(scattering)));
   v.push_back(entry("render.shutter", T::Float, 0, 1, "s",
                     "Motion blur: each particle is smeared along the path it travelled during "
                     "this shutter time (0: off; splats smear at most 48 pixels)",

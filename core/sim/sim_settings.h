@@ -86,6 +86,7 @@ struct RenderSettings {
   float shadowDensity = 1.0f;  // scales how much light each particle blocks
   int shadowLayers = 16;       // opacity layers along the light
   int shadowResolution = 256;  // the map's largest side, texels
+  float scattering = 0.0f;     // 1/m: the air's haze, lit through the dust's shadow (0: none)
   float shutter = 0.0f;        // s: motion blur over this much of the particles' path (0: off)
   float softness = 0.3f;       // m: particles fade out this close to scene geometry
   float splatPixels = 4.0f;    // Auto mode: splat particles up to this projected diameter

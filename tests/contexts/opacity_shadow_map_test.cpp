@@ -1,7 +1,8 @@
 // OpacityShadowMap against the Beer-Lambert law (core/light/light_model.h):
 // a uniform slab of particles lit from above lets exp(-n sigma d) of the
-// light through at depth d; and the ground darkens under a cloud and
-// nowhere else.
+// light through at depth d; the ground darkens under a cloud and nowhere
+// else; the lit haze (render.scattering) follows exp(-beta d) and is dimmer
+// where the cloud shades it.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -100,17 +101,18 @@ TEST_F(OpacityShadowMapTest, WithShadowsOffAllTheLightArrives) {
 // Looking down on the ground from above; the light comes from +x at 45
 // degrees, so a cloud 2 m up casts its shadow 2 m towards -x, away from
 // where the cloud itself shows.
-TEST_F(OpacityShadowMapTest, ACloudDarkensTheGroundUnderItAndNowhereElse) {
+TEST_F(OpacityShadowMapTest, ACloudDarkensTheGroundAndTheHazeUnderItAndNowhereElse) {
   constexpr glm::ivec2 kSize{96, 64};
   const glm::vec3 eye(0.0f, -3.0f, 10.0f), target(0.0f), box(1.0f, 1.0f, 0.5f), center(0, 0, 2);
   WallSpec wall;
   wall.name = "above";
   wall.camera = CameraSpec{eye, target, 60.0f};
   wall.offscreenSize = kSize;
-  auto image = [&](bool shadows) {
+  auto image = [&](bool shadows, float scattering = 0.0f) {
     ParticleState s = cloud(center, box, 3000, 0.8f, 0.1f);
     s.render.lightDirection = {1.0f, 0.0f, 1.0f};
     s.render.shadows = shadows;
+    s.render.scattering = scattering;
     MainContext::Options options;
     options.fixedDt = 1.0f;
     MainContext main(s, FieldUpdate{}, options);
@@ -169,6 +171,47 @@ TEST_F(OpacityShadowMapTest, ACloudDarkensTheGroundUnderItAndNowhereElse) {
   std::printf("%d of %d ground pixels well inside the shadow are darker\n", darkened, inShadow);
   EXPECT_GT(inShadow, 10);
   EXPECT_EQ(darkened, inShadow);
+
+  // Light scattering: through d metres of haze of density beta the ground
+  // keeps exp(-beta d) of its colour and the haze adds 0.85 (its albedo) of
+  // the white light times 1 - exp(-beta d); less where the ray crosses the
+  // dust's shadow, under the cloud.
+  const float beta = 0.05f;
+  const Image hazy = image(true, beta);
+  // Whether the ray from the eye to g passes through air the cloud shades
+  // (below its top, within a margin of its box seen along the light).
+  auto crossesShadow = [&](glm::vec3 g) {
+    for (int i = 0; i <= 200; ++i) {
+      const glm::vec3 p = eye + (g - eye) * (float(i) / 200.0f);
+      if (p.z > center.z + 0.5f * box.z + 0.3f) continue;
+      const glm::vec3 q = p + glm::vec3(1.0f, 0.0f, 1.0f) * (center.z - p.z);
+      if (std::abs(q.x) < 0.5f * box.x + 0.6f && std::abs(q.y) < 0.5f * box.y + 0.3f) return true;
+    }
+    return false;
+  };
+  int clear = 0, dimmed = 0;
+  for (int y = 0; y < kSize.y; ++y)
+    for (int x = 0; x < kSize.x; ++x) {
+      const bool cloudPixel = x >= lo.x - 1 && x <= hi.x + 1 && y >= lo.y - 1 && y <= hi.y + 1;
+      if (cloudPixel) continue;
+      const glm::vec3 g = ground(x, y);
+      const float seen = std::exp(-beta * glm::length(g - eye));
+      const glm::vec3 expected =
+          glm::vec3(shaded.at(x, y)) * seen + glm::vec3(0.85f * 255.0f * (1.0f - seen));
+      const glm::vec3 got(hazy.at(x, y));
+      const bool nearShadow = std::abs(g.x + 2.0f) < 0.75f + 0.3f && std::abs(g.y) < 0.5f + 0.3f;
+      if (!nearShadow && !crossesShadow(g)) {
+        for (int c = 0; c < 3; ++c)
+          EXPECT_NEAR(got[c], expected[c], 1.5f) << x << ", " << y;
+        ++clear;
+      } else if (std::abs(g.x + 2.0f) < 0.5f && std::abs(g.y) < 0.35f) {
+        // The ray to this point crosses the shadow below the cloud (2 m of air).
+        EXPECT_LT(got.y, expected.y - 2.0f) << x << ", " << y;
+        ++dimmed;
+      }
+    }
+  EXPECT_GT(clear, 1000);
+  EXPECT_GT(dimmed, 10);
 }
 
 }  // namespace
