@@ -17,7 +17,7 @@ const char* kUsage = R"(sandstorm-bench: GPU particle benchmark (headless EGL)
                   [--fields texture,equation] [--renderers billboards,points,splat,splat-atomic]
                   [--billboard-limit N] [--walls 1,2,4,8] [--wall-particles N]
                   [--wall-sims per-wall,shared] [--wall-renderers billboards,splat]
-                  [--wall-trails 0,16] [--sort-keys 1e6,1e7]
+                  [--wall-trails 0,16] [--wall-shadows 0,1] [--sort-keys 1e6,1e7]
                   [--wall-backend compute] [--particle-size M] [--memory-gib G]
                   [--integrator euler|rk2|rk4] [--update-items 1|2|4|8] [--gpu-warmup S]
 
@@ -29,7 +29,9 @@ fixed frames. Sections:
   update    the particle update per backend and field type
   render    scene, particles and composite of one view per renderer
   walls     whole frames of 1..8 views, each wall simulating or one shared simulation,
-            with trails of each --wall-trails length (render.trail_length; 0 none)
+            with trails of each --wall-trails length (render.trail_length; 0 none),
+            without and with shadows (--wall-shadows: render.shadows; the update
+            stage then includes the shadow map's pass)
   sort      GpuRadixSort (render.order = sorted) of --sort-keys random keys:
             ms, and its memory traffic against the copy ceiling
 Prints a table (each stage as a ratio to its ceiling) and writes JSON.
@@ -158,6 +160,13 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
         o.wallTrails.push_back(int(k));
       }
       if (o.wallTrails.empty()) throw Error(concat(a, ": expected lengths, e.g. 0,16"));
+    } else if (a == "--wall-shadows") {
+      o.wallShadows.clear();
+      for (const std::string& t : split(v)) {
+        if (t != "0" && t != "1") throw Error(concat(a, ": ", t, ": expected 0 (off) or 1 (on)"));
+        o.wallShadows.push_back(t == "1");
+      }
+      if (o.wallShadows.empty()) throw Error(concat(a, ": expected 0,1, 0 or 1"));
     } else if (a == "--wall-backend") {
       o.wallBackend = v;
       checkChoices({v}, {"tf-gs", "compute"}, a);

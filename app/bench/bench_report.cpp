@@ -69,12 +69,12 @@ void writeJson(const Report& r, const std::filesystem::path& path) {
         << ", \"backend\": " << quoted(row.backend) << ", \"field\": " << quoted(row.field)
         << ", \"renderer\": " << quoted(row.renderer) << ", \"sim\": " << quoted(row.sim)
         << ", \"particles\": " << row.particles << ", \"walls\": " << row.walls
-        << ", \"trails\": " << row.trails << ", \"width\": " << row.width
-        << ", \"height\": " << row.height << ", \"gpu_ms\": " << row.ms
-        << ", \"particles_per_s\": " << row.particlesPerS << ", \"bytes_per_s\": " << row.bytesPerS
-        << ", \"ceiling\": " << quoted(row.ceiling) << ", \"ratio\": " << row.ratio
-        << ", \"wall_clock_ms\": " << row.wallMs << ", \"note\": " << quoted(row.note) << "}"
-        << (i + 1 < r.rows.size() ? "," : "") << "\n";
+        << ", \"trails\": " << row.trails << ", \"shadows\": " << (row.shadows ? "true" : "false")
+        << ", \"width\": " << row.width << ", \"height\": " << row.height
+        << ", \"gpu_ms\": " << row.ms << ", \"particles_per_s\": " << row.particlesPerS
+        << ", \"bytes_per_s\": " << row.bytesPerS << ", \"ceiling\": " << quoted(row.ceiling)
+        << ", \"ratio\": " << row.ratio << ", \"wall_clock_ms\": " << row.wallMs
+        << ", \"note\": " << quoted(row.note) << "}" << (i + 1 < r.rows.size() ? "," : "") << "\n";
   }
   out << "  ]\n}\n";
   if (!out) throw Error(concat("sandstorm-bench: writing ", path.string(), " failed"));

@@ -35,6 +35,7 @@ ParticleState benchState(const SceneChoice& c) {
     throw Error(concat("sandstorm-bench: unknown renderer '", c.renderer, "'"));
   s.render.size = c.particleSize;
   s.render.trailLength = c.trailLength;
+  s.render.shadows = c.shadows;
   s.field.mode = c.field == "equation" ? FieldMode::Equation : FieldMode::Texture;
   if (c.turnover) {
     s.sim.boundary = BoundaryMode::Kill;

@@ -21,7 +21,8 @@ struct SceneChoice {
   std::string renderer = "billboards";  // billboards | points | splat (tiled) | splat-atomic
   float particleSize = 0.045f;
   std::string integrator = "rk2";
-  int trailLength = 0;  // render.trail_length
+  int trailLength = 0;   // render.trail_length
+  bool shadows = false;  // render.shadows
   bool turnover =
       false;  // short lives, deaths at the box: every frame births, deaths and compaction
 };

@@ -71,7 +71,8 @@ class Bench {
         for (const std::string& sim : o_.wallSims)
           for (const std::string& renderer : o_.wallRenderers)
             for (int trails : o_.wallTrails)
-              walls(w, sim, renderer, trails);
+              for (int shadows : o_.wallShadows)
+                walls(w, sim, renderer, trails, shadows != 0);
   }
 
  private:
@@ -90,7 +91,7 @@ class Bench {
           total_ += (r != "billboards" || n <= o_.billboardLimit) ? 1 : 0;
     if (walls)
       total_ += int(o_.walls.size() * o_.wallSims.size() * o_.wallRenderers.size() *
-                    o_.wallTrails.size());
+                    o_.wallTrails.size() * o_.wallShadows.size());
   }
 
   // A GPU just started (or idle) runs its first seconds slow: on a fresh H100
@@ -377,11 +378,13 @@ class Bench {
     });
   }
 
-  void walls(int count, const std::string& sim, const std::string& renderer, int trails) {
+  void walls(int count, const std::string& sim, const std::string& renderer, int trails,
+             bool shadows) {
     const std::size_t n = o_.wallParticles;
     progress(concat("walls: ", count, " views of ", o_.size.x, "x", o_.size.y, ", ", sim,
                     " simulation, ", renderer, ", ", n, " particles",
-                    trails > 0 ? concat(", trails of ", trails) : std::string()));
+                    trails > 0 ? concat(", trails of ", trails) : std::string(),
+                    shadows ? ", shadows" : ""));
     const int systems = sim == "shared" ? 1 : count;
     if (!fits(4 * n * 16.0 * systems, "walls")) return;
     guarded("walls", [&] {
@@ -389,7 +392,8 @@ class Bench {
                           .renderer = renderer,
                           .particleSize = o_.particleSize,
                           .integrator = o_.integrator,
-                          .trailLength = trails};
+                          .trailLength = trails,
+                          .shadows = shadows};
       const auto fieldUpdate = benchField("texture");
       std::vector<std::unique_ptr<ParticleSystem>> sims;
       for (int s = 0; s < systems; ++s)
@@ -461,6 +465,7 @@ class Bench {
               .particles = live,
               .walls = count,
               .trails = trails,
+              .shadows = shadows,
               .width = o_.size.x,
               .height = o_.size.y};
         r.ms = median(ms);
@@ -534,10 +539,10 @@ void printTargets(const Report& r) {
   for (const Row& row : r.rows)
     if (row.section == "walls" && row.stage == "frame")
       std::printf(
-          "  %d views, %s simulation, %s, %zu particles, trails %d: %.2f ms GPU (%.1f fps), %.2f "
-          "ms wall clock\n",
-          row.walls, row.sim.c_str(), row.renderer.c_str(), row.particles, row.trails, row.ms,
-          1000.0 / row.ms, row.wallMs);
+          "  %d views, %s simulation, %s, %zu particles, trails %d, shadows %s: %.2f ms GPU (%.1f "
+          "fps), %.2f ms wall clock\n",
+          row.walls, row.sim.c_str(), row.renderer.c_str(), row.particles, row.trails,
+          row.shadows ? "on" : "off", row.ms, 1000.0 / row.ms, row.wallMs);
 }
 
 }  // namespace
