@@ -28,7 +28,11 @@ void main() {
   }
   accum[base] = uvec4(0u);
   accum[base + 1u] = uvec4(0u);
+#ifdef SHADOWS
   uint sums[kSplatChannels] = uint[](first.x, first.y, first.z, first.w, second.x, second.y, second.z);
+#else
+  uint sums[kSplatChannels] = uint[](first.x, first.y, first.z, first.w, second.x, second.y);
+#endif
   vec4 color, normal;
   float light;
   resolveSplat(sums, color, normal, light);

@@ -57,7 +57,11 @@ void main() {
     vec4 pl = positionLife[i];
     uvec3 where;
     Splat s;
-    vec3 velocity = look.params.w > 0.0 ? velocityKind[i].xyz : vec3(0.0);  // motion blur
+#ifdef MOTION_BLUR
+    vec3 velocity = velocityKind[i].xyz;
+#else
+    const vec3 velocity = vec3(0.0);
+#endif
     if (!splatCentre(pl.xyz, velocity, where) || !splatBounds(where, s)) continue;
     uvec4 record = uvec4(where, uScatter ? splatLook(pl, velocityKind[i]) : 0u);
     ivec2 t0 = s.lo / kSplatTile, t1 = s.hi / kSplatTile;

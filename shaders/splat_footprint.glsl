@@ -50,12 +50,14 @@ bool splatCentre(vec3 center, vec3 velocity, out uvec3 where) {
   if (any(lessThan(fixedPixel, vec2(0.0))) || any(greaterThan(fixedPixel, vec2(65535.0)))) return false;
   // Motion blur: the centre's pixel when the shutter opened, on the same side of the eye.
   vec2 motion = vec2(0.0);
+#ifdef MOTION_BLUR
   if (look.params.w > 0.0) {
     vec4 before = view.viewProjection * vec4(center - velocity * look.params.w, 1.0);
     if (before.w > 1e-4) motion = pixel - (before.xy / before.w * 0.5 + 0.5) * view.viewport.zw;
     float smear = length(motion);
     if (smear > kMaxSmear) motion *= kMaxSmear / smear;
   }
+#endif
   uvec2 fixedBits = uvec2(fixedPixel);
   where = uvec3(fixedBits.x | fixedBits.y << 16, floatBitsToUint(clip.w), packHalf2x16(motion));
   return true;
@@ -65,7 +67,11 @@ bool splatCentre(vec3 center, vec3 velocity, out uvec3 where) {
 uint splatLook(vec4 positionLife, vec4 velocityKind) {
   float age = clamp(1.0 - positionLife.w / max(velocityKind.w, 1e-6), 0.0, 1.0);
   float color = colorCoordinate(age, velocityKind.xyz, positionLife.xyz);
+#ifdef SHADOWS
   float light = clamp(lightTransmittance(positionLife.xyz), 0.0, 1.0);
+#else
+  float light = 1.0;
+#endif
   return uint(round(age * 1023.0)) | uint(round(color * 4095.0)) << 10 | uint(round(light * 1023.0)) << 22;
 }
 
@@ -82,7 +88,11 @@ bool makeSplatRecord(vec4 positionLife, vec4 velocityKind, out uvec4 record) {
 bool splatBounds(uvec3 where, out Splat s) {
   s.pixel = vec2(float(where.x & 65535u), float(where.x >> 16)) / kPixelSteps - kPixelOrigin;
   s.distance = uintBitsToFloat(where.y);
+#ifdef MOTION_BLUR
   vec2 motion = unpackHalf2x16(where.z);
+#else
+  const vec2 motion = vec2(0.0);
+#endif
   vec2 size = view.viewport.zw;
   float radius = 0.5 * look.params.x;
   s.radius = min(radius * vec2(view.projection[0][0], view.projection[1][1]) * 0.5 * size / s.distance, vec2(kMaxRadius));
@@ -122,7 +132,9 @@ bool makeSplat(vec4 positionLife, vec4 velocityKind, out Splat s) {
 // splat's ellipse: the loops visit only these (splatAt still tests each;
 // a pixel at the very rim, where the puff is transparent, may be skipped).
 ivec2 splatRow(Splat s, int y) {
+#ifdef MOTION_BLUR
   if (s.motion != vec2(0.0)) return ivec2(s.lo.x, s.hi.x);  // a smear: splatAt tests each
+#endif
   float dy = (float(y) + 0.5 - s.pixel.y) * s.invRadius.y;
   float halfWidth = sqrt(max(1.0 - dy * dy, 0.0)) * s.radius.x;
   return ivec2(max(s.lo.x, int(ceil(s.pixel.x - halfWidth - 0.5))), min(s.hi.x, int(floor(s.pixel.x + halfWidth - 0.5))));
@@ -132,8 +144,9 @@ ivec2 splatRow(Splat s, int y) {
 // (splat_common.glsl); false where it adds nothing.
 bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
   vec2 corner = (vec2(p) + 0.5 - s.pixel) * s.invRadius;
+#ifdef MOTION_BLUR
   float shape;
-  if (s.motion != vec2(0.0)) {  // motion blur, as particle_render.frag's
+  if (s.motion != vec2(0.0)) {  // as particle_render.frag's
     vec2 closest;
     shape = smearedPuff(corner, s.motion, closest) * puffLumps(closest);
     corner = closest;
@@ -141,6 +154,11 @@ bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
   float r2 = dot(corner, corner);
   if (r2 > 1.0) return false;
   if (s.motion == vec2(0.0)) shape = textureLod(uSprite, 0.5 * corner + 0.5, 0.0).r;
+#else
+  float r2 = dot(corner, corner);
+  if (r2 > 1.0) return false;
+  float shape = textureLod(uSprite, 0.5 * corner + 0.5, 0.0).r;
+#endif
   float sceneDistance = viewDistance(texelFetch(uSceneDepth, p, 0).r);
   float fade = clamp((sceneDistance - s.distance) / max(look.params.y, 1e-4), 0.0, 1.0);
   float alpha = s.opacity * shape * fade;
@@ -154,7 +172,9 @@ bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
   v[3] = uint(nn.x);
   v[4] = uint(nn.y);
   v[5] = uint(nn.z);
+#ifdef SHADOWS
   v[6] = uint(alpha * s.light * kSplatScale + 0.5);
+#endif
   return true;
 }
 
@@ -173,5 +193,9 @@ void resolveSplat(uint sums[kSplatChannels], out vec4 color, out vec4 normal, ou
   float t = float(sums[1]) / weight;
   color = vec4(colorAt(t) * alpha, alpha);
   normal = vec4(vec3(int(sums[3]), int(sums[4]), int(sums[5])) / weight * alpha, alpha);
+#ifdef SHADOWS
   light = float(sums[6]) / weight * alpha;
+#else
+  light = alpha;
+#endif
 }

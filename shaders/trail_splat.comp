@@ -59,6 +59,8 @@ void main() {
     atomicAdd(accum[base + 3u], uint(int(round(alpha * float(nn0.x)))));
     atomicAdd(accum[base + 4u], uint(int(round(alpha * float(nn0.y)))));
     atomicAdd(accum[base + 5u], uint(int(round(alpha * float(nn0.z)))));
+#ifdef SHADOWS
     atomicAdd(accum[base + 6u], uint(alpha * kSplatScale + 0.5));  // trails are not shadowed
+#endif
   }
 }

@@ -59,21 +59,43 @@ ParticleSplat::ParticleSplat(const GpuTuning& tuning)
       // Records the lists hold (0: two a particle of capacity); tests make it small.
       listRecords_(tuning.splatList),
       prepare_(std::vector<std::string>{"splat_prepare.comp"}),
-      splat_(std::vector<std::string>{"particle_splat.comp"}),
-      resolve_(std::vector<std::string>{"particle_splat_resolve.comp"}),
       dispatch_(gl::createBuffer()),
       chunkDispatch_(gl::createBuffer()) {
   glNamedBufferStorage(dispatch_.id(), 64, nullptr, 0);
   glNamedBufferStorage(chunkDispatch_.id(), 32, nullptr, 0);
-  if (tiled_) {
-    bin_.emplace(std::vector<std::string>{"splat_bin.comp"});
-    scan_.emplace(std::vector<std::string>{"splat_scan.comp"});
-    tile_.emplace(std::vector<std::string>{"splat_tile.comp"});
+  if (tiled_) scan_.emplace(std::vector<std::string>{"splat_scan.comp"});
+  programs({});  // the plain look's, up front (compile errors show at once)
+}
+
+namespace {
+
+std::vector<std::string> lookDefines(SplatLook look) {
+  std::vector<std::string> defines;
+  if (look.shadows) defines.push_back("SHADOWS");
+  if (look.motionBlur) defines.push_back("MOTION_BLUR");
+  return defines;
+}
+
+}  // namespace
+
+const ParticleSplat::Programs& ParticleSplat::programs(SplatLook look) const {
+  std::unique_ptr<Programs>& p = variants_[look.shadows][look.motionBlur];
+  if (!p) {
+    const std::vector<std::string> d = lookDefines(look);
+    p = std::make_unique<Programs>(Programs{gl::Program({"particle_splat.comp"}, d),
+                                            gl::Program({"particle_splat_resolve.comp"}, d),
+                                            std::nullopt, std::nullopt});
+    if (tiled_) {
+      p->bin.emplace(std::vector<std::string>{"splat_bin.comp"}, d);
+      p->tile.emplace(std::vector<std::string>{"splat_tile.comp"}, d);
+    }
   }
+  return *p;
 }
 
 void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& targets,
-                         std::uint32_t sprite) const {
+                         std::uint32_t sprite, SplatLook look) const {
+  const Programs& p = programs(look);
   const ParticleBackend::Records records = particles.records();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPositionLife, records.positionLife);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVelocityKind, records.velocityKind);
@@ -103,16 +125,17 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   const glm::ivec2 tiles((size.x + kTile - 1) / kTile, (size.y + kTile - 1) / kTile);
   // Views too large for the tiles' histogram (beyond 4K) take the atomic path.
   if (tiled_ && std::size_t(tiles.x) * std::size_t(tiles.y) <= kMaxTiles) {
-    addTiled(tiles, particles.capacity());
+    addTiled(p, tiles, particles.capacity());
   } else {
-    addAtomic();
+    addAtomic(p);
   }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  if (records.trails != 0 && records.trailLength >= 2) addTrails(records, particles.capacity());
+  if (records.trails != 0 && records.trailLength >= 2)
+    addTrails(p, records, particles.capacity(), look);
   // Both variants leave the sums in the buffer; the resolve turns them into
   // the particle images and zeroes them for the next view.
-  resolve_.use();
-  glProgramUniform2i(resolve_.id(), 0, size.x, size.y);
+  p.resolve.use();
+  glProgramUniform2i(p.resolve.id(), 0, size.x, size.y);
   glDispatchCompute(GLuint((size.x + 15) / 16), GLuint((size.y + 15) / 16), 1);
   // ParticlePost reads the images as textures.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
@@ -122,14 +145,18 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
 // Trails (render.trail_length) join the splats in the same sums: drawn by
 // compute, like the particles, where GL lines were 17 times slower on an
 // H100 (docs/PERFORMANCE.md).
-void ParticleSplat::addTrails(const ParticleBackend::Records& r, std::size_t capacity) const {
-  if (!trails_) {
+void ParticleSplat::addTrails(const Programs& p, const ParticleBackend::Records& r,
+                              std::size_t capacity, SplatLook look) const {
+  if (!trailPrepare_) {
     trailPrepare_ =
         std::make_unique<gl::Program>(std::vector<std::string>{"trail_splat_prepare.comp"});
-    trails_ = std::make_unique<gl::Program>(std::vector<std::string>{"trail_splat.comp"});
     trailDispatch_ = gl::createBuffer();
     glNamedBufferStorage(trailDispatch_.id(), 16, nullptr, 0);
   }
+  if (!p.trails)
+    p.trails = std::make_unique<gl::Program>(std::vector<std::string>{"trail_splat.comp"},
+                                             lookDefines(look));
+  const gl::Program& trails = *p.trails;
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTrailDispatch, trailDispatch_.id());
   trailPrepare_->use();
   glProgramUniform1ui(trailPrepare_->id(), 0, r.countOffset / 4);
@@ -139,23 +166,23 @@ void ParticleSplat::addTrails(const ParticleBackend::Records& r, std::size_t cap
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, r.trails);
-  trails_->use();
-  glProgramUniform1i(trails_->id(), 0, r.trailLength);
-  glProgramUniform1i(trails_->id(), 1, r.trailHead);
+  trails.use();
+  glProgramUniform1i(trails.id(), 0, r.trailLength);
+  glProgramUniform1i(trails.id(), 1, r.trailHead);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, trailDispatch_.id());
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-void ParticleSplat::addAtomic() const {
-  splat_.use();
+void ParticleSplat::addAtomic(const Programs& p) const {
+  p.splat.use();
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_.id());
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
-void ParticleSplat::addTiled(glm::ivec2 tiles, std::size_t capacity) const {
+void ParticleSplat::addTiled(const Programs& p, glm::ivec2 tiles, std::size_t capacity) const {
   const std::size_t tileCount = std::size_t(tiles.x) * std::size_t(tiles.y);
   // Records in the lists: a particle of a few pixels covers one 32-pixel tile,
   // sometimes two or four; the scatter pass adds those past the end itself.
@@ -183,10 +210,10 @@ void ParticleSplat::addTiled(glm::ivec2 tiles, std::size_t capacity) const {
   // The binning dispatch size is the second uvec4 of the prepare pass's output.
   constexpr GLintptr kBinDispatch = 32;
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_.id());
-  bin_->use();
-  glProgramUniform2i(bin_->id(), 0, tiles.x, tiles.y);
-  glProgramUniform1i(bin_->id(), 1, GL_FALSE);
-  glProgramUniform1ui(bin_->id(), 2, GLuint(listCapacity));
+  p.bin->use();
+  glProgramUniform2i(p.bin->id(), 0, tiles.x, tiles.y);
+  glProgramUniform1i(p.bin->id(), 1, GL_FALSE);
+  glProgramUniform1ui(p.bin->id(), 2, GLuint(listCapacity));
   glDispatchComputeIndirect(kBinDispatch);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
@@ -196,15 +223,15 @@ void ParticleSplat::addTiled(glm::ivec2 tiles, std::size_t capacity) const {
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
-  glProgramUniform1i(bin_->id(), 1, GL_TRUE);
-  bin_->use();
+  glProgramUniform1i(p.bin->id(), 1, GL_TRUE);
+  p.bin->use();
   glDispatchComputeIndirect(kBinDispatch);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
-  tile_->use();
-  glProgramUniform2i(tile_->id(), 0, tiles.x, tiles.y);
-  glProgramUniform1ui(tile_->id(), 1, chunk_);
-  glProgramUniform1ui(tile_->id(), 2, GLuint(listCapacity));
+  p.tile->use();
+  glProgramUniform2i(p.tile->id(), 0, tiles.x, tiles.y);
+  glProgramUniform1ui(p.tile->id(), 1, chunk_);
+  glProgramUniform1ui(p.tile->id(), 2, GLuint(listCapacity));
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, chunkDispatch_.id());
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);

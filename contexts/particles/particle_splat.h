@@ -25,8 +25,13 @@
 // image tolerance). Particles wider than 31 pixels are drawn 31 pixels wide:
 // render.mode = auto leaves large particles to billboards.
 //
-// Expects the view and render blocks bound (bindings 1 and 2); needs the GL
-// context current.
+// Shadows (a seventh sum) and motion blur (smeared footprints) cost the
+// splat passes registers and work even when unused, so each is compiled in
+// only where asked for: one set of programs per combination, made when
+// first needed.
+//
+// Expects the view and render blocks bound (bindings 1 and 2), and with
+// shadows the shadow map (ShadowHandles); needs the GL context current.
 #pragma once
 
 #include <memory>
@@ -44,33 +49,47 @@ namespace sandstorm {
 
 class ViewTargets;
 
+// What splats show beyond the particles' colour (render.shadows,
+// render.shutter > 0).
+struct SplatLook {
+  bool shadows = false, motionBlur = false;
+};
+
 class ParticleSplat {
  public:
   // `tuning`: tiled or atomic, the chunk and list sizes (GpuTuning).
   explicit ParticleSplat(const GpuTuning& tuning = {});
   // Replaces the view's particle buffers with the splatted particles. `sprite`:
   // ParticleRender's puff texture.
-  void draw(const ParticleBackend& particles, const ViewTargets& targets,
-            std::uint32_t sprite) const;
+  void draw(const ParticleBackend& particles, const ViewTargets& targets, std::uint32_t sprite,
+            SplatLook look = {}) const;
 
  private:
+  struct Programs {
+    gl::Program splat, resolve;
+    std::optional<gl::Program> bin, tile;         // tiled
+    mutable std::unique_ptr<gl::Program> trails;  // made on first use
+  };
+  const Programs& programs(SplatLook look) const;
   // Add every particle's footprint to the sums.
-  void addAtomic() const;
-  void addTrails(const ParticleBackend::Records& records, std::size_t capacity) const;
-  void addTiled(glm::ivec2 tiles, std::size_t capacity) const;
+  void addAtomic(const Programs& p) const;
+  void addTrails(const Programs& p, const ParticleBackend::Records& records, std::size_t capacity,
+                 SplatLook look) const;
+  void addTiled(const Programs& p, glm::ivec2 tiles, std::size_t capacity) const;
 
   bool tiled_;
   std::uint32_t chunk_;      // tiled: list entries a workgroup
   std::size_t listRecords_;  // tiled: records the lists hold, 0: two a particle
-  gl::Program prepare_, splat_, resolve_;
-  std::optional<gl::Program> bin_, scan_, tile_;  // tiled
+  gl::Program prepare_;
+  std::optional<gl::Program> scan_;                   // tiled
+  mutable std::unique_ptr<Programs> variants_[2][2];  // [shadows][motion blur]
   gl::Buffer dispatch_, chunkDispatch_;
   mutable gl::Buffer accumulation_;  // the sums
   mutable std::size_t pixels_ = 0;
   mutable gl::Buffer tileCounts_, tileStarts_, chunkStarts_, groupBase_,
       tileLists_;  // tiled: the bins
   mutable std::size_t tiles_ = 0, listCapacity_ = 0;
-  mutable std::unique_ptr<gl::Program> trailPrepare_, trails_;  // made on first use
+  mutable std::unique_ptr<gl::Program> trailPrepare_;  // made on first use
   mutable gl::Buffer trailDispatch_;
 };
 
