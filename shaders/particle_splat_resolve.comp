@@ -20,7 +20,7 @@ void main() {
   if (p.x >= uSize.x || p.y >= uSize.y) return;
   uint base = (uint(p.y) * uint(uSize.x) + uint(p.x)) * 2u;
   uvec4 first = accum[base], second = accum[base + 1u];
-  if (first.x == 0u) {  // nothing splatted here (each contribution adds at least 8 to the alpha sum)
+  if (first.z == 0u) {  // nothing splatted here (each contribution adds at least 8 to channel 2)
     imageStore(uColor, p, vec4(0.0));
     imageStore(uNormal, p, vec4(0.0));
     imageStore(uLight, p, vec4(0.0));
@@ -28,11 +28,7 @@ void main() {
   }
   accum[base] = uvec4(0u);
   accum[base + 1u] = uvec4(0u);
-#ifdef SHADOWS
-  uint sums[kSplatChannels] = uint[](first.x, first.y, first.z, first.w, second.x, second.y, second.z);
-#else
   uint sums[kSplatChannels] = uint[](first.x, first.y, first.z, first.w, second.x, second.y);
-#endif
   vec4 color, normal;
   float light;
   resolveSplat(sums, color, normal, light);

@@ -165,27 +165,36 @@ bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
   if (alpha < 1.0 / 512.0) return false;
   // A unit vector: right, up and toEye are orthonormal.
   vec3 normal = corner.x * s.right + corner.y * s.up + sqrt(1.0 - r2) * s.toEye;
+  float opticalDepth = -log(1.0 - min(alpha, 0.999));
+#ifdef SHADOWS
+  float weight = opticalDepth;  // splat_common.glsl
+  v[0] = uint(weight * s.light * kSplatScale + 0.5);
+#else
+  float weight = alpha;
   v[0] = uint(alpha * kSplatScale + 0.5);
-  v[1] = uint(alpha * s.color * kSplatScale + 0.5);
-  v[2] = uint(-log(1.0 - min(alpha, 0.999)) * kSplatScale + 0.5);
-  ivec3 nn = ivec3(round(alpha * normal * kSplatScale));
+#endif
+  v[1] = uint(weight * s.color * kSplatScale + 0.5);
+  v[2] = uint(opticalDepth * kSplatScale + 0.5);
+  ivec3 nn = ivec3(round(weight * normal * kSplatScale));
   v[3] = uint(nn.x);
   v[4] = uint(nn.y);
   v[5] = uint(nn.z);
-#ifdef SHADOWS
-  v[6] = uint(alpha * s.light * kSplatScale + 0.5);
-#endif
   return true;
 }
 
 // The particle buffers' values from a pixel's sums: alpha is "over"'s,
-// 1 - prod(1 - alpha_i); colour, normal and light are alpha-weighted means
+// 1 - prod(1 - alpha_i); colour, normal and light are weighted means (by
+// alpha, or with SHADOWS by -ln(1 - alpha): splat_common.glsl)
 // times it.
 void resolveSplat(uint sums[kSplatChannels], out vec4 color, out vec4 normal, out float light) {
   color = vec4(0.0);
   normal = vec4(0.0);
   light = 0.0;
+#ifdef SHADOWS
+  float weight = float(sums[2]);
+#else
   float weight = float(sums[0]);
+#endif
   if (weight <= 0.0) return;
   float alpha = 1.0 - exp(-float(sums[2]) / kSplatScale);
   // The alpha-weighted mean coordinate: the mean colour where the map is linear
@@ -194,7 +203,7 @@ void resolveSplat(uint sums[kSplatChannels], out vec4 color, out vec4 normal, ou
   color = vec4(colorAt(t) * alpha, alpha);
   normal = vec4(vec3(int(sums[3]), int(sums[4]), int(sums[5])) / weight * alpha, alpha);
 #ifdef SHADOWS
-  light = float(sums[6]) / weight * alpha;
+  light = float(sums[0]) / weight * alpha;
 #else
   light = alpha;
 #endif

@@ -53,14 +53,17 @@ void main() {
     float alpha = opacity * (1.0 - along) * fade;
     if (alpha < 1.0 / 512.0) continue;
     uint base = (uint(p.y) * width + uint(p.x)) * kSplatStride;
-    atomicAdd(accum[base + 0u], uint(alpha * kSplatScale + 0.5));
-    atomicAdd(accum[base + 1u], uint(alpha * t * kSplatScale + 0.5));
-    atomicAdd(accum[base + 2u], uint(-log(1.0 - min(alpha, 0.999)) * kSplatScale + 0.5));
-    atomicAdd(accum[base + 3u], uint(int(round(alpha * float(nn0.x)))));
-    atomicAdd(accum[base + 4u], uint(int(round(alpha * float(nn0.y)))));
-    atomicAdd(accum[base + 5u], uint(int(round(alpha * float(nn0.z)))));
+    float opticalDepth = -log(1.0 - min(alpha, 0.999));
 #ifdef SHADOWS
-    atomicAdd(accum[base + 6u], uint(alpha * kSplatScale + 0.5));  // trails are not shadowed
+    float weight = opticalDepth;  // splat_common.glsl; trails are not shadowed (light 1)
+#else
+    float weight = alpha;
 #endif
+    atomicAdd(accum[base + 0u], uint(weight * kSplatScale + 0.5));
+    atomicAdd(accum[base + 1u], uint(weight * t * kSplatScale + 0.5));
+    atomicAdd(accum[base + 2u], uint(opticalDepth * kSplatScale + 0.5));
+    atomicAdd(accum[base + 3u], uint(int(round(weight * float(nn0.x)))));
+    atomicAdd(accum[base + 4u], uint(int(round(weight * float(nn0.y)))));
+    atomicAdd(accum[base + 5u], uint(int(round(weight * float(nn0.z)))));
   }
 }

@@ -96,18 +96,42 @@ Difference compare(const Image& a, const Image& b, const Image& empty) {
   return d;
 }
 
+// render.shadows on, dense enough that the cloud shades itself deeply.
+ParticleState shaded(ParticleState s) {
+  s.render.shadows = true;
+  s.render.shadowDensity = 20.0f;
+  s.render.ambient = 0.2f;
+  return s;
+}
+
 TEST_P(ParticleSplatTest, SplatsLookLikeBillboardsForSmallParticles) {
-  for (bool twoColours : {false, true}) {
-    SCOPED_TRACE(twoColours ? "colour varies with age" : "one colour");
+  for (int variant : {0, 1, 2}) {
+    const bool twoColours = variant != 0, shadows = variant == 2;
+    SCOPED_TRACE(shadows ? "shadows" : twoColours ? "colour varies with age" : "one colour");
     const float size = 0.18f;  // about 3 pixels across
-    const Image billboards = render(cloud(RenderMode::Billboards, size, twoColours), GetParam());
-    const Image splats = render(cloud(RenderMode::Splat, size, twoColours), GetParam());
+    auto look = [&](RenderMode mode) {
+      const ParticleState s = cloud(mode, size, twoColours);
+      return shadows ? shaded(s) : s;
+    };
+    const Image billboards = render(look(RenderMode::Billboards), GetParam());
+    const Image splats = render(look(RenderMode::Splat), GetParam());
+    if (shadows) {  // the shadows show in both renderers
+      ParticleState lit = look(RenderMode::Splat);
+      lit.render.shadows = false;
+      const Image litSplats = render(lit, GetParam());
+      EXPECT_GT(compare(splats, litSplats, litSplats).changed, 0.05);
+      lit.render.mode = RenderMode::Billboards;
+      const Image litBillboards = render(lit, GetParam());
+      EXPECT_GT(compare(billboards, litBillboards, litBillboards).changed, 0.05);
+    }
     ParticleState none = cloud(RenderMode::Billboards, size, twoColours);
     none.emitters[0].rate = 0.0f;
     const Image empty = render(none, GetParam());
     const Difference d = compare(billboards, splats, empty);
     if (const char* dir = std::getenv("SANDSTORM_TEST_IMAGES")) {  // to look at them
-      const std::string tag = std::string(GetParam()) + (twoColours ? "-two" : "-one");
+      const std::string tag = std::string(GetParam()) + (shadows      ? "-shadows"
+                                                         : twoColours ? "-two"
+                                                                      : "-one");
       writePng(billboards, std::string(dir) + "/billboards-" + tag + ".png");
       writePng(splats, std::string(dir) + "/splats-" + tag + ".png");
     }
@@ -115,8 +139,11 @@ TEST_P(ParticleSplatTest, SplatsLookLikeBillboardsForSmallParticles) {
         "%s, %s: mean |billboards - splats| %.2f/255, %.2f%% of pixels off by > 16, largest %d; "
         "particles "
         "cover %.1f%% of the image\n",
-        GetParam(), twoColours ? "two colours" : "one colour", d.mean, 100 * d.over16, d.largest,
-        100 * d.changed);
+        GetParam(),
+        shadows      ? "shadows"
+        : twoColours ? "two colours"
+                     : "one colour",
+        d.mean, 100 * d.over16, d.largest, 100 * d.changed);
     // The stated tolerance: mean difference under 2/255 and under 2% of pixels
     // off by more than 16/255, where particles cover a good part of the image.
     EXPECT_GT(d.changed, 0.05);
@@ -126,20 +153,28 @@ TEST_P(ParticleSplatTest, SplatsLookLikeBillboardsForSmallParticles) {
 }
 
 TEST_P(ParticleSplatTest, TiledAndAtomicSplatsAddTheSameSumsSoDrawTheSameImage) {
-  const ParticleState state = cloud(RenderMode::Splat, 0.25f, true);
-  const Image atomic = render(state, GetParam(), 2, GpuTuning{.splat = GpuTuning::Splat::Atomic});
-  ParticleState none = state;
-  none.emitters[0].rate = 0.0f;
-  EXPECT_FALSE(atomic.rgba == render(none, GetParam()).rgba);
-  // The tiled variant, as it runs; with chunks of 37 records (dense tiles
-  // split over several workgroups, which add their sums with atomics); with
-  // lists that hold 500 records (the scatter pass adds the rest); and both.
-  const std::vector<std::pair<std::size_t, std::size_t>> variants{
-      {8192, 0}, {37, 0}, {8192, 500}, {37, 500}};
-  for (const auto& [chunk, list] : variants) {
-    const Image tiled =
-        render(state, GetParam(), 2, GpuTuning{.splatChunk = chunk, .splatList = list});
-    EXPECT_TRUE(tiled.rgba == atomic.rgba) << "chunk " << chunk << ", list " << list;
+  // Plain, and with shadows and motion blur (their own programs).
+  for (bool extras : {false, true}) {
+    ParticleState state = cloud(RenderMode::Splat, 0.25f, true);
+    if (extras) {
+      state = shaded(state);
+      state.render.shutter = 0.2f;
+    }
+    SCOPED_TRACE(extras ? "shadows and motion blur" : "plain");
+    const Image atomic = render(state, GetParam(), 2, GpuTuning{.splat = GpuTuning::Splat::Atomic});
+    ParticleState none = state;
+    none.emitters[0].rate = 0.0f;
+    EXPECT_FALSE(atomic.rgba == render(none, GetParam()).rgba);
+    // The tiled variant, as it runs; with chunks of 37 records (dense tiles
+    // split over several workgroups, which add their sums with atomics); with
+    // lists that hold 500 records (the scatter pass adds the rest); and both.
+    const std::vector<std::pair<std::size_t, std::size_t>> variants{
+        {8192, 0}, {37, 0}, {8192, 500}, {37, 500}};
+    for (const auto& [chunk, list] : variants) {
+      const Image tiled =
+          render(state, GetParam(), 2, GpuTuning{.splatChunk = chunk, .splatList = list});
+      EXPECT_TRUE(tiled.rgba == atomic.rgba) << "chunk " << chunk << ", list " << list;
+    }
   }
 }
 
