@@ -2,8 +2,9 @@
 // OpacityShadowMap, step 2: one invocation turns the particles' extent in the
 // light's frame into the shadow block (shadow_block.glsl): square cells no
 // smaller than a particle (so a particle's light-blocking lands in a cell or
-// two, not scattered dots), a cell of margin on each side for the bilinear
-// deposits, the layers spanning the extent plus a particle's radius. Resets
+// two, not scattered dots), a cell of margin on each side (the receivers'
+// bilinear filter reaches half a cell beyond the particles), the layers
+// spanning the extent plus a particle's radius. Resets
 // the extent for the next frame.
 #include "ordered_bits.glsl"
 
