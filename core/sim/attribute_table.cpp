@@ -66,11 +66,30 @@ std::string nameProblem(std::string_view name) {
   if (name.size() > kMaxNameLength)
     return concat("a name of ", name.size(), " characters; at most ", kMaxNameLength);
   for (const char c : name)
-    if (c <= ' ' || c > '~' || c == '=' || c == '#' || c == '"' || c == '\'')
+    if (c < ' ' || c > '~' || c == '=' || c == '#' || c == '%' || c == '"' || c == '\'')
       return concat("a name with the character '", (c > ' ' && c <= '~') ? std::string(1, c) : "?",
                     "' (code ", int(static_cast<unsigned char>(c)),
-                    "); expected printable characters without spaces, '=', '#' or quotes");
+                    "); expected printable characters without '=', '#', '%' or quotes");
+  if (!name.empty() && (name.front() == ' ' || name.back() == ' '))
+    return "a name starting or ending with a space; expected spaces only between words";
   return {};
+}
+
+// The name a one-word form (encodeName) stands for; a name as it is otherwise.
+std::optional<std::string> decodeName(std::string_view word) {
+  if (word == "%") return std::string();
+  std::string out;
+  for (std::size_t i = 0; i < word.size(); ++i) {
+    if (word[i] != '%') {
+      out += word[i];
+    } else if (word.substr(i, 3) == "%20") {
+      out += ' ';
+      i += 2;
+    } else {
+      return std::nullopt;
+    }
+  }
+  return out;
 }
 
 #define SIM(member) \
@@ -481,10 +500,15 @@ AttributeValue AttributeTable::parse(std::string_view key, std::string_view text
       if (std::find(info.choices.begin(), info.choices.end(), text) == info.choices.end())
         throw fail();
       return std::string(text);
-    case AttributeType::Name:
-      if (!nameProblem(text).empty())
-        throw Error(concat("attribute '", key, "': ", nameProblem(text)));
-      return std::string(text);
+    case AttributeType::Name: {
+      const std::optional<std::string> name = decodeName(text);
+      if (!name)
+        throw Error(concat("attribute '", key, "': '", text,
+                           "': a '%' other than %20 (a space) or a lone % (no name)"));
+      if (!nameProblem(*name).empty())
+        throw Error(concat("attribute '", key, "': ", nameProblem(*name)));
+      return *name;
+    }
   }
   throw fail();
 }
@@ -592,6 +616,17 @@ std::string AttributeTable::describe(const ParticleState& state) const {
       out += "emitter." + std::to_string(e) + "." + info.key.substr(10) + "=" +
              toString(info.get(state, int(e))) + "\n";
   }
+  return out;
+}
+
+std::string encodeName(std::string_view name) {
+  if (name.empty()) return "%";
+  std::string out;
+  for (const char c : name)
+    if (c == ' ')
+      out += "%20";
+    else
+      out += c;
   return out;
 }
 

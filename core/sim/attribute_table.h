@@ -30,9 +30,11 @@
 
 namespace sandstorm {
 
-// Name: a name chosen at run time (a field array's), 0 to kMaxNameLength
-// printable ASCII characters without spaces, '=', '#' or quotes, so it prints
-// and parses as one word; empty means "the default".
+// Name: a name chosen at run time (a field array's, "Temperature (K)"), 0 to
+// kMaxNameLength printable ASCII characters without '=', '#', '%' or quotes,
+// spaces only between words; empty means "the default". Where a name must be
+// one word (session logs, --set) a space is written %20 and the empty name a
+// lone %: encodeName and AttributeTable::parse.
 enum class AttributeType { Bool, Int, Float, Vec3, Enum, Name };
 inline constexpr std::size_t kMaxNameLength = 64;
 
@@ -96,5 +98,7 @@ class AttributeTable {
 };
 
 std::string toString(const AttributeValue& value);
+// A Name (or any string value) as one word: spaces as %20, empty as %.
+std::string encodeName(std::string_view name);
 
 }  // namespace sandstorm

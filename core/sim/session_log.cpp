@@ -11,8 +11,10 @@
 namespace sandstorm {
 namespace {
 
-// Values print without spaces ("1,2,3") so a line splits on whitespace.
+// Values print without spaces ("1,2,3", names as encodeName writes them) so
+// a line splits on whitespace.
 std::string compact(const AttributeValue& value) {
+  if (const auto* name = std::get_if<std::string>(&value)) return encodeName(*name);
   std::string s = toString(value);
   if (std::holds_alternative<glm::vec3>(value)) std::replace(s.begin(), s.end(), ' ', ',');
   return s;

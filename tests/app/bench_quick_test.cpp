@@ -84,21 +84,22 @@ TEST(BenchQuick, RefusesUnknownOptions) {
       << t.output;
 }
 
-// The walls section with and without trails: a row of each, the trail length in it.
-TEST(BenchQuick, TheWallsSectionMeasuresFramesWithTrails) {
+// The walls section with and without trails and shadows: a row of each, the
+// trail length and the shadows in it.
+TEST(BenchQuick, TheWallsSectionMeasuresFramesWithTrailsAndShadows) {
   const auto dir = test::scratchDir("bench-trails");
   const auto json = dir / "bench.json";
   const test::ProcessResult r = runBench(
       "--quick --sections walls --walls 1 --wall-sims shared --wall-renderers splat "
-      "--wall-trails 0,8 --json '" +
+      "--wall-trails 0,8 --wall-shadows 0,1 --json '" +
       json.string() + "'");
   ASSERT_EQ(r.exitCode, 0) << r.output;
-  std::set<std::string> trails;
+  std::set<std::string> rows;
   for (const std::string& line : test::readLines(json))
     if (line.find("\"stage\": \"frame\"") != std::string::npos)
-      trails.insert(field(line, "trails"));
-  EXPECT_EQ(trails, (std::set<std::string>{"0", "8"}));
-  EXPECT_NE(r.output.find("trails 8:"), std::string::npos) << r.output;
+      rows.insert(field(line, "trails") + "/" + field(line, "shadows"));
+  EXPECT_EQ(rows, (std::set<std::string>{"0/false", "0/true", "8/false", "8/true"}));
+  EXPECT_NE(r.output.find("trails 8, shadows on:"), std::string::npos) << r.output;
 }
 
 }  // namespace

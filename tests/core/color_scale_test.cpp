@@ -131,6 +131,7 @@ TEST(ColorLegend, AFlatRangeHasOneTickInTheMiddle) {
 #include "core/field/vorticity.h"
 #include "core/sim/attribute_table.h"
 #include "core/sim/main_context.h"
+#include "core/sim/session_log.h"
 #include "core/sim/state_color_scale.h"
 #include "core/sim/state_mirror.h"
 #include "core/util/error.h"
@@ -293,17 +294,43 @@ TEST(MainContextArrays, AnArrayTheFieldLacksIsRefusedNamingThoseItHas) {
   EXPECT_THROW(bare.set("render.color_by", std::string("array")), Error);
 }
 
-TEST(AttributeTableNames, ANameIsOneWordOfPrintableCharacters) {
+TEST(AttributeTableNames, ANameIsPrintableWordsAndTravelsAsOneWord) {
   const AttributeTable& table = AttributeTable::instance();
   ParticleState s;
   table.set(s, "render.color_array", table.parse("render.color_array", "Temperature_K"));
   EXPECT_EQ(s.render.colorArray, "Temperature_K");
   EXPECT_EQ(toString(table.get(s, "render.color_array")), "Temperature_K");
-  for (const std::string& bad :
-       std::vector<std::string>{"two words", "a=b", "x\ny", "\"q\"", std::string(65, 'a')})
+  // ParaView users' arrays have spaces: as typed, and as one word (%20).
+  for (const std::string& typed : {"Pressure (Pa)", "Pressure%20(Pa)"}) {
+    table.set(s, "render.color_array", table.parse("render.color_array", typed));
+    EXPECT_EQ(s.render.colorArray, "Pressure (Pa)") << typed;
+  }
+  EXPECT_EQ(encodeName("Pressure (Pa)"), "Pressure%20(Pa)");
+  EXPECT_EQ(encodeName(""), "%");
+  table.set(s, "render.color_array", table.parse("render.color_array", "%"));
+  EXPECT_EQ(s.render.colorArray, "");
+  for (const std::string& bad : std::vector<std::string>{" lead", "trail ", "a=b", "x\ny", "\"q\"",
+                                                         "50%", std::string(65, 'a')})
     EXPECT_THROW(table.set(s, "render.color_array", AttributeValue(bad)), Error) << bad;
+  for (const std::string& bad : {"50%", "a%2", "%21", "%%"})
+    EXPECT_THROW(table.parse("render.color_array", bad), Error) << bad;
   EXPECT_THROW(table.set(s, "render.color_array", 3), Error);
-  EXPECT_EQ(s.render.colorArray, "Temperature_K");
+  EXPECT_EQ(s.render.colorArray, "");
+}
+
+// A session log keeps a name with spaces, and the empty name, as one word.
+TEST(AttributeTableNames, ASessionLogReplaysNamesWithSpaces) {
+  const std::vector<ScheduledChange> changes = {
+      {3, StateChange::set("render.color_array", std::string("Pressure (Pa)"))},
+      {5, StateChange::set("render.color_array", std::string())}};
+  std::string text;
+  for (const ScheduledChange& c : changes)
+    text += concat(c.frame, " ", formatChange(c.change), "\n");
+  EXPECT_NE(text.find("3 set render.color_array Pressure%20(Pa)"), std::string::npos) << text;
+  const std::vector<ScheduledChange> back = parseSessionLog(text, "test.session");
+  ASSERT_EQ(back.size(), 2u);
+  EXPECT_EQ(std::get<std::string>(back[0].change.value), "Pressure (Pa)");
+  EXPECT_EQ(std::get<std::string>(back[1].change.value), "");
 }
 
 }  // namespace
