@@ -8,6 +8,7 @@
 #include "core/light/light_model.h"
 #include "core/light/puff_sprite.h"
 #include "core/util/error.h"
+#include "core/util/log.h"
 
 namespace sandstorm {
 namespace {
@@ -50,19 +51,28 @@ OpacityShadowMap::OpacityShadowMap()
   allocate(16, 8);
 }
 
-void OpacityShadowMap::allocate(int side, int layers) {
-  if (side == side_ && layers == layers_) return;
+bool OpacityShadowMap::allocate(int side, int layers) {
+  if (side == side_ && layers == layers_) return true;
+  if (side == failedSide_ && layers == failedLayers_) return false;  // said once
   const std::size_t sums = std::size_t(side) * std::size_t(side) * std::size_t(layers);
-  layerSums_ = gl::createBuffer();
+  gl::Buffer buffer = gl::createBuffer();
+  gl::Texture texture = gl::createTexture(GL_TEXTURE_3D);
   glGetError();
-  glNamedBufferStorage(layerSums_.id(), GLsizeiptr(sums * 4), nullptr, 0);
-  if (glGetError() == GL_OUT_OF_MEMORY)
-    throw Error(concat("render.shadow_resolution ", side, ", render.shadow_layers ", layers,
-                       ": no GPU memory for the shadow layers (", sums * 4, " bytes)"));
+  glNamedBufferStorage(buffer.id(), GLsizeiptr(sums * 4), nullptr, 0);
+  glTextureStorage3D(texture.id(), 1, GL_R32F, side, side, layers + 1);
+  if (glGetError() != GL_NO_ERROR) {
+    // A menu or config value the GPU cannot hold: keep the map it has.
+    log::error("render.shadow_resolution ", side, ", render.shadow_layers ", layers,
+               ": no GPU memory for the shadow map (", sums * 8, " bytes); keeping ", side_, " x ",
+               layers_);
+    failedSide_ = side;
+    failedLayers_ = layers;
+    return false;
+  }
+  layerSums_ = std::move(buffer);
+  texture_ = std::move(texture);
   const GLuint zero = 0;
   glClearNamedBufferData(layerSums_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
-  texture_ = gl::createTexture(GL_TEXTURE_3D);
-  glTextureStorage3D(texture_.id(), 1, GL_R32F, side, side, layers + 1);
   glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_LINEAR);
   glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_LINEAR);
   for (GLenum wrap : {GL_TEXTURE_WRAP_S, GL_TEXTURE_WRAP_T, GL_TEXTURE_WRAP_R})
@@ -71,6 +81,7 @@ void OpacityShadowMap::allocate(int side, int layers) {
   glClearTexImage(texture_.id(), 0, GL_RED, GL_FLOAT, &none);
   side_ = side;
   layers_ = layers;
+  return true;
 }
 
 void OpacityShadowMap::build(const ParticleBackend::Records& records, std::size_t capacity,

@@ -45,7 +45,9 @@ class OpacityShadowMap {
   std::vector<float> transmittance(const std::vector<glm::vec3>& points) const;
 
  private:
-  void allocate(int side, int layers);
+  // False (said once in the log) when the GPU cannot hold that map; the
+  // old one stays.
+  bool allocate(int side, int layers);
 
   gl::Program bounds_, frame_, splat_, accumulate_;
   mutable std::unique_ptr<gl::Program> probe_;
@@ -53,6 +55,7 @@ class OpacityShadowMap {
   gl::Buffer layerSums_;
   gl::Texture texture_;
   int side_ = 0, layers_ = 0;
+  int failedSide_ = 0, failedLayers_ = 0;
 };
 
 }  // namespace sandstorm

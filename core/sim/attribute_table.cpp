@@ -197,7 +197,7 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("render.shadow_layers", T::Int, 8, 64, "",
                     "Shadows: opacity layers along the light (more: finer in depth)",
                     RENDER(shadowLayers)));
-  v.push_back(entry("render.shadow_resolution", T::Int, 16, 2048, "texels",
+  v.push_back(entry("render.shadow_resolution", T::Int, 16, 1024, "texels",
                     "Shadows: the map's side across the light (cells never smaller than a "
                     "particle)",
                     RENDER(shadowResolution)));

@@ -45,13 +45,16 @@ TEST_F(OpacityShadowMapTest, ASlabOfDustLetsThroughExpOfMinusKTimesDepth) {
   const glm::vec3 center(0.0f, 0.0f, 3.0f), size(4.0f, 4.0f, 2.0f);
   const int count = 100000;
   const float opacity = 0.5f, diameter = 0.1f;
-  for (float density : {1.0f, 2.5f}) {
+  // Both backends (the records and the live count the map reads), two densities.
+  for (const auto& [backend, density] :
+       {std::pair{"compute", 1.0f}, std::pair{"compute", 2.5f}, std::pair{"tf-gs", 1.0f}}) {
+    SCOPED_TRACE(backend);
     ParticleState s = cloud(center, size, count, opacity, diameter);
     s.render.shadowDensity = density;
     MainContext::Options options;
     options.fixedDt = 1.0f;
     MainContext main(s, FieldUpdate{}, options);
-    ParticleSystem system(s, {.capacity = std::size_t(count) + 1024});
+    ParticleSystem system(s, {.capacity = std::size_t(count) + 1024, .backend = backend});
     system.advance(main.next());
     ASSERT_EQ(system.update().liveCount(), std::size_t(count));
 
@@ -72,9 +75,10 @@ TEST_F(OpacityShadowMapTest, ASlabOfDustLetsThroughExpOfMinusKTimesDepth) {
       }
       const double expected = double(k) * std::min(depth, size.z);
       std::printf(
-          "density %.1f, depth %.2f m: optical depth %.4f, expected k d = %.4f (%+.1f%%); "
+          "%s, density %.1f, depth %.2f m: optical depth %.4f, expected k d = %.4f (%+.1f%%); "
           "light %.4f, exp(-k d) %.4f\n",
-          density, depth, tau, expected, 100.0 * (tau / expected - 1.0), mean, std::exp(-expected));
+          backend, density, depth, tau, expected, 100.0 * (tau / expected - 1.0), mean,
+          std::exp(-expected));
       EXPECT_NEAR(tau, expected, 0.05 * expected) << "depth " << depth;
       EXPECT_NEAR(mean, std::exp(-expected), 0.03) << "depth " << depth;
     }
