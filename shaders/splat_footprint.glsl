@@ -128,14 +128,51 @@ bool makeSplat(vec4 positionLife, vec4 velocityKind, out Splat s) {
   return makeSplatRecord(positionLife, velocityKind, record) && unpackSplat(record, s);
 }
 
-// The pixels of row y (between lo.x and hi.x) whose centres may lie inside the
-// splat's ellipse: the loops visit only these (splatAt still tests each;
-// a pixel at the very rim, where the puff is transparent, may be skipped).
-ivec2 splatRow(Splat s, int y) {
 #ifdef MOTION_BLUR
-  if (s.motion != vec2(0.0)) return ivec2(s.lo.x, s.hi.x);  // a smear: splatAt tests each
+// Where x lies when c1 x + c0 is within [low, high]: narrows [from, to].
+void narrow(float c1, float c0, float low, float high, inout float from, inout float to) {
+  if (abs(c1) < 1e-6) {
+    if (c0 < low || c0 > high) to = from - 1.0;
+    return;
+  }
+  float a = (low - c0) / c1, b = (high - c0) / c1;
+  from = max(from, min(a, b));
+  to = min(to, max(a, b));
+}
+
+// A smear's row dy (in radii): the x (in radii) within 1 of its path from -m
+// to 0, the union of the end discs' rows and the strip between them (one
+// interval: the smear is convex). Empty: from > to.
+vec2 smearRow(vec2 m, float dy) {
+  vec2 row = vec2(1e30, -1e30);
+  for (int e = 0; e < 2; ++e) {
+    vec2 c = e == 0 ? vec2(0.0) : -m;
+    float d = dy - c.y;
+    if (abs(d) <= 1.0) row = vec2(min(row.x, c.x - sqrt(1.0 - d * d)), max(row.y, c.x + sqrt(1.0 - d * d)));
+  }
+  float len = length(m);
+  vec2 a = m / len, n = vec2(-a.y, a.x);
+  float from = -1e30, to = 1e30;  // along the path 0..len from its start, within 1 across it
+  narrow(a.x, a.x * m.x + a.y * (dy + m.y), 0.0, len, from, to);
+  narrow(n.x, n.x * m.x + n.y * (dy + m.y), -1.0, 1.0, from, to);
+  if (from <= to) row = vec2(min(row.x, from), max(row.y, to));
+  return row;
+}
 #endif
+
+// The pixels of row y (between lo.x and hi.x) whose centres may lie inside the
+// splat's ellipse (or smear): the loops visit only these (splatAt still tests
+// each; a pixel at the very rim, where the puff is transparent, may be skipped).
+ivec2 splatRow(Splat s, int y) {
   float dy = (float(y) + 0.5 - s.pixel.y) * s.invRadius.y;
+#ifdef MOTION_BLUR
+  if (s.motion != vec2(0.0)) {
+    vec2 row = smearRow(s.motion, dy);
+    if (row.x > row.y) return ivec2(1, 0);
+    return ivec2(max(s.lo.x, int(ceil(s.pixel.x + row.x * s.radius.x - 0.5))),
+                 min(s.hi.x, int(floor(s.pixel.x + row.y * s.radius.x - 0.5))));
+  }
+#endif
   float halfWidth = sqrt(max(1.0 - dy * dy, 0.0)) * s.radius.x;
   return ivec2(max(s.lo.x, int(ceil(s.pixel.x - halfWidth - 0.5))), min(s.hi.x, int(floor(s.pixel.x + halfWidth - 0.5))));
 }
