@@ -87,6 +87,7 @@ bool OpacityShadowMap::allocate(int side, int layers) {
 void OpacityShadowMap::build(const ParticleBackend::Records& records, std::size_t capacity,
                              const RenderSettings& look) {
   const bool on = look.shadows && records.countBuffer != 0;
+  if (!on && !blockOn_) return;  // the block already says "none": nothing to do this frame
   const LightFrame light = lightFrame(look.lightDirection);
   if (on) allocate(look.shadowResolution, look.shadowLayers);
   const GLuint groups = GLuint(std::clamp<std::size_t>((capacity + 255) / 256, 1, kMaxGroups));
@@ -117,6 +118,7 @@ void OpacityShadowMap::build(const ParticleBackend::Records& records, std::size_
   glProgramUniform1i(frame_.id(), 9, on ? 1 : 0);
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_UNIFORM_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  blockOn_ = on;
   if (!on) return;
 
   glBindBufferBase(GL_UNIFORM_BUFFER, kBlockBinding, block_.id());

@@ -56,6 +56,7 @@ class OpacityShadowMap {
   gl::Texture texture_;
   int side_ = 0, layers_ = 0;
   int failedSide_ = 0, failedLayers_ = 0;
+  bool blockOn_ = false;  // the block's last word: shadows (its storage starts as "none")
 };
 
 }  // namespace sandstorm

@@ -154,17 +154,21 @@ TEST_F(OpacityShadowMapTest, ACloudDarkensTheGroundAndTheHazeUnderItAndNowhereEl
     lo = glm::min(lo, project(corner));
     hi = glm::max(hi, project(corner));
   }
+  auto cloudPixel = [&](int x, int y) {
+    return x >= lo.x - 1 && x <= hi.x + 1 && y >= lo.y - 1 && y <= hi.y + 1;
+  };
+  // The shadow's footprint: the box's heights 1.75..2.25 m moved as far
+  // along -x (x from -2.75 to -1.25), grown by two map cells and a radius.
+  auto nearShadow = [](glm::vec3 g) {
+    return std::abs(g.x + 2.0f) < 0.75f + 0.3f && std::abs(g.y) < 0.5f + 0.3f;
+  };
   auto brightness = [](glm::u8vec4 c) { return float(c.x) + float(c.y) + float(c.z); };
   int inShadow = 0, darkened = 0;
   for (int y = 0; y < kSize.y; ++y)
     for (int x = 0; x < kSize.x; ++x) {
-      const bool cloudPixel = x >= lo.x - 1 && x <= hi.x + 1 && y >= lo.y - 1 && y <= hi.y + 1;
-      if (cloudPixel) continue;
-      // The shadow's footprint: the box's heights 1.75..2.25 m moved as far
-      // along -x (x from -2.75 to -1.25), grown by two map cells and a radius.
+      if (cloudPixel(x, y)) continue;
       const glm::vec3 g = ground(x, y);
-      const bool nearShadow = std::abs(g.x + 2.0f) < 0.75f + 0.3f && std::abs(g.y) < 0.5f + 0.3f;
-      if (!nearShadow) {
+      if (!nearShadow(g)) {
         EXPECT_EQ(shaded.at(x, y), lit.at(x, y)) << "pixel " << x << ", " << y << " (ground " << g.x
                                                  << ", " << g.y << ") is not in the shadow";
       } else if (std::abs(g.x + 2.0f) < 0.5f && std::abs(g.y) < 0.35f) {
@@ -196,15 +200,13 @@ TEST_F(OpacityShadowMapTest, ACloudDarkensTheGroundAndTheHazeUnderItAndNowhereEl
   int clear = 0, dimmed = 0;
   for (int y = 0; y < kSize.y; ++y)
     for (int x = 0; x < kSize.x; ++x) {
-      const bool cloudPixel = x >= lo.x - 1 && x <= hi.x + 1 && y >= lo.y - 1 && y <= hi.y + 1;
-      if (cloudPixel) continue;
+      if (cloudPixel(x, y)) continue;
       const glm::vec3 g = ground(x, y);
       const float seen = std::exp(-beta * glm::length(g - eye));
       const glm::vec3 expected =
           glm::vec3(shaded.at(x, y)) * seen + glm::vec3(0.85f * 255.0f * (1.0f - seen));
       const glm::vec3 got(hazy.at(x, y));
-      const bool nearShadow = std::abs(g.x + 2.0f) < 0.75f + 0.3f && std::abs(g.y) < 0.5f + 0.3f;
-      if (!nearShadow && !crossesShadow(g)) {
+      if (!nearShadow(g) && !crossesShadow(g)) {
         for (int c = 0; c < 3; ++c)
           EXPECT_NEAR(got[c], expected[c], 1.5f) << x << ", " << y;
         ++clear;

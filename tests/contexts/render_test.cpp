@@ -83,15 +83,9 @@ glm::vec2 projectExactly(const glm::vec3& p) {
   return {(ndc.x * 0.5f + 0.5f) * kSize.x, (0.5f - ndc.y * 0.5f) * kSize.y};
 }
 
+// The pixel p lands in.
 glm::ivec2 project(const glm::vec3& p) {
-  const WallSpec w = cameraWall();
-  const View v =
-      perspectiveView(w.camera->position, w.camera->target, {0, 0, 1}, glm::radians(40.0f),
-                      float(kSize.x) / float(kSize.y), 0.1f, 100.0f);
-  const glm::vec4 clip = v.projection * v.view * glm::vec4(p, 1.0f);
-  const glm::vec2 ndc = glm::vec2(clip) / clip.w;
-  // Image rows run top to bottom.
-  return {int((ndc.x * 0.5f + 0.5f) * kSize.x), int((0.5f - ndc.y * 0.5f) * kSize.y)};
+  return glm::ivec2(projectExactly(p));
 }
 
 float redness(glm::u8vec4 c) {
