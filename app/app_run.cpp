@@ -1,5 +1,7 @@
 #include "app/app_run.h"
 
+#include "core/obstacles/collision_shapes.h"
+
 #include <algorithm>
 #include <atomic>
 #include <csignal>
@@ -298,6 +300,7 @@ void AppRun::dumpStreamlines(const WallRenderer& wall, const FramePacket& packet
   in.blend = packet.fieldBlend;
   in.placement = field ? field->placement : FieldPlacement{};
   in.settings = state.sim;
+  in.obstacles = collisionShapes(state, terrain_.get());
   StreamlineSettings rake = state.streamlines;
   const std::vector<Streamline> lines = traceStreamlines(rake, in);
   writeStreamlinesVtp(lines, state.render.colorBy, *options_.dumpStreamlines);
@@ -508,6 +511,7 @@ std::vector<std::string> AppRun::probeLines(const ParticleState& state, const Fi
   in.field = field ? field->field.get() : nullptr;
   in.placement = field ? field->placement : FieldPlacement{};
   in.settings = state.sim;
+  in.obstacles = collisionShapes(state, terrain_.get());
   const ProbeReading r = readProbe(*point, in);
   std::vector<std::string> lines;
   char text[160];

@@ -5,6 +5,7 @@
 #include "rng.glsl"
 #include "sim_block.glsl"
 #include "particle_birth.glsl"
+#include "obstacles.glsl"
 
 layout(local_size_x = 256) in;
 layout(std430, binding = 2) writeonly restrict buffer OutPositionLife { vec4 outPositionLife[]; };
@@ -22,6 +23,7 @@ void main() {
     ++e;
   }
   Particle p = birth(e, g - first);
+  settleNewborn(p);
   outPositionLife[g] = p.positionLife;
   outVelocityKind[g] = p.velocityKind;
 }

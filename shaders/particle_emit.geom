@@ -8,6 +8,7 @@
 #include "rng.glsl"
 #include "sim_block.glsl"
 #include "particle_birth.glsl"
+#include "obstacles.glsl"
 
 #ifndef SLOT_SIZE
 #define SLOT_SIZE 64
@@ -29,6 +30,7 @@ void main() {
   int last = min(first + kSlotSize, sim.emitters[e].shapeCount.y);
   for (int k = first; k < last; ++k) {
     Particle p = birth(e, uint(k));
+    settleNewborn(p);
     outPositionLife = p.positionLife;
     outVelocityKind = p.velocityKind;
     EmitVertex();

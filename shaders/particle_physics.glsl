@@ -112,8 +112,13 @@ vec3 toRoom(vec3 local) {
   return room;
 }
 
+#include "obstacles.glsl"
+
 vec3 fieldAt(vec3 x) {
-  if (sim.fieldDims.w == 0) return vec3(0.0);
+  if (sim.fieldDims.w == 0) {
+    if (sim.obstacleCount.x == 0) return vec3(0.0);
+    return flowAroundObstacles(vec3(0.0), x, sim.modes.x != kMotionForce);
+  }
   vec3 local = toLocal(x);
 #ifdef FIELD_EQUATION
   vec3 s = equationAt(local);  // the analytic field itself (field_equation.glsl), not its grid
@@ -125,7 +130,8 @@ vec3 fieldAt(vec3 x) {
   }
 #endif
   precise vec3 f = sim.stepParams.y * ((placementRotation() * s) * sim.placementOffset.w);
-  return f;
+  if (sim.obstacleCount.x == 0) return f;
+  return flowAroundObstacles(f, x, sim.modes.x != kMotionForce);
 }
 
 struct Slope {
@@ -187,21 +193,6 @@ void integrate(inout vec3 x, inout vec3 v) {
   v = vn;
 }
 
-float terrainHeight(vec2 p) {
-  ivec2 dims = sim.terrainDims.xy;
-  precise vec2 u = clamp((p - sim.terrainMinScale.xy) * sim.terrainMinScale.zw, vec2(0.0), vec2(dims - 1));
-  ivec2 i0 = min(ivec2(floor(u)), dims - 2);
-  precise vec2 f = u - vec2(i0);
-  float h00 = texelFetch(uTerrain, i0, 0).x;
-  float h10 = texelFetch(uTerrain, i0 + ivec2(1, 0), 0).x;
-  float h01 = texelFetch(uTerrain, i0 + ivec2(0, 1), 0).x;
-  float h11 = texelFetch(uTerrain, i0 + ivec2(1, 1), 0).x;
-  precise float h0 = h00 + (h10 - h00) * f.x;
-  precise float h1 = h01 + (h11 - h01) * f.x;
-  precise float h = h0 + (h1 - h0) * f.y;
-  return h;
-}
-
 // Ages, moves and bounds a particle; false when it dies.
 bool advance(inout Particle p) {
   precise float life = p.positionLife.w - sim.stepParams.x;
@@ -238,16 +229,19 @@ bool advance(inout Particle p) {
       v = vec3(0.0);
     }
   }
-  if (sim.modes.w != 0 && sim.terrainDims.z != 0) {
-    float ground = terrainHeight(x.xy);
-    if (x.z < ground) {
-      x.z = ground;
+  bool ground = sim.modes.w != 0 && sim.terrainDims.z != 0;
+  if (ground) {
+    float height = terrainHeight(x.xy);
+    if (x.z < height) {
+      x.z = height;
       if (v.z < 0.0) {
         precise float bounced = -v.z * sim.stepParams.z;
         v.z = bounced;
       }
     }
   }
+  // Out of the obstacles, in order (after the ground, which they stand on).
+  if (sim.obstacleCount.x != 0) keepOutOfObstacles(x, v, ground);
   p.positionLife = vec4(x, life);
   p.velocityKind = vec4(v, p.velocityKind.w);
   return true;

@@ -14,6 +14,15 @@ struct EmitterBlock {
   ivec4 shapeCount;  // shape, granted count, first slot
 };
 
+const int kMaxObstacles = 16;
+
+struct ObstacleBlock {
+  vec4 positionRadius;  // centre, w: radius (sphere, cylinder)
+  vec4 halfSize;        // a box's half extent, w: a cylinder's half height
+  vec4 velocity;        // xyz, w: restitution
+  ivec4 shapeFlow;      // shape, flow (1: the flow goes around it)
+};
+
 layout(std140, binding = 0) uniform SimBlock {
   vec4 fieldMin;
   vec4 fieldIndexScale;
@@ -31,6 +40,8 @@ layout(std140, binding = 0) uniform SimBlock {
   vec4 fieldBlend;        // x: weight towards the next frame, y: 1 when there is one,
                           // z: 1 when a frame has a validity mask (in w / alpha)
   EmitterBlock emitters[kMaxEmitters];
+  ivec4 obstacleCount;    // x: obstacles below (collisionShapes)
+  ObstacleBlock obstacles[kMaxObstacles];
 } sim;
 
 // The field's grid (GpuField): FIELD_BUFFER programs (the compute backend)

@@ -33,6 +33,17 @@ int fillSimBlock(const SimBlockInputs& in, SimBlock& b) {
     b.terrainMinScale = glm::vec4(in.terrain->min(), in.terrain->indexScale());
     b.terrainDims = glm::ivec4(in.terrain->dims(), 1, 0);
   }
+  const std::vector<Obstacle> obstacles =
+      collisionShapes(*in.state, in.terrain ? in.terrain : in.obstacleGround);
+  b.obstacleCount = glm::ivec4(int(obstacles.size()), 0, 0, 0);
+  for (std::size_t i = 0; i < obstacles.size(); ++i) {
+    const Obstacle& o = obstacles[i];
+    ObstacleBlock& ob = b.obstacles[i];
+    ob.positionRadius = glm::vec4(o.position, o.radius);
+    ob.halfSize = glm::vec4(0.5f * o.size, 0.5f * o.height);
+    ob.velocity = glm::vec4(o.velocity, o.restitution);
+    ob.shapeFlow = glm::ivec4(int(o.shape), o.flow ? 1 : 0, 0, 0);
+  }
   int slots = 0;
   for (int e = 0; e < emitterCount; ++e) {
     const Emitter& em = in.state->emitters[std::size_t(e)];

@@ -11,6 +11,7 @@
 #include "core/field/field_placement.h"
 #include "core/field/height_map.h"
 #include "core/field/vector_field.h"
+#include "core/obstacles/collision_shapes.h"
 #include "core/sim/particle_state.h"
 #include "core/sim/sim_step.h"
 
@@ -22,6 +23,13 @@ struct alignas(16) EmitterBlock {
   glm::vec4 life;  // lifetime, lifetime variance, spread
   glm::vec4 velocity;
   glm::ivec4 shapeCount;  // shape, granted count, first slot
+};
+
+struct alignas(16) ObstacleBlock {
+  glm::vec4 positionRadius;
+  glm::vec4 halfSize;  // w: a cylinder's half height
+  glm::vec4 velocity;  // w: restitution
+  glm::ivec4 shapeFlow;
 };
 
 struct alignas(16) SimBlock {
@@ -41,10 +49,14 @@ struct alignas(16) SimBlock {
   glm::vec4 fieldBlend;  // x: weight towards the next frame, y: 1 when there is one,
                          // z: 1 when a frame has a validity mask
   EmitterBlock emitters[ParticleState::kMaxEmitters];
+  glm::ivec4 obstacleCount;  // x: how many of obstacles[] are in use
+  ObstacleBlock obstacles[kMaxCollisionShapes];
 };
 
 static_assert(sizeof(EmitterBlock) == 80);
-static_assert(sizeof(SimBlock) == 16 * 16 + 80 * ParticleState::kMaxEmitters);
+static_assert(sizeof(ObstacleBlock) == 64);
+static_assert(sizeof(SimBlock) ==
+              16 * 16 + 80 * ParticleState::kMaxEmitters + 16 + 64 * kMaxCollisionShapes);
 
 // Newborn particles per emission slot (one geometry-shader invocation).
 inline constexpr int kEmissionSlotSize = 64;
@@ -54,6 +66,9 @@ struct SimBlockInputs {
   const VectorField* nextField = nullptr;
   FieldPlacement placement;
   const HeightMap* terrain = nullptr;
+  // The ground the helicopter's height is measured from, when `terrain` (what
+  // particles collide with) is not given: the scene's streaklines fly over it.
+  const HeightMap* obstacleGround = nullptr;
   const ParticleState* state = nullptr;
   SimStep step;
   std::vector<std::uint32_t> granted;  // newborn per emitter, after the budget

@@ -10,13 +10,16 @@ SceneField::SceneField() : block_(gl::createBuffer()) {
   glNamedBufferStorage(block_.id(), sizeof(SimBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
-void SceneField::set(const ParticleState& state, const FieldUpdate& field, float blend, float dt) {
+void SceneField::set(const ParticleState& state, const FieldUpdate& field, float blend, float dt,
+                     const HeightMap* ground) {
   environment_.setField(field.field, field.placement, field.next);
   SimBlockInputs inputs;
   environment_.describe(inputs);
   inputs.state = &state;
   inputs.step.fieldBlend = field.next ? blend : 0.0f;
   inputs.step.dt = dt;
+  inputs.obstacleGround = ground;
+  obstacles_ = collisionShapes(state, inputs.terrain ? inputs.terrain : ground);
   SimBlock block;
   fillSimBlock(inputs, block);
   glNamedBufferSubData(block_.id(), 0, sizeof(block), &block);

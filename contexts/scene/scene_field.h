@@ -7,9 +7,11 @@
 #pragma once
 
 #include <memory>
+#include <vector>
 
 #include "contexts/gl/objects.h"
 #include "contexts/particles/particle_environment.h"
+#include "core/obstacles/obstacle.h"
 #include "core/sim/frame_packet.h"
 
 namespace sandstorm {
@@ -20,7 +22,11 @@ class SceneField {
 
   // Uploads a field it does not hold yet and refills the block (`dt`: the
   // frame's simulated seconds, for passes that move points as particles).
-  void set(const ParticleState& state, const FieldUpdate& field, float blend, float dt = 0.0f);
+  // `ground`: the scene's terrain, which the helicopter's solid parts stand over.
+  void set(const ParticleState& state, const FieldUpdate& field, float blend, float dt = 0.0f,
+           const HeightMap* ground = nullptr);
+  // The solids the last set() placed in the flow (collisionShapes).
+  const std::vector<Obstacle>& obstacles() const { return obstacles_; }
   bool has() const { return has_; }
   // The field's colour grids (FieldUpdate::colorGrid), when it has them, on
   // texture units 5 (current) and 6 (next): shaders/render_block.glsl's colorGridAt().
@@ -41,6 +47,7 @@ class SceneField {
   };
 
  private:
+  std::vector<Obstacle> obstacles_;
   ParticleEnvironment environment_{GpuField::Storage::Texture};
   gl::Buffer block_;
   GpuField colorGrid_{GpuField::Storage::Texture}, nextColorGrid_{GpuField::Storage::Texture};

@@ -96,7 +96,7 @@ void SceneRenderer::updateFlow(const ParticleState& state, std::shared_ptr<const
   if ((state.streamlines.enabled || state.slice.enabled || state.render.streaklines ||
        field && field->colorGrid) &&
       field && field->field)
-    sceneField_.set(state, *field, blend, dt);
+    sceneField_.set(state, *field, blend, dt, ground_.get());
   streamlines_.update(state, field, blend);
   slice_.update(state, field, blend);
   streaklines_.update(state, dt, reset);

@@ -31,7 +31,8 @@ void SliceRenderer::update(const ParticleState& state,
                      state.slice.origin,
                      state.slice.normal,
                      state.slice.arrows,
-                     state.sim.fieldStrength};
+                     state.sim.fieldStrength,
+                     field_.obstacles()};
   if (now == arrowsOf_) return;
   arrowsOf_ = now;
   arrowPoints_ = 0;
@@ -42,6 +43,7 @@ void SliceRenderer::update(const ParticleState& state,
   in.blend = blend;
   in.placement = field->placement;
   in.settings = state.sim;
+  in.obstacles = field_.obstacles();
   const std::vector<glm::vec3> lines = arrowLines(
       sliceArrows(polygon_, state.slice.normal, state.slice.arrows, in), state.slice.normal);
   if (lines.empty()) return;

@@ -41,6 +41,7 @@ class SliceRenderer {
     glm::vec3 origin{0.0f}, normal{0.0f};
     int arrows = 0;
     float strength = 0.0f;
+    std::vector<Obstacle> obstacles;
     bool operator==(const ArrowsOf&) const = default;
   };
   ArrowsOf arrowsOf_;

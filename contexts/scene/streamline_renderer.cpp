@@ -21,7 +21,8 @@ bool StreamlineRenderer::Key::operator==(const Key& o) const {
          placement.offset == o.placement.offset && placement.scale == o.placement.scale &&
          placement.rotation == o.placement.rotation && a.shape == b.shape && a.from == b.from &&
          a.to == b.to && a.across == b.across && a.seeds == b.seeds && a.step == b.step &&
-         a.length == b.length && integrator == o.integrator && strength == o.strength;
+         a.length == b.length && integrator == o.integrator && strength == o.strength &&
+         obstacles == o.obstacles;
 }
 
 StreamlineRenderer::StreamlineRenderer(SceneField& field)
@@ -36,9 +37,9 @@ void StreamlineRenderer::update(const ParticleState& state,
   enabled_ = state.streamlines.enabled && field && field->field;
   width_ = state.streamlines.width;
   if (!enabled_) return;
-  const Key key{field->field.get(),     field->next.get(), field->next ? blend : 0.0f,
-                field->placement,       state.streamlines, state.sim.integrator,
-                state.sim.fieldStrength};
+  const Key key{field->field.get(),      field->next.get(), field->next ? blend : 0.0f,
+                field->placement,        state.streamlines, state.sim.integrator,
+                state.sim.fieldStrength, field_.obstacles()};
   if (traced_ && *traced_ == key) return;
   trace(state);
   traced_ = key;

@@ -40,6 +40,7 @@ class StreamlineRenderer {
     StreamlineSettings rake;
     Integrator integrator = Integrator::RK2;
     float strength = 1.0f;
+    std::vector<Obstacle> obstacles;
     bool operator==(const Key& o) const;
   };
   void trace(const ParticleState& state);

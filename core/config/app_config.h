@@ -17,6 +17,7 @@
 #include "core/config/gpu_tuning.h"
 #include "core/field/box.h"
 #include "core/field/field_placement.h"
+#include "core/obstacles/obstacle_path.h"
 #include "core/sim/particle_state.h"
 
 namespace sandstorm {
@@ -191,6 +192,8 @@ struct AppConfig {
   MenuSpec menu;
   ClusterSpec cluster;
   std::vector<WallSpec> walls;
+  // Each [[obstacle]]'s scripted path (empty: none), by obstacle index.
+  std::vector<ObstaclePath> obstaclePaths;
 
   bool anyWindow() const;
 };

@@ -340,6 +340,46 @@ void readHead(const Reader& r, const toml::value& t, HeadSpec& h) {
     r.fail(t, "head.path", "a scripted head needs at least two keyframes");
 }
 
+// [[obstacle]]: its attributes (obstacle.N.*) and a scripted path, path =
+// [{time, position}, ..] and loop, kept beside the state (AppConfig::obstaclePaths).
+void readObstacles(const Reader& r, const toml::value& list, AppConfig& c) {
+  if (!list.is_array()) r.fail(list, "obstacle", "expected [[obstacle]] tables");
+  if (list.as_array().size() > std::size_t(ParticleState::kMaxObstacles))
+    r.fail(list, "obstacle", concat("at most ", ParticleState::kMaxObstacles, " obstacles"));
+  c.particles.obstacles.clear();
+  c.obstaclePaths.clear();
+  for (const toml::value& o : list.as_array()) {
+    if (!o.is_table()) r.fail(o, "obstacle", "expected a table");
+    const std::string name = concat("obstacle.", c.particles.obstacles.size());
+    toml::table attributes = o.as_table();
+    attributes.erase("path");
+    attributes.erase("loop");
+    c.particles.obstacles.emplace_back();
+    setAttributes(r, toml::value(attributes), name + ".", c.particles);
+    const bool loop = r.boolean(o, "loop", name, true);
+    std::vector<ObstacleKeyframe> keys;
+    if (const toml::value* path = r.find(o, "path")) {
+      if (!path->is_array())
+        r.fail(*path, name + ".path", "expected an array of {time, position} tables");
+      float last = -1e30f;
+      for (const toml::value& k : path->as_array()) {
+        if (!k.is_table()) r.fail(k, name + ".path", "expected {time = .., position = [x, y, z]}");
+        r.checkKeys(k, name + ".path[]", {"time", "position"});
+        const toml::value& time = r.require(k, "time", name + ".path[]");
+        ObstacleKeyframe key{
+            float(r.number(time, name + ".path[].time")),
+            r.vec<3>(r.require(k, "position", name + ".path[]"), name + ".path[].position")};
+        if (!(key.time > last)) r.fail(time, name + ".path[].time", "expected times that increase");
+        if (!(std::abs(key.time) < 1e7f)) r.fail(time, name + ".path[].time", "expected seconds");
+        last = key.time;
+        keys.push_back(key);
+      }
+      if (keys.size() < 2) r.fail(*path, name + ".path", "a path needs at least two keyframes");
+    }
+    c.obstaclePaths.emplace_back(std::move(keys), loop);
+  }
+}
+
 void readNavigation(const Reader& r, const toml::value& t, NavigationSpec& n) {
   r.checkKeys(t, "navigation", {"offset", "yaw_deg", "scale", "fly_speed", "turn_speed_deg"});
   n.offset = r.vec<3>(t, "offset", "navigation", n.offset);
@@ -576,11 +616,11 @@ AppConfig readWithIncludes(const toml::value& root, const std::string& file,
 void read(const toml::value& root, const std::string& file, std::optional<int> monitors,
           AppConfig& c, int depth) {
   const Reader r(file);
-  r.checkKeys(
-      root, "",
-      {"include",    "run",     "field",  "scene",      "sim",         "render", "field_playback",
-       "helicopter", "emitter", "head",   "navigation", "tracking",    "menu",   "cluster",
-       "wall",       "pvx",     "pvx_up", "gpu",        "streamlines", "slice",  "probe"});
+  r.checkKeys(root, "",
+              {"include",        "run",        "field",   "scene",   "sim",        "render",
+               "field_playback", "helicopter", "emitter", "head",    "navigation", "tracking",
+               "menu",           "cluster",    "wall",    "pvx",     "pvx_up",     "gpu",
+               "streamlines",    "slice",      "probe",   "obstacle"});
   // include = "scene.toml": that file's settings first, this file's on top.
   if (const toml::value* include = r.find(root, "include")) {
     if (!include->is_string()) r.fail(*include, "include", "expected a file name");
@@ -643,6 +683,7 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
       setAttributes(r, e, concat("emitter.", c.particles.emitters.size() - 1, "."), c.particles);
     }
   }
+  if (const toml::value* obstacles = r.find(root, "obstacle")) readObstacles(r, *obstacles, c);
   // Walls from a ParaView CAVE file: pvx = "cave.pvx", pvx_up = "y" (ParaView's usual) or "z".
   if (const toml::value* pvx = r.find(root, "pvx")) {
     if (!pvx->is_string()) r.fail(*pvx, "pvx", "expected the name of a .pvx file");

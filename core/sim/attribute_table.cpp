@@ -10,9 +10,19 @@
 namespace sandstorm {
 namespace {
 
-// Accessors that reach one member of the state (or of emitter i).
+// Accessors that reach one member of the state (or of emitter or obstacle i).
 template <class T>
 using Ref = std::function<T&(ParticleState&, int)>;
+
+// The state defaults are read from: one default emitter and one default obstacle.
+const ParticleState& defaults() {
+  static const ParticleState state = [] {
+    ParticleState s;
+    s.obstacles.resize(1);
+    return s;
+  }();
+  return state;
+}
 
 template <class T>
 AttributeInfo entry(std::string key, AttributeType type, float min, float max, std::string unit,
@@ -30,7 +40,7 @@ AttributeInfo entry(std::string key, AttributeType type, float min, float max, s
   info.set = [ref](ParticleState& s, int e, const AttributeValue& v) {
     ref(s, e) = std::get<T>(v);
   };
-  info.defaultValue = info.get(ParticleState{}, 0);
+  info.defaultValue = info.get(defaults(), 0);
   return info;
 }
 
@@ -50,7 +60,7 @@ AttributeInfo enumEntry(std::string key, std::vector<std::string> choices, std::
     const auto it = std::find(choices.begin(), choices.end(), std::get<std::string>(v));
     ref(s, e) = E(it - choices.begin());
   };
-  info.defaultValue = info.get(ParticleState{}, 0);
+  info.defaultValue = info.get(defaults(), 0);
   return info;
 }
 
@@ -115,6 +125,9 @@ std::optional<std::string> decodeName(std::string_view word) {
 #define EMITTER(member)           \
   Ref<decltype(Emitter::member)>( \
       [](ParticleState & s, int e) -> auto& { return s.emitters[std::size_t(e)].member; })
+#define OBSTACLE(member)           \
+  Ref<decltype(Obstacle::member)>( \
+      [](ParticleState & s, int e) -> auto& { return s.obstacles[std::size_t(e)].member; })
 
 constexpr float kBig = 1e6f;
 
@@ -332,6 +345,11 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("helicopter.wand_throttle", T::Bool, 0, 1, "",
                     "A tracked wand tilted towards you raises the throttle, away lowers it",
                     HELICOPTER(wandThrottle)));
+  v.push_back(entry("helicopter.collide", T::Bool, 0, 1, "",
+                    "Dust bounces off the helicopter's body", HELICOPTER(collide)));
+  v.push_back(entry("helicopter.collide_rotor", T::Bool, 0, 1, "",
+                    "Dust also bounces off the rotor disc (the wash carries air through it)",
+                    HELICOPTER(collideRotor)));
   v.push_back(entry("helicopter.altitude", T::Float, 1, 60, "m",
                     "Rotor hub above the ground; high up, less dust", HELICOPTER(altitude)));
   v.push_back(
@@ -365,6 +383,29 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("emitter.*.spread", T::Float, 0, kBig, "m/s",
                     "Radius of the random ball added to the initial velocity", EMITTER(spread)));
   v.push_back(entry("emitter.*.enabled", T::Bool, 0, 1, "", "Emitter on/off", EMITTER(enabled)));
+  // Obstacles (core/obstacles/obstacle.h).
+  v.push_back(enumEntry("obstacle.*.shape", {"sphere", "box", "cylinder"}, "Obstacle shape",
+                        OBSTACLE(shape)));
+  v.push_back(entry("obstacle.*.position", T::Vec3, -kBig, kBig, "m", "Centre of the obstacle",
+                    OBSTACLE(position)));
+  v.push_back(entry("obstacle.*.radius", T::Float, 0.01f, 1000, "m", "Sphere or cylinder radius",
+                    OBSTACLE(radius)));
+  v.push_back(entry("obstacle.*.size", T::Vec3, 0.01f, 1000, "m", "Box extent along x, y and z",
+                    OBSTACLE(size)));
+  v.push_back(entry("obstacle.*.height", T::Float, 0.01f, 1000, "m",
+                    "Cylinder height (its axis is vertical)", OBSTACLE(height)));
+  v.push_back(entry("obstacle.*.velocity", T::Vec3, -1000, 1000, "m/s",
+                    "How fast it moves (its path and a drag set it); flow and bounces feel it",
+                    OBSTACLE(velocity)));
+  v.push_back(entry("obstacle.*.restitution", T::Float, 0, 1, "",
+                    "Fraction of the speed towards its surface a particle keeps on a bounce",
+                    OBSTACLE(restitution)));
+  v.push_back(entry("obstacle.*.flow", T::Bool, 0, 1, "",
+                    "The flow goes around it (off: particles only bounce off it)", OBSTACLE(flow)));
+  v.push_back(entry("obstacle.*.path", T::Bool, 0, 1, "",
+                    "Follows its scripted path ([[obstacle]] path); off: stays where put",
+                    OBSTACLE(path)));
+  v.push_back(entry("obstacle.*.enabled", T::Bool, 0, 1, "", "Obstacle on/off", OBSTACLE(enabled)));
   return v;
 }
 
@@ -373,6 +414,7 @@ std::vector<AttributeInfo> makeEntries() {
 #undef HELICOPTER
 #undef FIELD
 #undef EMITTER
+#undef OBSTACLE
 
 struct Alias {
   std::string_view name, target;
@@ -411,6 +453,17 @@ bool parseFloat(std::string_view s, float& out) {
   return ec == std::errc() && end == s.data() + s.size() && std::isfinite(out);
 }
 
+// Throws unless a per-item key's item exists in the state.
+void checkItem(const AttributeInfo& info, std::string_view key, int index,
+               const ParticleState& state) {
+  if (info.perEmitter() && index >= int(state.emitters.size()))
+    throw Error(concat("attribute '", key, "': there is no emitter ", index, " (there are ",
+                       state.emitters.size(), ")"));
+  if (info.perObstacle() && index >= int(state.obstacles.size()))
+    throw Error(concat("attribute '", key, "': there is no obstacle ", index, " (there are ",
+                       state.obstacles.size(), ": [[obstacle]] in the configuration)"));
+}
+
 std::string joined(const std::vector<std::string>& items) {
   std::string s;
   for (const auto& i : items)
@@ -437,15 +490,21 @@ const AttributeInfo& AttributeTable::lookup(std::string_view rawKey, int* emitte
   const std::string key = canonical(rawKey);
   std::string pattern = key;
   int index = 0;
-  if (key.starts_with("emitter.")) {
-    const std::size_t dot = key.find('.', 8);
-    const std::string_view digits = std::string_view(key).substr(8, dot - 8);
+  struct List {
+    std::string_view prefix;  // "emitter."
+    int count;
+  };
+  for (const List list : {List{"emitter.", ParticleState::kMaxEmitters},
+                          List{"obstacle.", ParticleState::kMaxObstacles}}) {
+    if (!key.starts_with(list.prefix)) continue;
+    const std::size_t from = list.prefix.size(), dot = key.find('.', from);
+    const std::string_view digits = std::string_view(key).substr(from, dot - from);
     const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), index);
     if (dot == std::string::npos || ec != std::errc() || end != digits.data() + digits.size() ||
-        index < 0 || index >= ParticleState::kMaxEmitters)
-      throw Error(concat("attribute '", rawKey, "': expected emitter.N.name with N in 0..",
-                         ParticleState::kMaxEmitters - 1));
-    pattern = "emitter.*." + key.substr(dot + 1);
+        index < 0 || index >= list.count)
+      throw Error(concat("attribute '", rawKey, "': expected ", list.prefix, "N.name with N in 0..",
+                         list.count - 1));
+    pattern = concat(list.prefix, "*.", key.substr(dot + 1));
   }
   for (const AttributeInfo& info : entries_) {
     if (info.key == pattern) {
@@ -589,9 +648,7 @@ AttributeResult AttributeTable::set(ParticleState& state, std::string_view key,
                                     const AttributeValue& value) const {
   int emitter = 0;
   const AttributeInfo& info = lookup(key, &emitter);
-  if (info.perEmitter() && emitter >= int(state.emitters.size()))
-    throw Error(concat("attribute '", key, "': there is no emitter ", emitter, " (there are ",
-                       state.emitters.size(), ")"));
+  checkItem(info, key, emitter, state);
   AttributeResult result = validate(key, value);
   info.set(state, emitter, result.applied);
   return result;
@@ -600,23 +657,28 @@ AttributeResult AttributeTable::set(ParticleState& state, std::string_view key,
 AttributeValue AttributeTable::get(const ParticleState& state, std::string_view key) const {
   int emitter = 0;
   const AttributeInfo& info = lookup(key, &emitter);
-  if (info.perEmitter() && emitter >= int(state.emitters.size()))
-    throw Error(concat("attribute '", key, "': there is no emitter ", emitter));
+  checkItem(info, key, emitter, state);
   return info.get(state, emitter);
 }
 
 std::string AttributeTable::describe(const ParticleState& state) const {
   std::string out;
   for (const AttributeInfo& info : entries_) {
-    if (!info.perEmitter()) {
+    if (!info.perItem()) {
       out += info.key + "=" + toString(info.get(state, 0)) + "\n";
       continue;
     }
-    for (std::size_t e = 0; e < state.emitters.size(); ++e)
-      out += "emitter." + std::to_string(e) + "." + info.key.substr(10) + "=" +
-             toString(info.get(state, int(e))) + "\n";
+    const std::size_t count = info.perEmitter() ? state.emitters.size() : state.obstacles.size();
+    for (std::size_t e = 0; e < count; ++e)
+      out += info.itemKey(int(e)) + "=" + toString(info.get(state, int(e))) + "\n";
   }
   return out;
+}
+
+std::string AttributeInfo::itemKey(int index) const {
+  const std::size_t star = key.find('*');
+  if (star == std::string::npos) return key;
+  return key.substr(0, star) + std::to_string(index) + key.substr(star + 1);
 }
 
 std::string encodeName(std::string_view name) {

@@ -54,6 +54,11 @@ struct AttributeInfo {
   std::function<void(ParticleState&, int emitter, const AttributeValue&)> set;
 
   bool perEmitter() const { return key.starts_with("emitter.*."); }
+  bool perObstacle() const { return key.starts_with("obstacle.*."); }
+  // Whether the key is one of a list's (emitter.N.x, obstacle.N.x).
+  bool perItem() const { return perEmitter() || perObstacle(); }
+  // The key of item `index`: "emitter.*.rate" -> "emitter.2.rate".
+  std::string itemKey(int index) const;
 };
 
 // What set() did: the value it stored and, if it had to clamp, a message saying so.
@@ -69,7 +74,7 @@ class AttributeTable {
   std::span<const AttributeInfo> entries() const { return entries_; }
 
   // The entry for a key ("emitter.2.rate" finds "emitter.*.rate" and sets
-  // *emitter to 2); aliases resolve too. Throws Error for unknown keys, listing
+  // *emitter to 2; obstacle.N.x alike); aliases resolve too. Throws Error for unknown keys, listing
   // close matches.
   const AttributeInfo& lookup(std::string_view key, int* emitter = nullptr) const;
 

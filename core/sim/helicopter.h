@@ -12,10 +12,12 @@ namespace sandstorm {
 
 struct HelicopterSettings {
   bool enabled = false;
-  float x = 0.0f, y = 0.0f;  // m: rotor hub over the ground
-  float altitude = 8.0f;     // m: hub above the ground below it
-  float throttle = 0.8f;     // 0..1; about 0.8 hovers
-  bool wandThrottle = true;  // a tracked wand tilted up/down raises/lowers the throttle
+  float x = 0.0f, y = 0.0f;   // m: rotor hub over the ground
+  float altitude = 8.0f;      // m: hub above the ground below it
+  float throttle = 0.8f;      // 0..1; about 0.8 hovers
+  bool wandThrottle = true;   // a tracked wand tilted up/down raises/lowers the throttle
+  bool collide = true;        // dust bounces off its body (core/obstacles/helicopter_shape.h)
+  bool collideRotor = false;  // ... and off the rotor disc
 };
 
 // The aircraft and how strongly its wash raises dust.

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/obstacles/obstacle_physics.h"
+
 namespace sandstorm {
 namespace {
 
@@ -83,11 +85,15 @@ Box particleDomain(const VectorField& field) {
 }
 
 glm::vec3 fieldAt(const glm::vec3& x, const PhysicsInputs& in) {
-  if (!in.field) return glm::vec3(0.0f);
-  const glm::vec3 local = in.placement.toLocal(x);
-  glm::vec3 f = in.field->sample(local);
-  if (in.nextField) f = f + (in.nextField->sample(local) - f) * in.blend;
-  return in.settings.fieldStrength * in.placement.vectorToRoom(f);
+  glm::vec3 room(0.0f);
+  if (in.field) {
+    const glm::vec3 local = in.placement.toLocal(x);
+    glm::vec3 f = in.field->sample(local);
+    if (in.nextField) f = f + (in.nextField->sample(local) - f) * in.blend;
+    room = in.settings.fieldStrength * in.placement.vectorToRoom(f);
+  }
+  if (in.obstacles.empty()) return room;
+  return flowAroundObstacles(room, x, in.obstacles, in.settings.motion != MotionModel::Force);
 }
 
 Particle birth(const Emitter& e, Seed seed, std::uint32_t frame, std::uint32_t emitterIndex,
@@ -112,6 +118,14 @@ Particle birth(const Emitter& e, Seed seed, std::uint32_t frame, std::uint32_t e
                                                 RngStream::kVelocityBall, false);
   const float life = std::max(e.lifetime + e.lifetimeVariance * (2.0f * u.w - 1.0f), kMinLifetime);
   return Particle{glm::vec4(e.position + offset, life), glm::vec4(velocity, life)};
+}
+
+void settleNewborn(Particle& p, const PhysicsInputs& in) {
+  if (in.obstacles.empty()) return;
+  glm::vec3 x = p.position(), v = p.velocity();
+  keepOutOfObstacles(in.obstacles, x, v, in.settings.groundCollision ? in.terrain : nullptr);
+  p.positionLife = glm::vec4(x, p.positionLife.w);
+  p.velocityKind = glm::vec4(v, p.velocityKind.w);
 }
 
 bool advance(Particle& p, const PhysicsInputs& in) {
@@ -155,13 +169,16 @@ bool advance(Particle& p, const PhysicsInputs& in) {
       v = glm::vec3(0.0f);
     }
   }
-  if (in.settings.groundCollision && in.terrain) {
-    const float ground = in.terrain->heightAt(glm::vec2(x));
-    if (x.z < ground) {
-      x.z = ground;
+  const HeightMap* ground = in.settings.groundCollision ? in.terrain : nullptr;
+  if (ground) {
+    const float height = ground->heightAt(glm::vec2(x));
+    if (x.z < height) {
+      x.z = height;
       if (v.z < 0.0f) v.z = -v.z * in.settings.restitution;
     }
   }
+  // Out of the obstacles, in order (after the ground, which they stand on).
+  keepOutOfObstacles(in.obstacles, x, v, ground);
   p.positionLife = glm::vec4(x, life);
   p.velocityKind = glm::vec4(v, p.velocityKind.w);
   return true;

@@ -6,10 +6,12 @@
 #pragma once
 
 #include <cstdint>
+#include <vector>
 
 #include "core/field/field_placement.h"
 #include "core/field/height_map.h"
 #include "core/field/vector_field.h"
+#include "core/obstacles/obstacle.h"
 #include "core/sim/counter_rng.h"
 #include "core/sim/emitter.h"
 #include "core/sim/particle.h"
@@ -28,11 +30,18 @@ struct PhysicsInputs {
   const HeightMap* terrain = nullptr;
   SimSettings settings;
   float dt = 0.0f;  // simulated seconds this frame
+  // The solids the flow goes around and particles bounce off
+  // (collisionShapes(state, terrain), core/obstacles/collision_shapes.h).
+  std::vector<Obstacle> obstacles;
 };
 
 // Particle number `index` of emitter `emitterIndex` born in frame `frame`.
 Particle birth(const Emitter& emitter, Seed seed, std::uint32_t frame, std::uint32_t emitterIndex,
                std::uint32_t index);
+
+// A newborn particle put out of the obstacles (keepOutOfObstacles), so none
+// is born inside one.
+void settleNewborn(Particle& p, const PhysicsInputs& in);
 
 // Ages, moves and bounds one particle. Returns false when it dies.
 bool advance(Particle& p, const PhysicsInputs& in);
@@ -45,7 +54,8 @@ inline constexpr float kUnbounded = 1e30f;
 Box particleDomain(const VectorField& field);
 
 // The field as the particles feel it at room position x: strength * field,
-// carried through the placement. Zero when there is no field.
+// carried through the placement (zero when there is no field), and turned
+// around the obstacles (flowAroundObstacles).
 glm::vec3 fieldAt(const glm::vec3& x, const PhysicsInputs& in);
 
 }  // namespace sandstorm

@@ -8,6 +8,7 @@
 
 #include "core/flow/slice_settings.h"
 #include "core/flow/streamline_settings.h"
+#include "core/obstacles/obstacle.h"
 #include "core/sim/emitter.h"
 #include "core/sim/helicopter.h"
 #include "core/sim/sim_settings.h"
@@ -16,6 +17,7 @@ namespace sandstorm {
 
 struct ParticleState {
   static constexpr int kMaxEmitters = 16;
+  static constexpr int kMaxObstacles = 8;
 
   SimSettings sim;
   RenderSettings render;
@@ -25,6 +27,7 @@ struct ParticleState {
   SliceSettings slice;
   ProbeSettings probe;
   std::vector<Emitter> emitters{Emitter{}};
+  std::vector<Obstacle> obstacles;  // from the configuration's [[obstacle]]s; edited, never added
 };
 
 }  // namespace sandstorm

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "core/obstacles/collision_shapes.h"
 #include "core/sim/capacity.h"
 
 #include "core/sim/particle_physics.h"
@@ -37,14 +38,18 @@ void ReferenceSimulator::step(const SimStep& step, const ParticleState& state) {
   in.terrain = terrain_.get();
   in.settings = state.sim;
   in.dt = step.dt;
+  in.obstacles = collisionShapes(state, terrain_.get());
 
   const std::size_t limit = std::min(std::size_t(std::max(state.sim.maximum, 0)), capacity_);
   const std::vector<std::uint32_t> granted = budget_.allocate(step.emission, limit, count2_);
   next_.clear();
   std::uint32_t born = 0;
   for (std::size_t e = 0; e < granted.size() && e < state.emitters.size(); ++e) {
-    for (std::uint32_t k = 0; k < granted[e]; ++k)
-      next_.push_back(birth(state.emitters[e], step.seed, step.frame, std::uint32_t(e), k));
+    for (std::uint32_t k = 0; k < granted[e]; ++k) {
+      Particle p = birth(state.emitters[e], step.seed, step.frame, std::uint32_t(e), k);
+      settleNewborn(p, in);
+      next_.push_back(p);
+    }
     born += granted[e];
   }
   budget_.recordEmitted(born);

@@ -8,9 +8,11 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <functional>
 
 #include "core/field/field_timeline.h"
 #include "core/field/vortex_field.h"
+#include "core/obstacles/obstacle_physics.h"
 #include "core/sim/main_context.h"
 #include "core/sim/reference_simulator.h"
 #include "core/util/error.h"
@@ -66,10 +68,14 @@ struct Agreement {
   std::size_t frames = 0;
   float maxError = 0.0f;
   std::size_t peak = 0;
+  std::vector<Particle> last;  // the GPU's particles after the last frame
+  ParticleState state;         // and the state then
 };
 
+// `script`: requests made before each frame's packet (beyond the rate change at 50).
 Agreement compare(const std::string& backend, Scenario s, int frames, std::size_t capacity,
-                  const GpuTuning& tuning = {}) {
+                  const GpuTuning& tuning = {},
+                  const std::function<void(MainContext&, int)>& script = {}) {
   MainContext::Options options;
   options.fixedDt = 1.0f / 60.0f;
   options.seed = 0xC0FFEEull;
@@ -85,6 +91,7 @@ Agreement compare(const std::string& backend, Scenario s, int frames, std::size_
   Agreement a;
   for (int f = 0; f < frames; ++f) {
     if (f == 50) main.set("emitter.0.rate", 12000.0f);  // a mid-run change
+    if (script) script(main, f);
     const FramePacket packet = main.next();
     for (const StateChange& c : packet.changes)
       applyChange(state, c);
@@ -104,6 +111,8 @@ Agreement compare(const std::string& backend, Scenario s, int frames, std::size_
     }
     a.peak = std::max(a.peak, g.size());
     ++a.frames;
+    a.last = g;
+    a.state = state;
   }
   return a;
 }
@@ -137,6 +146,47 @@ TEST_P(ParticleBackendTest, APlacedFieldMovesParticlesTheSameOnBothSides) {
   // Matrix products may round differently on the GPU: agreement to a tenth of a millimetre.
   EXPECT_LT(a.maxError, 1e-4f);
   std::printf("placed field: max |gpu - cpu| = %g\n", a.maxError);
+}
+
+TEST_P(ParticleBackendTest, ObstaclesTurnTheFlowAndHoldParticlesOutTheSameOnBothSides) {
+  // A sphere, a box and a cylinder in the tornado; the sphere moves mid-run.
+  for (const MotionModel motion : {MotionModel::Tracer, MotionModel::Force}) {
+    SCOPED_TRACE(int(motion));
+    Scenario s = tornado(motion, Integrator::RK2, BoundaryMode::Clamp);
+    Obstacle sphere;
+    sphere.position = {0.8f, 0.6f, 1.0f};
+    sphere.radius = 0.6f;
+    sphere.velocity = {0.0f, -0.5f, 0.0f};
+    Obstacle box;
+    box.shape = ObstacleShape::Box;
+    box.position = {-1.0f, -0.8f, 0.5f};
+    box.size = {0.8f, 0.6f, 1.0f};
+    box.restitution = 0.8f;
+    Obstacle pillar;
+    pillar.shape = ObstacleShape::Cylinder;
+    pillar.position = {0.0f, 1.5f, 1.0f};
+    pillar.radius = 0.3f;
+    pillar.height = 2.0f;
+    pillar.flow = false;
+    s.state.obstacles = {sphere, box, pillar};
+    const Agreement a = compare(GetParam(), s, 90, 16384, {}, [](MainContext& main, int f) {
+      if (f >= 30) main.set("obstacle.0.position", glm::vec3(0.8f, 0.6f - 0.01f * float(f), 1.0f));
+    });
+    EXPECT_EQ(a.frames, 90u);
+    EXPECT_LT(a.maxError, 1e-4f);
+    std::printf("obstacles: max |gpu - cpu| = %g, peak %zu\n", a.maxError, a.peak);
+    EXPECT_GT(a.peak, 8000u);
+    // None inside, and many held on a surface (the obstacles did act).
+    std::size_t onSurface = 0;
+    for (const Particle& p : a.last)
+      for (const Obstacle& o : a.state.obstacles) {
+        const float d = obstacleSurface(o, p.position()).distance;
+        EXPECT_GE(d, 0.0f);
+        if (d < 1e-3f) ++onSurface;
+      }
+    EXPECT_GT(onSurface, 50u);
+    std::printf("obstacles: %zu particles on a surface\n", onSurface);
+  }
 }
 
 TEST_P(ParticleBackendTest, TimeVaryingFieldsBlendTheSameOnBothSides) {

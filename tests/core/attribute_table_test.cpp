@@ -27,8 +27,7 @@ TEST(AttributeTable, EveryEntryIsDocumentedAndItsDefaultIsInRange) {
   for (const AttributeInfo& info : table().entries()) {
     EXPECT_TRUE(keys.insert(info.key).second) << "duplicate " << info.key;
     EXPECT_FALSE(info.description.empty()) << info.key;
-    const AttributeResult r = table().validate(
-        info.perEmitter() ? "emitter.0." + info.key.substr(10) : info.key, info.defaultValue);
+    const AttributeResult r = table().validate(info.itemKey(0), info.defaultValue);
     EXPECT_TRUE(r.warning.empty()) << info.key << ": " << r.warning;
   }
   // The thesis's Table 5.1 is covered.
