@@ -66,6 +66,7 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
       terrain_(makeTerrain(config.scene, configDir_)),
       main_(config.particles, field_.update, mainOptions(config.run)),
       helicopter_(terrain_),
+      obstaclePaths_(config.obstaclePaths),
       head_(makeHeadTracker(config.head)),
       navigation_(Navigation::from(config.navigation)),
       channel_(int(config.walls.size())),
@@ -91,6 +92,7 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
   }
   if (!cluster_ || cluster_->root()) {
     helicopter_.update(main_);  // the configured helicopter's field and dust, before packet 0
+    obstaclePaths_.start(main_);
     if (TrackingInput::wanted(config.tracking, replay_.tracking))
       tracking_ =
           std::make_unique<TrackingInput>(config.tracking, config.navigation, replay_.tracking);
@@ -104,6 +106,10 @@ int AppRun::execute() {
   for (GlfwWindow* w : windows_)
     inputWindows.push_back(w->handle());
   input_ = std::make_unique<DesktopInput>(inputWindows);  // before the menu's ImGui callbacks
+  input_->setPicker([this](const DesktopInput::Click& click) {
+    const std::optional<WorldRay> ray = rayThrough(click);
+    return ray && obstacleDrag_.pick(main_.pendingState(), *ray);
+  });
   openMenu();
   openLegend();
   if (cluster_) {
@@ -461,31 +467,47 @@ void AppRun::autoColorRange(const ParticleState& state) {
 // A right click on a wall's window places the probe (probe.position, a change
 // like a menu edit) where the ray through that pixel meets the slice, or
 // nearest the field's centre.
+std::optional<WorldRay> AppRun::rayThrough(const DesktopInput::Click& click) const {
+  if (click.window >= windows_.size()) return std::nullopt;
+  const auto it = std::find(wallWindows_.begin(), wallWindows_.end(), windows_[click.window]);
+  if (it == wallWindows_.end()) return std::nullopt;
+  const WallSpec& wall = config_.walls[std::size_t(it - wallWindows_.begin())];
+  const glm::ivec2 size = glm::max(windows_[click.window]->framebufferSize(), glm::ivec2(1));
+  const Viewer viewer =
+      lastPacket_ ? lastPacket_->viewer : Viewer{head_->pose(main_.time()), navigation_};
+  return wallClickRay(wall, viewer, click.at, float(size.x) / float(size.y), config_.run.nearPlane,
+                      config_.run.farPlane);
+}
+
 void AppRun::pickProbe() {
   const std::optional<DesktopInput::Click> click = input_->takeClick();
-  if (!click || click->window >= windows_.size()) return;
+  if (!click) return;
   const ParticleState state = main_.pendingState();
   if (!state.probe.enabled) {
     log::info("right click: the probe is off; turn on probe.enabled to place it");
     return;
   }
-  const auto it = std::find(wallWindows_.begin(), wallWindows_.end(), windows_[click->window]);
-  if (it == wallWindows_.end()) return;
-  const WallSpec& wall = config_.walls[std::size_t(it - wallWindows_.begin())];
-  const glm::ivec2 size = glm::max(windows_[click->window]->framebufferSize(), glm::ivec2(1));
-  const Viewer viewer =
-      lastPacket_ ? lastPacket_->viewer : Viewer{head_->pose(main_.time()), navigation_};
-  const WorldRay ray = wallClickRay(wall, viewer, click->at, float(size.x) / float(size.y),
-                                    config_.run.nearPlane, config_.run.farPlane);
+  const std::optional<WorldRay> ray = rayThrough(*click);
+  if (!ray) return;
   const auto field = main_.field();
   const glm::vec3 centre = field && field->field
                                ? field->placement.toRoom(field->field->bounds().center())
-                               : ray.origin + ray.direction;
+                               : ray->origin + ray->direction;
   try {
-    main_.set("probe.position", pickProbePoint(state, ray.origin, ray.direction, centre));
+    main_.set("probe.position", pickProbePoint(state, ray->origin, ray->direction, centre));
   } catch (const Error& e) {
     log::warn("probe: ", e.what());
   }
+}
+
+// A left drag that began on an obstacle moves it (ObstacleDrag).
+void AppRun::dragObstacle(float dt) {
+  const std::optional<DesktopInput::Drag> drag = input_->takeDrag();
+  if (!drag) return;
+  if (const std::optional<WorldRay> ray = rayThrough(drag->at))
+    obstacleDrag_.drag(main_, *ray, dt, drag->released);
+  else if (drag->released)
+    obstacleDrag_.drag(main_, WorldRay{}, dt, true);
 }
 
 // A rank other than 0 shows its own legend (when one of its walls is the
@@ -563,6 +585,7 @@ void AppRun::runOneProcess() {
       input_->update(dt, dynamic_cast<DesktopHead*>(head_.get()), navigation_,
                      menu_ && menu_->wantsMouse(), false);
       pickProbe();
+      dragObstacle(dt);
     }
     for (const auto& w : walls_)
       failed_ = failed_ || w->error().has_value();
@@ -575,6 +598,7 @@ void AppRun::runOneProcess() {
     lastPacket_ = std::make_shared<const FramePacket>(main_.next());
     if (!channel_.publish(lastPacket_)) break;
     helicopter_.update(main_);
+    obstaclePaths_.update(main_, *lastPacket_);
     ++frames_;
     reportProgress(now);
   }
@@ -603,6 +627,7 @@ void AppRun::runCluster() {
         input_->update(dt, dynamic_cast<DesktopHead*>(head_.get()), navigation_,
                        menu_ && menu_->wantsMouse(), false);
         pickProbe();
+        dragObstacle(dt);
       }
     }
     std::shared_ptr<const FramePacket> packet;
@@ -615,6 +640,7 @@ void AppRun::runCluster() {
       lastPacket_ = packet;
       cluster_->send(*packet);
       helicopter_.update(main_);
+      obstaclePaths_.update(main_, *packet);
     } else {
       cluster_->sendStop();
     }

@@ -18,6 +18,8 @@
 #include "app/helicopter_controller.h"
 #include "app/menu/legend_host.h"
 #include "app/menu/menu_host.h"
+#include "app/obstacle_drag.h"
+#include "app/obstacle_driver.h"
 #include "app/scene_setup.h"
 #include "app/tracking/tracking_input.h"
 #include "contexts/platform/glfw_window.h"
@@ -60,6 +62,9 @@ class AppRun {
                                       const FramePacket* last) const;
   void showMirrorLegend(float dt, std::shared_ptr<const FramePacket> packet);
   void pickProbe();
+  // Where a click on a wall's window points in the world; none off the walls.
+  std::optional<WorldRay> rayThrough(const DesktopInput::Click& click) const;
+  void dragObstacle(float dt);
   void reportProgress(Clock::time_point now);
   int finish();
 
@@ -80,6 +85,8 @@ class AppRun {
   void loadField(const std::string& choice);
   std::unique_ptr<TrackingInput> tracking_;  // null: no tracker (or not the main context's rank)
   HelicopterController helicopter_;
+  ObstacleDriver obstaclePaths_;
+  ObstacleDrag obstacleDrag_;
   std::unique_ptr<HeadTracker> head_;
   Navigation navigation_;
 

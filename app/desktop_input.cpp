@@ -55,27 +55,35 @@ void DesktopInput::update(float dt, DesktopHead* head, Navigation& navigation, b
   double x = 0.0, y = 0.0;
   glfwGetCursorPos(focused, &x, &y);
   const bool pressed = glfwGetMouseButton(focused, GLFW_MOUSE_BUTTON_LEFT) == GLFW_PRESS;
+  int width = 0, height = 0;
+  glfwGetWindowSize(focused, &width, &height);
+  const std::size_t index =
+      std::size_t(std::find(windows_.begin(), windows_.end(), focused) - windows_.begin());
+  const Click cursor{index,
+                     glm::vec2(float(x / std::max(width, 1)), float(y / std::max(height, 1)))};
   if (pressed && !menuHasMouse) {
-    if (dragging_) navigation.yawRadians += float(x - lastX_) * 0.005f;
+    if (!dragging_ && !holding_ && picker_ && width > 0 && height > 0) holding_ = picker_(cursor);
+    if (holding_)
+      drag_ = Drag{cursor, false};
+    else if (dragging_)
+      navigation.yawRadians += float(x - lastX_) * 0.005f;
     dragging_ = true;
   } else {
-    dragging_ = false;
+    if (holding_) drag_ = Drag{cursor, true};
+    dragging_ = holding_ = false;
   }
   lastX_ = x;
   const bool right = glfwGetMouseButton(focused, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
   if (right && !rightDown_) log::debug("right click (the menu has the mouse: ", menuHasMouse, ")");
-  if (right && !rightDown_ && !menuHasMouse) {
-    int width = 0, height = 0;
-    glfwGetWindowSize(focused, &width, &height);
-    const std::size_t index =
-        std::size_t(std::find(windows_.begin(), windows_.end(), focused) - windows_.begin());
-    if (width > 0 && height > 0)
-      click_ = Click{index, glm::vec2(float(x / width), float(y / height))};
-  }
+  if (right && !rightDown_ && !menuHasMouse && width > 0 && height > 0) click_ = cursor;
   rightDown_ = right;
   const double wheel = scrolled.exchange(0.0);
   if (wheel != 0.0 && !menuHasMouse)
     navigation.scale = std::clamp(navigation.scale * float(std::pow(1.1, wheel)), 0.01f, 100.0f);
+}
+
+std::optional<DesktopInput::Drag> DesktopInput::takeDrag() {
+  return std::exchange(drag_, std::nullopt);
 }
 
 std::optional<DesktopInput::Click> DesktopInput::takeClick() {

@@ -52,8 +52,9 @@ void MenuPanel::build(const MenuStats& stats) {
   statsSection(stats, state);
   if (state.helicopter.enabled &&
       ImGui::CollapsingHeader("Helicopter", ImGuiTreeNodeFlags_DefaultOpen)) {
-    for (const char* key : {"helicopter.throttle", "helicopter.altitude", "helicopter.x",
-                            "helicopter.y", "helicopter.wand_throttle"})
+    for (const char* key :
+         {"helicopter.throttle", "helicopter.altitude", "helicopter.x", "helicopter.y",
+          "helicopter.wand_throttle", "helicopter.collide", "helicopter.collide_rotor"})
       attributeWidget(AttributeTable::instance().lookup(key), key, state);
   }
   // The thesis's Table 5.1 first: the attributes an operator reaches for.
@@ -92,6 +93,7 @@ void MenuPanel::build(const MenuStats& stats) {
       if (info.key.starts_with("probe.")) attributeWidget(info, info.key, state);
   }
   emitterSection(state);
+  obstacleSection(state);
   fieldSection();
   if (ImGui::CollapsingHeader("Field playback")) {
     for (const AttributeInfo& info : AttributeTable::instance().entries())
@@ -199,6 +201,27 @@ void MenuPanel::emitterSection(const ParticleState& state) {
   const std::string prefix = "emitter." + std::to_string(selectedEmitter_) + ".";
   for (const AttributeInfo& info : AttributeTable::instance().entries())
     if (info.perEmitter()) attributeWidget(info, prefix + info.key.substr(10), state);
+}
+
+// The obstacles of the configuration ([[obstacle]]): pick one, edit it. The
+// mouse drags them on the floor and the wand grabs them too.
+void MenuPanel::obstacleSection(const ParticleState& state) {
+  if (!ImGui::CollapsingHeader("Obstacles")) return;
+  const int count = int(state.obstacles.size());
+  if (count == 0) {
+    ImGui::TextWrapped("none: add [[obstacle]] tables to the configuration");
+    return;
+  }
+  selectedObstacle_ = std::clamp(selectedObstacle_, 0, count - 1);
+  for (int i = 0; i < count; ++i) {
+    const std::string shape = std::get<std::string>(
+        AttributeTable::instance().get(state, "obstacle." + std::to_string(i) + ".shape"));
+    const std::string label = "obstacle " + std::to_string(i) + " (" + shape + ")";
+    if (ImGui::Selectable(label.c_str(), selectedObstacle_ == i)) selectedObstacle_ = i;
+    remember("obstacle:" + std::to_string(i));
+  }
+  for (const AttributeInfo& info : AttributeTable::instance().entries())
+    if (info.perObstacle()) attributeWidget(info, info.itemKey(selectedObstacle_), state);
 }
 
 void MenuPanel::fieldSection() {

@@ -65,6 +65,7 @@ class MenuPanel {
                        const ParticleState& state);
   void runControls(const ParticleState& state);
   void emitterSection(const ParticleState& state);
+  void obstacleSection(const ParticleState& state);
   void fieldSection();
   void statsSection(const MenuStats& stats, const ParticleState& state);
   void trackingSection(const MenuTrackingStats& tracking);
@@ -75,6 +76,7 @@ class MenuPanel {
   std::vector<std::string> fieldChoices_;
   FieldLoader loader_;
   int selectedEmitter_ = 0;
+  int selectedObstacle_ = 0;
   int selectedField_ = 0;
   std::string message_;
   std::map<std::string, Rect> rects_;

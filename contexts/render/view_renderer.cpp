@@ -52,6 +52,7 @@ void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, 
   else
     scene_.setFieldBox(std::nullopt, {});
   scene_.setHelicopter(particles.state().helicopter, HelicopterModel{}.rotorRadius);
+  scene_.setObstacles(particles.state().obstacles);
   scene_.draw();
   particles.drawTrails(&view, size);
 }

@@ -6,6 +6,8 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <vector>
 
+#include "core/obstacles/helicopter_shape.h"
+
 namespace sandstorm {
 
 SceneRenderer::SceneRenderer()
@@ -41,6 +43,15 @@ SceneRenderer::SceneRenderer()
 void SceneRenderer::setHelicopter(const HelicopterSettings& helicopter, float rotorRadius) {
   helicopter_ = helicopter;
   rotorRadius_ = rotorRadius;
+}
+
+template <class Mesh>
+void SceneRenderer::drawProp(const Mesh& mesh, const glm::vec3& center, const glm::vec3& size,
+                             const glm::vec4& color) const {
+  const glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), center), size);
+  glProgramUniformMatrix4fv(mesh_.id(), 0, 1, GL_FALSE, glm::value_ptr(model));
+  glProgramUniform4f(mesh_.id(), 1, color.x, color.y, color.z, color.w);
+  mesh.draw();
 }
 
 void SceneRenderer::setTerrain(std::shared_ptr<const HeightMap> terrain) {
@@ -111,35 +122,24 @@ void SceneRenderer::draw() const {
   glBindVertexArray(terrainVao_.id());
   glDrawElements(GL_TRIANGLES, terrainIndexCount_, GL_UNSIGNED_INT, nullptr);
 
+  mesh_.use();
   if (helicopter_.enabled) {
     // Hub at the rotor; the fuselage hangs below it, the boom runs aft (-x).
-    const float r = rotorRadius_;
-    const glm::vec3 hub(helicopter_.x, helicopter_.y,
-                        ground_->heightAt({helicopter_.x, helicopter_.y}) + helicopter_.altitude);
-    struct Part {
-      glm::vec3 center, size, color;
-    };
-    const Part parts[] = {
-        {{0.1f * r, 0.0f, -0.33f * r},
-         {1.6f * r, 0.34f * r, 0.32f * r},
-         {0.22f, 0.25f, 0.2f}},  // fuselage
-        {{-1.2f * r, 0.0f, -0.2f * r},
-         {1.5f * r, 0.08f * r, 0.1f * r},
-         {0.22f, 0.25f, 0.2f}},  // tail boom
-        {{-1.9f * r, 0.0f, -0.05f * r},
-         {0.12f * r, 0.04f * r, 0.35f * r},
-         {0.22f, 0.25f, 0.2f}},                                                             // fin
-        {{0.0f, 0.0f, -0.08f * r}, {0.05f * r, 0.05f * r, 0.16f * r}, {0.1f, 0.1f, 0.1f}},  // mast
-        {{0.0f, 0.0f, 0.0f}, {2.0f * r, 0.07f * r, 0.015f * r}, {0.08f, 0.08f, 0.08f}},  // blades
-        {{0.0f, 0.0f, 0.0f}, {0.07f * r, 2.0f * r, 0.015f * r}, {0.08f, 0.08f, 0.08f}},
-    };
-    mesh_.use();
-    for (const Part& p : parts) {
-      const glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), hub + p.center), p.size);
-      glProgramUniformMatrix4fv(mesh_.id(), 0, 1, GL_FALSE, glm::value_ptr(model));
-      glProgramUniform4f(mesh_.id(), 1, p.color.x, p.color.y, p.color.z, 1.0f);
-      cube_.draw();
+    const glm::vec3 hub = helicopterHub(helicopter_, ground_.get());
+    for (const HelicopterPart& p : helicopterParts(rotorRadius_)) {
+      if (p.role == HelicopterPart::Role::Disc) continue;  // the blades show it
+      drawProp(cube_, hub + p.center, p.size, glm::vec4(p.color, 1.0f));
     }
+  }
+  for (const Obstacle& o : obstacles_) {
+    if (!o.enabled) continue;
+    const glm::vec4 green(0.25f, 0.6f, 0.3f, 1.0f);
+    if (o.shape == ObstacleShape::Sphere)
+      drawProp(sphere_, o.position, glm::vec3(2.0f * o.radius), green);
+    else if (o.shape == ObstacleShape::Cylinder)
+      drawProp(cylinder_, o.position, glm::vec3(2.0f * o.radius, 2.0f * o.radius, o.height), green);
+    else
+      drawProp(cube_, o.position, o.size, green);
   }
 
   if (box_) {

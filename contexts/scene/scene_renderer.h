@@ -7,6 +7,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
@@ -15,10 +16,12 @@
 #include "contexts/scene/streakline_renderer.h"
 #include "contexts/scene/streamline_renderer.h"
 #include "contexts/scene/unit_cube.h"
+#include "contexts/scene/unit_mesh.h"
 #include "contexts/scene/wand_renderer.h"
 #include "core/field/box.h"
 #include "core/field/field_placement.h"
 #include "core/field/height_map.h"
+#include "core/obstacles/obstacle.h"
 #include "core/sim/helicopter.h"
 
 namespace sandstorm {
@@ -32,6 +35,8 @@ class SceneRenderer {
   void setFieldBox(std::optional<Box> bounds, const FieldPlacement& placement);
   // A simple helicopter proxy (fuselage, tail boom, rotor) at the hub the settings give.
   void setHelicopter(const HelicopterSettings& helicopter, float rotorRadius);
+  // The obstacles (the enabled ones are drawn, solid green as in the Mali sample).
+  void setObstacles(std::vector<Obstacle> obstacles) { obstacles_ = std::move(obstacles); }
   // The tracked wand's ray and the emitters' handles (nothing while the ray is hidden).
   // `handles`: what the wand can grab (wand_handles.h), world positions.
   void setWand(const WandRay& ray, const Navigation& navigation, std::vector<glm::vec3> handles);
@@ -49,11 +54,18 @@ class SceneRenderer {
   void draw() const;
 
  private:
+  // A mesh of the mesh program's (unit size) stretched to `size` at `center`.
+  template <class Mesh>
+  void drawProp(const Mesh& mesh, const glm::vec3& center, const glm::vec3& size,
+                const glm::vec4& color) const;
+
   gl::Program sky_, terrain_, lines_, mesh_;
   gl::VertexArray emptyVao_;
   gl::VertexArray terrainVao_, boxVao_;
   gl::Buffer terrainVertices_, terrainIndices_, boxVertices_;
   UnitCube cube_;
+  UnitMesh sphere_ = UnitMesh::sphere(), cylinder_ = UnitMesh::cylinder();
+  std::vector<Obstacle> obstacles_;
   WandRenderer wand_;
   SceneField sceneField_;  // before the passes that read it
   StreamlineRenderer streamlines_{sceneField_};

@@ -8,6 +8,9 @@ std::vector<WandHandle> wandHandles(const ParticleState& state) {
   std::vector<WandHandle> handles;
   for (std::size_t i = 0; i < state.emitters.size(); ++i)
     handles.push_back({concat("emitter.", i, ".position"), state.emitters[i].position});
+  for (std::size_t i = 0; i < state.obstacles.size(); ++i)
+    if (state.obstacles[i].enabled)
+      handles.push_back({concat("obstacle.", i, ".position"), state.obstacles[i].position});
   if (state.streamlines.enabled) {
     handles.push_back({"streamlines.from", state.streamlines.from});
     handles.push_back({"streamlines.to", state.streamlines.to});
