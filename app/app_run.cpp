@@ -92,7 +92,8 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
   }
   if (!cluster_ || cluster_->root()) {
     helicopter_.update(main_);  // the configured helicopter's field and dust, before packet 0
-    obstaclePaths_.start(main_);
+    // A replayed session holds the paths' moves (they were recorded as changes).
+    if (!options_.replay) obstaclePaths_.start(main_);
     if (TrackingInput::wanted(config.tracking, replay_.tracking))
       tracking_ =
           std::make_unique<TrackingInput>(config.tracking, config.navigation, replay_.tracking);
@@ -598,7 +599,7 @@ void AppRun::runOneProcess() {
     lastPacket_ = std::make_shared<const FramePacket>(main_.next());
     if (!channel_.publish(lastPacket_)) break;
     helicopter_.update(main_);
-    obstaclePaths_.update(main_, *lastPacket_);
+    if (!options_.replay) obstaclePaths_.update(main_, *lastPacket_);
     ++frames_;
     reportProgress(now);
   }
@@ -640,7 +641,7 @@ void AppRun::runCluster() {
       lastPacket_ = packet;
       cluster_->send(*packet);
       helicopter_.update(main_);
-      obstaclePaths_.update(main_, *packet);
+      if (!options_.replay) obstaclePaths_.update(main_, *packet);
     } else {
       cluster_->sendStop();
     }

@@ -6,6 +6,7 @@
 // every wall moves it at one frame. An obstacle whose path is switched off
 // (obstacle.N.path) stays where it is, at rest; one moved by anything else
 // (the menu, the mouse, the wand) has its path switched off, so the hand wins.
+// A replayed session needs no driver: it recorded the paths' moves.
 #pragma once
 
 #include <vector>

@@ -170,6 +170,60 @@ TEST(Identity, ShadowsAreTheSameOnEveryWallHoweverTheWallsAreRun) {
               test::readBytes(dir / "alone" / "floor.png"));
 }
 
+// Every wall's hashes equal, frame by frame (the floor wall's, returned).
+std::map<std::uint32_t, std::string> sameOnEveryWall(const std::filesystem::path& log,
+                                                     std::size_t frames) {
+  const std::vector<HashLine> lines = readHashes(log);
+  EXPECT_EQ(lines.size(), 4u * frames);
+  std::map<std::uint32_t, std::set<std::string>> perFrame;
+  std::map<std::uint32_t, std::string> floor;
+  for (const HashLine& h : lines) {
+    perFrame[h.frame].insert(h.hash);
+    if (h.wall == "floor") floor[h.frame] = h.hash;
+  }
+  for (const auto& [frame, hashes] : perFrame)
+    EXPECT_EQ(hashes.size(), 1u) << "walls differ at frame " << frame;
+  return floor;
+}
+
+TEST(Identity, AnObstacleMovingMidRunKeepsEveryWallIdentical) {
+  const auto dir = test::scratchDir("obstacles");
+  // Live: the sphere follows its path, a new place every frame; four walls on
+  // threads, and one simulation shared by all four, hold the same particles.
+  const std::string live = " --frames 150 --hash-log ";
+  const auto threads =
+      runSandstorm("--config tests/data/identity-obstacles.toml" + live +
+                   (dir / "threads.txt").string() + " --record " + (dir / "live.session").string());
+  const auto shared = runSandstorm("--config tests/data/identity-obstacles-shared.toml" + live +
+                                   (dir / "shared.txt").string());
+  const auto without =
+      runSandstorm("--config tests/data/identity.toml" + live + (dir / "without.txt").string());
+  for (const auto* r : {&threads, &shared, &without})
+    ASSERT_EQ(r->exitCode, 0) << r->output;
+  auto floor = sameOnEveryWall(dir / "threads.txt", 150);
+  EXPECT_EQ(sameOnEveryWall(dir / "shared.txt", 150), floor);
+  EXPECT_NE(sameOnEveryWall(dir / "without.txt", 150).at(149), floor[149]);  // the obstacles acted
+  // The path's moves were recorded as changes, one a frame.
+  int moves = 0;
+  for (const std::string& line : readLines(dir / "live.session"))
+    moves += line.find(" set obstacle.0.position ") != std::string::npos;
+  EXPECT_GE(moves, 149);
+  // By hand: the box at frame 60, the sphere at 100 (a replayed session); and
+  // one wall alone in its own process holds the same particles as all four.
+  const std::string moved =
+      " --frames 150 --replay tests/data/obstacles-midrun.session --hash-log ";
+  const auto hand = runSandstorm("--config tests/data/identity-obstacles.toml" + moved +
+                                 (dir / "hand.txt").string());
+  const auto alone = runSandstorm("--config tests/data/identity-obstacles.toml --walls floor" +
+                                  moved + (dir / "alone.txt").string());
+  for (const auto* r : {&hand, &alone})
+    ASSERT_EQ(r->exitCode, 0) << r->output;
+  auto handFloor = sameOnEveryWall(dir / "hand.txt", 150);
+  for (const HashLine& h : readHashes(dir / "alone.txt"))
+    EXPECT_EQ(h.hash, handFloor[h.frame]) << "frame " << h.frame;
+  EXPECT_NE(handFloor[149], floor[149]);
+}
+
 TEST(Identity, ARecordedSessionReplaysToTheSameParticles) {
   const auto dir = test::scratchDir("replay");
   const auto first =
