@@ -18,6 +18,7 @@ const char* kUsage = R"(sandstorm-bench: GPU particle benchmark (headless EGL)
                   [--billboard-limit N] [--walls 1,2,4,8] [--wall-particles N]
                   [--wall-sims per-wall,shared] [--wall-renderers billboards,splat]
                   [--wall-trails 0,16] [--wall-shadows 0,1] [--sort-keys 1e6,1e7]
+                  [--update-obstacles 0,1]
                   [--wall-backend compute] [--particle-size M] [--memory-gib G]
                   [--integrator euler|rk2|rk4] [--update-items 1|2|4|8] [--gpu-warmup S]
 
@@ -26,7 +27,9 @@ fixed frames. Sections:
   verify    the compute and transform-feedback backends on this GPU: the same
             records, bit for bit, through births, deaths and compaction
   ceilings  buffer-copy bandwidth, a bare transform-feedback pass, a bare point draw
-  update    the particle update per backend and field type
+  update    the particle update per backend and field type, without and with
+            obstacles (--update-obstacles: a sphere the flow goes around and a
+            box, both in the cloud)
   render    scene, particles and composite of one view per renderer
   walls     whole frames of 1..8 views, each wall simulating or one shared simulation,
             with trails of each --wall-trails length (render.trail_length; 0 none),
@@ -167,6 +170,13 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
         o.wallShadows.push_back(t == "1");
       }
       if (o.wallShadows.empty()) throw Error(concat(a, ": expected 0,1, 0 or 1"));
+    } else if (a == "--update-obstacles") {
+      o.updateObstacles.clear();
+      for (const std::string& t : split(v)) {
+        if (t != "0" && t != "1") throw Error(concat(a, ": ", t, ": expected 0 (none) or 1"));
+        o.updateObstacles.push_back(t == "1");
+      }
+      if (o.updateObstacles.empty()) throw Error(concat(a, ": expected 0,1, 0 or 1"));
     } else if (a == "--wall-backend") {
       o.wallBackend = v;
       checkChoices({v}, {"tf-gs", "compute"}, a);

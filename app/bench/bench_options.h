@@ -28,7 +28,8 @@ struct BenchOptions {
   std::vector<std::string> wallSims{"per-wall", "shared"};
   std::vector<std::string> wallRenderers{"billboards", "splat"};
   std::vector<int> wallTrails{0};
-  std::vector<int> wallShadows{0};  // render.shadows off (0), on (1)
+  std::vector<int> wallShadows{0};      // render.shadows off (0), on (1)
+  std::vector<int> updateObstacles{0};  // the update section without (0) and with (1) obstacles
   std::vector<std::size_t> sortKeys{1000000,
                                     10000000};  // the sort section's sizes  // render.trail_length
                                                 // of the walls' particles (0: none)

@@ -16,8 +16,9 @@ struct Row {
   std::string backend, field, renderer, sim;
   std::size_t particles = 0;
   int walls = 0;
-  int trails = 0;        // walls: render.trail_length
-  bool shadows = false;  // walls: render.shadows
+  int trails = 0;          // walls: render.trail_length
+  bool shadows = false;    // walls: render.shadows
+  bool obstacles = false;  // update: with obstacles (SceneChoice::obstacles)
   int width = 0, height = 0;
   double ms = 0;             // GPU milliseconds per frame (median)
   double particlesPerS = 0;  // 0: not applicable

@@ -37,6 +37,16 @@ ParticleState benchState(const SceneChoice& c) {
   s.render.trailLength = c.trailLength;
   s.render.shadows = c.shadows;
   s.field.mode = c.field == "equation" ? FieldMode::Equation : FieldMode::Texture;
+  if (c.obstacles) {
+    Obstacle sphere;
+    sphere.position = {1.5f, 0.0f, 3.0f};
+    sphere.radius = 1.0f;
+    Obstacle box;
+    box.shape = ObstacleShape::Box;
+    box.position = {-1.5f, 1.0f, 2.0f};
+    box.size = {1.0f, 1.0f, 1.5f};
+    s.obstacles = {sphere, box};
+  }
   if (c.turnover) {
     s.sim.boundary = BoundaryMode::Kill;
     e.lifetime = 0.3f;

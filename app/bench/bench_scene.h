@@ -21,8 +21,9 @@ struct SceneChoice {
   std::string renderer = "billboards";  // billboards | points | splat (tiled) | splat-atomic
   float particleSize = 0.045f;
   std::string integrator = "rk2";
-  int trailLength = 0;   // render.trail_length
-  bool shadows = false;  // render.shadows
+  int trailLength = 0;     // render.trail_length
+  bool shadows = false;    // render.shadows
+  bool obstacles = false;  // a sphere (flow around it) and a box in the cloud
   bool turnover =
       false;  // short lives, deaths at the box: every frame births, deaths and compaction
 };

@@ -58,7 +58,8 @@ class Bench {
       for (std::size_t n : o_.particles)
         for (const std::string& backend : o_.backends)
           for (const std::string& field : o_.fields)
-            update(n, backend, field);
+            for (int obstacles : o_.updateObstacles)
+              update(n, backend, field, obstacles != 0);
     if (has("render"))
       for (std::size_t n : o_.particles)
         for (const std::string& renderer : o_.renderers)
@@ -262,14 +263,16 @@ class Bench {
     return system;
   }
 
-  void update(std::size_t n, const std::string& backend, const std::string& field) {
-    progress(concat("update: ", backend, ", ", field, " field, ", n, " particles"));
+  void update(std::size_t n, const std::string& backend, const std::string& field, bool obstacles) {
+    progress(concat("update: ", backend, ", ", field, " field, ", n, " particles",
+                    obstacles ? ", obstacles" : ""));
     if (!fits(4 * n * 16.0, "update")) return;
     guarded("update", [&] {
       const SceneChoice c{.particles = n,
                           .field = field,
                           .particleSize = o_.particleSize,
-                          .integrator = o_.integrator};
+                          .integrator = o_.integrator,
+                          .obstacles = obstacles};
       const auto fieldUpdate = benchField(field);
       auto system = makeSystem(c, backend);
       GpuStopwatch watch;
@@ -286,7 +289,8 @@ class Bench {
               .stage = "update",
               .backend = backend,
               .field = field,
-              .particles = live};
+              .particles = live,
+              .obstacles = obstacles};
       row.ms = ms;
       row.particlesPerS = double(live) / (ms * 1e-3);
       row.bytesPerS = 2 * kRecordBytes * double(live) / (ms * 1e-3);
@@ -505,7 +509,8 @@ void printTargets(const Report& r) {
       std::printf("  compute = tf-gs on this GPU (%s field): %s\n", row.field.c_str(),
                   row.note.c_str());
   if (const Row* c = largest([](const Row& x) {
-        return x.section == "update" && x.backend == "compute" && x.field == "texture";
+        return x.section == "update" && x.backend == "compute" && x.field == "texture" &&
+               !x.obstacles;
       }))
     std::printf(
         "  compute update, %zu particles: %.1f GB/s = %.2f of %s bandwidth %.1f GB/s (target >= "
@@ -514,12 +519,27 @@ void printTargets(const Report& r) {
         c->particles, c->bytesPerS * 1e-9, c->ratio, r.bandwidthName().c_str(),
         r.bandwidth() * 1e-9, r.copyBytesPerS * 1e-9);
   if (const Row* t = largest([](const Row& x) {
-        return x.section == "update" && x.backend == "tf-gs" && x.field == "texture";
+        return x.section == "update" && x.backend == "tf-gs" && x.field == "texture" &&
+               !x.obstacles;
       }))
     std::printf(
         "  tf-gs update, %zu particles: %.3f ms = %.2f of the bare transform-feedback pass's speed "
         "(target >= 0.80)\n",
         t->particles, t->ms, t->ratio);
+  for (const char* backend : {"compute", "tf-gs"}) {
+    const auto updateRow = [&](bool obstacles) {
+      return largest([&](const Row& x) {
+        return x.section == "update" && x.backend == backend && x.field == "texture" &&
+               x.obstacles == obstacles;
+      });
+    };
+    const Row *plain = updateRow(false), *with = updateRow(true);
+    if (plain && with && plain->particles == with->particles && plain->ms > 0)
+      std::printf(
+          "  %s update with obstacles, %zu particles: %.3f ms against %.3f ms = %.2fx "
+          "(target <= 1.15x)\n",
+          backend, with->particles, with->ms, plain->ms, with->ms / plain->ms);
+  }
   const Row* b = largest([](const Row& x) {
     return x.section == "render" && x.stage == "particles" && x.renderer == "billboards";
   });

@@ -102,5 +102,25 @@ TEST(BenchQuick, TheWallsSectionMeasuresFramesWithTrailsAndShadows) {
   EXPECT_NE(r.output.find("trails 8, shadows on:"), std::string::npos) << r.output;
 }
 
+// The update section without and with obstacles: a row of each per backend,
+// and the comparison in the targets.
+TEST(BenchQuick, TheUpdateSectionMeasuresTheObstacleTerm) {
+  const auto dir = test::scratchDir("bench-obstacles");
+  const auto json = dir / "bench.json";
+  const test::ProcessResult r =
+      runBench("--quick --sections update --fields texture --update-obstacles 0,1 --json '" +
+               json.string() + "'");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::set<std::string> rows;
+  for (const std::string& line : test::readLines(json))
+    if (line.find("\"stage\": \"update\"") != std::string::npos)
+      rows.insert(field(line, "backend") + "/" + field(line, "obstacles"));
+  EXPECT_EQ(rows,
+            (std::set<std::string>{"compute/false", "compute/true", "tf-gs/false", "tf-gs/true"}));
+  EXPECT_NE(r.output.find("tf-gs update with obstacles"), std::string::npos) << r.output;
+  EXPECT_NE(runBench("--quick --update-obstacles 2").output.find("expected 0 (none) or 1"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace sandstorm
