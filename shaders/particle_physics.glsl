@@ -4,6 +4,12 @@
 // field (field_equation.glsl) in place of the texture.
 
 #include "field_equation.glsl"
+#include "field_expression.glsl"
+
+// The particle fieldAt() is asked about (a field expression reads them):
+// its velocity at the stage being evaluated and its age. Zero elsewhere.
+vec3 gParticleVelocity = vec3(0.0);
+float gParticleAge = 0.0;
 
 // Trilinear interpolation between grid points, read without the sampler's
 // filter (whose weights have only 8 fractional bits on most GPUs): the cell
@@ -120,7 +126,9 @@ vec3 fieldAt(vec3 x) {
     return flowAroundObstacles(vec3(0.0), x, sim.modes.x != kMotionForce);
   }
   vec3 local = toLocal(x);
-#ifdef FIELD_EQUATION
+#if defined(FIELD_EXPRESSION)
+  vec3 s = expressionAt(local, sim.expression.x, gParticleVelocity, gParticleAge);
+#elif defined(FIELD_EQUATION)
   vec3 s = equationAt(local);  // the analytic field itself (field_equation.glsl), not its grid
 #else
   precise vec3 s = fieldSample(false, local);
@@ -140,6 +148,7 @@ struct Slope {
 };
 
 Slope derivative(vec3 x, vec3 v) {
+  gParticleVelocity = v;
   precise vec3 f = fieldAt(x);
   Slope s;
   if (sim.modes.x == kMotionTracer) {
@@ -199,6 +208,8 @@ bool advance(inout Particle p) {
   if (life <= 0.0) return false;
   vec3 x = p.positionLife.xyz;
   vec3 v = p.velocityKind.xyz;
+  precise float age = p.velocityKind.w - p.positionLife.w;  // lived, before this step
+  gParticleAge = age;
   integrate(x, v);
 
   if (sim.fieldDims.w != 0) {

@@ -40,6 +40,7 @@ layout(std140, binding = 0) uniform SimBlock {
   vec4 fieldBlend;        // x: weight towards the next frame, y: 1 when there is one,
                           // z: 1 when a frame has a validity mask (in w / alpha)
   EmitterBlock emitters[kMaxEmitters];
+  vec4 expression;        // x: simulated seconds before this step (a field expression's t)
   ivec4 obstacleCount;    // x: obstacles below (collisionShapes)
   ObstacleBlock obstacles[kMaxObstacles];
 } sim;

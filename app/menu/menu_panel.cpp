@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "app/menu/legend_widget.h"
 #include "core/sim/state_color_scale.h"
@@ -287,6 +288,25 @@ void MenuPanel::attributeWidget(const AttributeInfo& info, const std::string& ke
         for (const std::string& choice : info.choices)
           if (ImGui::Selectable(choice.c_str(), choice == current)) apply(key, choice);
         ImGui::EndCombo();
+      }
+      break;
+    }
+    case AttributeType::Expression: {
+      // Typed text, applied with Enter; a refused one stays in the box with
+      // the message below (the field keeps the last good one).
+      std::string& text = typing_[key];
+      if (!ImGui::IsItemActive() && text.empty()) text = std::get<std::string>(value);
+      char buffer[kMaxExpressionLength + 1];
+      std::snprintf(buffer, sizeof buffer, "%s", text.c_str());
+      if (ImGui::InputText(label.c_str(), buffer, sizeof buffer,
+                           ImGuiInputTextFlags_EnterReturnsTrue)) {
+        text = buffer;
+        apply(key, text);
+        if (std::get<std::string>(AttributeTable::instance().get(main_.pendingState(), key)) ==
+            text)
+          text.clear();  // applied: show the state's from now on
+      } else if (ImGui::IsItemActive()) {
+        text = buffer;
       }
       break;
     }

@@ -79,6 +79,7 @@ class MenuPanel {
   int selectedObstacle_ = 0;
   int selectedField_ = 0;
   std::string message_;
+  std::map<std::string, std::string> typing_;  // expression boxes: what is typed, by key
   std::map<std::string, Rect> rects_;
   Rect panel_{};
 };

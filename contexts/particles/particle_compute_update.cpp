@@ -198,9 +198,18 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   if (!equation && texture && !updateTextureProgram_)
     updateTextureProgram_ = std::make_unique<gl::Program>(
         gl::ProgramDesc{{"particle_update.comp"}, {itemsDefine(items_)}, {}});
-  const gl::Program& update = equation  ? *updateEquationProgram_
-                              : texture ? *updateTextureProgram_
-                                        : updateProgram_;
+  const gl::Program* expression = nullptr;
+  if (state.field.mode == FieldMode::Expression) {
+    std::vector<std::string> defines{itemsDefine(items_)};
+    if (!texture) defines.push_back("FIELD_BUFFER");
+    expression = expressionPrograms_.get(state, defines, [](const std::vector<std::string>& d) {
+      return gl::Program(gl::ProgramDesc{{"particle_update.comp"}, d, {}});
+    });
+  }
+  const gl::Program& update = expression ? *expression
+                              : equation ? *updateEquationProgram_
+                              : texture  ? *updateTextureProgram_
+                                         : updateProgram_;
 
   if (state.render.trailLength > 0) {
     if (!trails_) trails_ = std::make_unique<ParticleTrails>();

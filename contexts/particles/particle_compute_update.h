@@ -31,6 +31,7 @@
 
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
+#include "contexts/particles/expression_programs.h"
 #include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_environment.h"
 #include "contexts/particles/particle_trails.h"
@@ -90,6 +91,7 @@ class ParticleComputeUpdate final : public ParticleBackend {
   gl::Program prepareProgram_, emitProgram_, updateProgram_;
   std::unique_ptr<gl::Program> updateEquationProgram_;  // FIELD_EQUATION, made on first use
   std::unique_ptr<gl::Program> updateTextureProgram_;   // grids too large for a buffer, ditto
+  ExpressionPrograms expressionPrograms_;               // field.mode = expression
   int items_;                                           // records an invocation
   std::uint32_t spinLimit_;
   std::uint32_t tile_;  // records per tile

@@ -175,6 +175,14 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
     variant = std::make_unique<gl::Program>(
         makeProgram("particle_update.vert", "particle_update.geom", defines));
   }
+  const gl::Program* expression = nullptr;
+  if (state.field.mode == FieldMode::Expression)
+    expression = expressionPrograms_.get(
+        state, trails_ ? std::vector<std::string>{"TRAILS"} : std::vector<std::string>{},
+        [](const std::vector<std::string>& d) {
+          return makeProgram("particle_update.vert", "particle_update.geom", d);
+        });
+  const gl::Program& updateProgram = expression ? *expression : *variant;
 
   const BufferSet& in = sets_[std::size_t(current_)];
   BufferSet& out = sets_[std::size_t(1 - current_)];
@@ -200,7 +208,7 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
     if (trails_)
       glTransformFeedbackBufferRange(out.update.id(), 2, trails_->source(), GLintptr(born) * 4,
                                      GLsizeiptr(capacity_ - born) * 4);
-    variant->use();
+    updateProgram.use();
     glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, out.update.id());
     glBeginQueryIndexed(GL_TRANSFORM_FEEDBACK_PRIMITIVES_WRITTEN, 0,
                         survivorQueries_[std::size_t(slot)].id());

@@ -24,6 +24,7 @@
 
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
+#include "contexts/particles/expression_programs.h"
 #include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_environment.h"
 #include "contexts/particles/particle_trails.h"
@@ -88,6 +89,7 @@ class ParticleGeoUpdate final : public ParticleBackend {
   gl::Program emitProgram_;
   // The update: [field equation?  + 2 * trails?], each made on first use.
   std::array<std::unique_ptr<gl::Program>, 4> updatePrograms_;
+  ExpressionPrograms expressionPrograms_;   // field.mode = expression
   std::unique_ptr<ParticleTrails> trails_;  // while render.trail_length > 0
 
   ParticleEnvironment environment_{GpuField::Storage::Texture};

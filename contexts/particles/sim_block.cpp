@@ -35,6 +35,7 @@ int fillSimBlock(const SimBlockInputs& in, SimBlock& b) {
   }
   const std::vector<Obstacle> obstacles =
       collisionShapes(*in.state, in.terrain ? in.terrain : in.obstacleGround);
+  b.expression = glm::vec4(float(in.step.time), 0.0f, 0.0f, 0.0f);
   b.obstacleCount = glm::ivec4(int(obstacles.size()), 0, 0, 0);
   for (std::size_t i = 0; i < obstacles.size(); ++i) {
     const Obstacle& o = obstacles[i];

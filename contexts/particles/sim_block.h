@@ -49,6 +49,7 @@ struct alignas(16) SimBlock {
   glm::vec4 fieldBlend;  // x: weight towards the next frame, y: 1 when there is one,
                          // z: 1 when a frame has a validity mask
   EmitterBlock emitters[ParticleState::kMaxEmitters];
+  glm::vec4 expression;      // x: simulated seconds before this step
   glm::ivec4 obstacleCount;  // x: how many of obstacles[] are in use
   ObstacleBlock obstacles[kMaxCollisionShapes];
 };
@@ -56,7 +57,7 @@ struct alignas(16) SimBlock {
 static_assert(sizeof(EmitterBlock) == 80);
 static_assert(sizeof(ObstacleBlock) == 64);
 static_assert(sizeof(SimBlock) ==
-              16 * 16 + 80 * ParticleState::kMaxEmitters + 16 + 64 * kMaxCollisionShapes);
+              16 * 16 + 80 * ParticleState::kMaxEmitters + 32 + 64 * kMaxCollisionShapes);
 
 // Newborn particles per emission slot (one geometry-shader invocation).
 inline constexpr int kEmissionSlotSize = 64;

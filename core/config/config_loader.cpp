@@ -250,7 +250,7 @@ std::string relativeTo(const Reader& r, const std::string& path) {
 void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   r.checkKeys(t, "field",
               {"source", "name", "dims", "resolution", "bounds_min", "bounds_max", "params",
-               "offset", "scale", "yaw_deg", "rotation_deg", "mode"});
+               "offset", "scale", "yaw_deg", "rotation_deg", "mode", "expression"});
   f.source = r.string(t, "source", "field", f.source);
   if (f.source != "analytic") f.source = relativeTo(r, f.source);
   // A file's array or grid is chosen by name; without one, the file's only (or active) vector one.
@@ -640,11 +640,28 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
   if (const auto* t = section("gpu")) readGpu(r, *t, c.gpu);
   if (const auto* t = section("field")) {
     readField(r, *t, c.field);
-    // field.mode (texture | equation) is an attribute: the menu and --set change it too.
+    // field.mode (texture | equation | expression) is an attribute: the menu and --set change it
+    // too.
     if (const toml::value* mode = r.find(*t, "mode")) {
       toml::table one;
       one["mode"] = *mode;
       setAttributes(r, toml::value(one), "field.", c.particles);
+    }
+    // expression = ["-y", "x", "0.1"]: the field written at run time
+    // (field.expression_x, _y, _z); mode expression unless a mode is given.
+    if (const toml::value* e = r.find(*t, "expression")) {
+      if (!e->is_array() || e->as_array().size() != 3)
+        r.fail(*e, "field.expression", "expected three expressions, e.g. [\"-y\", \"x\", \"0.1\"]");
+      toml::table parts;
+      const char* names[3] = {"expression_x", "expression_y", "expression_z"};
+      for (std::size_t i = 0; i < 3; ++i) {
+        const toml::value& part = e->as_array()[i];
+        if (!part.is_string())
+          r.fail(part, "field.expression", "expected each component as a string");
+        parts[names[i]] = part;
+      }
+      setAttributes(r, toml::value(parts), "field.", c.particles);
+      if (!r.find(*t, "mode")) c.particles.field.mode = FieldMode::Expression;
     }
   }
   if (const auto* t = section("scene")) readScene(r, *t, c.scene);

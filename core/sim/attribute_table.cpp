@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/expr/field_expression.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -284,10 +285,23 @@ std::vector<AttributeInfo> makeEntries() {
                     "Field seconds per simulated second (time-varying fields)", FIELD(speed)));
   v.push_back(entry("field.loop", T::Bool, 0, 1, "", "Loop a time-varying field", FIELD(loop)));
   v.push_back(enumEntry(
-      "field.mode", {"texture", "equation"},
-      "Sample the field's grid (3D texture) or evaluate an analytic field's equation in the "
-      "shader (analytic fields only; others stay on the texture)",
+      "field.mode", {"texture", "equation", "expression"},
+      "Sample the field's grid (3D texture), evaluate an analytic field's equation in the "
+      "shader (analytic fields only; others stay on the texture), or the field written as "
+      "field.expression_x/_y/_z (the grid's bounds still bound the particles)",
       FIELD(mode)));
+  for (int c = 0; c < 3; ++c) {
+    const std::string axis(1, char('x' + c));
+    AttributeInfo e =
+        entry("field.expression_" + axis, T::Expression, 0, 0, "",
+              "The field's " + axis +
+                  " component with field.mode = expression: an expression of x, y, z, t, vx, vy, "
+                  "vz, age (sin, exp, min, ?:, ...; muParser's language)",
+              Ref<std::string>([c](ParticleState& s, int) -> std::string& {
+                return s.field.expression[std::size_t(c)];
+              }));
+    v.push_back(std::move(e));
+  }
   v.push_back(entry("field.paused", T::Bool, 0, 1, "",
                     "Hold the time-varying field's current frame", FIELD(paused)));
   // Streamlines of the current field from a seed rake (core/flow).
@@ -439,6 +453,8 @@ const char* typeName(AttributeType t) {
       return "one of the listed choices";
     case AttributeType::Name:
       return "a name";
+    case AttributeType::Expression:
+      return "an expression";
   }
   return "?";
 }
@@ -559,6 +575,13 @@ AttributeValue AttributeTable::parse(std::string_view key, std::string_view text
       if (std::find(info.choices.begin(), info.choices.end(), text) == info.choices.end())
         throw fail();
       return std::string(text);
+    case AttributeType::Expression: {
+      const std::optional<std::string> text2 = decodeName(text);
+      if (!text2 || text2->empty())
+        throw Error(concat("attribute '", key, "': '", text,
+                           "': expected an expression (spaces written %20 in one word)"));
+      return *text2;
+    }
     case AttributeType::Name: {
       const std::optional<std::string> name = decodeName(text);
       if (!name)
@@ -596,6 +619,7 @@ AttributeResult AttributeTable::validate(std::string_view key, const AttributeVa
         return std::size_t{3};
       case AttributeType::Enum:
       case AttributeType::Name:
+      case AttributeType::Expression:
         return std::size_t{4};
     }
     return std::size_t{0};
@@ -635,6 +659,20 @@ AttributeResult AttributeTable::validate(std::string_view key, const AttributeVa
       if (const std::string problem = nameProblem(std::get<std::string>(v)); !problem.empty())
         throw Error(concat("attribute '", key, "': ", problem));
       break;
+    case AttributeType::Expression: {
+      const std::string& text = std::get<std::string>(v);
+      for (const char ch : text)
+        if (ch < ' ' || ch > '~' || ch == '#' || ch == '%' || ch == '"' || ch == '\'')
+          throw Error(concat("attribute '", key, "': the character '", std::string(1, ch), "' in '",
+                             text, "'; expected an expression of printable characters"));
+      try {
+        const std::string component(1, key.empty() ? '?' : key.back());
+        FieldExpression::check(text, component.c_str());
+      } catch (const Error& e) {
+        throw Error(concat("attribute '", key, "': ", e.what()));
+      }
+      break;
+    }
     case AttributeType::Bool:
       break;
   }

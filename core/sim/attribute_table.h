@@ -35,8 +35,13 @@ namespace sandstorm {
 // spaces only between words; empty means "the default". Where a name must be
 // one word (session logs, --set) a space is written %20 and the empty name a
 // lone %: encodeName and AttributeTable::parse.
-enum class AttributeType { Bool, Int, Float, Vec3, Enum, Name };
+// Expression: one component of a field written at run time (muParser's
+// language, core/expr/field_expression.h), at most kMaxExpressionLength
+// characters; checked by both muParser and the GLSL translation. It travels
+// like a Name (spaces as %20 where one word is needed).
+enum class AttributeType { Bool, Int, Float, Vec3, Enum, Name, Expression };
 inline constexpr std::size_t kMaxNameLength = 64;
+inline constexpr std::size_t kMaxExpressionLength = 256;
 
 // Enum and Name values travel as strings ("rk4"), so they print and parse as written.
 using AttributeValue = std::variant<bool, int, float, glm::vec3, std::string>;

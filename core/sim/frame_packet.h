@@ -43,9 +43,10 @@ struct FieldUpdate {
 
 struct FramePacket {
   std::uint32_t frame = 0;
-  float dt = 0.0f;     // wall-clock seconds since the previous frame (measured once)
-  float simDt = 0.0f;  // simulated seconds: dt * time scale, 0 while paused
-  double time = 0.0;   // wall-clock seconds since the first frame
+  float dt = 0.0f;       // wall-clock seconds since the previous frame (measured once)
+  float simDt = 0.0f;    // simulated seconds: dt * time scale, 0 while paused
+  double time = 0.0;     // wall-clock seconds since the first frame
+  double simTime = 0.0;  // simulated seconds before this frame (the sum of earlier simDt)
   std::uint64_t seed = 0;
   bool reset = false;                              // drop every particle before this frame
   std::vector<StateChange> changes;                // take effect at this frame, before the update
@@ -58,7 +59,9 @@ struct FramePacket {
   float lodScale =
       1.0f;  // the level of detail's emission scale, already in `emission` (for display)
 
-  SimStep step() const { return SimStep{frame, simDt, Seed::from(seed), emission, fieldBlend}; }
+  SimStep step() const {
+    return SimStep{frame, simDt, Seed::from(seed), emission, fieldBlend, simTime};
+  }
 };
 
 }  // namespace sandstorm

@@ -14,7 +14,7 @@ constexpr std::uint32_t kPacketMagic = 0x50465353;  // "SSFP"
 constexpr std::uint32_t kFieldMagic = 0x46565353;   // "SSVF"
 // 2: equation terms, lod scale; 3: tracking, wand ray; 4: grid validity;
 // 5: field range; 6: vorticity; 7: colour grids by name, grids' scalar arrays.
-constexpr std::uint16_t kVersion = 7;
+constexpr std::uint16_t kVersion = 8;
 constexpr std::uint32_t kMaxScalarArrays = 256;
 
 // Limits far above any real packet, so a corrupt count cannot make us allocate gigabytes.
@@ -30,7 +30,7 @@ static_assert(std::is_same_v<std::variant_alternative_t<3, AttributeValue>, glm:
 // A member added to a type that travels must travel too: these sizes make the
 // build fail until the codec (and its test) learn the new member.
 #if defined(__x86_64__) && defined(__linux__)
-static_assert(sizeof(FramePacket) == 328, "FramePacket changed: update encodePacket/decodePacket");
+static_assert(sizeof(FramePacket) == 336, "FramePacket changed: update encodePacket/decodePacket");
 static_assert(sizeof(StateChange) == 152, "StateChange changed: update change()");
 static_assert(sizeof(Emitter) == 68, "Emitter changed: update emitter()");
 static_assert(sizeof(Viewer) == 48, "Viewer changed: update encodePacket/decodePacket");
@@ -337,6 +337,7 @@ std::vector<std::byte> encodePacket(const FramePacket& p, const FieldRefs& refs)
   w.f32(p.dt);
   w.f32(p.simDt);
   w.f64(p.time);
+  w.f64(p.simTime);
   w.u64(p.seed);
   w.boolean(p.reset);
   w.u32(std::uint32_t(p.changes.size()));
@@ -399,6 +400,7 @@ FramePacket decodePacket(std::span<const std::byte> bytes, FieldRefs* refs) {
   p.dt = r.f32("dt");
   p.simDt = r.f32("sim_dt");
   p.time = r.f64("time");
+  p.simTime = r.f64("sim time");
   p.seed = r.u64("seed");
   p.reset = r.boolean("reset");
   const std::uint32_t changes = r.u32("change count");

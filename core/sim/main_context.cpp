@@ -200,6 +200,8 @@ FramePacket MainContext::next() {
   pending_ = state_;
 
   packet.simDt = state_.sim.paused ? 0.0f : dt * state_.sim.timeScale;
+  packet.simTime = simTime_;
+  simTime_ += double(packet.simDt);
   if (timeline_) {
     // The field's clock runs on simulated time, at the playback speed.
     const FieldTimeline::Position at = timeline_->at(fieldTime_, state_.field.loop);

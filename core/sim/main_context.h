@@ -95,6 +95,7 @@ class MainContext {
   bool warnedMissingArray_ = false;
   std::uint32_t frame_ = 0;
   double time_ = 0.0;
+  double simTime_ = 0.0;  // simulated seconds so far
   Viewer viewer_;
   TrackingSample tracking_;
   WandRay wand_;

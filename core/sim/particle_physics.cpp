@@ -30,8 +30,8 @@ struct Slope {
   glm::vec3 dx, dv;
 };
 
-Slope derivative(const glm::vec3& x, const glm::vec3& v, const PhysicsInputs& in) {
-  const glm::vec3 f = fieldAt(x, in);
+Slope derivative(const glm::vec3& x, const glm::vec3& v, const PhysicsInputs& in, float age) {
+  const glm::vec3 f = fieldAt(x, in, v, age);
   switch (in.settings.motion) {
     case MotionModel::Tracer:
       return {f, glm::vec3(0.0f)};
@@ -45,10 +45,10 @@ Slope derivative(const glm::vec3& x, const glm::vec3& v, const PhysicsInputs& in
 
 // Moves (x, v) by one step. Euler is the thesis's: velocity first, then the
 // position with the new velocity (semi-implicit, which keeps orbits bounded).
-void integrate(glm::vec3& x, glm::vec3& v, const PhysicsInputs& in) {
+void integrate(glm::vec3& x, glm::vec3& v, const PhysicsInputs& in, float age) {
   const float h = in.dt;
   const bool tracer = in.settings.motion == MotionModel::Tracer;
-  const Slope k1 = derivative(x, v, in);
+  const Slope k1 = derivative(x, v, in, age);
   if (in.settings.integrator == Integrator::Euler) {
     v = tracer ? k1.dx : v + h * k1.dv;
     x = x + h * v;
@@ -56,13 +56,13 @@ void integrate(glm::vec3& x, glm::vec3& v, const PhysicsInputs& in) {
   }
   glm::vec3 dx, dv;
   const float h2 = 0.5f * h;
-  const Slope k2 = derivative(x + h2 * k1.dx, v + h2 * k1.dv, in);
+  const Slope k2 = derivative(x + h2 * k1.dx, v + h2 * k1.dv, in, age);
   if (in.settings.integrator == Integrator::RK2) {
     dx = k2.dx;
     dv = k2.dv;
   } else {
-    const Slope k3 = derivative(x + h2 * k2.dx, v + h2 * k2.dv, in);
-    const Slope k4 = derivative(x + h * k3.dx, v + h * k3.dv, in);
+    const Slope k3 = derivative(x + h2 * k2.dx, v + h2 * k2.dv, in, age);
+    const Slope k4 = derivative(x + h * k3.dx, v + h * k3.dv, in, age);
     dx = (k1.dx + 2.0f * k2.dx + 2.0f * k3.dx + k4.dx) * (1.0f / 6.0f);
     dv = (k1.dv + 2.0f * k2.dv + 2.0f * k3.dv + k4.dv) * (1.0f / 6.0f);
   }
@@ -85,11 +85,20 @@ Box particleDomain(const VectorField& field) {
 }
 
 glm::vec3 fieldAt(const glm::vec3& x, const PhysicsInputs& in) {
+  return fieldAt(x, in, glm::vec3(0.0f), 0.0f);
+}
+
+glm::vec3 fieldAt(const glm::vec3& x, const PhysicsInputs& in, const glm::vec3& v, float age) {
   glm::vec3 room(0.0f);
   if (in.field) {
     const glm::vec3 local = in.placement.toLocal(x);
-    glm::vec3 f = in.field->sample(local);
-    if (in.nextField) f = f + (in.nextField->sample(local) - f) * in.blend;
+    glm::vec3 f;
+    if (in.expression) {
+      f = in.expression->evaluate(local, in.time, v, age);
+    } else {
+      f = in.field->sample(local);
+      if (in.nextField) f = f + (in.nextField->sample(local) - f) * in.blend;
+    }
     room = in.settings.fieldStrength * in.placement.vectorToRoom(f);
   }
   if (in.obstacles.empty()) return room;
@@ -134,7 +143,8 @@ bool advance(Particle& p, const PhysicsInputs& in) {
 
   glm::vec3 x = p.position();
   glm::vec3 v = p.velocity();
-  integrate(x, v, in);
+  const float age = p.velocityKind.w - p.positionLife.w;  // lived, before this step
+  integrate(x, v, in, age);
 
   if (in.field) {
     const Box b = particleDomain(*in.field);

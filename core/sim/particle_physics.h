@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/expr/field_expression.h"
 #include "core/field/field_placement.h"
 #include "core/field/height_map.h"
 #include "core/field/vector_field.h"
@@ -33,6 +34,10 @@ struct PhysicsInputs {
   // The solids the flow goes around and particles bounce off
   // (collisionShapes(state, terrain), core/obstacles/collision_shapes.h).
   std::vector<Obstacle> obstacles;
+  // field.mode = expression: the field written at run time, in place of the
+  // grid (whose bounds still bound the particles); `time` is its t.
+  const FieldExpression* expression = nullptr;
+  float time = 0.0f;
 };
 
 // Particle number `index` of emitter `emitterIndex` born in frame `frame`.
@@ -57,5 +62,7 @@ Box particleDomain(const VectorField& field);
 // carried through the placement (zero when there is no field), and turned
 // around the obstacles (flowAroundObstacles).
 glm::vec3 fieldAt(const glm::vec3& x, const PhysicsInputs& in);
+// The same for a particle moving at v, `age` seconds old (a field expression reads them).
+glm::vec3 fieldAt(const glm::vec3& x, const PhysicsInputs& in, const glm::vec3& v, float age);
 
 }  // namespace sandstorm

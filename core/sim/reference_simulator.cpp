@@ -39,6 +39,12 @@ void ReferenceSimulator::step(const SimStep& step, const ParticleState& state) {
   in.settings = state.sim;
   in.dt = step.dt;
   in.obstacles = collisionShapes(state, terrain_.get());
+  if (state.field.mode == FieldMode::Expression) {
+    if (!expression_ || expression_->text() != state.field.expression)
+      expression_ = FieldExpression::compile(state.field.expression);
+    in.expression = expression_.get();
+    in.time = float(step.time);
+  }
 
   const std::size_t limit = std::min(std::size_t(std::max(state.sim.maximum, 0)), capacity_);
   const std::vector<std::uint32_t> granted = budget_.allocate(step.emission, limit, count2_);

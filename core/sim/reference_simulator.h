@@ -13,6 +13,7 @@
 #include <span>
 #include <vector>
 
+#include "core/expr/field_expression.h"
 #include "core/field/field_placement.h"
 #include "core/field/height_map.h"
 #include "core/field/vector_field.h"
@@ -43,6 +44,7 @@ class ReferenceSimulator {
   std::shared_ptr<const VectorField> field_, next_field_;
   FieldPlacement placement_;
   std::shared_ptr<const HeightMap> terrain_;
+  std::shared_ptr<const FieldExpression> expression_;  // field.mode = expression's, compiled
   std::vector<Particle> particles_;
   std::vector<Particle> next_;
   EmissionBudget budget_;

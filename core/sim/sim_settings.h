@@ -3,6 +3,7 @@
 // and documents every field, and is the only way they change at run time.
 #pragma once
 
+#include <array>
 #include <string>
 
 #include <glm/glm.hpp>
@@ -47,7 +48,8 @@ struct SimSettings {
 
 // How the particle update reads the field: the baked grid (a 3D texture) or,
 // for analytic fields, their equations evaluated in the shader.
-enum class FieldMode : int { Texture = 0, Equation = 1 };
+// Expression: the field written at run time (FieldPlayback::expression, core/expr).
+enum class FieldMode : int { Texture = 0, Equation = 1, Expression = 2 };
 
 // How a time-varying field plays (the main context's field clock).
 struct FieldPlayback {
@@ -56,6 +58,9 @@ struct FieldPlayback {
   bool paused = false;  // hold the current frame while particles move on
   FieldMode mode =
       FieldMode::Texture;  // Equation: only where the field has one (FieldUpdate::equation)
+  // Mode Expression: each component as an expression of x, y, z, t, vx, vy,
+  // vz, age (core/expr/field_expression.h), in the field's own coordinates.
+  std::array<std::string, 3> expression{"0", "0", "0"};
 };
 
 // Splat: billboards' look, drawn by a compute pass for small particles.

@@ -15,6 +15,7 @@ struct SimStep {
   Seed seed;
   std::vector<std::uint32_t> emission;  // Reeves' count per emitter (emission.h)
   float fieldBlend = 0.0f;              // weight towards a time-varying field's next frame
+  double time = 0.0;  // simulated seconds before this step (a field expression's t)
 };
 
 }  // namespace sandstorm
