@@ -51,6 +51,7 @@ FramePacket fullPacket() {
   p.dt = 1.0f / 60.0f;
   p.simDt = 0.5f / 60.0f;
   p.time = 70.123456789012345;
+  p.simTime = 35.0000000001;
   p.seed = 0xfedcba9876543210ull;
   p.reset = true;
   p.changes = {StateChange::set("sim.paused", true),
@@ -58,6 +59,7 @@ FramePacket fullPacket() {
                StateChange::set("render.size", 0.1f + 1e-9f),
                StateChange::set("sim.gravity", glm::vec3(0.1f, -0.0f, -9.81f)),
                StateChange::set("sim.integrator", std::string("rk4")),
+               StateChange::set("field.expression_z", std::string("0.1 + 0.05*x")),
                StateChange::addEmitter(oddEmitter()),
                StateChange::removeEmitter(3),
                StateChange::reset()};
@@ -133,6 +135,7 @@ TEST(FramePacketCodec, EveryMemberSurvivesARoundTrip) {
   EXPECT_TRUE(sameBits(q.dt, p.dt));
   EXPECT_TRUE(sameBits(q.simDt, p.simDt));
   EXPECT_TRUE(sameBits(q.time, p.time));
+  EXPECT_TRUE(sameBits(q.simTime, p.simTime));
   EXPECT_EQ(q.seed, p.seed);
   EXPECT_EQ(q.reset, p.reset);
   ASSERT_EQ(q.changes.size(), p.changes.size());
@@ -283,10 +286,10 @@ TEST(FramePacketCodec, CorruptBuffersAreClearErrors) {
   };
   expectError(with(0, 'X'), true, "not a frame packet");
   expectError(with(4, 9), true, "version 9");
-  expectError(with(34, 7), true, "reset");  // the reset flag: 0 or 1
-  expectError(with(38, 0xff), true,
+  expectError(with(42, 7), true, "reset");  // the reset flag: 0 or 1
+  expectError(with(46, 0xff), true,
               "change count");  // a huge count is refused before any allocation
-  expectError(with(39, 9), true, "change.kind");
+  expectError(with(47, 9), true, "change.kind");
   std::vector<std::byte> padded = good;
   padded.push_back(std::byte{0});
   expectError(padded, true, "unexpected bytes");
