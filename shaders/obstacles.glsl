@@ -69,6 +69,38 @@ float obstacleLayer(int i) {
   return min(o.positionRadius.w, o.halfSize.w);
 }
 
+// Whether x is certainly at least `layer` outside a box's or cylinder's
+// surface (beyondLayer in the C++).
+bool beyondLayer(int i, vec3 x, float layer) {
+  ObstacleBlock o = sim.obstacles[i];
+  precise vec3 d = abs(x - o.positionRadius.xyz);
+  if (o.shapeFlow.x == kObstacleBox) {
+    precise vec3 q = d - o.halfSize.xyz;
+    return q.x >= layer || q.y >= layer || q.z >= layer;
+  }
+  precise float reach = o.positionRadius.w + layer;
+  precise float qz = d.z - o.halfSize.w;
+  precise float rho2 = d.x * d.x + d.y * d.y;
+  precise float reach2 = reach * reach;
+  return qz >= layer || rho2 >= reach2;
+}
+
+// Whether x is certainly outside obstacle i (clearOf in the C++).
+bool clearOf(int i, vec3 x) {
+  ObstacleBlock o = sim.obstacles[i];
+  precise vec3 d = x - o.positionRadius.xyz;
+  if (o.shapeFlow.x == kObstacleBox) {
+    precise vec3 q = abs(d) - o.halfSize.xyz;
+    return q.x >= 0.0 || q.y >= 0.0 || q.z >= 0.0;
+  }
+  precise float r = 1.001 * o.positionRadius.w;
+  precise float r2 = r * r;
+  if (o.shapeFlow.x == kObstacleSphere) return dot3(d, d) >= r2;
+  precise float qz = abs(d.z) - o.halfSize.w;
+  precise float rho2 = d.x * d.x + d.y * d.y;
+  return qz >= 0.0 || rho2 >= r2;
+}
+
 // The height at which x's column leaves obstacle i upwards.
 float obstacleTop(int i, vec3 x) {
   ObstacleBlock o = sim.obstacles[i];
@@ -96,17 +128,17 @@ vec3 flowAroundObstacles(vec3 f, vec3 x, bool velocityField) {
       precise vec3 d = x - o.positionRadius.xyz;
       precise float r = sqrt(dot3(d, d));
       if (!(r > 0.0)) continue;
-      precise vec3 n = d / r;
+      precise vec3 n = d * (1.0 / r);
       float rc = max(r, o.positionRadius.w);
-      precise float R = o.positionRadius.w;
-      precise float k = (R * R * R) / (2.0 * (rc * rc * rc));
+      precise float k = o.halfSize.x / (rc * rc * rc);  // R^3 / 2 over rc^3
       precise float un = dot3(u, n);
       result = result + k * (u - (3.0 * un) * n);
       continue;
     }
+    float layer = obstacleLayer(i);
+    if (beyondLayer(i, x, layer)) continue;
     vec3 normal;
     float distance = obstacleSurface(i, x, normal);
-    float layer = obstacleLayer(i);
     if (!(distance < layer)) continue;
     precise float t = clamp(distance / layer, 0.0, 1.0);
     precise float w = 1.0 - t * t * (3.0 - 2.0 * t);
@@ -119,6 +151,7 @@ vec3 flowAroundObstacles(vec3 f, vec3 x, bool velocityField) {
 // After a step: out of obstacle i onto its surface, bouncing off it; with
 // `ground`, leaving it straight up where the nearest point is under the terrain.
 bool pushOutOfObstacle(int i, inout vec3 x, inout vec3 v, bool ground) {
+  if (clearOf(i, x)) return false;
   vec3 n;
   float distance = obstacleSurface(i, x, n);
   if (!(distance < 0.0)) return false;
@@ -149,7 +182,7 @@ void keepOutOfObstacles(inout vec3 x, inout vec3 v, bool ground) {
     bool rose = false;
     for (int i = 0; i < sim.obstacleCount.x; ++i) {
       vec3 n;
-      if (!(obstacleSurface(i, x, n) < 0.0)) continue;
+      if (clearOf(i, x) || !(obstacleSurface(i, x, n) < 0.0)) continue;
       precise float top = obstacleTop(i, x) + kObstacleMargin;
       x.z = top;
       rose = true;

@@ -18,7 +18,7 @@ const int kMaxObstacles = 16;
 
 struct ObstacleBlock {
   vec4 positionRadius;  // centre, w: radius (sphere, cylinder)
-  vec4 halfSize;        // a box's half extent, w: a cylinder's half height
+  vec4 halfSize;        // a box's half extent (a sphere's x: R^3 / 2), w: a cylinder's half height
   vec4 velocity;        // xyz, w: restitution
   ivec4 shapeFlow;      // shape, flow (1: the flow goes around it)
 };

@@ -1,5 +1,6 @@
 #include "contexts/particles/sim_block.h"
 
+#include "core/obstacles/obstacle_physics.h"
 #include "core/sim/particle_physics.h"
 
 namespace sandstorm {
@@ -41,7 +42,10 @@ int fillSimBlock(const SimBlockInputs& in, SimBlock& b) {
     const Obstacle& o = obstacles[i];
     ObstacleBlock& ob = b.obstacles[i];
     ob.positionRadius = glm::vec4(o.position, o.radius);
-    ob.halfSize = glm::vec4(0.5f * o.size, 0.5f * o.height);
+    // A sphere's x: its potential-flow strength R^3 / 2; a box's: half its size.
+    ob.halfSize = o.shape == ObstacleShape::Sphere
+                      ? glm::vec4(sphereStrength(o), 0.0f, 0.0f, 0.5f * o.height)
+                      : glm::vec4(0.5f * o.size, 0.5f * o.height);
     ob.velocity = glm::vec4(o.velocity, o.restitution);
     ob.shapeFlow = glm::ivec4(int(o.shape), o.flow ? 1 : 0, 0, 0);
   }

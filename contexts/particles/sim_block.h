@@ -27,7 +27,7 @@ struct alignas(16) EmitterBlock {
 
 struct alignas(16) ObstacleBlock {
   glm::vec4 positionRadius;
-  glm::vec4 halfSize;  // w: a cylinder's half height
+  glm::vec4 halfSize;  // a box's half extent (a sphere's x: R^3 / 2); w: a cylinder's half height
   glm::vec4 velocity;  // w: restitution
   glm::ivec4 shapeFlow;
 };

@@ -71,6 +71,32 @@ float layerThickness(const Obstacle& o) {
   return std::min(o.radius, 0.5f * o.height);
 }
 
+// Whether x is certainly at least `layer` from a box's or cylinder's surface
+// (outside), from its coordinates alone: most particles are, and this spares
+// them the distance's square root and divisions. Conservative, so skipping
+// changes nothing (the layer's weight is 0 there).
+bool beyondLayer(const Obstacle& o, const glm::vec3& x, float layer) {
+  const glm::vec3 d = glm::abs(x - o.position);
+  if (o.shape == ObstacleShape::Box) {
+    const glm::vec3 h = 0.5f * o.size;
+    return d.x - h.x >= layer || d.y - h.y >= layer || d.z - h.z >= layer;
+  }
+  const float reach = o.radius + layer;
+  return d.z - 0.5f * o.height >= layer || d.x * d.x + d.y * d.y >= reach * reach;
+}
+
+// Whether x is certainly outside the obstacle (not inside), cheaply.
+bool clearOf(const Obstacle& o, const glm::vec3& x) {
+  const glm::vec3 d = x - o.position;
+  if (o.shape == ObstacleShape::Box) {
+    const glm::vec3 q = glm::abs(d) - 0.5f * o.size;
+    return q.x >= 0.0f || q.y >= 0.0f || q.z >= 0.0f;
+  }
+  const float r = 1.001f * o.radius;
+  if (o.shape == ObstacleShape::Sphere) return dot3(d, d) >= r * r;
+  return std::abs(d.z) - 0.5f * o.height >= 0.0f || d.x * d.x + d.y * d.y >= r * r;
+}
+
 // The height at which x's column leaves the obstacle upwards.
 float topAbove(const Obstacle& o, const glm::vec3& x) {
   if (o.shape == ObstacleShape::Box) return o.position.z + 0.5f * o.size.z;
@@ -104,15 +130,16 @@ glm::vec3 flowAroundObstacles(const glm::vec3& f, const glm::vec3& x,
       const glm::vec3 d = x - o.position;
       const float r = std::sqrt(dot3(d, d));
       if (!(r > 0.0f)) continue;  // the centre: no direction
-      const glm::vec3 n = d / r;
+      const glm::vec3 n = d * (1.0f / r);
       const float rc = std::max(r, o.radius);
-      const float k = (o.radius * o.radius * o.radius) / (2.0f * (rc * rc * rc));
+      const float k = sphereStrength(o) / (rc * rc * rc);
       const float un = dot3(u, n);
       out = out + k * (u - (3.0f * un) * n);
       continue;
     }
-    const ObstacleSurface s = obstacleSurface(o, x);
     const float layer = layerThickness(o);
+    if (beyondLayer(o, x, layer)) continue;
+    const ObstacleSurface s = obstacleSurface(o, x);
     if (!(s.distance < layer)) continue;
     const float t = std::clamp(s.distance / layer, 0.0f, 1.0f);
     const float w = 1.0f - t * t * (3.0f - 2.0f * t);
@@ -123,6 +150,7 @@ glm::vec3 flowAroundObstacles(const glm::vec3& f, const glm::vec3& x,
 }
 
 bool pushOutOfObstacle(const Obstacle& o, glm::vec3& x, glm::vec3& v, const HeightMap* terrain) {
+  if (clearOf(o, x)) return false;
   const ObstacleSurface s = obstacleSurface(o, x);
   if (!(s.distance < 0.0f)) return false;
   glm::vec3 n = s.normal;
@@ -146,7 +174,7 @@ void keepOutOfObstacles(std::span<const Obstacle> obstacles, glm::vec3& x, glm::
   for (std::size_t pass = 0; pass < obstacles.size(); ++pass) {
     bool rose = false;
     for (const Obstacle& o : obstacles) {
-      if (!(obstacleSurface(o, x).distance < 0.0f)) continue;
+      if (clearOf(o, x) || !(obstacleSurface(o, x).distance < 0.0f)) continue;
       x.z = topAbove(o, x) + kObstacleMargin;
       rose = true;
     }

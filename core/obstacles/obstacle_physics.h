@@ -25,6 +25,11 @@ struct ObstacleSurface {
 };
 ObstacleSurface obstacleSurface(const Obstacle& o, const glm::vec3& x);
 
+// A sphere's potential-flow strength R^3 / 2 (the GPU block carries it).
+inline float sphereStrength(const Obstacle& o) {
+  return 0.5f * o.radius * o.radius * o.radius;
+}
+
 // The field value f at x with the flow around every obstacle whose `flow` is
 // on. `velocityField`: f is a velocity (tracer and drag models), so the stream
 // an obstacle sees is f minus its own velocity; a force field is turned as it is.

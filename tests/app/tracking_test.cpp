@@ -285,10 +285,10 @@ TEST(TrackedWand, AClickThroughTheRayResetsEveryWallAtTheRecordedFrame) {
   // sees some).
   std::string clicks;
   for (int k = 0; k < 11; ++k)
-    clicks += "[[key]]\ntime = " + std::to_string(1.0 + 0.8 * k) + "\nbuttons = 1\n[[key]]\ntime = " +
-              std::to_string(1.3 + 0.8 * k) + "\nbuttons = 0\n";
-  const auto path = test::writeFile(
-      dir / "click.toml", aimedPath({0.2f, 0.0f, 1.2f}, resetButtonInTheRoom(), clicks));
+    clicks += "[[key]]\ntime = " + std::to_string(1.0 + 0.8 * k) +
+              "\nbuttons = 1\n[[key]]\ntime = " + std::to_string(1.3 + 0.8 * k) + "\nbuttons = 0\n";
+  const auto path = test::writeFile(dir / "click.toml",
+                                    aimedPath({0.2f, 0.0f, 1.2f}, resetButtonInTheRoom(), clicks));
   const auto r = test::runTracked(
       "--config " + config.string() + " --frames 300 --record " + (dir / "session.log").string() +
           " --hash-log " + (dir / "hashes.txt").string(),
