@@ -5,7 +5,10 @@
 #include "rng.glsl"
 #include "sim_block.glsl"
 #include "particle_birth.glsl"
+#ifdef OBSTACLES
+#include "terrain_height.glsl"
 #include "obstacles.glsl"
+#endif
 
 layout(local_size_x = 256) in;
 layout(std430, binding = 2) writeonly restrict buffer OutPositionLife { vec4 outPositionLife[]; };
@@ -23,7 +26,9 @@ void main() {
     ++e;
   }
   Particle p = birth(e, g - first);
+#ifdef OBSTACLES
   settleNewborn(p);
+#endif
   outPositionLife[g] = p.positionLife;
   outVelocityKind[g] = p.velocityKind;
 }

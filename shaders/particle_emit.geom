@@ -8,7 +8,10 @@
 #include "rng.glsl"
 #include "sim_block.glsl"
 #include "particle_birth.glsl"
+#ifdef OBSTACLES
+#include "terrain_height.glsl"
 #include "obstacles.glsl"
+#endif
 
 #ifndef SLOT_SIZE
 #define SLOT_SIZE 64
@@ -30,7 +33,9 @@ void main() {
   int last = min(first + kSlotSize, sim.emitters[e].shapeCount.y);
   for (int k = first; k < last; ++k) {
     Particle p = birth(e, uint(k));
+#ifdef OBSTACLES
     settleNewborn(p);
+#endif
     outPositionLife = p.positionLife;
     outVelocityKind = p.velocityKind;
     EmitVertex();

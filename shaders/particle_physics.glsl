@@ -1,6 +1,8 @@
 // Per-particle rules: the twin of core/sim/particle_physics.cpp. Same
 // operations in the same order, all `precise`, so llvmpipe and the CPU agree to
-// the bit. Needs sim_block.glsl. FIELD_EQUATION programs evaluate the analytic
+// the bit. Needs sim_block.glsl. OBSTACLES programs add the obstacles
+// (obstacles.glsl); the others ignore them, so a host with obstacles in the
+// block must use an OBSTACLES program. FIELD_EQUATION programs evaluate the analytic
 // field (field_equation.glsl) in place of the texture.
 
 #include "field_equation.glsl"
@@ -118,12 +120,17 @@ vec3 toRoom(vec3 local) {
   return room;
 }
 
+#include "terrain_height.glsl"
+#ifdef OBSTACLES
 #include "obstacles.glsl"
+#endif
 
 vec3 fieldAt(vec3 x) {
   if (sim.fieldDims.w == 0) {
-    if (sim.obstacleCount.x == 0) return vec3(0.0);
-    return flowAroundObstacles(vec3(0.0), x, sim.modes.x != kMotionForce);
+#ifdef OBSTACLES
+    if (sim.obstacleCount.x != 0) return flowAroundObstacles(vec3(0.0), x, sim.modes.x != kMotionForce);
+#endif
+    return vec3(0.0);
   }
   vec3 local = toLocal(x);
 #if defined(FIELD_EXPRESSION)
@@ -138,8 +145,10 @@ vec3 fieldAt(vec3 x) {
   }
 #endif
   precise vec3 f = sim.stepParams.y * ((placementRotation() * s) * sim.placementOffset.w);
-  if (sim.obstacleCount.x == 0) return f;
-  return flowAroundObstacles(f, x, sim.modes.x != kMotionForce);
+#ifdef OBSTACLES
+  if (sim.obstacleCount.x != 0) return flowAroundObstacles(f, x, sim.modes.x != kMotionForce);
+#endif
+  return f;
 }
 
 struct Slope {
@@ -252,7 +261,9 @@ bool advance(inout Particle p) {
     }
   }
   // Out of the obstacles, in order (after the ground, which they stand on).
+#ifdef OBSTACLES
   if (sim.obstacleCount.x != 0) keepOutOfObstacles(x, v, ground);
+#endif
   p.positionLife = vec4(x, life);
   p.velocityKind = vec4(v, p.velocityKind.w);
   return true;

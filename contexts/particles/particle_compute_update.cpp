@@ -191,25 +191,25 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   glNamedBufferSubData(simBlock_.id(), 0, sizeof(block), &block);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, simBlock_.id());
   const bool equation = environment_.bind(state);
-  if (equation && !updateEquationProgram_)
-    updateEquationProgram_ = std::make_unique<gl::Program>(
-        gl::ProgramDesc{{"particle_update.comp"}, {"FIELD_EQUATION", itemsDefine(items_)}, {}});
   const bool texture = environment_.gridStorage() == GpuField::Storage::Texture;
-  if (!equation && texture && !updateTextureProgram_)
-    updateTextureProgram_ = std::make_unique<gl::Program>(
-        gl::ProgramDesc{{"particle_update.comp"}, {itemsDefine(items_)}, {}});
+  const bool obstacles = block.obstacleCount.x > 0;
+  // The update's variant: how it reads the field, and the obstacles' code
+  // only where there are obstacles (it costs registers even unused).
+  std::vector<std::string> defines{itemsDefine(items_)};
+  if (equation)
+    defines.push_back("FIELD_EQUATION");
+  else if (!texture)
+    defines.push_back("FIELD_BUFFER");
+  if (obstacles) defines.push_back("OBSTACLES");
+  const auto make = [](const std::vector<std::string>& d) {
+    return gl::Program(gl::ProgramDesc{{"particle_update.comp"}, d, {}});
+  };
   const gl::Program* expression = nullptr;
-  if (state.field.mode == FieldMode::Expression) {
-    std::vector<std::string> defines{itemsDefine(items_)};
-    if (!texture) defines.push_back("FIELD_BUFFER");
-    expression = expressionPrograms_.get(state, defines, [](const std::vector<std::string>& d) {
-      return gl::Program(gl::ProgramDesc{{"particle_update.comp"}, d, {}});
-    });
-  }
-  const gl::Program& update = expression ? *expression
-                              : equation ? *updateEquationProgram_
-                              : texture  ? *updateTextureProgram_
-                                         : updateProgram_;
+  if (state.field.mode == FieldMode::Expression)
+    expression = expressionPrograms_.get(state, defines, make);
+  const gl::Program& update = expression                            ? *expression
+                              : !equation && !texture && !obstacles ? updateProgram_
+                                                                    : variant(defines, make);
 
   if (state.render.trailLength > 0) {
     if (!trails_) trails_ = std::make_unique<ParticleTrails>();
@@ -234,8 +234,14 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   glDispatchCompute(1, 1, 1);
 
   if (born > 0) {
-    emitProgram_.use();
-    glProgramUniform1ui(emitProgram_.id(), 1, born);
+    const gl::Program& emit =
+        obstacles ? variant({"OBSTACLES"},
+                            [](const std::vector<std::string>& d) {
+                              return gl::Program(gl::ProgramDesc{{"particle_emit.comp"}, d, {}});
+                            })
+                  : emitProgram_;
+    emit.use();
+    glProgramUniform1ui(emit.id(), 1, born);
     glDispatchCompute((born + 255) / 256, 1, 1);
   }
 
@@ -305,6 +311,17 @@ std::vector<Particle> ParticleComputeUpdate::readBack() const {
   for (std::size_t i = 0; i < count; ++i)
     particles[i] = Particle{pos[i], vel[i]};
   return particles;
+}
+
+const gl::Program& ParticleComputeUpdate::variant(
+    const std::vector<std::string>& defines,
+    const std::function<gl::Program(const std::vector<std::string>&)>& make) {
+  std::string key;
+  for (const std::string& d : defines)
+    key += d + ";";
+  std::unique_ptr<gl::Program>& p = variants_[key];
+  if (!p) p = std::make_unique<gl::Program>(make(defines));
+  return *p;
 }
 
 }  // namespace sandstorm

@@ -26,7 +26,10 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <map>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "contexts/gl/objects.h"
@@ -89,10 +92,14 @@ class ParticleComputeUpdate final : public ParticleBackend {
   const std::uint32_t* historyMap_ = nullptr;
   std::array<gl::Sync, kHistory> historyFence_;
   gl::Program prepareProgram_, emitProgram_, updateProgram_;
-  std::unique_ptr<gl::Program> updateEquationProgram_;  // FIELD_EQUATION, made on first use
-  std::unique_ptr<gl::Program> updateTextureProgram_;   // grids too large for a buffer, ditto
-  ExpressionPrograms expressionPrograms_;               // field.mode = expression
-  int items_;                                           // records an invocation
+  // Programs other than the plain update, by their defines (FIELD_EQUATION,
+  // grids too large for a buffer, OBSTACLES), made on first use.
+  std::map<std::string, std::unique_ptr<gl::Program>> variants_;
+  const gl::Program& variant(
+      const std::vector<std::string>& defines,
+      const std::function<gl::Program(const std::vector<std::string>&)>& make);
+  ExpressionPrograms expressionPrograms_;  // field.mode = expression
+  int items_;                              // records an invocation
   std::uint32_t spinLimit_;
   std::uint32_t tile_;  // records per tile
 

@@ -166,23 +166,31 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
     trails_.reset();
   }
   // The update program: with the field's equation or not, capturing each
-  // survivor's source record for the trails or not (made on first use).
-  std::unique_ptr<gl::Program>& variant = updatePrograms_[(equation ? 1 : 0) + (trails_ ? 2 : 0)];
+  // survivor's source record for the trails or not, with the obstacles' code
+  // only where there are obstacles (it costs registers even unused); made on
+  // first use.
+  const bool obstacles = block.obstacleCount.x > 0;
+  std::unique_ptr<gl::Program>& variant =
+      updatePrograms_[(equation ? 1 : 0) + (trails_ ? 2 : 0) + (obstacles ? 4 : 0)];
+  std::vector<std::string> defines;
+  if (trails_) defines.push_back("TRAILS");
+  if (obstacles) defines.push_back("OBSTACLES");
   if (!variant) {
-    std::vector<std::string> defines;
-    if (equation) defines.push_back("FIELD_EQUATION");
-    if (trails_) defines.push_back("TRAILS");
+    std::vector<std::string> all = defines;
+    if (equation) all.push_back("FIELD_EQUATION");
     variant = std::make_unique<gl::Program>(
-        makeProgram("particle_update.vert", "particle_update.geom", defines));
+        makeProgram("particle_update.vert", "particle_update.geom", all));
   }
   const gl::Program* expression = nullptr;
   if (state.field.mode == FieldMode::Expression)
-    expression = expressionPrograms_.get(
-        state, trails_ ? std::vector<std::string>{"TRAILS"} : std::vector<std::string>{},
-        [](const std::vector<std::string>& d) {
-          return makeProgram("particle_update.vert", "particle_update.geom", d);
-        });
+    expression = expressionPrograms_.get(state, defines, [](const std::vector<std::string>& d) {
+      return makeProgram("particle_update.vert", "particle_update.geom", d);
+    });
   const gl::Program& updateProgram = expression ? *expression : *variant;
+  if (obstacles && !emitObstacleProgram_)
+    emitObstacleProgram_ = std::make_unique<gl::Program>(
+        makeProgram("particle_emit.vert", "particle_emit.geom", {"OBSTACLES"}));
+  const gl::Program& emitProgram = obstacles ? *emitObstacleProgram_ : emitProgram_;
 
   const BufferSet& in = sets_[std::size_t(current_)];
   BufferSet& out = sets_[std::size_t(1 - current_)];
@@ -190,7 +198,7 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
   glEnable(GL_RASTERIZER_DISCARD);
 
   if (born > 0) {
-    emitProgram_.use();
+    emitProgram.use();
     glBindTransformFeedback(GL_TRANSFORM_FEEDBACK, out.emit.id());
     glBeginTransformFeedback(GL_POINTS);
     glBindVertexArray(emptyVao_.id());

@@ -88,9 +88,10 @@ class ParticleGeoUpdate final : public ParticleBackend {
   gl::Renderbuffer dummyColor_;
   gl::Program emitProgram_;
   // The update: [field equation?  + 2 * trails?], each made on first use.
-  std::array<std::unique_ptr<gl::Program>, 4> updatePrograms_;
-  ExpressionPrograms expressionPrograms_;   // field.mode = expression
-  std::unique_ptr<ParticleTrails> trails_;  // while render.trail_length > 0
+  std::array<std::unique_ptr<gl::Program>, 8> updatePrograms_;  // equation, trails, obstacles
+  std::unique_ptr<gl::Program> emitObstacleProgram_;            // OBSTACLES, on first use
+  ExpressionPrograms expressionPrograms_;                       // field.mode = expression
+  std::unique_ptr<ParticleTrails> trails_;                      // while render.trail_length > 0
 
   ParticleEnvironment environment_{GpuField::Storage::Texture};
 

@@ -9,7 +9,7 @@ namespace sandstorm {
 
 SliceRenderer::SliceRenderer(SceneField& field)
     : field_(field),
-      program_(std::vector<std::string>{"slice.vert", "slice.frag"}),
+      program_(std::vector<std::string>{"slice.vert", "slice.frag"}, {"OBSTACLES"}),
       arrowProgram_(std::vector<std::string>{"slice_arrows.vert", "slice_arrows.frag"}),
       emptyVao_(gl::createVertexArray()),
       arrowVao_(gl::createVertexArray()) {}

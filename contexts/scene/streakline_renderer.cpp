@@ -8,7 +8,7 @@ namespace sandstorm {
 
 StreaklineRenderer::StreaklineRenderer(SceneField& field)
     : field_(field),
-      update_(std::vector<std::string>{"streak_update.comp"}),
+      update_(std::vector<std::string>{"streak_update.comp"}, {"OBSTACLES"}),
       draw_(std::vector<std::string>{"streakline.vert", "trail.frag"}),
       emptyVao_(gl::createVertexArray()) {}
 

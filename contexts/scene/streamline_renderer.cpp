@@ -26,7 +26,7 @@ bool StreamlineRenderer::Key::operator==(const Key& o) const {
 }
 
 StreamlineRenderer::StreamlineRenderer(SceneField& field)
-    : trace_(std::vector<std::string>{"streamline_trace.comp"}),
+    : trace_(std::vector<std::string>{"streamline_trace.comp"}, {"OBSTACLES"}),
       ribbons_(std::vector<std::string>{"streamline.vert", "streamline.geom", "streamline.frag"}),
       lines_(std::vector<std::string>{"streamline.vert", "streamline.frag"}, {"LINES"}),
       emptyVao_(gl::createVertexArray()),
