@@ -2,7 +2,9 @@
 // operation, all `precise`. Needs sim_block.glsl and terrain_height.glsl.
 // Included only by OBSTACLES programs: the obstacles' code takes registers
 // that the update needs even when none is there (an H100's update at 10^7
-// went from 0.76 to 1.09 ms with it compiled in and unused).
+// went from 0.76 to 1.09 ms with it compiled in and unused). The block's
+// fields are read where they are used: a copy of an ObstacleBlock would hold
+// sixteen registers.
 
 const int kObstacleSphere = 0, kObstacleBox = 1, kObstacleCylinder = 2;
 const float kObstacleMargin = 1e-4;
@@ -18,17 +20,16 @@ float dot3(vec3 a, vec3 b) {
 
 // The signed distance to obstacle i's surface (negative inside); `normal`: the outward normal.
 float obstacleSurface(int i, vec3 x, out vec3 normal) {
-  ObstacleBlock o = sim.obstacles[i];
-  precise vec3 d = x - o.positionRadius.xyz;
+  precise vec3 d = x - sim.obstacles[i].positionRadius.xyz;
   normal = vec3(0.0, 0.0, 1.0);
-  if (o.shapeFlow.x == kObstacleSphere) {
+  if (sim.obstacles[i].shapeFlow.x == kObstacleSphere) {
     precise float r = sqrt(dot3(d, d));
     if (r > 0.0) normal = d / r;
-    precise float distance = r - o.positionRadius.w;
+    precise float distance = r - sim.obstacles[i].positionRadius.w;
     return distance;
   }
-  if (o.shapeFlow.x == kObstacleBox) {
-    precise vec3 q = abs(d) - o.halfSize.xyz;
+  if (sim.obstacles[i].shapeFlow.x == kObstacleBox) {
+    precise vec3 q = abs(d) - sim.obstacles[i].halfSize.xyz;
     if (q.x > 0.0 || q.y > 0.0 || q.z > 0.0) {
       vec3 m = max(q, vec3(0.0));
       precise float length = sqrt(dot3(m, m));
@@ -49,8 +50,8 @@ float obstacleSurface(int i, vec3 x, out vec3 normal) {
     precise vec3 r = vec3(d.x / rho, d.y / rho, 0.0);
     radial = r;
   }
-  precise float qr = rho - o.positionRadius.w;
-  precise float qz = abs(d.z) - o.halfSize.w;
+  precise float qr = rho - sim.obstacles[i].positionRadius.w;
+  precise float qz = abs(d.z) - sim.obstacles[i].halfSize.w;
   vec3 up = vec3(0.0, 0.0, obstacleSign(d.z));
   if (qr > 0.0 || qz > 0.0) {
     float mr = max(qr, 0.0), mz = max(qz, 0.0);
@@ -65,22 +66,20 @@ float obstacleSurface(int i, vec3 x, out vec3 normal) {
 
 // A box's or cylinder's boundary layer: its smallest half-extent.
 float obstacleLayer(int i) {
-  ObstacleBlock o = sim.obstacles[i];
-  if (o.shapeFlow.x == kObstacleBox) return min(min(o.halfSize.x, o.halfSize.y), o.halfSize.z);
-  return min(o.positionRadius.w, o.halfSize.w);
+  if (sim.obstacles[i].shapeFlow.x == kObstacleBox) return min(min(sim.obstacles[i].halfSize.x, sim.obstacles[i].halfSize.y), sim.obstacles[i].halfSize.z);
+  return min(sim.obstacles[i].positionRadius.w, sim.obstacles[i].halfSize.w);
 }
 
 // Whether x is certainly at least `layer` outside a box's or cylinder's
 // surface (beyondLayer in the C++).
 bool beyondLayer(int i, vec3 x, float layer) {
-  ObstacleBlock o = sim.obstacles[i];
-  precise vec3 d = abs(x - o.positionRadius.xyz);
-  if (o.shapeFlow.x == kObstacleBox) {
-    precise vec3 q = d - o.halfSize.xyz;
+  precise vec3 d = abs(x - sim.obstacles[i].positionRadius.xyz);
+  if (sim.obstacles[i].shapeFlow.x == kObstacleBox) {
+    precise vec3 q = d - sim.obstacles[i].halfSize.xyz;
     return q.x >= layer || q.y >= layer || q.z >= layer;
   }
-  precise float reach = o.positionRadius.w + layer;
-  precise float qz = d.z - o.halfSize.w;
+  precise float reach = sim.obstacles[i].positionRadius.w + layer;
+  precise float qz = d.z - sim.obstacles[i].halfSize.w;
   precise float rho2 = d.x * d.x + d.y * d.y;
   precise float reach2 = reach * reach;
   return qz >= layer || rho2 >= reach2;
@@ -88,50 +87,47 @@ bool beyondLayer(int i, vec3 x, float layer) {
 
 // Whether x is certainly outside obstacle i (clearOf in the C++).
 bool clearOf(int i, vec3 x) {
-  ObstacleBlock o = sim.obstacles[i];
-  precise vec3 d = x - o.positionRadius.xyz;
-  if (o.shapeFlow.x == kObstacleBox) {
-    precise vec3 q = abs(d) - o.halfSize.xyz;
+  precise vec3 d = x - sim.obstacles[i].positionRadius.xyz;
+  if (sim.obstacles[i].shapeFlow.x == kObstacleBox) {
+    precise vec3 q = abs(d) - sim.obstacles[i].halfSize.xyz;
     return q.x >= 0.0 || q.y >= 0.0 || q.z >= 0.0;
   }
-  precise float r = 1.001 * o.positionRadius.w;
+  precise float r = 1.001 * sim.obstacles[i].positionRadius.w;
   precise float r2 = r * r;
-  if (o.shapeFlow.x == kObstacleSphere) return dot3(d, d) >= r2;
-  precise float qz = abs(d.z) - o.halfSize.w;
+  if (sim.obstacles[i].shapeFlow.x == kObstacleSphere) return dot3(d, d) >= r2;
+  precise float qz = abs(d.z) - sim.obstacles[i].halfSize.w;
   precise float rho2 = d.x * d.x + d.y * d.y;
   return qz >= 0.0 || rho2 >= r2;
 }
 
 // The height at which x's column leaves obstacle i upwards.
 float obstacleTop(int i, vec3 x) {
-  ObstacleBlock o = sim.obstacles[i];
-  if (o.shapeFlow.x == kObstacleBox) {
-    precise float top = o.positionRadius.z + o.halfSize.z;
+  if (sim.obstacles[i].shapeFlow.x == kObstacleBox) {
+    precise float top = sim.obstacles[i].positionRadius.z + sim.obstacles[i].halfSize.z;
     return top;
   }
-  if (o.shapeFlow.x == kObstacleCylinder) {
-    precise float top = o.positionRadius.z + o.halfSize.w;
+  if (sim.obstacles[i].shapeFlow.x == kObstacleCylinder) {
+    precise float top = sim.obstacles[i].positionRadius.z + sim.obstacles[i].halfSize.w;
     return top;
   }
-  precise float dx = x.x - o.positionRadius.x, dy = x.y - o.positionRadius.y;
-  precise float across = max(o.positionRadius.w * o.positionRadius.w - (dx * dx + dy * dy), 0.0);
-  precise float top = o.positionRadius.z + sqrt(across);
+  precise float dx = x.x - sim.obstacles[i].positionRadius.x, dy = x.y - sim.obstacles[i].positionRadius.y;
+  precise float across = max(sim.obstacles[i].positionRadius.w * sim.obstacles[i].positionRadius.w - (dx * dx + dy * dy), 0.0);
+  precise float top = sim.obstacles[i].positionRadius.z + sqrt(across);
   return top;
 }
 
 vec3 flowAroundObstacles(vec3 f, vec3 x, bool velocityField) {
   precise vec3 result = f;
   for (int i = 0; i < sim.obstacleCount.x; ++i) {
-    ObstacleBlock o = sim.obstacles[i];
-    if (o.shapeFlow.y == 0) continue;
-    precise vec3 u = velocityField ? f - o.velocity.xyz : f;
-    if (o.shapeFlow.x == kObstacleSphere) {
-      precise vec3 d = x - o.positionRadius.xyz;
+    if (sim.obstacles[i].shapeFlow.y == 0) continue;
+    precise vec3 u = velocityField ? f - sim.obstacles[i].velocity.xyz : f;
+    if (sim.obstacles[i].shapeFlow.x == kObstacleSphere) {
+      precise vec3 d = x - sim.obstacles[i].positionRadius.xyz;
       precise float r = sqrt(dot3(d, d));
       if (!(r > 0.0)) continue;
       precise vec3 n = d * (1.0 / r);
-      float rc = max(r, o.positionRadius.w);
-      precise float k = o.halfSize.x / (rc * rc * rc);  // R^3 / 2 over rc^3
+      float rc = max(r, sim.obstacles[i].positionRadius.w);
+      precise float k = sim.obstacles[i].halfSize.x / (rc * rc * rc);  // R^3 / 2 over rc^3
       precise float un = dot3(u, n);
       result = result + k * (u - (3.0 * un) * n);
       continue;
@@ -156,7 +152,6 @@ bool pushOutOfObstacle(int i, inout vec3 x, inout vec3 v, bool ground) {
   vec3 n;
   float distance = obstacleSurface(i, x, n);
   if (!(distance < 0.0)) return false;
-  ObstacleBlock o = sim.obstacles[i];
   precise vec3 y = x + (kObstacleMargin - distance) * n;
   if (ground && y.z < terrainHeight(y.xy)) {
     precise float top = obstacleTop(i, x) + kObstacleMargin;
@@ -164,9 +159,9 @@ bool pushOutOfObstacle(int i, inout vec3 x, inout vec3 v, bool ground) {
     n = vec3(0.0, 0.0, 1.0);
   }
   x = y;
-  precise float vn = dot3(v - o.velocity.xyz, n);
+  precise float vn = dot3(v - sim.obstacles[i].velocity.xyz, n);
   if (vn < 0.0) {
-    precise vec3 bounced = v - ((1.0 + o.velocity.w) * vn) * n;
+    precise vec3 bounced = v - ((1.0 + sim.obstacles[i].velocity.w) * vn) * n;
     v = bounced;
   }
   return true;
