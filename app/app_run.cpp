@@ -571,6 +571,7 @@ void AppRun::reportProgress(Clock::time_point now) {
 }
 
 void AppRun::runOneProcess() {
+  log::info("the walls are ready: frames begin");
   while (!interrupted && (lastFrame_ < 0 || frames_ <= lastFrame_)) {
     const auto now = Clock::now();
     const float dt = std::chrono::duration<float>(now - lastTick_).count();
@@ -611,6 +612,7 @@ void AppRun::runCluster() {
   // this rank's walls and every other rank, and only then do the walls present
   // f - 1. Stop requests travel with the swap, so every rank stops at the same frame.
   cluster_->watchInterrupt(&interrupted);
+  log::info("the walls are ready: frames begin");
   for (;;) {
     const auto now = Clock::now();
     const float dt = std::chrono::duration<float>(now - lastTick_).count();

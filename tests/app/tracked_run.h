@@ -63,7 +63,10 @@ inline TrackedResult runTrackedCommand(const std::string& command, const std::st
   char buffer[4096];
   while (std::fgets(buffer, sizeof buffer, app)) {
     r.output += buffer;
-    if (!started && r.output.find("listening for DTrack") != std::string::npos) {
+    // The tracker starts once the app listens and its walls are ready (their
+    // shaders compiled), so its scripted times count from the first frames.
+    if (!started && r.output.find("listening for DTrack") != std::string::npos &&
+        r.output.find("frames begin") != std::string::npos) {
       started = true;
       const std::string sim = std::string("cd '") + SANDSTORM_SOURCE_DIR + "' && ('" +
                               SANDSTORM_TRACKER_SIM + "' " + simArgs + " > '" + simLog.string() +
