@@ -2,7 +2,8 @@
 // operations in the same order, all `precise`, so llvmpipe and the CPU agree to
 // the bit. Needs sim_block.glsl. OBSTACLES programs add the obstacles
 // (obstacles.glsl); the others ignore them, so a host with obstacles in the
-// block must use an OBSTACLES program. FIELD_EQUATION programs evaluate the analytic
+// block must use an OBSTACLES program, or an OBSTACLE_FLOW one (the flow
+// around them only) followed by obstacle_collide.comp (the compute backend). FIELD_EQUATION programs evaluate the analytic
 // field (field_equation.glsl) in place of the texture.
 
 #include "field_equation.glsl"
@@ -121,13 +122,13 @@ vec3 toRoom(vec3 local) {
 }
 
 #include "terrain_height.glsl"
-#ifdef OBSTACLES
+#if defined(OBSTACLES) || defined(OBSTACLE_FLOW)
 #include "obstacles.glsl"
 #endif
 
 vec3 fieldAt(vec3 x) {
   if (sim.fieldDims.w == 0) {
-#ifdef OBSTACLES
+#if defined(OBSTACLES) || defined(OBSTACLE_FLOW)
     if (sim.obstacleCount.x != 0) return flowAroundObstacles(vec3(0.0), x, sim.modes.x != kMotionForce);
 #endif
     return vec3(0.0);
@@ -145,7 +146,7 @@ vec3 fieldAt(vec3 x) {
   }
 #endif
   precise vec3 f = sim.stepParams.y * ((placementRotation() * s) * sim.placementOffset.w);
-#ifdef OBSTACLES
+#if defined(OBSTACLES) || defined(OBSTACLE_FLOW)
   if (sim.obstacleCount.x != 0) return flowAroundObstacles(f, x, sim.modes.x != kMotionForce);
 #endif
   return f;

@@ -200,7 +200,9 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
     defines.push_back("FIELD_EQUATION");
   else if (!texture)
     defines.push_back("FIELD_BUFFER");
-  if (obstacles) defines.push_back("OBSTACLES");
+  // The flow around the obstacles is the update's; putting particles out of
+  // them is a pass of its own (obstacle_collide.comp), below.
+  if (obstacles) defines.push_back("OBSTACLE_FLOW");
   const auto make = [](const std::vector<std::string>& d) {
     return gl::Program(gl::ProgramDesc{{"particle_update.comp"}, d, {}});
   };
@@ -255,6 +257,18 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, control_.id());
   glDispatchComputeIndirect(kDispatchOffset);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+
+  if (obstacles) {
+    // The last step of advance(): out of the obstacles, over the output set.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+    const gl::Program& collide = variant({"COLLIDE"}, [](const std::vector<std::string>&) {
+      return gl::Program(std::vector<std::string>{"obstacle_collide.comp"});
+    });
+    collide.use();
+    glProgramUniform1i(collide.id(), 0, 1 - current_);
+    const std::size_t groups = std::min<std::size_t>((capacity_ + 255) / 256, 4096);
+    glDispatchCompute(GLuint(std::max<std::size_t>(groups, 1)), 1, 1);
+  }
 
   // Drawing, the next update and the count's copy all read what this wrote.
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
