@@ -193,6 +193,9 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   const bool equation = environment_.bind(state);
   const bool texture = environment_.gridStorage() == GpuField::Storage::Texture;
   const bool obstacles = block.obstacleCount.x > 0;
+  bool flow = false;  // some obstacle turns the flow
+  for (int i = 0; i < block.obstacleCount.x; ++i)
+    flow = flow || block.obstacles[i].shapeFlow.y != 0;
   // The update's variant: how it reads the field, and the obstacles' code
   // only where there are obstacles (it costs registers even unused).
   std::vector<std::string> defines{itemsDefine(items_)};
@@ -202,16 +205,16 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
     defines.push_back("FIELD_BUFFER");
   // The flow around the obstacles is the update's; putting particles out of
   // them is a pass of its own (obstacle_collide.comp), below.
-  if (obstacles) defines.push_back("OBSTACLE_FLOW");
+  if (flow) defines.push_back("OBSTACLE_FLOW");
   const auto make = [](const std::vector<std::string>& d) {
     return gl::Program(gl::ProgramDesc{{"particle_update.comp"}, d, {}});
   };
   const gl::Program* expression = nullptr;
   if (state.field.mode == FieldMode::Expression)
     expression = expressionPrograms_.get(state, defines, make);
-  const gl::Program& update = expression                            ? *expression
-                              : !equation && !texture && !obstacles ? updateProgram_
-                                                                    : variant(defines, make);
+  const gl::Program& update = expression                       ? *expression
+                              : !equation && !texture && !flow ? updateProgram_
+                                                               : variant(defines, make);
 
   if (state.render.trailLength > 0) {
     if (!trails_) trails_ = std::make_unique<ParticleTrails>();
