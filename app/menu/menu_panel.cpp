@@ -207,7 +207,9 @@ void MenuPanel::emitterSection(const ParticleState& state) {
 // The obstacles of the configuration ([[obstacle]]): pick one, edit it. The
 // mouse drags them on the floor and the wand grabs them too.
 void MenuPanel::obstacleSection(const ParticleState& state) {
-  if (!ImGui::CollapsingHeader("Obstacles")) return;
+  const bool open = ImGui::CollapsingHeader("Obstacles");
+  remember("header:obstacles");
+  if (!open) return;
   const int count = int(state.obstacles.size());
   if (count == 0) {
     ImGui::TextWrapped("none: add [[obstacle]] tables to the configuration");

@@ -94,6 +94,28 @@ TEST(Windows, ASliderInTheMenuChangesEveryWallAtTheSameFrame) {
   EXPECT_TRUE(std::filesystem::exists(dir / "front.png"));
 }
 
+// The menu's Obstacles section (config/obstacle.toml, the Mali scene, in a
+// window): a click opens it, a click on the radius slider changes obstacle 0
+// at a frame the session records.
+TEST(Windows, TheObstaclesSectionOfTheMenuMovesTheSphere) {
+  if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
+  const auto dir = test::scratchDir("menu-obstacles");
+  const auto r = runUnderXvfb(
+      "--config config/obstacle.toml --frames 40 --menu-script tests/data/obstacle-menu.script "
+      "--record " +
+      (dir / "s.session").string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::string radius;
+  int moves = 0;
+  for (const std::string& line : readLines(dir / "s.session")) {
+    if (line.find(" set obstacle.0.radius ") != std::string::npos) radius = line;
+    moves += line.find(" set obstacle.0.position ") != std::string::npos;
+  }
+  ASSERT_FALSE(radius.empty()) << "the slider click did not change obstacle.0.radius\n" << r.output;
+  EXPECT_NE(radius.substr(radius.rfind(' ') + 1), "0.55");  // the file's radius changed
+  EXPECT_GE(moves, 38);  // and the sphere moved along its path every frame
+}
+
 TEST(Windows, FourWindowsCanShareOneSimulation) {
   if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
   const auto dir = test::scratchDir("shared-windows");
