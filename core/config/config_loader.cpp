@@ -371,6 +371,10 @@ void readObstacles(const Reader& r, const toml::value& list, AppConfig& c) {
             r.vec<3>(r.require(k, "position", name + ".path[]"), name + ".path[].position")};
         if (!(key.time > last)) r.fail(time, name + ".path[].time", "expected times that increase");
         if (!(std::abs(key.time) < 1e7f)) r.fail(time, name + ".path[].time", "expected seconds");
+        for (int a = 0; a < 3; ++a)
+          if (!(std::abs(key.position[a]) <= 1e6f))
+            r.fail(*r.find(k, "position"), name + ".path[].position",
+                   "expected metres within +-10^6 (the room's and an obstacle's range)");
         last = key.time;
         keys.push_back(key);
       }

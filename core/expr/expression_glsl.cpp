@@ -151,16 +151,15 @@ class Translator {
   }
 
   std::string number() {
-    const std::size_t start = at_;
     double value = 0.0;
     const auto [end, ec] = std::from_chars(s_.data() + at_, s_.data() + s_.size(), value);
-    if (ec != std::errc() || !std::isfinite(value)) fail("a number out of range");
+    if (ec != std::errc() || !(std::abs(value) <= 3.4e38))
+      fail("a number beyond a float's range (the GPU computes in float)");
     at_ = std::size_t(end - s_.data());
     char text[40];
     std::snprintf(text, sizeof text, "%.9g", value);
     std::string out = text;
     if (out.find_first_of(".en") == std::string::npos) out += ".0";
-    (void)start;
     return out;
   }
 

@@ -64,6 +64,7 @@ TEST(FieldExpression, EveryBadTextIsRefusedWithTheComponentAndThePlace) {
            {"(x", "at the end:"},
            {"atan2(x)", "at "},
            {"x y", "at 2:"},
+           {"1e40 * x", "beyond a float's range"},
        }) {
     SCOPED_TRACE(c.text);
     const std::string message = refusal({c.text, "0", "0"});

@@ -357,6 +357,10 @@ flow = false
                         "position = [1, 0, 0]}]\n")
                 .find("obstacle.0.path[].time: expected times that increase"),
             std::string::npos);
+  EXPECT_NE(configError("[[obstacle]]\npath = [{time = 0, position = [0, 0, 0]}, {time = 1, "
+                        "position = [0, 1e9, 0]}]\n")
+                .find("obstacle.0.path[].position: expected metres within"),
+            std::string::npos);
   EXPECT_NE(configError("[[obstacle]]\npath = [{time = 1, position = [0, 0, 0]}]\n")
                 .find("a path needs at least two keyframes"),
             std::string::npos);
