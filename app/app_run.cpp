@@ -1,7 +1,5 @@
 #include "app/app_run.h"
 
-#include "core/obstacles/collision_shapes.h"
-
 #include <algorithm>
 #include <atomic>
 #include <csignal>
@@ -14,6 +12,7 @@
 #include "core/cave/wall_views.h"
 #include "core/flow/probe.h"
 #include "core/flow/streamline_vtp.h"
+#include "core/obstacles/collision_shapes.h"
 #include "core/sim/particle_dump.h"
 #include "core/util/error.h"
 #include "core/util/log.h"

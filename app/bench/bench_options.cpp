@@ -49,6 +49,19 @@ std::vector<std::string> split(const std::string& text) {
   return out;
 }
 
+// A list of switches, "0,1": each 0 (`zero`) or 1 (`one`), at least one.
+std::vector<int> zeroOrOne(const std::string& option, const std::string& text, const char* zero,
+                           const char* one) {
+  std::vector<int> out;
+  for (const std::string& t : split(text)) {
+    if (t != "0" && t != "1")
+      throw Error(concat(option, ": ", t, ": expected 0 (", zero, ") or 1 (", one, ")"));
+    out.push_back(t == "1");
+  }
+  if (out.empty()) throw Error(concat(option, ": expected 0,1, 0 or 1"));
+  return out;
+}
+
 double number(const std::string& text, const std::string& option) {
   char* end = nullptr;
   const double v = std::strtod(text.c_str(), &end);
@@ -164,19 +177,9 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       }
       if (o.wallTrails.empty()) throw Error(concat(a, ": expected lengths, e.g. 0,16"));
     } else if (a == "--wall-shadows") {
-      o.wallShadows.clear();
-      for (const std::string& t : split(v)) {
-        if (t != "0" && t != "1") throw Error(concat(a, ": ", t, ": expected 0 (off) or 1 (on)"));
-        o.wallShadows.push_back(t == "1");
-      }
-      if (o.wallShadows.empty()) throw Error(concat(a, ": expected 0,1, 0 or 1"));
+      o.wallShadows = zeroOrOne(a, v, "off", "on");
     } else if (a == "--update-obstacles") {
-      o.updateObstacles.clear();
-      for (const std::string& t : split(v)) {
-        if (t != "0" && t != "1") throw Error(concat(a, ": ", t, ": expected 0 (none) or 1"));
-        o.updateObstacles.push_back(t == "1");
-      }
-      if (o.updateObstacles.empty()) throw Error(concat(a, ": expected 0,1, 0 or 1"));
+      o.updateObstacles = zeroOrOne(a, v, "none", "obstacles");
     } else if (a == "--wall-backend") {
       o.wallBackend = v;
       checkChoices({v}, {"tf-gs", "compute"}, a);

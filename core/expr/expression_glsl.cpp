@@ -105,31 +105,20 @@ class Translator {
     }
   }
 
-  std::string additive() {
-    std::string a = multiplicative();
+  // Operands of `next` joined left to right by the one-character operators `ops`.
+  template <class Next>
+  std::string leftToRight(std::string_view ops, Next next) {
+    std::string a = (this->*next)();
     for (;;) {
       skip();
-      if (at_ < s_.size() && (s_[at_] == '+' || s_[at_] == '-')) {
-        const char op = s_[at_++];
-        a = wrap(a + " " + op + " " + multiplicative());
-      } else {
-        return a;
-      }
+      if (at_ == s_.size() || ops.find(s_[at_]) == std::string_view::npos) return a;
+      const char op = s_[at_++];
+      a = wrap(a + " " + op + " " + (this->*next)());
     }
   }
 
-  std::string multiplicative() {
-    std::string a = unary();
-    for (;;) {
-      skip();
-      if (at_ < s_.size() && (s_[at_] == '*' || s_[at_] == '/')) {
-        const char op = s_[at_++];
-        a = wrap(a + " " + op + " " + unary());
-      } else {
-        return a;
-      }
-    }
-  }
+  std::string additive() { return leftToRight("+-", &Translator::multiplicative); }
+  std::string multiplicative() { return leftToRight("*/", &Translator::unary); }
 
   std::string unary() {
     skip();
