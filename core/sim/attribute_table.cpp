@@ -123,6 +123,9 @@ std::optional<std::string> decodeName(std::string_view word) {
 #define PROBE(member)                   \
   Ref<decltype(ProbeSettings::member)>( \
       [](ParticleState & s, int) -> auto& { return s.probe.member; })
+#define MOLECULES(member)                  \
+  Ref<decltype(MoleculeSettings::member)>( \
+      [](ParticleState & s, int) -> auto& { return s.molecules.member; })
 #define EMITTER(member)           \
   Ref<decltype(Emitter::member)>( \
       [](ParticleState & s, int e) -> auto& { return s.emitters[std::size_t(e)].member; })
@@ -370,7 +373,55 @@ std::vector<AttributeInfo> makeEntries() {
       entry("helicopter.x", T::Float, -90, 90, "m", "Rotor hub position east", HELICOPTER(x)));
   v.push_back(
       entry("helicopter.y", T::Float, -90, 90, "m", "Rotor hub position north", HELICOPTER(y)));
+  // Molecules (core/molecules): small mass-spring meshes that turn with the flow.
+  v.push_back(entry("molecules.maximum", T::Int, 0, 1e8f, "molecules",
+                    "Soft limit on live molecules", MOLECULES(maximum)));
+  v.push_back(entry("molecules.complexity", T::Int, MoleculeSettings::kMinComplexity,
+                    MoleculeSettings::kMaxComplexity, "particles",
+                    "Particles a molecule: 2 a rod, 3 a triangle, 4 a tetrahedron, 5-8 a chain "
+                    "(a change starts the molecules afresh)",
+                    MOLECULES(complexity)));
+  v.push_back(entry("molecules.size", T::Float, 1e-3f, 10, "m", "Rest length of a molecule's edges",
+                    MOLECULES(size)));
+  v.push_back(entry("molecules.stiffness", T::Float, 0, 1, "",
+                    "Share of the springs' stretch removed each step (1: rigid)",
+                    MOLECULES(stiffness)));
+  v.push_back(entry("molecules.damping", T::Float, 0, 1, "",
+                    "Share of the members' motion against their molecule's removed each step "
+                    "(stretching and spin)",
+                    MOLECULES(damping)));
+  v.push_back(entry("molecules.iterations", T::Int, 1, 16, "", "Spring restoration passes a step",
+                    MOLECULES(iterations)));
+  v.push_back(entry("molecules.head_mass", T::Float, 1, 100, "",
+                    "Mass of a molecule's first particle (the others weigh 1)",
+                    MOLECULES(headMass)));
+  v.push_back(entry("molecules.vane", T::Float, 0, 1, "",
+                    "How much more of the flow a molecule's tail feels than its head, so it "
+                    "trails downstream like a wind vane (0: it only stretches with the flow)",
+                    MOLECULES(vane)));
+  v.push_back(entry("molecules.repulsion", T::Bool, 0, 1, "",
+                    "Molecules closer than the repulsion radius push apart (a GPU grid)",
+                    MOLECULES(repulsion)));
+  v.push_back(entry("molecules.repulsion_radius", T::Float, 1e-3f, 10, "m",
+                    "Centres closer than this push apart", MOLECULES(repulsionRadius)));
+  v.push_back(entry("molecules.repulsion_strength", T::Float, 0, 1, "",
+                    "Share of the overlap removed each step", MOLECULES(repulsionStrength)));
+  v.push_back(entry("molecules.width", T::Float, 1e-4f, 1, "m", "Drawn width of rods and chains",
+                    MOLECULES(width)));
+  v.push_back(entry("molecules.push", T::Bool, 0, 1, "",
+                    "The push tool blows molecules away from its point (wand button, mouse)",
+                    MOLECULES(push)));
+  v.push_back(entry("molecules.push_position", T::Vec3, -kBig, kBig, "m",
+                    "Where the push tool blows from", MOLECULES(pushPosition)));
+  v.push_back(entry("molecules.push_radius", T::Float, 1e-3f, 100, "m", "The push reaches this far",
+                    MOLECULES(pushRadius)));
+  v.push_back(entry("molecules.push_speed", T::Float, 0, 100, "m/s",
+                    "The push's outward wind at its point (none at its reach)",
+                    MOLECULES(pushSpeed)));
   // Emitters.
+  v.push_back(enumEntry("emitter.*.kind", {"particles", "molecules"},
+                        "What it emits: particles, or molecules (the rate then counts molecules)",
+                        EMITTER(kind)));
   v.push_back(enumEntry("emitter.*.shape", {"box", "sphere", "disc", "point"},
                         "Emission area shape", EMITTER(shape)));
   v.push_back(entry("emitter.*.position", T::Vec3, -kBig, kBig, "m", "Centre of the emission area",
@@ -428,6 +479,7 @@ std::vector<AttributeInfo> makeEntries() {
 #undef HELICOPTER
 #undef FIELD
 #undef EMITTER
+#undef MOLECULES
 #undef OBSTACLE
 
 struct Alias {

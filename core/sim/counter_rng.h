@@ -18,6 +18,7 @@ enum class RngStream : std::uint32_t {
   kBirth = 0,          // box position and lifetime of a new particle
   kBirthBall = 16,     // 16..31: candidates for a position in a sphere or disc
   kVelocityBall = 32,  // 32..47: candidates for the velocity spread
+  kMoleculeTurn = 48,  // 48..79: candidates for a newborn molecule's rotation
   kEmission = 255,     // emission count of an emitter (main context)
 };
 

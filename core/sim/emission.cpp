@@ -24,4 +24,12 @@ std::vector<std::uint32_t> emissionCounts(const ParticleState& state, float dt, 
   return counts;
 }
 
+std::vector<std::uint32_t> emissionOfKind(const std::vector<std::uint32_t>& counts,
+                                          const ParticleState& state, EmitterKind kind) {
+  std::vector<std::uint32_t> mine = counts;
+  for (std::size_t e = 0; e < mine.size(); ++e)
+    if (e >= state.emitters.size() || state.emitters[e].kind != kind) mine[e] = 0;
+  return mine;
+}
+
 }  // namespace sandstorm

@@ -24,4 +24,9 @@ std::uint32_t emissionCount(const Emitter& emitter, float dt, Seed seed, std::ui
 std::vector<std::uint32_t> emissionCounts(const ParticleState& state, float dt, Seed seed,
                                           std::uint32_t frame);
 
+// `counts` with the emitters of another kind at 0: the particle systems take
+// the particle emitters' counts, the molecule systems the molecule emitters'.
+std::vector<std::uint32_t> emissionOfKind(const std::vector<std::uint32_t>& counts,
+                                          const ParticleState& state, EmitterKind kind);
+
 }  // namespace sandstorm

@@ -9,6 +9,10 @@ namespace sandstorm {
 
 enum class EmitterShape : int { Box = 0, Sphere = 1, Disc = 2, Point = 3 };
 
+// What it emits: single particles, or molecules (core/molecules/: small
+// mass-spring meshes born and killed whole; the rate then counts molecules).
+enum class EmitterKind : int { Particles = 0, Molecules = 1 };
+
 struct Emitter {
   EmitterShape shape = EmitterShape::Box;
   glm::vec3 position{0.0f};
@@ -23,6 +27,7 @@ struct Emitter {
   glm::vec3 velocity{0.0f};       // m/s at birth
   float spread = 0.0f;            // m/s: radius of the random ball added to velocity
   bool enabled = true;
+  EmitterKind kind = EmitterKind::Particles;
 };
 
 }  // namespace sandstorm

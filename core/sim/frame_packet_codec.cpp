@@ -14,7 +14,7 @@ constexpr std::uint32_t kPacketMagic = 0x50465353;  // "SSFP"
 constexpr std::uint32_t kFieldMagic = 0x46565353;   // "SSVF"
 // 2: equation terms, lod scale; 3: tracking, wand ray; 4: grid validity;
 // 5: field range; 6: vorticity; 7: colour grids by name, grids' scalar arrays.
-constexpr std::uint16_t kVersion = 8;
+constexpr std::uint16_t kVersion = 9;
 constexpr std::uint32_t kMaxScalarArrays = 256;
 
 // Limits far above any real packet, so a corrupt count cannot make us allocate gigabytes.
@@ -31,8 +31,8 @@ static_assert(std::is_same_v<std::variant_alternative_t<3, AttributeValue>, glm:
 // build fail until the codec (and its test) learn the new member.
 #if defined(__x86_64__) && defined(__linux__)
 static_assert(sizeof(FramePacket) == 336, "FramePacket changed: update encodePacket/decodePacket");
-static_assert(sizeof(StateChange) == 152, "StateChange changed: update change()");
-static_assert(sizeof(Emitter) == 68, "Emitter changed: update emitter()");
+static_assert(sizeof(StateChange) == 160, "StateChange changed: update change()");
+static_assert(sizeof(Emitter) == 72, "Emitter changed: update emitter()");
 static_assert(sizeof(Viewer) == 48, "Viewer changed: update encodePacket/decodePacket");
 static_assert(sizeof(TrackingSample) == 124, "TrackingSample changed: update tracking()");
 static_assert(sizeof(WandRay) == 40, "WandRay changed: update wandRay()");
@@ -104,6 +104,7 @@ void emitter(ByteWriter& w, const Emitter& e) {
   vec3(w, e.velocity);
   w.f32(e.spread);
   w.boolean(e.enabled);
+  w.i32(int(e.kind));
 }
 
 Emitter emitter(ByteReader& r) {
@@ -124,6 +125,10 @@ Emitter emitter(ByteReader& r) {
   e.velocity = vec3(r, "change.emitter.velocity");
   e.spread = r.f32("change.emitter.spread");
   e.enabled = r.boolean("change.emitter.enabled");
+  const std::int32_t kind = r.i32("change.emitter.kind");
+  if (kind < 0 || kind > int(EmitterKind::Molecules))
+    r.fail("change.emitter.kind", concat("expected 0..1 (particles, molecules), got ", kind));
+  e.kind = EmitterKind(kind);
   return e;
 }
 

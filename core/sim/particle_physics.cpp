@@ -30,8 +30,10 @@ struct Slope {
   glm::vec3 dx, dv;
 };
 
-Slope derivative(const glm::vec3& x, const glm::vec3& v, const PhysicsInputs& in, float age) {
-  const glm::vec3 f = fieldAt(x, in, v, age);
+Slope derivative(const glm::vec3& x, const glm::vec3& v, const PhysicsInputs& in, float age,
+                 const Forcing& forcing) {
+  glm::vec3 f = fieldAt(x, in, v, age);
+  if (forcing.push) f = f + pushWind(x, forcing);
   switch (in.settings.motion) {
     case MotionModel::Tracer:
       return {f, glm::vec3(0.0f)};
@@ -43,12 +45,23 @@ Slope derivative(const glm::vec3& x, const glm::vec3& v, const PhysicsInputs& in
   return {glm::vec3(0.0f), glm::vec3(0.0f)};
 }
 
+}  // namespace
+
+glm::vec3 pushWind(const glm::vec3& x, const Forcing& forcing) {
+  const glm::vec3 d = x - forcing.pushCentre;
+  const float r = std::sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  if (!(r > 0.0f && r < forcing.pushRadius)) return glm::vec3(0.0f);
+  const float s = forcing.pushSpeed * (1.0f - r / forcing.pushRadius) / r;
+  return d * s;
+}
+
 // Moves (x, v) by one step. Euler is the thesis's: velocity first, then the
 // position with the new velocity (semi-implicit, which keeps orbits bounded).
-void integrate(glm::vec3& x, glm::vec3& v, const PhysicsInputs& in, float age) {
+void integrate(glm::vec3& x, glm::vec3& v, const PhysicsInputs& in, float age,
+               const Forcing& forcing) {
   const float h = in.dt;
   const bool tracer = in.settings.motion == MotionModel::Tracer;
-  const Slope k1 = derivative(x, v, in, age);
+  const Slope k1 = derivative(x, v, in, age, forcing);
   if (in.settings.integrator == Integrator::Euler) {
     v = tracer ? k1.dx : v + h * k1.dv;
     x = x + h * v;
@@ -56,13 +69,13 @@ void integrate(glm::vec3& x, glm::vec3& v, const PhysicsInputs& in, float age) {
   }
   glm::vec3 dx, dv;
   const float h2 = 0.5f * h;
-  const Slope k2 = derivative(x + h2 * k1.dx, v + h2 * k1.dv, in, age);
+  const Slope k2 = derivative(x + h2 * k1.dx, v + h2 * k1.dv, in, age, forcing);
   if (in.settings.integrator == Integrator::RK2) {
     dx = k2.dx;
     dv = k2.dv;
   } else {
-    const Slope k3 = derivative(x + h2 * k2.dx, v + h2 * k2.dv, in, age);
-    const Slope k4 = derivative(x + h * k3.dx, v + h * k3.dv, in, age);
+    const Slope k3 = derivative(x + h2 * k2.dx, v + h2 * k2.dv, in, age, forcing);
+    const Slope k4 = derivative(x + h * k3.dx, v + h * k3.dv, in, age, forcing);
     dx = (k1.dx + 2.0f * k2.dx + 2.0f * k3.dx + k4.dx) * (1.0f / 6.0f);
     dv = (k1.dv + 2.0f * k2.dv + 2.0f * k3.dv + k4.dv) * (1.0f / 6.0f);
   }
@@ -70,8 +83,6 @@ void integrate(glm::vec3& x, glm::vec3& v, const PhysicsInputs& in, float age) {
   // A tracer's velocity is the slope it moved along.
   v = tracer ? dx : v + h * dv;
 }
-
-}  // namespace
 
 Box particleDomain(const VectorField& field) {
   Box b = field.bounds();

@@ -40,6 +40,24 @@ struct PhysicsInputs {
   float time = 0.0f;
 };
 
+// What a body's member feels besides the field (molecules, core/molecules/):
+// the push tool's wind (pushWind). A particle's is the default: nothing.
+struct Forcing {
+  bool push = false;
+  glm::vec3 pushCentre{0.0f};
+  float pushRadius = 0.0f;
+  float pushSpeed = 0.0f;
+};
+
+// The push tool's wind at x: outward from its centre at pushSpeed there,
+// falling linearly to 0 at pushRadius; 0 beyond (and at the centre).
+glm::vec3 pushWind(const glm::vec3& x, const Forcing& forcing);
+
+// Moves (x, v) through the field by one step of in.settings' motion model and
+// integrator (advance()'s motion, without ageing or bounds).
+void integrate(glm::vec3& x, glm::vec3& v, const PhysicsInputs& in, float age,
+               const Forcing& forcing = {});
+
 // Particle number `index` of emitter `emitterIndex` born in frame `frame`.
 Particle birth(const Emitter& emitter, Seed seed, std::uint32_t frame, std::uint32_t emitterIndex,
                std::uint32_t index);

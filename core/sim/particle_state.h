@@ -8,6 +8,7 @@
 
 #include "core/flow/slice_settings.h"
 #include "core/flow/streamline_settings.h"
+#include "core/molecules/molecule_settings.h"
 #include "core/obstacles/obstacle.h"
 #include "core/sim/emitter.h"
 #include "core/sim/helicopter.h"
@@ -26,6 +27,7 @@ struct ParticleState {
   StreamlineSettings streamlines;
   SliceSettings slice;
   ProbeSettings probe;
+  MoleculeSettings molecules;
   std::vector<Emitter> emitters{Emitter{}};
   std::vector<Obstacle> obstacles;  // from the configuration's [[obstacle]]s; edited, never added
 };

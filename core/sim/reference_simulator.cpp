@@ -2,9 +2,8 @@
 
 #include <algorithm>
 
-#include "core/obstacles/collision_shapes.h"
 #include "core/sim/capacity.h"
-
+#include "core/sim/emission.h"
 #include "core/sim/particle_physics.h"
 
 namespace sandstorm {
@@ -18,36 +17,21 @@ ReferenceSimulator::ReferenceSimulator(std::size_t capacity, std::size_t capacit
 void ReferenceSimulator::setField(std::shared_ptr<const VectorField> field,
                                   const FieldPlacement& placement,
                                   std::shared_ptr<const VectorField> next) {
-  field_ = std::move(field);
-  next_field_ = std::move(next);
-  placement_ = placement;
+  world_.setField(std::move(field), placement, std::move(next));
 }
 
 void ReferenceSimulator::setTerrain(std::shared_ptr<const HeightMap> terrain) {
-  terrain_ = std::move(terrain);
+  world_.setTerrain(std::move(terrain));
 }
 
 void ReferenceSimulator::step(const SimStep& step, const ParticleState& state) {
   capacity_ = grownCapacity(capacity_, state.sim.maximum, capacityLimit_);
   if (step.dt <= 0.0f) return;
-  PhysicsInputs in;
-  in.field = field_.get();
-  in.nextField = next_field_.get();
-  in.blend = step.fieldBlend;
-  in.placement = placement_;
-  in.terrain = terrain_.get();
-  in.settings = state.sim;
-  in.dt = step.dt;
-  in.obstacles = collisionShapes(state, terrain_.get());
-  if (state.field.mode == FieldMode::Expression) {
-    if (!expression_ || expression_->text() != state.field.expression)
-      expression_ = FieldExpression::compile(state.field.expression);
-    in.expression = expression_.get();
-    in.time = float(step.time);
-  }
+  const PhysicsInputs in = world_.inputs(step, state);
 
   const std::size_t limit = std::min(std::size_t(std::max(state.sim.maximum, 0)), capacity_);
-  const std::vector<std::uint32_t> granted = budget_.allocate(step.emission, limit, count2_);
+  const std::vector<std::uint32_t> granted = budget_.allocate(
+      emissionOfKind(step.emission, state, EmitterKind::Particles), limit, count2_);
   next_.clear();
   std::uint32_t born = 0;
   for (std::size_t e = 0; e < granted.size() && e < state.emitters.size(); ++e) {

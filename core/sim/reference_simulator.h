@@ -6,6 +6,7 @@
 //      the EmissionBudget grants;
 //   2. every particle of the old buffer, in order, ages and moves (advance());
 //      the dead are dropped, the survivors follow the newborn in their order.
+// Emitters of kind molecules are MoleculeReference's (core/molecules/).
 // It exists for tests and as the readable specification of the update.
 #pragma once
 
@@ -13,13 +14,10 @@
 #include <span>
 #include <vector>
 
-#include "core/expr/field_expression.h"
-#include "core/field/field_placement.h"
-#include "core/field/height_map.h"
-#include "core/field/vector_field.h"
 #include "core/sim/emission_budget.h"
 #include "core/sim/particle.h"
 #include "core/sim/particle_state.h"
+#include "core/sim/physics_world.h"
 #include "core/sim/sim_step.h"
 
 namespace sandstorm {
@@ -41,10 +39,7 @@ class ReferenceSimulator {
  private:
   std::size_t capacity_;
   std::size_t capacityLimit_;
-  std::shared_ptr<const VectorField> field_, next_field_;
-  FieldPlacement placement_;
-  std::shared_ptr<const HeightMap> terrain_;
-  std::shared_ptr<const FieldExpression> expression_;  // field.mode = expression's, compiled
+  PhysicsWorld world_;
   std::vector<Particle> particles_;
   std::vector<Particle> next_;
   EmissionBudget budget_;

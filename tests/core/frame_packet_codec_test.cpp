@@ -42,6 +42,7 @@ Emitter oddEmitter() {
   e.velocity = {0.1f, -0.2f, 4};
   e.spread = 0.3f;
   e.enabled = false;
+  e.kind = EmitterKind::Molecules;
   return e;
 }
 
@@ -123,6 +124,7 @@ void expectSameEmitter(const Emitter& a, const Emitter& b) {
   EXPECT_EQ(a.velocity, b.velocity);
   EXPECT_EQ(a.spread, b.spread);
   EXPECT_EQ(a.enabled, b.enabled);
+  EXPECT_EQ(a.kind, b.kind);
 }
 
 TEST(FramePacketCodec, EveryMemberSurvivesARoundTrip) {
@@ -285,7 +287,7 @@ TEST(FramePacketCodec, CorruptBuffersAreClearErrors) {
     return b;
   };
   expectError(with(0, 'X'), true, "not a frame packet");
-  expectError(with(4, 9), true, "version 9");
+  expectError(with(4, 10), true, "version 10");
   expectError(with(42, 7), true, "reset");  // the reset flag: 0 or 1
   expectError(with(46, 0xff), true,
               "change count");  // a huge count is refused before any allocation
