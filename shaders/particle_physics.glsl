@@ -157,9 +157,24 @@ struct Slope {
   vec3 dv;
 };
 
+#ifdef MOLECULES
+// The push tool's wind (pushWind in core/sim/particle_physics.cpp).
+vec3 pushWind(vec3 x) {
+  precise vec3 d = x - molecule.push.xyz;
+  precise float r = sqrt(d.x * d.x + d.y * d.y + d.z * d.z);
+  if (!(r > 0.0 && r < molecule.push.w)) return vec3(0.0);
+  precise float s = molecule.pushMore.x * (1.0 - r / molecule.push.w) / r;
+  precise vec3 u = d * s;
+  return u;
+}
+#endif
+
 Slope derivative(vec3 x, vec3 v) {
   gParticleVelocity = v;
   precise vec3 f = fieldAt(x);
+#ifdef MOLECULES
+  if (molecule.pushMore.y != 0.0) f = f + pushWind(x);
+#endif
   Slope s;
   if (sim.modes.x == kMotionTracer) {
     s.dx = f;

@@ -4,14 +4,10 @@
 // the survivors are written after the newborn in their input order.
 //
 // Order-preserving compaction by a single-pass prefix sum with decoupled
-// look-back (Merrill & Garland 2016): a workgroup takes its tile index from an
+// look-back (tile_lookback.glsl): a workgroup takes its tile index from an
 // atomic ticket, so tile t starts only after tiles 0..t-1 have started and
 // waiting on them cannot deadlock; it scans its own survivors in shared
-// memory, publishes its count, adds up its predecessors' published counts
-// (stopping at the first that published an inclusive prefix), then publishes
-// its own inclusive prefix and writes its survivors. A tile that waits too long
-// for a predecessor counts that tile's survivors itself instead, so the result
-// never depends on how workgroups are scheduled.
+// memory, looks back for its predecessors' count and writes its survivors.
 #include "sim_block.glsl"
 #include "particle_physics.glsl"
 #include "particle_control.glsl"
@@ -31,13 +27,21 @@ layout(location = 2) uniform uint uCapacity;
 layout(location = 3) uniform uint uSpinLimit;  // reads of a predecessor's status before counting it here
 layout(location = 4) uniform bool uTrails;     // write trailSource
 
-const uint kAggregate = 0x40000000u;  // status: this tile's own count is published
-const uint kPrefix = 0x80000000u;     // status: the count of tiles 0..t is published
-const uint kValue = 0x3fffffffu;
+// Whether input record i survives this update (the look-back's recount).
+bool survives(uint i) {
+#ifdef BARE_UPDATE
+  return true;  // sandstorm-bench's ceiling: the same data movement and scan, no physics
+#else
+  Particle q;
+  q.positionLife = inPositionLife[i];
+  q.velocityKind = inVelocityKind[i];
+  return advance(q);
+#endif
+}
+
+#include "tile_lookback.glsl"
 
 shared uint sTicket;
-shared uint sStatus;
-shared uint sCount;
 #if ITEMS > 4
 shared uvec4 sScan[256];
 #else
@@ -108,54 +112,11 @@ void main() {
     aggregate += (total[k / 2] >> (16u * uint(k % 2))) & 0xffffu;
   }
 
-  if (lid == 0u) atomicExchange(status[tile], (tile == 0u ? kPrefix : kAggregate) | aggregate);
-
-  // Look back, the whole workgroup in step (the loop is uniform: it follows shared values).
-  uint prefix = 0u;
-  for (int j = int(tile) - 1; j >= 0; --j) {
-    if (lid == 0u) {
-      uint s = 0u;
-      for (uint spin = 0u; spin < uSpinLimit && (s & (kAggregate | kPrefix)) == 0u; ++spin)
-        s = atomicOr(status[j], 0u);  // a coherent read; 0 while tile j has not published
-      sStatus = s;
-    }
-    barrier();
-    uint s = sStatus;
-    barrier();  // everyone has read sStatus before it changes
-    if ((s & (kAggregate | kPrefix)) != 0u) {
-      prefix += s & kValue;
-      if ((s & kPrefix) != 0u) break;
-    } else {
-      // Tile j is slow to publish: count its survivors here (the same advance(),
-      // so the same count). Needed where workgroups need not progress together
-      // (llvmpipe, which also ends any shader's loops after 65535 iterations).
-      if (lid == 0u) sCount = 0u;
-      barrier();
-      for (int k = 0; k < kItems; ++k) {
-        uint i = uint(j) * kTile + uint(k) * 256u + lid;
-        if (i < inCount) {
-          Particle q;
-          q.positionLife = inPositionLife[i];
-          q.velocityKind = inVelocityKind[i];
-#ifdef BARE_UPDATE
-          atomicAdd(sCount, 1u);
-#else
-          if (advance(q)) atomicAdd(sCount, 1u);
-#endif
-        }
-      }
-      barrier();
-      prefix += sCount;
-      barrier();
-    }
-  }
-  if (lid == 0u) {
-    if (tile > 0u) atomicExchange(status[tile], kPrefix | (prefix + aggregate));
-    if (tile == tiles - 1u) {
-      uint live = min(uBorn + prefix + aggregate, uCapacity);
-      ctl.count[1 - uIn] = live;
-      ctl.draw[1 - uIn] = uvec4(live, 1u, 0u, 0u);
-    }
+  uint prefix = lookBack(tile, aggregate, inCount);
+  if (lid == 0u && tile == tiles - 1u) {
+    uint live = min(uBorn + prefix + aggregate, uCapacity);
+    ctl.count[1 - uIn] = live;
+    ctl.draw[1 - uIn] = uvec4(live, 1u, 0u, 0u);
   }
 
   uint base = uBorn + prefix;

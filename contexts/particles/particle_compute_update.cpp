@@ -9,6 +9,7 @@
 #include <string>
 
 #include "contexts/particles/record_readback.h"
+#include "contexts/particles/scan_spin.h"
 #include "contexts/particles/sim_block.h"
 #include "core/sim/emission.h"
 #include "core/util/error.h"
@@ -33,19 +34,6 @@ enum Binding : GLuint {
   kControl,
   kTileStatus
 };
-
-// How often a tile reads a predecessor's status before counting that tile's
-// survivors itself. GPUs run the workgroups of a dispatch side by side, so a
-// predecessor publishes soon; a CPU rasterizer may not (and llvmpipe caps a
-// shader's loop iterations), so there the tile counts for itself at once.
-// [gpu] scan_spin sets it (tests of both paths).
-std::uint32_t spinLimit(const GpuTuning& tuning) {
-  if (tuning.scanSpin) return *tuning.scanSpin;
-  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  const bool software =
-      renderer && (std::strstr(renderer, "llvmpipe") || std::strstr(renderer, "softpipe"));
-  return software ? 64u : 1u << 20;
-}
 
 std::string itemsDefine(int items) {
   return concat("ITEMS ", items);
@@ -72,7 +60,7 @@ ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity, const GpuTuni
       updateProgram_(std::vector<std::string>{"particle_update.comp"},
                      {itemsDefine(tuning.updateItems), "FIELD_BUFFER"}),
       items_(tuning.updateItems),
-      spinLimit_(spinLimit(tuning)),
+      spinLimit_(scanSpinLimit(tuning)),
       tile_(256u * std::uint32_t(items_)),
       environment_(tuning.fieldStorage == GpuTuning::FieldStorage::Texture
                        ? GpuField::Storage::Texture
@@ -184,8 +172,8 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   environment_.describe(inputs);
   inputs.state = &state;
   inputs.step = step;
-  inputs.granted = budget_.allocate(
-      emissionOfKind(step.emission, state, EmitterKind::Particles), limit, count2);
+  inputs.granted =
+      budget_.allocate(emissionOfKind(step.emission, state, EmitterKind::Particles), limit, count2);
   inputs.granted.resize(state.emitters.size(), 0);
   const std::uint32_t born = std::accumulate(inputs.granted.begin(), inputs.granted.end(), 0u);
   SimBlock block;

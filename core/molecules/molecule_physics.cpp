@@ -69,6 +69,8 @@ MoleculeParams moleculeParams(const MoleculeSettings& s, float dt) {
   p.invHeadMass = 1.0f / p.headMass;
   const float total = p.headMass + float(p.members - 1);
   p.invTotalMass = 1.0f / total;
+  p.invMembers = 1.0f / float(p.members);
+  p.invTailMembers = 1.0f / float(p.members - 1);
   const float vane = std::clamp(s.vane, 0.0f, 1.0f);
   p.solid = !shape.faces.empty();
   for (int j = 0; j < p.members; ++j)
@@ -152,7 +154,7 @@ bool advanceMolecule(std::span<Particle> m, const PhysicsInputs& in, const Molec
   glm::vec3 tail(0.0f);
   for (int j = 1; j < n; ++j)
     tail = tail + x[j];
-  tail = tail * (1.0f / float(n - 1));
+  tail = tail * params.invTailMembers;
   glm::vec3 headShift(0.0f);
   for (int j = 1; j < n; ++j) {
     const glm::vec3 axis = (params.solid ? tail : x[j]) - x[0];
