@@ -71,6 +71,8 @@ class MoleculeUpdate {
   Records records() const;
 
   std::size_t capacity() const { return capacity_; }
+  // The molecule block of the last update (binding 5): the shape its records have.
+  std::uint32_t moleculeBlock() const { return updates_ > 0 ? moleculeBlock_.id() : 0u; }
   int complexity() const { return complexity_; }
   std::size_t lateCount() const { return lateCount_; }  // molecules, a frame or two old
   // These wait for the GPU; for tests and dumps, not the frame loop.

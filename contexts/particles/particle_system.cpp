@@ -35,7 +35,8 @@ ParticleSystem::ParticleSystem(const ParticleState& initial, const Options& opti
     : state_(initial),
       capacityLimit_(std::max(options.capacity, options.capacityLimit)),
       update_(backendFor(options)),
-      splat_(options.tuning) {
+      splat_(options.tuning),
+      tuning_(options.tuning) {
   if (update_->simulates()) shadow_ = std::make_unique<OpacityShadowMap>();
 }
 
@@ -44,12 +45,17 @@ void ParticleSystem::endFrame() {
 }
 
 void ParticleSystem::setTerrain(std::shared_ptr<const HeightMap> terrain) {
-  update_->setTerrain(std::move(terrain));
+  terrain_ = terrain;
+  update_->setTerrain(terrain);
+  if (molecules_) molecules_->setTerrain(std::move(terrain));
 }
 
 void ParticleSystem::advance(const FramePacket& packet) {
   fieldBlend_ = packet.fieldBlend;
-  if (packet.reset) update_->clear();
+  if (packet.reset) {
+    update_->clear();
+    if (molecules_) molecules_->clear();
+  }
   // The main context validated every change; a replica applies them as they come.
   for (const StateChange& change : packet.changes)
     applyChange(state_, change);
@@ -68,6 +74,16 @@ void ParticleSystem::advance(const FramePacket& packet) {
     log::debug("frame ", packet.frame, ": field uploaded in ", update_->lastFieldUploadMs(), " ms");
   }
   update_->step(packet.step(), state_);
+  // Molecules: the same packets, on every wall (they are not shared between walls).
+  if (!molecules_ && MoleculeSystem::wanted(state_)) {
+    molecules_ = std::make_unique<MoleculeSystem>(
+        std::size_t(std::max(state_.molecules.maximum, 1)), capacityLimit_ / 8, tuning_);
+    if (field_) molecules_->setField(*field_);
+    if (terrain_) molecules_->setTerrain(terrain_);
+  } else if (molecules_ && packet.fieldUpdate) {
+    molecules_->setField(*field_);
+  }
+  if (molecules_) molecules_->step(packet.step(), state_);
   // The shadow map depends on the particles, not the view: built once here
   // for every wall drawing this simulation, and published with it.
   if (shadow_) {
@@ -102,6 +118,7 @@ void ParticleSystem::renderParticles(const ViewTargets& targets, const View* vie
                 {.shadows = state_.render.shadows, .motionBlur = state_.render.shutter > 0.0f});
   else
     render_.draw(*update_, targets, state_.render.mode, state_.render.order);
+  if (molecules_) molecules_->draw(targets);
 }
 
 void ParticleSystem::composite(const ViewTargets& targets, std::uint32_t destination,

@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "contexts/molecules/molecule_system.h"
 #include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_post.h"
 #include "contexts/particles/particle_render.h"
@@ -79,6 +80,8 @@ class ParticleSystem {
 
   const ParticleState& state() const { return state_; }
   const ParticleBackend& update() const { return *update_; }
+  // The molecules (made when the state first has a molecule emitter), or null.
+  const MoleculeSystem* molecules() const { return molecules_.get(); }
   std::shared_ptr<const FieldUpdate> field() const { return field_; }
   // The last packet's weight towards a time-varying field's next frame.
   float fieldBlend() const { return fieldBlend_; }
@@ -92,6 +95,9 @@ class ParticleSystem {
   ParticleSplat splat_;
   ParticlePost post_;
   TrailRenderer trails_;
+  std::unique_ptr<MoleculeSystem> molecules_;
+  std::shared_ptr<const HeightMap> terrain_;
+  GpuTuning tuning_;
   std::unique_ptr<OpacityShadowMap> shadow_;  // the simulation's owner's (once per GPU)
   std::shared_ptr<const FieldUpdate> field_;
   std::uint32_t frame_ = 0;

@@ -60,7 +60,7 @@ struct MoleculeParams {
   float headMass = 1.0f;
   float invHeadMass = 1.0f;
   float invTotalMass = 1.0f;
-  float invMembers = 1.0f, invTailMembers = 1.0f;  // 1 / n, 1 / (n - 1)
+  float invMembers = 1.0f, invTailMembers = 1.0f;                   // 1 / n, 1 / (n - 1)
   std::array<float, MoleculeSettings::kMaxComplexity> vaneReach{};  // vane * d_j, per member
   bool solid = false;          // a shape with faces: the vane turns it about its axis
   float passStiffness = 0.0f;  // k: 1 - (1 - stiffness)^(1 / iterations)

@@ -12,15 +12,13 @@ MoleculeShape makeShape(int n) {
   MoleculeShape s;
   s.members = n;
   if (n == 3) {
-    // Equilateral, the head at the front.
-    const float h = std::sqrt(3.0f) / 2.0f;
-    s.rest = {{h, 0, 0}, {0, 0.5f, 0}, {0, -0.5f, 0}};
+    // A dart: the head kDartLength in front of a base of 1.
+    s.rest = {{kDartLength, 0, 0}, {0, 0.5f, 0}, {0, -0.5f, 0}};
     s.faces = {{0, 1, 2}};
   } else if (n == 4) {
-    // Regular, edge 1: the head at the front, the base a triangle behind it.
-    const float h = std::sqrt(2.0f / 3.0f);
+    // A dart: the head kDartLength in front of an equilateral base of edge 1.
     const float r = 1.0f / std::sqrt(3.0f);
-    s.rest = {{h, 0, 0}, {0, r, 0}, {0, -0.5f * r, 0.5f}, {0, -0.5f * r, -0.5f}};
+    s.rest = {{kDartLength, 0, 0}, {0, r, 0}, {0, -0.5f * r, 0.5f}, {0, -0.5f * r, -0.5f}};
     s.faces = {{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {1, 3, 2}};
   } else {
     // A rod (2) or a chain: along -x, one edge apart.

@@ -92,9 +92,13 @@ TEST(MoleculeShape, EveryShapeRestsOnItsSpringsAndIsCentred) {
       EXPECT_GT(h, 0) << n;
     EXPECT_TRUE(!s.faces.empty() || int(s.lines.size()) == n - 1) << n;
   }
-  // The tetrahedron is regular: six edges of length 1.
-  for (const MoleculeSpring& k : moleculeShape(4).springs)
-    EXPECT_NEAR(k.rest, 1.0f, 1e-6f);
+  // The tetrahedron is a dart: an equilateral base of edge 1, the head on its axis.
+  const MoleculeShape& dart = moleculeShape(4);
+  for (const MoleculeSpring& k : dart.springs)
+    if (k.a != 0) EXPECT_NEAR(k.rest, 1.0f, 1e-6f);
+  EXPECT_NEAR(dart.springs[0].rest, dart.springs[1].rest, 1e-6f);
+  EXPECT_NEAR(dart.springs[1].rest, dart.springs[2].rest, 1e-6f);
+  EXPECT_GT(dart.springs[0].rest, 2.0f);
   EXPECT_THROW(moleculeShape(1), Error);
   EXPECT_THROW(moleculeShape(9), Error);
 }
