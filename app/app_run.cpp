@@ -108,7 +108,8 @@ int AppRun::execute() {
   input_ = std::make_unique<DesktopInput>(inputWindows);  // before the menu's ImGui callbacks
   input_->setPicker([this](const DesktopInput::Click& click) {
     const std::optional<WorldRay> ray = rayThrough(click);
-    return ray && obstacleDrag_.pick(main_.pendingState(), *ray);
+    return ray && (obstacleDrag_.pick(main_.pendingState(), *ray) ||
+                   moleculePush_.press(main_, *ray, fieldCentre(*ray)));
   });
   openMenu();
   openLegend();
@@ -421,7 +422,7 @@ void AppRun::showMenu(float dt, const std::vector<std::string>& probe) {
   for (const auto& w : walls_) {
     const WallStats s = w->stats();
     stats.walls.push_back({w->name(), s.fps, s.frameMs, s.updateMs, s.renderMs, s.postMs,
-                           s.fieldUploadMs, s.liveParticles, s.capacity});
+                           s.fieldUploadMs, s.liveParticles, s.capacity, s.liveMolecules});
   }
   if (tracking_) {
     const TrackingStatus t = tracking_->status();
@@ -489,25 +490,34 @@ void AppRun::pickProbe() {
   }
   const std::optional<WorldRay> ray = rayThrough(*click);
   if (!ray) return;
-  const auto field = main_.field();
-  const glm::vec3 centre = field && field->field
-                               ? field->placement.toRoom(field->field->bounds().center())
-                               : ray->origin + ray->direction;
   try {
-    main_.set("probe.position", pickProbePoint(state, ray->origin, ray->direction, centre));
+    main_.set("probe.position",
+              pickProbePoint(state, ray->origin, ray->direction, fieldCentre(*ray)));
   } catch (const Error& e) {
     log::warn("probe: ", e.what());
   }
 }
 
-// A left drag that began on an obstacle moves it (ObstacleDrag).
+// A left drag that began on an obstacle moves it (ObstacleDrag); one that
+// began a push moves the push (MoleculePush).
 void AppRun::dragObstacle(float dt) {
   const std::optional<DesktopInput::Drag> drag = input_->takeDrag();
   if (!drag) return;
-  if (const std::optional<WorldRay> ray = rayThrough(drag->at))
+  const std::optional<WorldRay> ray = rayThrough(drag->at);
+  if (ray) {
     obstacleDrag_.drag(main_, *ray, dt, drag->released);
-  else if (drag->released)
+    moleculePush_.drag(main_, *ray, fieldCentre(*ray), drag->released);
+  } else if (drag->released) {
     obstacleDrag_.drag(main_, WorldRay{}, dt, true);
+    moleculePush_.drag(main_, WorldRay{}, glm::vec3(0.0f), true);
+  }
+}
+
+// The field's centre in the room, or a metre along the ray without a field.
+glm::vec3 AppRun::fieldCentre(const WorldRay& ray) const {
+  const auto field = main_.field();
+  return field && field->field ? field->placement.toRoom(field->field->bounds().center())
+                               : ray.origin + ray.direction;
 }
 
 // A rank other than 0 shows its own legend (when one of its walls is the

@@ -18,6 +18,7 @@
 #include "app/helicopter_controller.h"
 #include "app/menu/legend_host.h"
 #include "app/menu/menu_host.h"
+#include "app/molecule_push.h"
 #include "app/obstacle_drag.h"
 #include "app/obstacle_driver.h"
 #include "app/scene_setup.h"
@@ -65,6 +66,7 @@ class AppRun {
   // Where a click on a wall's window points in the world; none off the walls.
   std::optional<WorldRay> rayThrough(const DesktopInput::Click& click) const;
   void dragObstacle(float dt);
+  glm::vec3 fieldCentre(const WorldRay& ray) const;
   void reportProgress(Clock::time_point now);
   int finish();
 
@@ -87,6 +89,7 @@ class AppRun {
   HelicopterController helicopter_;
   ObstacleDriver obstaclePaths_;
   ObstacleDrag obstacleDrag_;
+  MoleculePush moleculePush_;
   std::unique_ptr<HeadTracker> head_;
   Navigation navigation_;
 

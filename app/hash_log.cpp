@@ -11,10 +11,16 @@
 namespace sandstorm {
 
 void HashLog::add(const WallRenderer& wall, std::uint32_t frame) {
-  const std::vector<Particle> particles = wall.particles().update().readBack();
+  std::vector<Particle> particles = wall.particles().update().readBack();
+  const std::size_t count = particles.size();
+  // The molecules' members after the particles: one hash for both.
+  if (const MoleculeSystem* molecules = wall.particles().molecules()) {
+    const std::vector<Particle> members = molecules->update().readBack();
+    particles.insert(particles.end(), members.begin(), members.end());
+  }
   const std::string state = AttributeTable::instance().describe(wall.particles().state());
-  const std::string line = concat(frame, " ", wall.wall().name, " ", particles.size(), " ",
-                                  std::hex, hashOf(std::span<const Particle>(particles)), " ",
+  const std::string line = concat(frame, " ", wall.wall().name, " ", count, " ", std::hex,
+                                  hashOf(std::span<const Particle>(particles)), " ",
                                   hashOf(std::span<const char>(state)));
   std::lock_guard lock(mutex_);
   lines_.push_back(line);

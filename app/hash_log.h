@@ -1,5 +1,6 @@
 // HashLog (--hash-log): per frame and wall, "frame wall particles buffer-hash
-// state-hash", written sorted at the end. Walls on any thread, process or MPI
+// state-hash" (the buffer hash covers the particles' records and then the
+// molecules' members), written sorted at the end. Walls on any thread, process or MPI
 // rank that hold the same particles and state print the same lines.
 #pragma once
 

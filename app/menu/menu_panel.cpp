@@ -94,6 +94,7 @@ void MenuPanel::build(const MenuStats& stats) {
       if (info.key.starts_with("probe.")) attributeWidget(info, info.key, state);
   }
   emitterSection(state);
+  moleculeSection(stats, state);
   obstacleSection(state);
   fieldSection();
   if (ImGui::CollapsingHeader("Field playback")) {
@@ -225,6 +226,26 @@ void MenuPanel::obstacleSection(const ParticleState& state) {
   }
   for (const AttributeInfo& info : AttributeTable::instance().entries())
     if (info.perObstacle()) attributeWidget(info, info.itemKey(selectedObstacle_), state);
+}
+
+// The molecules (core/molecules): how many, their shape and springs, the
+// push tool. An emitter makes them when its kind is molecules (Emitters).
+void MenuPanel::moleculeSection(const MenuStats& stats, const ParticleState& state) {
+  const bool open = ImGui::CollapsingHeader("Molecules");
+  remember("header:molecules");
+  if (!open) return;
+  int emitters = 0;
+  for (const Emitter& e : state.emitters)
+    emitters += e.kind == EmitterKind::Molecules ? 1 : 0;
+  if (emitters == 0)
+    ImGui::TextWrapped("no emitter makes molecules: set an emitter's kind to molecules (Emitters)");
+  const std::size_t live = stats.walls.empty() ? 0 : stats.walls.front().molecules;
+  const int maximum = state.molecules.maximum;
+  const std::string label = std::to_string(live) + " / " + std::to_string(maximum) + " molecules";
+  ImGui::ProgressBar(maximum > 0 ? std::min(float(live) / float(maximum), 1.0f) : 0.0f,
+                     ImVec2(-1, 0), label.c_str());
+  for (const AttributeInfo& info : AttributeTable::instance().entries())
+    if (info.key.starts_with("molecules.")) attributeWidget(info, info.key, state);
 }
 
 void MenuPanel::fieldSection() {

@@ -22,6 +22,7 @@ struct MenuWallStats {
   std::string name;
   double fps = 0, frameMs = 0, updateMs = 0, renderMs = 0, postMs = 0, uploadMs = 0;
   std::size_t live = 0, capacity = 0;
+  std::size_t molecules = 0;
 };
 
 struct MenuTrackingStats {
@@ -66,6 +67,7 @@ class MenuPanel {
   void runControls(const ParticleState& state);
   void emitterSection(const ParticleState& state);
   void obstacleSection(const ParticleState& state);
+  void moleculeSection(const MenuStats& stats, const ParticleState& state);
   void fieldSection();
   void statsSection(const MenuStats& stats, const ParticleState& state);
   void trackingSection(const MenuTrackingStats& tracking);

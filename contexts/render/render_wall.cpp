@@ -60,6 +60,8 @@ RenderWall::Drawn RenderWall::draw(const FramePacket& packet, glm::ivec2 framebu
   }
   // A count a frame or two old: waiting for this frame's would drain the GPU every frame.
   d.live = renderer_->particles().update().lateCount();
+  if (const MoleculeSystem* m = renderer_->particles().molecules())
+    d.molecules = m->update().lateCount();
   d.gpu = renderer_->stageTimes();
   d.measure = renderer_->measurement();
   d.cpuMs =
@@ -86,6 +88,7 @@ void RenderWall::record(const FramePacket& packet, const Drawn& drawn, double in
   if (intervalMs > 0.0)
     stats_.fps = stats_.fps > 0.0 ? 0.9 * stats_.fps + 100.0 / intervalMs : 1e3 / intervalMs;
   stats_.liveParticles = drawn.live;
+  stats_.liveMolecules = drawn.molecules;
   if (drawn.measure) stats_.measure = drawn.measure;
   stats_.glErrors += drawn.glErrors;
   rendererName_ = renderer_->renderer();

@@ -23,6 +23,7 @@ struct WallStats {
   double frameMs = 0.0;  // CPU time of this wall's part of the last frame
   double fps = 0.0;      // smoothed
   std::size_t liveParticles = 0;
+  std::size_t liveMolecules = 0;  // a frame or two old, like the particles'
   std::size_t capacity = 0;
   // GPU time per stage, all views of a frame (a few frames old); render: the particles.
   double updateMs = 0.0, sceneMs = 0.0, renderMs = 0.0, postMs = 0.0;
@@ -84,7 +85,7 @@ class RenderWall {
   struct Drawn {
     double cpuMs = 0.0;
     std::uint64_t glErrors = 0;
-    std::size_t live = 0;
+    std::size_t live = 0, molecules = 0;
     std::optional<gl::FrameStageTimer::Times> gpu;
     std::optional<ParticleMeasurement> measure;
   };

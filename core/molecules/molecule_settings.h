@@ -28,6 +28,7 @@ struct MoleculeSettings {
   // The push tool: a gust blowing outward from a point (the wand's tip or the
   // mouse's point), felt by molecules within the radius.
   bool push = false;
+  bool pushTool = false;  // the left mouse button and the wand's grab button push (app/molecule_push)
   glm::vec3 pushPosition{0.0f};
   float pushRadius = 1.0f;  // m
   float pushSpeed = 4.0f;   // m/s at the point, falling to 0 at the radius

@@ -411,6 +411,10 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("molecules.push", T::Bool, 0, 1, "",
                     "The push tool blows molecules away from its point (wand button, mouse)",
                     MOLECULES(push)));
+  v.push_back(entry("molecules.push_tool", T::Bool, 0, 1, "",
+                    "Holding the left mouse button (instead of turning the world) or the wand's "
+                    "grab button (off a handle) pushes molecules there",
+                    MOLECULES(pushTool)));
   v.push_back(entry("molecules.push_position", T::Vec3, -kBig, kBig, "m",
                     "Where the push tool blows from", MOLECULES(pushPosition)));
   v.push_back(entry("molecules.push_radius", T::Float, 1e-3f, 100, "m", "The push reaches this far",

@@ -124,9 +124,25 @@ WandActions WandController::update(const TrackingSample& sample, const WandScene
     out.ray.end = room;
   }
 
+  // The molecules' push tool: the grab button off a handle and the menu blows
+  // molecules away from a point kPushReach ahead of the wand.
+  const bool pushTool = state && state->molecules.pushTool;
+  if (pushTool && !held_ && !menuPixel && edge(tracking_.grabButton) &&
+      out.ray.target != WandTarget::Emitter)
+    pushing_ = true;
+  if (pushing_ && (!grabDown || !pushTool)) {
+    pushing_ = false;
+    out.sets.emplace_back("molecules.push", false);
+  } else if (pushing_) {
+    const glm::vec3 at = scene.navigation.roomToWorld(ray.at(kPushReach));
+    if (!state->molecules.push) out.sets.emplace_back("molecules.push", true);
+    if (at != state->molecules.pushPosition) out.sets.emplace_back("molecules.push_position", at);
+    out.ray.end = ray.at(kPushReach);
+  }
+
   // The thesis's throttle: tilt up (towards the user) raises it.
   if (state && state->helicopter.enabled && state->helicopter.wandThrottle && !held_ &&
-      !menuPixel) {
+      !menuPixel && !pushing_) {
     const float tilt = glm::degrees(std::asin(std::clamp(ray.direction.z, -1.0f, 1.0f)));
     const float beyond =
         std::max(std::abs(tilt) - kTiltDeadZoneDeg, 0.0f) / (kTiltFullDeg - kTiltDeadZoneDeg);

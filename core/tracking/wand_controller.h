@@ -13,6 +13,9 @@
 //   wand tilted up, towards the user, raises helicopter.throttle, tilted down
 //   lowers it, at a rate that grows with the tilt past a dead zone; the
 //   throttle moves in steps of kThrottleStep so the wash is re-baked only then;
+// - push (molecules.push_tool): the grab button held off a handle and the
+//   menu blows molecules away from a point kPushReach ahead of the wand
+//   (molecules.push, molecules.push_position) until it is let go;
 // - flying ([navigation] fly_speed, turn_speed_deg): the joystick's y flies
 //   along the wand's horizontal direction, its x turns the world about the
 //   head's vertical axis.
@@ -72,6 +75,7 @@ class WandController {
   static constexpr float kTiltFullDeg = 50.0f;  // full rate from here
   static constexpr float kThrottleRate = 0.4f;  // per second at full tilt
   static constexpr float kJoystickDeadZone = 0.1f;
+  static constexpr float kPushReach = 0.5f;  // m (room) ahead of the wand
 
   WandController(const TrackingSpec& tracking, const NavigationSpec& navigation);
 
@@ -93,6 +97,7 @@ class WandController {
   std::uint32_t previousButtons_ = 0;
   std::optional<Held> held_;
   float throttleDrift_ = 0.0f;
+  bool pushing_ = false;
 };
 
 }  // namespace sandstorm

@@ -224,6 +224,31 @@ TEST(Identity, AnObstacleMovingMidRunKeepsEveryWallIdentical) {
   EXPECT_NE(handFloor[149], floor[149]);
 }
 
+// Molecules beside the particles, changed mid-run (a new shape, the push
+// tool, repulsion): the same on four walls on threads, on four walls sharing
+// one particle simulation, and on one wall alone in its process.
+TEST(Identity, MoleculesAreTheSameOnEveryWallHoweverTheWallsAreRun) {
+  const auto dir = test::scratchDir("molecules");
+  const std::string run = " --frames 130 --replay tests/data/molecules-midrun.session --hash-log ";
+  const auto threads = runSandstorm("--config tests/data/identity-molecules.toml" + run +
+                                    (dir / "threads.txt").string());
+  const auto shared = runSandstorm("--config tests/data/identity-molecules-shared.toml" + run +
+                                   (dir / "shared.txt").string());
+  const auto alone = runSandstorm("--config tests/data/identity-molecules.toml --walls floor" +
+                                  run + (dir / "alone.txt").string());
+  const auto without = runSandstorm("--config tests/data/identity.toml --frames 130 --hash-log " +
+                                    (dir / "without.txt").string());
+  for (const auto* r : {&threads, &shared, &alone, &without})
+    ASSERT_EQ(r->exitCode, 0) << r->output;
+  auto floor = sameOnEveryWall(dir / "threads.txt", 130);
+  EXPECT_EQ(sameOnEveryWall(dir / "shared.txt", 130), floor);
+  for (const HashLine& h : readHashes(dir / "alone.txt"))
+    EXPECT_EQ(h.hash, floor[h.frame]) << "frame " << h.frame;
+  // The molecules are in the hashes: without them the particles' hash differs.
+  const auto plain = sameOnEveryWall(dir / "without.txt", 130);
+  EXPECT_NE(plain.at(129), floor[129]);
+}
+
 TEST(Identity, ARecordedSessionReplaysToTheSameParticles) {
   const auto dir = test::scratchDir("replay");
   const auto first =

@@ -3,6 +3,7 @@
 // obstacle with a ray and slides it along the floor.
 #include <gtest/gtest.h>
 
+#include "app/molecule_push.h"
 #include "app/obstacle_drag.h"
 #include "app/obstacle_driver.h"
 
@@ -72,6 +73,29 @@ TEST(ObstacleDrag, APressOnTheSphereGrabsItAndTheDragSlidesItAlongTheFloor) {
   main.next();
   EXPECT_EQ(main.state().obstacles[0].velocity, glm::vec3(0.0f));
   EXPECT_FALSE(drag.holding());
+}
+
+// With molecules.push_tool on, a left press starts a push at the cursor's
+// ray nearest the field's centre, the drag moves it, the release stops it.
+TEST(MoleculePush, APressPushesWhereTheCursorPointsUntilReleased) {
+  MainContext main = mainWithSphere({0, 5, 1});
+  MoleculePush push;
+  const glm::vec3 centre(0, 3, 1);
+  EXPECT_FALSE(push.press(main, WorldRay{{0, 0, 1}, {0, 1, 0}}, centre));  // the tool is off
+  main.set("molecules.push_tool", true);
+  ASSERT_TRUE(push.press(main, WorldRay{{0, 0, 1}, {0, 1, 0}}, centre));
+  main.next();
+  EXPECT_TRUE(main.state().molecules.push);
+  EXPECT_EQ(main.state().molecules.pushPosition, glm::vec3(0, 3, 1));
+  push.drag(main, WorldRay{{1, 0, 1}, {0, 1, 0}}, centre, false);
+  main.next();
+  EXPECT_EQ(main.state().molecules.pushPosition, glm::vec3(1, 3, 1));
+  push.drag(main, WorldRay{{1, 0, 1}, {0, 1, 0}}, centre, true);
+  main.next();
+  EXPECT_FALSE(main.state().molecules.push);
+  EXPECT_FALSE(push.holding());
+  // Never behind the eye.
+  EXPECT_EQ(MoleculePush::pushPoint(WorldRay{{0, 0, 0}, {0, -1, 0}}, centre), glm::vec3(0.0f));
 }
 
 }  // namespace

@@ -116,6 +116,26 @@ TEST(Windows, TheObstaclesSectionOfTheMenuMovesTheSphere) {
   EXPECT_GE(moves, 38);  // and the sphere moved along its path every frame
 }
 
+TEST(Windows, TheMoleculesSectionOfTheMenuChangesTheirShapeAndSprings) {
+  if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
+  const auto dir = test::scratchDir("menu-molecules");
+  const auto r = runUnderXvfb(
+      "--config config/molecules.toml --frames 40 --set sim.maximum=4000 "
+      "--set molecules.maximum=800 --menu-script tests/data/molecule-menu.script --record " +
+      (dir / "s.session").string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::string complexity, stiffness;
+  for (const std::string& line : readLines(dir / "s.session")) {
+    if (line.find(" set molecules.complexity ") != std::string::npos) complexity = line;
+    if (line.find(" set molecules.stiffness ") != std::string::npos) stiffness = line;
+  }
+  ASSERT_FALSE(complexity.empty()) << "the slider click did not change molecules.complexity\n"
+                                   << r.output;
+  EXPECT_NE(complexity.substr(complexity.rfind(' ') + 1), "4");  // the file's complexity changed
+  ASSERT_FALSE(stiffness.empty()) << r.output;
+  EXPECT_NE(stiffness.substr(stiffness.rfind(' ') + 1), "0.8");
+}
+
 TEST(Windows, FourWindowsCanShareOneSimulation) {
   if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
   const auto dir = test::scratchDir("shared-windows");

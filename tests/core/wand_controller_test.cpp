@@ -150,6 +150,34 @@ TEST(WandController, GrabCarriesTheEmitterByTheWandsDisplacement) {
   expectNear(f.state.emitters[0].position, move / 0.35f);
 }
 
+// The molecules' push tool: the grab button off a handle blows from half a
+// metre ahead of the wand (in world coordinates) until it is let go; with the
+// tool off the button does nothing of the kind.
+TEST(WandController, TheGrabButtonOffAHandlePushesMoleculesWithThePushTool) {
+  Fixture f;
+  const glm::vec3 from{0.5f, 0.0f, 1.2f};  // pointing along +x: no handle on the ray
+  WandActions a = f.step(wandAt(from, 0.0f, 0.0f, 2u));
+  EXPECT_FALSE(f.state.molecules.push);  // the tool is off
+  f.step(wandAt(from, 0.0f, 0.0f, 0u));
+  f.state.molecules.pushTool = true;
+  a = f.step(wandAt(from, 0.0f, 0.0f, 2u));
+  EXPECT_TRUE(f.state.molecules.push);
+  // Room (1, 0, 1.2), through a navigation of offset (-1, 2.6, 0) and scale 0.35.
+  expectNear(f.state.molecules.pushPosition,
+             f.scene.navigation.roomToWorld(from + glm::vec3(WandController::kPushReach, 0, 0)));
+  const glm::vec3 moved = from + glm::vec3(0.0f, 0.2f, 0.0f);
+  f.step(wandAt(moved, 0.0f, 0.0f, 2u));
+  expectNear(f.state.molecules.pushPosition,
+             f.scene.navigation.roomToWorld(moved + glm::vec3(WandController::kPushReach, 0, 0)));
+  a = f.step(wandAt(moved, 0.0f, 0.0f, 0u));
+  EXPECT_FALSE(f.state.molecules.push);
+  // On a handle the button grabs it instead.
+  const glm::vec3 d = glm::normalize(glm::vec3(-1.0f, 2.6f, 0.0f) - from);
+  a = f.step(wandAt(from, glm::degrees(std::atan2(d.y, d.x)), glm::degrees(std::asin(d.z)), 2u));
+  EXPECT_TRUE(a.ray.holding);
+  EXPECT_FALSE(f.state.molecules.push);
+}
+
 // The rake's ends and the slice's point are handles too while they show.
 TEST(WandController, GrabCarriesTheStreamlineRakeAndTheSlice) {
   Fixture f;
