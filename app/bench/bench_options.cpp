@@ -18,7 +18,7 @@ const char* kUsage = R"(sandstorm-bench: GPU particle benchmark (headless EGL)
                   [--billboard-limit N] [--walls 1,2,4,8] [--wall-particles N]
                   [--wall-sims per-wall,shared] [--wall-renderers billboards,splat]
                   [--wall-trails 0,16] [--wall-shadows 0,1] [--sort-keys 1e6,1e7]
-                  [--update-obstacles 0,1]
+                  [--update-obstacles 0,1] [--update-molecules 0,4]
                   [--wall-backend compute] [--particle-size M] [--memory-gib G]
                   [--integrator euler|rk2|rk4] [--update-items 1|2|4|8] [--gpu-warmup S]
 
@@ -29,7 +29,9 @@ fixed frames. Sections:
   ceilings  buffer-copy bandwidth, a bare transform-feedback pass, a bare point draw
   update    the particle update per backend and field type, without and with
             obstacles (--update-obstacles: a sphere the flow goes around and a
-            box, both in the cloud)
+            box, both in the cloud), of particles or of molecules of n members
+            (--update-molecules 0,4: 0 particles, 2..8 molecules of that complexity
+            holding as many particles, their rate against the particles')
   render    scene, particles and composite of one view per renderer
   walls     whole frames of 1..8 views, each wall simulating or one shared simulation,
             with trails of each --wall-trails length (render.trail_length; 0 none),
@@ -178,6 +180,15 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       if (o.wallTrails.empty()) throw Error(concat(a, ": expected lengths, e.g. 0,16"));
     } else if (a == "--wall-shadows") {
       o.wallShadows = zeroOrOne(a, v, "off", "on");
+    } else if (a == "--update-molecules") {
+      o.updateMolecules.clear();
+      for (const std::string& t : split(v)) {
+        const double k = number(t, a);
+        if (!(k == 0.0 || (k >= 2.0 && k <= 8.0)) || k != double(int(k)))
+          throw Error(concat(a, ": ", t, ": expected 0 (particles) or a complexity of 2 to 8"));
+        o.updateMolecules.push_back(int(k));
+      }
+      if (o.updateMolecules.empty()) throw Error(concat(a, ": expected complexities, e.g. 0,4"));
     } else if (a == "--update-obstacles") {
       o.updateObstacles = zeroOrOne(a, v, "none", "obstacles");
     } else if (a == "--wall-backend") {

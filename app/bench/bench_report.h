@@ -19,6 +19,7 @@ struct Row {
   int trails = 0;          // walls: render.trail_length
   bool shadows = false;    // walls: render.shadows
   bool obstacles = false;  // update: with obstacles (SceneChoice::obstacles)
+  int molecules = 0;       // update: molecules of this many members (0: particles)
   int width = 0, height = 0;
   double ms = 0;             // GPU milliseconds per frame (median)
   double particlesPerS = 0;  // 0: not applicable

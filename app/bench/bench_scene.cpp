@@ -47,6 +47,11 @@ ParticleState benchState(const SceneChoice& c) {
     box.size = {1.0f, 1.0f, 1.5f};
     s.obstacles = {sphere, box};
   }
+  if (c.molecules > 0) {
+    e.kind = EmitterKind::Molecules;
+    s.molecules.complexity = c.molecules;
+    s.molecules.maximum = int(c.particles) / c.molecules;
+  }
   if (c.turnover) {
     s.sim.boundary = BoundaryMode::Kill;
     e.lifetime = 0.3f;
@@ -77,9 +82,8 @@ FramePacket benchPacket(std::uint32_t frame, const SceneChoice& c,
   p.dt = p.simDt = 1.0f / 60.0f;
   p.time = frame / 60.0;
   p.seed = 0x5A4D5700ull;
-  p.emission = {frame == 0   ? std::uint32_t(c.particles)
-                : c.turnover ? std::uint32_t(c.particles / 8)
-                             : 0u};
+  const std::size_t units = c.molecules > 0 ? c.particles / std::size_t(c.molecules) : c.particles;
+  p.emission = {frame == 0 ? std::uint32_t(units) : c.turnover ? std::uint32_t(units / 8) : 0u};
   if (frame == 0) p.fieldUpdate = field;
   return p;
 }

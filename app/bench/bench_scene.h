@@ -24,6 +24,7 @@ struct SceneChoice {
   int trailLength = 0;     // render.trail_length
   bool shadows = false;    // render.shadows
   bool obstacles = false;  // a sphere (flow around it) and a box in the cloud
+  int molecules = 0;       // > 0: the particles are molecules of this many members
   bool turnover =
       false;  // short lives, deaths at the box: every frame births, deaths and compaction
 };

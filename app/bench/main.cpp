@@ -59,7 +59,8 @@ class Bench {
         for (const std::string& backend : o_.backends)
           for (const std::string& field : o_.fields)
             for (int obstacles : o_.updateObstacles)
-              update(n, backend, field, obstacles != 0);
+              for (int molecules : o_.updateMolecules)
+                update(n, backend, field, obstacles != 0, molecules);
     if (has("render"))
       for (std::size_t n : o_.particles)
         for (const std::string& renderer : o_.renderers)
@@ -85,7 +86,9 @@ class Bench {
     if (ceilings || (update && tf)) total_ += int(o_.particles.size());  // bare transform feedback
     if (ceilings || render) total_ += int(o_.particles.size());          // bare point draw
     if (ceilings || update) total_ += int(o_.particles.size());          // bare compute update
-    if (update) total_ += int(o_.particles.size() * o_.backends.size() * o_.fields.size());
+    if (update)
+      total_ += int(o_.particles.size() * o_.backends.size() * o_.fields.size() *
+                    o_.updateObstacles.size() * o_.updateMolecules.size());
     if (render)
       for (std::size_t n : o_.particles)
         for (const std::string& r : o_.renderers)
@@ -263,16 +266,22 @@ class Bench {
     return system;
   }
 
-  void update(std::size_t n, const std::string& backend, const std::string& field, bool obstacles) {
+  // `molecules` > 0: the n particles are molecules of that many members
+  // (MoleculeUpdate, compute whatever the backend), their rate compared with
+  // the particles' of the same run.
+  void update(std::size_t n, const std::string& backend, const std::string& field, bool obstacles,
+              int molecules = 0) {
     progress(concat("update: ", backend, ", ", field, " field, ", n, " particles",
-                    obstacles ? ", obstacles" : ""));
+                    obstacles ? ", obstacles" : "",
+                    molecules > 0 ? concat(", molecules of ", molecules) : ""));
     if (!fits(4 * n * 16.0, "update")) return;
     guarded("update", [&] {
       const SceneChoice c{.particles = n,
                           .field = field,
                           .particleSize = o_.particleSize,
                           .integrator = o_.integrator,
-                          .obstacles = obstacles};
+                          .obstacles = obstacles,
+                          .molecules = molecules};
       const auto fieldUpdate = benchField(field);
       auto system = makeSystem(c, backend);
       GpuStopwatch watch;
@@ -284,17 +293,31 @@ class Bench {
         if (timed) watch.end();
       }
       const double ms = median(watch.intervalsMs());
-      const std::size_t live = system->update().liveCount();
+      const std::size_t live =
+          molecules > 0 && system->molecules()
+              ? system->molecules()->update().liveCount() * std::size_t(molecules)
+              : system->update().liveCount();
       Row row{.section = "update",
               .stage = "update",
               .backend = backend,
               .field = field,
               .particles = live,
-              .obstacles = obstacles};
+              .obstacles = obstacles,
+              .molecules = molecules};
       row.ms = ms;
       row.particlesPerS = double(live) / (ms * 1e-3);
       row.bytesPerS = 2 * kRecordBytes * double(live) / (ms * 1e-3);
-      if (backend == "compute") {
+      if (molecules > 0) {
+        // Against the particles' update of the same count, field and obstacles in this run.
+        for (const Row& r : report_.rows)
+          if (r.section == "update" && r.molecules == 0 && r.backend == backend &&
+              r.field == field && r.obstacles == obstacles && r.particlesPerS > 0 &&
+              std::abs(double(r.particles) - double(live)) <= 0.01 * double(live)) {
+            row.ceiling = "particles";
+            row.ratio = row.particlesPerS / r.particlesPerS;
+            row.note = concat(row.ratio, " of the particles' rate (molecules of ", molecules, ")");
+          }
+      } else if (backend == "compute") {
         row.ceiling = report_.bandwidthName();
         row.ratio = ratio(row.bytesPerS, report_.bandwidth());
         const double bare = bareCompute(n);
@@ -509,8 +532,8 @@ void printTargets(const Report& r) {
       std::printf("  compute = tf-gs on this GPU (%s field): %s\n", row.field.c_str(),
                   row.note.c_str());
   if (const Row* c = largest([](const Row& x) {
-        return x.section == "update" && x.backend == "compute" && x.field == "texture" &&
-               !x.obstacles;
+        return x.section == "update" && x.molecules == 0 && x.backend == "compute" &&
+               x.field == "texture" && !x.obstacles;
       }))
     std::printf(
         "  compute update, %zu particles: %.1f GB/s = %.2f of %s bandwidth %.1f GB/s (target >= "
@@ -519,8 +542,8 @@ void printTargets(const Report& r) {
         c->particles, c->bytesPerS * 1e-9, c->ratio, r.bandwidthName().c_str(),
         r.bandwidth() * 1e-9, r.copyBytesPerS * 1e-9);
   if (const Row* t = largest([](const Row& x) {
-        return x.section == "update" && x.backend == "tf-gs" && x.field == "texture" &&
-               !x.obstacles;
+        return x.section == "update" && x.molecules == 0 && x.backend == "tf-gs" &&
+               x.field == "texture" && !x.obstacles;
       }))
     std::printf(
         "  tf-gs update, %zu particles: %.3f ms = %.2f of the bare transform-feedback pass's speed "
@@ -529,8 +552,8 @@ void printTargets(const Report& r) {
   for (const char* backend : {"compute", "tf-gs"}) {
     const auto updateRow = [&](bool obstacles) {
       return largest([&](const Row& x) {
-        return x.section == "update" && x.backend == backend && x.field == "texture" &&
-               x.obstacles == obstacles;
+        return x.section == "update" && x.molecules == 0 && x.backend == backend &&
+               x.field == "texture" && x.obstacles == obstacles;
       });
     };
     const Row *plain = updateRow(false), *with = updateRow(true);
@@ -540,6 +563,12 @@ void printTargets(const Report& r) {
           "(target <= 1.15x)\n",
           backend, with->particles, with->ms, plain->ms, with->ms / plain->ms);
   }
+  for (const Row& row : r.rows)
+    if (row.section == "update" && row.molecules > 0 && row.ceiling == "particles")
+      std::printf(
+          "  %s update of molecules of %d, %zu particles: %.1f Mparticles/s = %.2f of the "
+          "particles' rate (target >= 0.25 at complexity 4)\n",
+          row.backend.c_str(), row.molecules, row.particles, row.particlesPerS * 1e-6, row.ratio);
   const Row* b = largest([](const Row& x) {
     return x.section == "render" && x.stage == "particles" && x.renderer == "billboards";
   });

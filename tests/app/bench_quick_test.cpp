@@ -122,5 +122,24 @@ TEST(BenchQuick, TheUpdateSectionMeasuresTheObstacleTerm) {
             std::string::npos);
 }
 
+TEST(BenchQuick, TheUpdateSectionMeasuresMoleculesAgainstParticles) {
+  const auto dir = test::scratchDir("bench-molecules");
+  const auto json = dir / "bench.json";
+  const test::ProcessResult r = runBench(
+      "--quick --sections update --backends compute --fields texture "
+      "--update-molecules 0,4 --json '" +
+      json.string() + "'");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::set<std::string> rows;
+  for (const std::string& line : test::readLines(json))
+    if (line.find("\"stage\": \"update\"") != std::string::npos)
+      rows.insert(field(line, "molecules") + "/" + field(line, "particles"));
+  // As many particles in molecules of 4 as alone: the molecules all lived.
+  EXPECT_EQ(rows, (std::set<std::string>{"0/1000", "0/4000", "4/1000", "4/4000"}));
+  EXPECT_NE(r.output.find("update of molecules of 4"), std::string::npos) << r.output;
+  EXPECT_NE(runBench("--quick --update-molecules 1").output.find("a complexity of 2 to 8"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace sandstorm
