@@ -14,10 +14,8 @@ void HashLog::add(const WallRenderer& wall, std::uint32_t frame) {
   std::vector<Particle> particles = wall.particles().update().readBack();
   const std::size_t count = particles.size();
   // The molecules' members after the particles: one hash for both.
-  if (const MoleculeSystem* molecules = wall.particles().molecules()) {
-    const std::vector<Particle> members = molecules->update().readBack();
-    particles.insert(particles.end(), members.begin(), members.end());
-  }
+  const std::vector<Particle> members = wall.particles().readBackMolecules();
+  particles.insert(particles.end(), members.begin(), members.end());
   const std::string state = AttributeTable::instance().describe(wall.particles().state());
   const std::string line = concat(frame, " ", wall.wall().name, " ", count, " ", std::hex,
                                   hashOf(std::span<const Particle>(particles)), " ",

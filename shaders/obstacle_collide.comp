@@ -1,6 +1,8 @@
 #version 450 core
-// ParticleComputeUpdate, after the update: every live record of the output
-// set out of the obstacles (keepOutOfObstacles, the last step of advance()).
+// ParticleComputeUpdate, after the update: the output set's records that the
+// update listed as not clear of some obstacle (OBSTACLE_LIST) put out of the
+// obstacles (keepOutOfObstacles, the last step of advance()); every other
+// record is clear, and keepOutOfObstacles would leave it as it is.
 // A pass of its own because the push-out's code in the update kernel cost it
 // occupancy (an H100's update at 10^7 with two obstacles: 1.46 ms with it
 // inside, 0.89 without; docs/PERFORMANCE.md). The same operations on the same
@@ -16,19 +18,19 @@
 layout(local_size_x = 256) in;
 layout(std430, binding = 2) restrict buffer PositionLife { vec4 positionLife[]; };
 layout(std430, binding = 3) restrict buffer VelocityKind { vec4 velocityKind[]; };
-layout(location = 0) uniform int uSet;  // the output set, whose count the update wrote
+layout(std430, binding = 8) readonly restrict buffer CollideList {
+  uint collideCount;
+  uint collideIndex[];
+};
 
 void main() {
-  uint count = ctl.count[uSet];
+  uint count = collideCount;
   uint stride = gl_NumWorkGroups.x * 256u;
   bool ground = sim.modes.w != 0 && sim.terrainDims.z != 0;
-  for (uint i = gl_GlobalInvocationID.x; i < count; i += stride) {
+  for (uint j = gl_GlobalInvocationID.x; j < count; j += stride) {
+    uint i = collideIndex[j];
     vec4 pl = positionLife[i];
     vec3 x = pl.xyz;
-    bool clear = true;
-    for (int k = 0; k < sim.obstacleCount.x; ++k)
-      clear = clear && clearOf(k, x);
-    if (clear) continue;  // keepOutOfObstacles would leave it as it is
     vec4 vk = velocityKind[i];
     vec3 v = vk.xyz;
     keepOutOfObstacles(x, v, ground);

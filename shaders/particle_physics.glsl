@@ -122,7 +122,7 @@ vec3 toRoom(vec3 local) {
 }
 
 #include "terrain_height.glsl"
-#if defined(OBSTACLES) || defined(OBSTACLE_FLOW)
+#if defined(OBSTACLES) || defined(OBSTACLE_FLOW) || defined(OBSTACLE_LIST)
 #include "obstacles.glsl"
 #endif
 

@@ -21,6 +21,12 @@ layout(std430, binding = 5) coherent volatile restrict buffer TileStatus { uint 
 // Trails (ParticleTrails): each survivor's input record, so its trail can follow it.
 layout(std430, binding = 6) writeonly restrict buffer TrailSource { uint trailSource[]; };
 
+#ifdef OBSTACLE_LIST
+// The survivors not clear of every obstacle (their output records), for
+// obstacle_collide.comp to put out: the only records that pass reads.
+layout(std430, binding = 8) restrict buffer CollideList { uint collideCount; uint collideIndex[]; };
+#endif
+
 layout(location = 0) uniform int uIn;
 layout(location = 1) uniform uint uBorn;
 layout(location = 2) uniform uint uCapacity;
@@ -126,6 +132,12 @@ void main() {
       outPositionLife[o] = p[k].positionLife;
       outVelocityKind[o] = p[k].velocityKind;
       if (uTrails) trailSource[o] = tile * kTile + uint(k) * 256u + lid;
+#ifdef OBSTACLE_LIST
+      bool clear = true;
+      for (int i = 0; i < sim.obstacleCount.x; ++i)
+        clear = clear && clearOf(i, p[k].positionLife.xyz);
+      if (!clear) collideIndex[atomicAdd(collideCount, 1u)] = o;
+#endif
     }
   }
 }

@@ -294,9 +294,7 @@ class Bench {
       }
       const double ms = median(watch.intervalsMs());
       const std::size_t live =
-          molecules > 0 && system->molecules()
-              ? system->molecules()->update().liveCount() * std::size_t(molecules)
-              : system->update().liveCount();
+          molecules > 0 ? system->readBackMolecules().size() : system->update().liveCount();
       Row row{.section = "update",
               .stage = "update",
               .backend = backend,

@@ -10,10 +10,8 @@ MoleculeRenderer::MoleculeRenderer()
     : program_(std::vector<std::string>{"molecule_render.vert", "molecule_render.frag"}),
       empty_(gl::createVertexArray()) {}
 
-void MoleculeRenderer::draw(const MoleculeUpdate& molecules, std::uint32_t moleculeBlock,
-                            const ViewTargets& targets) const {
-  const MoleculeUpdate::Records r = molecules.records();
-  if (r.members == 0 || r.positionLife == 0 || moleculeBlock == 0) return;
+void MoleculeRenderer::draw(const MoleculeHandles& r, const ViewTargets& targets) const {
+  if (!r) return;
   glBindFramebuffer(GL_FRAMEBUFFER, targets.particleFramebuffer());
   glViewport(0, 0, targets.size().x, targets.size().y);
   glDisable(GL_DEPTH_TEST);  // the fragment stage tests against the scene's depth itself
@@ -22,7 +20,7 @@ void MoleculeRenderer::draw(const MoleculeUpdate& molecules, std::uint32_t molec
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glBindTextureUnit(3, targets.sceneDepth());
-  glBindBufferBase(GL_UNIFORM_BUFFER, 5, moleculeBlock);
+  glBindBufferBase(GL_UNIFORM_BUFFER, 5, r.block);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, r.positionLife);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, r.velocityKind);
   program_.use();
@@ -32,6 +30,28 @@ void MoleculeRenderer::draw(const MoleculeUpdate& molecules, std::uint32_t molec
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
   glBindVertexArray(0);
   glDisable(GL_BLEND);
+}
+
+std::vector<Particle> readMolecules(const MoleculeHandles& m) {
+  if (!m) return {};
+  gl::Buffer staging = gl::createBuffer();
+  glNamedBufferStorage(staging.id(), 4, nullptr, GL_DYNAMIC_STORAGE_BIT | GL_CLIENT_STORAGE_BIT);
+  glCopyNamedBufferSubData(m.control, staging.id(), m.countOffset, 0, 4);
+  std::uint32_t count = 0;
+  glGetNamedBufferSubData(staging.id(), 0, 4, &count);
+  const std::size_t records = std::size_t(count) * std::size_t(m.members);
+  std::vector<Particle> out(records);
+  if (records == 0) return out;
+  const GLsizeiptr bytes = GLsizeiptr(records * sizeof(glm::vec4));
+  gl::Buffer copy = gl::createBuffer();
+  glNamedBufferStorage(copy.id(), 2 * bytes, nullptr, GL_CLIENT_STORAGE_BIT);
+  glCopyNamedBufferSubData(m.positionLife, copy.id(), 0, 0, bytes);
+  glCopyNamedBufferSubData(m.velocityKind, copy.id(), 0, bytes, bytes);
+  std::vector<glm::vec4> data(2 * records);
+  glGetNamedBufferSubData(copy.id(), 0, 2 * bytes, data.data());
+  for (std::size_t i = 0; i < records; ++i)
+    out[i] = Particle{data[i], data[records + i]};
+  return out;
 }
 
 }  // namespace sandstorm

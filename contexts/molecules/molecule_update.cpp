@@ -90,6 +90,12 @@ void MoleculeUpdate::allocate(std::size_t capacity, int members, bool keep) {
   capacity_ = capacity;
 }
 
+bool MoleculeUpdate::wanted(const ParticleState& state) {
+  for (const Emitter& e : state.emitters)
+    if (e.kind == EmitterKind::Molecules) return true;
+  return false;
+}
+
 void MoleculeUpdate::clear() {
   const std::uint32_t zeros[kControlSize / 4] = {};
   glNamedBufferSubData(control_.id(), 0, kControlSize, zeros);
@@ -237,14 +243,17 @@ void MoleculeUpdate::step(const SimStep& step, const ParticleState& state) {
   ++updates_;
 }
 
-MoleculeUpdate::Records MoleculeUpdate::records() const {
+MoleculeHandles MoleculeUpdate::handles() const {
+  if (updates_ == 0) return {};
   const BufferSet& set = sets_[std::size_t(current_)];
   return {set.positionLife.id(),
           set.velocityKind.id(),
           control_.id(),
+          moleculeBlock_.id(),
           std::uint32_t(kCountOffset + current_ * 4),
           std::uint32_t(kDrawOffset + current_ * 16),
-          complexity_};
+          complexity_,
+          lateCount_};
 }
 
 std::vector<Particle> MoleculeUpdate::readBack() const {

@@ -30,6 +30,7 @@
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
 #include "contexts/molecules/molecule_grid_gpu.h"
+#include "contexts/molecules/molecule_handles.h"
 #include "contexts/particles/expression_programs.h"
 #include "contexts/particles/particle_environment.h"
 #include "core/config/gpu_tuning.h"
@@ -56,23 +57,17 @@ class MoleculeUpdate {
   void setTerrain(std::shared_ptr<const HeightMap> terrain) {
     environment_.setTerrain(std::move(terrain));
   }
+  // Whether a state emits molecules (a ParticleSystem then makes its MoleculeUpdate).
+  static bool wanted(const ParticleState& state);
+
   void step(const SimStep& step, const ParticleState& state);
   void clear();
 
-  // The current members' records, for drawing without reading anything back:
-  // the live molecule count is the uint at `countOffset` of `control`, and a
-  // DrawArraysIndirectCommand (a molecule's vertices, one instance a
-  // molecule) is at `drawOffset`.
-  struct Records {
-    std::uint32_t positionLife = 0, velocityKind = 0, control = 0;
-    std::uint32_t countOffset = 0, drawOffset = 0;
-    int members = 0;
-  };
-  Records records() const;
+  // The current members' records, for drawing without reading anything back
+  // (none before the first update).
+  MoleculeHandles handles() const;
 
   std::size_t capacity() const { return capacity_; }
-  // The molecule block of the last update (binding 5): the shape its records have.
-  std::uint32_t moleculeBlock() const { return updates_ > 0 ? moleculeBlock_.id() : 0u; }
   int complexity() const { return complexity_; }
   std::size_t lateCount() const { return lateCount_; }  // molecules, a frame or two old
   // These wait for the GPU; for tests and dumps, not the frame loop.

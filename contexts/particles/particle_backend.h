@@ -11,6 +11,7 @@
 #include <memory>
 #include <vector>
 
+#include "contexts/molecules/molecule_handles.h"
 #include "contexts/shadows/shadow_handles.h"
 #include "core/field/field_equation.h"
 #include "core/field/field_placement.h"
@@ -63,10 +64,12 @@ class ParticleBackend {
   // False for a wall that only draws another context's simulation (SharedParticles).
   virtual bool simulates() const { return true; }
   // After step(), with what the owner derived from this frame's records (the
-  // shadow map): a shared simulation publishes both to its readers here.
-  virtual void publish(const ShadowHandles&) {}
-  // A reader's: the owner's shadow map of the frame it draws.
+  // shadow map) and its molecules: a shared simulation publishes them to its
+  // readers here.
+  virtual void publish(const ShadowHandles&, const MoleculeHandles&) {}
+  // A reader's: the owner's shadow map and molecules of the frame it draws.
   virtual ShadowHandles sharedShadow() const { return {}; }
+  virtual MoleculeHandles sharedMolecules() const { return {}; }
   // Called once a frame's every view is drawn (a shared simulation's readers fence here).
   virtual void endFrame() {}
 

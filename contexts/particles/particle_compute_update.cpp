@@ -32,7 +32,8 @@ enum Binding : GLuint {
   kOutPosition,
   kOutVelocity,
   kControl,
-  kTileStatus
+  kTileStatus,
+  kCollideList = 8
 };
 
 std::string itemsDefine(int items) {
@@ -194,17 +195,19 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   else if (!texture)
     defines.push_back("FIELD_BUFFER");
   // The flow around the obstacles is the update's; putting particles out of
-  // them is a pass of its own (obstacle_collide.comp), below.
+  // them is a pass of its own (obstacle_collide.comp), below, over the
+  // records the update lists as not clear of an obstacle.
   if (flow) defines.push_back("OBSTACLE_FLOW");
+  if (obstacles) defines.push_back("OBSTACLE_LIST");
   const auto make = [](const std::vector<std::string>& d) {
     return gl::Program(gl::ProgramDesc{{"particle_update.comp"}, d, {}});
   };
   const gl::Program* expression = nullptr;
   if (state.field.mode == FieldMode::Expression)
     expression = expressionPrograms_.get(state, defines, make);
-  const gl::Program& update = expression                       ? *expression
-                              : !equation && !texture && !flow ? updateProgram_
-                                                               : variant(defines, make);
+  const gl::Program& update = expression                            ? *expression
+                              : !equation && !texture && !obstacles ? updateProgram_
+                                                                    : variant(defines, make);
 
   if (state.render.trailLength > 0) {
     if (!trails_) trails_ = std::make_unique<ParticleTrails>();
@@ -222,6 +225,17 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileStatus, tileStatus_.id());
   const GLuint zero = 0;
   glClearNamedBufferData(tileStatus_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+  if (obstacles) {
+    const GLsizeiptr listBytes = GLsizeiptr((capacity_ + 1) * sizeof(std::uint32_t));
+    if (collideListBytes_ < listBytes) {
+      collideList_ = gl::createBuffer();
+      glNamedBufferStorage(collideList_.id(), listBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+      collideListBytes_ = listBytes;
+    }
+    glClearNamedBufferSubData(collideList_.id(), GL_R32UI, 0, sizeof(std::uint32_t), GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &zero);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCollideList, collideList_.id());
+  }
 
   prepareProgram_.use();
   glProgramUniform1i(prepareProgram_.id(), 0, current_);
@@ -258,8 +272,8 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
       return gl::Program(std::vector<std::string>{"obstacle_collide.comp"});
     });
     collide.use();
-    glProgramUniform1i(collide.id(), 0, 1 - current_);
-    const std::size_t groups = std::min<std::size_t>((capacity_ + 255) / 256, 4096);
+    // A few records at a time are inside an obstacle: a small grid strides the list.
+    const std::size_t groups = std::min<std::size_t>((capacity_ + 255) / 256, 256);
     glDispatchCompute(GLuint(std::max<std::size_t>(groups, 1)), 1, 1);
   }
 

@@ -88,6 +88,8 @@ class ParticleComputeUpdate final : public ParticleBackend {
   gl::Buffer control_;     // counts, ticket, dispatch and draw commands (particle_prepare.comp)
   gl::Buffer tileStatus_;  // the scan's per-tile status words
   gl::Buffer simBlock_;
+  gl::Buffer collideList_;  // with obstacles: the records the update found not clear of one
+  std::ptrdiff_t collideListBytes_ = 0;
   gl::Buffer history_;  // kHistory counts, persistently mapped for reading
   const std::uint32_t* historyMap_ = nullptr;
   std::array<gl::Sync, kHistory> historyFence_;

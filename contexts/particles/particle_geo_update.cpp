@@ -152,8 +152,8 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
   environment_.describe(inputs);
   inputs.state = &state;
   inputs.step = step;
-  inputs.granted = budget_.allocate(
-      emissionOfKind(step.emission, state, EmitterKind::Particles), limit, count2);
+  inputs.granted =
+      budget_.allocate(emissionOfKind(step.emission, state, EmitterKind::Particles), limit, count2);
   inputs.granted.resize(state.emitters.size(), 0);
   const std::uint32_t born = std::accumulate(inputs.granted.begin(), inputs.granted.end(), 0u);
   SimBlock block;

@@ -75,22 +75,27 @@ void ParticleSystem::advance(const FramePacket& packet) {
   }
   update_->step(packet.step(), state_);
   // Molecules: the same packets, on every wall (they are not shared between walls).
-  if (!molecules_ && MoleculeSystem::wanted(state_)) {
-    molecules_ = std::make_unique<MoleculeSystem>(
+  if (update_->simulates() && !molecules_ && MoleculeUpdate::wanted(state_)) {
+    molecules_ = std::make_unique<MoleculeUpdate>(
         std::size_t(std::max(state_.molecules.maximum, 1)), capacityLimit_ / 8, tuning_);
-    if (field_) molecules_->setField(*field_);
     if (terrain_) molecules_->setTerrain(terrain_);
+    if (field_) setMoleculeField();
   } else if (molecules_ && packet.fieldUpdate) {
-    molecules_->setField(*field_);
+    setMoleculeField();
   }
   if (molecules_) molecules_->step(packet.step(), state_);
   // The shadow map depends on the particles, not the view: built once here
   // for every wall drawing this simulation, and published with it.
   if (shadow_) {
     shadow_->build(update_->records(), update_->capacity(), state_.render);
-    update_->publish(shadow_->handles());
+    update_->publish(shadow_->handles(), molecules());
   }
   frame_ = packet.frame;
+}
+
+void ParticleSystem::setMoleculeField() {
+  molecules_->setField(field_->field, field_->placement, field_->next);
+  molecules_->setEquation(field_->equation);
 }
 
 void ParticleSystem::render(const ViewTargets& targets, std::uint32_t destination,
@@ -118,7 +123,10 @@ void ParticleSystem::renderParticles(const ViewTargets& targets, const View* vie
                 {.shadows = state_.render.shadows, .motionBlur = state_.render.shutter > 0.0f});
   else
     render_.draw(*update_, targets, state_.render.mode, state_.render.order);
-  if (molecules_) molecules_->draw(targets);
+  if (const MoleculeHandles m = molecules()) {
+    if (!moleculeRenderer_) moleculeRenderer_ = std::make_unique<MoleculeRenderer>();
+    moleculeRenderer_->draw(m, targets);
+  }
 }
 
 void ParticleSystem::composite(const ViewTargets& targets, std::uint32_t destination,

@@ -9,7 +9,8 @@
 #include <memory>
 #include <string>
 
-#include "contexts/molecules/molecule_system.h"
+#include "contexts/molecules/molecule_renderer.h"
+#include "contexts/molecules/molecule_update.h"
 #include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_post.h"
 #include "contexts/particles/particle_render.h"
@@ -80,14 +81,22 @@ class ParticleSystem {
 
   const ParticleState& state() const { return state_; }
   const ParticleBackend& update() const { return *update_; }
-  // The molecules (made when the state first has a molecule emitter), or null.
-  const MoleculeSystem* molecules() const { return molecules_.get(); }
+  // This frame's molecules: this system's own (a MoleculeUpdate, made when
+  // the state first has a molecule emitter) or, for a shared simulation's
+  // reader, the owner's; none without molecules.
+  MoleculeHandles molecules() const {
+    return molecules_ ? molecules_->handles() : update_->sharedMolecules();
+  }
+  // Their members' records (waits for the GPU: dumps, tests).
+  std::vector<Particle> readBackMolecules() const { return readMolecules(molecules()); }
   std::shared_ptr<const FieldUpdate> field() const { return field_; }
   // The last packet's weight towards a time-varying field's next frame.
   float fieldBlend() const { return fieldBlend_; }
   std::uint32_t frame() const { return frame_; }
 
  private:
+  void setMoleculeField();
+
   ParticleState state_;
   std::size_t capacityLimit_;
   std::unique_ptr<ParticleBackend> update_;
@@ -95,7 +104,8 @@ class ParticleSystem {
   ParticleSplat splat_;
   ParticlePost post_;
   TrailRenderer trails_;
-  std::unique_ptr<MoleculeSystem> molecules_;
+  std::unique_ptr<MoleculeUpdate> molecules_;  // the simulation's owner's (once per GPU)
+  mutable std::unique_ptr<MoleculeRenderer> moleculeRenderer_;
   std::shared_ptr<const HeightMap> terrain_;
   GpuTuning tuning_;
   std::unique_ptr<OpacityShadowMap> shadow_;  // the simulation's owner's (once per GPU)

@@ -21,8 +21,9 @@ void SharingBackend::step(const SimStep& step, const ParticleState& state) {
   frame_ = step.frame;
 }
 
-void SharingBackend::publish(const ShadowHandles& shadow) {
-  share_->publish(frame_, {inner_->records(), inner_->capacity(), inner_->lateCount(), shadow});
+void SharingBackend::publish(const ShadowHandles& shadow, const MoleculeHandles& molecules) {
+  share_->publish(frame_,
+                  {inner_->records(), inner_->capacity(), inner_->lateCount(), shadow, molecules});
 }
 
 SharedParticles::SharedParticles(std::shared_ptr<SimulationShare> share, int reader)

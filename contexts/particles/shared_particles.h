@@ -30,7 +30,7 @@ class SharingBackend final : public ParticleBackend {
     inner_->setTerrain(std::move(terrain));
   }
   void step(const SimStep& step, const ParticleState& state) override;
-  void publish(const ShadowHandles& shadow) override;
+  void publish(const ShadowHandles& shadow, const MoleculeHandles& molecules) override;
   void clear() override { inner_->clear(); }
   void grow(std::size_t capacity) override { inner_->grow(capacity); }
   void draw() const override { inner_->draw(); }
@@ -64,6 +64,7 @@ class SharedParticles final : public ParticleBackend {
   Records records() const override { return current_.records; }
   bool simulates() const override { return false; }
   ShadowHandles sharedShadow() const override { return current_.shadow; }
+  MoleculeHandles sharedMolecules() const override { return current_.molecules; }
   void endFrame() override;
 
   std::size_t capacity() const override { return current_.capacity; }

@@ -31,6 +31,7 @@ class SimulationShare {
     std::size_t capacity = 0;
     std::size_t lateCount = 0;  // the owner's ParticleBackend::lateCount()
     ShadowHandles shadow;       // the owner's shadow map of the frame
+    MoleculeHandles molecules;  // the owner's molecules of the frame (none: no molecules)
   };
 
   explicit SimulationShare(int readers);

@@ -60,8 +60,7 @@ RenderWall::Drawn RenderWall::draw(const FramePacket& packet, glm::ivec2 framebu
   }
   // A count a frame or two old: waiting for this frame's would drain the GPU every frame.
   d.live = renderer_->particles().update().lateCount();
-  if (const MoleculeSystem* m = renderer_->particles().molecules())
-    d.molecules = m->update().lateCount();
+  d.molecules = renderer_->particles().molecules().lateCount;
   d.gpu = renderer_->stageTimes();
   d.measure = renderer_->measurement();
   d.cpuMs =

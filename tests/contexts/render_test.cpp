@@ -488,3 +488,40 @@ TEST_F(RenderTest, MotionBlurSmearsAParticleOverItsPathInTheShutterTime) {
 
 }  // namespace
 }  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+// Molecules (MoleculeRenderer) are drawn into the particle buffers and lit by
+// the same deferred pass: a dart's faces and a chain's ribbons cover the
+// pixel of their centre in the colour the render attributes give, and two
+// faces of opacity a over each other let 1 - (1 - a)^2 through, as "over" says.
+TEST_F(RenderTest, MoleculesAreDrawnInTheParticlesColourAndOpacity) {
+  const glm::vec3 where(0.5f, 0.0f, 2.2f);
+  const auto molecules = [&](int complexity, float opacity) {
+    ParticleState s = onePerFrame({where}, opacity);
+    s.emitters[0].kind = EmitterKind::Molecules;
+    s.molecules.complexity = complexity;
+    s.molecules.size = 0.5f;
+    s.molecules.width = 0.3f;
+    return render(s, 1);
+  };
+  const Image empty = render(onePerFrame({}, 1.0f), 1);
+  const glm::ivec2 px = project(where);
+  const glm::vec3 colour = glm::vec3(0.9f, 0.1f, 0.1f) * 255.0f;
+  for (int complexity : {4, 5}) {
+    SCOPED_TRACE(complexity);
+    const glm::u8vec4 c = molecules(complexity, 1.0f).at(px.x, px.y);
+    for (int k = 0; k < 3; ++k)
+      EXPECT_NEAR(float(c[k]), colour[k], 1.5f);
+  }
+  // Through a dart's front face and its back one, each of opacity 0.5.
+  const glm::u8vec4 half = molecules(4, 0.5f).at(px.x, px.y), bg = empty.at(px.x, px.y);
+  for (int k = 0; k < 3; ++k)
+    EXPECT_NEAR(float(half[k]), 0.75f * colour[k] + 0.25f * float(bg[k]), 2.0f);
+  // Nothing elsewhere: a corner of the image is the empty scene's.
+  EXPECT_EQ(molecules(4, 1.0f).at(2, 2), empty.at(2, 2));
+}
+
+}  // namespace
+}  // namespace sandstorm
