@@ -1,14 +1,20 @@
 // Molecules on the GPU (MoleculeUpdate) against the CPU reference
-// (MoleculeReference), record for record and bit for bit, through births,
-// deaths and mid-run changes; with obstacles, the push tool, repulsion, a
-// terrain, every motion model and integrator, a field expression and both
-// paths of the look-back scan. What would break it: any operation of
-// shaders/molecule_*.glsl that differs from core/molecules/molecule_physics.cpp,
-// or a compaction that reorders molecules.
+// (MoleculeReference), record for record, through births, deaths and mid-run
+// changes; with obstacles, the push tool, repulsion, a terrain, every motion
+// model and integrator, a field expression and both paths of the look-back
+// scan. Counts are equal every frame; positions and velocities bit for bit
+// where the GPU rounds sqrt and division correctly (llvmpipe), within 1e-4
+// elsewhere (an H100's first differences: 3e-8 .. 1.4e-7 m). What would break
+// it: any operation of shaders/molecule_*.glsl that differs from
+// core/molecules/molecule_physics.cpp, or a compaction that reorders molecules.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <functional>
+
+#include <epoxy/gl.h>
+
+#include <cstring>
 
 #include "contexts/molecules/molecule_update.h"
 #include "core/field/vortex_field.h"
@@ -58,7 +64,15 @@ struct MoleculeRun {
   std::function<void(MainContext&, int frame)> changes = [](MainContext&, int) {};
 };
 
-// Frames whose records all matched bit for bit (counts too); stops at the first that differs.
+// Whether this GPU's sqrt and division are IEEE's (llvmpipe's are), so the
+// GPU can equal the CPU bit for bit.
+bool exactArithmetic() {
+  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+  return renderer && std::strstr(renderer, "llvmpipe");
+}
+
+// Frames whose records all matched (counts exactly; bit for bit with exact
+// arithmetic, else within 1e-4); stops at the first that differs.
 int matchingFrames(const MoleculeRun& run, std::size_t* most = nullptr) {
   MoleculeUpdate gpu(1024, 1 << 16, GpuTuning{.scanSpin = run.spin});
   MoleculeReference cpu(1024, 1 << 16);
@@ -100,7 +114,7 @@ int matchingFrames(const MoleculeRun& run, std::size_t* most = nullptr) {
     for (std::size_t i = 0; i < g.size(); ++i)
       worst = std::max({worst, glm::length(g[i].positionLife - c[i].positionLife),
                         glm::length(g[i].velocityKind - c[i].velocityKind)});
-    if (worst != 0.0f) {
+    if (worst > (exactArithmetic() ? 0.0f : 1e-4f)) {
       ADD_FAILURE() << "frame " << f << ": max |gpu - cpu| = " << worst;
       break;
     }
