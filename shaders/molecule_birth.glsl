@@ -65,7 +65,7 @@ void collideMember(inout vec3 x, inout vec3 v) {
     }
   }
 #ifdef OBSTACLES
-  if (obstacleCount() != 0) keepOutOfObstacles(x, v, moleculeGround());
+  if (sim.obstacleCount.x != 0) keepOutOfObstacles(x, v, moleculeGround());
 #endif
 }
 
@@ -81,7 +81,7 @@ void settleNewbornMolecule(inout Particle m[kMoleculeMaxMembers]) {
     x.z = x.z + lift;
     vec3 v = m[j].velocityKind.xyz;
 #ifdef OBSTACLES
-    if (obstacleCount() != 0) keepOutOfObstacles(x, v, moleculeGround());
+    if (sim.obstacleCount.x != 0) keepOutOfObstacles(x, v, moleculeGround());
 #endif
     m[j].positionLife.xyz = x;
     m[j].velocityKind.xyz = v;

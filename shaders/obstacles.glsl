@@ -9,22 +9,6 @@
 const int kObstacleSphere = 0, kObstacleBox = 1, kObstacleCylinder = 2;
 const float kObstacleMargin = 1e-4;
 
-// How many obstacles, of which shape, turning the flow or not: the block's,
-// or, in programs compiled for one set of obstacles (OBSTACLE_COUNT,
-// OBSTACLE_SHAPES, OBSTACLE_FLOWS: the compute update's), constants, so the
-// loops unroll and each obstacle's code is its shape's alone.
-#ifdef OBSTACLE_COUNT
-const int kObstacleShapes[OBSTACLE_COUNT] = int[](OBSTACLE_SHAPES);
-const int kObstacleFlows[OBSTACLE_COUNT] = int[](OBSTACLE_FLOWS);
-int obstacleCount() { return OBSTACLE_COUNT; }
-int obstacleShape(int i) { return kObstacleShapes[i]; }
-bool obstacleTurnsFlow(int i) { return kObstacleFlows[i] != 0; }
-#else
-int obstacleCount() { return sim.obstacleCount.x; }
-int obstacleShape(int i) { return sim.obstacles[i].shapeFlow.x; }
-bool obstacleTurnsFlow(int i) { return sim.obstacles[i].shapeFlow.y != 0; }
-#endif
-
 float obstacleSign(float x) {
   return x < 0.0 ? -1.0 : 1.0;
 }
@@ -38,13 +22,13 @@ float dot3(vec3 a, vec3 b) {
 float obstacleSurface(int i, vec3 x, out vec3 normal) {
   precise vec3 d = x - sim.obstacles[i].positionRadius.xyz;
   normal = vec3(0.0, 0.0, 1.0);
-  if (obstacleShape(i) == kObstacleSphere) {
+  if (sim.obstacles[i].shapeFlow.x == kObstacleSphere) {
     precise float r = sqrt(dot3(d, d));
     if (r > 0.0) normal = d / r;
     precise float distance = r - sim.obstacles[i].positionRadius.w;
     return distance;
   }
-  if (obstacleShape(i) == kObstacleBox) {
+  if (sim.obstacles[i].shapeFlow.x == kObstacleBox) {
     precise vec3 q = abs(d) - sim.obstacles[i].halfSize.xyz;
     if (q.x > 0.0 || q.y > 0.0 || q.z > 0.0) {
       vec3 m = max(q, vec3(0.0));
@@ -82,7 +66,7 @@ float obstacleSurface(int i, vec3 x, out vec3 normal) {
 
 // A box's or cylinder's boundary layer: its smallest half-extent.
 float obstacleLayer(int i) {
-  if (obstacleShape(i) == kObstacleBox) return min(min(sim.obstacles[i].halfSize.x, sim.obstacles[i].halfSize.y), sim.obstacles[i].halfSize.z);
+  if (sim.obstacles[i].shapeFlow.x == kObstacleBox) return min(min(sim.obstacles[i].halfSize.x, sim.obstacles[i].halfSize.y), sim.obstacles[i].halfSize.z);
   return min(sim.obstacles[i].positionRadius.w, sim.obstacles[i].halfSize.w);
 }
 
@@ -90,7 +74,7 @@ float obstacleLayer(int i) {
 // surface (beyondLayer in the C++).
 bool beyondLayer(int i, vec3 x, float layer) {
   precise vec3 d = abs(x - sim.obstacles[i].positionRadius.xyz);
-  if (obstacleShape(i) == kObstacleBox) {
+  if (sim.obstacles[i].shapeFlow.x == kObstacleBox) {
     precise vec3 q = d - sim.obstacles[i].halfSize.xyz;
     return q.x >= layer || q.y >= layer || q.z >= layer;
   }
@@ -104,13 +88,13 @@ bool beyondLayer(int i, vec3 x, float layer) {
 // Whether x is certainly outside obstacle i (clearOf in the C++).
 bool clearOf(int i, vec3 x) {
   precise vec3 d = x - sim.obstacles[i].positionRadius.xyz;
-  if (obstacleShape(i) == kObstacleBox) {
+  if (sim.obstacles[i].shapeFlow.x == kObstacleBox) {
     precise vec3 q = abs(d) - sim.obstacles[i].halfSize.xyz;
     return q.x >= 0.0 || q.y >= 0.0 || q.z >= 0.0;
   }
   precise float r = 1.001 * sim.obstacles[i].positionRadius.w;
   precise float r2 = r * r;
-  if (obstacleShape(i) == kObstacleSphere) return dot3(d, d) >= r2;
+  if (sim.obstacles[i].shapeFlow.x == kObstacleSphere) return dot3(d, d) >= r2;
   precise float qz = abs(d.z) - sim.obstacles[i].halfSize.w;
   precise float rho2 = d.x * d.x + d.y * d.y;
   return qz >= 0.0 || rho2 >= r2;
@@ -118,11 +102,11 @@ bool clearOf(int i, vec3 x) {
 
 // The height at which x's column leaves obstacle i upwards.
 float obstacleTop(int i, vec3 x) {
-  if (obstacleShape(i) == kObstacleBox) {
+  if (sim.obstacles[i].shapeFlow.x == kObstacleBox) {
     precise float top = sim.obstacles[i].positionRadius.z + sim.obstacles[i].halfSize.z;
     return top;
   }
-  if (obstacleShape(i) == kObstacleCylinder) {
+  if (sim.obstacles[i].shapeFlow.x == kObstacleCylinder) {
     precise float top = sim.obstacles[i].positionRadius.z + sim.obstacles[i].halfSize.w;
     return top;
   }
@@ -134,10 +118,10 @@ float obstacleTop(int i, vec3 x) {
 
 vec3 flowAroundObstacles(vec3 f, vec3 x, bool velocityField) {
   precise vec3 result = f;
-  for (int i = 0; i < obstacleCount(); ++i) {
-    if (!obstacleTurnsFlow(i)) continue;
+  for (int i = 0; i < sim.obstacleCount.x; ++i) {
+    if (sim.obstacles[i].shapeFlow.y == 0) continue;
     precise vec3 u = velocityField ? f - sim.obstacles[i].velocity.xyz : f;
-    if (obstacleShape(i) == kObstacleSphere) {
+    if (sim.obstacles[i].shapeFlow.x == kObstacleSphere) {
       precise vec3 d = x - sim.obstacles[i].positionRadius.xyz;
       precise float r = sqrt(dot3(d, d));
       if (!(r > 0.0)) continue;
@@ -187,12 +171,12 @@ bool pushOutOfObstacle(int i, inout vec3 x, inout vec3 v, bool ground) {
 // of any a push landed in.
 void keepOutOfObstacles(inout vec3 x, inout vec3 v, bool ground) {
   bool pushed = false;
-  for (int i = 0; i < obstacleCount(); ++i)
+  for (int i = 0; i < sim.obstacleCount.x; ++i)
     if (pushOutOfObstacle(i, x, v, ground)) pushed = true;
   if (!pushed) return;
-  for (int pass = 0; pass < obstacleCount(); ++pass) {
+  for (int pass = 0; pass < sim.obstacleCount.x; ++pass) {
     bool rose = false;
-    for (int i = 0; i < obstacleCount(); ++i) {
+    for (int i = 0; i < sim.obstacleCount.x; ++i) {
       vec3 n;
       if (clearOf(i, x) || !(obstacleSurface(i, x, n) < 0.0)) continue;
       precise float top = obstacleTop(i, x) + kObstacleMargin;
@@ -205,7 +189,7 @@ void keepOutOfObstacles(inout vec3 x, inout vec3 v, bool ground) {
 
 // A newborn particle out of every obstacle (settleNewborn in particle_physics.cpp).
 void settleNewborn(inout Particle p) {
-  if (obstacleCount() == 0) return;
+  if (sim.obstacleCount.x == 0) return;
   vec3 x = p.positionLife.xyz, v = p.velocityKind.xyz;
   keepOutOfObstacles(x, v, sim.modes.w != 0 && sim.terrainDims.z != 0);
   p.positionLife.xyz = x;

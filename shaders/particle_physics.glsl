@@ -129,7 +129,7 @@ vec3 toRoom(vec3 local) {
 vec3 fieldAt(vec3 x) {
   if (sim.fieldDims.w == 0) {
 #if defined(OBSTACLES) || defined(OBSTACLE_FLOW)
-    if (obstacleCount() != 0) return flowAroundObstacles(vec3(0.0), x, sim.modes.x != kMotionForce);
+    if (sim.obstacleCount.x != 0) return flowAroundObstacles(vec3(0.0), x, sim.modes.x != kMotionForce);
 #endif
     return vec3(0.0);
   }
@@ -147,7 +147,7 @@ vec3 fieldAt(vec3 x) {
 #endif
   precise vec3 f = sim.stepParams.y * ((placementRotation() * s) * sim.placementOffset.w);
 #if defined(OBSTACLES) || defined(OBSTACLE_FLOW)
-  if (obstacleCount() != 0) return flowAroundObstacles(f, x, sim.modes.x != kMotionForce);
+  if (sim.obstacleCount.x != 0) return flowAroundObstacles(f, x, sim.modes.x != kMotionForce);
 #endif
   return f;
 }
@@ -278,7 +278,7 @@ bool advance(inout Particle p) {
   }
   // Out of the obstacles, in order (after the ground, which they stand on).
 #ifdef OBSTACLES
-  if (obstacleCount() != 0) keepOutOfObstacles(x, v, ground);
+  if (sim.obstacleCount.x != 0) keepOutOfObstacles(x, v, ground);
 #endif
   p.positionLife = vec4(x, life);
   p.velocityKind = vec4(v, p.velocityKind.w);

@@ -134,7 +134,7 @@ void main() {
       if (uTrails) trailSource[o] = tile * kTile + uint(k) * 256u + lid;
 #ifdef OBSTACLE_LIST
       bool clear = true;
-      for (int i = 0; i < obstacleCount(); ++i)
+      for (int i = 0; i < sim.obstacleCount.x; ++i)
         clear = clear && clearOf(i, p[k].positionLife.xyz);
       if (!clear) collideIndex[atomicAdd(collideCount, 1u)] = o;
 #endif

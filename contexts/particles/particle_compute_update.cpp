@@ -40,20 +40,6 @@ std::string itemsDefine(int items) {
   return concat("ITEMS ", items);
 }
 
-// The obstacles as constants of the program (obstacles.glsl's OBSTACLE_COUNT,
-// _SHAPES, _FLOWS): the loops unroll and each obstacle's code is its shape's
-// alone. Their places and speeds stay in the block, so moving one recompiles
-// nothing; a new shape or flow switch makes (once) another variant.
-std::vector<std::string> obstacleConstants(const SimBlock& block) {
-  std::string shapes, flows;
-  for (int i = 0; i < block.obstacleCount.x; ++i) {
-    shapes += concat(i ? "," : "", block.obstacles[i].shapeFlow.x);
-    flows += concat(i ? "," : "", block.obstacles[i].shapeFlow.y);
-  }
-  return {concat("OBSTACLE_COUNT ", block.obstacleCount.x), "OBSTACLE_SHAPES " + shapes,
-          "OBSTACLE_FLOWS " + flows};
-}
-
 int checkedItems(int items) {
   if (items != 1 && items != 2 && items != 4 && items != 8)
     throw Error(
@@ -212,11 +198,7 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   // them is a pass of its own (obstacle_collide.comp), below, over the
   // records the update lists as not clear of an obstacle.
   if (flow) defines.push_back("OBSTACLE_FLOW");
-  if (obstacles) {
-    defines.push_back("OBSTACLE_LIST");
-    for (const std::string& d : obstacleConstants(block))
-      defines.push_back(d);
-  }
+  if (obstacles) defines.push_back("OBSTACLE_LIST");
   const auto make = [](const std::vector<std::string>& d) {
     return gl::Program(gl::ProgramDesc{{"particle_update.comp"}, d, {}});
   };
@@ -286,12 +268,8 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   if (obstacles) {
     // The last step of advance(): out of the obstacles, over the output set.
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-    std::vector<std::string> collideDefines{"COLLIDE"};
-    for (const std::string& d : obstacleConstants(block))
-      collideDefines.push_back(d);
-    const gl::Program& collide = variant(collideDefines, [](std::vector<std::string> d) {
-      d.erase(d.begin());  // COLLIDE only keys the variant
-      return gl::Program(gl::ProgramDesc{{"obstacle_collide.comp"}, d, {}});
+    const gl::Program& collide = variant({"COLLIDE"}, [](const std::vector<std::string>&) {
+      return gl::Program(std::vector<std::string>{"obstacle_collide.comp"});
     });
     collide.use();
     // A few records at a time are inside an obstacle: a small grid strides the list.
