@@ -1,6 +1,8 @@
 #version 450 core
-// MoleculeRenderer: one instance a molecule, its vertices pulled from the
-// members' records (MoleculeUpdate's buffers). Solid shapes draw their faces
+// MoleculeRenderer: molecule gl_VertexID / n's vertex gl_VertexID % n (n its
+// vertices: molecule.drawing.z), pulled from the members' records
+// (MoleculeUpdate's buffers); one draw for every molecule (as instances, one
+// a molecule, an H100 drew them far slower). Solid shapes draw their faces
 // (flat normals); rods and chains draw each line as a ribbon
 // molecules.width wide, turned to face the eye and shaded as a tube (the
 // same on every wall, like the billboards).
@@ -25,8 +27,9 @@ vec3 memberPosition(uint first, int j) {
 }
 
 void main() {
-  uint first = uint(gl_InstanceID) * uint(molecule.shape.x);
-  int v = gl_VertexID;
+  int perMolecule = molecule.drawing.z;
+  uint first = uint(gl_VertexID / perMolecule) * uint(molecule.shape.x);
+  int v = gl_VertexID % perMolecule;
   int member;
   vec3 position;
   if (molecule.drawing.x > 0) {

@@ -13,7 +13,6 @@
 #include "particle_physics.glsl"
 #include "particle_control.glsl"
 #include "molecule_birth.glsl"
-#include "molecule_physics.glsl"
 
 layout(local_size_x = 256) in;
 layout(std430, binding = 0) readonly restrict buffer InPositionLife { vec4 inPositionLife[]; };
@@ -32,12 +31,24 @@ layout(location = 5) uniform uint uVertices;  // a molecule draws
 #include "molecule_grid.glsl"
 #endif
 
-void loadMolecule(uint i, out Particle m[kMoleculeMaxMembers]) {
-  uint n = uint(molecule.shape.x);
-  for (uint j = 0u; j < n; ++j) {
-    m[j].positionLife = inPositionLife[i * n + j];
-    m[j].velocityKind = inVelocityKind[i * n + j];
+// The molecule advanceMolecule is stepping: memberStart() reads its input.
+uint gMoleculeFirst = 0u;
+
+vec3 memberStart(int j) {
+  return inPositionLife[gMoleculeFirst + uint(j)].xyz;
+}
+
+#include "molecule_physics.glsl"
+
+// Loads molecule i; returns its life and lifetime (its members share them).
+vec2 loadMolecule(uint i, out vec3 x[kMembers], out vec3 v[kMembers]) {
+  gMoleculeFirst = i * uint(kMembers);
+  vec2 life = vec2(inPositionLife[gMoleculeFirst].w, inVelocityKind[gMoleculeFirst].w);
+  for (int j = 0; j < kMembers; ++j) {
+    x[j] = inPositionLife[gMoleculeFirst + uint(j)].xyz;
+    v[j] = inVelocityKind[gMoleculeFirst + uint(j)].xyz;
   }
+  return life;
 }
 
 vec3 repulsionOf(uint i) {
@@ -49,9 +60,9 @@ vec3 repulsionOf(uint i) {
 }
 
 bool survives(uint i) {
-  Particle m[kMoleculeMaxMembers];
-  loadMolecule(i, m);
-  return advanceMolecule(m, repulsionOf(i));
+  vec3 x[kMembers], v[kMembers];
+  vec2 life = loadMolecule(i, x, v);
+  return advanceMolecule(x, v, life.x, life.y, repulsionOf(i));
 }
 
 #include "tile_lookback.glsl"
@@ -69,11 +80,12 @@ void main() {
   uint inCount = ctl.count[uIn];
 
   uint i = tile * kTile + lid;
-  Particle m[kMoleculeMaxMembers];
+  vec3 x[kMembers], v[kMembers];
+  vec2 life = vec2(0.0);
   bool alive = false;
   if (i < inCount) {
-    loadMolecule(i, m);
-    alive = advanceMolecule(m, repulsionOf(i));
+    life = loadMolecule(i, x, v);
+    alive = advanceMolecule(x, v, life.x, life.y, repulsionOf(i));
   }
   uint mine = alive ? 1u : 0u;
   sScan[lid] = mine;
@@ -92,14 +104,13 @@ void main() {
   if (lid == 0u && tile == tiles - 1u) {
     uint live = min(uBorn + prefix + aggregate, uCapacity);
     ctl.count[1 - uIn] = live;
-    ctl.draw[1 - uIn] = uvec4(uVertices, live, 0u, 0u);
+    ctl.draw[1 - uIn] = uvec4(uVertices * live, 1u, 0u, 0u);
   }
   uint o = uBorn + prefix + before;
   if (alive && o < uCapacity) {
-    uint n = uint(molecule.shape.x);
-    for (uint j = 0u; j < n; ++j) {
-      outPositionLife[o * n + j] = m[j].positionLife;
-      outVelocityKind[o * n + j] = m[j].velocityKind;
+    for (int j = 0; j < kMembers; ++j) {
+      outPositionLife[o * uint(kMembers) + uint(j)] = vec4(x[j], life.x);
+      outVelocityKind[o * uint(kMembers) + uint(j)] = vec4(v[j], life.y);
     }
   }
 }

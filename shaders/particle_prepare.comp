@@ -8,7 +8,7 @@ layout(local_size_x = 1) in;
 layout(location = 0) uniform int uIn;    // the input set; the output is 1 - uIn
 layout(location = 1) uniform uint uBorn; // newborn of this update
 #ifdef MOLECULES
-layout(location = 2) uniform uint uVertices;  // a molecule's: the draw is instanced, one a molecule
+layout(location = 2) uniform uint uVertices;  // a molecule's: the draw covers every molecule's
 #endif
 
 void main() {
@@ -16,7 +16,7 @@ void main() {
   int outSet = 1 - uIn;
   ctl.count[outSet] = uBorn;
 #ifdef MOLECULES
-  ctl.draw[outSet] = uvec4(uVertices, uBorn, 0u, 0u);
+  ctl.draw[outSet] = uvec4(uVertices * uBorn, 1u, 0u, 0u);
 #else
   ctl.draw[outSet] = uvec4(uBorn, 1u, 0u, 0u);
 #endif

@@ -1,7 +1,8 @@
 // MoleculeHandles: a frame's molecules as another wall on the same GPU can
 // draw and read them (SimulationShare publishes the owner's): the members'
 // buffers, the control block with the live count and the instanced draw
-// command, and the molecule block describing their shape. Plain GL names.
+// command (every molecule's vertices in one draw), and the molecule block
+// describing their shape. Plain GL names.
 #pragma once
 
 #include <cstddef>

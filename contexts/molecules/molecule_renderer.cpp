@@ -16,7 +16,14 @@ void MoleculeRenderer::draw(const MoleculeHandles& r, const ViewTargets& targets
   glViewport(0, 0, targets.size().x, targets.size().y);
   glDisable(GL_DEPTH_TEST);  // the fragment stage tests against the scene's depth itself
   glDepthMask(GL_FALSE);
-  glDisable(GL_CULL_FACE);
+  // A closed solid (the tetrahedron) shows its outward faces only: they wind
+  // counter-clockwise seen from outside (MoleculeShape).
+  if (r.members == 4) {
+    glEnable(GL_CULL_FACE);
+    glCullFace(GL_BACK);
+  } else {
+    glDisable(GL_CULL_FACE);
+  }
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   glBindTextureUnit(3, targets.sceneDepth());
@@ -30,6 +37,7 @@ void MoleculeRenderer::draw(const MoleculeHandles& r, const ViewTargets& targets
   glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
   glBindVertexArray(0);
   glDisable(GL_BLEND);
+  glDisable(GL_CULL_FACE);
 }
 
 std::vector<Particle> readMolecules(const MoleculeHandles& m) {

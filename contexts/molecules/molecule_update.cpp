@@ -35,6 +35,18 @@ enum Binding : GLuint {
 
 constexpr GLuint kSimBlock = 0, kMoleculeBlock = 5;
 
+// The shape as the update program's constants (shaders/molecule_physics.glsl).
+std::vector<std::string> shapeConstants(int complexity) {
+  const MoleculeShape& shape = moleculeShape(complexity);
+  std::string a, b;
+  for (std::size_t k = 0; k < shape.springs.size(); ++k) {
+    a += concat(k ? "," : "", shape.springs[k].a);
+    b += concat(k ? "," : "", shape.springs[k].b);
+  }
+  return {concat("MEMBERS ", shape.members), concat("SPRING_COUNT ", shape.springs.size()),
+          "SPRINGS_A " + a, "SPRINGS_B " + b, concat("SOLID ", shape.faces.empty() ? 0 : 1)};
+}
+
 }  // namespace
 
 MoleculeUpdate::MoleculeUpdate(std::size_t capacity, std::size_t capacityLimit,
@@ -131,7 +143,7 @@ const gl::Program& MoleculeUpdate::variant(const std::string& file,
 
 const gl::Program& MoleculeUpdate::updateProgram(const ParticleState& state, bool equation,
                                                  bool obstacles, bool repulsion) {
-  std::vector<std::string> defines;
+  std::vector<std::string> defines = shapeConstants(state.molecules.complexity);
   if (equation)
     defines.push_back("FIELD_EQUATION");
   else if (environment_.gridStorage() == GpuField::Storage::Buffer)

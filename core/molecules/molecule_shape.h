@@ -37,7 +37,8 @@ struct MoleculeShape {
   int members = 0;
   std::vector<glm::vec3> rest;  // per member, in edge lengths
   std::vector<MoleculeSpring> springs;
-  // Drawn as triangles (member indices), or, without faces, as ribbons along `lines`.
+  // Drawn as triangles (member indices; a closed shape's wind counter-clockwise
+  // seen from outside), or, without faces, as ribbons along `lines`.
   std::vector<std::array<int, 3>> faces;
   std::vector<std::array<int, 2>> lines;
 };

@@ -99,6 +99,15 @@ TEST(MoleculeShape, EveryShapeRestsOnItsSpringsAndIsCentred) {
   EXPECT_NEAR(dart.springs[0].rest, dart.springs[1].rest, 1e-6f);
   EXPECT_NEAR(dart.springs[1].rest, dart.springs[2].rest, 1e-6f);
   EXPECT_GT(dart.springs[0].rest, 2.0f);
+  // The closed shape's faces wind counter-clockwise seen from outside (culling keeps those).
+  glm::vec3 centre(0.0f);
+  for (const glm::vec3& p : dart.rest)
+    centre += p / 4.0f;
+  for (const auto& f : dart.faces) {
+    const glm::vec3 a = dart.rest[std::size_t(f[0])], b = dart.rest[std::size_t(f[1])],
+                    c = dart.rest[std::size_t(f[2])];
+    EXPECT_GT(glm::dot(glm::cross(b - a, c - a), (a + b + c) / 3.0f - centre), 0.0f);
+  }
   EXPECT_THROW(moleculeShape(1), Error);
   EXPECT_THROW(moleculeShape(9), Error);
 }
