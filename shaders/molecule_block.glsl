@@ -11,7 +11,7 @@ layout(std140, binding = 5) uniform MoleculeBlock {
   vec4 pushMore;     // x: its speed, y: 1 when on, z: 1 / (members - 1)
   vec4 repulsion;    // x: 1 when on, y: radius, z: 1 / radius, w: each one's share
   uvec4 grid;        // x: the repulsion table's size - 1 (a power of two)
-  vec4 springs[kMoleculeMaxSprings];  // member a, member b, rest length (m)
+  vec4 springs[kMoleculeMaxSprings];  // member a, member b, rest length (m), pass share / (w_a + w_b)
   vec4 rest[kMoleculeMaxMembers];     // rest position (edges), w: the vane's reach
   ivec4 faces[4];    // drawn triangles' members
   ivec4 lines[8];    // drawn ribbons' members (shapes without faces)

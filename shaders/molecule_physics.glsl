@@ -54,8 +54,6 @@ bool advanceMolecule(inout vec3 x[kMembers], inout vec3 v[kMembers], inout float
       precise vec3 xj = x[j] + repulsion;
       x[j] = xj;
     }
-  for (int j = 0; j < kMembers; ++j)
-    collideMember(x[j], v[j]);
 
   // The springs, position-based, in order.
   for (int it = 0; it < molecule.shape.y; ++it) {
@@ -65,7 +63,7 @@ bool advanceMolecule(inout vec3 x[kMembers], inout vec3 v[kMembers], inout float
       precise vec3 d = x[b] - x[a];
       precise float len = sqrt(mdot(d, d));
       if (!(len > 0.0)) continue;
-      precise float s = molecule.mass.w * (len - molecule.springs[k].z) / (len * (wa + wb));
+      precise float s = molecule.springs[k].w * (len - molecule.springs[k].z) / len;
       precise vec3 c = d * s;
       precise vec3 xa = x[a] + c * wa;
       precise vec3 xb = x[b] - c * wb;

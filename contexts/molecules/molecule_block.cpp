@@ -19,8 +19,8 @@ MoleculeBlock makeMoleculeBlock(const MoleculeSettings& s, float dt, std::uint32
                           p.repulsionShare);
   b.grid = glm::uvec4(tableMask, 0, 0, 0);
   for (std::size_t k = 0; k < shape.springs.size(); ++k)
-    b.springs[k] =
-        glm::vec4(float(shape.springs[k].a), float(shape.springs[k].b), p.springLength[k], 0.0f);
+    b.springs[k] = glm::vec4(float(shape.springs[k].a), float(shape.springs[k].b),
+                             p.springLength[k], p.springFactor[k]);
   for (int j = 0; j < shape.members; ++j)
     b.rest[j] = glm::vec4(shape.rest[std::size_t(j)], p.vaneReach[std::size_t(j)]);
   for (std::size_t f = 0; f < shape.faces.size(); ++f)

@@ -79,8 +79,13 @@ MoleculeParams moleculeParams(const MoleculeSettings& s, float dt) {
   p.passStiffness = float(1.0 - std::pow(double(keep), 1.0 / double(p.iterations)));
   p.damping = std::clamp(s.damping, 0.0f, 1.0f);
   p.invDt = dt > 0.0f ? 1.0f / dt : 0.0f;
-  for (std::size_t k = 0; k < shape.springs.size(); ++k)
-    p.springLength[k] = shape.springs[k].rest * s.size;
+  for (std::size_t k = 0; k < shape.springs.size(); ++k) {
+    const MoleculeSpring& spring = shape.springs[k];
+    p.springLength[k] = spring.rest * s.size;
+    const float wa = spring.a == 0 ? p.invHeadMass : 1.0f,
+                wb = spring.b == 0 ? p.invHeadMass : 1.0f;
+    p.springFactor[k] = p.passStiffness / (wa + wb);
+  }
   p.push.push = s.push && s.pushSpeed > 0.0f;
   p.push.pushCentre = s.pushPosition;
   p.push.pushRadius = s.pushRadius;
@@ -172,7 +177,6 @@ bool advanceMolecule(std::span<Particle> m, const PhysicsInputs& in, const Molec
   if (params.repulsion)
     for (int j = 0; j < n; ++j)
       x[j] = x[j] + repulsion;
-  collide(x, v, n, in);
 
   // The springs, position-based, in order (Gauss-Seidel).
   for (int it = 0; it < params.iterations; ++it) {
@@ -181,7 +185,7 @@ bool advanceMolecule(std::span<Particle> m, const PhysicsInputs& in, const Molec
       const glm::vec3 d = x[b] - x[a];
       const float len = std::sqrt(dot3(d, d));
       if (!(len > 0.0f)) continue;
-      const float s = params.passStiffness * (len - params.springLength[k]) / (len * (w[a] + w[b]));
+      const float s = params.springFactor[k] * (len - params.springLength[k]) / len;
       const glm::vec3 c = d * s;
       x[a] = x[a] + c * w[a];
       x[b] = x[b] - c * w[b];

@@ -67,6 +67,8 @@ struct MoleculeParams {
   float damping = 0.0f;
   float invDt = 0.0f;
   std::array<float, MoleculeShape::kMaxSprings> springLength{};  // m
+  // k / (w_a + w_b): the share of a spring's stretch a pass moves, over its ends' inverse masses.
+  std::array<float, MoleculeShape::kMaxSprings> springFactor{};
   Forcing push;  // push, pushCentre, pushRadius, pushSpeed (fieldScale unused)
   bool repulsion = false;
   float repulsionRadius = 0.0f;

@@ -125,7 +125,7 @@ int matchingFrames(const MoleculeRun& run, std::size_t* most = nullptr) {
 }
 
 TEST_F(MoleculeUpdateTest, MoleculesMoveAsTheReferenceSaysForEveryShape) {
-  for (int n : {2, 3, 4, 7}) {
+  for (int n : {2, 4, 7}) {  // a rod, a solid, a chain (each shape a program to compile)
     SCOPED_TRACE(n);
     MoleculeRun run{.state = moleculeState(n)};
     std::size_t most = 0;
