@@ -1,6 +1,6 @@
 #version 450 core
 // MoleculeUpdate, step 2: invocation g writes the g-th newborn molecule of the
-// update at records g * n .. g * n + n - 1 (birthMolecule, then
+// update, members at records moleculeRecord(g, j) (birthMolecule, then
 // settleNewbornMolecule); emitters' newborn follow one another in emitter
 // order, as particles' do (particle_emit.comp). The sim block's granted
 // counts are the molecule emitters'.
@@ -39,7 +39,7 @@ void main() {
     m[j] = birthMember(q, centre, j);
   settleNewbornMolecule(m);
   for (int j = 0; j < n; ++j) {
-    outPositionLife[g * uint(n) + uint(j)] = m[j].positionLife;
-    outVelocityKind[g * uint(n) + uint(j)] = m[j].velocityKind;
+    outPositionLife[moleculeRecord(g, j)] = m[j].positionLife;
+    outVelocityKind[moleculeRecord(g, j)] = m[j].velocityKind;
   }
 }

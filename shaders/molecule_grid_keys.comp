@@ -14,10 +14,9 @@ layout(location = 0) uniform int uIn;
 void main() {
   uint i = gl_GlobalInvocationID.x;
   if (i >= ctl.count[uIn]) return;
-  uint n = uint(molecule.shape.x);
   precise vec3 sum = vec3(0.0);
-  for (uint j = 0u; j < n; ++j)
-    sum = sum + inPositionLife[i * n + j].xyz;
+  for (int j = 0; j < molecule.shape.x; ++j)
+    sum = sum + inPositionLife[moleculeRecord(i, j)].xyz;
   precise vec3 centre = sum * molecule.motion.w;
   gridCentres[i] = vec4(centre, 0.0);
   gridKeys[i] = gridKey(gridCell(centre));

@@ -23,12 +23,12 @@ out float vColor;
 out float vLight;
 
 vec3 memberPosition(uint first, int j) {
-  return positionLife[first + uint(j)].xyz;
+  return positionLife[moleculeRecord(first, j)].xyz;
 }
 
 void main() {
   int perMolecule = molecule.drawing.z;
-  uint first = uint(gl_VertexID / perMolecule) * uint(molecule.shape.x);
+  uint first = uint(gl_VertexID / perMolecule);  // the molecule
   int v = gl_VertexID % perMolecule;
   int member;
   vec3 position;
@@ -60,8 +60,8 @@ void main() {
     vRibbon = 1;
     vAcross = side;
   }
-  vec4 pl = positionLife[first + uint(member)];
-  vec4 vk = velocityKind[first + uint(member)];
+  vec4 pl = positionLife[moleculeRecord(first, member)];
+  vec4 vk = velocityKind[moleculeRecord(first, member)];
   vAge = clamp(1.0 - pl.w / max(vk.w, 1e-6), 0.0, 1.0);
   vColor = colorCoordinate(vAge, vk.xyz, pl.xyz);
   vLight = lightTransmittance(pl.xyz);

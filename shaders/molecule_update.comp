@@ -32,21 +32,25 @@ layout(location = 5) uniform uint uVertices;  // a molecule draws
 #endif
 
 // The molecule advanceMolecule is stepping: memberStart() reads its input.
-uint gMoleculeFirst = 0u;
+uint gMolecule = 0u;
 
 vec3 memberStart(int j) {
-  return inPositionLife[gMoleculeFirst + uint(j)].xyz;
+  return inPositionLife[moleculeRecord(gMolecule, j)].xyz;
 }
 
 #include "molecule_physics.glsl"
 
 // Loads molecule i; returns its life and lifetime (its members share them).
 vec2 loadMolecule(uint i, out vec3 x[kMembers], out vec3 v[kMembers]) {
-  gMoleculeFirst = i * uint(kMembers);
-  vec2 life = vec2(inPositionLife[gMoleculeFirst].w, inVelocityKind[gMoleculeFirst].w);
-  for (int j = 0; j < kMembers; ++j) {
-    x[j] = inPositionLife[gMoleculeFirst + uint(j)].xyz;
-    v[j] = inVelocityKind[gMoleculeFirst + uint(j)].xyz;
+  gMolecule = i;
+  vec4 head = inPositionLife[i];
+  vec4 headVelocity = inVelocityKind[i];
+  vec2 life = vec2(head.w, headVelocity.w);
+  x[0] = head.xyz;
+  v[0] = headVelocity.xyz;
+  for (int j = 1; j < kMembers; ++j) {
+    x[j] = inPositionLife[moleculeRecord(i, j)].xyz;
+    v[j] = inVelocityKind[moleculeRecord(i, j)].xyz;
   }
   return life;
 }
@@ -109,8 +113,8 @@ void main() {
   uint o = uBorn + prefix + before;
   if (alive && o < uCapacity) {
     for (int j = 0; j < kMembers; ++j) {
-      outPositionLife[o * uint(kMembers) + uint(j)] = vec4(x[j], life.x);
-      outVelocityKind[o * uint(kMembers) + uint(j)] = vec4(v[j], life.y);
+      outPositionLife[moleculeRecord(o, j)] = vec4(x[j], life.x);
+      outVelocityKind[moleculeRecord(o, j)] = vec4(v[j], life.y);
     }
   }
 }

@@ -6,7 +6,8 @@ int moleculeVertices(const MoleculeShape& shape) {
   return shape.faces.empty() ? 6 * int(shape.lines.size()) : 3 * int(shape.faces.size());
 }
 
-MoleculeBlock makeMoleculeBlock(const MoleculeSettings& s, float dt, std::uint32_t tableMask) {
+MoleculeBlock makeMoleculeBlock(const MoleculeSettings& s, float dt, std::size_t capacity,
+                                std::uint32_t tableMask) {
   const MoleculeParams p = moleculeParams(s, dt);
   const MoleculeShape& shape = moleculeShape(s.complexity);
   MoleculeBlock b{};
@@ -17,7 +18,7 @@ MoleculeBlock makeMoleculeBlock(const MoleculeSettings& s, float dt, std::uint32
   b.pushMore = glm::vec4(p.push.pushSpeed, p.push.push ? 1.0f : 0.0f, p.invTailMembers, 0.0f);
   b.repulsion = glm::vec4(p.repulsion ? 1.0f : 0.0f, p.repulsionRadius, 1.0f / p.repulsionRadius,
                           p.repulsionShare);
-  b.grid = glm::uvec4(tableMask, 0, 0, 0);
+  b.grid = glm::uvec4(tableMask, std::uint32_t(capacity), 0, 0);
   for (std::size_t k = 0; k < shape.springs.size(); ++k)
     b.springs[k] = glm::vec4(float(shape.springs[k].a), float(shape.springs[k].b),
                              p.springLength[k], p.springFactor[k]);

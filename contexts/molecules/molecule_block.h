@@ -31,8 +31,10 @@ static_assert(sizeof(MoleculeBlock) == 16 * (7 + 16 + 8 + 4 + 8 + 2));
 // Vertices a molecule of the shape draws: three a face, six a ribbon.
 int moleculeVertices(const MoleculeShape& shape);
 
-// `tableMask`: the repulsion table's size - 1 (MoleculeGridGpu).
-MoleculeBlock makeMoleculeBlock(const MoleculeSettings& settings, float dt,
+// `capacity`: the molecules the buffers hold (member j of molecule i is
+// record j * capacity + i); `tableMask`: the repulsion table's size - 1
+// (MoleculeGridGpu).
+MoleculeBlock makeMoleculeBlock(const MoleculeSettings& settings, float dt, std::size_t capacity,
                                 std::uint32_t tableMask = 0);
 
 }  // namespace sandstorm

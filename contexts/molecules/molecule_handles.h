@@ -14,6 +14,7 @@ struct MoleculeHandles {
   std::uint32_t positionLife = 0, velocityKind = 0, control = 0, block = 0;
   std::uint32_t countOffset = 0, drawOffset = 0;
   int members = 0;
+  std::uint32_t stride = 0;   // member j of molecule i is record j * stride + i
   std::size_t lateCount = 0;  // live molecules a frame or two ago
   explicit operator bool() const { return positionLife != 0 && block != 0 && members > 0; }
 };

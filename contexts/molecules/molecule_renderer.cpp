@@ -47,18 +47,23 @@ std::vector<Particle> readMolecules(const MoleculeHandles& m) {
   glCopyNamedBufferSubData(m.control, staging.id(), m.countOffset, 0, 4);
   std::uint32_t count = 0;
   glGetNamedBufferSubData(staging.id(), 0, 4, &count);
-  const std::size_t records = std::size_t(count) * std::size_t(m.members);
-  std::vector<Particle> out(records);
-  if (records == 0) return out;
-  const GLsizeiptr bytes = GLsizeiptr(records * sizeof(glm::vec4));
+  const std::size_t n = std::size_t(m.members), stride = m.stride;
+  std::vector<Particle> out(std::size_t(count) * n);
+  if (count == 0) return out;
+  // Each member's slice of `count` records into one buffer: positions, then velocities.
+  const GLsizeiptr slice = GLsizeiptr(count * sizeof(glm::vec4));
   gl::Buffer copy = gl::createBuffer();
-  glNamedBufferStorage(copy.id(), 2 * bytes, nullptr, GL_CLIENT_STORAGE_BIT);
-  glCopyNamedBufferSubData(m.positionLife, copy.id(), 0, 0, bytes);
-  glCopyNamedBufferSubData(m.velocityKind, copy.id(), 0, bytes, bytes);
-  std::vector<glm::vec4> data(2 * records);
-  glGetNamedBufferSubData(copy.id(), 0, 2 * bytes, data.data());
-  for (std::size_t i = 0; i < records; ++i)
-    out[i] = Particle{data[i], data[records + i]};
+  glNamedBufferStorage(copy.id(), 2 * GLsizeiptr(n) * slice, nullptr, GL_CLIENT_STORAGE_BIT);
+  for (std::size_t j = 0; j < n; ++j) {
+    const GLintptr from = GLintptr(j * stride * sizeof(glm::vec4));
+    glCopyNamedBufferSubData(m.positionLife, copy.id(), from, GLintptr(j) * slice, slice);
+    glCopyNamedBufferSubData(m.velocityKind, copy.id(), from, GLintptr(n + j) * slice, slice);
+  }
+  std::vector<glm::vec4> data(2 * n * count);
+  glGetNamedBufferSubData(copy.id(), 0, 2 * GLsizeiptr(n) * slice, data.data());
+  for (std::size_t i = 0; i < count; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      out[i * n + j] = Particle{data[j * count + i], data[(n + j) * count + i]};
   return out;
 }
 

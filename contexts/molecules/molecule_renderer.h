@@ -29,9 +29,10 @@ class MoleculeRenderer {
   gl::VertexArray empty_;
 };
 
-// The molecules' members' records, through staging copies in the calling
-// context (its buffers may be another context's). Waits for the GPU: tests
-// and dumps, not the frame loop.
+// The molecules' members' records, molecule after molecule (member j of
+// molecule i at i * members + j, as MoleculeReference keeps them), through staging copies in the
+// calling context (its buffers may be another context's). Waits for the GPU: tests and dumps, not
+// the frame loop.
 std::vector<Particle> readMolecules(const MoleculeHandles& molecules);
 
 }  // namespace sandstorm

@@ -90,11 +90,16 @@ void MoleculeUpdate::allocate(std::size_t capacity, int members, bool keep) {
     throw Error(concat("MoleculeUpdate: the GPU has no memory for ", capacity, " molecules of ",
                        members, " particles; lower molecules.maximum"));
   if (count > 0) {
+    // Member by member: member j's slice starts at j * capacity.
     const BufferSet& from = sets_[std::size_t(current_)];
     BufferSet& to = grown[std::size_t(current_)];
-    const GLsizeiptr bytes = GLsizeiptr(count * std::size_t(complexity_)) * kRecord;
-    glCopyNamedBufferSubData(from.positionLife.id(), to.positionLife.id(), 0, 0, bytes);
-    glCopyNamedBufferSubData(from.velocityKind.id(), to.velocityKind.id(), 0, 0, bytes);
+    const GLsizeiptr bytes = GLsizeiptr(count) * kRecord;
+    for (int j = 0; j < complexity_; ++j) {
+      const GLintptr src = GLintptr(std::size_t(j) * capacity_) * kRecord;
+      const GLintptr dst = GLintptr(std::size_t(j) * capacity) * kRecord;
+      glCopyNamedBufferSubData(from.positionLife.id(), to.positionLife.id(), src, dst, bytes);
+      glCopyNamedBufferSubData(from.velocityKind.id(), to.velocityKind.id(), src, dst, bytes);
+    }
   }
   sets_ = std::move(grown);
   tileStatus_ = gl::createBuffer();
@@ -188,8 +193,8 @@ void MoleculeUpdate::step(const SimStep& step, const ParticleState& state) {
   fillSimBlock(inputs, block);
   glNamedBufferSubData(simBlock_.id(), 0, sizeof(block), &block);
   const bool repulsion = ms.repulsion && ms.repulsionStrength > 0.0f;
-  const MoleculeBlock mb =
-      makeMoleculeBlock(ms, step.dt, repulsion ? MoleculeGridGpu::tableMask(capacity_) : 0u);
+  const MoleculeBlock mb = makeMoleculeBlock(
+      ms, step.dt, capacity_, repulsion ? MoleculeGridGpu::tableMask(capacity_) : 0u);
   glNamedBufferSubData(moleculeBlock_.id(), 0, sizeof(mb), &mb);
   glBindBufferBase(GL_UNIFORM_BUFFER, kSimBlock, simBlock_.id());
   glBindBufferBase(GL_UNIFORM_BUFFER, kMoleculeBlock, moleculeBlock_.id());
@@ -265,18 +270,22 @@ MoleculeHandles MoleculeUpdate::handles() const {
           std::uint32_t(kCountOffset + current_ * 4),
           std::uint32_t(kDrawOffset + current_ * 16),
           complexity_,
+          std::uint32_t(capacity_),
           lateCount_};
 }
 
 std::vector<Particle> MoleculeUpdate::readBack() const {
-  const std::size_t records = liveCount() * std::size_t(std::max(complexity_, 0));
-  if (records == 0) return {};
+  const std::size_t count = liveCount(), n = std::size_t(std::max(complexity_, 0));
+  if (count == 0 || n == 0) return {};
   const BufferSet& set = sets_[std::size_t(current_)];
-  const std::vector<glm::vec4> pos = readRecords(set.positionLife.id(), records);
-  const std::vector<glm::vec4> vel = readRecords(set.velocityKind.id(), records);
-  std::vector<Particle> out(records);
-  for (std::size_t i = 0; i < records; ++i)
-    out[i] = Particle{pos[i], vel[i]};
+  // The buffers member by member (the last member's slice only up to the count).
+  const std::size_t span = (n - 1) * capacity_ + count;
+  const std::vector<glm::vec4> pos = readRecords(set.positionLife.id(), span);
+  const std::vector<glm::vec4> vel = readRecords(set.velocityKind.id(), span);
+  std::vector<Particle> out(count * n);
+  for (std::size_t i = 0; i < count; ++i)
+    for (std::size_t j = 0; j < n; ++j)
+      out[i * n + j] = Particle{pos[j * capacity_ + i], vel[j * capacity_ + i]};
   return out;
 }
 

@@ -1,8 +1,9 @@
 // MoleculeUpdate: one context's molecules on the GPU, record for record
 // MoleculeReference's (core/molecules/molecule_reference.h is the
-// specification). Molecules are kept as their members' records (molecule i's
-// member j at record i * n + j) in two sets of buffers that take turns, like
-// ParticleComputeUpdate's. One update:
+// specification). Molecules are kept as their members' records, member by
+// member (member j of molecule i at record j * capacity + i, so neighbouring
+// invocations touch neighbouring records), in two sets of buffers that take
+// turns, like ParticleComputeUpdate's. One update:
 //   1. prepare (particle_prepare.comp, MOLECULES): sizes the update from the
 //      input's live molecule count, which only the GPU knows;
 //   2. emit (molecule_emit.comp): invocation g writes newborn molecule g;
@@ -72,7 +73,7 @@ class MoleculeUpdate {
   std::size_t lateCount() const { return lateCount_; }  // molecules, a frame or two old
   // These wait for the GPU; for tests and dumps, not the frame loop.
   std::size_t liveCount() const;
-  std::vector<Particle> readBack() const;  // the members' records
+  std::vector<Particle> readBack() const;  // the members' records, molecule after molecule
 
  private:
   struct BufferSet {
