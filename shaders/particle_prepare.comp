@@ -7,10 +7,6 @@
 layout(local_size_x = 1) in;
 layout(location = 0) uniform int uIn;    // the input set; the output is 1 - uIn
 layout(location = 1) uniform uint uBorn; // newborn of this update
-#ifdef OBSTACLE_LIST
-// The compute update's list of records inside an obstacle starts empty.
-layout(std430, binding = 8) restrict buffer CollideList { uint collideCount; };
-#endif
 #ifdef MOLECULES
 layout(location = 2) uniform uint uVertices;  // a molecule's: the draw covers every molecule's
 #endif
@@ -30,7 +26,4 @@ void main() {
   uint x = min(tiles, kGroupsPerRow);
   uint y = tiles == 0u ? 0u : (tiles + kGroupsPerRow - 1u) / kGroupsPerRow;
   ctl.dispatch = uvec4(x, y, 1u, 0u);
-#ifdef OBSTACLE_LIST
-  collideCount = 0u;
-#endif
 }

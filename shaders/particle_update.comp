@@ -25,7 +25,6 @@ layout(std430, binding = 6) writeonly restrict buffer TrailSource { uint trailSo
 // The survivors not clear of every obstacle (their output records), for
 // obstacle_collide.comp to put out: the only records that pass reads.
 layout(std430, binding = 8) restrict buffer CollideList { uint collideCount; uint collideIndex[]; };
-shared uint sListCount, sListBase;
 #endif
 
 layout(location = 0) uniform int uIn;
@@ -133,27 +132,12 @@ void main() {
       outPositionLife[o] = p[k].positionLife;
       outVelocityKind[o] = p[k].velocityKind;
       if (uTrails) trailSource[o] = tile * kTile + uint(k) * 256u + lid;
+#ifdef OBSTACLE_LIST
+      bool clear = true;
+      for (int i = 0; i < sim.obstacleCount.x; ++i)
+        clear = clear && clearOf(i, p[k].positionLife.xyz);
+      if (!clear) collideIndex[atomicAdd(collideCount, 1u)] = o;
+#endif
     }
   }
-#ifdef OBSTACLE_LIST
-  // The list gets one global atomic a workgroup: slots taken in shared memory first.
-  if (lid == 0u) sListCount = 0u;
-  barrier();
-  uint slot[kItems];
-  for (int k = 0; k < kItems; ++k) {
-    slot[k] = 0xffffffffu;
-    uint o = base + rowStart[k] + ((before[k / 2] >> (16u * uint(k % 2))) & 0xffffu);
-    if (!alive[k] || o >= uCapacity) continue;
-    bool clear = true;
-    for (int i = 0; i < sim.obstacleCount.x; ++i)
-      clear = clear && clearOf(i, p[k].positionLife.xyz);
-    if (!clear) slot[k] = atomicAdd(sListCount, 1u);
-  }
-  barrier();
-  if (lid == 0u) sListBase = sListCount == 0u ? 0u : atomicAdd(collideCount, sListCount);
-  barrier();
-  for (int k = 0; k < kItems; ++k)
-    if (slot[k] != 0xffffffffu)
-      collideIndex[sListBase + slot[k]] = base + rowStart[k] + ((before[k / 2] >> (16u * uint(k % 2))) & 0xffffu);
-#endif
 }

@@ -232,20 +232,14 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
       glNamedBufferStorage(collideList_.id(), listBytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
       collideListBytes_ = listBytes;
     }
+    glClearNamedBufferSubData(collideList_.id(), GL_R32UI, 0, sizeof(std::uint32_t), GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &zero);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCollideList, collideList_.id());
   }
 
-  // With obstacles the prepare pass also empties the update's collide list.
-  const gl::Program& prepare =
-      obstacles ? variant({itemsDefine(items_), "OBSTACLE_LIST", "PREPARE"},
-                          [](std::vector<std::string> d) {
-                            d.pop_back();  // PREPARE only keys the variant
-                            return gl::Program(gl::ProgramDesc{{"particle_prepare.comp"}, d, {}});
-                          })
-                : prepareProgram_;
-  prepare.use();
-  glProgramUniform1i(prepare.id(), 0, current_);
-  glProgramUniform1ui(prepare.id(), 1, born);
+  prepareProgram_.use();
+  glProgramUniform1i(prepareProgram_.id(), 0, current_);
+  glProgramUniform1ui(prepareProgram_.id(), 1, born);
   glDispatchCompute(1, 1, 1);
 
   if (born > 0) {
