@@ -18,7 +18,7 @@ const char* kUsage = R"(sandstorm-bench: GPU particle benchmark (headless EGL)
                   [--billboard-limit N] [--walls 1,2,4,8] [--wall-particles N]
                   [--wall-sims per-wall,shared] [--wall-renderers billboards,splat]
                   [--wall-trails 0,16] [--wall-shadows 0,1] [--sort-keys 1e6,1e7]
-                  [--update-obstacles 0,1] [--update-molecules 0,4]
+                  [--update-obstacles 0,1,2] [--update-molecules 0,4]
                   [--wall-backend compute] [--particle-size M] [--memory-gib G]
                   [--integrator euler|rk2|rk4] [--update-items 1|2|4|8] [--gpu-warmup S]
 
@@ -28,8 +28,8 @@ fixed frames. Sections:
             records, bit for bit, through births, deaths and compaction
   ceilings  buffer-copy bandwidth, a bare transform-feedback pass, a bare point draw
   update    the particle update per backend and field type, without and with
-            obstacles (--update-obstacles: a sphere the flow goes around and a
-            box, both in the cloud), of particles or of molecules of n members
+            obstacles (--update-obstacles: 0 none, 1 a sphere the flow goes around,
+            the Mali sample's, 2 the sphere and a box, both in the cloud), of particles or of molecules of n members
             (--update-molecules 0,4: 0 particles, 2..8 molecules of that complexity
             holding as many particles, their rate against the particles')
   render    scene, particles and composite of one view per renderer
@@ -190,7 +190,15 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       }
       if (o.updateMolecules.empty()) throw Error(concat(a, ": expected complexities, e.g. 0,4"));
     } else if (a == "--update-obstacles") {
-      o.updateObstacles = zeroOrOne(a, v, "none", "obstacles");
+      o.updateObstacles.clear();
+      for (const std::string& t : split(v)) {
+        if (t != "0" && t != "1" && t != "2")
+          throw Error(concat(a, ": ", t,
+                             ": expected 0 (none), 1 (a sphere: the Mali sample's) or 2 (a sphere "
+                             "and a box)"));
+        o.updateObstacles.push_back(t[0] - '0');
+      }
+      if (o.updateObstacles.empty()) throw Error(concat(a, ": expected 0, 1 or 2"));
     } else if (a == "--wall-backend") {
       o.wallBackend = v;
       checkChoices({v}, {"tf-gs", "compute"}, a);

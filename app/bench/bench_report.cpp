@@ -47,10 +47,10 @@ void printTable(const Report& r) {
     char rate[32] = "-", bytes[32] = "-";
     if (row.particlesPerS > 0) std::snprintf(rate, sizeof rate, "%.1f", row.particlesPerS * 1e-6);
     if (row.bytesPerS > 0) std::snprintf(bytes, sizeof bytes, "%.1f", row.bytesPerS * 1e-9);
-    const std::string field = row.field.empty()
-                                  ? "-"
-                                  : row.field + (row.obstacles ? "+obst" : "") +
-                                        (row.molecules > 0 ? concat("+mol", row.molecules) : "");
+    const std::string field =
+        row.field.empty() ? "-"
+                          : row.field + (row.obstacles > 0 ? concat("+obst", row.obstacles) : "") +
+                                (row.molecules > 0 ? concat("+mol", row.molecules) : "");
     std::printf(
         "%-8s %-11s %-8s %-8s %-10s %-8s %6s %5d %10.3f %10s %9s  %s\n", row.section.c_str(),
         row.stage.c_str(), row.backend.empty() ? "-" : row.backend.c_str(), field.c_str(),
@@ -73,13 +73,12 @@ void writeJson(const Report& r, const std::filesystem::path& path) {
         << ", \"renderer\": " << quoted(row.renderer) << ", \"sim\": " << quoted(row.sim)
         << ", \"particles\": " << row.particles << ", \"walls\": " << row.walls
         << ", \"trails\": " << row.trails << ", \"shadows\": " << (row.shadows ? "true" : "false")
-        << ", \"obstacles\": " << (row.obstacles ? "true" : "false")
-        << ", \"molecules\": " << row.molecules << ", \"width\": " << row.width
-        << ", \"height\": " << row.height << ", \"gpu_ms\": " << row.ms
-        << ", \"particles_per_s\": " << row.particlesPerS << ", \"bytes_per_s\": " << row.bytesPerS
-        << ", \"ceiling\": " << quoted(row.ceiling) << ", \"ratio\": " << row.ratio
-        << ", \"wall_clock_ms\": " << row.wallMs << ", \"note\": " << quoted(row.note) << "}"
-        << (i + 1 < r.rows.size() ? "," : "") << "\n";
+        << ", \"obstacles\": " << row.obstacles << ", \"molecules\": " << row.molecules
+        << ", \"width\": " << row.width << ", \"height\": " << row.height
+        << ", \"gpu_ms\": " << row.ms << ", \"particles_per_s\": " << row.particlesPerS
+        << ", \"bytes_per_s\": " << row.bytesPerS << ", \"ceiling\": " << quoted(row.ceiling)
+        << ", \"ratio\": " << row.ratio << ", \"wall_clock_ms\": " << row.wallMs
+        << ", \"note\": " << quoted(row.note) << "}" << (i + 1 < r.rows.size() ? "," : "") << "\n";
   }
   out << "  ]\n}\n";
   if (!out) throw Error(concat("sandstorm-bench: writing ", path.string(), " failed"));

@@ -16,10 +16,10 @@ struct Row {
   std::string backend, field, renderer, sim;
   std::size_t particles = 0;
   int walls = 0;
-  int trails = 0;          // walls: render.trail_length
-  bool shadows = false;    // walls: render.shadows
-  bool obstacles = false;  // update: with obstacles (SceneChoice::obstacles)
-  int molecules = 0;       // update: molecules of this many members (0: particles)
+  int trails = 0;        // walls: render.trail_length
+  bool shadows = false;  // walls: render.shadows
+  int obstacles = 0;     // update: how many obstacles (SceneChoice::obstacles)
+  int molecules = 0;     // update: molecules of this many members (0: particles)
   int width = 0, height = 0;
   double ms = 0;             // GPU milliseconds per frame (median)
   double particlesPerS = 0;  // 0: not applicable

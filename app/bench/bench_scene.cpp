@@ -37,7 +37,7 @@ ParticleState benchState(const SceneChoice& c) {
   s.render.trailLength = c.trailLength;
   s.render.shadows = c.shadows;
   s.field.mode = c.field == "equation" ? FieldMode::Equation : FieldMode::Texture;
-  if (c.obstacles) {
+  if (c.obstacles > 0) {
     Obstacle sphere;
     sphere.position = {1.5f, 0.0f, 3.0f};
     sphere.radius = 1.0f;
@@ -45,7 +45,8 @@ ParticleState benchState(const SceneChoice& c) {
     box.shape = ObstacleShape::Box;
     box.position = {-1.5f, 1.0f, 2.0f};
     box.size = {1.0f, 1.0f, 1.5f};
-    s.obstacles = {sphere, box};
+    s.obstacles = {sphere};
+    if (c.obstacles > 1) s.obstacles.push_back(box);
   }
   if (c.molecules > 0) {
     e.kind = EmitterKind::Molecules;

@@ -21,10 +21,10 @@ struct SceneChoice {
   std::string renderer = "billboards";  // billboards | points | splat (tiled) | splat-atomic
   float particleSize = 0.045f;
   std::string integrator = "rk2";
-  int trailLength = 0;     // render.trail_length
-  bool shadows = false;    // render.shadows
-  bool obstacles = false;  // a sphere (flow around it) and a box in the cloud
-  int molecules = 0;       // > 0: the particles are molecules of this many members
+  int trailLength = 0;   // render.trail_length
+  bool shadows = false;  // render.shadows
+  int obstacles = 0;     // in the cloud: 1 a sphere the flow goes around, 2 and a box
+  int molecules = 0;     // > 0: the particles are molecules of this many members
   bool turnover =
       false;  // short lives, deaths at the box: every frame births, deaths and compaction
 };

@@ -60,7 +60,7 @@ class Bench {
           for (const std::string& field : o_.fields)
             for (int obstacles : o_.updateObstacles)
               for (int molecules : o_.updateMolecules)
-                update(n, backend, field, obstacles != 0, molecules);
+                update(n, backend, field, obstacles, molecules);
     if (has("render"))
       for (std::size_t n : o_.particles)
         for (const std::string& renderer : o_.renderers)
@@ -269,10 +269,12 @@ class Bench {
   // `molecules` > 0: the n particles are molecules of that many members
   // (MoleculeUpdate, compute whatever the backend), their rate compared with
   // the particles' of the same run.
-  void update(std::size_t n, const std::string& backend, const std::string& field, bool obstacles,
+  void update(std::size_t n, const std::string& backend, const std::string& field, int obstacles,
               int molecules = 0) {
     progress(concat("update: ", backend, ", ", field, " field, ", n, " particles",
-                    obstacles ? ", obstacles" : "",
+                    obstacles == 1   ? ", a sphere"
+                    : obstacles == 2 ? ", a sphere and a box"
+                                     : "",
                     molecules > 0 ? concat(", molecules of ", molecules) : ""));
     if (!fits(4 * n * 16.0, "update")) return;
     guarded("update", [&] {
@@ -531,7 +533,7 @@ void printTargets(const Report& r) {
                   row.note.c_str());
   if (const Row* c = largest([](const Row& x) {
         return x.section == "update" && x.molecules == 0 && x.backend == "compute" &&
-               x.field == "texture" && !x.obstacles;
+               x.field == "texture" && x.obstacles == 0;
       }))
     std::printf(
         "  compute update, %zu particles: %.1f GB/s = %.2f of %s bandwidth %.1f GB/s (target >= "
@@ -541,25 +543,29 @@ void printTargets(const Report& r) {
         r.bandwidth() * 1e-9, r.copyBytesPerS * 1e-9);
   if (const Row* t = largest([](const Row& x) {
         return x.section == "update" && x.molecules == 0 && x.backend == "tf-gs" &&
-               x.field == "texture" && !x.obstacles;
+               x.field == "texture" && x.obstacles == 0;
       }))
     std::printf(
         "  tf-gs update, %zu particles: %.3f ms = %.2f of the bare transform-feedback pass's speed "
         "(target >= 0.80)\n",
         t->particles, t->ms, t->ratio);
   for (const char* backend : {"compute", "tf-gs"}) {
-    const auto updateRow = [&](bool obstacles) {
+    const auto updateRow = [&](int obstacles) {
       return largest([&](const Row& x) {
         return x.section == "update" && x.molecules == 0 && x.backend == backend &&
                x.field == "texture" && x.obstacles == obstacles;
       });
     };
-    const Row *plain = updateRow(false), *with = updateRow(true);
-    if (plain && with && plain->particles == with->particles && plain->ms > 0)
-      std::printf(
-          "  %s update with obstacles, %zu particles: %.3f ms against %.3f ms = %.2fx "
-          "(target <= 1.15x)\n",
-          backend, with->particles, with->ms, plain->ms, with->ms / plain->ms);
+    const Row* plain = updateRow(0);
+    for (int count : {1, 2}) {
+      const Row* with = updateRow(count);
+      if (plain && with && plain->particles == with->particles && plain->ms > 0)
+        std::printf(
+            "  %s update with %s, %zu particles: %.3f ms against %.3f ms = %.2fx (target <= "
+            "1.15x)\n",
+            backend, count == 1 ? "a sphere" : "a sphere and a box", with->particles, with->ms,
+            plain->ms, with->ms / plain->ms);
+    }
   }
   for (const Row& row : r.rows)
     if (row.section == "update" && row.molecules > 0 && row.ceiling == "particles")

@@ -102,23 +102,25 @@ TEST(BenchQuick, TheWallsSectionMeasuresFramesWithTrailsAndShadows) {
   EXPECT_NE(r.output.find("trails 8, shadows on:"), std::string::npos) << r.output;
 }
 
-// The update section without and with obstacles: a row of each per backend,
-// and the comparison in the targets.
+// The update section without obstacles, with a sphere and with a sphere and
+// a box: a row of each per backend, and the comparisons in the targets.
 TEST(BenchQuick, TheUpdateSectionMeasuresTheObstacleTerm) {
   const auto dir = test::scratchDir("bench-obstacles");
   const auto json = dir / "bench.json";
   const test::ProcessResult r =
-      runBench("--quick --sections update --fields texture --update-obstacles 0,1 --json '" +
+      runBench("--quick --sections update --fields texture --update-obstacles 0,1,2 --json '" +
                json.string() + "'");
   ASSERT_EQ(r.exitCode, 0) << r.output;
   std::set<std::string> rows;
   for (const std::string& line : test::readLines(json))
     if (line.find("\"stage\": \"update\"") != std::string::npos)
       rows.insert(field(line, "backend") + "/" + field(line, "obstacles"));
-  EXPECT_EQ(rows,
-            (std::set<std::string>{"compute/false", "compute/true", "tf-gs/false", "tf-gs/true"}));
-  EXPECT_NE(r.output.find("tf-gs update with obstacles"), std::string::npos) << r.output;
-  EXPECT_NE(runBench("--quick --update-obstacles 2").output.find("expected 0 (none) or 1"),
+  EXPECT_EQ(rows, (std::set<std::string>{"compute/0", "compute/1", "compute/2", "tf-gs/0",
+                                         "tf-gs/1", "tf-gs/2"}));
+  EXPECT_NE(r.output.find("tf-gs update with a sphere,"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("compute update with a sphere and a box,"), std::string::npos)
+      << r.output;
+  EXPECT_NE(runBench("--quick --update-obstacles 3").output.find("expected 0 (none), 1"),
             std::string::npos);
 }
 

@@ -225,8 +225,8 @@ TEST(Identity, AnObstacleMovingMidRunKeepsEveryWallIdentical) {
 }
 
 // Molecules beside the particles, changed mid-run (a new shape, the push
-// tool, repulsion): the same on four walls on threads, on four walls sharing
-// one particle simulation, and on one wall alone in its process.
+// tool, repulsion): the same on four walls each simulating its own, on four
+// walls sharing one simulation, and on one wall alone in its process.
 TEST(Identity, MoleculesAreTheSameOnEveryWallHoweverTheWallsAreRun) {
   const auto dir = test::scratchDir("molecules");
   const std::string run = " --frames 130 --replay tests/data/molecules-midrun.session --hash-log ";
