@@ -25,6 +25,22 @@ FieldTimeline::FieldTimeline(std::vector<double> times,
   }
 }
 
+void FieldTimeline::append(double time, std::shared_ptr<const VectorField> frame) {
+  if (!frame) throw Error("FieldTimeline: a missing frame");
+  if (!(time > times_.back()))
+    throw Error(concat("FieldTimeline: a frame at ", time, " s does not follow the last one's ",
+                       times_.back(), " s"));
+  const VectorField& first = *frames_[0];
+  if (frame->dims() != first.dims() || frame->bounds().min != first.bounds().min ||
+      frame->bounds().max != first.bounds().max)
+    throw Error(concat("FieldTimeline: the frame at ", time, " s has a ", frame->dims().x, "x",
+                       frame->dims().y, "x", frame->dims().z, " grid over other bounds than the ",
+                       first.dims().x, "x", first.dims().y, "x", first.dims().z,
+                       " of the first; frames must share dims and bounds"));
+  times_.push_back(time);
+  frames_.push_back(std::move(frame));
+}
+
 FieldTimeline::Position FieldTimeline::at(double t, bool loop) const {
   const std::size_t n = frames_.size();
   if (n == 1) return {0, 0, 0.0f};

@@ -29,6 +29,10 @@ class FieldTimeline {
   // wrapped into [start, end) (the last frame blends back into the first).
   Position at(double time, bool loop) const;
 
+  // A new last frame (a simulation's next step, FieldStream): throws Error,
+  // changing nothing, unless it follows the last frame's time and shares its grid.
+  void append(double time, std::shared_ptr<const VectorField> frame);
+
   std::size_t size() const { return frames_.size(); }
   const std::shared_ptr<const VectorField>& frame(std::size_t i) const { return frames_[i]; }
   double time(std::size_t i) const { return times_[i]; }

@@ -307,6 +307,9 @@ std::vector<AttributeInfo> makeEntries() {
   }
   v.push_back(entry("field.paused", T::Bool, 0, 1, "",
                     "Hold the time-varying field's current frame", FIELD(paused)));
+  v.push_back(entry("field.follow", T::Bool, 0, 1, "",
+                    "Show the newest frame of a field that grows while a simulation writes it",
+                    FIELD(follow)));
   // Streamlines of the current field from a seed rake (core/flow).
   v.push_back(entry("streamlines.enabled", T::Bool, 0, 1, "",
                     "Draw streamlines of the field from the seed rake", STREAMLINES(enabled)));

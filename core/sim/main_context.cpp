@@ -123,6 +123,19 @@ void MainContext::setFieldTimeline(FieldTimeline timeline, const FieldPlacement&
   fieldChanged_ = true;
 }
 
+void MainContext::appendFieldFrame(double time, std::shared_ptr<const VectorField> frame) {
+  std::lock_guard lock(mutex_);
+  if (!timeline_) throw Error("appendFieldFrame: the field is not time-varying");
+  timeline_->append(time, std::move(frame));
+  // The pair in use may now blend towards the new frame: look again at the next packet.
+  fieldPosition_ = {timeline_->size(), timeline_->size(), 0.0f};
+}
+
+std::size_t MainContext::fieldFrames() const {
+  std::lock_guard lock(mutex_);
+  return timeline_ ? timeline_->size() : 1;
+}
+
 void MainContext::reset() {
   enqueue(StateChange::reset());
 }
@@ -203,7 +216,9 @@ FramePacket MainContext::next() {
   packet.simTime = simTime_;
   simTime_ += double(packet.simDt);
   if (timeline_) {
-    // The field's clock runs on simulated time, at the playback speed.
+    // The field's clock runs on simulated time, at the playback speed; following
+    // a growing field, it stands at the newest frame.
+    if (state_.field.follow) fieldTime_ = timeline_->time(timeline_->size() - 1);
     const FieldTimeline::Position at = timeline_->at(fieldTime_, state_.field.loop);
     if (at.first != fieldPosition_.first || at.second != fieldPosition_.second) {
       field_ = std::make_shared<const FieldUpdate>(

@@ -52,6 +52,13 @@ class MainContext {
   void setField(FieldUpdate field);
   // A time-varying field: played by the field.* attributes (speed, loop, pause).
   void setFieldTimeline(FieldTimeline timeline, const FieldPlacement& placement);
+  // A new last frame of the time-varying field (a step a running simulation
+  // wrote, FieldStream); with field.follow the field jumps to it at the next
+  // packet. Throws Error, changing nothing, when there is no timeline or the
+  // frame does not fit it (FieldTimeline::append).
+  void appendFieldFrame(double time, std::shared_ptr<const VectorField> frame);
+  // The time-varying field's frames (1 for a still field) and the newest's time.
+  std::size_t fieldFrames() const;
   void reset();
   // The head and navigation the next packets carry (the app samples its trackers).
   void setViewer(const Viewer& viewer);

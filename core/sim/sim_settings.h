@@ -56,6 +56,7 @@ struct FieldPlayback {
   float speed = 1.0f;  // field seconds per simulated second
   bool loop = true;
   bool paused = false;  // hold the current frame while particles move on
+  bool follow = false;  // show the newest frame (a field that grows as a simulation runs)
   FieldMode mode =
       FieldMode::Texture;  // Equation: only where the field has one (FieldUpdate::equation)
   // Mode Expression: each component as an expression of x, y, z, t, vx, vy,

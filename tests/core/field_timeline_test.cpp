@@ -70,5 +70,51 @@ TEST(FieldTimeline, TheMainContextSendsAFrameOnceAndTheWeightEveryFrame) {
   EXPECT_FLOAT_EQ(main.next().fieldBlend, held);
 }
 
+TEST(FieldTimeline, AppendsFramesThatFollowAndShareTheGrid) {
+  FieldTimeline t({0.0, 1.0}, frames(2));
+  t.append(2.5, frames(3)[2]);
+  EXPECT_EQ(t.size(), 3u);
+  EXPECT_EQ(t.time(2), 2.5);
+  EXPECT_THROW(t.append(2.5, frames(1)[0]), Error);  // not after the last
+  EXPECT_THROW(t.append(3.0, std::make_shared<VectorField>(Box{{0, 0, 0}, {2, 1, 1}}, glm::ivec3(2))),
+               Error);
+  EXPECT_THROW(t.append(3.0, nullptr), Error);
+  EXPECT_EQ(t.size(), 3u);  // nothing half-applied
+}
+
+// A growing field: each appended frame comes into use at the next packet
+// with field.follow (the newest frame, unblended), and only the new frame travels.
+TEST(FieldTimeline, FollowingAGrowingFieldShowsEachNewFrameAtTheNextPacket) {
+  MainContext::Options o;
+  o.fixedDt = 0.25f;
+  ParticleState s;
+  s.field.follow = true;
+  MainContext main(s, FieldUpdate{}, o);
+  auto all = frames(4);
+  main.setFieldTimeline(FieldTimeline({0.0}, {all[0]}), FieldPlacement{});
+  FramePacket p = main.next();
+  ASSERT_TRUE(p.fieldUpdate);
+  EXPECT_EQ(p.fieldUpdate->field->values()[0].x, 0.0f);
+  EXPECT_FALSE(main.next().fieldUpdate);  // nothing new
+  for (int k = 1; k < 4; ++k) {
+    main.appendFieldFrame(double(k), all[std::size_t(k)]);
+    p = main.next();
+    ASSERT_TRUE(p.fieldUpdate) << k;
+    EXPECT_EQ(p.fieldUpdate->field->values()[0].x, float(k));
+    EXPECT_EQ(p.fieldBlend, 0.0f);
+    EXPECT_FALSE(main.next().fieldUpdate);
+  }
+  EXPECT_EQ(main.fieldFrames(), 4u);
+  // A frame that does not fit is refused; the field stays.
+  EXPECT_THROW(main.appendFieldFrame(9.0, std::make_shared<VectorField>(
+                                                  Box{{0, 0, 0}, {2, 2, 2}}, glm::ivec3(2))),
+               Error);
+  EXPECT_EQ(main.fieldFrames(), 4u);
+  EXPECT_FALSE(main.next().fieldUpdate);
+  // Without a timeline there is nothing to grow.
+  MainContext still(s, FieldUpdate{.field = all[0]}, o);
+  EXPECT_THROW(still.appendFieldFrame(1.0, all[1]), Error);
+}
+
 }  // namespace
 }  // namespace sandstorm
