@@ -76,8 +76,9 @@ TEST(FieldTimeline, AppendsFramesThatFollowAndShareTheGrid) {
   EXPECT_EQ(t.size(), 3u);
   EXPECT_EQ(t.time(2), 2.5);
   EXPECT_THROW(t.append(2.5, frames(1)[0]), Error);  // not after the last
-  EXPECT_THROW(t.append(3.0, std::make_shared<VectorField>(Box{{0, 0, 0}, {2, 1, 1}}, glm::ivec3(2))),
-               Error);
+  EXPECT_THROW(
+      t.append(3.0, std::make_shared<VectorField>(Box{{0, 0, 0}, {2, 1, 1}}, glm::ivec3(2))),
+      Error);
   EXPECT_THROW(t.append(3.0, nullptr), Error);
   EXPECT_EQ(t.size(), 3u);  // nothing half-applied
 }
@@ -106,8 +107,8 @@ TEST(FieldTimeline, FollowingAGrowingFieldShowsEachNewFrameAtTheNextPacket) {
   }
   EXPECT_EQ(main.fieldFrames(), 4u);
   // A frame that does not fit is refused; the field stays.
-  EXPECT_THROW(main.appendFieldFrame(9.0, std::make_shared<VectorField>(
-                                                  Box{{0, 0, 0}, {2, 2, 2}}, glm::ivec3(2))),
+  EXPECT_THROW(main.appendFieldFrame(
+                   9.0, std::make_shared<VectorField>(Box{{0, 0, 0}, {2, 2, 2}}, glm::ivec3(2))),
                Error);
   EXPECT_EQ(main.fieldFrames(), 4u);
   EXPECT_FALSE(main.next().fieldUpdate);

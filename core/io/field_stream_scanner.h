@@ -1,0 +1,66 @@
+// FieldStreamScanner: which steps of a field that a running simulation writes
+// are complete, looked at again and again (FieldStream polls it). The source
+// is either
+//   - a folder: its field files (.vti .vtr .vts .vtk .vdb .fga .vf; hidden
+//     names and .tmp/.part files left alone) in name order; step k of them
+//     gets the time k * `interval`. A file is complete once two looks in a
+//     row found it with the same non-zero size and modification time (a file
+//     still being written grows between looks). One that appears with a name
+//     before the newest step's is skipped, with a message;
+//   - a .pvd collection: its entries in time order, those after the newest
+//     step's time. An entry is complete once the .pvd lists it and its file
+//     has kept its size over two looks (simulations write the entry after
+//     the file). A .pvd being rewritten that does not parse is looked at
+//     again next time; an entry whose file stays missing for `patience` looks
+//     is skipped, with a message.
+// A step is reported once. Not thread-safe: one owner polls it.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace sandstorm {
+
+class FieldStreamScanner {
+ public:
+  struct Step {
+    double time = 0.0;
+    std::filesystem::path file;
+  };
+
+  FieldStreamScanner(std::filesystem::path source, double interval = 1.0, int patience = 50);
+
+  // Whether `source` is watched as a folder (else a .pvd).
+  bool folder() const { return folder_; }
+
+  // One look: the steps that became complete since the last one, in order.
+  // `messages` gets a line for each step skipped.
+  std::vector<Step> poll(std::vector<std::string>& messages);
+
+ private:
+  struct Seen {
+    std::uintmax_t size = 0;
+    std::filesystem::file_time_type written;
+    int looks = 0;  // in a row with this size and time
+  };
+
+  std::vector<Step> pollFolder(std::vector<std::string>& messages);
+  std::vector<Step> pollPvd(std::vector<std::string>& messages);
+  // Whether `file` has looked the same (and non-empty) twice in a row now.
+  bool settled(const std::filesystem::path& file);
+
+  std::filesystem::path source_;
+  bool folder_;
+  double interval_;
+  int patience_;
+  std::map<std::filesystem::path, Seen> seen_;
+  std::optional<std::filesystem::path> newestFile_;  // a folder's newest step
+  std::optional<double> newestTime_;                 // a .pvd's newest step
+  int folderSteps_ = 0;
+  std::map<std::filesystem::path, int> missing_;  // .pvd entries without their file yet
+};
+
+}  // namespace sandstorm
