@@ -93,6 +93,10 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
     helicopter_.update(main_);  // the configured helicopter's field and dust, before packet 0
     // A replayed session holds the paths' moves (they were recorded as changes).
     if (!options_.replay) obstaclePaths_.start(main_);
+    // A watched field: its steps come from a thread (a replay has them in the session).
+    if (field_.stream && !options_.replay)
+      fieldStream_ = std::make_unique<FieldStream>(field_.stream, field_.streamOptions,
+                                                   [this] { return main_.nextFrame(); });
     if (TrackingInput::wanted(config.tracking, replay_.tracking))
       tracking_ =
           std::make_unique<TrackingInput>(config.tracking, config.navigation, replay_.tracking);
@@ -370,6 +374,7 @@ void AppRun::track(float dt) {
   // A replayed session's field switches, at their frames.
   while (replayFieldAt_ < replay_.fields.size() && replay_.fields[replayFieldAt_].frame <= frame)
     loadField(replay_.fields[replayFieldAt_++].source);
+  streamField();
   // A replayed session's navigation, when it recorded one.
   while (replayNavigationAt_ < replay_.navigation.size() &&
          replay_.navigation[replayNavigationAt_].frame <= frame)
@@ -496,6 +501,37 @@ void AppRun::pickProbe() {
   } catch (const Error& e) {
     log::warn("probe: ", e.what());
   }
+}
+
+void AppRun::streamField() {
+  const std::uint32_t frame = main_.nextFrame();
+  if (fieldStream_)
+    for (FieldStream::Step& s : fieldStream_->take())
+      appendFieldStep(s.time, s.file.string(), std::move(s.field), s.completeAt);
+  while (replayStepAt_ < replay_.fieldSteps.size() &&
+         replay_.fieldSteps[replayStepAt_].frame <= frame) {
+    const ScheduledFieldStep& s = replay_.fieldSteps[replayStepAt_++];
+    try {
+      appendFieldStep(s.time, s.file, FieldStream::load(s.file, field_.streamOptions), frame);
+    } catch (const Error& e) {
+      log::warn("field stream: the replayed step ", s.file, " was skipped: ", e.what());
+    }
+  }
+}
+
+void AppRun::appendFieldStep(double time, const std::string& file,
+                             std::shared_ptr<const VectorField> field, std::uint32_t completeAt) {
+  const std::uint32_t frame = main_.nextFrame();
+  try {
+    main_.appendFieldFrame(time, std::move(field));
+  } catch (const Error& e) {
+    log::warn("field stream: the step at t = ", time, " s (", file, ") was skipped: ", e.what(),
+              "; the last good field stays");
+    return;
+  }
+  log::info("field: the step at t = ", time, " s (", file, ") joins the field at frame ", frame,
+            " (found complete during frame ", completeAt, "; ", main_.fieldFrames(), " steps now)");
+  if (recorder_) recorder_->recordFieldStep(frame, time, file);
 }
 
 // A left drag that began on an obstacle moves it (ObstacleDrag); one that

@@ -14,6 +14,7 @@
 
 #include "app/app.h"
 #include "app/desktop_input.h"
+#include "app/field_stream.h"
 #include "app/hash_log.h"
 #include "app/helicopter_controller.h"
 #include "app/menu/legend_host.h"
@@ -66,6 +67,10 @@ class AppRun {
   // Where a click on a wall's window points in the world; none off the walls.
   std::optional<WorldRay> rayThrough(const DesktopInput::Click& click) const;
   void dragObstacle(float dt);
+  // A watched field's steps read since the last frame, or a replayed session's.
+  void streamField();
+  void appendFieldStep(double time, const std::string& file,
+                       std::shared_ptr<const VectorField> field, std::uint32_t completeAt);
   glm::vec3 fieldCentre(const WorldRay& ray) const;
   void reportProgress(Clock::time_point now);
   int finish();
@@ -84,6 +89,8 @@ class AppRun {
   std::unique_ptr<SessionRecorder> recorder_;
   SessionLog replay_;
   std::size_t replayNavigationAt_ = 0, replayFieldAt_ = 0;
+  std::size_t replayStepAt_ = 0;
+  std::unique_ptr<FieldStream> fieldStream_;  // a watched field (rank 0, not replaying)
   void loadField(const std::string& choice);
   std::unique_ptr<TrackingInput> tracking_;  // null: no tracker (or not the main context's rank)
   HelicopterController helicopter_;

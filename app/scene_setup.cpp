@@ -1,6 +1,8 @@
 #include "app/scene_setup.h"
 
 #include <algorithm>
+#include <chrono>
+#include <thread>
 
 #include "core/field/analytic_field_factory.h"
 #include "core/field/height_map_io.h"
@@ -17,6 +19,43 @@ namespace {
 std::filesystem::path resolve(const std::string& source, const std::filesystem::path& baseDir) {
   const std::filesystem::path p(source);
   return p.is_absolute() || std::filesystem::exists(p) ? p : baseDir / p;
+}
+
+// A source a running simulation writes: its first step, waited for (up to
+// wait_s), as a timeline of one frame, and the scanner to watch for more.
+FieldSource watchedField(const std::filesystem::path& path, const FieldSpec& spec,
+                         const LoadOptions& options) {
+  auto scanner =
+      std::make_shared<FieldStreamScanner>(path, spec.stepInterval, 50, spec.settleSeconds);
+  const auto until = std::chrono::steady_clock::now() +
+                     std::chrono::milliseconds(std::int64_t(spec.waitSeconds * 1e3));
+  bool said = false;
+  for (;;) {
+    std::vector<std::string> messages;
+    for (const FieldStreamScanner::Step& step : scanner->poll(messages)) {
+      try {
+        FieldSource out;
+        auto field = std::make_shared<const VectorField>(loadField(step.file, options));
+        out.timeline = FieldTimeline({step.time}, {field});
+        out.update = FieldUpdate{.field = field, .placement = spec.placement};
+        out.stream = scanner;
+        out.streamOptions = options;
+        out.description = concat(path.string(), " (watched; its first step ",
+                                 step.file.filename().string(), " at t = ", step.time, " s)");
+        return out;
+      } catch (const Error& e) {
+        log::warn("field stream: the step ", step.file.string(), " was skipped: ", e.what());
+      }
+    }
+    for (const std::string& m : messages)
+      log::warn("field stream: ", m);
+    if (std::chrono::steady_clock::now() > until)
+      throw Error(concat("field source ", path.string(), ": no complete step came within ",
+                         spec.waitSeconds, " s (field.wait_s)"));
+    if (!said) log::info("field: waiting for the first step in ", path.string());
+    said = true;
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  }
 }
 
 }  // namespace
@@ -37,7 +76,10 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
     LoadOptions options;
     options.arrayName = spec.name;
     options.resolution = spec.resolution;
-    if (path.extension() == ".pvd") {
+    std::error_code ec;
+    if (spec.watch || std::filesystem::is_directory(path, ec)) {
+      out = watchedField(path, spec, options);
+    } else if (path.extension() == ".pvd") {
       const FieldSequence sequence = FieldSequence::fromPvd(path, options);
       std::vector<double> times;
       std::vector<std::shared_ptr<const VectorField>> frames;

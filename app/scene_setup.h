@@ -12,6 +12,8 @@
 #include "core/config/app_config.h"
 #include "core/field/field_timeline.h"
 #include "core/field/height_map.h"
+#include "core/io/field_stream_scanner.h"
+#include "core/io/load_options.h"
 #include "core/sim/frame_packet.h"
 
 namespace sandstorm {
@@ -21,6 +23,10 @@ struct FieldSource {
   std::optional<FieldTimeline>
       timeline;  // or a time-varying one (update then holds its first frame)
   std::string description;
+  // A watched source (a folder, or a .pvd with watch): its scanner, past the
+  // first step (the timeline's only frame), and how its steps load.
+  std::shared_ptr<class FieldStreamScanner> stream;
+  LoadOptions streamOptions;
 };
 
 // Bakes an analytic field ("analytic" source, `name` from the factory), or

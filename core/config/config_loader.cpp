@@ -250,7 +250,8 @@ std::string relativeTo(const Reader& r, const std::string& path) {
 void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   r.checkKeys(t, "field",
               {"source", "name", "dims", "resolution", "bounds_min", "bounds_max", "params",
-               "offset", "scale", "yaw_deg", "rotation_deg", "mode", "expression"});
+               "offset", "scale", "yaw_deg", "rotation_deg", "mode", "expression", "watch",
+               "step_interval", "wait_s", "settle_s"});
   f.source = r.string(t, "source", "field", f.source);
   if (f.source != "analytic") f.source = relativeTo(r, f.source);
   // A file's array or grid is chosen by name; without one, the file's only (or active) vector one.
@@ -287,6 +288,19 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   glm::vec3 turns(0.0f, 0.0f, r.real(t, "yaw_deg", "field", 0.0f));
   turns = r.vec<3>(t, "rotation_deg", "field", turns);
   f.placement.rotation = rotationFromDegrees(turns);
+  f.watch = r.boolean(t, "watch", "field", f.watch);
+  if (f.watch && !(f.source.ends_with(".pvd") || std::filesystem::is_directory(f.source)))
+    r.fail(*r.find(t, "watch"), "field.watch",
+           "expected a folder or a .pvd source to watch (got '" + f.source + "')");
+  f.stepInterval = r.real(t, "step_interval", "field", float(f.stepInterval));
+  if (!(f.stepInterval > 0.0 && f.stepInterval <= 1e6))
+    r.fail(*r.find(t, "step_interval"), "field.step_interval", "expected 0 < seconds <= 10^6");
+  f.settleSeconds = r.real(t, "settle_s", "field", float(f.settleSeconds));
+  if (!(f.settleSeconds >= 0.0 && f.settleSeconds <= 3600.0))
+    r.fail(*r.find(t, "settle_s"), "field.settle_s", "expected 0..3600 seconds");
+  f.waitSeconds = r.real(t, "wait_s", "field", float(f.waitSeconds));
+  if (!(f.waitSeconds >= 0.0 && f.waitSeconds <= 86400.0))
+    r.fail(*r.find(t, "wait_s"), "field.wait_s", "expected 0..86400 seconds");
 }
 
 void readScene(const Reader& r, const toml::value& t, SceneSpec& s) {
@@ -621,9 +635,9 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
           AppConfig& c, int depth) {
   const Reader r(file);
   r.checkKeys(root, "",
-              {"include",        "run",        "field",   "scene",   "sim",        "render",
-               "field_playback", "helicopter", "emitter", "head",    "navigation", "tracking",
-               "menu",           "cluster",    "wall",    "pvx",     "pvx_up",     "gpu",
+              {"include",        "run",        "field",   "scene",    "sim",        "render",
+               "field_playback", "helicopter", "emitter", "head",     "navigation", "tracking",
+               "menu",           "cluster",    "wall",    "pvx",      "pvx_up",     "gpu",
                "streamlines",    "slice",      "probe",   "obstacle", "molecules"});
   // include = "scene.toml": that file's settings first, this file's on top.
   if (const toml::value* include = r.find(root, "include")) {

@@ -40,8 +40,12 @@ bool wholeXml(const fs::path& p) {
 
 }  // namespace
 
-FieldStreamScanner::FieldStreamScanner(fs::path source, double interval, int patience)
-    : source_(std::move(source)), interval_(interval), patience_(std::max(patience, 1)) {
+FieldStreamScanner::FieldStreamScanner(fs::path source, double interval, int patience,
+                                       double settle)
+    : source_(std::move(source)),
+      interval_(interval),
+      patience_(std::max(patience, 1)),
+      settle_(std::max(settle, 0.0)) {
   std::error_code ec;
   folder_ = fs::is_directory(source_, ec);
   if (!folder_ && source_.extension() != ".pvd")
@@ -63,12 +67,14 @@ bool FieldStreamScanner::settled(const fs::path& file) {
     seen_.erase(file);
     return false;
   }
+  const auto now = std::chrono::steady_clock::now();
   Seen& s = seen_[file];
   if (s.looks > 0 && s.size == size && s.written == written)
     ++s.looks;
   else
-    s = Seen{size, written, 1};
-  return size > 0 && s.looks >= 2;
+    s = Seen{size, written, 1, now};
+  return size > 0 && s.looks >= 2 &&
+         std::chrono::duration<double>(now - s.since).count() >= settle_;
 }
 
 std::vector<FieldStreamScanner::Step> FieldStreamScanner::poll(std::vector<std::string>& messages) {

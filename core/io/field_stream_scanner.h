@@ -3,19 +3,22 @@
 // is either
 //   - a folder: its field files (.vti .vtr .vts .vtk .vdb .fga .vf; hidden
 //     names and .tmp/.part files left alone) in name order; step k of them
-//     gets the time k * `interval`. A file is complete once two looks in a
-//     row found it with the same non-zero size and modification time (a file
-//     still being written grows between looks). One that appears with a name
+//     gets the time k * `interval`. A file is complete once two looks at
+//     least `settle` seconds apart found it with the same non-zero size and
+//     modification time (a file still being written grows between them; a
+//     writer that pauses longer than `settle` mid-file is caught half-written,
+//     and the step fails to load and is skipped). One that appears with a name
 //     before the newest step's is skipped, with a message;
 //   - a .pvd collection: its entries in time order, those after the newest
 //     step's time. An entry is complete once the .pvd lists it and its file
 //     has kept its size over two looks (simulations write the entry after
-//     the file). A .pvd being rewritten that does not parse is looked at
-//     again next time; an entry whose file stays missing for `patience` looks
-//     is skipped, with a message.
+//     the file, and its file has settled as above). A .pvd being rewritten that does not parse is
+//     looked at again next time; an entry whose file stays missing for `patience` looks is skipped,
+//     with a message.
 // A step is reported once. Not thread-safe: one owner polls it.
 #pragma once
 
+#include <chrono>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -31,7 +34,8 @@ class FieldStreamScanner {
     std::filesystem::path file;
   };
 
-  FieldStreamScanner(std::filesystem::path source, double interval = 1.0, int patience = 50);
+  FieldStreamScanner(std::filesystem::path source, double interval = 1.0, int patience = 50,
+                     double settle = 0.0);
 
   // Whether `source` is watched as a folder (else a .pvd).
   bool folder() const { return folder_; }
@@ -44,7 +48,8 @@ class FieldStreamScanner {
   struct Seen {
     std::uintmax_t size = 0;
     std::filesystem::file_time_type written;
-    int looks = 0;  // in a row with this size and time
+    int looks = 0;                                // in a row with this size and time
+    std::chrono::steady_clock::time_point since;  // first seen so
   };
 
   std::vector<Step> pollFolder(std::vector<std::string>& messages);
@@ -56,6 +61,7 @@ class FieldStreamScanner {
   bool folder_;
   double interval_;
   int patience_;
+  double settle_;
   std::map<std::filesystem::path, Seen> seen_;
   std::optional<std::filesystem::path> newestFile_;  // a folder's newest step
   std::optional<double> newestTime_;                 // a .pvd's newest step

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <initializer_list>
 #include <sstream>
 
@@ -199,10 +201,10 @@ SessionLog parseSession(const std::string& text, const std::string& name) {
       throw Error(where + concat("frame ", frame, " comes after frame ", lastFrame));
     lastFrame = frame;
     if (!(words >> verb))
-      throw Error(
-          where +
-          "expected set, add-emitter, remove-emitter, reset, track, navigate or field after "
-          "the frame");
+      throw Error(where +
+                  "expected set, add-emitter, remove-emitter, reset, track, navigate, field or "
+                  "field-step after "
+                  "the frame");
     try {
       if (verb == "set") {
         std::string key, value, extra;
@@ -235,6 +237,15 @@ SessionLog parseSession(const std::string& text, const std::string& name) {
         if (!(words >> source) || (words >> extra))
           throw Error("expected 'field SOURCE' (analytic:NAME, or a file path without spaces)");
         log.fields.push_back({frame, source});
+      } else if (verb == "field-step") {
+        std::string time, file, extra;
+        if (!(words >> time >> file) || (words >> extra))
+          throw Error("expected 'field-step TIME FILE' (a file path without spaces)");
+        char* end = nullptr;
+        const double t = std::strtod(time.c_str(), &end);
+        if (end != time.c_str() + time.size() || !std::isfinite(t))
+          throw Error("field-step: expected a time in seconds, got '" + time + "'");
+        log.fieldSteps.push_back({frame, t, file});
       } else if (verb == "navigate") {
         std::string values, extra;
         if (!(words >> values) || (words >> extra))
@@ -243,9 +254,9 @@ SessionLog parseSession(const std::string& text, const std::string& name) {
         if (!(v[4] > 0.0f)) throw Error("navigate: expected a positive scale");
         log.navigation.push_back({frame, Navigation{{v[0], v[1], v[2]}, v[3], v[4]}});
       } else {
-        throw Error(
-            "unknown change '" + verb +
-            "'; expected set, add-emitter, remove-emitter, reset, track, navigate or field");
+        throw Error("unknown change '" + verb +
+                    "'; expected set, add-emitter, remove-emitter, reset, track, navigate, field "
+                    "or field-step");
       }
     } catch (const Error& e) {
       const std::string what = e.what();
@@ -306,6 +317,15 @@ void SessionRecorder::recordTracking(std::uint32_t frame, const TrackingSample& 
 void SessionRecorder::recordField(std::uint32_t frame, const std::string& source) {
   std::lock_guard lock(mutex_);
   out_ << frame << " field " << source << "\n";
+  out_.flush();
+  checkWritten();
+}
+
+void SessionRecorder::recordFieldStep(std::uint32_t frame, double time, const std::string& file) {
+  std::lock_guard lock(mutex_);
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", time);
+  out_ << frame << " field-step " << text << " " << file << "\n";
   out_.flush();
   checkWritten();
 }

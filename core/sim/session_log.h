@@ -11,6 +11,7 @@
 //   301 track frame=8812 stale=0 head=x,y,z,r0..r8 wand=present,tracked,x,y,z,r0..r8,buttons,jx,jy
 //   302 navigate 0.5,2.6,0,0.1,0.35        (offset x y z, yaw in radians, scale)
 //   400 field data/tornado.vti              (the menu loaded this field; or analytic:NAME)
+//   460 field-step 2.5 /runs/sim/step_003.vti  (a watched field's step, its time, appended)
 //
 // A `track` line is the tracking sample the frame used (core/tracking), in
 // room coordinates, written when it differs from the frame before; a
@@ -53,9 +54,16 @@ struct ScheduledField {
   std::string source;  // a menu choice: "analytic:tornado", or a file relative to the project
 };
 
+struct ScheduledFieldStep {
+  std::uint32_t frame = 0;
+  double time = 0.0;  // the step's time in the field's timeline
+  std::string file;   // as the watched source named it
+};
+
 struct SessionLog {
   std::vector<ScheduledChange> changes;
   std::vector<ScheduledField> fields;           // in frame order
+  std::vector<ScheduledFieldStep> fieldSteps;   // in frame order
   std::vector<ScheduledTracking> tracking;      // in frame order
   std::vector<ScheduledNavigation> navigation;  // in frame order
 };
@@ -80,6 +88,7 @@ class SessionRecorder {
   void recordTracking(std::uint32_t frame, const TrackingSample& sample);
   void recordNavigation(std::uint32_t frame, const Navigation& navigation);
   void recordField(std::uint32_t frame, const std::string& source);
+  void recordFieldStep(std::uint32_t frame, double time, const std::string& file);
   // Set once a write failed (a full disk): the run should stop and say so.
   std::optional<std::string> error() const;
 

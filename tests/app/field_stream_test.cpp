@@ -1,0 +1,170 @@
+// Fields from a running simulation: the app runs headless on a folder that a
+// "simulation" (this test) fills while it runs. Each new step joins the field
+// within one frame of being found complete; a corrupt step in the middle is
+// skipped with a message naming it and the run goes on; the session records
+// the steps at their frames, so a replay without the folder's timing draws the
+// same particles; and without the new steps the particles differ.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <regex>
+#include <thread>
+
+#include "core/io/vti_writer.h"
+#include "tests/app/run_process.h"
+
+namespace sandstorm {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A uniform wind over the box, as a small grid.
+VectorField wind(glm::vec3 v) {
+  return VectorField(Box{{-3, -3, 0}, {3, 3, 4}}, glm::ivec3(4, 4, 4),
+                     std::vector<glm::vec3>(64, v));
+}
+
+// Writes a step as a simulation that renames a finished file into place does not:
+// straight into the folder, in two halves a little apart, so the watcher sees it grow.
+void writeStep(const fs::path& file, const VectorField& field) {
+  const fs::path temp = file.parent_path().parent_path() / (file.filename().string() + ".w");
+  writeVti(temp, field);
+  const std::string bytes = test::readBytes(temp);
+  std::ofstream out(file, std::ios::binary);
+  out.write(bytes.data(), std::streamsize(bytes.size() / 2));
+  out.flush();
+  std::this_thread::sleep_for(std::chrono::milliseconds(60));
+  out.write(bytes.data() + bytes.size() / 2, std::streamsize(bytes.size() - bytes.size() / 2));
+}
+
+std::string config(const fs::path& dir) {
+  std::ofstream out(dir / "stream.toml");
+  out << R"(# A watched folder of steps (tests/app/field_stream_test.cpp writes it).
+[run]
+fixed_dt = 0.016666668
+capacity = 8192
+
+[field]
+source = "steps"
+step_interval = 0.5
+
+[field_playback]
+follow = true
+
+[sim]
+maximum = 4000
+motion = "tracer"
+boundary = "clamp"
+
+[[emitter]]
+shape = "sphere"
+position = [0.0, 0.0, 2.0]
+radius = 1.0
+rate = 6000.0
+lifetime = 20.0
+
+[[wall]]
+name = "view"
+camera = { position = [0.0, -9.0, 2.0], target = [0.0, 0.0, 2.0], fov_deg = 50.0 }
+offscreen = { size = [48, 32] }
+)";
+  return (dir / "stream.toml").string();
+}
+
+struct Joined {
+  double time;
+  std::uint32_t frame, complete;
+};
+
+std::vector<Joined> joined(const std::string& output) {
+  std::vector<Joined> out;
+  const std::regex line(
+      R"(the step at t = ([0-9.e+-]+) s \([^)]*\) joins the field at frame ([0-9]+) \(found complete during frame ([0-9]+))");
+  for (auto it = std::sregex_iterator(output.begin(), output.end(), line);
+       it != std::sregex_iterator(); ++it)
+    out.push_back({std::stod((*it)[1]), std::uint32_t(std::stoul((*it)[2])),
+                   std::uint32_t(std::stoul((*it)[3]))});
+  return out;
+}
+
+TEST(FieldStream, StepsWrittenDuringTheRunJoinTheFieldAndACorruptOneIsSkipped) {
+  const fs::path dir = test::scratchDir("field-stream");
+  fs::create_directories(dir / "steps");
+  writeVti(dir / "steps" / "step_000.vti", wind({1, 0, 0}));
+  const std::string cfg = config(dir);
+  const std::string args = "--config " + cfg + " --headless --frames 700 --hash-log ";
+
+  // The run, read line by line on a thread; the steps are written once frames begin.
+  std::atomic<bool> begun{false};
+  test::ProcessResult live;
+  std::thread runner([&] {
+    const std::string cmd = std::string("cd '") + SANDSTORM_SOURCE_DIR + "' && '" +
+                            SANDSTORM_BINARY + "' " + args + (dir / "live.txt").string() +
+                            " --record " + (dir / "live.session").string() + " 2>&1";
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return;
+    char buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe)) {
+      live.output += buffer;
+      if (live.output.find("frames begin") != std::string::npos) begun = true;
+    }
+    const int status = pclose(pipe);
+    live.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    begun = true;
+  });
+  while (!begun)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  const auto pause = [] { std::this_thread::sleep_for(std::chrono::milliseconds(250)); };
+  pause();
+  writeStep(dir / "steps" / "step_001.vti", wind({0, 1, 0}));
+  pause();
+  {  // a corrupt step: not a VTK file at all
+    std::ofstream bad(dir / "steps" / "step_002.vti");
+    bad << "<?xml version=\"1.0\"?><VTKFile type=\"ImageData\"><ImageData garbage";
+  }
+  pause();
+  writeStep(dir / "steps" / "step_003.vti", wind({-1, 0, 0.5f}));
+  pause();
+  runner.join();
+  ASSERT_EQ(live.exitCode, 0) << live.output;
+  const std::vector<Joined> steps = joined(live.output);
+  ASSERT_EQ(steps.size(), 2u) << live.output;  // 001 and 003; 000 was the start's
+  EXPECT_EQ(steps[0].time, 0.5);
+  EXPECT_EQ(steps[1].time, 1.5);  // 002 took its place in the order and was skipped
+  for (const Joined& j : steps)
+    EXPECT_LE(j.frame - j.complete, 1u) << "t = " << j.time;
+  EXPECT_NE(live.output.find("step_002.vti) was skipped"), std::string::npos) << live.output;
+  ASSERT_LT(steps[1].frame, 690u) << "the run ended too soon to show the last step";
+
+  // The session holds the steps at their frames: a replay draws the same particles.
+  const auto replay = test::runSandstorm(args + (dir / "replay.txt").string() + " --replay " +
+                                         (dir / "live.session").string());
+  ASSERT_EQ(replay.exitCode, 0) << replay.output;
+  EXPECT_EQ(test::readLines(dir / "live.txt"), test::readLines(dir / "replay.txt"));
+  // Without the steps (the start's field only) the particles end elsewhere.
+  fs::remove_all(dir / "steps");
+  fs::create_directories(dir / "steps");
+  writeVti(dir / "steps" / "step_000.vti", wind({1, 0, 0}));
+  const auto still = test::runSandstorm(args + (dir / "still.txt").string());
+  ASSERT_EQ(still.exitCode, 0) << still.output;
+  EXPECT_NE(test::readLines(dir / "still.txt").back(), test::readLines(dir / "live.txt").back());
+}
+
+TEST(FieldStream, AnEmptyFolderStopsTheStartAfterWaitingWithAClearMessage) {
+  const fs::path dir = test::scratchDir("field-stream-empty");
+  fs::create_directories(dir / "steps");
+  std::string text = test::readBytes(config(dir));
+  text.replace(text.find("step_interval = 0.5"), 19, "step_interval = 0.5\nwait_s = 0.3");
+  std::ofstream(dir / "stream.toml") << text;
+  const auto r =
+      test::runSandstorm("--config " + (dir / "stream.toml").string() + " --headless --frames 3");
+  EXPECT_NE(r.exitCode, 0);
+  EXPECT_NE(r.output.find("no complete step came within 0.3 s (field.wait_s)"), std::string::npos)
+      << r.output;
+}
+
+}  // namespace
+}  // namespace sandstorm
