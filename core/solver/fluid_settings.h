@@ -1,0 +1,21 @@
+// FluidSettings: the live flow solver's attributes (solver.* in the table of
+// dynamic attributes, [solver] in a configuration, the menu's Field section);
+// core/solver/fluid_solver.h says what each does.
+#pragma once
+
+#include <glm/glm.hpp>
+
+namespace sandstorm {
+
+struct FluidSettings {
+  bool enabled = false;             // the field is the solver's (it starts from the field's grid)
+  int iterations = 40;              // pressure iterations a step (red-black SOR)
+  float relaxation = 1.7f;          // the SOR factor, 1 (Gauss-Seidel) .. 1.95
+  int every = 1;                    // frames a step (its dt is their simulated time)
+  glm::vec3 wind{0.0f};             // m/s blowing in at the domain's upwind sides
+  bool closed = false;              // every side a wall (a room); else open but for the floor
+  float rotorAcceleration = 40.0f;  // m/s^2 down through the rotor's disc at full throttle
+  float viscosity = 0.0f;           // m^2/s (kinematic; the scheme adds its own numerical share)
+};
+
+}  // namespace sandstorm

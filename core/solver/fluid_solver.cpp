@@ -1,0 +1,319 @@
+#include "core/solver/fluid_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/obstacles/obstacle_physics.h"
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+glm::ivec3 unit(int axis) {
+  glm::ivec3 e(0);
+  e[axis] = 1;
+  return e;
+}
+
+}  // namespace
+
+FluidSolver::FluidSolver(const Box& bounds, glm::ivec3 dims, const VectorField* initial)
+    : bounds_(bounds), n_(dims) {
+  if (glm::any(glm::lessThan(dims, glm::ivec3(2))))
+    throw Error(concat("FluidSolver: a ", dims.x, "x", dims.y, "x", dims.z,
+                       " grid; expected at least 2 points along every axis"));
+  if (std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z) > (std::size_t{1} << 26))
+    throw Error(concat("FluidSolver: ", dims.x, "x", dims.y, "x", dims.z,
+                       " cells are more than 2^26; resample the field coarser"));
+  h_ = (bounds.max - bounds.min) / glm::vec3(dims - 1);
+  if (!glm::all(glm::greaterThan(h_, glm::vec3(0.0f))))
+    throw Error("FluidSolver: the field's bounds are empty along an axis");
+  const std::size_t cells = std::size_t(n_.x) * std::size_t(n_.y) * std::size_t(n_.z);
+  u_.assign(std::size_t(n_.x + 1) * std::size_t(n_.y) * std::size_t(n_.z), 0.0f);
+  v_.assign(std::size_t(n_.x) * std::size_t(n_.y + 1) * std::size_t(n_.z), 0.0f);
+  w_.assign(std::size_t(n_.x) * std::size_t(n_.y) * std::size_t(n_.z + 1), 0.0f);
+  p_.assign(cells, 0.0f);
+  divergence_.assign(cells, 0.0f);
+  solid_.assign(cells, 0);
+  solidVelocity_.assign(cells, glm::vec3(0.0f));
+  for (auto& axis : sides_)
+    axis[0] = axis[1] = Side::Open;
+  sides_[2][0] = Side::Wall;
+  if (initial && initial->dims() == dims) {
+    // Each face the mean of the two points beside it (the one at the domain's edge).
+    const auto at = [&](glm::ivec3 c) { return initial->at(c.x, c.y, c.z); };
+    for (int axis = 0; axis < 3; ++axis) {
+      std::vector<float>& faces = axis == 0 ? u_ : axis == 1 ? v_ : w_;
+      const glm::ivec3 d = n_ + unit(axis);
+      for (int k = 0; k < d.z; ++k)
+        for (int j = 0; j < d.y; ++j)
+          for (int i = 0; i < d.x; ++i) {
+            const glm::ivec3 f(i, j, k);
+            const glm::ivec3 lo = glm::max(f - unit(axis), glm::ivec3(0));
+            const glm::ivec3 hi = glm::min(f, n_ - 1);
+            faces[std::size_t(i) +
+                  std::size_t(d.x) * (std::size_t(j) + std::size_t(d.y) * std::size_t(k))] =
+                0.5f * (at(lo)[axis] + at(hi)[axis]);
+          }
+    }
+  }
+}
+
+void FluidSolver::setSolids(const HeightMap* terrain, const std::vector<Obstacle>& obstacles) {
+  for (int k = 0; k < n_.z; ++k)
+    for (int j = 0; j < n_.y; ++j)
+      for (int i = 0; i < n_.x; ++i) {
+        const glm::vec3 c = bounds_.min + glm::vec3(i, j, k) * h_;
+        const std::size_t at = cell(i, j, k);
+        solid_[at] = 0;
+        solidVelocity_[at] = glm::vec3(0.0f);
+        if (terrain && c.z < terrain->heightAt(glm::vec2(c))) {
+          solid_[at] = 1;
+          continue;
+        }
+        for (const Obstacle& o : obstacles) {
+          if (o.enabled && obstacleSurface(o, c).distance < 0.0f) {
+            solid_[at] = 1;
+            solidVelocity_[at] = o.velocity;
+            break;
+          }
+        }
+      }
+}
+
+float FluidSolver::sampleFaces(const std::vector<float>& faces, int axis,
+                               const glm::vec3& p) const {
+  const glm::ivec3 d = n_ + unit(axis);
+  glm::vec3 q = (p - bounds_.min) / h_;
+  q[axis] += 0.5f;
+  q = glm::clamp(q, glm::vec3(0.0f), glm::vec3(d - 1));
+  const glm::ivec3 i0 = glm::min(glm::ivec3(glm::floor(q)), d - 2);
+  const glm::vec3 f = q - glm::vec3(i0);
+  const auto at = [&](int i, int j, int k) {
+    return faces[std::size_t(i) +
+                 std::size_t(d.x) * (std::size_t(j) + std::size_t(d.y) * std::size_t(k))];
+  };
+  const float c00 = at(i0.x, i0.y, i0.z) + (at(i0.x + 1, i0.y, i0.z) - at(i0.x, i0.y, i0.z)) * f.x;
+  const float c10 =
+      at(i0.x, i0.y + 1, i0.z) + (at(i0.x + 1, i0.y + 1, i0.z) - at(i0.x, i0.y + 1, i0.z)) * f.x;
+  const float c01 =
+      at(i0.x, i0.y, i0.z + 1) + (at(i0.x + 1, i0.y, i0.z + 1) - at(i0.x, i0.y, i0.z + 1)) * f.x;
+  const float c11 = at(i0.x, i0.y + 1, i0.z + 1) +
+                    (at(i0.x + 1, i0.y + 1, i0.z + 1) - at(i0.x, i0.y + 1, i0.z + 1)) * f.x;
+  const float c0 = c00 + (c10 - c00) * f.y, c1 = c01 + (c11 - c01) * f.y;
+  return c0 + (c1 - c0) * f.z;
+}
+
+glm::vec3 FluidSolver::velocityAt(const glm::vec3& p) const {
+  return {sampleFaces(u_, 0, p), sampleFaces(v_, 1, p), sampleFaces(w_, 2, p)};
+}
+
+bool FluidSolver::fixedFace(int axis, int i, int j, int k, float* velocity) const {
+  const glm::ivec3 f(i, j, k);
+  const int along = f[axis];
+  Side side = Side::Open;
+  if (along == 0 || along == n_[axis]) {
+    side = sides_[axis][along == 0 ? 0 : 1];
+    if (side == Side::Open) return false;
+    *velocity = side == Side::Inflow ? wind_[axis] : 0.0f;
+    return true;
+  }
+  const glm::ivec3 lo = f - unit(axis);
+  const std::size_t a = cell(lo.x, lo.y, lo.z), b = cell(i, j, k);
+  if (!solid_[a] && !solid_[b]) return false;
+  const glm::vec3 moving = solid_[a] ? solidVelocity_[a] : solidVelocity_[b];
+  *velocity = moving[axis];
+  return true;
+}
+
+void FluidSolver::applyForces(float dt, const FluidForces& forces) {
+  if (!(forces.rotorRadius > 0.0f) || forces.rotorAcceleration == 0.0f) return;
+  const float half = 0.5f * std::max(h_.z, 0.5f);
+  for (int k = 0; k <= n_.z; ++k)
+    for (int j = 0; j < n_.y; ++j)
+      for (int i = 0; i < n_.x; ++i) {
+        const glm::vec3 x = bounds_.min + glm::vec3(float(i), float(j), float(k) - 0.5f) * h_;
+        const glm::vec2 r = glm::vec2(x) - glm::vec2(forces.rotorCentre);
+        if (glm::dot(r, r) <= forces.rotorRadius * forces.rotorRadius &&
+            std::abs(x.z - forces.rotorCentre.z) <= half)
+          w_[wIndex(i, j, k)] -= forces.rotorAcceleration * dt;
+      }
+}
+
+void FluidSolver::advect(float dt) {
+  std::vector<float> next[3] = {u_, v_, w_};
+  for (int axis = 0; axis < 3; ++axis) {
+    const glm::ivec3 d = n_ + unit(axis);
+    const std::vector<float>& from = axis == 0 ? u_ : axis == 1 ? v_ : w_;
+    for (int k = 0; k < d.z; ++k)
+      for (int j = 0; j < d.y; ++j)
+        for (int i = 0; i < d.x; ++i) {
+          glm::vec3 x = bounds_.min + glm::vec3(i, j, k) * h_;
+          x[axis] -= 0.5f * h_[axis];
+          const glm::vec3 mid = x - 0.5f * dt * velocityAt(x);
+          const glm::vec3 source = x - dt * velocityAt(mid);
+          next[axis][std::size_t(i) +
+                     std::size_t(d.x) * (std::size_t(j) + std::size_t(d.y) * std::size_t(k))] =
+              sampleFaces(from, axis, source);
+        }
+  }
+  u_.swap(next[0]);
+  v_.swap(next[1]);
+  w_.swap(next[2]);
+}
+
+void FluidSolver::diffuse(float dt, float viscosity) {
+  if (!(viscosity > 0.0f)) return;
+  const glm::vec3 inv2 = 1.0f / (h_ * h_);
+  const float limit = 1.0f / (6.0f * std::max({inv2.x, inv2.y, inv2.z}));  // stable step
+  const int steps = std::max(1, int(std::ceil(viscosity * dt / limit)));
+  const float nudt = viscosity * dt / float(steps);
+  for (int s = 0; s < steps; ++s)
+    for (int axis = 0; axis < 3; ++axis) {
+      std::vector<float>& faces = axis == 0 ? u_ : axis == 1 ? v_ : w_;
+      const std::vector<float> from = faces;
+      const glm::ivec3 d = n_ + unit(axis);
+      const auto at = [&](glm::ivec3 c) {
+        c = glm::clamp(c, glm::ivec3(0), d - 1);
+        return from[std::size_t(c.x) +
+                    std::size_t(d.x) * (std::size_t(c.y) + std::size_t(d.y) * std::size_t(c.z))];
+      };
+      for (int k = 0; k < d.z; ++k)
+        for (int j = 0; j < d.y; ++j)
+          for (int i = 0; i < d.x; ++i) {
+            const glm::ivec3 c(i, j, k);
+            const float here = at(c);
+            float lap = 0.0f;
+            for (int a = 0; a < 3; ++a)
+              lap += (at(c + unit(a)) - 2.0f * here + at(c - unit(a))) * inv2[a];
+            faces[std::size_t(i) +
+                  std::size_t(d.x) * (std::size_t(j) + std::size_t(d.y) * std::size_t(k))] =
+                here + nudt * lap;
+          }
+    }
+}
+
+void FluidSolver::setBoundaries(const FluidSettings& settings) {
+  wind_ = settings.wind;
+  for (int axis = 0; axis < 3; ++axis) {
+    sides_[axis][0] = settings.wind[axis] > 0.0f ? Side::Inflow : Side::Open;
+    sides_[axis][1] = settings.wind[axis] < 0.0f ? Side::Inflow : Side::Open;
+  }
+  sides_[2][0] = Side::Wall;  // the floor
+  if (settings.closed)
+    for (auto& axis : sides_)
+      axis[0] = axis[1] = Side::Wall;
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<float>& faces = axis == 0 ? u_ : axis == 1 ? v_ : w_;
+    const glm::ivec3 d = n_ + unit(axis);
+    for (int k = 0; k < d.z; ++k)
+      for (int j = 0; j < d.y; ++j)
+        for (int i = 0; i < d.x; ++i) {
+          float velocity = 0.0f;
+          if (fixedFace(axis, i, j, k, &velocity))
+            faces[std::size_t(i) +
+                  std::size_t(d.x) * (std::size_t(j) + std::size_t(d.y) * std::size_t(k))] =
+                velocity;
+        }
+  }
+}
+
+void FluidSolver::project(const FluidSettings& settings) {
+  const glm::vec3 inv = 1.0f / h_, inv2 = inv * inv;
+  const auto computeDivergence = [&] {
+    double most = 0.0;
+    for (int k = 0; k < n_.z; ++k)
+      for (int j = 0; j < n_.y; ++j)
+        for (int i = 0; i < n_.x; ++i) {
+          const std::size_t c = cell(i, j, k);
+          if (solid_[c]) {
+            divergence_[c] = 0.0f;
+            continue;
+          }
+          const float div = (u_[uIndex(i + 1, j, k)] - u_[uIndex(i, j, k)]) * inv.x +
+                            (v_[vIndex(i, j + 1, k)] - v_[vIndex(i, j, k)]) * inv.y +
+                            (w_[wIndex(i, j, k + 1)] - w_[wIndex(i, j, k)]) * inv.z;
+          divergence_[c] = div;
+          most = std::max(most, double(std::abs(div)));
+        }
+    return most;
+  };
+  computeDivergence();
+  const float omega = std::clamp(settings.relaxation, 1.0f, 1.95f);
+  for (int it = 0; it < std::max(settings.iterations, 0); ++it)
+    for (int colour = 0; colour < 2; ++colour)
+      for (int k = 0; k < n_.z; ++k)
+        for (int j = 0; j < n_.y; ++j)
+          for (int i = (j + k + colour) % 2; i < n_.x; i += 2) {
+            const std::size_t c = cell(i, j, k);
+            if (solid_[c]) continue;
+            float diag = 0.0f, sum = 0.0f;
+            const glm::ivec3 here(i, j, k);
+            for (int axis = 0; axis < 3; ++axis)
+              for (int side = 0; side < 2; ++side) {
+                const glm::ivec3 face = here + (side ? unit(axis) : glm::ivec3(0));
+                float fixed;
+                if (fixedFace(axis, face.x, face.y, face.z, &fixed)) continue;
+                diag += inv2[axis];
+                const glm::ivec3 other = here + (side ? unit(axis) : -unit(axis));
+                if (other[axis] >= 0 && other[axis] < n_[axis])
+                  sum += p_[cell(other.x, other.y, other.z)] * inv2[axis];
+              }
+            if (diag > 0.0f) p_[c] += omega * ((sum - divergence_[c]) / diag - p_[c]);
+          }
+  // The faces lose the pressure's gradient (0 outside an open side).
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<float>& faces = axis == 0 ? u_ : axis == 1 ? v_ : w_;
+    const glm::ivec3 d = n_ + unit(axis);
+    for (int k = 0; k < d.z; ++k)
+      for (int j = 0; j < d.y; ++j)
+        for (int i = 0; i < d.x; ++i) {
+          float fixed;
+          if (fixedFace(axis, i, j, k, &fixed)) continue;
+          const glm::ivec3 f(i, j, k), lo = f - unit(axis);
+          const float right = f[axis] < n_[axis] ? p_[cell(f.x, f.y, f.z)] : 0.0f;
+          const float left = lo[axis] >= 0 ? p_[cell(lo.x, lo.y, lo.z)] : 0.0f;
+          faces[std::size_t(i) +
+                std::size_t(d.x) * (std::size_t(j) + std::size_t(d.y) * std::size_t(k))] -=
+              (right - left) * inv[axis];
+        }
+  }
+  maxDivergence_ = computeDivergence();
+}
+
+void FluidSolver::step(float dt, const FluidSettings& settings, const FluidForces& forces) {
+  if (!(dt > 0.0f)) return;
+  setBoundaries(settings);
+  applyForces(dt, forces);
+  advect(dt);
+  diffuse(dt, settings.viscosity);
+  setBoundaries(settings);
+  project(settings);
+}
+
+VectorField FluidSolver::velocityField() const {
+  VectorField out(bounds_, n_);
+  for (int k = 0; k < n_.z; ++k)
+    for (int j = 0; j < n_.y; ++j)
+      for (int i = 0; i < n_.x; ++i) {
+        if (solid_[cell(i, j, k)]) continue;
+        out.at(i, j, k) = 0.5f * glm::vec3(u_[uIndex(i, j, k)] + u_[uIndex(i + 1, j, k)],
+                                           v_[vIndex(i, j, k)] + v_[vIndex(i, j + 1, k)],
+                                           w_[wIndex(i, j, k)] + w_[wIndex(i, j, k + 1)]);
+      }
+  return out;
+}
+
+double FluidSolver::maxDivergence() const {
+  return maxDivergence_;
+}
+
+double FluidSolver::kineticEnergy() const {
+  double e = 0.0;
+  const VectorField f = velocityField();
+  for (const glm::vec3& v : f.values())
+    e += 0.5 * double(glm::dot(v, v));
+  return e * double(h_.x) * double(h_.y) * double(h_.z);
+}
+
+}  // namespace sandstorm

@@ -1,0 +1,112 @@
+// FluidSolver: an incompressible flow on the field's grid, stable fluids
+// (Stam 1999) on a staggered (MAC) grid: the field's points are the cells'
+// centres, velocities live on the faces between them. One step:
+//   1. forces: a momentum source pushing air down through the rotor's disc
+//      (FluidForces::rotor*), as its thrust does;
+//   2. advection: each face's velocity is what the flow brings to it from
+//      where it was dt ago (semi-Lagrangian, a midpoint backtrace, trilinear
+//      samples), unconditionally stable;
+//   3. viscosity (if any): an explicit diffusion, sub-stepped to stay stable;
+//   4. boundaries: faces of solid cells (terrain, obstacles: setSolids) take
+//      the solid's velocity, the domain's floor is a wall, the sides the wind
+//      blows in through take the wind, the other sides and the top are open
+//      (pressure 0 outside); with `closed` every side is a wall;
+//   5. projection: the pressure that makes the flow divergence-free, by
+//      red-black successive over-relaxation (deterministic: each colour's cells
+//      are independent), warm-started from the last step's; the face
+//      velocities lose its gradient. maxDivergence() says what is left.
+// The velocity at the field's points (the average of each cell's faces) is
+// the field particles move through (velocityField()).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "core/field/box.h"
+#include "core/field/height_map.h"
+#include "core/field/vector_field.h"
+#include "core/obstacles/obstacle.h"
+#include "core/solver/fluid_settings.h"
+
+namespace sandstorm {
+
+struct FluidForces {
+  // The rotor's disc: centre, radius, and the downward acceleration in it (m/s^2).
+  glm::vec3 rotorCentre{0.0f};
+  float rotorRadius = 0.0f;
+  float rotorAcceleration = 0.0f;
+};
+
+class FluidSolver {
+ public:
+  // Cells centred on the points of a grid of `dims` over `bounds` (every
+  // axis at least 2 points); velocities start at `initial` (may be null: rest).
+  FluidSolver(const Box& bounds, glm::ivec3 dims, const VectorField* initial = nullptr);
+
+  // Cells whose centre lies under the terrain or inside an obstacle are solid
+  // (their faces move with the obstacle). Call when either moves.
+  void setSolids(const HeightMap* terrain, const std::vector<Obstacle>& obstacles);
+
+  void step(float dt, const FluidSettings& settings, const FluidForces& forces = {});
+
+  // The velocity at the cells' centres (the field's points); solid cells 0.
+  VectorField velocityField() const;
+  // After the last projection: the largest |div u| over fluid cells (1/s).
+  double maxDivergence() const;
+  // Sum over fluid cells of |u|^2 / 2 times the cell's volume (m^5/s^2, density 1).
+  double kineticEnergy() const;
+
+  glm::ivec3 cells() const { return n_; }
+  glm::vec3 spacing() const { return h_; }
+  bool solid(int i, int j, int k) const { return solid_[cell(i, j, k)] != 0; }
+  // Face velocities: u at the x-face left of cell (i, j, k) (i = 0..nx), v, w alike.
+  float u(int i, int j, int k) const { return u_[uIndex(i, j, k)]; }
+  float v(int i, int j, int k) const { return v_[vIndex(i, j, k)]; }
+  float w(int i, int j, int k) const { return w_[wIndex(i, j, k)]; }
+  // The flow's velocity at a point (each component sampled on its own faces).
+  glm::vec3 velocityAt(const glm::vec3& p) const;
+
+ private:
+  enum class Side : std::uint8_t { Wall, Open, Inflow };
+
+  std::size_t cell(int i, int j, int k) const {
+    return std::size_t(i) +
+           std::size_t(n_.x) * (std::size_t(j) + std::size_t(n_.y) * std::size_t(k));
+  }
+  std::size_t uIndex(int i, int j, int k) const {
+    return std::size_t(i) +
+           std::size_t(n_.x + 1) * (std::size_t(j) + std::size_t(n_.y) * std::size_t(k));
+  }
+  std::size_t vIndex(int i, int j, int k) const {
+    return std::size_t(i) +
+           std::size_t(n_.x) * (std::size_t(j) + std::size_t(n_.y + 1) * std::size_t(k));
+  }
+  std::size_t wIndex(int i, int j, int k) const {
+    return std::size_t(i) +
+           std::size_t(n_.x) * (std::size_t(j) + std::size_t(n_.y) * std::size_t(k));
+  }
+  float sampleFaces(const std::vector<float>& faces, int axis, const glm::vec3& p) const;
+  void applyForces(float dt, const FluidForces& forces);
+  void advect(float dt);
+  void diffuse(float dt, float viscosity);
+  void setBoundaries(const FluidSettings& settings);
+  void project(const FluidSettings& settings);
+  // Whether the face on `axis` at the low side of cell (i, j, k) is fixed
+  // (a wall, an inflow, or next to a solid cell), and if so its velocity.
+  bool fixedFace(int axis, int i, int j, int k, float* velocity) const;
+
+  Box bounds_;
+  glm::ivec3 n_;
+  glm::vec3 h_;
+  std::vector<float> u_, v_, w_, scratch_;
+  std::vector<float> p_, divergence_;
+  std::vector<std::uint8_t> solid_;
+  std::vector<glm::vec3> solidVelocity_;
+  Side sides_[3][2];  // per axis, low and high side
+  glm::vec3 wind_{0.0f};
+  double maxDivergence_ = 0.0;
+};
+
+}  // namespace sandstorm
