@@ -65,6 +65,7 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
       terrain_(makeTerrain(config.scene, configDir_)),
       main_(config.particles, field_.update, mainOptions(config.run)),
       helicopter_(terrain_),
+      fluid_(terrain_),
       obstaclePaths_(config.obstaclePaths),
       head_(makeHeadTracker(config.head)),
       navigation_(Navigation::from(config.navigation)),
@@ -645,6 +646,7 @@ void AppRun::runOneProcess() {
     lastPacket_ = std::make_shared<const FramePacket>(main_.next());
     if (!channel_.publish(lastPacket_)) break;
     helicopter_.update(main_);
+    fluid_.update(main_, *lastPacket_);
     if (!options_.replay) obstaclePaths_.update(main_, *lastPacket_);
     ++frames_;
     reportProgress(now);
@@ -688,6 +690,7 @@ void AppRun::runCluster() {
       lastPacket_ = packet;
       cluster_->send(*packet);
       helicopter_.update(main_);
+      fluid_.update(main_, *packet);
       if (!options_.replay) obstaclePaths_.update(main_, *packet);
     } else {
       cluster_->sendStop();

@@ -15,6 +15,7 @@
 #include "app/app.h"
 #include "app/desktop_input.h"
 #include "app/field_stream.h"
+#include "app/fluid_driver.h"
 #include "app/hash_log.h"
 #include "app/helicopter_controller.h"
 #include "app/menu/legend_host.h"
@@ -94,6 +95,7 @@ class AppRun {
   void loadField(const std::string& choice);
   std::unique_ptr<TrackingInput> tracking_;  // null: no tracker (or not the main context's rank)
   HelicopterController helicopter_;
+  FluidDriver fluid_;  // the live flow solver, while solver.enabled
   ObstacleDriver obstaclePaths_;
   ObstacleDrag obstacleDrag_;
   MoleculePush moleculePush_;

@@ -21,9 +21,15 @@ HelicopterController::HelicopterController(std::shared_ptr<const HeightMap> terr
     : terrain_(std::move(terrain)), model_(model) {}
 
 void HelicopterController::update(MainContext& main) {
-  const HelicopterSettings s = main.state().helicopter;
-  if (!s.enabled || (last_ && same(*last_, s))) return;
+  const ParticleState state = main.state();
+  const HelicopterSettings s = state.helicopter;
+  // The live solver (solver.enabled) makes the wash itself from the rotor's
+  // thrust (FluidDriver), starting from the analytic one; that is baked again
+  // when it stops.
+  const bool solving = state.solver.enabled;
+  if (!s.enabled || (last_ && same(*last_, s) && solving == lastSolving_)) return;
   last_ = s;
+  lastSolving_ = solving;
   const HelicopterEffects e = helicopterEffects(s, model_);
   const float ground = terrain_ ? terrain_->heightAt({s.x, s.y}) : 0.0f;
 
@@ -55,7 +61,10 @@ void HelicopterController::update(MainContext& main) {
   auto field = std::make_shared<VectorField>(bake(air, bounds, {48, 48, 24}));
   FieldPlacement placement;
   placement.offset = {s.x, s.y, ground};
-  main.setField(FieldUpdate{.field = std::move(field), .placement = placement});
+  // The solver starts from the wash (the first time), then makes its own.
+  if (!solving || !bakedOnce_)
+    main.setField(FieldUpdate{.field = std::move(field), .placement = placement});
+  bakedOnce_ = true;
 
   main.set("emitter.0.shape", std::string("disc"));
   main.set("emitter.0.position", glm::vec3(s.x, s.y, ground + 0.15f));

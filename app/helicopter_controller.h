@@ -26,6 +26,8 @@ class HelicopterController {
   std::shared_ptr<const HeightMap> terrain_;
   HelicopterModel model_;
   std::optional<HelicopterSettings> last_;
+  bool lastSolving_ = false;
+  bool bakedOnce_ = false;
 };
 
 }  // namespace sandstorm

@@ -96,7 +96,7 @@ void MenuPanel::build(const MenuStats& stats) {
   emitterSection(state);
   moleculeSection(stats, state);
   obstacleSection(state);
-  fieldSection();
+  fieldSection(state);
   if (ImGui::CollapsingHeader("Field playback")) {
     for (const AttributeInfo& info : AttributeTable::instance().entries())
       if (info.key.starts_with("field.")) attributeWidget(info, info.key, state);
@@ -248,25 +248,33 @@ void MenuPanel::moleculeSection(const MenuStats& stats, const ParticleState& sta
     if (info.key.starts_with("molecules.")) attributeWidget(info, info.key, state);
 }
 
-void MenuPanel::fieldSection() {
-  if (fieldChoices_.empty() || !ImGui::CollapsingHeader("Field")) return;
-  selectedField_ = std::clamp(selectedField_, 0, int(fieldChoices_.size()) - 1);
-  if (ImGui::BeginCombo("source", fieldChoices_[std::size_t(selectedField_)].c_str())) {
-    for (int i = 0; i < int(fieldChoices_.size()); ++i)
-      if (ImGui::Selectable(fieldChoices_[std::size_t(i)].c_str(), i == selectedField_))
-        selectedField_ = i;
-    ImGui::EndCombo();
-  }
-  remember("field:source");
-  if (ImGui::Button("Load field")) {
-    try {
-      loader_(fieldChoices_[std::size_t(selectedField_)]);
-      message_ = "loaded " + fieldChoices_[std::size_t(selectedField_)];
-    } catch (const Error& e) {
-      message_ = e.what();
+// The field: another one from the data folder, and the live flow solver.
+void MenuPanel::fieldSection(const ParticleState& state) {
+  const bool open = ImGui::CollapsingHeader("Field");
+  remember("header:field");
+  if (!open) return;
+  if (!fieldChoices_.empty()) {
+    selectedField_ = std::clamp(selectedField_, 0, int(fieldChoices_.size()) - 1);
+    if (ImGui::BeginCombo("source", fieldChoices_[std::size_t(selectedField_)].c_str())) {
+      for (int i = 0; i < int(fieldChoices_.size()); ++i)
+        if (ImGui::Selectable(fieldChoices_[std::size_t(i)].c_str(), i == selectedField_))
+          selectedField_ = i;
+      ImGui::EndCombo();
     }
+    remember("field:source");
+    if (ImGui::Button("Load field")) {
+      try {
+        loader_(fieldChoices_[std::size_t(selectedField_)]);
+        message_ = "loaded " + fieldChoices_[std::size_t(selectedField_)];
+      } catch (const Error& e) {
+        message_ = e.what();
+      }
+    }
+    remember("button:load-field");
   }
-  remember("button:load-field");
+  ImGui::TextUnformatted("live flow solver");
+  for (const AttributeInfo& info : AttributeTable::instance().entries())
+    if (info.key.starts_with("solver.")) attributeWidget(info, info.key, state);
 }
 
 void MenuPanel::attributeWidget(const AttributeInfo& info, const std::string& key,

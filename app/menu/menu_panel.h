@@ -68,7 +68,7 @@ class MenuPanel {
   void emitterSection(const ParticleState& state);
   void obstacleSection(const ParticleState& state);
   void moleculeSection(const MenuStats& stats, const ParticleState& state);
-  void fieldSection();
+  void fieldSection(const ParticleState& state);
   void statsSection(const MenuStats& stats, const ParticleState& state);
   void trackingSection(const MenuTrackingStats& tracking);
   void remember(const std::string& key);

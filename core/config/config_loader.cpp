@@ -638,7 +638,7 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
               {"include",        "run",        "field",   "scene",    "sim",        "render",
                "field_playback", "helicopter", "emitter", "head",     "navigation", "tracking",
                "menu",           "cluster",    "wall",    "pvx",      "pvx_up",     "gpu",
-               "streamlines",    "slice",      "probe",   "obstacle", "molecules"});
+               "streamlines",    "slice",      "probe",   "obstacle", "molecules", "solver"});
   // include = "scene.toml": that file's settings first, this file's on top.
   if (const toml::value* include = r.find(root, "include")) {
     if (!include->is_string()) r.fail(*include, "include", "expected a file name");
@@ -702,6 +702,7 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
   if (const auto* t = section("streamlines")) setAttributes(r, *t, "streamlines.", c.particles);
   if (const auto* t = section("probe")) setAttributes(r, *t, "probe.", c.particles);
   if (const auto* t = section("molecules")) setAttributes(r, *t, "molecules.", c.particles);
+  if (const auto* t = section("solver")) setAttributes(r, *t, "solver.", c.particles);
   if (const auto* t = section("slice")) {
     setAttributes(r, *t, "slice.", c.particles);
     if (const toml::value* n = r.find(*t, "normal");

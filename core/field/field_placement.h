@@ -20,6 +20,9 @@ struct FieldPlacement {
   glm::vec3 toRoom(const glm::vec3& local) const { return offset + (rotation * local) * scale; }
   // A field value (velocity or acceleration) carried from field to room.
   glm::vec3 vectorToRoom(const glm::vec3& v) const { return (rotation * v) * scale; }
+  glm::vec3 vectorToLocal(const glm::vec3& v) const {
+    return (glm::transpose(rotation) * v) * (1.0f / scale);
+  }
   glm::mat4 matrix() const;  // local -> room, for drawing the field's box
 };
 

@@ -126,6 +126,9 @@ std::optional<std::string> decodeName(std::string_view word) {
 #define MOLECULES(member)                  \
   Ref<decltype(MoleculeSettings::member)>( \
       [](ParticleState & s, int) -> auto& { return s.molecules.member; })
+#define SOLVER(member)                  \
+  Ref<decltype(FluidSettings::member)>( \
+      [](ParticleState & s, int) -> auto& { return s.solver.member; })
 #define EMITTER(member)           \
   Ref<decltype(Emitter::member)>( \
       [](ParticleState & s, int e) -> auto& { return s.emitters[std::size_t(e)].member; })
@@ -376,6 +379,30 @@ std::vector<AttributeInfo> makeEntries() {
       entry("helicopter.x", T::Float, -90, 90, "m", "Rotor hub position east", HELICOPTER(x)));
   v.push_back(
       entry("helicopter.y", T::Float, -90, 90, "m", "Rotor hub position north", HELICOPTER(y)));
+  // The live flow solver (core/solver/fluid_solver.h, app/fluid_driver.h).
+  v.push_back(entry("solver.enabled", T::Bool, 0, 1, "",
+                    "The field is a live flow (stable fluids on the field's grid, started from "
+                    "it); off: the field as loaded",
+                    SOLVER(enabled)));
+  v.push_back(entry("solver.iterations", T::Int, 1, 500, "",
+                    "Pressure iterations a step (more: less divergence left)", SOLVER(iterations)));
+  v.push_back(entry("solver.relaxation", T::Float, 1, 1.95f, "",
+                    "Over-relaxation of the pressure iterations (1: Gauss-Seidel)",
+                    SOLVER(relaxation)));
+  v.push_back(entry("solver.every", T::Int, 1, 60, "frames",
+                    "Frames between steps (a step covers their simulated time)", SOLVER(every)));
+  v.push_back(entry("solver.wind", T::Vec3, -100, 100, "m/s",
+                    "Wind blowing in through the domain's upwind sides (the field's frame)",
+                    SOLVER(wind)));
+  v.push_back(entry("solver.rotor_acceleration", T::Float, 0, 1000, "m/s^2",
+                    "The helicopter's rotor pushes the air in its disc down this hard at full "
+                    "throttle",
+                    SOLVER(rotorAcceleration)));
+  v.push_back(entry("solver.viscosity", T::Float, 0, 10, "m^2/s", "Kinematic viscosity",
+                    SOLVER(viscosity)));
+  v.push_back(entry("solver.closed", T::Bool, 0, 1, "",
+                    "Every side of the domain a wall (a room); off: open but for the floor",
+                    SOLVER(closed)));
   // Molecules (core/molecules): small mass-spring meshes that turn with the flow.
   v.push_back(entry("molecules.maximum", T::Int, 0, 1e8f, "molecules",
                     "Soft limit on live molecules", MOLECULES(maximum)));
@@ -487,6 +514,7 @@ std::vector<AttributeInfo> makeEntries() {
 #undef FIELD
 #undef EMITTER
 #undef MOLECULES
+#undef SOLVER
 #undef OBSTACLE
 
 struct Alias {

@@ -9,6 +9,7 @@
 #include "core/flow/slice_settings.h"
 #include "core/flow/streamline_settings.h"
 #include "core/molecules/molecule_settings.h"
+#include "core/solver/fluid_settings.h"
 #include "core/obstacles/obstacle.h"
 #include "core/sim/emitter.h"
 #include "core/sim/helicopter.h"
@@ -28,6 +29,7 @@ struct ParticleState {
   SliceSettings slice;
   ProbeSettings probe;
   MoleculeSettings molecules;
+  FluidSettings solver;  // the live flow solver (app/fluid_driver.h)
   std::vector<Emitter> emitters{Emitter{}};
   std::vector<Obstacle> obstacles;  // from the configuration's [[obstacle]]s; edited, never added
 };

@@ -17,8 +17,9 @@ glm::ivec3 unit(int axis) {
 
 }  // namespace
 
-FluidSolver::FluidSolver(const Box& bounds, glm::ivec3 dims, const VectorField* initial)
-    : bounds_(bounds), n_(dims) {
+FluidSolver::FluidSolver(const Box& bounds, glm::ivec3 dims, const VectorField* initial,
+                         unsigned threads)
+    : bounds_(bounds), n_(dims), pool_(std::make_unique<ParallelFor>(threads)) {
   if (glm::any(glm::lessThan(dims, glm::ivec3(2))))
     throw Error(concat("FluidSolver: a ", dims.x, "x", dims.y, "x", dims.z,
                        " grid; expected at least 2 points along every axis"));
@@ -36,6 +37,10 @@ FluidSolver::FluidSolver(const Box& bounds, glm::ivec3 dims, const VectorField* 
   divergence_.assign(cells, 0.0f);
   solid_.assign(cells, 0);
   solidVelocity_.assign(cells, glm::vec3(0.0f));
+  neighbours_.assign(cells, 0);
+  diag_.assign(cells, 0.0f);
+  for (int axis = 0; axis < 3; ++axis)
+    fixed_[axis].assign(faces(axis).size(), 0);
   for (auto& axis : sides_)
     axis[0] = axis[1] = Side::Open;
   sides_[2][0] = Side::Wall;
@@ -59,11 +64,19 @@ FluidSolver::FluidSolver(const Box& bounds, glm::ivec3 dims, const VectorField* 
   }
 }
 
-void FluidSolver::setSolids(const HeightMap* terrain, const std::vector<Obstacle>& obstacles) {
+FluidSolver::~FluidSolver() = default;
+
+void FluidSolver::slabs(int count, const std::function<void(int, int)>& body) {
+  pool_->run(std::size_t(count),
+             [&](std::size_t begin, std::size_t end) { body(int(begin), int(end)); });
+}
+
+void FluidSolver::setSolids(const HeightMap* terrain, const std::vector<Obstacle>& obstacles,
+                            const FieldPlacement& placement) {
   for (int k = 0; k < n_.z; ++k)
     for (int j = 0; j < n_.y; ++j)
       for (int i = 0; i < n_.x; ++i) {
-        const glm::vec3 c = bounds_.min + glm::vec3(i, j, k) * h_;
+        const glm::vec3 c = placement.toRoom(bounds_.min + glm::vec3(i, j, k) * h_);
         const std::size_t at = cell(i, j, k);
         solid_[at] = 0;
         solidVelocity_[at] = glm::vec3(0.0f);
@@ -74,7 +87,7 @@ void FluidSolver::setSolids(const HeightMap* terrain, const std::vector<Obstacle
         for (const Obstacle& o : obstacles) {
           if (o.enabled && obstacleSurface(o, c).distance < 0.0f) {
             solid_[at] = 1;
-            solidVelocity_[at] = o.velocity;
+            solidVelocity_[at] = placement.vectorToLocal(o.velocity);
             break;
           }
         }
@@ -144,18 +157,33 @@ void FluidSolver::advect(float dt) {
   std::vector<float> next[3] = {u_, v_, w_};
   for (int axis = 0; axis < 3; ++axis) {
     const glm::ivec3 d = n_ + unit(axis);
-    const std::vector<float>& from = axis == 0 ? u_ : axis == 1 ? v_ : w_;
-    for (int k = 0; k < d.z; ++k)
-      for (int j = 0; j < d.y; ++j)
-        for (int i = 0; i < d.x; ++i) {
-          glm::vec3 x = bounds_.min + glm::vec3(i, j, k) * h_;
-          x[axis] -= 0.5f * h_[axis];
-          const glm::vec3 mid = x - 0.5f * dt * velocityAt(x);
-          const glm::vec3 source = x - dt * velocityAt(mid);
-          next[axis][std::size_t(i) +
-                     std::size_t(d.x) * (std::size_t(j) + std::size_t(d.y) * std::size_t(k))] =
-              sampleFaces(from, axis, source);
-        }
+    const int a1 = (axis + 1) % 3, a2 = (axis + 2) % 3;
+    slabs(d.z, [&](int k0, int k1) {
+      for (int k = k0; k < k1; ++k)
+        for (int j = 0; j < d.y; ++j)
+          for (int i = 0; i < d.x; ++i) {
+            const glm::ivec3 f(i, j, k);
+            // The face's velocity: its own component, and the other two the
+            // mean of the four faces around it (cells clamped at the edges).
+            glm::vec3 velocity;
+            velocity[axis] = faces(axis)[faceIndex(axis, i, j, k)];
+            for (const int other : {a1, a2}) {
+              float sum = 0.0f;
+              for (int lo = 0; lo < 2; ++lo)
+                for (int hi = 0; hi < 2; ++hi) {
+                  glm::ivec3 c = f;
+                  c[axis] = std::clamp(f[axis] - 1 + lo, 0, n_[axis] - 1);
+                  c[other] = f[other] + hi;
+                  sum += faces(other)[faceIndex(other, c.x, c.y, c.z)];
+                }
+              velocity[other] = 0.25f * sum;
+            }
+            glm::vec3 x = bounds_.min + glm::vec3(f) * h_;
+            x[axis] -= 0.5f * h_[axis];
+            next[axis][faceIndex(axis, i, j, k)] =
+                sampleFaces(faces(axis), axis, x - dt * velocity);
+          }
+    });
   }
   u_.swap(next[0]);
   v_.swap(next[1]);
@@ -203,80 +231,107 @@ void FluidSolver::setBoundaries(const FluidSettings& settings) {
   if (settings.closed)
     for (auto& axis : sides_)
       axis[0] = axis[1] = Side::Wall;
+  classify();
+}
+
+void FluidSolver::classify() {
   for (int axis = 0; axis < 3; ++axis) {
-    std::vector<float>& faces = axis == 0 ? u_ : axis == 1 ? v_ : w_;
+    std::vector<float>& f = faces(axis);
     const glm::ivec3 d = n_ + unit(axis);
-    for (int k = 0; k < d.z; ++k)
-      for (int j = 0; j < d.y; ++j)
-        for (int i = 0; i < d.x; ++i) {
-          float velocity = 0.0f;
-          if (fixedFace(axis, i, j, k, &velocity))
-            faces[std::size_t(i) +
-                  std::size_t(d.x) * (std::size_t(j) + std::size_t(d.y) * std::size_t(k))] =
-                velocity;
-        }
+    slabs(d.z, [&](int k0, int k1) {
+      for (int k = k0; k < k1; ++k)
+        for (int j = 0; j < d.y; ++j)
+          for (int i = 0; i < d.x; ++i) {
+            float velocity = 0.0f;
+            const std::size_t at = faceIndex(axis, i, j, k);
+            fixed_[axis][at] = fixedFace(axis, i, j, k, &velocity) ? 1 : 0;
+            if (fixed_[axis][at]) f[at] = velocity;
+          }
+    });
   }
+  const glm::vec3 inv2 = 1.0f / (h_ * h_);
+  slabs(n_.z, [&](int k0, int k1) {
+    for (int k = k0; k < k1; ++k)
+      for (int j = 0; j < n_.y; ++j)
+        for (int i = 0; i < n_.x; ++i) {
+          const std::size_t c = cell(i, j, k);
+          std::uint8_t bits = 0;
+          float diag = 0.0f;
+          const glm::ivec3 here(i, j, k);
+          for (int axis = 0; axis < 3; ++axis)
+            for (int side = 0; side < 2; ++side) {
+              const glm::ivec3 face = here + (side ? unit(axis) : glm::ivec3(0));
+              if (fixed_[axis][faceIndex(axis, face.x, face.y, face.z)]) continue;
+              diag += inv2[axis];  // a free face: to a fluid cell, or open (pressure 0 beyond)
+              const int beyond = here[axis] + (side ? 1 : -1);
+              if (beyond >= 0 && beyond < n_[axis]) bits |= std::uint8_t(1u << (2 * axis + side));
+            }
+          neighbours_[c] = solid_[c] ? 0 : bits;
+          diag_[c] = solid_[c] ? 0.0f : diag;
+        }
+  });
 }
 
 void FluidSolver::project(const FluidSettings& settings) {
   const glm::vec3 inv = 1.0f / h_, inv2 = inv * inv;
+  const std::ptrdiff_t stride[3] = {1, n_.x, std::ptrdiff_t(n_.x) * n_.y};
   const auto computeDivergence = [&] {
-    double most = 0.0;
-    for (int k = 0; k < n_.z; ++k)
-      for (int j = 0; j < n_.y; ++j)
-        for (int i = 0; i < n_.x; ++i) {
-          const std::size_t c = cell(i, j, k);
-          if (solid_[c]) {
-            divergence_[c] = 0.0f;
-            continue;
+    std::vector<double> most(std::size_t(n_.z), 0.0);
+    slabs(n_.z, [&](int k0, int k1) {
+      for (int k = k0; k < k1; ++k)
+        for (int j = 0; j < n_.y; ++j)
+          for (int i = 0; i < n_.x; ++i) {
+            const std::size_t c = cell(i, j, k);
+            if (solid_[c]) {
+              divergence_[c] = 0.0f;
+              continue;
+            }
+            const float div = (u_[uIndex(i + 1, j, k)] - u_[uIndex(i, j, k)]) * inv.x +
+                              (v_[vIndex(i, j + 1, k)] - v_[vIndex(i, j, k)]) * inv.y +
+                              (w_[wIndex(i, j, k + 1)] - w_[wIndex(i, j, k)]) * inv.z;
+            divergence_[c] = div;
+            most[std::size_t(k)] = std::max(most[std::size_t(k)], double(std::abs(div)));
           }
-          const float div = (u_[uIndex(i + 1, j, k)] - u_[uIndex(i, j, k)]) * inv.x +
-                            (v_[vIndex(i, j + 1, k)] - v_[vIndex(i, j, k)]) * inv.y +
-                            (w_[wIndex(i, j, k + 1)] - w_[wIndex(i, j, k)]) * inv.z;
-          divergence_[c] = div;
-          most = std::max(most, double(std::abs(div)));
-        }
-    return most;
+    });
+    return *std::max_element(most.begin(), most.end());
   };
   computeDivergence();
   const float omega = std::clamp(settings.relaxation, 1.0f, 1.95f);
   for (int it = 0; it < std::max(settings.iterations, 0); ++it)
     for (int colour = 0; colour < 2; ++colour)
-      for (int k = 0; k < n_.z; ++k)
-        for (int j = 0; j < n_.y; ++j)
-          for (int i = (j + k + colour) % 2; i < n_.x; i += 2) {
-            const std::size_t c = cell(i, j, k);
-            if (solid_[c]) continue;
-            float diag = 0.0f, sum = 0.0f;
-            const glm::ivec3 here(i, j, k);
-            for (int axis = 0; axis < 3; ++axis)
-              for (int side = 0; side < 2; ++side) {
-                const glm::ivec3 face = here + (side ? unit(axis) : glm::ivec3(0));
-                float fixed;
-                if (fixedFace(axis, face.x, face.y, face.z, &fixed)) continue;
-                diag += inv2[axis];
-                const glm::ivec3 other = here + (side ? unit(axis) : -unit(axis));
-                if (other[axis] >= 0 && other[axis] < n_[axis])
-                  sum += p_[cell(other.x, other.y, other.z)] * inv2[axis];
+      slabs(n_.z, [&](int k0, int k1) {
+        for (int k = k0; k < k1; ++k)
+          for (int j = 0; j < n_.y; ++j)
+            for (int i = (j + k + colour) % 2; i < n_.x; i += 2) {
+              const std::size_t c = cell(i, j, k);
+              if (diag_[c] == 0.0f) continue;
+              const std::uint8_t bits = neighbours_[c];
+              float sum = 0.0f;
+              for (int axis = 0; axis < 3; ++axis) {
+                if (bits & (1u << (2 * axis)))
+                  sum += p_[std::size_t(std::ptrdiff_t(c) - stride[axis])] * inv2[axis];
+                if (bits & (1u << (2 * axis + 1)))
+                  sum += p_[std::size_t(std::ptrdiff_t(c) + stride[axis])] * inv2[axis];
               }
-            if (diag > 0.0f) p_[c] += omega * ((sum - divergence_[c]) / diag - p_[c]);
-          }
+              p_[c] += omega * ((sum - divergence_[c]) / diag_[c] - p_[c]);
+            }
+      });
   // The faces lose the pressure's gradient (0 outside an open side).
   for (int axis = 0; axis < 3; ++axis) {
-    std::vector<float>& faces = axis == 0 ? u_ : axis == 1 ? v_ : w_;
+    std::vector<float>& f = faces(axis);
     const glm::ivec3 d = n_ + unit(axis);
-    for (int k = 0; k < d.z; ++k)
-      for (int j = 0; j < d.y; ++j)
-        for (int i = 0; i < d.x; ++i) {
-          float fixed;
-          if (fixedFace(axis, i, j, k, &fixed)) continue;
-          const glm::ivec3 f(i, j, k), lo = f - unit(axis);
-          const float right = f[axis] < n_[axis] ? p_[cell(f.x, f.y, f.z)] : 0.0f;
-          const float left = lo[axis] >= 0 ? p_[cell(lo.x, lo.y, lo.z)] : 0.0f;
-          faces[std::size_t(i) +
-                std::size_t(d.x) * (std::size_t(j) + std::size_t(d.y) * std::size_t(k))] -=
-              (right - left) * inv[axis];
-        }
+    slabs(d.z, [&](int k0, int k1) {
+      for (int k = k0; k < k1; ++k)
+        for (int j = 0; j < d.y; ++j)
+          for (int i = 0; i < d.x; ++i) {
+            const std::size_t at = faceIndex(axis, i, j, k);
+            if (fixed_[axis][at]) continue;
+            const glm::ivec3 face(i, j, k), lo = face - unit(axis);
+            const float right = face[axis] < n_[axis] ? p_[cell(face.x, face.y, face.z)] : 0.0f;
+            const float left = lo[axis] >= 0 ? p_[cell(lo.x, lo.y, lo.z)] : 0.0f;
+            f[at] -= (right - left) * inv[axis];
+          }
+    });
   }
   maxDivergence_ = computeDivergence();
 }

@@ -4,8 +4,8 @@
 //   1. forces: a momentum source pushing air down through the rotor's disc
 //      (FluidForces::rotor*), as its thrust does;
 //   2. advection: each face's velocity is what the flow brings to it from
-//      where it was dt ago (semi-Lagrangian, a midpoint backtrace, trilinear
-//      samples), unconditionally stable;
+//      where it was dt ago (semi-Lagrangian: a straight backtrace with the
+//      face's velocity, a trilinear sample), unconditionally stable;
 //   3. viscosity (if any): an explicit diffusion, sub-stepped to stay stable;
 //   4. boundaries: faces of solid cells (terrain, obstacles: setSolids) take
 //      the solid's velocity, the domain's floor is a wall, the sides the wind
@@ -16,19 +16,24 @@
 //      are independent), warm-started from the last step's; the face
 //      velocities lose its gradient. maxDivergence() says what is left.
 // The velocity at the field's points (the average of each cell's faces) is
-// the field particles move through (velocityField()).
+// the field particles move through (velocityField()). The work is split over
+// the machine's threads (ParallelFor) in a way that gives the same result
+// whatever their number or timing.
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "core/field/box.h"
+#include "core/field/field_placement.h"
 #include "core/field/height_map.h"
 #include "core/field/vector_field.h"
 #include "core/obstacles/obstacle.h"
 #include "core/solver/fluid_settings.h"
+#include "core/util/parallel_for.h"
 
 namespace sandstorm {
 
@@ -43,11 +48,16 @@ class FluidSolver {
  public:
   // Cells centred on the points of a grid of `dims` over `bounds` (every
   // axis at least 2 points); velocities start at `initial` (may be null: rest).
-  FluidSolver(const Box& bounds, glm::ivec3 dims, const VectorField* initial = nullptr);
+  FluidSolver(const Box& bounds, glm::ivec3 dims, const VectorField* initial = nullptr,
+              unsigned threads = 0);
+  ~FluidSolver();
 
   // Cells whose centre lies under the terrain or inside an obstacle are solid
   // (their faces move with the obstacle). Call when either moves.
-  void setSolids(const HeightMap* terrain, const std::vector<Obstacle>& obstacles);
+  // `placement` carries the solver's (the field's) coordinates into the room,
+  // where the terrain and the obstacles are.
+  void setSolids(const HeightMap* terrain, const std::vector<Obstacle>& obstacles,
+                 const FieldPlacement& placement = {});
 
   void step(float dt, const FluidSettings& settings, const FluidForces& forces = {});
 
@@ -96,6 +106,15 @@ class FluidSolver {
   // Whether the face on `axis` at the low side of cell (i, j, k) is fixed
   // (a wall, an inflow, or next to a solid cell), and if so its velocity.
   bool fixedFace(int axis, int i, int j, int k, float* velocity) const;
+  // Fixes the faces (fixed_, their values) and each cell's pressure stencil.
+  void classify();
+  std::vector<float>& faces(int axis) { return axis == 0 ? u_ : axis == 1 ? v_ : w_; }
+  const std::vector<float>& faces(int axis) const { return axis == 0 ? u_ : axis == 1 ? v_ : w_; }
+  std::size_t faceIndex(int axis, int i, int j, int k) const {
+    return axis == 0 ? uIndex(i, j, k) : axis == 1 ? vIndex(i, j, k) : wIndex(i, j, k);
+  }
+  // body(k0, k1) over the z-slabs [0, slabs), split over the threads.
+  void slabs(int count, const std::function<void(int, int)>& body);
 
   Box bounds_;
   glm::ivec3 n_;
@@ -103,6 +122,11 @@ class FluidSolver {
   std::vector<float> u_, v_, w_, scratch_;
   std::vector<float> p_, divergence_;
   std::vector<std::uint8_t> solid_;
+  std::vector<std::uint8_t> fixed_[3];  // per face: its velocity is given
+  std::vector<std::uint8_t>
+      neighbours_;           // per cell: bit 2a+s, the face is free and a fluid cell is beyond
+  std::vector<float> diag_;  // per cell: the pressure stencil's centre
+  std::unique_ptr<ParallelFor> pool_;
   std::vector<glm::vec3> solidVelocity_;
   Side sides_[3][2];  // per axis, low and high side
   glm::vec3 wind_{0.0f};

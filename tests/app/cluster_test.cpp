@@ -132,6 +132,14 @@ TEST(Cluster, ThreeRanksHoldTheSameParticlesAsOneProcessEveryFrame) {
       << output;  // the field crossed once, to every rank
 }
 
+// The live flow solver runs on rank 0 (the main context): its grids cross to
+// the other ranks as they change, and every rank holds one process's particles.
+TEST(Cluster, TheLiveSolversFlowReachesEveryRankAtTheSameFrame) {
+  const std::string output = expectSameHashes("tests/data/identity-cluster.toml",
+                                              "--set solver.enabled=true", 40, "cluster-solver");
+  EXPECT_EQ(count(output, "field grids: 40 ("), 3) << output;  // a new grid every frame
+}
+
 TEST(Cluster, ATimeVaryingFieldSendsEachGridOnce) {
   // 120 frames are 2 s of the four-frame series (0.5 s apart): every grid is
   // needed once, and none travels twice.

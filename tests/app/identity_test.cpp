@@ -249,6 +249,30 @@ TEST(Identity, MoleculesAreTheSameOnEveryWallHoweverTheWallsAreRun) {
   EXPECT_NE(plain.at(129), floor[129]);
 }
 
+// The live flow solver runs in the main context and its grids travel to the
+// walls: four walls on threads, four sharing one simulation and a wall alone
+// in its process hold the same particles every frame, and the solver changed
+// them.
+TEST(Identity, TheLiveSolversFlowIsTheSameOnEveryWall) {
+  const auto dir = test::scratchDir("solver");
+  const std::string run = " --frames 60 --set solver.enabled=true --hash-log ";
+  const auto threads =
+      runSandstorm("--config tests/data/identity.toml" + run + (dir / "threads.txt").string());
+  const auto shared = runSandstorm("--config tests/data/identity-shared.toml" + run +
+                                   (dir / "shared.txt").string());
+  const auto alone = runSandstorm("--config tests/data/identity.toml --walls floor" + run +
+                                  (dir / "alone.txt").string());
+  const auto without = runSandstorm("--config tests/data/identity.toml --frames 60 --hash-log " +
+                                    (dir / "without.txt").string());
+  for (const auto* r : {&threads, &shared, &alone, &without})
+    ASSERT_EQ(r->exitCode, 0) << r->output;
+  auto floor = sameOnEveryWall(dir / "threads.txt", 60);
+  EXPECT_EQ(sameOnEveryWall(dir / "shared.txt", 60), floor);
+  for (const HashLine& h : readHashes(dir / "alone.txt"))
+    EXPECT_EQ(h.hash, floor[h.frame]) << "frame " << h.frame;
+  EXPECT_NE(sameOnEveryWall(dir / "without.txt", 60).at(59), floor[59]);
+}
+
 TEST(Identity, ARecordedSessionReplaysToTheSameParticles) {
   const auto dir = test::scratchDir("replay");
   const auto first =

@@ -1,0 +1,43 @@
+// ParallelFor: a fixed pool of worker threads that splits an index range into
+// contiguous chunks, one per thread, and returns once every chunk is done.
+// The split depends only on the range and the thread count, and each index
+// is handled exactly once, so a body that writes disjoint data computes the
+// same result whatever the threads' timing (FluidSolver relies on it). Made
+// on one thread and used from it; the workers live as long as the pool.
+#pragma once
+
+#include <condition_variable>
+#include <cstddef>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace sandstorm {
+
+class ParallelFor {
+ public:
+  // `threads` 0: the machine's hardware threads (at most 16).
+  explicit ParallelFor(unsigned threads = 0);
+  ~ParallelFor();
+  ParallelFor(const ParallelFor&) = delete;
+  ParallelFor& operator=(const ParallelFor&) = delete;
+
+  // Calls body(begin, end) over [0, count) in chunks, on every thread (this one too).
+  void run(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body);
+  unsigned threads() const { return unsigned(workers_.size()) + 1; }
+
+ private:
+  void work(unsigned index);
+
+  std::vector<std::thread> workers_;
+  std::mutex mutex_;
+  std::condition_variable start_, done_;
+  const std::function<void(std::size_t, std::size_t)>* body_ = nullptr;
+  std::size_t count_ = 0;
+  std::uint64_t generation_ = 0;
+  unsigned pending_ = 0;
+  bool stop_ = false;
+};
+
+}  // namespace sandstorm
