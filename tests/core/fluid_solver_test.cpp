@@ -141,6 +141,35 @@ TEST(FluidSolver, ATaylorGreenVortexDecaysAtTheViscousRate) {
   EXPECT_LT(rate, viscous * 1.10);  // the scheme's own share under 10 %
 }
 
+// The work is split over threads so that every cell's result is the same
+// whatever their number: one thread and three give the same grid, bit for bit.
+TEST(FluidSolver, ThreadsDoNotChangeTheFlow) {
+  const Box box{{-2, -2, 0}, {2, 2, 2}};
+  const glm::ivec3 dims(14, 13, 9);
+  const VectorField start = randomFlow(box, dims);
+  FluidSettings s;
+  s.wind = {1.0f, 0.5f, 0.0f};
+  s.viscosity = 0.01f;
+  FluidForces rotor;
+  rotor.rotorCentre = {0.0f, 0.0f, 1.2f};
+  rotor.rotorRadius = 0.8f;
+  rotor.rotorAcceleration = 20.0f;
+  Obstacle ball;
+  ball.position = {1.0f, 0.0f, 0.6f};
+  ball.radius = 0.5f;
+  FluidSolver one(box, dims, &start, 1), three(box, dims, &start, 3);
+  one.setSolids(nullptr, {ball});
+  three.setSolids(nullptr, {ball});
+  for (int f = 0; f < 10; ++f) {
+    one.step(0.03f, s, rotor);
+    three.step(0.03f, s, rotor);
+  }
+  const VectorField a = one.velocityField(), b = three.velocityField();
+  ASSERT_EQ(a.values().size(), b.values().size());
+  for (std::size_t i = 0; i < a.values().size(); ++i)
+    ASSERT_EQ(a.values()[i], b.values()[i]) << i;
+}
+
 TEST(FluidSolver, RefusesGridsItCannotSolveOn) {
   EXPECT_THROW(FluidSolver(Box{{0, 0, 0}, {1, 1, 1}}, glm::ivec3(1, 4, 4)), Error);
   EXPECT_THROW(FluidSolver(Box{{0, 0, 0}, {0, 1, 1}}, glm::ivec3(4, 4, 4)), Error);
