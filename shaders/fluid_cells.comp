@@ -1,0 +1,65 @@
+#version 450 core
+// GpuFluidSolver's cell passes (uPass):
+//   0 stencil: each fluid cell's free faces with a fluid cell beyond (bits)
+//     and its pressure stencil's centre (FluidSolver::classify);
+//   1 divergence;
+//   2 relax: cells of colour uColour, one red-black over-relaxation sweep;
+//   3 points: each cell's velocity (the mean of its faces) into the field's
+//     layout (vec4 a point, w 1), solid cells 0.
+#include "fluid_common.glsl"
+
+layout(local_size_x = 256) in;
+layout(std430, binding = 11) writeonly restrict buffer Points { vec4 points[]; };
+layout(location = 1) uniform int uPass;
+layout(location = 2) uniform int uColour;
+
+void main() {
+  ivec3 c;
+  if (!gridPoint(gl_GlobalInvocationID.x, fluid.dims.xyz, c)) return;
+  uint at = cellIndex(c);
+  bool solid = solidVelocity[at].w != 0.0;
+  if (uPass == 0) {
+    uint bits = 0u;
+    float diag = 0.0;
+    for (int axis = 0; axis < 3; ++axis)
+      for (int side = 0; side < 2; ++side) {
+        ivec3 face = c + (side == 1 ? unitAxis(axis) : ivec3(0));
+        float given;
+        if (fixedFace(axis, face, given)) continue;
+        diag += fluid.inverse2[axis];
+        int beyond = c[axis] + (side == 1 ? 1 : -1);
+        if (beyond >= 0 && beyond < fluid.dims[axis]) bits |= 1u << uint(2 * axis + side);
+      }
+    stencilBits[at] = solid ? 0u : bits;
+    diagonal[at] = solid ? 0.0 : diag;
+  } else if (uPass == 1) {
+    if (solid) {
+      divergence[at] = 0.0;
+      return;
+    }
+    float div = (faceU[faceIndex(0, c + ivec3(1, 0, 0))] - faceU[faceIndex(0, c)]) * fluid.inverse.x +
+                (faceV[faceIndex(1, c + ivec3(0, 1, 0))] - faceV[faceIndex(1, c)]) * fluid.inverse.y +
+                (faceW[faceIndex(2, c + ivec3(0, 0, 1))] - faceW[faceIndex(2, c)]) * fluid.inverse.z;
+    divergence[at] = div;
+  } else if (uPass == 2) {
+    if (((c.x + c.y + c.z) & 1) != uColour) return;
+    float diag = diagonal[at];
+    if (diag == 0.0) return;
+    uint bits = stencilBits[at];
+    int stride[3] = int[](1, fluid.dims.x, fluid.dims.x * fluid.dims.y);
+    float sum = 0.0;
+    for (int axis = 0; axis < 3; ++axis) {
+      if ((bits & (1u << uint(2 * axis))) != 0u) sum += pressure[int(at) - stride[axis]] * fluid.inverse2[axis];
+      if ((bits & (1u << uint(2 * axis + 1))) != 0u) sum += pressure[int(at) + stride[axis]] * fluid.inverse2[axis];
+    }
+    float p = pressure[at];
+    pressure[at] = p + fluid.minimum.w * ((sum - divergence[at]) / diag - p);
+  } else {
+    vec3 v = vec3(0.0);
+    if (!solid)
+      v = 0.5 * vec3(faceU[faceIndex(0, c)] + faceU[faceIndex(0, c + ivec3(1, 0, 0))],
+                     faceV[faceIndex(1, c)] + faceV[faceIndex(1, c + ivec3(0, 1, 0))],
+                     faceW[faceIndex(2, c)] + faceW[faceIndex(2, c + ivec3(0, 0, 1))]);
+    points[at] = vec4(v, 1.0);
+  }
+}
