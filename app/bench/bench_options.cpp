@@ -19,6 +19,7 @@ const char* kUsage = R"(sandstorm-bench: GPU particle benchmark (headless EGL)
                   [--wall-sims per-wall,shared] [--wall-renderers billboards,splat]
                   [--wall-trails 0,16] [--wall-shadows 0,1] [--sort-keys 1e6,1e7]
                   [--update-obstacles 0,1,2] [--update-molecules 0,4]
+                  [--solver-grids 128x128x64] [--solver-iterations 40]
                   [--wall-backend compute] [--particle-size M] [--memory-gib G]
                   [--integrator euler|rk2|rk4] [--update-items 1|2|4|8] [--gpu-warmup S]
 
@@ -39,6 +40,8 @@ fixed frames. Sections:
             stage then includes the shadow map's pass)
   sort      GpuRadixSort (render.order = sorted) of --sort-keys random keys:
             ms, and its memory traffic against the copy ceiling
+  solver    the live flow solver's step on the GPU (GpuFluidSolver) on each of
+            --solver-grids (cells), with wind and a rotor: ms a step, cells/s
 Prints a table (each stage as a ratio to its ceiling) and writes JSON.
 --quick: tiny sizes and few frames (seconds on llvmpipe; structure, not speed).
 )";
@@ -112,6 +115,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       o.particleSize = 0.2f;
       o.verifyParticles = 3000;
       o.sortKeys = {5000};
+      o.solverGrids = {{16, 16, 8}};
       o.gpuWarmupSeconds = 0.0;
     }
   for (std::size_t i = 0; i < args.size(); ++i) {
@@ -133,9 +137,28 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       const auto x = v.find('x');
       if (x == std::string::npos) throw Error(concat(a, ": expected WxH, got '", v, "'"));
       o.size = {int(count(v.substr(0, x), a)), int(count(v.substr(x + 1), a))};
+    } else if (a == "--solver-grids") {
+      o.solverGrids.clear();
+      for (const std::string& g : split(v)) {
+        const auto x = g.find('x'), y = g.find('x', x == std::string::npos ? x : x + 1);
+        if (x == std::string::npos || y == std::string::npos)
+          throw Error(concat(a, ": expected grids as XxYxZ cells, got '", g, "'"));
+        const glm::ivec3 d(int(count(g.substr(0, x), a)), int(count(g.substr(x + 1, y - x - 1), a)),
+                           int(count(g.substr(y + 1), a)));
+        if (glm::any(glm::lessThan(d, glm::ivec3(2))) ||
+            glm::any(glm::greaterThan(d, glm::ivec3(1024))))
+          throw Error(concat(a, ": ", g, ": expected 2..1024 cells an axis"));
+        o.solverGrids.push_back(d);
+      }
+      if (o.solverGrids.empty()) throw Error(concat(a, ": expected grids, e.g. 128x128x64"));
+    } else if (a == "--solver-iterations") {
+      o.solverIterations = int(count(v, a));
+      if (o.solverIterations < 1 || o.solverIterations > 500)
+        throw Error(concat(a, ": ", v, ": expected 1..500 iterations"));
     } else if (a == "--sections") {
       o.sections = split(v);
-      checkChoices(o.sections, {"verify", "ceilings", "update", "render", "walls", "sort"}, a);
+      checkChoices(o.sections,
+                   {"verify", "ceilings", "update", "render", "walls", "sort", "solver"}, a);
     } else if (a == "--particles") {
       o.particles.clear();
       for (const std::string& p : split(v))

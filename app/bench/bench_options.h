@@ -30,11 +30,10 @@ struct BenchOptions {
   std::vector<int> wallTrails{0};
   std::vector<int> wallShadows{0};      // render.shadows off (0), on (1)
   std::vector<int> updateMolecules{0};  // the update section's particles (0) or molecules of n
-  std::vector<int> updateObstacles{0};  // obstacles in the update section: 0, 1 (a sphere) or 2  //
-                                        // the update section without (0) and with (1) obstacles
-  std::vector<std::size_t> sortKeys{1000000,
-                                    10000000};  // the sort section's sizes  // render.trail_length
-                                                // of the walls' particles (0: none)
+  std::vector<int> updateObstacles{0};  // obstacles in the update section: 0, 1 (a sphere) or 2
+  std::vector<std::size_t> sortKeys{1000000, 10000000};  // the sort section's sizes
+  std::vector<glm::ivec3> solverGrids{{128, 128, 64}};   // the solver section's grids (cells)
+  int solverIterations = 40;                             // its pressure iterations a step
   std::string wallBackend = "compute";
   std::string integrator = "rk2";  // euler | rk2 | rk4 (tracer particles)
   double gpuWarmupSeconds = 5.0;   // the GPU kept busy before the first measurement

@@ -21,6 +21,7 @@
 #include "contexts/particles/particle_system.h"
 #include "contexts/platform/egl_context.h"
 #include "contexts/render/view_targets.h"
+#include "contexts/solver/gpu_fluid_solver.h"
 #include "core/util/error.h"
 
 namespace sandstorm::bench {
@@ -41,6 +42,7 @@ class Bench {
     };
     plan(has("ceilings"), has("update"), has("render"), has("walls"));
     if (has("sort")) total_ += int(o_.sortKeys.size());
+    if (has("solver")) total_ += int(o_.solverGrids.size());
     if (has("verify")) {
       ++total_;
       for (const std::string& field : o_.fields)
@@ -68,6 +70,9 @@ class Bench {
     if (has("sort"))
       for (std::size_t n : o_.sortKeys)
         sort(n);
+    if (has("solver"))
+      for (const glm::ivec3& grid : o_.solverGrids)
+        solver(grid);
     if (has("walls"))
       for (int w : o_.walls)
         for (const std::string& sim : o_.wallSims)
@@ -405,6 +410,38 @@ class Bench {
     });
   }
 
+  // The live flow solver's GPU step on a grid of `cells`: a wind blowing in
+  // and a rotor pushing down in a 40 x 40 x 20 m box, from rest.
+  void solver(glm::ivec3 cells) {
+    const std::size_t n = std::size_t(cells.x) * std::size_t(cells.y) * std::size_t(cells.z);
+    progress(concat("solver: a step on ", cells.x, "x", cells.y, "x", cells.z, " cells, ",
+                    o_.solverIterations, " pressure iterations"));
+    if (!fits(double(n) * 64.0, "solver")) return;
+    guarded("solver", [&] {
+      GpuFluidSolver fluid(Box{{-20.0f, -20.0f, 0.0f}, {20.0f, 20.0f, 20.0f}}, cells);
+      FluidSettings s;
+      s.wind = {2.0f, 0.0f, 0.0f};
+      s.iterations = o_.solverIterations;
+      FluidForces rotor{
+          .rotorCentre = {0.0f, 0.0f, 10.0f}, .rotorRadius = 6.0f, .rotorAcceleration = 30.0f};
+      GpuStopwatch watch;
+      const int frames = o_.warmup + o_.frames;
+      for (int f = 0; f < frames; ++f) {
+        const bool timed = f >= o_.warmup;
+        if (timed) watch.begin();
+        fluid.step(1.0f / 60.0f, s, rotor);
+        if (timed) watch.end();
+      }
+      const double ms = median(watch.intervalsMs());
+      Row r{.section = "solver", .stage = "step", .particles = n};
+      r.ms = ms;
+      r.particlesPerS = ms > 0 ? double(n) / (ms * 1e-3) : 0;
+      r.note = concat(cells.x, "x", cells.y, "x", cells.z, ": ", ms > 0 ? 1e3 / ms : 0.0,
+                      " steps/s (cells/s in Mpart/s), max |div| ", fluid.maxDivergence(), " /s");
+      report_.rows.push_back(r);
+    });
+  }
+
   void walls(int count, const std::string& sim, const std::string& renderer, int trails,
              bool shadows) {
     const std::size_t n = o_.wallParticles;
@@ -575,6 +612,12 @@ void printTargets(const Report& r) {
           row.backend.c_str(), row.molecules, row.particles,
           row.obstacles > 0 ? ", with obstacles" : "", row.particlesPerS * 1e-6, row.ratio,
           row.molecules == 4 && row.obstacles == 0 ? " (target >= 0.25)" : "");
+  for (const Row& row : r.rows)
+    if (row.section == "solver" && row.ms > 0)
+      std::printf(
+          "  solver step, %zu cells: %.3f ms = %.0f steps/s (target >= 120 at 128x128x64), "
+          "%.0f Mcells/s\n",
+          row.particles, row.ms, 1e3 / row.ms, row.particlesPerS * 1e-6);
   const Row* b = largest([](const Row& x) {
     return x.section == "render" && x.stage == "particles" && x.renderer == "billboards";
   });

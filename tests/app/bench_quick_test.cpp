@@ -124,6 +124,21 @@ TEST(BenchQuick, TheUpdateSectionMeasuresTheObstacleTerm) {
             std::string::npos);
 }
 
+TEST(BenchQuick, TheSolverSectionStepsTheFlowOnTheGpu) {
+  const auto dir = test::scratchDir("bench-solver");
+  const auto json = dir / "bench.json";
+  const test::ProcessResult r = runBench(
+      "--quick --sections solver --solver-grids 12x10x6,16x16x8 --json '" + json.string() + "'");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  int rows = 0;
+  for (const std::string& line : test::readLines(json))
+    rows += line.find("\"section\": \"solver\"") != std::string::npos;
+  EXPECT_EQ(rows, 2);
+  EXPECT_NE(r.output.find("16x16x8: "), std::string::npos) << r.output;
+  EXPECT_NE(runBench("--quick --solver-grids 1x8x8").output.find("expected 2..1024 cells"),
+            std::string::npos);
+}
+
 TEST(BenchQuick, TheUpdateSectionMeasuresMoleculesAgainstParticles) {
   const auto dir = test::scratchDir("bench-molecules");
   const auto json = dir / "bench.json";
