@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "core/obstacles/collision_shapes.h"
+#include "core/solver/fluid_forces.h"
 #include "core/util/log.h"
 
 namespace sandstorm {
@@ -15,7 +16,8 @@ void FluidDriver::update(MainContext& main, const FramePacket& packet) {
   const std::shared_ptr<const FieldUpdate> current = main.field();
   // Another field took over (a file loaded, the helicopter's wash baked): it is the base now.
   const bool replaced = solver_ && lastField_ && (!current || current->field != lastField_);
-  if (!state.solver.enabled) {
+  // On the GPU (solver.device = gpu) every wall solves it beside its particles.
+  if (!state.solver.enabled || state.solver.device != FluidDevice::Cpu) {
     if (solver_) {
       if (!replaced) main.setField(*base_);
       log::info("solver: off; ",
@@ -47,17 +49,7 @@ void FluidDriver::update(MainContext& main, const FramePacket& packet) {
   solver_->setSolids(terrain_.get(), collisionShapes(state, terrain_.get()), placement);
   FluidSettings settings = state.solver;
   settings.wind = placement.vectorToLocal(state.solver.wind);
-  FluidForces forces;
-  if (state.helicopter.enabled) {
-    const float ground =
-        terrain_ ? terrain_->heightAt({state.helicopter.x, state.helicopter.y}) : 0.0f;
-    forces.rotorCentre = placement.toLocal(
-        {state.helicopter.x, state.helicopter.y, ground + state.helicopter.altitude});
-    forces.rotorRadius = model_.rotorRadius / placement.scale;
-    forces.rotorAcceleration =
-        state.solver.rotorAcceleration * state.helicopter.throttle / placement.scale;
-  }
-  solver_->step(pendingDt_, settings, forces);
+  solver_->step(pendingDt_, settings, fluidForces(state, terrain_.get(), placement, model_));
   lastField_ = std::make_shared<const VectorField>(solver_->velocityField());
   main.setField(FieldUpdate{.field = lastField_, .placement = placement});
   lastStepMs_ =

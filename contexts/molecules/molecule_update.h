@@ -58,6 +58,12 @@ class MoleculeUpdate {
   void setTerrain(std::shared_ptr<const HeightMap> terrain) {
     environment_.setTerrain(std::move(terrain));
   }
+  // As ParticleBackend::setFieldBuffer.
+  bool setFieldBuffer(std::uint32_t buffer) {
+    const bool can = environment_.gridStorage() == GpuField::Storage::Buffer;
+    environment_.setFieldBuffer(can ? buffer : 0);
+    return can || buffer == 0;
+  }
   // Whether a state emits molecules (a ParticleSystem then makes its MoleculeUpdate).
   static bool wanted(const ParticleState& state);
 

@@ -34,6 +34,11 @@ class ParticleBackend {
   // evaluate it in place of the field's grid (whose bounds still apply). Null: none.
   virtual void setEquation(std::shared_ptr<const FieldEquation> equation) = 0;
   virtual void setTerrain(std::shared_ptr<const HeightMap> terrain) = 0;
+  // The live flow solver's grid on this GPU (a storage buffer in GpuField's
+  // layout, the field's dims and bounds) read in place of the field's; 0:
+  // the field again. False where this backend cannot read one (the field's
+  // grid kept as a texture: transform feedback, or too large a grid).
+  virtual bool setFieldBuffer(std::uint32_t) { return false; }
   virtual void step(const SimStep& step, const ParticleState& state) = 0;
   virtual void clear() = 0;
   // Grows the buffers, keeping every live particle in place. Waits for the GPU.

@@ -55,6 +55,11 @@ class ParticleComputeUpdate final : public ParticleBackend {
     environment_.setEquation(std::move(equation));
   }
   void setTerrain(std::shared_ptr<const HeightMap> terrain) override;
+  bool setFieldBuffer(std::uint32_t buffer) override {
+    const bool can = environment_.gridStorage() == GpuField::Storage::Buffer;
+    environment_.setFieldBuffer(can ? buffer : 0);
+    return can || buffer == 0;
+  }
   void step(const SimStep& step, const ParticleState& state) override;
   void clear() override;
   void grow(std::size_t capacity) override;

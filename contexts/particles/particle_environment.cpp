@@ -1,5 +1,7 @@
 #include "contexts/particles/particle_environment.h"
 
+#include <epoxy/gl.h>
+
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -26,12 +28,18 @@ void ParticleEnvironment::setTerrain(std::shared_ptr<const HeightMap> terrain) {
 
 void ParticleEnvironment::describe(SimBlockInputs& inputs) const {
   inputs.field = field_.get();
-  inputs.nextField = nextField_.get();
+  // The live flow's grid has no next frame.
+  inputs.nextField = fieldBuffer_ != 0 ? nullptr : nextField_.get();
   inputs.placement = placement_;
   inputs.terrain = terrain_.get();
 }
 
 bool ParticleEnvironment::bind(const ParticleState& state) const {
+  if (fieldBuffer_ != 0 && field_ && gridStorage() == GpuField::Storage::Buffer) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 14, fieldBuffer_);
+    if (terrain_) terrainTexture_.bind(1);
+    return false;
+  }
   if (field_) fieldGrid_.bind(GpuField::Slot::Current);
   if (nextField_) nextFieldGrid_.bind(GpuField::Slot::Next);
   if (terrain_) terrainTexture_.bind(1);

@@ -28,6 +28,13 @@ class ParticleEnvironment {
     equation_.set(std::move(equation));
   }
   void setTerrain(std::shared_ptr<const HeightMap> terrain);
+  // A storage buffer holding the field's grid in GpuField's layout (the live
+  // flow solver's points, GpuFluidSolver), read in place of the uploaded
+  // field's (whose dims and bounds it shares); 0: the uploaded field again.
+  // Only where the grid is kept as a buffer (gridStorage()); no next frame,
+  // no equation while it is set.
+  void setFieldBuffer(std::uint32_t buffer) { fieldBuffer_ = buffer; }
+  std::uint32_t fieldBuffer() const { return fieldBuffer_; }
 
   // The environment's part of an update's inputs.
   void describe(SimBlockInputs& inputs) const;
@@ -48,6 +55,7 @@ class ParticleEnvironment {
   GpuField fieldGrid_, nextFieldGrid_;
   TerrainTexture terrainTexture_;
   FieldEquationBuffer equation_;
+  std::uint32_t fieldBuffer_ = 0;
 };
 
 }  // namespace sandstorm

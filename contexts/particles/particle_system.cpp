@@ -73,6 +73,18 @@ void ParticleSystem::advance(const FramePacket& packet) {
     update_->setEquation(field_->equation);
     log::debug("frame ", packet.frame, ": field uploaded in ", update_->lastFieldUploadMs(), " ms");
   }
+  // The live flow on this GPU, before the particles move through it.
+  if (update_->simulates()) {
+    const std::uint32_t flow =
+        flow_.advance(state_, field_.get(), terrain_.get(), packet.step().dt);
+    if (!update_->setFieldBuffer(flow)) {
+      flow_.refuse(concat("the '", update_->name(),
+                          "' backend keeps the field's grid as a texture; the solver needs "
+                          "run.backend = compute and a grid within a storage buffer")
+                       .c_str());
+      update_->setFieldBuffer(0);
+    }
+  }
   update_->step(packet.step(), state_);
   // Molecules: the same packets, on every wall (they are not shared between walls).
   if (update_->simulates() && !molecules_ && MoleculeUpdate::wanted(state_)) {
@@ -83,7 +95,10 @@ void ParticleSystem::advance(const FramePacket& packet) {
   } else if (molecules_ && packet.fieldUpdate) {
     setMoleculeField();
   }
-  if (molecules_) molecules_->step(packet.step(), state_);
+  if (molecules_) {
+    molecules_->setFieldBuffer(flow_.solver() ? flow_.solver()->pointBuffer() : 0);
+    molecules_->step(packet.step(), state_);
+  }
   // The shadow map depends on the particles, not the view: built once here
   // for every wall drawing this simulation, and published with it.
   if (shadow_) {

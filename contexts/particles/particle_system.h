@@ -17,6 +17,7 @@
 #include "contexts/particles/particle_splat.h"
 #include "contexts/particles/trail_renderer.h"
 #include "contexts/shadows/opacity_shadow_map.h"
+#include "contexts/solver/live_flow.h"
 #include "core/cave/view.h"
 #include "core/config/gpu_tuning.h"
 #include "core/sim/frame_packet.h"
@@ -81,6 +82,8 @@ class ParticleSystem {
 
   const ParticleState& state() const { return state_; }
   const ParticleBackend& update() const { return *update_; }
+  // The live flow this system solves on its GPU (null while none).
+  const GpuFluidSolver* flow() const { return flow_.solver(); }
   // This frame's molecules: this system's own (a MoleculeUpdate, made when
   // the state first has a molecule emitter) or, for a shared simulation's
   // reader, the owner's; none without molecules.
@@ -105,6 +108,7 @@ class ParticleSystem {
   ParticlePost post_;
   TrailRenderer trails_;
   std::unique_ptr<MoleculeUpdate> molecules_;  // the simulation's owner's (once per GPU)
+  LiveFlow flow_;                              // solver.device = gpu: the owner's
   mutable std::unique_ptr<MoleculeRenderer> moleculeRenderer_;
   std::shared_ptr<const HeightMap> terrain_;
   GpuTuning tuning_;

@@ -29,6 +29,7 @@ class SharingBackend final : public ParticleBackend {
   void setTerrain(std::shared_ptr<const HeightMap> terrain) override {
     inner_->setTerrain(std::move(terrain));
   }
+  bool setFieldBuffer(std::uint32_t buffer) override { return inner_->setFieldBuffer(buffer); }
   void step(const SimStep& step, const ParticleState& state) override;
   void publish(const ShadowHandles& shadow, const MoleculeHandles& molecules) override;
   void clear() override { inner_->clear(); }

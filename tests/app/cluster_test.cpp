@@ -132,12 +132,23 @@ TEST(Cluster, ThreeRanksHoldTheSameParticlesAsOneProcessEveryFrame) {
       << output;  // the field crossed once, to every rank
 }
 
-// The live flow solver runs on rank 0 (the main context): its grids cross to
-// the other ranks as they change, and every rank holds one process's particles.
-TEST(Cluster, TheLiveSolversFlowReachesEveryRankAtTheSameFrame) {
-  const std::string output = expectSameHashes("tests/data/identity-cluster.toml",
-                                              "--set solver.enabled=true", 40, "cluster-solver");
+// The live flow solved on the main context's CPU (solver.device = cpu) runs
+// on rank 0: its grids cross to the other ranks as they change, and every rank
+// holds one process's particles.
+TEST(Cluster, TheCpuSolversFlowReachesEveryRankAtTheSameFrame) {
+  const std::string output =
+      expectSameHashes("tests/data/identity-cluster.toml",
+                       "--set solver.enabled=true --set solver.device=cpu", 40, "cluster-solver");
   EXPECT_EQ(count(output, "field grids: 40 ("), 3) << output;  // a new grid every frame
+}
+
+// Solved on the GPUs (solver.device = gpu, the default): every rank steps the
+// same flow from the same packets, so only the field's first grid crosses and
+// every rank still holds one process's particles.
+TEST(Cluster, EveryRanksGpuSolvesTheSameFlow) {
+  const std::string output = expectSameHashes(
+      "tests/data/identity-cluster.toml", "--set solver.enabled=true", 40, "cluster-gpu-solver");
+  EXPECT_EQ(count(output, "field grids: 1 ("), 3) << output;
 }
 
 TEST(Cluster, ATimeVaryingFieldSendsEachGridOnce) {

@@ -1,4 +1,4 @@
-// FluidDriver: the live solver in the main context hands each step's flow to
+// FluidDriver: the live solver in the main context (solver.device = cpu) hands each step's flow to
 // every wall as the field, gives the field it started from back when turned
 // off, and starts afresh from a field loaded while it runs.
 #include "app/fluid_driver.h"
@@ -23,6 +23,7 @@ TEST(FluidDriver, StepsTheFlowIntoTheFieldAndGivesTheOldOneBack) {
   FluidDriver driver(nullptr);
   driver.update(main, main.next());
   EXPECT_EQ(driver.solver(), nullptr);  // off
+  main.set("solver.device", std::string("cpu"));
   main.set("solver.enabled", true);
   // An obstacle in the wind: the flow goes around it.
   std::vector<std::shared_ptr<const VectorField>> seen;
@@ -51,6 +52,20 @@ TEST(FluidDriver, StepsTheFlowIntoTheFieldAndGivesTheOldOneBack) {
   main.set("solver.enabled", false);
   driver.update(main, main.next());
   EXPECT_EQ(main.field()->field, loaded);  // the base is the loaded field now
+}
+
+// solver.device = gpu: each wall's GPU solves it; the driver leaves the field alone.
+TEST(FluidDriver, LeavesTheFieldToTheGpusWhenTheySolve) {
+  MainContext::Options options;
+  options.fixedDt = 0.05f;
+  const auto start = wind({1.0f, 0.0f, 0.0f});
+  MainContext main(ParticleState{}, FieldUpdate{.field = start}, options);
+  FluidDriver driver(nullptr);
+  main.set("solver.enabled", true);
+  for (int f = 0; f < 4; ++f)
+    driver.update(main, main.next());
+  EXPECT_EQ(driver.solver(), nullptr);
+  EXPECT_EQ(main.field()->field, start);
 }
 
 }  // namespace

@@ -249,10 +249,11 @@ TEST(Identity, MoleculesAreTheSameOnEveryWallHoweverTheWallsAreRun) {
   EXPECT_NE(plain.at(129), floor[129]);
 }
 
-// The live flow solver runs in the main context and its grids travel to the
-// walls: four walls on threads, four sharing one simulation and a wall alone
-// in its process hold the same particles every frame, and the solver changed
-// them.
+// The live flow solved on each wall's GPU (solver.device = gpu): four walls
+// on threads, four sharing one simulation and a wall alone in its process hold
+// the same particles every frame, and the solver changed them. Solved in the
+// main context (solver.device = cpu), its grids travel to the walls and they
+// agree too.
 TEST(Identity, TheLiveSolversFlowIsTheSameOnEveryWall) {
   const auto dir = test::scratchDir("solver");
   const std::string run = " --frames 60 --set solver.enabled=true --hash-log ";
@@ -264,13 +265,17 @@ TEST(Identity, TheLiveSolversFlowIsTheSameOnEveryWall) {
                                   (dir / "alone.txt").string());
   const auto without = runSandstorm("--config tests/data/identity.toml --frames 60 --hash-log " +
                                     (dir / "without.txt").string());
-  for (const auto* r : {&threads, &shared, &alone, &without})
+  const auto cpu = runSandstorm("--config tests/data/identity.toml --set solver.device=cpu" + run +
+                                (dir / "cpu.txt").string());
+  for (const auto* r : {&threads, &shared, &alone, &without, &cpu})
     ASSERT_EQ(r->exitCode, 0) << r->output;
   auto floor = sameOnEveryWall(dir / "threads.txt", 60);
   EXPECT_EQ(sameOnEveryWall(dir / "shared.txt", 60), floor);
   for (const HashLine& h : readHashes(dir / "alone.txt"))
     EXPECT_EQ(h.hash, floor[h.frame]) << "frame " << h.frame;
   EXPECT_NE(sameOnEveryWall(dir / "without.txt", 60).at(59), floor[59]);
+  EXPECT_NE(sameOnEveryWall(dir / "cpu.txt", 60).at(59),
+            sameOnEveryWall(dir / "without.txt", 60).at(59));
 }
 
 TEST(Identity, ARecordedSessionReplaysToTheSameParticles) {
