@@ -5,13 +5,26 @@
 //   1 divergence;
 //   2 relax: cells of colour uColour, one red-black over-relaxation sweep;
 //   3 points: each cell's velocity (the mean of its faces) into the field's
-//     layout (vec4 a point, w 1), solid cells 0.
+//     layout (vec4 a point, w 1), solid cells 0;
+//   4 vorticity: curl u from the cells' velocities (central differences,
+//     one-sided at the domain's edges) and its length;
+//   5 confinement: epsilon h (N x w), N = grad|w| / |grad|w|| (0 in solids).
+// (FluidSolver::confineVorticity's first two loops.)
 #include "fluid_common.glsl"
 
 layout(local_size_x = 256) in;
 layout(std430, binding = 11) writeonly restrict buffer Points { vec4 points[]; };
 layout(location = 1) uniform int uPass;
 layout(location = 2) uniform int uColour;
+
+// The neighbours of c along `axis`, clamped to the grid, and 1 / their distance.
+void across(ivec3 c, int axis, out ivec3 lo, out ivec3 hi, out float inverseSpan) {
+  lo = c;
+  hi = c;
+  lo[axis] = max(c[axis] - 1, 0);
+  hi[axis] = min(c[axis] + 1, fluid.dims[axis] - 1);
+  inverseSpan = 1.0 / (float(hi[axis] - lo[axis]) * fluid.spacing[axis]);
+}
 
 void main() {
   ivec3 c;
@@ -54,6 +67,29 @@ void main() {
     }
     float p = pressure[at];
     pressure[at] = p + fluid.minimum.w * ((sum - divergence[at]) / diag - p);
+  } else if (uPass == 4) {
+    vec3 d[3];
+    for (int axis = 0; axis < 3; ++axis) {
+      ivec3 lo, hi;
+      float inverseSpan;
+      across(c, axis, lo, hi, inverseSpan);
+      d[axis] = (cellVelocity(hi) - cellVelocity(lo)) * inverseSpan;
+    }
+    vec3 w = vec3(d[1].z - d[2].y, d[2].x - d[0].z, d[0].y - d[1].x);
+    vorticity[at] = vec4(w, length(w));
+  } else if (uPass == 5) {
+    confinement[at] = vec4(0.0);
+    if (solid) return;
+    vec3 eta;
+    for (int axis = 0; axis < 3; ++axis) {
+      ivec3 lo, hi;
+      float inverseSpan;
+      across(c, axis, lo, hi, inverseSpan);
+      eta[axis] = (vorticity[cellIndex(hi)].w - vorticity[cellIndex(lo)].w) * inverseSpan;
+    }
+    float len = length(eta);
+    if (!(len > 1e-20)) return;
+    confinement[at] = vec4(fluid.viscosity.y * cross(eta / len, vorticity[at].xyz), 0.0);
   } else {
     vec3 v = vec3(0.0);
     if (!solid)

@@ -12,7 +12,7 @@ layout(std140, binding = 6) uniform FluidBlock {
   vec4 wind;       // m/s, the inflow's velocity
   vec4 rotor;      // centre xyz, w: radius
   vec4 rotorMore;  // x: acceleration (m/s^2, down), y: half the disc's thickness
-  vec4 viscosity;  // x: nu * dt of one diffusion substep
+  vec4 viscosity;  // x: nu * dt of one diffusion substep, y: vorticity confinement's epsilon * h
 } fluid;
 
 layout(std430, binding = 0) restrict buffer FaceU { float faceU[]; };
@@ -26,6 +26,8 @@ layout(std430, binding = 7) restrict buffer Divergence { float divergence[]; };
 layout(std430, binding = 8) readonly restrict buffer Solid { vec4 solidVelocity[]; };  // w: 1 solid
 layout(std430, binding = 9) restrict buffer Stencil { uint stencilBits[]; };  // bit 2a+s; 64: solid
 layout(std430, binding = 10) restrict buffer Diagonal { float diagonal[]; };
+layout(std430, binding = 12) restrict buffer Vorticity { vec4 vorticity[]; };  // curl u, |curl u|
+layout(std430, binding = 13) restrict buffer Confinement { vec4 confinement[]; };  // the force
 
 const int kSideOpen = 0, kSideWall = 1, kSideInflow = 2;
 
@@ -75,6 +77,14 @@ bool fixedFace(int axis, ivec3 f, out float velocity) {
   if (a.w == 0.0 && b.w == 0.0) return false;
   velocity = a.w != 0.0 ? a[axis] : b[axis];
   return true;
+}
+
+// The velocity at cell c's centre (the mean of its faces), 0 in a solid cell.
+vec3 cellVelocity(ivec3 c) {
+  if (solidCell(c)) return vec3(0.0);
+  return 0.5 * vec3(faceU[faceIndex(0, c)] + faceU[faceIndex(0, c + ivec3(1, 0, 0))],
+                    faceV[faceIndex(1, c)] + faceV[faceIndex(1, c + ivec3(0, 1, 0))],
+                    faceW[faceIndex(2, c)] + faceW[faceIndex(2, c + ivec3(0, 0, 1))]);
 }
 
 // Trilinear sample of the faces on `axis` at room point p (sampleFaces).

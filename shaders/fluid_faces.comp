@@ -4,7 +4,9 @@
 //   1 rotor: w faces in the rotor's disc lose acceleration * dt;
 //   2 advect: out = the faces' velocity where the flow was dt ago (reads face*, writes out*);
 //   3 diffuse: out = face + nu dt (its 7-point Laplacian, neighbours clamped);
-//   4 gradient: free faces lose the pressure's gradient (0 beyond open sides).
+//   4 gradient: free faces lose the pressure's gradient (0 beyond open sides);
+//   5 confine: free faces between two cells gain dt times the mean of their
+//     vorticity confinement forces.
 // The twins of FluidSolver's setBoundaries/classify, applyForces, advect,
 // diffuse and project.
 #include "fluid_common.glsl"
@@ -61,6 +63,11 @@ void main() {
     if (axis == 0) outU[at] = value;
     else if (axis == 1) outV[at] = value;
     else outW[at] = value;
+  } else if (uPass == 5) {
+    if (f[axis] == 0 || f[axis] == fluid.dims[axis] || fixedFace(axis, f, given)) return;
+    ivec3 lo = f - unitAxis(axis);
+    float force = 0.5 * (confinement[cellIndex(lo)][axis] + confinement[cellIndex(f)][axis]);
+    writeFace(axis, at, readFace(axis, at) + fluid.spacing.w * force);
   } else {
     if (fixedFace(axis, f, given)) return;
     ivec3 lo = f - unitAxis(axis);

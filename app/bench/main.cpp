@@ -423,7 +423,7 @@ class Bench {
       s.wind = {2.0f, 0.0f, 0.0f};
       s.iterations = o_.solverIterations;
       FluidForces rotor{
-          .rotorCentre = {0.0f, 0.0f, 10.0f}, .rotorRadius = 6.0f, .rotorAcceleration = 30.0f};
+          .rotorCentre = {0.0f, 0.0f, 10.0f}, .rotorRadius = 6.0f, .rotorPressure = 200.0f};
       GpuStopwatch watch;
       const int frames = o_.warmup + o_.frames;
       for (int f = 0; f < frames; ++f) {

@@ -19,8 +19,8 @@ struct alignas(16) FluidBlock {
   glm::vec4 wind, rotor, rotorMore, viscosity;
 };
 
-enum FacePass { kFix = 0, kRotor, kAdvect, kDiffuse, kGradient };
-enum CellPass { kStencil = 0, kDivergence, kRelax, kPoints };
+enum FacePass { kFix = 0, kRotor, kAdvect, kDiffuse, kGradient, kConfine };
+enum CellPass { kStencil = 0, kDivergence, kRelax, kPoints, kVorticity, kConfinement };
 constexpr GLuint kGroup = 256;
 
 gl::Buffer storage(std::size_t bytes, const void* data = nullptr) {
@@ -74,6 +74,8 @@ GpuFluidSolver::GpuFluidSolver(const Box& bounds, glm::ivec3 dims, const VectorF
   stencil_ = storage(cells * 4);
   diagonal_ = storage(cells * 4);
   points_ = storage(cells * 16);
+  vorticity_ = storage(cells * 16);
+  confinement_ = storage(cells * 16);
   block_ = storage(sizeof(FluidBlock));
 }
 
@@ -146,8 +148,9 @@ void GpuFluidSolver::step(float dt, const FluidSettings& s, const FluidForces& f
   if (s.closed) b.lowSide = b.highSide = glm::ivec4(1);
   b.wind = glm::vec4(s.wind, 0.0f);
   b.rotor = glm::vec4(forces.rotorCentre, forces.rotorRadius);
-  const bool rotor = forces.rotorRadius > 0.0f && forces.rotorAcceleration != 0.0f;
-  b.rotorMore = glm::vec4(forces.rotorAcceleration, 0.5f * std::max(h_.z, 0.5f), 0.0f, 0.0f);
+  const bool rotor = forces.rotorRadius > 0.0f && forces.rotorPressure != 0.0f;
+  const float half = 0.5f * std::max(h_.z, 0.5f);  // as FluidSolver::applyForces
+  b.rotorMore = glm::vec4(forces.rotorPressure / (2.0f * half), half, 0.0f, 0.0f);
   // Viscosity's substeps as FluidSolver::diffuse counts them.
   int substeps = 0;
   if (s.viscosity > 0.0f) {
@@ -156,6 +159,8 @@ void GpuFluidSolver::step(float dt, const FluidSettings& s, const FluidForces& f
     substeps = std::max(1, int(std::ceil(s.viscosity * dt / limit)));
     b.viscosity.x = s.viscosity * dt / float(substeps);
   }
+  const bool confine = s.vorticity > 0.0f;
+  b.viscosity.y = s.vorticity * std::min({h_.x, h_.y, h_.z});
   glNamedBufferSubData(block_.id(), 0, sizeof(b), &b);
   glBindBufferBase(GL_UNIFORM_BUFFER, 6, block_.id());
   for (int axis = 0; axis < 3; ++axis) {
@@ -168,11 +173,19 @@ void GpuFluidSolver::step(float dt, const FluidSettings& s, const FluidForces& f
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 9, stencil_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 10, diagonal_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 11, points_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 12, vorticity_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 13, confinement_.id());
 
   // FluidSolver::step, pass for pass.
   for (int axis = 0; axis < 3; ++axis)
     faces(kFix, axis);
   if (rotor) faces(kRotor, 2);
+  if (confine) {
+    cells(kVorticity);
+    cells(kConfinement);
+    for (int axis = 0; axis < 3; ++axis)
+      faces(kConfine, axis);
+  }
   for (int axis = 0; axis < 3; ++axis)
     faces(kAdvect, axis);
   swapFaces();

@@ -46,7 +46,7 @@ class GpuFluidSolver {
   glm::vec3 h_;
   gl::Program facesProgram_, cellsProgram_;
   gl::Buffer block_, face_[3], out_[3], pressure_, divergence_, solid_, stencil_, diagonal_,
-      points_;
+      vorticity_, confinement_, points_;
 };
 
 }  // namespace sandstorm

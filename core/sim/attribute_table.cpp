@@ -398,12 +398,17 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("solver.wind", T::Vec3, -100, 100, "m/s",
                     "Wind blowing in through the domain's upwind sides (the field's frame)",
                     SOLVER(wind)));
-  v.push_back(entry("solver.rotor_acceleration", T::Float, 0, 1000, "m/s^2",
-                    "The helicopter's rotor pushes the air in its disc down this hard at full "
-                    "throttle",
-                    SOLVER(rotorAcceleration)));
+  v.push_back(entry("solver.rotor_thrust", T::Float, 0, 4, "x",
+                    "The rotor pushes the air down through its disc with this times the "
+                    "helicopter's thrust (momentum theory: thrust / disc area is the pressure "
+                    "jump across it)",
+                    SOLVER(rotorThrust)));
   v.push_back(entry("solver.viscosity", T::Float, 0, 10, "m^2/s", "Kinematic viscosity",
                     SOLVER(viscosity)));
+  v.push_back(entry("solver.vorticity", T::Float, 0, 2, "",
+                    "Vorticity confinement (epsilon): gives back the swirls the coarse grid's "
+                    "advection smears out, such as the ring the rotor's wall jet rolls up",
+                    SOLVER(vorticity)));
   v.push_back(entry("solver.closed", T::Bool, 0, 1, "",
                     "Every side of the domain a wall (a room); off: open but for the floor",
                     SOLVER(closed)));

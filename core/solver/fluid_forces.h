@@ -1,8 +1,8 @@
 // fluidForces(): what drives the live flow in a state, in the solver's
-// (the field's) coordinates: the helicopter's rotor disc under its hub,
-// pushing down at solver.rotor_acceleration times the throttle. FluidDriver
-// (the main context's CPU) and ParticleSystem (each GPU) both use it, so
-// they solve the same flow.
+// (the field's) coordinates: the helicopter's rotor disc under its hub, an
+// actuator disc pushing the helicopter's thrust (times solver.rotor_thrust)
+// down through it. FluidDriver (the main context's CPU) and ParticleSystem
+// (each GPU) both use it, so they solve the same flow.
 #pragma once
 
 #include "core/field/field_placement.h"

@@ -15,13 +15,14 @@ enum class FluidDevice : int { Gpu = 0, Cpu = 1 };
 struct FluidSettings {
   bool enabled = false;  // the field is the solver's (it starts from the field's grid)
   FluidDevice device = FluidDevice::Gpu;
-  int iterations = 40;              // pressure iterations a step (red-black SOR)
-  float relaxation = 1.7f;          // the SOR factor, 1 (Gauss-Seidel) .. 1.95
-  int every = 1;                    // frames a step (its dt is their simulated time)
-  glm::vec3 wind{0.0f};             // m/s blowing in at the domain's upwind sides
-  bool closed = false;              // every side a wall (a room); else open but for the floor
-  float rotorAcceleration = 40.0f;  // m/s^2 down through the rotor's disc at full throttle
-  float viscosity = 0.0f;           // m^2/s (kinematic; the scheme adds its own numerical share)
+  int iterations = 40;       // pressure iterations a step (red-black SOR)
+  float relaxation = 1.7f;   // the SOR factor, 1 (Gauss-Seidel) .. 1.95
+  int every = 1;             // frames a step (its dt is their simulated time)
+  glm::vec3 wind{0.0f};      // m/s blowing in at the domain's upwind sides
+  bool closed = false;       // every side a wall (a room); else open but for the floor
+  float rotorThrust = 1.0f;  // x the helicopter's thrust, pushed through its rotor disc
+  float viscosity = 0.0f;    // m^2/s (kinematic; the scheme adds its own numerical share)
+  float vorticity = 0.0f;    // vorticity confinement's epsilon (Fedkiw et al. 2001), 0: off
 };
 
 }  // namespace sandstorm

@@ -140,8 +140,10 @@ bool FluidSolver::fixedFace(int axis, int i, int j, int k, float* velocity) cons
 }
 
 void FluidSolver::applyForces(float dt, const FluidForces& forces) {
-  if (!(forces.rotorRadius > 0.0f) || forces.rotorAcceleration == 0.0f) return;
+  if (!(forces.rotorRadius > 0.0f) || forces.rotorPressure == 0.0f) return;
   const float half = 0.5f * std::max(h_.z, 0.5f);
+  // The jump spread over the layer's thickness.
+  const float acceleration = forces.rotorPressure / (2.0f * half);
   for (int k = 0; k <= n_.z; ++k)
     for (int j = 0; j < n_.y; ++j)
       for (int i = 0; i < n_.x; ++i) {
@@ -149,8 +151,77 @@ void FluidSolver::applyForces(float dt, const FluidForces& forces) {
         const glm::vec2 r = glm::vec2(x) - glm::vec2(forces.rotorCentre);
         if (glm::dot(r, r) <= forces.rotorRadius * forces.rotorRadius &&
             std::abs(x.z - forces.rotorCentre.z) <= half)
-          w_[wIndex(i, j, k)] -= forces.rotorAcceleration * dt;
+          w_[wIndex(i, j, k)] -= acceleration * dt;
       }
+}
+
+glm::vec3 FluidSolver::cellVelocity(glm::ivec3 c) const {
+  if (solid_[cell(c.x, c.y, c.z)]) return glm::vec3(0.0f);
+  return 0.5f * glm::vec3(u_[uIndex(c.x, c.y, c.z)] + u_[uIndex(c.x + 1, c.y, c.z)],
+                          v_[vIndex(c.x, c.y, c.z)] + v_[vIndex(c.x, c.y + 1, c.z)],
+                          w_[wIndex(c.x, c.y, c.z)] + w_[wIndex(c.x, c.y, c.z + 1)]);
+}
+
+void FluidSolver::confineVorticity(float dt, float epsilon) {
+  if (!(epsilon > 0.0f)) return;
+  const std::size_t cells = std::size_t(n_.x) * std::size_t(n_.y) * std::size_t(n_.z);
+  vorticity_.resize(cells);
+  confinement_.resize(cells);
+  // Central differences between the neighbours along `axis` (one-sided at the domain's edges).
+  const auto across = [&](glm::ivec3 c, int axis, auto&& value) {
+    glm::ivec3 lo = c, hi = c;
+    lo[axis] = std::max(c[axis] - 1, 0);
+    hi[axis] = std::min(c[axis] + 1, n_[axis] - 1);
+    return (value(hi) - value(lo)) / (float(hi[axis] - lo[axis]) * h_[axis]);
+  };
+  slabs(n_.z, [&](int k0, int k1) {
+    for (int k = k0; k < k1; ++k)
+      for (int j = 0; j < n_.y; ++j)
+        for (int i = 0; i < n_.x; ++i) {
+          const glm::ivec3 c(i, j, k);
+          const auto velocity = [&](glm::ivec3 at) { return cellVelocity(at); };
+          const glm::vec3 dx = across(c, 0, velocity), dy = across(c, 1, velocity),
+                          dz = across(c, 2, velocity);
+          const glm::vec3 w(dy.z - dz.y, dz.x - dx.z, dx.y - dy.x);
+          vorticity_[cell(i, j, k)] = glm::vec4(w, glm::length(w));
+        }
+  });
+  const float h = std::min({h_.x, h_.y, h_.z});
+  slabs(n_.z, [&](int k0, int k1) {
+    for (int k = k0; k < k1; ++k)
+      for (int j = 0; j < n_.y; ++j)
+        for (int i = 0; i < n_.x; ++i) {
+          const glm::ivec3 c(i, j, k);
+          const std::size_t at = cell(i, j, k);
+          confinement_[at] = glm::vec4(0.0f);
+          if (solid_[at]) continue;
+          const auto magnitude = [&](glm::ivec3 q) { return vorticity_[cell(q.x, q.y, q.z)].w; };
+          const glm::vec3 eta(across(c, 0, magnitude), across(c, 1, magnitude),
+                              across(c, 2, magnitude));
+          const float length = glm::length(eta);
+          if (!(length > 1e-20f)) continue;
+          confinement_[at] =
+              glm::vec4(epsilon * h * glm::cross(eta / length, glm::vec3(vorticity_[at])), 0.0f);
+        }
+  });
+  // Each free face between two cells gains dt times the mean of their forces.
+  for (int axis = 0; axis < 3; ++axis) {
+    std::vector<float>& f = faces(axis);
+    const glm::ivec3 d = n_ + unit(axis);
+    slabs(d.z, [&](int k0, int k1) {
+      for (int k = k0; k < k1; ++k)
+        for (int j = 0; j < d.y; ++j)
+          for (int i = 0; i < d.x; ++i) {
+            const glm::ivec3 face(i, j, k), lo = face - unit(axis);
+            if (face[axis] == 0 || face[axis] == n_[axis]) continue;
+            const std::size_t at = faceIndex(axis, i, j, k);
+            if (fixed_[axis][at]) continue;
+            f[at] += dt * 0.5f *
+                     (confinement_[cell(lo.x, lo.y, lo.z)][axis] +
+                      confinement_[cell(face.x, face.y, face.z)][axis]);
+          }
+    });
+  }
 }
 
 void FluidSolver::advect(float dt) {
@@ -340,6 +411,7 @@ void FluidSolver::step(float dt, const FluidSettings& settings, const FluidForce
   if (!(dt > 0.0f)) return;
   setBoundaries(settings);
   applyForces(dt, forces);
+  confineVorticity(dt, settings.vorticity);
   advect(dt);
   diffuse(dt, settings.viscosity);
   setBoundaries(settings);

@@ -3,6 +3,11 @@
 // centres, velocities live on the faces between them. One step:
 //   1. forces: a momentum source pushing air down through the rotor's disc
 //      (FluidForces::rotor*), as its thrust does;
+//      vorticity confinement (Fedkiw, Stam & Jensen 2001; settings.vorticity
+//      = epsilon): each cell's vorticity w = curl u (central differences of
+//      the cells' velocities), N = grad|w| / |grad|w||, a force
+//      epsilon h (N x w) on the cell, each face the mean of its two cells';
+//      it puts back the small swirls the coarse grid's advection smears out;
 //   2. advection: each face's velocity is what the flow brings to it from
 //      where it was dt ago (semi-Lagrangian: a straight backtrace with the
 //      face's velocity, a trilinear sample), unconditionally stable;
@@ -38,10 +43,13 @@
 namespace sandstorm {
 
 struct FluidForces {
-  // The rotor's disc: centre, radius, and the downward acceleration in it (m/s^2).
+  // The rotor as an actuator disc: centre, radius, and the pressure jump
+  // across it over the air's density (m^2/s^2; momentum theory: thrust /
+  // (disc area * density)). The solver spreads it over the cell layer at
+  // the disc as a downward acceleration.
   glm::vec3 rotorCentre{0.0f};
   float rotorRadius = 0.0f;
-  float rotorAcceleration = 0.0f;
+  float rotorPressure = 0.0f;
 };
 
 class FluidSolver {
@@ -99,6 +107,9 @@ class FluidSolver {
   }
   float sampleFaces(const std::vector<float>& faces, int axis, const glm::vec3& p) const;
   void applyForces(float dt, const FluidForces& forces);
+  void confineVorticity(float dt, float epsilon);
+  // The velocity at cell c's centre (the mean of its faces), 0 in a solid cell.
+  glm::vec3 cellVelocity(glm::ivec3 c) const;
   void advect(float dt);
   void diffuse(float dt, float viscosity);
   void setBoundaries(const FluidSettings& settings);
@@ -121,6 +132,7 @@ class FluidSolver {
   glm::vec3 h_;
   std::vector<float> u_, v_, w_, scratch_;
   std::vector<float> p_, divergence_;
+  std::vector<glm::vec4> vorticity_, confinement_;  // per cell: curl u and |curl u|; the force
   std::vector<std::uint8_t> solid_;
   std::vector<std::uint8_t> fixed_[3];  // per face: its velocity is given
   std::vector<std::uint8_t>

@@ -25,11 +25,12 @@ TEST_F(GpuFluidSolverTest, StepsAsTheCpuReferenceDoes) {
   FluidSettings s;
   s.wind = {1.0f, -0.5f, 0.0f};
   s.viscosity = 0.02f;
+  s.vorticity = 0.5f;
   s.iterations = 60;
   FluidForces rotor;
   rotor.rotorCentre = {0.0f, 0.0f, 1.2f};
   rotor.rotorRadius = 0.8f;
-  rotor.rotorAcceleration = 20.0f;
+  rotor.rotorPressure = 10.0f;
   Obstacle ball;
   ball.position = {1.0f, 0.0f, 0.6f};
   ball.radius = 0.5f;

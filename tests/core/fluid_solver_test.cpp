@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -141,6 +142,54 @@ TEST(FluidSolver, ATaylorGreenVortexDecaysAtTheViscousRate) {
   EXPECT_LT(rate, viscous * 1.10);  // the scheme's own share under 10 %
 }
 
+// Vorticity confinement on a Lamb-Oseen vortex (circulation G, core a):
+// w(r) = G / (pi a^2) exp(-r^2 / a^2) along z, so N = grad|w| / |grad|w||
+// points to the axis and the force epsilon h (N x w) turns with the swirl,
+// of size epsilon h w(r). A short step with it differs from one without by
+// that force times dt (the force is divergence-free here: the projection
+// keeps it).
+TEST(FluidSolver, VorticityConfinementPushesAlongTheSwirl) {
+  const float G = 1.0f, a = 0.2f, dt = 1e-3f, epsilon = 1.0f;
+  const glm::ivec3 dims(65, 65, 2);
+  const Box box{{-1, -1, 0}, {1, 1, 2.0f / 64.0f}};
+  VectorField start(box, dims);
+  for (int k = 0; k < dims.z; ++k)
+    for (int j = 0; j < dims.y; ++j)
+      for (int i = 0; i < dims.x; ++i) {
+        const glm::vec3 p = start.pointPosition(i, j, k);
+        const float r2 = p.x * p.x + p.y * p.y;
+        const float speed = r2 > 0.0f ? G / (2.0f * std::numbers::pi_v<float> * r2) *
+                                            (1.0f - std::exp(-r2 / (a * a)))
+                                      : 0.0f;  // v_theta / r
+        start.at(i, j, k) = speed * glm::vec3(-p.y, p.x, 0.0f);
+      }
+  FluidSettings plain;
+  plain.closed = true;
+  plain.iterations = 200;
+  FluidSettings confined = plain;
+  confined.vorticity = epsilon;
+  FluidSolver without(box, dims, &start), with(box, dims, &start);
+  without.step(dt, plain);
+  with.step(dt, confined);
+  const float h = 2.0f / 64.0f;
+  for (const float r : {0.5f * a, a, 1.5f * a}) {
+    for (const glm::vec3 at : {glm::vec3(r, 0.0f, 0.0f), glm::vec3(0.0f, -r, 0.0f)}) {
+      const glm::vec3 p = at + glm::vec3(0.0f, 0.0f, 0.5f * box.max.z);
+      const glm::vec3 dv = with.velocityAt(p) - without.velocityAt(p);
+      const glm::vec3 swirl = glm::normalize(glm::vec3(-at.y, at.x, 0.0f));
+      const float expected =
+          dt * epsilon * h * G / (std::numbers::pi_v<float> * a * a) * std::exp(-r * r / (a * a));
+      EXPECT_NEAR(glm::dot(dv, swirl), expected, 0.15f * expected) << "r " << r;
+      EXPECT_LT(glm::length(dv - glm::dot(dv, swirl) * swirl), 0.15f * expected) << "r " << r;
+    }
+  }
+  // Off, the solver is as before: epsilon 0 adds nothing.
+  FluidSolver again(box, dims, &start);
+  again.step(dt, plain);
+  const VectorField x = again.velocityField(), y = without.velocityField();
+  EXPECT_TRUE(std::equal(x.values().begin(), x.values().end(), y.values().begin()));
+}
+
 // The work is split over threads so that every cell's result is the same
 // whatever their number: one thread and three give the same grid, bit for bit.
 TEST(FluidSolver, ThreadsDoNotChangeTheFlow) {
@@ -153,7 +202,7 @@ TEST(FluidSolver, ThreadsDoNotChangeTheFlow) {
   FluidForces rotor;
   rotor.rotorCentre = {0.0f, 0.0f, 1.2f};
   rotor.rotorRadius = 0.8f;
-  rotor.rotorAcceleration = 20.0f;
+  rotor.rotorPressure = 10.0f;
   Obstacle ball;
   ball.position = {1.0f, 0.0f, 0.6f};
   ball.radius = 0.5f;
