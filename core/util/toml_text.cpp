@@ -80,6 +80,11 @@ class Scanner {
         valueNext = false;
       } else if (c == '=' || c == '[' || c == ',' || c == '{') {
         valueNext = c != '{';
+        if (c == '[' || c == '{') open();
+        ++i_;
+      } else if (c == ']' || c == '}') {
+        if (depth_ > 0) --depth_;
+        valueNext = false;
         ++i_;
       } else if (c == ' ' || c == '\t' || c == '\r') {
         ++i_;
@@ -103,6 +108,15 @@ class Scanner {
       throw Error(concat(
           name_, ":", line_, ": the integer ", token.substr(0, 80), token.size() > 80 ? "..." : "",
           " does not fit in 64 bits; expected -9223372036854775808..", "9223372036854775807"));
+  }
+
+  // toml11 parses nested arrays and inline tables by recursion: a few
+  // thousand levels overflow the stack.
+  void open() {
+    if (++depth_ > kMaxDepth)
+      throw Error(concat(name_, ":", line_, ": arrays and inline tables nested more than ",
+                         kMaxDepth, " deep; expected at most ", kMaxDepth,
+                         " levels of [ ] and { }"));
   }
 
   // Skips a basic ("...", """...""") or literal ('...', '''...''') string.
@@ -134,6 +148,8 @@ class Scanner {
   const std::string& name_;
   std::size_t i_ = 0;
   std::size_t line_ = 1;
+  int depth_ = 0;
+  static constexpr int kMaxDepth = 32;
 };
 
 }  // namespace

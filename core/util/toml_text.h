@@ -4,6 +4,8 @@
 // - Every integer literal in a value (decimal, 0x, 0o, 0b) fits in 64 bits:
 //   toml11 overflows a signed integer on a long 0b literal and silently clamps
 //   long decimal, hex and octal ones to the largest integer.
+// - Arrays and inline tables nest at most 32 deep: toml11 parses them by
+//   recursion, and a few thousand levels overflow the stack.
 // Throws Error "name:line: ..." naming the literal and what was expected.
 // Strings and comments are skipped; keys are not values and are not checked.
 #pragma once

@@ -227,6 +227,22 @@ TEST(Config, IntegersBeyond64BitsAreRefusedNotClamped) {
       std::string::npos);
 }
 
+TEST(Config, DeeplyNestedValuesAreRefusedBeforeTheParserRecurses) {
+  // Thousands of levels would overflow the stack inside toml11.
+  const int n = 20000;
+  EXPECT_ERROR("[run]\nseed = " + std::string(n, '[') + std::string(n, ']') + "\n" + kWall,
+               "test.toml:2", "nested more than 32 deep");
+  EXPECT_ERROR("[run]\nname = " + std::string(n, '{') + "\n" + kWall, "test.toml:2", "32 levels");
+  // Brackets in strings and comments do not nest; 32 levels still parse.
+  EXPECT_EQ(errorOf("# " + std::string(100, '[') + "\n[run]\nname = \"" + std::string(100, '{') +
+                    "\"\n" + kWall)
+                .find("nested"),
+            std::string::npos);
+  EXPECT_EQ(errorOf("[run]\nseed = " + std::string(32, '[') + std::string(32, ']') + "\n" + kWall)
+                .find("nested"),
+            std::string::npos);
+}
+
 }  // namespace
 }  // namespace sandstorm
 

@@ -106,6 +106,8 @@ TEST(TrackerScript, BadPathFilesNameTheirLineAndKey) {
   EXPECT_NE(errorOf("[[key]]\nhead = [0, 0, 1]\n").find("needs a time"), std::string::npos);
   EXPECT_NE(errorOf("loop = true\n").find("at least one [[key]]"), std::string::npos);
   EXPECT_NE(errorOf("[[key]]\ntime = nan\n").find("finite"), std::string::npos);
+  EXPECT_NE(errorOf("loop = " + std::string(5000, '[') + "\n").find("p.toml:1: arrays"),
+            std::string::npos);
 }
 
 }  // namespace
