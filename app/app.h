@@ -33,6 +33,9 @@ struct AppOptions {
   std::optional<std::filesystem::path> menuScript;  // scripted clicks on the menu (tests, demos)
   bool noMenu = false;
   std::optional<std::filesystem::path> stats;  // --stats: the run's measurements as JSON
+  // The field editor at the end of the run: its composition as a configuration
+  // block (.toml), the composed field as a grid file (.vti or .vdb).
+  std::optional<std::filesystem::path> saveField, bakeField;
 };
 
 // Applies --set overrides to the configuration's particle state. Throws Error.

@@ -66,6 +66,7 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
       main_(config.particles, field_.update, mainOptions(config.run)),
       helicopter_(terrain_),
       fluid_(terrain_),
+      editor_(config.field),
       obstaclePaths_(config.obstaclePaths),
       head_(makeHeadTracker(config.head)),
       navigation_(Navigation::from(config.navigation)),
@@ -79,6 +80,8 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
   if (options_.dumpStreamlines) checkOutputFile(*options_.dumpStreamlines, "--dump-streamlines");
   if (options_.hashLog) checkOutputFile(*options_.hashLog, "--hash-log");
   if (options_.stats) checkOutputFile(*options_.stats, "--stats");
+  if (options_.saveField) checkOutputFile(*options_.saveField, "--save-field");
+  if (options_.bakeField) checkOutputFile(*options_.bakeField, "--bake-field");
   if (field_.timeline) useField(main_, field_);
   if (options_.record) {
     recorder_ = std::make_unique<SessionRecorder>(*options_.record);
@@ -92,6 +95,7 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
   }
   if (!cluster_ || cluster_->root()) {
     helicopter_.update(main_);  // the configured helicopter's field and dust, before packet 0
+    editor_.update(main_);      // the configuration's [[primitive]]s, before packet 0 too
     // A replayed session holds the paths' moves (they were recorded as changes).
     if (!options_.replay) obstaclePaths_.start(main_);
     // A watched field: its steps come from a thread (a replay has them in the session).
@@ -367,7 +371,9 @@ void AppRun::hookWalls() {
 }
 
 void AppRun::loadField(const std::string& choice) {
-  useField(main_, makeField(fieldSpecFor(choice, config_.field), projectRoot_));
+  const FieldSpec spec = fieldSpecFor(choice, config_.field);
+  useField(main_, makeField(spec, projectRoot_));
+  editor_.setFieldSpec(spec);
 }
 
 void AppRun::track(float dt) {
@@ -646,6 +652,7 @@ void AppRun::runOneProcess() {
     lastPacket_ = std::make_shared<const FramePacket>(main_.next());
     if (!channel_.publish(lastPacket_)) break;
     helicopter_.update(main_);
+    editor_.update(main_);
     fluid_.update(main_, *lastPacket_);
     if (!options_.replay) obstaclePaths_.update(main_, *lastPacket_);
     ++frames_;
@@ -690,6 +697,7 @@ void AppRun::runCluster() {
       lastPacket_ = packet;
       cluster_->send(*packet);
       helicopter_.update(main_);
+      editor_.update(main_);
       fluid_.update(main_, *packet);
       if (!options_.replay) obstaclePaths_.update(main_, *packet);
     } else {
@@ -719,6 +727,15 @@ int AppRun::finish() {
     log::info("a window closed: stopped every wall cleanly");
   if (cluster_) cluster_->finish();
   if (options_.hashLog) hashes_.write(*options_.hashLog);
+  if (!cluster_ || cluster_->root()) {
+    try {
+      if (options_.saveField) editor_.save(*options_.saveField, main_.state());
+      if (options_.bakeField) editor_.bake(*options_.bakeField, main_);
+    } catch (const Error& e) {
+      log::error(e.what());
+      failed_ = true;
+    }
+  }
 
   const double seconds = std::chrono::duration<double>(Clock::now() - start_).count();
   for (const auto& w : walls_)

@@ -14,6 +14,7 @@
 
 #include "app/app.h"
 #include "app/desktop_input.h"
+#include "app/field_editor.h"
 #include "app/field_stream.h"
 #include "app/fluid_driver.h"
 #include "app/hash_log.h"
@@ -95,7 +96,8 @@ class AppRun {
   void loadField(const std::string& choice);
   std::unique_ptr<TrackingInput> tracking_;  // null: no tracker (or not the main context's rank)
   HelicopterController helicopter_;
-  FluidDriver fluid_;  // the live flow solver, while solver.enabled
+  FluidDriver fluid_;   // the live flow solver, while solver.enabled
+  FieldEditor editor_;  // the field editor's primitives added to the field
   ObstacleDriver obstaclePaths_;
   ObstacleDrag obstacleDrag_;
   MoleculePush moleculePush_;

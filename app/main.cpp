@@ -43,6 +43,13 @@ int main(int argc, char** argv) {
   cli.add_option("--dump-streamlines", streamlinePath,
                  "Write the last frame's streamlines (the [streamlines] rake) as VTK PolyData "
                  "polylines (.vtp)");
+  std::string saveField, bakeField;
+  cli.add_option("--save-field", saveField,
+                 "At the end, write the field editor's composition (the [field] and its "
+                 "[[primitive]]s) as a configuration block (.toml) that loads back the same");
+  cli.add_option("--bake-field", bakeField,
+                 "At the end, write the field in use (with the editor's primitives) as a grid "
+                 "file (.vti or .vdb)");
   cli.add_option("--set", options.sets,
                  "Set an attribute, e.g. --set emitter.0.rate=50000 (repeatable)");
   std::string hashLog;
@@ -112,6 +119,20 @@ int main(int argc, char** argv) {
       return 2;
     }
     options.dumpStreamlines = streamlinePath;
+  }
+  if (!saveField.empty()) {
+    if (!saveField.ends_with(".toml")) {
+      log::error("--save-field ", saveField, ": expected a .toml file name");
+      return 2;
+    }
+    options.saveField = saveField;
+  }
+  if (!bakeField.empty()) {
+    if (!bakeField.ends_with(".vti") && !bakeField.ends_with(".vdb")) {
+      log::error("--bake-field ", bakeField, ": expected a .vti or .vdb file name");
+      return 2;
+    }
+    options.bakeField = bakeField;
   }
   if (!trailPath.empty()) {
     if (!trailPath.ends_with(".vtp")) {

@@ -120,11 +120,12 @@ struct FieldSpec {
   Box bounds{{-6.0f, -6.0f, 0.0f}, {6.0f, 6.0f, 10.0f}};
   std::map<std::string, double> params;  // analytic field parameters
   FieldPlacement placement;
+  glm::vec3 rotationDegrees{0.0f};  // the turns placement.rotation was made from (x, y, z)
   // A field a running simulation writes: a folder source is always watched
   // for new steps, a .pvd when `watch` is set (app/field_stream.h).
   bool watch = false;
-  double stepInterval = 1.0;  // s between a folder's steps (a .pvd gives its own times)
-  double waitSeconds = 60.0;  // how long the start waits for a watched source's first step
+  double stepInterval = 1.0;   // s between a folder's steps (a .pvd gives its own times)
+  double waitSeconds = 60.0;   // how long the start waits for a watched source's first step
   double settleSeconds = 0.2;  // a step's file is complete once unchanged this long
 };
 

@@ -288,6 +288,7 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   glm::vec3 turns(0.0f, 0.0f, r.real(t, "yaw_deg", "field", 0.0f));
   turns = r.vec<3>(t, "rotation_deg", "field", turns);
   f.placement.rotation = rotationFromDegrees(turns);
+  f.rotationDegrees = turns;
   f.watch = r.boolean(t, "watch", "field", f.watch);
   if (f.watch && !(f.source.ends_with(".pvd") || std::filesystem::is_directory(f.source)))
     r.fail(*r.find(t, "watch"), "field.watch",
@@ -352,6 +353,26 @@ void readHead(const Reader& r, const toml::value& t, HeadSpec& h) {
   }
   if (h.mode == HeadMode::Scripted && h.path.size() < 2)
     r.fail(t, "head.path", "a scripted head needs at least two keyframes");
+}
+
+// [[primitive]]: the field editor's primitives (primitive.N.*), filling the
+// slots from 0; the rest stay empty. Each names its kind.
+void readPrimitives(const Reader& r, const toml::value& list, AppConfig& c) {
+  if (!list.is_array()) r.fail(list, "primitive", "expected [[primitive]] tables");
+  if (list.as_array().size() > std::size_t(ParticleState::kMaxPrimitives))
+    r.fail(list, "primitive", concat("at most ", ParticleState::kMaxPrimitives, " primitives"));
+  c.particles.primitives.assign(std::size_t(ParticleState::kMaxPrimitives), FieldPrimitive{});
+  for (std::size_t i = 0; i < list.as_array().size(); ++i) {
+    const toml::value& p = list.as_array()[i];
+    if (!p.is_table()) r.fail(p, "primitive", "expected a table");
+    const std::string name = concat("primitive.", i);
+    const toml::value* kind = r.find(p, "kind");
+    if (!kind || !kind->is_string() || kind->as_string().str == "none")
+      r.fail(kind ? *kind : p, name + ".kind",
+             "expected the primitive's kind: vortex, source, wind, tornado, sphere_flow or "
+             "curl_noise");
+    setAttributes(r, p, name + ".", c.particles);
+  }
 }
 
 // [[obstacle]]: its attributes (obstacle.N.*) and a scripted path, path =
@@ -634,11 +655,12 @@ AppConfig readWithIncludes(const toml::value& root, const std::string& file,
 void read(const toml::value& root, const std::string& file, std::optional<int> monitors,
           AppConfig& c, int depth) {
   const Reader r(file);
-  r.checkKeys(root, "",
-              {"include",        "run",        "field",   "scene",    "sim",        "render",
-               "field_playback", "helicopter", "emitter", "head",     "navigation", "tracking",
-               "menu",           "cluster",    "wall",    "pvx",      "pvx_up",     "gpu",
-               "streamlines",    "slice",      "probe",   "obstacle", "molecules", "solver"});
+  r.checkKeys(
+      root, "",
+      {"include",    "run",       "field",  "scene",      "sim",         "render", "field_playback",
+       "helicopter", "emitter",   "head",   "navigation", "tracking",    "menu",   "cluster",
+       "wall",       "pvx",       "pvx_up", "gpu",        "streamlines", "slice",  "probe",
+       "obstacle",   "molecules", "solver", "primitive"});
   // include = "scene.toml": that file's settings first, this file's on top.
   if (const toml::value* include = r.find(root, "include")) {
     if (!include->is_string()) r.fail(*include, "include", "expected a file name");
@@ -721,6 +743,7 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
     }
   }
   if (const toml::value* obstacles = r.find(root, "obstacle")) readObstacles(r, *obstacles, c);
+  if (const toml::value* primitives = r.find(root, "primitive")) readPrimitives(r, *primitives, c);
   // Walls from a ParaView CAVE file: pvx = "cave.pvx", pvx_up = "y" (ParaView's usual) or "z".
   if (const toml::value* pvx = r.find(root, "pvx")) {
     if (!pvx->is_string()) r.fail(*pvx, "pvx", "expected the name of a .pvx file");

@@ -7,6 +7,7 @@
 #include "core/field/downwash_field.h"
 #include "core/field/gravity_point_field.h"
 #include "core/field/sphere_flow_field.h"
+#include "core/field/sum_field.h"
 #include "core/field/vortex_field.h"
 #include "core/field/wind_field.h"
 #include "core/util/error.h"
@@ -144,6 +145,9 @@ const std::vector<Entry>& entries() {
                      return std::make_unique<DownwashField>(q);
                    }});
     }
+    // An empty sum is zero: the field editor's blank canvas.
+    t.push_back({{"still", "still air, zero everywhere: a canvas for the field editor", {}},
+                 [](const Values&) { return std::make_unique<SumField>(); }});
     return t;
   }();
   return table;

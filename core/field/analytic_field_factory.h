@@ -3,7 +3,7 @@
 //
 //   auto f = makeAnalyticField("gravity", {{"power", -3.0}, {"range", 6.0}});
 //
-// Names: tornado, gravity, wind, curl_noise, sphere_flow, downwash. Parameters
+// Names: tornado, gravity, wind, curl_noise, sphere_flow, downwash, still. Parameters
 // not given take the defaults of the field's Params struct (listed by
 // analyticFieldSpecs(), which `sandstorm-field generate --help` prints).
 // Vectors are spelled per component: center_x, center_y, center_z.

@@ -132,6 +132,9 @@ std::optional<std::string> decodeName(std::string_view word) {
 #define EMITTER(member)           \
   Ref<decltype(Emitter::member)>( \
       [](ParticleState & s, int e) -> auto& { return s.emitters[std::size_t(e)].member; })
+#define PRIMITIVE(member)                \
+  Ref<decltype(FieldPrimitive::member)>( \
+      [](ParticleState & s, int e) -> auto& { return s.primitives[std::size_t(e)].member; })
 #define OBSTACLE(member)           \
   Ref<decltype(Obstacle::member)>( \
       [](ParticleState & s, int e) -> auto& { return s.obstacles[std::size_t(e)].member; })
@@ -514,6 +517,28 @@ std::vector<AttributeInfo> makeEntries() {
                     "Follows its scripted path ([[obstacle]] path); off: stays where put",
                     OBSTACLE(path)));
   v.push_back(entry("obstacle.*.enabled", T::Bool, 0, 1, "", "Obstacle on/off", OBSTACLE(enabled)));
+  // The field editor's primitives (core/editor/field_primitive.h).
+  v.push_back(
+      enumEntry("primitive.*.kind",
+                {"none", "vortex", "source", "wind", "tornado", "sphere_flow", "curl_noise"},
+                "What the primitive adds to the field (none: an empty slot)", PRIMITIVE(kind)));
+  v.push_back(entry("primitive.*.position", T::Vec3, -kBig, kBig, "m",
+                    "Where it is: a vortex's line passes through it, a source's centre, a "
+                    "tornado's base, the sphere's centre, the noise's shift",
+                    PRIMITIVE(position)));
+  v.push_back(entry("primitive.*.axis", T::Vec3, -1000, 1000, "",
+                    "Its direction: a vortex's or tornado's axis, the way a wind or stream blows",
+                    PRIMITIVE(axis)));
+  v.push_back(entry("primitive.*.strength", T::Float, -1000, 1000, "m/s",
+                    "Its speed: a vortex's swirl at its radius, a source's outflow at its radius "
+                    "(< 0: a sink), a wind's speed, a tornado's spin",
+                    PRIMITIVE(strength)));
+  v.push_back(entry("primitive.*.radius", T::Float, 0.01f, 1000, "m",
+                    "Its size: a vortex's, source's or tornado's core, the sphere's radius, the "
+                    "eddies' size",
+                    PRIMITIVE(radius)));
+  v.push_back(entry("primitive.*.enabled", T::Bool, 0, 1, "", "Primitive on/off (kept in its slot)",
+                    PRIMITIVE(enabled)));
   return v;
 }
 
@@ -525,6 +550,7 @@ std::vector<AttributeInfo> makeEntries() {
 #undef MOLECULES
 #undef SOLVER
 #undef OBSTACLE
+#undef PRIMITIVE
 
 struct Alias {
   std::string_view name, target;
@@ -571,6 +597,9 @@ void checkItem(const AttributeInfo& info, std::string_view key, int index,
   if (info.perEmitter() && index >= int(state.emitters.size()))
     throw Error(concat("attribute '", key, "': there is no emitter ", index, " (there are ",
                        state.emitters.size(), ")"));
+  if (info.perPrimitive() && index >= int(state.primitives.size()))
+    throw Error(concat("attribute '", key, "': there is no primitive ", index, " (there are ",
+                       state.primitives.size(), ")"));
   if (info.perObstacle() && index >= int(state.obstacles.size()))
     throw Error(concat("attribute '", key, "': there is no obstacle ", index, " (there are ",
                        state.obstacles.size(), ": [[obstacle]] in the configuration)"));
@@ -607,7 +636,8 @@ const AttributeInfo& AttributeTable::lookup(std::string_view rawKey, int* emitte
     int count;
   };
   for (const List list : {List{"emitter.", ParticleState::kMaxEmitters},
-                          List{"obstacle.", ParticleState::kMaxObstacles}}) {
+                          List{"obstacle.", ParticleState::kMaxObstacles},
+                          List{"primitive.", ParticleState::kMaxPrimitives}}) {
     if (!key.starts_with(list.prefix)) continue;
     const std::size_t from = list.prefix.size(), dot = key.find('.', from);
     const std::string_view digits = std::string_view(key).substr(from, dot - from);
@@ -802,7 +832,9 @@ std::string AttributeTable::describe(const ParticleState& state) const {
       out += info.key + "=" + toString(info.get(state, 0)) + "\n";
       continue;
     }
-    const std::size_t count = info.perEmitter() ? state.emitters.size() : state.obstacles.size();
+    const std::size_t count = info.perEmitter()    ? state.emitters.size()
+                              : info.perObstacle() ? state.obstacles.size()
+                                                   : state.primitives.size();
     for (std::size_t e = 0; e < count; ++e)
       out += info.itemKey(int(e)) + "=" + toString(info.get(state, int(e))) + "\n";
   }

@@ -61,7 +61,8 @@ struct AttributeInfo {
   bool perEmitter() const { return key.starts_with("emitter.*."); }
   bool perObstacle() const { return key.starts_with("obstacle.*."); }
   // Whether the key is one of a list's (emitter.N.x, obstacle.N.x).
-  bool perItem() const { return perEmitter() || perObstacle(); }
+  bool perPrimitive() const { return key.starts_with("primitive.*."); }
+  bool perItem() const { return perEmitter() || perObstacle() || perPrimitive(); }
   // The key of item `index`: "emitter.*.rate" -> "emitter.2.rate".
   std::string itemKey(int index) const;
 };

@@ -6,20 +6,22 @@
 
 #include <vector>
 
+#include "core/editor/field_primitive.h"
 #include "core/flow/slice_settings.h"
 #include "core/flow/streamline_settings.h"
 #include "core/molecules/molecule_settings.h"
-#include "core/solver/fluid_settings.h"
 #include "core/obstacles/obstacle.h"
 #include "core/sim/emitter.h"
 #include "core/sim/helicopter.h"
 #include "core/sim/sim_settings.h"
+#include "core/solver/fluid_settings.h"
 
 namespace sandstorm {
 
 struct ParticleState {
   static constexpr int kMaxEmitters = 16;
   static constexpr int kMaxObstacles = 8;
+  static constexpr int kMaxPrimitives = 8;
 
   SimSettings sim;
   RenderSettings render;
@@ -32,6 +34,9 @@ struct ParticleState {
   FluidSettings solver;  // the live flow solver (app/fluid_driver.h)
   std::vector<Emitter> emitters{Emitter{}};
   std::vector<Obstacle> obstacles;  // from the configuration's [[obstacle]]s; edited, never added
+  // The field editor's primitives (core/editor): always kMaxPrimitives slots,
+  // kind none where empty; the main context adds the active ones to the field.
+  std::vector<FieldPrimitive> primitives = std::vector<FieldPrimitive>(std::size_t(kMaxPrimitives));
 };
 
 }  // namespace sandstorm

@@ -1,0 +1,88 @@
+#include "core/editor/field_editor_block.h"
+
+#include <charconv>
+#include <filesystem>
+#include <sstream>
+
+#include "core/sim/attribute_table.h"
+
+namespace sandstorm {
+namespace {
+
+// The shortest text that reads back to the same float, always a TOML float.
+std::string number(double v, bool single = true) {
+  char buffer[64];
+  const auto result = single ? std::to_chars(buffer, buffer + sizeof buffer, float(v))
+                             : std::to_chars(buffer, buffer + sizeof buffer, v);
+  std::string s(buffer, result.ptr);
+  if (s.find_first_of(".e") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string vec(const glm::vec3& v) {
+  return "[" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + "]";
+}
+
+std::string ivec(const glm::ivec3& v) {
+  return "[" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + "]";
+}
+
+// A TOML basic string.
+std::string quoted(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+}  // namespace
+
+std::string fieldEditorBlock(const FieldSpec& field, std::span<const FieldPrimitive> primitives) {
+  std::ostringstream out;
+  out << "# The field editor's composition (Sandstorm): the field below plus each\n"
+         "# [[primitive]]. Include it from a configuration with walls\n"
+         "# (include = \"this file\") or paste it in.\n\n[field]\n";
+  if (field.source == "analytic") {
+    out << "source = \"analytic\"\nname = " << quoted(field.name) << "\n";
+    out << "dims = " << ivec(field.dims) << "\n";
+    out << "bounds_min = " << vec(field.bounds.min) << "\nbounds_max = " << vec(field.bounds.max)
+        << "\n";
+    if (!field.params.empty()) {
+      out << "params = {";
+      bool first = true;
+      for (const auto& [key, value] : field.params) {
+        out << (first ? " " : ", ") << key << " = " << number(value, false);
+        first = false;
+      }
+      out << " }\n";
+    }
+  } else {
+    out << "source = "
+        << quoted(std::filesystem::absolute(field.source).lexically_normal().string()) << "\n";
+    if (!field.name.empty()) out << "name = " << quoted(field.name) << "\n";
+    if (field.resolution != glm::ivec3(0)) out << "resolution = " << ivec(field.resolution) << "\n";
+  }
+  out << "offset = " << vec(field.placement.offset) << "\nscale = " << number(field.placement.scale)
+      << "\nrotation_deg = " << vec(field.rotationDegrees) << "\n";
+
+  const AttributeTable& table = AttributeTable::instance();
+  for (std::size_t i = 0; i < primitives.size(); ++i) {
+    if (primitives[i].kind == PrimitiveKind::None) continue;
+    ParticleState holder;
+    holder.primitives.assign(primitives.begin(), primitives.end());
+    const std::string prefix = "primitive." + std::to_string(i) + ".";
+    const auto text = [&](const char* key) {
+      return std::get<std::string>(table.get(holder, prefix + key));
+    };
+    const FieldPrimitive& p = primitives[i];
+    out << "\n[[primitive]]\nkind = " << quoted(text("kind")) << "\nposition = " << vec(p.position)
+        << "\naxis = " << vec(p.axis) << "\nstrength = " << number(p.strength)
+        << "\nradius = " << number(p.radius) << "\nenabled = " << (p.enabled ? "true" : "false")
+        << "\n";
+  }
+  return out.str();
+}
+
+}  // namespace sandstorm
