@@ -356,7 +356,8 @@ void readHead(const Reader& r, const toml::value& t, HeadSpec& h) {
 }
 
 // [[primitive]]: the field editor's primitives (primitive.N.*), filling the
-// slots from 0; the rest stay empty. Each names its kind.
+// slots from 0; the rest stay empty. Each names its kind (none: an empty slot,
+// as a saved block writes the gaps, so the slots keep their numbers).
 void readPrimitives(const Reader& r, const toml::value& list, AppConfig& c) {
   if (!list.is_array()) r.fail(list, "primitive", "expected [[primitive]] tables");
   if (list.as_array().size() > std::size_t(ParticleState::kMaxPrimitives))
@@ -366,11 +367,10 @@ void readPrimitives(const Reader& r, const toml::value& list, AppConfig& c) {
     const toml::value& p = list.as_array()[i];
     if (!p.is_table()) r.fail(p, "primitive", "expected a table");
     const std::string name = concat("primitive.", i);
-    const toml::value* kind = r.find(p, "kind");
-    if (!kind || !kind->is_string() || kind->as_string().str == "none")
-      r.fail(kind ? *kind : p, name + ".kind",
-             "expected the primitive's kind: vortex, source, wind, tornado, sphere_flow or "
-             "curl_noise");
+    if (!r.find(p, "kind"))
+      r.fail(p, name + ".kind",
+             "missing: expected the primitive's kind (vortex, source, wind, tornado, sphere_flow, "
+             "curl_noise; none keeps an empty slot)");
     setAttributes(r, p, name + ".", c.particles);
   }
 }

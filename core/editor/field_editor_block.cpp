@@ -68,10 +68,13 @@ std::string fieldEditorBlock(const FieldSpec& field, std::span<const FieldPrimit
       << "\nrotation_deg = " << vec(field.rotationDegrees) << "\n";
 
   const AttributeTable& table = AttributeTable::instance();
-  for (std::size_t i = 0; i < primitives.size(); ++i) {
-    if (primitives[i].kind == PrimitiveKind::None) continue;
-    ParticleState holder;
-    holder.primitives.assign(primitives.begin(), primitives.end());
+  // Slots up to the last filled one, empty ones as kind none: they keep their numbers.
+  std::size_t used = primitives.size();
+  while (used > 0 && primitives[used - 1].kind == PrimitiveKind::None)
+    --used;
+  ParticleState holder;
+  holder.primitives.assign(primitives.begin(), primitives.end());
+  for (std::size_t i = 0; i < used; ++i) {
     const std::string prefix = "primitive." + std::to_string(i) + ".";
     const auto text = [&](const char* key) {
       return std::get<std::string>(table.get(holder, prefix + key));

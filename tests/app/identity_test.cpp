@@ -224,6 +224,29 @@ TEST(Identity, AnObstacleMovingMidRunKeepsEveryWallIdentical) {
   EXPECT_NE(handFloor[149], floor[149]);
 }
 
+// The field editor used mid-run (a vortex placed, moved and removed, a sink
+// added): the composed field reaches every wall at the same frame, so four
+// walls on threads and a wall alone in its process hold the same particles.
+TEST(Identity, TheFieldEditorsPrimitivesReachEveryWallAtTheSameFrame) {
+  const auto dir = test::scratchDir("field-editor-identity");
+  const std::string run =
+      " --frames 90 --replay tests/data/field-editor-midrun.session --hash-log ";
+  const auto threads =
+      runSandstorm("--config tests/data/identity.toml" + run + (dir / "threads.txt").string());
+  const auto alone = runSandstorm("--config tests/data/identity.toml --walls floor" + run +
+                                  (dir / "alone.txt").string());
+  const auto without = runSandstorm("--config tests/data/identity.toml --frames 90 --hash-log " +
+                                    (dir / "without.txt").string());
+  for (const auto* r : {&threads, &alone, &without})
+    ASSERT_EQ(r->exitCode, 0) << r->output;
+  auto floor = sameOnEveryWall(dir / "threads.txt", 90);
+  for (const HashLine& h : readHashes(dir / "alone.txt"))
+    EXPECT_EQ(h.hash, floor[h.frame]) << "frame " << h.frame;
+  const auto plain = sameOnEveryWall(dir / "without.txt", 90);
+  EXPECT_EQ(plain.at(20), floor[20]);  // the vortex takes effect from frame 21's field
+  EXPECT_NE(plain.at(89), floor[89]);
+}
+
 // Molecules beside the particles, changed mid-run (a new shape, the push
 // tool, repulsion): the same on four walls each simulating its own, on four
 // walls sharing one simulation, and on one wall alone in its process.
