@@ -278,6 +278,12 @@ void AppRun::openMenu() {
         loadField(choice);
         if (recorder_) recorder_->recordField(main_.nextFrame(), choice);
       },
+      [this](const std::string& path) {
+        if (path.ends_with(".toml"))
+          editor_.save(path, main_.pendingState());
+        else
+          editor_.bake(path, main_);
+      },
       std::move(script));
   if (!operatorWindow_ && wallCount > 0)
     walls_[std::size_t(shown)]->addOverlay([this] { return menu_->latest(); }, menu_->font());

@@ -5,10 +5,10 @@ namespace sandstorm {
 MenuHost::MenuHost(MainContext& main, std::unique_ptr<GlfwWindow> operatorWindow,
                    GLFWwindow* wallWindow, glm::ivec2 wallSize,
                    std::vector<std::string> fieldChoices, MenuPanel::FieldLoader loader,
-                   std::optional<MenuScript> script)
+                   MenuPanel::FieldWriter writer, std::optional<MenuScript> script)
     : operatorWindow_(std::move(operatorWindow)),
       session_(operatorWindow_ ? operatorWindow_->handle() : wallWindow, wallSize),
-      panel_(main, std::move(fieldChoices), std::move(loader)),
+      panel_(main, std::move(fieldChoices), std::move(loader), std::move(writer)),
       script_(std::move(script)) {
   if (operatorWindow_) {
     operatorWindow_->makeCurrent();

@@ -21,7 +21,8 @@ class MenuHost {
   // window (`wallWindow`, may be null when offscreen) gives the input.
   MenuHost(MainContext& main, std::unique_ptr<GlfwWindow> operatorWindow, GLFWwindow* wallWindow,
            glm::ivec2 wallSize, std::vector<std::string> fieldChoices,
-           MenuPanel::FieldLoader loader, std::optional<MenuScript> script);
+           MenuPanel::FieldLoader loader, MenuPanel::FieldWriter writer,
+           std::optional<MenuScript> script);
   ~MenuHost();
 
   void frame(std::uint32_t frame, float dt, const MenuStats& stats);

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
 
 #include "app/menu/legend_widget.h"
 #include "core/sim/state_color_scale.h"
@@ -20,8 +21,12 @@ std::string labelOf(const std::string& key) {
 
 }  // namespace
 
-MenuPanel::MenuPanel(MainContext& main, std::vector<std::string> fieldChoices, FieldLoader loader)
-    : main_(main), fieldChoices_(std::move(fieldChoices)), loader_(std::move(loader)) {}
+MenuPanel::MenuPanel(MainContext& main, std::vector<std::string> fieldChoices, FieldLoader loader,
+                     FieldWriter writer)
+    : main_(main),
+      fieldChoices_(std::move(fieldChoices)),
+      loader_(std::move(loader)),
+      writer_(std::move(writer)) {}
 
 void MenuPanel::remember(const std::string& key) {
   // The item's frame, without the label that follows it: a fraction across
@@ -97,6 +102,7 @@ void MenuPanel::build(const MenuStats& stats) {
   moleculeSection(stats, state);
   obstacleSection(state);
   fieldSection(state);
+  editorSection(state);
   if (ImGui::CollapsingHeader("Field playback")) {
     for (const AttributeInfo& info : AttributeTable::instance().entries())
       if (info.key.starts_with("field.")) attributeWidget(info, info.key, state);
@@ -275,6 +281,56 @@ void MenuPanel::fieldSection(const ParticleState& state) {
   ImGui::TextUnformatted("live flow solver");
   for (const AttributeInfo& info : AttributeTable::instance().entries())
     if (info.key.starts_with("solver.")) attributeWidget(info, info.key, state);
+}
+
+// The field editor (core/editor): eight slots of primitives added to the
+// field. A slot's kind fills it (none empties it); the mouse drags a
+// primitive's ball on the floor and the wand grabs it. The composition is
+// saved as a configuration block (.toml) or baked to a grid (.vti, .vdb).
+void MenuPanel::editorSection(const ParticleState& state) {
+  const bool open = ImGui::CollapsingHeader("Field editor");
+  remember("header:editor");
+  if (!open) return;
+  const int count = int(state.primitives.size());
+  selectedPrimitive_ = std::clamp(selectedPrimitive_, 0, std::max(count - 1, 0));
+  // The slots on one row (a filled one marked *), then the chosen slot's attributes.
+  for (int i = 0; i < count; ++i) {
+    const bool filled = state.primitives[std::size_t(i)].kind != PrimitiveKind::None;
+    if (i > 0) ImGui::SameLine();
+    const std::string label = std::to_string(i) + (filled ? "*" : "");
+    if (ImGui::RadioButton(label.c_str(), selectedPrimitive_ == i)) selectedPrimitive_ = i;
+    remember("primitive:" + std::to_string(i));
+  }
+  if (count == 0) return;
+  for (const AttributeInfo& info : AttributeTable::instance().entries())
+    if (info.perPrimitive()) attributeWidget(info, info.itemKey(selectedPrimitive_), state);
+  const std::string prefix = "primitive." + std::to_string(selectedPrimitive_) + ".";
+  if (ImGui::Button("Remove")) apply(prefix + "kind", std::string("none"));
+  remember("button:remove-primitive");
+  if (!writer_) return;
+  ImGui::SameLine();
+  char buffer[512];
+  std::snprintf(buffer, sizeof buffer, "%s", editorPath_.c_str());
+  if (ImGui::InputText("file", buffer, sizeof buffer)) editorPath_ = buffer;
+  remember("editor:file");
+  for (const char* what : {"Save", "Bake"}) {
+    if (what[0] == 'B') ImGui::SameLine();
+    if (ImGui::Button(what)) {
+      // Save writes the .toml block; Bake the grid, .vti unless a .vdb is named.
+      std::filesystem::path path = editorPath_;
+      if (what[0] == 'S')
+        path.replace_extension(".toml");
+      else if (path.extension() != ".vdb")
+        path.replace_extension(".vti");
+      try {
+        writer_(path.string());
+        message_ = std::string(what[0] == 'S' ? "saved " : "baked ") + path.string();
+      } catch (const Error& e) {
+        message_ = e.what();
+      }
+    }
+    remember(std::string("button:") + (what[0] == 'S' ? "save-field" : "bake-field"));
+  }
 }
 
 void MenuPanel::attributeWidget(const AttributeInfo& info, const std::string& key,

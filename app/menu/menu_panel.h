@@ -45,8 +45,12 @@ class MenuPanel {
  public:
   // Loads a field by name or path and hands it to the main context; throws Error.
   using FieldLoader = std::function<void(const std::string& source)>;
+  // Writes the field editor's composition to a path: a .toml block, or the
+  // composed grid as .vti/.vdb; throws Error.
+  using FieldWriter = std::function<void(const std::string& path)>;
 
-  MenuPanel(MainContext& main, std::vector<std::string> fieldChoices, FieldLoader loader);
+  MenuPanel(MainContext& main, std::vector<std::string> fieldChoices, FieldLoader loader,
+            FieldWriter writer = nullptr);
 
   // Between ImGuiSession::begin() and end().
   void build(const MenuStats& stats);
@@ -69,6 +73,7 @@ class MenuPanel {
   void obstacleSection(const ParticleState& state);
   void moleculeSection(const MenuStats& stats, const ParticleState& state);
   void fieldSection(const ParticleState& state);
+  void editorSection(const ParticleState& state);
   void statsSection(const MenuStats& stats, const ParticleState& state);
   void trackingSection(const MenuTrackingStats& tracking);
   void remember(const std::string& key);
@@ -77,6 +82,9 @@ class MenuPanel {
   MainContext& main_;
   std::vector<std::string> fieldChoices_;
   FieldLoader loader_;
+  FieldWriter writer_;
+  int selectedPrimitive_ = 0;
+  std::string editorPath_ = "composed.toml";
   int selectedEmitter_ = 0;
   int selectedObstacle_ = 0;
   int selectedField_ = 0;

@@ -53,6 +53,7 @@ void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, 
     scene_.setFieldBox(std::nullopt, {});
   scene_.setHelicopter(particles.state().helicopter, HelicopterModel{}.rotorRadius);
   scene_.setObstacles(particles.state().obstacles);
+  scene_.setPrimitives(particles.state().primitives);
   scene_.draw();
   particles.drawTrails(&view, size);
 }

@@ -54,6 +54,50 @@ void SceneRenderer::drawProp(const Mesh& mesh, const glm::vec3& center, const gl
   mesh.draw();
 }
 
+// A ball (0.2 m) at each active primitive, coloured by its kind (a sink red),
+// and for the kinds with a direction a rod of 1 m from it along its axis.
+void SceneRenderer::drawPrimitives() const {
+  for (const FieldPrimitive& p : primitives_) {
+    if (!p.active()) continue;
+    glm::vec3 color(0.7f, 0.4f, 0.9f);  // curl noise
+    bool directed = true;
+    switch (p.kind) {
+      case PrimitiveKind::Vortex:
+        color = {0.95f, 0.55f, 0.1f};
+        break;
+      case PrimitiveKind::Source:
+        color = p.strength < 0.0f ? glm::vec3(0.9f, 0.2f, 0.2f) : glm::vec3(0.2f, 0.5f, 0.95f);
+        directed = false;
+        break;
+      case PrimitiveKind::Wind:
+        color = {0.6f, 0.65f, 0.95f};
+        break;
+      case PrimitiveKind::Tornado:
+        color = {0.95f, 0.8f, 0.2f};
+        break;
+      case PrimitiveKind::SphereFlow:
+        color = {0.3f, 0.8f, 0.8f};
+        break;
+      default:
+        directed = false;
+        break;
+    }
+    drawProp(sphere_, p.position, glm::vec3(0.2f), glm::vec4(color, 1.0f));
+    const float length = glm::length(p.axis);
+    if (!directed || !(length > 0.0f)) continue;
+    // The rod: the unit cube turned so that its z runs along the axis.
+    const glm::vec3 z = p.axis / length;
+    const glm::vec3 x = glm::normalize(
+        glm::cross(std::abs(z.z) < 0.9f ? glm::vec3(0, 0, 1) : glm::vec3(1, 0, 0), z));
+    const glm::mat4 turn(glm::vec4(x, 0.0f), glm::vec4(glm::cross(z, x), 0.0f), glm::vec4(z, 0.0f),
+                         glm::vec4(p.position + 0.5f * z, 1.0f));
+    const glm::mat4 model = turn * glm::scale(glm::mat4(1.0f), glm::vec3(0.05f, 0.05f, 1.0f));
+    glProgramUniformMatrix4fv(mesh_.id(), 0, 1, GL_FALSE, glm::value_ptr(model));
+    glProgramUniform4f(mesh_.id(), 1, color.x, color.y, color.z, 1.0f);
+    cube_.draw();
+  }
+}
+
 void SceneRenderer::setTerrain(std::shared_ptr<const HeightMap> terrain) {
   ground_ = std::move(terrain);
   const HeightMap& map = *ground_;
@@ -141,6 +185,8 @@ void SceneRenderer::draw() const {
     else
       drawProp(cube_, o.position, o.size, green);
   }
+
+  drawPrimitives();
 
   if (box_) {
     glm::mat4 model = placement_.matrix();

@@ -37,6 +37,10 @@ class SceneRenderer {
   void setHelicopter(const HelicopterSettings& helicopter, float rotorRadius);
   // The obstacles (the enabled ones are drawn, solid green as in the Mali sample).
   void setObstacles(std::vector<Obstacle> obstacles) { obstacles_ = std::move(obstacles); }
+  // The field editor's primitives: a ball where each active one is, a rod along its axis.
+  void setPrimitives(std::vector<FieldPrimitive> primitives) {
+    primitives_ = std::move(primitives);
+  }
   // The tracked wand's ray and the emitters' handles (nothing while the ray is hidden).
   // `handles`: what the wand can grab (wand_handles.h), world positions.
   void setWand(const WandRay& ray, const Navigation& navigation, std::vector<glm::vec3> handles);
@@ -66,6 +70,8 @@ class SceneRenderer {
   UnitCube cube_;
   UnitMesh sphere_ = UnitMesh::sphere(), cylinder_ = UnitMesh::cylinder();
   std::vector<Obstacle> obstacles_;
+  std::vector<FieldPrimitive> primitives_;
+  void drawPrimitives() const;
   WandRenderer wand_;
   SceneField sceneField_;  // before the passes that read it
   StreamlineRenderer streamlines_{sceneField_};

@@ -522,13 +522,6 @@ std::vector<AttributeInfo> makeEntries() {
       enumEntry("primitive.*.kind",
                 {"none", "vortex", "source", "wind", "tornado", "sphere_flow", "curl_noise"},
                 "What the primitive adds to the field (none: an empty slot)", PRIMITIVE(kind)));
-  v.push_back(entry("primitive.*.position", T::Vec3, -kBig, kBig, "m",
-                    "Where it is: a vortex's line passes through it, a source's centre, a "
-                    "tornado's base, the sphere's centre, the noise's shift",
-                    PRIMITIVE(position)));
-  v.push_back(entry("primitive.*.axis", T::Vec3, -1000, 1000, "",
-                    "Its direction: a vortex's or tornado's axis, the way a wind or stream blows",
-                    PRIMITIVE(axis)));
   v.push_back(entry("primitive.*.strength", T::Float, -1000, 1000, "m/s",
                     "Its speed: a vortex's swirl at its radius, a source's outflow at its radius "
                     "(< 0: a sink), a wind's speed, a tornado's spin",
@@ -537,6 +530,13 @@ std::vector<AttributeInfo> makeEntries() {
                     "Its size: a vortex's, source's or tornado's core, the sphere's radius, the "
                     "eddies' size",
                     PRIMITIVE(radius)));
+  v.push_back(entry("primitive.*.position", T::Vec3, -kBig, kBig, "m",
+                    "Where it is: a vortex's line passes through it, a source's centre, a "
+                    "tornado's base, the sphere's centre, the noise's shift",
+                    PRIMITIVE(position)));
+  v.push_back(entry("primitive.*.axis", T::Vec3, -1000, 1000, "",
+                    "Its direction: a vortex's or tornado's axis, the way a wind or stream blows",
+                    PRIMITIVE(axis)));
   v.push_back(entry("primitive.*.enabled", T::Bool, 0, 1, "", "Primitive on/off (kept in its slot)",
                     PRIMITIVE(enabled)));
   return v;

@@ -11,6 +11,9 @@ std::vector<WandHandle> wandHandles(const ParticleState& state) {
   for (std::size_t i = 0; i < state.obstacles.size(); ++i)
     if (state.obstacles[i].enabled)
       handles.push_back({concat("obstacle.", i, ".position"), state.obstacles[i].position});
+  for (std::size_t i = 0; i < state.primitives.size(); ++i)
+    if (state.primitives[i].active())
+      handles.push_back({concat("primitive.", i, ".position"), state.primitives[i].position});
   if (state.streamlines.enabled) {
     handles.push_back({"streamlines.from", state.streamlines.from});
     handles.push_back({"streamlines.to", state.streamlines.to});

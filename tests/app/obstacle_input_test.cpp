@@ -75,6 +75,30 @@ TEST(ObstacleDrag, APressOnTheSphereGrabsItAndTheDragSlidesItAlongTheFloor) {
   EXPECT_FALSE(drag.holding());
 }
 
+// The field editor's primitives drag the same way: a press within 0.25 m of
+// one's ball grabs it (nearer than the sphere behind it), the drag slides it.
+TEST(ObstacleDrag, APressNearAPrimitiveGrabsItBeforeTheObstacleBehind) {
+  MainContext main = mainWithSphere({0, 5, 1});
+  main.set("primitive.2.kind", std::string("vortex"));
+  main.set("primitive.2.position", glm::vec3(0.1f, 3.0f, 1.0f));
+  main.next();
+  ObstacleDrag drag;
+  ASSERT_TRUE(drag.pick(main.pendingState(), WorldRay{{0, 0, 1}, {0, 1, 0}}));
+  const glm::vec3 from(0, 0, 2);
+  drag.drag(main, WorldRay{from, glm::normalize(glm::vec3(-1.0f, 3.0f, 1.0f) - from)}, 0.5f, true);
+  main.next();
+  const glm::vec3 moved = main.state().primitives[2].position;
+  EXPECT_NEAR(moved.x, -1.0f + 0.1f, 1e-3f);  // the grabbed point's offset kept
+  EXPECT_FLOAT_EQ(moved.z, 1.0f);
+  EXPECT_EQ(main.state().obstacles[0].position, glm::vec3(0, 5, 1));  // the sphere stayed
+  EXPECT_FALSE(drag.holding());
+  // Emptied, it is no longer there to grab: the press takes the sphere.
+  main.set("primitive.2.kind", std::string("none"));
+  main.next();
+  ASSERT_TRUE(drag.pick(main.pendingState(), WorldRay{{0, 0, 1}, {0, 1, 0}}));
+  drag.drag(main, WorldRay{{0, 0, 1}, {0, 1, 0}}, 0.5f, true);
+}
+
 // With molecules.push_tool on, a left press starts a push at the cursor's
 // ray nearest the field's centre, the drag moves it, the release stops it.
 TEST(MoleculePush, APressPushesWhereTheCursorPointsUntilReleased) {

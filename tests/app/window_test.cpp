@@ -116,6 +116,30 @@ TEST(Windows, TheObstaclesSectionOfTheMenuMovesTheSphere) {
   EXPECT_GE(moves, 38);  // and the sphere moved along its path every frame
 }
 
+// The field editor's section: open it, pick slot 1 (the vortex), drag its
+// strength slider: the change is recorded and the composed field follows it.
+TEST(Windows, TheFieldEditorSectionChangesAPrimitive) {
+  if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
+  const auto dir = test::scratchDir("menu-editor");
+  const auto r = runUnderXvfb(
+      "--config config/field-editor.toml --frames 40 --set sim.maximum=4000 --log-level debug "
+      "--menu-script tests/data/editor-menu.script --record " +
+      (dir / "s.session").string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  std::string strength;
+  for (const std::string& line : readLines(dir / "s.session"))
+    if (line.find(" set primitive.1.strength ") != std::string::npos) strength = line;
+  ASSERT_FALSE(strength.empty()) << "the slider click did not change primitive.1.strength\n"
+                                 << r.output;
+  EXPECT_NE(strength.substr(strength.rfind(' ') + 1), "1.6");  // the file's strength changed
+  // Composed twice: at the start, and after the change.
+  std::size_t composed = 0;
+  for (std::size_t at = r.output.find("field editor: 3 primitive(s)"); at != std::string::npos;
+       at = r.output.find("field editor: 3 primitive(s)", at + 1))
+    ++composed;
+  EXPECT_EQ(composed, 2u) << r.output;
+}
+
 TEST(Windows, TheMoleculesSectionOfTheMenuChangesTheirShapeAndSprings) {
   if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
   const auto dir = test::scratchDir("menu-molecules");
