@@ -8,9 +8,11 @@
 //     layout (vec4 a point, w 1), solid cells 0;
 //   4 vorticity: curl u from the cells' velocities (central differences,
 //     one-sided at the domain's edges) and its length;
-//   5 confinement: epsilon h (N x w), N = grad|w| / |grad|w|| (0 in solids).
-// (FluidSolver::confineVorticity's first two loops.)
+//   5 confinement: each cell's force, the forced eddies' I s^2 / L times the
+//     eddy pattern, plus epsilon h (N x w), N = grad|w| / |grad|w|| (0 in solids).
+// (FluidSolver::cellForces's first two loops.)
 #include "fluid_common.glsl"
+#include "gradient_noise.glsl"
 
 layout(local_size_x = 256) in;
 layout(std430, binding = 11) writeonly restrict buffer Points { vec4 points[]; };
@@ -24,6 +26,16 @@ void across(ivec3 c, int axis, out ivec3 lo, out ivec3 hi, out float inverseSpan
   lo[axis] = max(c[axis] - 1, 0);
   hi[axis] = min(c[axis] + 1, fluid.dims[axis] - 1);
   inverseSpan = 1.0 / (float(hi[axis] - lo[axis]) * fluid.spacing[axis]);
+}
+
+// The forced eddies' pattern at x (core/solver/fluid_solver.h eddyPattern:
+// seed 11, drift (0.6, 0.4, 0.7) noise cells a second).
+vec3 eddyPattern(vec3 x) {
+  vec3 q = x / fluid.eddies.y + fluid.eddies.z * vec3(0.6, 0.4, 0.7);
+  vec3 g1 = noiseValueAndGradient(33u, q).xyz;
+  vec3 g2 = noiseValueAndGradient(34u, q).xyz;
+  vec3 g3 = noiseValueAndGradient(35u, q).xyz;
+  return vec3(g3.y - g2.z, g1.z - g3.x, g2.x - g1.y);
 }
 
 void main() {
@@ -80,16 +92,24 @@ void main() {
   } else if (uPass == 5) {
     confinement[at] = vec4(0.0);
     if (solid) return;
-    vec3 eta;
-    for (int axis = 0; axis < 3; ++axis) {
-      ivec3 lo, hi;
-      float inverseSpan;
-      across(c, axis, lo, hi, inverseSpan);
-      eta[axis] = (vorticity[cellIndex(hi)].w - vorticity[cellIndex(lo)].w) * inverseSpan;
+    vec3 force = vec3(0.0);
+    if (fluid.eddies.x > 0.0) {
+      vec3 u = cellVelocity(c);
+      vec3 x = fluid.minimum.xyz + vec3(c) * fluid.spacing.xyz;
+      force += (fluid.eddies.x * dot(u, u) / fluid.eddies.y) * eddyPattern(x);
     }
-    float len = length(eta);
-    if (!(len > 1e-20)) return;
-    confinement[at] = vec4(fluid.viscosity.y * cross(eta / len, vorticity[at].xyz), 0.0);
+    if (fluid.viscosity.y > 0.0) {
+      vec3 eta;
+      for (int axis = 0; axis < 3; ++axis) {
+        ivec3 lo, hi;
+        float inverseSpan;
+        across(c, axis, lo, hi, inverseSpan);
+        eta[axis] = (vorticity[cellIndex(hi)].w - vorticity[cellIndex(lo)].w) * inverseSpan;
+      }
+      float len = length(eta);
+      if (len > 1e-20) force += fluid.viscosity.y * cross(eta / len, vorticity[at].xyz);
+    }
+    confinement[at] = vec4(force, 0.0);
   } else {
     vec3 v = vec3(0.0);
     if (!solid)

@@ -412,6 +412,13 @@ std::vector<AttributeInfo> makeEntries() {
                     "Vorticity confinement (epsilon): gives back the swirls the coarse grid's "
                     "advection smears out, such as the ring the rotor's wall jet rolls up",
                     SOLVER(vorticity)));
+  v.push_back(entry("solver.turbulence", T::Float, 0, 1, "",
+                    "Forced eddies: a cell moving at speed s churns with fluctuations of about "
+                    "this times s (the wall jet's turbulence, too fine for the grid; it lifts "
+                    "the dust)",
+                    SOLVER(turbulence)));
+  v.push_back(entry("solver.eddy_size", T::Float, 0.1f, 100, "m", "The forced eddies' size",
+                    SOLVER(eddySize)));
   v.push_back(entry("solver.closed", T::Bool, 0, 1, "",
                     "Every side of the domain a wall (a room); off: open but for the floor",
                     SOLVER(closed)));

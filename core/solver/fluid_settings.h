@@ -23,6 +23,8 @@ struct FluidSettings {
   float rotorThrust = 1.0f;  // x the helicopter's thrust, pushed through its rotor disc
   float viscosity = 0.0f;    // m^2/s (kinematic; the scheme adds its own numerical share)
   float vorticity = 0.0f;    // vorticity confinement's epsilon (Fedkiw et al. 2001), 0: off
+  float turbulence = 0.0f;   // forced eddies' intensity, a fraction of the local speed; 0: off
+  float eddySize = 3.0f;     // m: the forced eddies' size
 };
 
 }  // namespace sandstorm

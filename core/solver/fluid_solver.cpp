@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/field/gradient_noise.h"
 #include "core/obstacles/obstacle_physics.h"
 #include "core/util/error.h"
 
@@ -162,8 +163,18 @@ glm::vec3 FluidSolver::cellVelocity(glm::ivec3 c) const {
                           w_[wIndex(c.x, c.y, c.z)] + w_[wIndex(c.x, c.y, c.z + 1)]);
 }
 
-void FluidSolver::confineVorticity(float dt, float epsilon) {
-  if (!(epsilon > 0.0f)) return;
+glm::vec3 eddyPattern(const glm::vec3& x, float size, float time) {
+  static const GradientNoise n1(kEddySeed * 3u), n2(kEddySeed * 3u + 1u), n3(kEddySeed * 3u + 2u);
+  const glm::vec3 q = x / size + time * kEddyDrift;
+  const glm::vec3 g1(n1.valueAndGradient(q)), g2(n2.valueAndGradient(q)),
+      g3(n3.valueAndGradient(q));
+  return glm::vec3(g3.y - g2.z, g1.z - g3.x, g2.x - g1.y);
+}
+
+void FluidSolver::cellForces(float dt, const FluidSettings& settings, float time) {
+  const float epsilon = settings.vorticity;
+  const float intensity = settings.turbulence, size = std::max(settings.eddySize, 1e-3f);
+  if (!(epsilon > 0.0f) && !(intensity > 0.0f)) return;
   const std::size_t cells = std::size_t(n_.x) * std::size_t(n_.y) * std::size_t(n_.z);
   vorticity_.resize(cells);
   confinement_.resize(cells);
@@ -174,18 +185,19 @@ void FluidSolver::confineVorticity(float dt, float epsilon) {
     hi[axis] = std::min(c[axis] + 1, n_[axis] - 1);
     return (value(hi) - value(lo)) / (float(hi[axis] - lo[axis]) * h_[axis]);
   };
-  slabs(n_.z, [&](int k0, int k1) {
-    for (int k = k0; k < k1; ++k)
-      for (int j = 0; j < n_.y; ++j)
-        for (int i = 0; i < n_.x; ++i) {
-          const glm::ivec3 c(i, j, k);
-          const auto velocity = [&](glm::ivec3 at) { return cellVelocity(at); };
-          const glm::vec3 dx = across(c, 0, velocity), dy = across(c, 1, velocity),
-                          dz = across(c, 2, velocity);
-          const glm::vec3 w(dy.z - dz.y, dz.x - dx.z, dx.y - dy.x);
-          vorticity_[cell(i, j, k)] = glm::vec4(w, glm::length(w));
-        }
-  });
+  if (epsilon > 0.0f)
+    slabs(n_.z, [&](int k0, int k1) {
+      for (int k = k0; k < k1; ++k)
+        for (int j = 0; j < n_.y; ++j)
+          for (int i = 0; i < n_.x; ++i) {
+            const glm::ivec3 c(i, j, k);
+            const auto velocity = [&](glm::ivec3 at) { return cellVelocity(at); };
+            const glm::vec3 dx = across(c, 0, velocity), dy = across(c, 1, velocity),
+                            dz = across(c, 2, velocity);
+            const glm::vec3 w(dy.z - dz.y, dz.x - dx.z, dx.y - dy.x);
+            vorticity_[cell(i, j, k)] = glm::vec4(w, glm::length(w));
+          }
+    });
   const float h = std::min({h_.x, h_.y, h_.z});
   slabs(n_.z, [&](int k0, int k1) {
     for (int k = k0; k < k1; ++k)
@@ -195,13 +207,21 @@ void FluidSolver::confineVorticity(float dt, float epsilon) {
           const std::size_t at = cell(i, j, k);
           confinement_[at] = glm::vec4(0.0f);
           if (solid_[at]) continue;
-          const auto magnitude = [&](glm::ivec3 q) { return vorticity_[cell(q.x, q.y, q.z)].w; };
-          const glm::vec3 eta(across(c, 0, magnitude), across(c, 1, magnitude),
-                              across(c, 2, magnitude));
-          const float length = glm::length(eta);
-          if (!(length > 1e-20f)) continue;
-          confinement_[at] =
-              glm::vec4(epsilon * h * glm::cross(eta / length, glm::vec3(vorticity_[at])), 0.0f);
+          glm::vec3 force(0.0f);
+          if (intensity > 0.0f) {
+            const glm::vec3 u = cellVelocity(c);
+            const glm::vec3 x = bounds_.min + glm::vec3(c) * h_;
+            force += (intensity * glm::dot(u, u) / size) * eddyPattern(x, size, time);
+          }
+          if (epsilon > 0.0f) {
+            const auto magnitude = [&](glm::ivec3 q) { return vorticity_[cell(q.x, q.y, q.z)].w; };
+            const glm::vec3 eta(across(c, 0, magnitude), across(c, 1, magnitude),
+                                across(c, 2, magnitude));
+            const float length = glm::length(eta);
+            if (length > 1e-20f)
+              force += epsilon * h * glm::cross(eta / length, glm::vec3(vorticity_[at]));
+          }
+          confinement_[at] = glm::vec4(force, 0.0f);
         }
   });
   // Each free face between two cells gains dt times the mean of their forces.
@@ -411,7 +431,8 @@ void FluidSolver::step(float dt, const FluidSettings& settings, const FluidForce
   if (!(dt > 0.0f)) return;
   setBoundaries(settings);
   applyForces(dt, forces);
-  confineVorticity(dt, settings.vorticity);
+  cellForces(dt, settings, float(time_));
+  time_ += dt;
   advect(dt);
   diffuse(dt, settings.viscosity);
   setBoundaries(settings);
