@@ -5,7 +5,8 @@
 //   1 divergence;
 //   2 relax: cells of colour uColour, one red-black over-relaxation sweep;
 //   3 points: each cell's velocity (the mean of its faces) into the field's
-//     layout (vec4 a point, w 1), solid cells 0;
+//     layout (vec4 a point, w 1); a solid cell under a fluid one has that
+//     one's horizontal velocity, other solid cells 0;
 //   4 vorticity: curl u from the cells' velocities (central differences,
 //     one-sided at the domain's edges) and its length;
 //   5 confinement: each cell's force, the forced eddies' I s^2 / L times the
@@ -111,11 +112,11 @@ void main() {
     }
     confinement[at] = vec4(force, 0.0);
   } else {
-    vec3 v = vec3(0.0);
-    if (!solid)
-      v = 0.5 * vec3(faceU[faceIndex(0, c)] + faceU[faceIndex(0, c + ivec3(1, 0, 0))],
-                     faceV[faceIndex(1, c)] + faceV[faceIndex(1, c + ivec3(0, 1, 0))],
-                     faceW[faceIndex(2, c)] + faceW[faceIndex(2, c + ivec3(0, 0, 1))]);
+    // A solid cell under a fluid one takes its horizontal velocity (the free-slip ground's).
+    ivec3 above = c + ivec3(0, 0, 1);
+    bool ground = solid && above.z < fluid.dims.z && !solidCell(above);
+    vec3 v = cellVelocity(ground ? above : c);
+    if (ground) v.z = 0.0;
     points[at] = vec4(v, 1.0);
   }
 }

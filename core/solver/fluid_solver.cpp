@@ -444,10 +444,12 @@ VectorField FluidSolver::velocityField() const {
   for (int k = 0; k < n_.z; ++k)
     for (int j = 0; j < n_.y; ++j)
       for (int i = 0; i < n_.x; ++i) {
-        if (solid_[cell(i, j, k)]) continue;
-        out.at(i, j, k) = 0.5f * glm::vec3(u_[uIndex(i, j, k)] + u_[uIndex(i + 1, j, k)],
-                                           v_[vIndex(i, j, k)] + v_[vIndex(i, j + 1, k)],
-                                           w_[wIndex(i, j, k)] + w_[wIndex(i, j, k + 1)]);
+        // A solid cell under a fluid one takes its horizontal velocity (the
+        // free-slip ground's), so dust resting on the terrain, which lies
+        // between the two cells' centres, feels the flow over it.
+        const bool ground = solid_[cell(i, j, k)] && k + 1 < n_.z && !solid_[cell(i, j, k + 1)];
+        const glm::vec3 v = cellVelocity({i, j, ground ? k + 1 : k});
+        out.at(i, j, k) = ground ? glm::vec3(v.x, v.y, 0.0f) : v;
       }
   return out;
 }

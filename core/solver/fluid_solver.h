@@ -81,7 +81,9 @@ class FluidSolver {
 
   void step(float dt, const FluidSettings& settings, const FluidForces& forces = {});
 
-  // The velocity at the cells' centres (the field's points); solid cells 0.
+  // The velocity at the cells' centres (the field's points); a solid cell
+  // under a fluid one has that one's horizontal velocity (the free-slip
+  // ground's, so dust on the terrain feels the flow over it), others 0.
   VectorField velocityField() const;
   // After the last projection: the largest |div u| over fluid cells (1/s).
   double maxDivergence() const;

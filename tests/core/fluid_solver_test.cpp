@@ -108,6 +108,35 @@ TEST(FluidSolver, NothingFlowsThroughSolidCellsAndTheWindGoesAround) {
   EXPECT_LT(solver.maxDivergence(), 1e-2);
 }
 
+// Over terrain, the field's points just under the ground carry the wind's
+// horizontal velocity (the free-slip ground's), deeper ones none: dust resting
+// on the ground feels the flow over it instead of a blend with still rock.
+TEST(FluidSolver, PointsUnderTheGroundCarryTheFlowOverIt) {
+  const Box box{{-2, -2, 0}, {2, 2, 2}};
+  const glm::ivec3 dims(9, 9, 9);
+  const glm::vec3 wind(1.5f, 0.5f, 0.0f);
+  VectorField start(box, dims, std::vector<glm::vec3>(std::size_t(9 * 9 * 9), wind));
+  FluidSolver solver(box, dims, &start);
+  const HeightMap ground = HeightMap::flat(0.8f);  // the cells at z 0, 0.25, 0.5, 0.75 are rock
+  solver.setSolids(&ground, {});
+  FluidSettings s;
+  s.wind = wind;
+  for (int f = 0; f < 10; ++f)
+    solver.step(1.0f / 30.0f, s);
+  const VectorField field = solver.velocityField();
+  for (int j = 0; j < 9; ++j)
+    for (int i = 0; i < 9; ++i) {
+      ASSERT_TRUE(solver.solid(i, j, 3));
+      ASSERT_FALSE(solver.solid(i, j, 4));
+      const glm::vec3 above = field.at(i, j, 4), under = field.at(i, j, 3);
+      EXPECT_EQ(under, glm::vec3(above.x, above.y, 0.0f));
+      EXPECT_NEAR(under.x, wind.x, 1e-3f);
+      EXPECT_EQ(field.at(i, j, 2), glm::vec3(0.0f));  // deeper: still
+    }
+  // A particle resting 5 cm on the ground moves with the wind.
+  EXPECT_NEAR(field.sample({0.1f, 0.2f, 0.85f}).x, wind.x, 1e-3f);
+}
+
 // Taylor-Green: u = U sin(kx) cos(ky), v = -U cos(kx) sin(ky) in a closed box
 // of side pi/k (walls on every side, which it slides along). Viscosity nu
 // makes its energy decay as exp(-2 nu (kx^2 + ky^2) t); the scheme's own
