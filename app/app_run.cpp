@@ -454,12 +454,29 @@ void AppRun::showMenu(float dt, const std::vector<std::string>& probe) {
 // The main thread's work before it makes a frame's packet.
 void AppRun::beforePacket(float dt) {
   track(dt);
+  chooseSolverDevice();
   const ParticleState state = main_.pendingState();
   autoColorRange(state);
   const auto field = main_.field();
   const std::vector<std::string> probe = probeLines(state, field.get(), lastPacket_.get());
   if (menu_) showMenu(dt, probe);
   if (legend_) legend_->frame(dt, state, field.get(), probe);
+}
+
+// solver.device = auto: the GPU, unless a wall's OpenGL runs in software
+// (llvmpipe), where the main context's threads solve faster than the
+// emulated GPU. The walls' contexts decide it, so every run of a
+// configuration on a machine chooses alike, at the same frame; a replayed
+// session holds the choice it recorded.
+void AppRun::chooseSolverDevice() {
+  if (options_.replay || main_.pendingState().solver.device != FluidDevice::Auto) return;
+  bool software = false;
+  for (auto& c : contexts_)
+    software = software || softwareRenderer(c->glContext().description());
+  main_.set("solver.device", std::string(software ? "cpu" : "gpu"));
+  log::info(
+      "solver.device = auto: ",
+      software ? "cpu (the walls' OpenGL runs in software, slower than the CPU's threads)" : "gpu");
 }
 
 // render.color_range = particles: every render.color_every frames, the first

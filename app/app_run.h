@@ -61,6 +61,7 @@ class AppRun {
   std::optional<WandMenuTarget> menuTarget() const;
   void showMenu(float dt, const std::vector<std::string>& probe);
   void beforePacket(float dt);
+  void chooseSolverDevice();
   void autoColorRange(const ParticleState& state);
   std::vector<std::string> probeLines(const ParticleState& state, const FieldUpdate* field,
                                       const FramePacket* last) const;

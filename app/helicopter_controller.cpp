@@ -24,8 +24,8 @@ void HelicopterController::update(MainContext& main) {
   const ParticleState state = main.state();
   const HelicopterSettings s = state.helicopter;
   // The live solver (solver.enabled) makes the wash itself from the rotor's
-  // thrust (FluidDriver), starting from the analytic one; that is baked again
-  // when it stops.
+  // thrust (FluidDriver or each GPU's LiveFlow), starting from still air over
+  // the analytic wash's box; the analytic wash is baked when it stops.
   const bool solving = state.solver.enabled;
   if (!s.enabled || (last_ && same(*last_, s) && solving == lastSolving_)) return;
   last_ = s;
@@ -58,10 +58,13 @@ void HelicopterController::update(MainContext& main) {
   const SumField air(std::move(parts));
   const float reach = 5.0f * model_.rotorRadius;
   const Box bounds{{-reach, -reach, 0.0f}, {reach, reach, s.altitude + model_.rotorRadius}};
-  auto field = std::make_shared<VectorField>(bake(air, bounds, {48, 48, 24}));
+  // The live flow starts from still air: the wash it shows is all its own.
+  const SumField still;
+  const AnalyticField& start = solving ? static_cast<const AnalyticField&>(still) : air;
+  auto field = std::make_shared<VectorField>(bake(start, bounds, {48, 48, 24}));
   FieldPlacement placement;
   placement.offset = {s.x, s.y, ground};
-  // The solver starts from the wash (the first time), then makes its own.
+  // The solver's starting grid once; it makes its own flow from then on.
   if (!solving || !bakedOnce_)
     main.setField(FieldUpdate{.field = std::move(field), .placement = placement});
   bakedOnce_ = true;

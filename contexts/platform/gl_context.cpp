@@ -29,6 +29,12 @@ std::string glDescription() {
   return "OpenGL " + str(GL_VERSION) + ", " + str(GL_RENDERER);
 }
 
+bool softwareRenderer(const std::string& description) {
+  for (const char* name : {"llvmpipe", "softpipe", "SwiftShader"})
+    if (description.find(name) != std::string::npos) return true;
+  return false;
+}
+
 void checkGl45(const std::string& provider) {
   const int version = epoxy_gl_version();
   if (version < 45)

@@ -30,5 +30,8 @@ void checkGl45(const std::string& provider);
 
 // "OpenGL 4.5 (Core Profile) Mesa 22.3.6, llvmpipe (LLVM 15.0.6, 256 bits)".
 std::string glDescription();
+// Whether a description (glDescription) names a software renderer (Mesa's
+// llvmpipe or softpipe, SwiftShader).
+bool softwareRenderer(const std::string& description);
 
 }  // namespace sandstorm

@@ -387,9 +387,10 @@ std::vector<AttributeInfo> makeEntries() {
                     "The field is a live flow (stable fluids on the field's grid, started from "
                     "it); off: the field as loaded",
                     SOLVER(enabled)));
-  v.push_back(enumEntry("solver.device", {"gpu", "cpu"},
+  v.push_back(enumEntry("solver.device", {"gpu", "cpu", "auto"},
                         "Solve on each GPU beside the particle update (the compute backend), or "
-                        "on the main context's CPU (its grids travel to the walls)",
+                        "on the main context's CPU (its grids travel to the walls); auto: the GPU "
+                        "unless the walls' OpenGL runs in software",
                         SOLVER(device)));
   v.push_back(entry("solver.iterations", T::Int, 1, 500, "",
                     "Pressure iterations a step (more: less divergence left)", SOLVER(iterations)));

@@ -10,11 +10,13 @@ namespace sandstorm {
 // Where the flow is solved: on each GPU beside the particle update (every
 // GPU steps it alike from the same packets), or on the main context's CPU,
 // whose grids then travel to the walls as a time-varying field's frames do.
-enum class FluidDevice : int { Gpu = 0, Cpu = 1 };
+// Auto: the application picks (app_run.cpp): gpu where the walls' OpenGL is a
+// GPU's, cpu where it runs in software (llvmpipe), where the CPU's threads are faster.
+enum class FluidDevice : int { Gpu = 0, Cpu = 1, Auto = 2 };
 
 struct FluidSettings {
   bool enabled = false;  // the field is the solver's (it starts from the field's grid)
-  FluidDevice device = FluidDevice::Gpu;
+  FluidDevice device = FluidDevice::Auto;
   int iterations = 40;       // pressure iterations a step (red-black SOR)
   float relaxation = 1.7f;   // the SOR factor, 1 (Gauss-Seidel) .. 1.95
   int every = 1;             // frames a step (its dt is their simulated time)

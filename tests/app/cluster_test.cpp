@@ -142,12 +142,13 @@ TEST(Cluster, TheCpuSolversFlowReachesEveryRankAtTheSameFrame) {
   EXPECT_EQ(count(output, "field grids: 40 ("), 3) << output;  // a new grid every frame
 }
 
-// Solved on the GPUs (solver.device = gpu, the default): every rank steps the
+// Solved on the GPUs (solver.device = gpu): every rank steps the
 // same flow from the same packets, so only the field's first grid crosses and
 // every rank still holds one process's particles.
 TEST(Cluster, EveryRanksGpuSolvesTheSameFlow) {
-  const std::string output = expectSameHashes(
-      "tests/data/identity-cluster.toml", "--set solver.enabled=true", 40, "cluster-gpu-solver");
+  const std::string output = expectSameHashes("tests/data/identity-cluster.toml",
+                                              "--set solver.enabled=true --set solver.device=gpu",
+                                              40, "cluster-gpu-solver");
   EXPECT_EQ(count(output, "field grids: 1 ("), 3) << output;
 }
 

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/app/run_process.h"
+
 namespace sandstorm {
 namespace {
 
@@ -62,10 +64,29 @@ TEST(FluidDriver, LeavesTheFieldToTheGpusWhenTheySolve) {
   MainContext main(ParticleState{}, FieldUpdate{.field = start}, options);
   FluidDriver driver(nullptr);
   main.set("solver.enabled", true);
+  main.set("solver.device", std::string("gpu"));
   for (int f = 0; f < 4; ++f)
     driver.update(main, main.next());
   EXPECT_EQ(driver.solver(), nullptr);
   EXPECT_EQ(main.field()->field, start);
+}
+
+// solver.device = auto (the default): the application picks the CPU where the
+// walls' OpenGL runs in software (llvmpipe), else the GPU, before the first
+// frame, as a recorded change.
+TEST(FluidDriver, AutoPicksTheCpuUnderSoftwareOpenGlAndTheGpuElse) {
+  const auto dir = test::scratchDir("solver-auto");
+  const auto r = test::runSandstorm(
+      "--config tests/data/identity.toml --walls front --frames 3 --set solver.enabled=true "
+      "--record " +
+      (dir / "s.session").string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const bool software = r.output.find("llvmpipe") != std::string::npos;
+  const std::string expected = software ? "0 set solver.device cpu" : "0 set solver.device gpu";
+  bool found = false;
+  for (const std::string& line : test::readLines(dir / "s.session"))
+    found = found || line == expected;
+  EXPECT_TRUE(found) << "expected '" << expected << "' in the session\n" << r.output;
 }
 
 }  // namespace

@@ -279,7 +279,8 @@ TEST(Identity, MoleculesAreTheSameOnEveryWallHoweverTheWallsAreRun) {
 // agree too.
 TEST(Identity, TheLiveSolversFlowIsTheSameOnEveryWall) {
   const auto dir = test::scratchDir("solver");
-  const std::string run = " --frames 60 --set solver.enabled=true --hash-log ";
+  const std::string run =
+      " --frames 60 --set solver.enabled=true --set solver.device=gpu --hash-log ";
   const auto threads =
       runSandstorm("--config tests/data/identity.toml" + run + (dir / "threads.txt").string());
   const auto shared = runSandstorm("--config tests/data/identity-shared.toml" + run +
@@ -288,7 +289,8 @@ TEST(Identity, TheLiveSolversFlowIsTheSameOnEveryWall) {
                                   (dir / "alone.txt").string());
   const auto without = runSandstorm("--config tests/data/identity.toml --frames 60 --hash-log " +
                                     (dir / "without.txt").string());
-  const auto cpu = runSandstorm("--config tests/data/identity.toml --set solver.device=cpu" + run +
+  const auto cpu = runSandstorm("--config tests/data/identity.toml --set solver.device=cpu" +
+                                std::string(" --frames 60 --set solver.enabled=true --hash-log ") +
                                 (dir / "cpu.txt").string());
   for (const auto* r : {&threads, &shared, &alone, &without, &cpu})
     ASSERT_EQ(r->exitCode, 0) << r->output;
