@@ -5,13 +5,13 @@
 //   1 divergence;
 //   2 relax: cells of colour uColour, one red-black over-relaxation sweep;
 //   3 points: each cell's velocity (the mean of its faces) into the field's
-//     layout (vec4 a point, w 1); a solid cell under a fluid one has that
-//     one's horizontal velocity, other solid cells 0;
+//     layout (vec4 a point, w 1), plus the subgrid eddies (I |u| times the
+//     eddy pattern); a solid cell under a fluid one has that one's
+//     horizontal velocity, other solid cells 0;
 //   4 vorticity: curl u from the cells' velocities (central differences,
 //     one-sided at the domain's edges) and its length;
-//   5 confinement: each cell's force, the forced eddies' I s^2 / L times the
-//     eddy pattern, plus epsilon h (N x w), N = grad|w| / |grad|w|| (0 in solids).
-// (FluidSolver::cellForces's first two loops.)
+//   5 confinement: epsilon h (N x w), N = grad|w| / |grad|w|| (0 in solids).
+// (FluidSolver::confineVorticity's first two loops.)
 #include "fluid_common.glsl"
 #include "gradient_noise.glsl"
 
@@ -29,7 +29,7 @@ void across(ivec3 c, int axis, out ivec3 lo, out ivec3 hi, out float inverseSpan
   inverseSpan = 1.0 / (float(hi[axis] - lo[axis]) * fluid.spacing[axis]);
 }
 
-// The forced eddies' pattern at x (core/solver/fluid_solver.h eddyPattern:
+// The subgrid eddies' pattern at x (core/solver/fluid_solver.h eddyPattern:
 // seed 11, drift (0.6, 0.4, 0.7) noise cells a second).
 vec3 eddyPattern(vec3 x) {
   vec3 q = x / fluid.eddies.y + fluid.eddies.z * vec3(0.6, 0.4, 0.7);
@@ -93,29 +93,25 @@ void main() {
   } else if (uPass == 5) {
     confinement[at] = vec4(0.0);
     if (solid) return;
-    vec3 force = vec3(0.0);
-    if (fluid.eddies.x > 0.0) {
-      vec3 u = cellVelocity(c);
-      vec3 x = fluid.minimum.xyz + vec3(c) * fluid.spacing.xyz;
-      force += (fluid.eddies.x * dot(u, u) / fluid.eddies.y) * eddyPattern(x);
+    vec3 eta;
+    for (int axis = 0; axis < 3; ++axis) {
+      ivec3 lo, hi;
+      float inverseSpan;
+      across(c, axis, lo, hi, inverseSpan);
+      eta[axis] = (vorticity[cellIndex(hi)].w - vorticity[cellIndex(lo)].w) * inverseSpan;
     }
-    if (fluid.viscosity.y > 0.0) {
-      vec3 eta;
-      for (int axis = 0; axis < 3; ++axis) {
-        ivec3 lo, hi;
-        float inverseSpan;
-        across(c, axis, lo, hi, inverseSpan);
-        eta[axis] = (vorticity[cellIndex(hi)].w - vorticity[cellIndex(lo)].w) * inverseSpan;
-      }
-      float len = length(eta);
-      if (len > 1e-20) force += fluid.viscosity.y * cross(eta / len, vorticity[at].xyz);
-    }
-    confinement[at] = vec4(force, 0.0);
+    float len = length(eta);
+    if (!(len > 1e-20)) return;
+    confinement[at] = vec4(fluid.viscosity.y * cross(eta / len, vorticity[at].xyz), 0.0);
   } else {
     // A solid cell under a fluid one takes its horizontal velocity (the free-slip ground's).
     ivec3 above = c + ivec3(0, 0, 1);
     bool ground = solid && above.z < fluid.dims.z && !solidCell(above);
     vec3 v = cellVelocity(ground ? above : c);
+    if (fluid.eddies.x > 0.0) {
+      vec3 x = fluid.minimum.xyz + vec3(c) * fluid.spacing.xyz;
+      v += (fluid.eddies.x * length(v)) * eddyPattern(x);
+    }
     if (ground) v.z = 0.0;
     points[at] = vec4(v, 1.0);
   }

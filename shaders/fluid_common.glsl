@@ -13,7 +13,7 @@ layout(std140, binding = 6) uniform FluidBlock {
   vec4 rotor;      // centre xyz, w: radius
   vec4 rotorMore;  // x: acceleration (m/s^2, down), y: half the disc's thickness
   vec4 viscosity;  // x: nu * dt of one diffusion substep, y: vorticity confinement's epsilon * h
-  vec4 eddies;     // forced eddies: x intensity, y size (m), z the solver's time (s)
+  vec4 eddies;     // subgrid eddies: x intensity, y size (m), z the solver's time (s)
 } fluid;
 
 layout(std430, binding = 0) restrict buffer FaceU { float faceU[]; };

@@ -17,7 +17,7 @@ struct alignas(16) FluidBlock {
   glm::vec4 spacing, inverse, inverse2, minimum;
   glm::ivec4 lowSide, highSide;
   glm::vec4 wind, rotor, rotorMore, viscosity;
-  glm::vec4 eddies;  // x intensity, y size, z the solver's time
+  glm::vec4 eddies;  // the subgrid eddies: x intensity, y size, z the solver's time
 };
 
 enum FacePass { kFix = 0, kRotor, kAdvect, kDiffuse, kGradient, kConfine };
@@ -160,9 +160,10 @@ void GpuFluidSolver::step(float dt, const FluidSettings& s, const FluidForces& f
     substeps = std::max(1, int(std::ceil(s.viscosity * dt / limit)));
     b.viscosity.x = s.viscosity * dt / float(substeps);
   }
-  const bool confine = s.vorticity > 0.0f, eddies = s.turbulence > 0.0f;
+  const bool confine = s.vorticity > 0.0f;
   b.viscosity.y = s.vorticity * std::min({h_.x, h_.y, h_.z});
-  b.eddies = glm::vec4(s.turbulence, std::max(s.eddySize, 1e-3f), float(time_), 0.0f);
+  // The subgrid eddies of the points pass, at the time after this step (as FluidSolver's).
+  b.eddies = glm::vec4(s.turbulence, std::max(s.eddySize, 1e-3f), float(time_ + dt), 0.0f);
   glNamedBufferSubData(block_.id(), 0, sizeof(b), &b);
   glBindBufferBase(GL_UNIFORM_BUFFER, 6, block_.id());
   for (int axis = 0; axis < 3; ++axis) {
@@ -182,8 +183,8 @@ void GpuFluidSolver::step(float dt, const FluidSettings& s, const FluidForces& f
   for (int axis = 0; axis < 3; ++axis)
     faces(kFix, axis);
   if (rotor) faces(kRotor, 2);
-  if (confine || eddies) {
-    if (confine) cells(kVorticity);
+  if (confine) {
+    cells(kVorticity);
     cells(kConfinement);
     for (int axis = 0; axis < 3; ++axis)
       faces(kConfine, axis);

@@ -44,7 +44,7 @@ class GpuFluidSolver {
   Box bounds_;
   glm::ivec3 n_;
   glm::vec3 h_;
-  double time_ = 0.0;  // simulated seconds stepped (the forced eddies' clock, as FluidSolver's)
+  double time_ = 0.0;  // simulated seconds stepped (the subgrid eddies' clock, as FluidSolver's)
   gl::Program facesProgram_, cellsProgram_;
   gl::Buffer block_, face_[3], out_[3], pressure_, divergence_, solid_, stencil_, diagonal_,
       vorticity_, confinement_, points_;

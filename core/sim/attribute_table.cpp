@@ -414,11 +414,11 @@ std::vector<AttributeInfo> makeEntries() {
                     "advection smears out, such as the ring the rotor's wall jet rolls up",
                     SOLVER(vorticity)));
   v.push_back(entry("solver.turbulence", T::Float, 0, 1, "",
-                    "Forced eddies: a cell moving at speed s churns with fluctuations of about "
-                    "this times s (the wall jet's turbulence, too fine for the grid; it lifts "
-                    "the dust)",
+                    "Subgrid eddies the particles feel: the flow's velocity u plus this times "
+                    "|u| times a moving curl-noise pattern (the wall jet's turbulence, too fine "
+                    "for the grid; it lifts the dust)",
                     SOLVER(turbulence)));
-  v.push_back(entry("solver.eddy_size", T::Float, 0.1f, 100, "m", "The forced eddies' size",
+  v.push_back(entry("solver.eddy_size", T::Float, 0.1f, 100, "m", "The subgrid eddies' size",
                     SOLVER(eddySize)));
   v.push_back(entry("solver.closed", T::Bool, 0, 1, "",
                     "Every side of the domain a wall (a room); off: open but for the floor",

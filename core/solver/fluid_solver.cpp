@@ -171,10 +171,8 @@ glm::vec3 eddyPattern(const glm::vec3& x, float size, float time) {
   return glm::vec3(g3.y - g2.z, g1.z - g3.x, g2.x - g1.y);
 }
 
-void FluidSolver::cellForces(float dt, const FluidSettings& settings, float time) {
-  const float epsilon = settings.vorticity;
-  const float intensity = settings.turbulence, size = std::max(settings.eddySize, 1e-3f);
-  if (!(epsilon > 0.0f) && !(intensity > 0.0f)) return;
+void FluidSolver::confineVorticity(float dt, float epsilon) {
+  if (!(epsilon > 0.0f)) return;
   const std::size_t cells = std::size_t(n_.x) * std::size_t(n_.y) * std::size_t(n_.z);
   vorticity_.resize(cells);
   confinement_.resize(cells);
@@ -185,19 +183,18 @@ void FluidSolver::cellForces(float dt, const FluidSettings& settings, float time
     hi[axis] = std::min(c[axis] + 1, n_[axis] - 1);
     return (value(hi) - value(lo)) / (float(hi[axis] - lo[axis]) * h_[axis]);
   };
-  if (epsilon > 0.0f)
-    slabs(n_.z, [&](int k0, int k1) {
-      for (int k = k0; k < k1; ++k)
-        for (int j = 0; j < n_.y; ++j)
-          for (int i = 0; i < n_.x; ++i) {
-            const glm::ivec3 c(i, j, k);
-            const auto velocity = [&](glm::ivec3 at) { return cellVelocity(at); };
-            const glm::vec3 dx = across(c, 0, velocity), dy = across(c, 1, velocity),
-                            dz = across(c, 2, velocity);
-            const glm::vec3 w(dy.z - dz.y, dz.x - dx.z, dx.y - dy.x);
-            vorticity_[cell(i, j, k)] = glm::vec4(w, glm::length(w));
-          }
-    });
+  slabs(n_.z, [&](int k0, int k1) {
+    for (int k = k0; k < k1; ++k)
+      for (int j = 0; j < n_.y; ++j)
+        for (int i = 0; i < n_.x; ++i) {
+          const glm::ivec3 c(i, j, k);
+          const auto velocity = [&](glm::ivec3 at) { return cellVelocity(at); };
+          const glm::vec3 dx = across(c, 0, velocity), dy = across(c, 1, velocity),
+                          dz = across(c, 2, velocity);
+          const glm::vec3 w(dy.z - dz.y, dz.x - dx.z, dx.y - dy.x);
+          vorticity_[cell(i, j, k)] = glm::vec4(w, glm::length(w));
+        }
+  });
   const float h = std::min({h_.x, h_.y, h_.z});
   slabs(n_.z, [&](int k0, int k1) {
     for (int k = k0; k < k1; ++k)
@@ -207,21 +204,13 @@ void FluidSolver::cellForces(float dt, const FluidSettings& settings, float time
           const std::size_t at = cell(i, j, k);
           confinement_[at] = glm::vec4(0.0f);
           if (solid_[at]) continue;
-          glm::vec3 force(0.0f);
-          if (intensity > 0.0f) {
-            const glm::vec3 u = cellVelocity(c);
-            const glm::vec3 x = bounds_.min + glm::vec3(c) * h_;
-            force += (intensity * glm::dot(u, u) / size) * eddyPattern(x, size, time);
-          }
-          if (epsilon > 0.0f) {
-            const auto magnitude = [&](glm::ivec3 q) { return vorticity_[cell(q.x, q.y, q.z)].w; };
-            const glm::vec3 eta(across(c, 0, magnitude), across(c, 1, magnitude),
-                                across(c, 2, magnitude));
-            const float length = glm::length(eta);
-            if (length > 1e-20f)
-              force += epsilon * h * glm::cross(eta / length, glm::vec3(vorticity_[at]));
-          }
-          confinement_[at] = glm::vec4(force, 0.0f);
+          const auto magnitude = [&](glm::ivec3 q) { return vorticity_[cell(q.x, q.y, q.z)].w; };
+          const glm::vec3 eta(across(c, 0, magnitude), across(c, 1, magnitude),
+                              across(c, 2, magnitude));
+          const float length = glm::length(eta);
+          if (!(length > 1e-20f)) continue;
+          confinement_[at] =
+              glm::vec4(epsilon * h * glm::cross(eta / length, glm::vec3(vorticity_[at])), 0.0f);
         }
   });
   // Each free face between two cells gains dt times the mean of their forces.
@@ -431,8 +420,10 @@ void FluidSolver::step(float dt, const FluidSettings& settings, const FluidForce
   if (!(dt > 0.0f)) return;
   setBoundaries(settings);
   applyForces(dt, forces);
-  cellForces(dt, settings, float(time_));
+  confineVorticity(dt, settings.vorticity);
   time_ += dt;
+  eddyIntensity_ = settings.turbulence;
+  eddySize_ = std::max(settings.eddySize, 1e-3f);
   advect(dt);
   diffuse(dt, settings.viscosity);
   setBoundaries(settings);
@@ -448,7 +439,11 @@ VectorField FluidSolver::velocityField() const {
         // free-slip ground's), so dust resting on the terrain, which lies
         // between the two cells' centres, feels the flow over it.
         const bool ground = solid_[cell(i, j, k)] && k + 1 < n_.z && !solid_[cell(i, j, k + 1)];
-        const glm::vec3 v = cellVelocity({i, j, ground ? k + 1 : k});
+        glm::vec3 v = cellVelocity({i, j, ground ? k + 1 : k});
+        if (eddyIntensity_ > 0.0f) {
+          const glm::vec3 x = bounds_.min + glm::vec3(float(i), float(j), float(k)) * h_;
+          v += (eddyIntensity_ * glm::length(v)) * eddyPattern(x, eddySize_, float(time_));
+        }
         out.at(i, j, k) = ground ? glm::vec3(v.x, v.y, 0.0f) : v;
       }
   return out;

@@ -8,11 +8,6 @@
 //      the cells' velocities), N = grad|w| / |grad|w||, a force
 //      epsilon h (N x w) on the cell, each face the mean of its two cells';
 //      it puts back the small swirls the coarse grid's advection smears out;
-//      forced eddies (settings.turbulence = I, eddySize = L): a cell moving
-//      at speed s gains I s^2 / L times eddyPattern() at its centre, so
-//      where the air is fast it churns with fluctuations of about I s over
-//      an eddy's turnover time L / s; the coarse grid cannot make the
-//      turbulence of a wall jet itself, and it is what lifts the dust;
 //   2. advection: each face's velocity is what the flow brings to it from
 //      where it was dt ago (semi-Lagrangian: a straight backtrace with the
 //      face's velocity, a trilinear sample), unconditionally stable;
@@ -26,7 +21,11 @@
 //      are independent), warm-started from the last step's; the face
 //      velocities lose its gradient. maxDivergence() says what is left.
 // The velocity at the field's points (the average of each cell's faces) is
-// the field particles move through (velocityField()). The work is split over
+// the field particles move through (velocityField()), with subgrid eddies
+// (settings.turbulence = I, eddySize = L): each point's velocity u gains
+// I |u| times eddyPattern() there, fluctuations of about I |u| the particles
+// feel, which the flow itself does not (so they cannot feed on themselves):
+// the turbulence of a wall jet, too fine for the grid, which lifts the dust. The work is split over
 // the machine's threads (ParallelFor) in a way that gives the same result
 // whatever their number or timing.
 #pragma once
@@ -57,7 +56,7 @@ struct FluidForces {
   float rotorPressure = 0.0f;
 };
 
-// The forced eddies' pattern at x and time t: the curl of three gradient
+// The subgrid eddies' pattern at x and time t: the curl of three gradient
 // noises (CurlNoiseField's, seed kEddySeed) at x / size + t * kEddyDrift, so
 // the pattern renews about once a second; its GLSL twin is fluid_cells.comp's.
 glm::vec3 eddyPattern(const glm::vec3& x, float size, float time);
@@ -100,11 +99,12 @@ class FluidSolver {
   // The flow's velocity at a point (each component sampled on its own faces).
   glm::vec3 velocityAt(const glm::vec3& p) const;
 
-  // Simulated seconds stepped since the start (the forced eddies' clock).
+  // Simulated seconds stepped since the start (the subgrid eddies' clock).
   double time() const { return time_; }
 
  private:
   double time_ = 0.0;
+  float eddyIntensity_ = 0.0f, eddySize_ = 1.0f;  // the last step's subgrid eddies
   enum class Side : std::uint8_t { Wall, Open, Inflow };
 
   std::size_t cell(int i, int j, int k) const {
@@ -125,8 +125,8 @@ class FluidSolver {
   }
   float sampleFaces(const std::vector<float>& faces, int axis, const glm::vec3& p) const;
   void applyForces(float dt, const FluidForces& forces);
-  // Vorticity confinement and the forced eddies, per cell, then onto the faces.
-  void cellForces(float dt, const FluidSettings& settings, float time);
+  // Vorticity confinement, per cell, then onto the faces.
+  void confineVorticity(float dt, float epsilon);
   // The velocity at cell c's centre (the mean of its faces), 0 in a solid cell.
   glm::vec3 cellVelocity(glm::ivec3 c) const;
   void advect(float dt);

@@ -59,9 +59,9 @@ TEST_F(GpuFluidSolverTest, StepsAsTheCpuReferenceDoes) {
   EXPECT_GT(moved, 0.1f);
 }
 
-// The forced eddies alone (no confinement): the same pattern on both, moving
-// with each solver's clock; and they do change the flow.
-TEST_F(GpuFluidSolverTest, ForcesTheSameEddiesAsTheCpuReference) {
+// The subgrid eddies (no confinement): the same pattern on both, moving with
+// each solver's clock; and they do change the field the particles feel.
+TEST_F(GpuFluidSolverTest, AddsTheSameSubgridEddiesAsTheCpuReference) {
   const Box box{{-2, -2, 0}, {2, 2, 2}};
   const glm::ivec3 dims(12, 12, 8);
   VectorField start(box, dims);
@@ -90,8 +90,8 @@ TEST_F(GpuFluidSolverTest, ForcesTheSameEddiesAsTheCpuReference) {
     churn = std::max(churn, glm::length(a.values()[i] - c.values()[i]));
   }
   std::printf(
-      "eddies: GPU against CPU max |dv| %.3g m/s; they changed the flow by up to %.3g m/s\n", worst,
-      churn);
+      "eddies: GPU against CPU max |dv| %.3g m/s; they changed the field by up to %.3g m/s\n",
+      worst, churn);
   EXPECT_LT(worst, 1e-4f * fastest);
   EXPECT_GT(churn, 0.2f);
 }
