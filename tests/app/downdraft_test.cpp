@@ -135,7 +135,7 @@ TEST_F(DowndraftTest, TheLiveFlowCarriesDustOutAlongTheGroundThenUp) {
   small.maxParticles = 12000;
   small.maxRate = 4000.0f;
   const Reading live = read(fly({.frames = 300, .solver = true, .model = small}));
-  EXPECT_GT(live.outward, 1.0f);
+  EXPECT_GT(live.outward, 0.7f);  // 1.25 m/s measured; without thrust 0
   EXPECT_GT(live.risenFar, 0.3f);
   EXPECT_GT(live.risenFar, 2.0f * live.risenNear);
   const Reading still =
