@@ -67,13 +67,22 @@ FluidSolver::FluidSolver(const Box& bounds, glm::ivec3 dims, const VectorField* 
 
 FluidSolver::~FluidSolver() = default;
 
-void FluidSolver::slabs(int count, const std::function<void(int, int)>& body) {
+void FluidSolver::slabs(int count, const std::function<void(int, int)>& body) const {
   pool_->run(std::size_t(count),
              [&](std::size_t begin, std::size_t end) { body(int(begin), int(end)); });
 }
 
 void FluidSolver::setSolids(const HeightMap* terrain, const std::vector<Obstacle>& obstacles,
                             const FieldPlacement& placement) {
+  // The same solids as last time (the usual case: nothing moved): nothing to do.
+  if (solidsSet_ && terrain == lastTerrain_ && obstacles == lastObstacles_ &&
+      placement.offset == lastPlacement_.offset && placement.scale == lastPlacement_.scale &&
+      placement.rotation == lastPlacement_.rotation)
+    return;
+  solidsSet_ = true;
+  lastTerrain_ = terrain;
+  lastObstacles_ = obstacles;
+  lastPlacement_ = placement;
   for (int k = 0; k < n_.z; ++k)
     for (int j = 0; j < n_.y; ++j)
       for (int i = 0; i < n_.x; ++i) {
@@ -432,20 +441,22 @@ void FluidSolver::step(float dt, const FluidSettings& settings, const FluidForce
 
 VectorField FluidSolver::velocityField() const {
   VectorField out(bounds_, n_);
-  for (int k = 0; k < n_.z; ++k)
-    for (int j = 0; j < n_.y; ++j)
-      for (int i = 0; i < n_.x; ++i) {
-        // A solid cell under a fluid one takes its horizontal velocity (the
-        // free-slip ground's), so dust resting on the terrain, which lies
-        // between the two cells' centres, feels the flow over it.
-        const bool ground = solid_[cell(i, j, k)] && k + 1 < n_.z && !solid_[cell(i, j, k + 1)];
-        glm::vec3 v = cellVelocity({i, j, ground ? k + 1 : k});
-        if (eddyIntensity_ > 0.0f) {
-          const glm::vec3 x = bounds_.min + glm::vec3(float(i), float(j), float(k)) * h_;
-          v += (eddyIntensity_ * glm::length(v)) * eddyPattern(x, eddySize_, float(time_));
+  slabs(n_.z, [&](int k0, int k1) {
+    for (int k = k0; k < k1; ++k)
+      for (int j = 0; j < n_.y; ++j)
+        for (int i = 0; i < n_.x; ++i) {
+          // A solid cell under a fluid one takes its horizontal velocity (the
+          // free-slip ground's), so dust resting on the terrain, which lies
+          // between the two cells' centres, feels the flow over it.
+          const bool ground = solid_[cell(i, j, k)] && k + 1 < n_.z && !solid_[cell(i, j, k + 1)];
+          glm::vec3 v = cellVelocity({i, j, ground ? k + 1 : k});
+          if (eddyIntensity_ > 0.0f) {
+            const glm::vec3 x = bounds_.min + glm::vec3(float(i), float(j), float(k)) * h_;
+            v += (eddyIntensity_ * glm::length(v)) * eddyPattern(x, eddySize_, float(time_));
+          }
+          out.at(i, j, k) = ground ? glm::vec3(v.x, v.y, 0.0f) : v;
         }
-        out.at(i, j, k) = ground ? glm::vec3(v.x, v.y, 0.0f) : v;
-      }
+  });
   return out;
 }
 

@@ -103,6 +103,11 @@ class FluidSolver {
   double time() const { return time_; }
 
  private:
+  // What the solids were last made from (setSolids skips the same again).
+  bool solidsSet_ = false;
+  const HeightMap* lastTerrain_ = nullptr;
+  std::vector<Obstacle> lastObstacles_;
+  FieldPlacement lastPlacement_;
   double time_ = 0.0;
   float eddyIntensity_ = 0.0f, eddySize_ = 1.0f;  // the last step's subgrid eddies
   enum class Side : std::uint8_t { Wall, Open, Inflow };
@@ -144,7 +149,7 @@ class FluidSolver {
     return axis == 0 ? uIndex(i, j, k) : axis == 1 ? vIndex(i, j, k) : wIndex(i, j, k);
   }
   // body(k0, k1) over the z-slabs [0, slabs), split over the threads.
-  void slabs(int count, const std::function<void(int, int)>& body);
+  void slabs(int count, const std::function<void(int, int)>& body) const;
 
   Box bounds_;
   glm::ivec3 n_;
