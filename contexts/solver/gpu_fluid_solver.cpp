@@ -83,14 +83,7 @@ GpuFluidSolver::GpuFluidSolver(const Box& bounds, glm::ivec3 dims, const VectorF
 void GpuFluidSolver::setSolids(const HeightMap* terrain, const std::vector<Obstacle>& obstacles,
                                const FieldPlacement& placement) {
   // The same solids as last time (the usual case: nothing moved): nothing to do.
-  if (solidsSet_ && terrain == lastTerrain_ && obstacles == lastObstacles_ &&
-      placement.offset == lastPlacement_.offset && placement.scale == lastPlacement_.scale &&
-      placement.rotation == lastPlacement_.rotation)
-    return;
-  solidsSet_ = true;
-  lastTerrain_ = terrain;
-  lastObstacles_ = obstacles;
-  lastPlacement_ = placement;
+  if (!solidsKey_.changed(terrain, obstacles, placement)) return;
   // Cell by cell as FluidSolver::setSolids decides (w 1: solid).
   std::vector<glm::vec4> solid(std::size_t(n_.x) * std::size_t(n_.y) * std::size_t(n_.z),
                                glm::vec4(0.0f));

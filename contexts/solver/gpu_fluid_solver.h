@@ -19,6 +19,7 @@
 #include "core/field/vector_field.h"
 #include "core/obstacles/obstacle.h"
 #include "core/solver/fluid_solver.h"
+#include "core/solver/solids_key.h"
 
 namespace sandstorm {
 
@@ -44,13 +45,8 @@ class GpuFluidSolver {
   Box bounds_;
   glm::ivec3 n_;
   glm::vec3 h_;
-  double time_ = 0.0;
-  // What the solids were last made from (setSolids skips the same again).
-  bool solidsSet_ = false;
-  const HeightMap* lastTerrain_ = nullptr;
-  std::vector<Obstacle> lastObstacles_;
-  FieldPlacement
-      lastPlacement_;  // simulated seconds stepped (the subgrid eddies' clock, as FluidSolver's)
+  double time_ = 0.0;    // simulated seconds stepped (the subgrid eddies' clock, as FluidSolver's)
+  SolidsKey solidsKey_;  // what the solids were last made from
   gl::Program facesProgram_, cellsProgram_;
   gl::Buffer block_, face_[3], out_[3], pressure_, divergence_, solid_, stencil_, diagonal_,
       vorticity_, confinement_, points_;

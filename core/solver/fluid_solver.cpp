@@ -75,14 +75,7 @@ void FluidSolver::slabs(int count, const std::function<void(int, int)>& body) co
 void FluidSolver::setSolids(const HeightMap* terrain, const std::vector<Obstacle>& obstacles,
                             const FieldPlacement& placement) {
   // The same solids as last time (the usual case: nothing moved): nothing to do.
-  if (solidsSet_ && terrain == lastTerrain_ && obstacles == lastObstacles_ &&
-      placement.offset == lastPlacement_.offset && placement.scale == lastPlacement_.scale &&
-      placement.rotation == lastPlacement_.rotation)
-    return;
-  solidsSet_ = true;
-  lastTerrain_ = terrain;
-  lastObstacles_ = obstacles;
-  lastPlacement_ = placement;
+  if (!solidsKey_.changed(terrain, obstacles, placement)) return;
   for (int k = 0; k < n_.z; ++k)
     for (int j = 0; j < n_.y; ++j)
       for (int i = 0; i < n_.x; ++i) {

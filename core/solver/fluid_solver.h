@@ -42,6 +42,7 @@
 #include "core/field/vector_field.h"
 #include "core/obstacles/obstacle.h"
 #include "core/solver/fluid_settings.h"
+#include "core/solver/solids_key.h"
 #include "core/util/parallel_for.h"
 
 namespace sandstorm {
@@ -103,11 +104,7 @@ class FluidSolver {
   double time() const { return time_; }
 
  private:
-  // What the solids were last made from (setSolids skips the same again).
-  bool solidsSet_ = false;
-  const HeightMap* lastTerrain_ = nullptr;
-  std::vector<Obstacle> lastObstacles_;
-  FieldPlacement lastPlacement_;
+  SolidsKey solidsKey_;  // what the solids were last made from
   double time_ = 0.0;
   float eddyIntensity_ = 0.0f, eddySize_ = 1.0f;  // the last step's subgrid eddies
   enum class Side : std::uint8_t { Wall, Open, Inflow };

@@ -174,6 +174,29 @@ TEST(FluidSolver, SubgridEddiesShakeTheFieldNotTheFlow) {
   EXPECT_NEAR(b.time(), 0.3, 1e-6);
 }
 
+// Solids are remade only when something moved, and then they follow it.
+TEST(FluidSolver, SolidsFollowAMovedObstacle) {
+  const Box box{{-2, -2, 0}, {2, 2, 2}};
+  FluidSolver solver(box, glm::ivec3(9, 9, 5));
+  Obstacle ball;
+  ball.position = {-1.0f, 0.0f, 1.0f};
+  ball.radius = 0.6f;
+  solver.setSolids(nullptr, {ball});
+  EXPECT_TRUE(solver.solid(2, 4, 2));  // (-1, 0, 1)
+  EXPECT_FALSE(solver.solid(6, 4, 2));
+  solver.setSolids(nullptr, {ball});  // the same: unchanged
+  EXPECT_TRUE(solver.solid(2, 4, 2));
+  ball.position.x = 1.0f;
+  solver.setSolids(nullptr, {ball});
+  EXPECT_FALSE(solver.solid(2, 4, 2));
+  EXPECT_TRUE(solver.solid(6, 4, 2));  // (1, 0, 1)
+  FieldPlacement moved;
+  moved.offset = {2.0f, 0.0f, 0.0f};  // the field moved 2 m along x: the ball is at its x = -1
+  solver.setSolids(nullptr, {ball}, moved);
+  EXPECT_TRUE(solver.solid(2, 4, 2));
+  EXPECT_FALSE(solver.solid(6, 4, 2));
+}
+
 // Taylor-Green: u = U sin(kx) cos(ky), v = -U cos(kx) sin(ky) in a closed box
 // of side pi/k (walls on every side, which it slides along). Viscosity nu
 // makes its energy decay as exp(-2 nu (kx^2 + ky^2) t); the scheme's own
