@@ -9,6 +9,8 @@
 // something else meanwhile (a file loaded from the menu, the helicopter's
 // wash baked again) becomes its new base. It also writes the composition as
 // a configuration block (save) and the composed grid as .vti or .vdb (bake).
+// While the live flow runs (solver.enabled) it makes the field, starting from
+// the composed one; the editor waits and applies its primitives again after.
 // Main thread; update() once a frame after MainContext::next().
 #pragma once
 
@@ -40,6 +42,7 @@ class FieldEditor {
   std::shared_ptr<const FieldUpdate> base_;       // the field the primitives are added to
   std::shared_ptr<const VectorField> lastField_;  // the grid it handed over last
   std::vector<FieldPrimitive> applied_;           // the active primitives in lastField_
+  bool waiting_ = false;                          // for the live flow (solver.enabled)
 };
 
 }  // namespace sandstorm

@@ -75,6 +75,16 @@ TEST(FieldEditorDriver, APrimitiveReachesTheWallsInTheNextPacketAndLeavesNoTrace
   main.next();
   editor.update(main);
   EXPECT_EQ(main.field()->field, loaded);
+  // While the live flow runs the editor waits (the flow makes the field); after, it applies.
+  main.set("solver.enabled", true);
+  main.set("primitive.0.kind", std::string("wind"));
+  main.next();
+  editor.update(main);
+  EXPECT_EQ(main.field()->field, loaded);
+  main.set("solver.enabled", false);
+  main.next();
+  editor.update(main);
+  EXPECT_NE(main.field()->field, loaded);
 }
 
 // sandstorm --save-field: the block, included by another configuration, gives
