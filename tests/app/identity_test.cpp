@@ -280,27 +280,27 @@ TEST(Identity, MoleculesAreTheSameOnEveryWallHoweverTheWallsAreRun) {
 TEST(Identity, TheLiveSolversFlowIsTheSameOnEveryWall) {
   const auto dir = test::scratchDir("solver");
   const std::string run =
-      " --frames 60 --set solver.enabled=true --set solver.device=gpu --hash-log ";
+      " --frames 40 --set solver.enabled=true --set solver.device=gpu --hash-log ";
   const auto threads =
       runSandstorm("--config tests/data/identity.toml" + run + (dir / "threads.txt").string());
   const auto shared = runSandstorm("--config tests/data/identity-shared.toml" + run +
                                    (dir / "shared.txt").string());
   const auto alone = runSandstorm("--config tests/data/identity.toml --walls floor" + run +
                                   (dir / "alone.txt").string());
-  const auto without = runSandstorm("--config tests/data/identity.toml --frames 60 --hash-log " +
+  const auto without = runSandstorm("--config tests/data/identity.toml --frames 40 --hash-log " +
                                     (dir / "without.txt").string());
   const auto cpu = runSandstorm("--config tests/data/identity.toml --set solver.device=cpu" +
-                                std::string(" --frames 60 --set solver.enabled=true --hash-log ") +
+                                std::string(" --frames 40 --set solver.enabled=true --hash-log ") +
                                 (dir / "cpu.txt").string());
   for (const auto* r : {&threads, &shared, &alone, &without, &cpu})
     ASSERT_EQ(r->exitCode, 0) << r->output;
-  auto floor = sameOnEveryWall(dir / "threads.txt", 60);
-  EXPECT_EQ(sameOnEveryWall(dir / "shared.txt", 60), floor);
+  auto floor = sameOnEveryWall(dir / "threads.txt", 40);
+  EXPECT_EQ(sameOnEveryWall(dir / "shared.txt", 40), floor);
   for (const HashLine& h : readHashes(dir / "alone.txt"))
     EXPECT_EQ(h.hash, floor[h.frame]) << "frame " << h.frame;
-  EXPECT_NE(sameOnEveryWall(dir / "without.txt", 60).at(59), floor[59]);
-  EXPECT_NE(sameOnEveryWall(dir / "cpu.txt", 60).at(59),
-            sameOnEveryWall(dir / "without.txt", 60).at(59));
+  EXPECT_NE(sameOnEveryWall(dir / "without.txt", 40).at(39), floor[39]);
+  EXPECT_NE(sameOnEveryWall(dir / "cpu.txt", 40).at(39),
+            sameOnEveryWall(dir / "without.txt", 40).at(39));
 }
 
 TEST(Identity, ARecordedSessionReplaysToTheSameParticles) {
