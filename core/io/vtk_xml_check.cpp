@@ -184,6 +184,12 @@ class Checker {
     if (totalBytes_ > 2.0 * double(budget_))
       fail(concat(file_, ": its arrays need ", totalBytes_, " bytes together, beyond twice the ",
                   "memory budget of ", budget_, " bytes"));
+    // Points no piece holds would be silent garbage (and VTK's structured
+    // readers leak the arrays they were filling when pieces leave gaps).
+    if (wholeExtent_ && covered_ && *covered_ != *wholeExtent_)
+      fail(concat(file_, ": the pieces' extents cover ", (*covered_)[0], "..", (*covered_)[1], " ",
+                  (*covered_)[2], "..", (*covered_)[3], " ", (*covered_)[4], "..", (*covered_)[5],
+                  " of the WholeExtent '", wholeText_, "': points without data"));
   }
 
  private:
@@ -299,6 +305,13 @@ class Checker {
               e[std::size_t(i + 1)] > w[std::size_t(i + 1)])
             fail(concat(file_, ": ", what, " '", extent->second, "' reaches outside the ",
                         "WholeExtent '", wholeText_, "' along ", "xyz"[i / 2]));
+        }
+        // What the pieces cover together: it must be the whole extent.
+        if (!covered_) covered_ = e;
+        for (int i = 0; i < 6; i += 2) {
+          (*covered_)[std::size_t(i)] = std::min((*covered_)[std::size_t(i)], e[std::size_t(i)]);
+          (*covered_)[std::size_t(i + 1)] =
+              std::max((*covered_)[std::size_t(i + 1)], e[std::size_t(i + 1)]);
         }
         std::array<std::uint64_t, 3> n{};
         for (int a = 0; a < 3; ++a) {
@@ -555,6 +568,7 @@ class Checker {
   int piece_ = 0;
   std::optional<std::array<std::uint64_t, 3>> dims_;
   std::optional<std::array<long long, 6>> wholeExtent_;
+  std::optional<std::array<long long, 6>> covered_;  // the pieces' extents together
   std::string wholeText_;
   std::optional<std::uint64_t> points_;
   std::size_t coordinate_ = 0;
