@@ -27,13 +27,14 @@ void FieldEditor::update(MainContext& main) {
   // The live flow makes the field while it runs (from the field it started
   // from, the primitives included); the editor waits, or the two would take
   // turns making each other's field their base.
-  const bool solving = main.state().solver.enabled;
-  if (solving != waiting_ && !activeOf(main.state()).empty())
+  const ParticleState state = main.state();  // one copy a frame
+  const bool solving = state.solver.enabled;
+  const std::vector<FieldPrimitive> active = activeOf(state);
+  if (solving != waiting_ && !active.empty())
     log::info(solving ? "field editor: the live flow makes the field now; primitives wait"
                       : "field editor: the live flow stopped; primitives apply again");
   waiting_ = solving;
   if (solving) return;
-  const std::vector<FieldPrimitive> active = activeOf(main.state());
   const std::shared_ptr<const FieldUpdate> current = main.field();
   // Another field took over since the last grid handed over: it is the base now.
   const bool replaced = lastField_ && (!current || current->field != lastField_);

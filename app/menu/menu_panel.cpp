@@ -313,24 +313,25 @@ void MenuPanel::editorSection(const ParticleState& state) {
   std::snprintf(buffer, sizeof buffer, "%s", editorPath_.c_str());
   if (ImGui::InputText("file", buffer, sizeof buffer)) editorPath_ = buffer;
   remember("editor:file");
-  for (const char* what : {"Save", "Bake"}) {
-    if (what[0] == 'B') ImGui::SameLine();
-    if (ImGui::Button(what)) {
-      // Save writes the .toml block; Bake the grid, .vti unless a .vdb is named.
+  // Save writes the .toml block; Bake the grid, .vti unless a .vdb is named.
+  const auto write = [&](const char* label, const char* button, const char* done,
+                         const char* extension, bool orVdb) {
+    if (ImGui::Button(label)) {
       std::filesystem::path path = editorPath_;
-      if (what[0] == 'S')
-        path.replace_extension(".toml");
-      else if (path.extension() != ".vdb")
-        path.replace_extension(".vti");
+      if (path.extension() != extension && !(orVdb && path.extension() == ".vdb"))
+        path.replace_extension(extension);
       try {
         writer_(path.string());
-        message_ = std::string(what[0] == 'S' ? "saved " : "baked ") + path.string();
+        message_ = std::string(done) + " " + path.string();
       } catch (const Error& e) {
         message_ = e.what();
       }
     }
-    remember(std::string("button:") + (what[0] == 'S' ? "save-field" : "bake-field"));
-  }
+    remember(button);
+  };
+  write("Save", "button:save-field", "saved", ".toml", false);
+  ImGui::SameLine();
+  write("Bake", "button:bake-field", "baked", ".vti", true);
 }
 
 void MenuPanel::attributeWidget(const AttributeInfo& info, const std::string& key,

@@ -67,23 +67,19 @@ std::string fieldEditorBlock(const FieldSpec& field, std::span<const FieldPrimit
   out << "offset = " << vec(field.placement.offset) << "\nscale = " << number(field.placement.scale)
       << "\nrotation_deg = " << vec(field.rotationDegrees) << "\n";
 
-  const AttributeTable& table = AttributeTable::instance();
+  // The kinds' names as the attribute table spells them.
+  const std::vector<std::string>& kinds =
+      AttributeTable::instance().lookup("primitive.0.kind").choices;
   // Slots up to the last filled one, empty ones as kind none: they keep their numbers.
   std::size_t used = primitives.size();
   while (used > 0 && primitives[used - 1].kind == PrimitiveKind::None)
     --used;
-  ParticleState holder;
-  holder.primitives.assign(primitives.begin(), primitives.end());
   for (std::size_t i = 0; i < used; ++i) {
-    const std::string prefix = "primitive." + std::to_string(i) + ".";
-    const auto text = [&](const char* key) {
-      return std::get<std::string>(table.get(holder, prefix + key));
-    };
     const FieldPrimitive& p = primitives[i];
-    out << "\n[[primitive]]\nkind = " << quoted(text("kind")) << "\nposition = " << vec(p.position)
-        << "\naxis = " << vec(p.axis) << "\nstrength = " << number(p.strength)
-        << "\nradius = " << number(p.radius) << "\nenabled = " << (p.enabled ? "true" : "false")
-        << "\n";
+    out << "\n[[primitive]]\nkind = " << quoted(kinds.at(std::size_t(p.kind)))
+        << "\nposition = " << vec(p.position) << "\naxis = " << vec(p.axis)
+        << "\nstrength = " << number(p.strength) << "\nradius = " << number(p.radius)
+        << "\nenabled = " << (p.enabled ? "true" : "false") << "\n";
   }
   return out.str();
 }
