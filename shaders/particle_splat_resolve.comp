@@ -1,8 +1,10 @@
 #version 450 core
 // ParticleSplat, last step: turns each pixel's sums into what ParticleRender's
-// blending leaves in the particle buffers (resolveSplat) and zeroes the sums
-// for the next view. Reads and writes a pixel's sums (kSplatStride = 8 uints,
-// one 32-byte sector) as two uvec4.
+// blending leaves in the particle buffers (resolveSplat) and zeroes the
+// full-resolution sums for the next view (ParticleSplat clears the coarser
+// levels', which many pixels read). Reads a pixel's sums (kSplatStride = 8
+// uints, one 32-byte sector) as two uvec4; a coarser level's (render.
+// splat_detail) bilinearly between the four level pixels around it.
 #include "render_block.glsl"
 #include "splat_common.glsl"
 #include "view_block.glsl"
@@ -15,20 +17,47 @@ layout(rgba16f, binding = 1) writeonly uniform image2D uNormal;
 layout(r16f, binding = 2) writeonly uniform image2D uLight;
 layout(location = 0) uniform ivec2 uSize;
 
+// Adds `weight` times the sums at `index` (pixels from the buffer's start).
+void addSums(uint index, float weight, inout float sums[kSplatChannels]) {
+  uvec4 first = accum[index * 2u], second = accum[index * 2u + 1u];
+  sums[0] += weight * float(first.x);
+  sums[1] += weight * float(first.y);
+  sums[2] += weight * float(first.z);
+  sums[3] += weight * float(int(first.w));
+  sums[4] += weight * float(int(second.x));
+  sums[5] += weight * float(int(second.y));
+}
+
+// Adds a coarser level's sums at view pixel p, interpolated bilinearly
+// between the centres of its pixels (clamped at the level's edges).
+void addLevel(int level, ivec2 p, inout float sums[kSplatChannels]) {
+  ivec2 size = splatLevelSize(uSize, level);
+  vec2 at = (vec2(p) + 0.5) / float(1 << level) - 0.5;
+  ivec2 i0 = ivec2(floor(at));
+  vec2 f = at - vec2(i0);
+  uint offset = splatLevelOffset(uSize, level);
+  for (int dy = 0; dy <= 1; ++dy)
+    for (int dx = 0; dx <= 1; ++dx) {
+      float w = (dx == 0 ? 1.0 - f.x : f.x) * (dy == 0 ? 1.0 - f.y : f.y);
+      if (w == 0.0) continue;
+      ivec2 q = clamp(i0 + ivec2(dx, dy), ivec2(0), size - 1);
+      addSums(offset + uint(q.y) * uint(size.x) + uint(q.x), w, sums);
+    }
+}
+
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (p.x >= uSize.x || p.y >= uSize.y) return;
-  uint base = (uint(p.y) * uint(uSize.x) + uint(p.x)) * 2u;
-  uvec4 first = accum[base], second = accum[base + 1u];
-  if (first.z == 0u) {  // nothing splatted here (each contribution adds at least 8 to channel 2)
-    imageStore(uColor, p, vec4(0.0));
-    imageStore(uNormal, p, vec4(0.0));
-    imageStore(uLight, p, vec4(0.0));
-    return;
+  float sums[kSplatChannels] = float[](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
+  uint index = uint(p.y) * uint(uSize.x) + uint(p.x);
+  // Each contribution adds at least 8 to channel 2: zero means nothing was
+  // splatted here, and the sums need no zeroing.
+  if (accum[index * 2u].z != 0u) {
+    addSums(index, 1.0, sums);
+    accum[index * 2u] = uvec4(0u);
+    accum[index * 2u + 1u] = uvec4(0u);
   }
-  accum[base] = uvec4(0u);
-  accum[base + 1u] = uvec4(0u);
-  uint sums[kSplatChannels] = uint[](first.x, first.y, first.z, first.w, second.x, second.y);
+  for (int level = 1; level < uSplatLevels; ++level) addLevel(level, p, sums);
   vec4 color, normal;
   float light;
   resolveSplat(sums, color, normal, light);

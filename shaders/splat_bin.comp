@@ -1,7 +1,7 @@
 #version 450 core
 // ParticleSplat, tiled variant, steps 2 (count) and 4 (scatter): workgroup g
 // takes particles [g * perGroup, (g + 1) * perGroup) and finds the tiles each
-// covers, counting them in a histogram in shared memory, so a dense tile costs
+// covers on its level's grid (splat_common.glsl), counting them in a histogram in shared memory, so a dense tile costs
 // one global atomic a workgroup, not one a particle.
 //   count (uScatter false): adds the histogram to the tiles' counts; what
 //     each add returns is this workgroup's place in the tile's list (groupBase).
@@ -34,7 +34,6 @@ layout(std430, binding = 6) restrict buffer SplatAccumulation { uint accum[]; };
 layout(std430, binding = 8) writeonly restrict buffer TileLists { uvec4 tileList[]; };  // splat records
 layout(std430, binding = 9) readonly restrict buffer TileStarts { uint tileStart[]; };
 layout(std430, binding = 10) restrict buffer GroupBase { uint groupBase[]; };  // [group][tile]
-layout(location = 0) uniform ivec2 uTiles;  // tiles across, down
 layout(location = 1) uniform bool uScatter;
 layout(location = 2) uniform uint uListCapacity;
 
@@ -44,7 +43,8 @@ shared uint sBins[kSplatMaxTiles];
 
 void main() {
   uint lid = gl_LocalInvocationIndex;
-  uint tiles = uint(uTiles.x * uTiles.y);
+  ivec2 size = ivec2(view.viewport.zw);
+  uint tiles = splatTileOffset(size, uSplatLevels);  // of every level
   uint group = gl_WorkGroupID.x;
   // Scatter: each tile's bin starts at this workgroup's first slot in the
   // tile's list (entries of tiles it has no particles in are never used).
@@ -62,19 +62,22 @@ void main() {
 #else
     const vec3 velocity = vec3(0.0);
 #endif
-    if (!splatCentre(pl.xyz, velocity, where) || !splatBounds(where, s)) continue;
+    if (!splatCentre(pl.xyz, velocity, where)) continue;
+    int level = splatLevelOf(where);
+    if (!splatBounds(where, level, s)) continue;
     uvec4 record = uvec4(where, uScatter ? splatLook(pl, velocityKind[i]) : 0u);
     ivec2 t0 = s.lo / kSplatTile, t1 = s.hi / kSplatTile;
+    uint first = splatTileOffset(size, level), across = uint(splatLevelTiles(size, level).x);
     for (int ty = t0.y; ty <= t1.y; ++ty)
       for (int tx = t0.x; tx <= t1.x; ++tx) {
-        uint tile = uint(ty * uTiles.x + tx);
+        uint tile = first + uint(ty) * across + uint(tx);
         uint slot = atomicAdd(sBins[tile], 1u);
         if (!uScatter) continue;
         if (slot < uListCapacity) {
           tileList[slot] = record;
         } else {
           ivec2 origin = ivec2(tx, ty) * kSplatTile;
-          unpackSplat(record, s);
+          unpackSplat(record, level, s);
           addSplat(s, max(s.lo, origin), min(s.hi, origin + kSplatTile - 1));
         }
       }

@@ -24,3 +24,35 @@ const float kSplatScale = 4096.0;
 const int kSplatTile = 32;
 const uint kSplatMaxTiles = 8192u;
 const uint kSplatMaxBinGroups = 1024u;
+// Levels (render.splat_detail): a splat wider than the detail is drawn on a
+// coarser grid instead, level L's pixels 2^L view pixels wide (up to
+// kSplatLevels levels), so it covers at most about detail^2 pixels whatever
+// its size; the resolve adds each level's sums, bilinearly upsampled, to the
+// full-resolution ones (the sums are linear, so this is the same image
+// function sampled more coarsely). The levels' sums follow one another in
+// the buffer, and so do their tiles in the tiled pass's histogram.
+const int kSplatLevels = 4;
+
+ivec2 splatLevelSize(ivec2 size, int level) { return (size + (1 << level) - 1) >> level; }
+
+// The first pixel of a level's sums in the buffer.
+uint splatLevelOffset(ivec2 size, int level) {
+  uint offset = 0u;
+  for (int l = 0; l < level; ++l) {
+    ivec2 s = splatLevelSize(size, l);
+    offset += uint(s.x) * uint(s.y);
+  }
+  return offset;
+}
+
+ivec2 splatLevelTiles(ivec2 size, int level) { return (splatLevelSize(size, level) + kSplatTile - 1) / kSplatTile; }
+
+// The first of a level's tiles; splatTileOffset(size, levels) is their number.
+uint splatTileOffset(ivec2 size, int level) {
+  uint offset = 0u;
+  for (int l = 0; l < level; ++l) {
+    ivec2 t = splatLevelTiles(size, l);
+    offset += uint(t.x) * uint(t.y);
+  }
+  return offset;
+}

@@ -8,8 +8,9 @@
 layout(binding = 2) uniform sampler2D uSprite;      // R8 puff, as ParticleRender's
 layout(binding = 3) uniform sampler2D uSceneDepth;  // the scene's depth, this view's size
 
-// Pixels: larger particles are drawn this large (use billboards for them).
-// Below 16 so a still splat spans at most 33 pixels, two 32-pixel tiles, a side.
+// Pixels of its level: larger particles are drawn this large (levels draw
+// them on coarser grids first; past the last, use billboards). Below 16 so a
+// still splat spans at most 33 pixels, two 32-pixel tiles, a side.
 const float kMaxRadius = 15.5;
 // Pixels: motion blur smears a splat at most this far (render.shutter).
 const float kMaxSmear = 48.0;
@@ -29,7 +30,35 @@ struct Splat {
   float light;    // the share of the light reaching it through the dust
   vec2 motion;    // motion blur: where the centre was when the shutter opened, negated (radii)
   ivec2 lo, hi;   // the pixels it may cover (inclusive, inside the view)
+  int level;      // the grid it is drawn on (splat_common.glsl): pixel, radius,
+                  // motion, lo and hi are in that level's pixels
 };
+
+// How many levels this view's splats may use (ParticleSplat: 1 with
+// render.splat_detail 0, or where the levels' tiles do not fit the histogram).
+layout(location = 15) uniform int uSplatLevels;
+
+// The splat's radii in view pixels, before any level or limit.
+vec2 splatViewRadius(float distance) {
+  return 0.5 * look.params.x * vec2(view.projection[0][0], view.projection[1][1]) * 0.5 * view.viewport.zw / distance;
+}
+
+// The level a splat of those radii is drawn at: the coarsest on whose grid
+// it is still at least render.splat_detail pixels wide, so it is drawn
+// between detail and twice that wide (halving is exact, so every pass that
+// asks gets the same level).
+int splatLevel(vec2 radius) {
+  float r = max(radius.x, radius.y), detail = look.splat.x;
+  int level = 0;
+  while (level + 1 < uSplatLevels && r >= detail) {
+    r *= 0.5;
+    ++level;
+  }
+  return level;
+}
+
+// The level of a record's splat (its first three words).
+int splatLevelOf(uvec3 where) { return splatLevel(splatViewRadius(uintBitsToFloat(where.y))); }
 
 // A splat in 16 bytes, as the tiled pass lists it and both passes use it (so
 // both add the same integers): the centre's window coordinates (16-bit fixed
@@ -82,20 +111,21 @@ bool makeSplatRecord(vec4 positionLife, vec4 velocityKind, out uvec4 record) {
   return true;
 }
 
-// Where a splat is, from its record's first three words: its centre and
-// radius in pixels and the pixels it may cover. False when it shows nowhere
-// in this view.
-bool splatBounds(uvec3 where, out Splat s) {
-  s.pixel = vec2(float(where.x & 65535u), float(where.x >> 16)) / kPixelSteps - kPixelOrigin;
+// Where a splat is, from its record's first three words, on the grid of
+// `level`: its centre and radius in that level's pixels and the pixels it
+// may cover. False when it shows nowhere in this view.
+bool splatBounds(uvec3 where, int level, out Splat s) {
+  float scale = 1.0 / float(1 << level);
+  s.level = level;
+  s.pixel = (vec2(float(where.x & 65535u), float(where.x >> 16)) / kPixelSteps - kPixelOrigin) * scale;
   s.distance = uintBitsToFloat(where.y);
 #ifdef MOTION_BLUR
-  vec2 motion = unpackHalf2x16(where.z);
+  vec2 motion = unpackHalf2x16(where.z) * scale;
 #else
   const vec2 motion = vec2(0.0);
 #endif
-  vec2 size = view.viewport.zw;
-  float radius = 0.5 * look.params.x;
-  s.radius = min(radius * vec2(view.projection[0][0], view.projection[1][1]) * 0.5 * size / s.distance, vec2(kMaxRadius));
+  vec2 size = vec2(splatLevelSize(ivec2(view.viewport.zw), level));
+  s.radius = min(splatViewRadius(s.distance) * scale, vec2(kMaxRadius));
   vec2 least = min(s.pixel, s.pixel - motion) - s.radius, greatest = max(s.pixel, s.pixel - motion) + s.radius;
   if (greatest.x < 0.0 || greatest.y < 0.0 || least.x > size.x || least.y > size.y) return false;
   s.invRadius = 1.0 / s.radius;
@@ -105,14 +135,15 @@ bool splatBounds(uvec3 where, out Splat s) {
   return s.lo.x <= s.hi.x && s.lo.y <= s.hi.y;
 }
 
-// The whole splat from its record. False when it shows nowhere in this view.
-bool unpackSplat(uvec4 record, out Splat s) {
-  if (!splatBounds(record.xyz, s)) return false;
+// The whole splat from its record, on the grid of `level`. False when it
+// shows nowhere in this view.
+bool unpackSplat(uvec4 record, int level, out Splat s) {
+  if (!splatBounds(record.xyz, level, s)) return false;
   s.age = float(record.w & 1023u) / 1023.0;
   s.color = float((record.w >> 10) & 4095u) / 4095.0;
   s.light = float(record.w >> 22) / 1023.0;
   // The eye's ray through the centre's pixel, to the far plane.
-  vec4 far = view.inverseViewProjection * vec4(s.pixel / view.viewport.zw * 2.0 - 1.0, 1.0, 1.0);
+  vec4 far = view.inverseViewProjection * vec4(s.pixel * float(1 << level) / view.viewport.zw * 2.0 - 1.0, 1.0, 1.0);
   s.toEye = normalize(view.eye.xyz - far.xyz / far.w);
   // The billboard's frame, as particle_render.geom builds it.
   vec3 worldUp = abs(s.toEye.z) < 0.999 ? vec3(0.0, 0.0, 1.0) : vec3(0.0, 1.0, 0.0);
@@ -125,7 +156,7 @@ bool unpackSplat(uvec4 record, out Splat s) {
 // False when the particle shows nowhere in this view.
 bool makeSplat(vec4 positionLife, vec4 velocityKind, out Splat s) {
   uvec4 record;
-  return makeSplatRecord(positionLife, velocityKind, record) && unpackSplat(record, s);
+  return makeSplatRecord(positionLife, velocityKind, record) && unpackSplat(record, splatLevelOf(record.xyz), s);
 }
 
 #ifdef MOTION_BLUR
@@ -196,7 +227,9 @@ bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
   if (r2 > 1.0) return false;
   float shape = textureLod(uSprite, 0.5 * corner + 0.5, 0.0).r;
 #endif
-  float sceneDistance = viewDistance(texelFetch(uSceneDepth, p, 0).r);
+  // The scene's depth at the view pixel under the level pixel's centre.
+  ivec2 under = min(p * (1 << s.level) + ((1 << s.level) >> 1), ivec2(view.viewport.zw) - 1);
+  float sceneDistance = viewDistance(texelFetch(uSceneDepth, under, 0).r);
   float fade = clamp((sceneDistance - s.distance) / max(look.params.y, 1e-4), 0.0, 1.0);
   float alpha = s.opacity * shape * fade;
   if (alpha < 1.0 / 512.0) return false;
@@ -219,28 +252,28 @@ bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
   return true;
 }
 
-// The particle buffers' values from a pixel's sums: alpha is "over"'s,
-// 1 - prod(1 - alpha_i); colour, normal and light are weighted means (by
-// alpha, or with SHADOWS by -ln(1 - alpha): splat_common.glsl)
-// times it.
-void resolveSplat(uint sums[kSplatChannels], out vec4 color, out vec4 normal, out float light) {
+// The particle buffers' values from a pixel's sums (as floats, the normal's
+// signed, every level's added): alpha is "over"'s, 1 - prod(1 - alpha_i);
+// colour, normal and light are weighted means (by alpha, or with SHADOWS by
+// -ln(1 - alpha): splat_common.glsl) times it.
+void resolveSplat(float sums[kSplatChannels], out vec4 color, out vec4 normal, out float light) {
   color = vec4(0.0);
   normal = vec4(0.0);
   light = 0.0;
 #ifdef SHADOWS
-  float weight = float(sums[2]);
+  float weight = sums[2];
 #else
-  float weight = float(sums[0]);
+  float weight = sums[0];
 #endif
   if (weight <= 0.0) return;
-  float alpha = 1.0 - exp(-float(sums[2]) / kSplatScale);
+  float alpha = 1.0 - exp(-sums[2] / kSplatScale);
   // The alpha-weighted mean coordinate: the mean colour where the map is linear
   // (life), and close to it where it bends slowly (the perceptual maps).
-  float t = float(sums[1]) / weight;
+  float t = sums[1] / weight;
   color = vec4(colorAt(t) * alpha, alpha);
-  normal = vec4(vec3(int(sums[3]), int(sums[4]), int(sums[5])) / weight * alpha, alpha);
+  normal = vec4(vec3(sums[3], sums[4], sums[5]) / weight * alpha, alpha);
 #ifdef SHADOWS
-  light = float(sums[0]) / weight * alpha;
+  light = sums[0] / weight * alpha;
 #else
   light = alpha;
 #endif

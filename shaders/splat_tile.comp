@@ -1,6 +1,6 @@
 #version 450 core
 // ParticleSplat, tiled variant, step 5: one workgroup a chunk (at most
-// uChunk splat records of one tile's list; records past the list's capacity
+// uChunk splat records of one tile's list, a tile of one level's grid; records past the list's capacity
 // were added by the scatter pass). Its splats add to the tile's sums in
 // shared memory; then the workgroup adds those to the view's sums (the
 // buffer the resolve pass turns into the image): a plain store where the
@@ -25,7 +25,6 @@ layout(std430, binding = 12) readonly buffer ChunkDispatch {
   uvec4 dispatch;
   uint chunks;
 } chunkArgs;
-layout(location = 0) uniform ivec2 uTiles;
 layout(location = 1) uniform uint uChunk;  // entries a chunk
 layout(location = 2) uniform uint uListCapacity;
 
@@ -36,7 +35,8 @@ void main() {
   uint chunk = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
   if (chunk >= chunkArgs.chunks) return;  // the whole workgroup
   // The chunk's tile: the last tile whose chunks start at or before it.
-  uint lo = 0u, hi = uint(uTiles.x * uTiles.y);
+  ivec2 size = ivec2(view.viewport.zw);
+  uint lo = 0u, hi = splatTileOffset(size, uSplatLevels);
   while (hi - lo > 1u) {
     uint mid = (lo + hi) / 2u;
     if (chunkStart[mid] <= chunk) lo = mid; else hi = mid;
@@ -51,10 +51,14 @@ void main() {
   for (uint px = lid; px < kTilePixels; px += kGroup)
     for (uint c = 0u; c < kSplatChannels; ++c) sSums[c][px] = 0u;
   barrier();
-  ivec2 origin = ivec2(int(t % uint(uTiles.x)), int(t / uint(uTiles.x))) * kSplatTile;
+  // The tile's level, and where it lies on that level's grid.
+  int level = 0;
+  while (level + 1 < uSplatLevels && t >= splatTileOffset(size, level + 1)) ++level;
+  uint local = t - splatTileOffset(size, level), across = uint(splatLevelTiles(size, level).x);
+  ivec2 origin = ivec2(int(local % across), int(local / across)) * kSplatTile;
   for (uint k = begin + lid; k < end; k += kGroup) {
     Splat s;
-    if (!unpackSplat(tileList[k], s)) continue;
+    if (!unpackSplat(tileList[k], level, s)) continue;
     ivec2 a = max(s.lo, origin), b = min(s.hi, origin + kSplatTile - 1);
     for (int y = a.y; y <= b.y; ++y) {
       ivec2 row = splatRow(s, y);
@@ -67,11 +71,12 @@ void main() {
     }
   }
   barrier();
-  uint width = uint(view.viewport.z), height = uint(view.viewport.w);
+  uvec2 levelSize = uvec2(splatLevelSize(size, level));
+  uint offset = splatLevelOffset(size, level);
   for (uint px = lid; px < kTilePixels; px += kGroup) {
     uvec2 p = uvec2(origin) + uvec2(px % uint(kSplatTile), px / uint(kSplatTile));
-    if (p.x >= width || p.y >= height) continue;
-    uint base = (p.y * width + p.x) * kSplatStride;
+    if (p.x >= levelSize.x || p.y >= levelSize.y) continue;
+    uint base = (offset + p.y * levelSize.x + p.x) * kSplatStride;
     for (uint c = 0u; c < kSplatChannels; ++c) {
       uint v = sSums[c][px];
       if (v == 0u) continue;

@@ -18,6 +18,30 @@ constexpr int kTile = 32;                    // kSplatTile
 constexpr std::size_t kMaxTiles = 8192;      // kSplatMaxTiles
 constexpr std::size_t kMaxBinGroups = 1024;  // kSplatMaxBinGroups
 constexpr std::size_t kRecordBytes = 16;     // a splat record (splat_footprint.glsl)
+constexpr int kLevels = 4;                   // kSplatLevels
+constexpr GLint kLevelsUniform = 15;         // uSplatLevels (splat_footprint.glsl)
+
+// The levels' grids, as splat_common.glsl lays them out: each level's pixels
+// and tiles follow the finer levels'.
+glm::ivec2 levelSize(glm::ivec2 size, int level) {
+  return (size + (1 << level) - 1) >> level;
+}
+std::size_t levelPixels(glm::ivec2 size, int levels) {
+  std::size_t pixels = 0;
+  for (int l = 0; l < levels; ++l) {
+    const glm::ivec2 s = levelSize(size, l);
+    pixels += std::size_t(s.x) * std::size_t(s.y);
+  }
+  return pixels;
+}
+std::size_t levelTiles(glm::ivec2 size, int levels) {
+  std::size_t tiles = 0;
+  for (int l = 0; l < levels; ++l) {
+    const glm::ivec2 t = (levelSize(size, l) + kTile - 1) / kTile;
+    tiles += std::size_t(t.x) * std::size_t(t.y);
+  }
+  return tiles;
+}
 
 // Storage-buffer bindings of the splat shaders.
 enum Binding : GLuint {
@@ -108,13 +132,22 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   glBindImageTexture(2, targets.particleLight(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
 
   const glm::ivec2 size = targets.size();
-  const std::size_t pixels = std::size_t(size.x) * std::size_t(size.y);
+  // Levels where asked for; where their tiles overflow the histogram (views
+  // of more than about 6 megapixels) the tiled pass draws every splat at
+  // full resolution, as it did before levels, rather than falling back to
+  // the much slower atomic pass.
+  int levels = look.levels ? kLevels : 1;
+  const bool tiled = tiled_ && levelTiles(size, 1) <= kMaxTiles;
+  if (tiled && levelTiles(size, levels) > kMaxTiles) levels = 1;
+  const std::size_t pixels = levelPixels(size, levels);
   if (pixels > pixels_) {
     accumulation_ = allocate(pixels * kChannels * 4, "the splat sums");
     zero(accumulation_);
     pixels_ = pixels;
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAccumulation, accumulation_.id());
+  for (const gl::Program* program : {&p.splat, &p.resolve})
+    glProgramUniform1i(program->id(), kLevelsUniform, levels);
 
   prepare_.use();
   glProgramUniform1ui(prepare_.id(), 0, records.countOffset / 4);
@@ -122,24 +155,30 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
-  const glm::ivec2 tiles((size.x + kTile - 1) / kTile, (size.y + kTile - 1) / kTile);
-  // Views too large for the tiles' histogram (beyond 4K) take the atomic path.
-  if (tiled_ && std::size_t(tiles.x) * std::size_t(tiles.y) <= kMaxTiles) {
-    addTiled(p, tiles, particles.capacity());
-  } else {
+  if (tiled)
+    addTiled(p, levelTiles(size, levels), levels, particles.capacity());
+  else
     addAtomic(p);
-  }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   if (records.trails != 0 && records.trailLength >= 2)
     addTrails(p, records, particles.capacity(), look);
   // Both variants leave the sums in the buffer; the resolve turns them into
-  // the particle images and zeroes them for the next view.
+  // the particle images and zeroes the full-resolution ones for the next view.
   p.resolve.use();
   glProgramUniform2i(p.resolve.id(), 0, size.x, size.y);
   glDispatchCompute(GLuint((size.x + 15) / 16), GLuint((size.y + 15) / 16), 1);
   // ParticlePost reads the images as textures.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                  GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+                  GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+                  GL_BUFFER_UPDATE_BARRIER_BIT);
+  // The coarser levels' sums, which many pixels read, are cleared whole.
+  if (levels > 1) {
+    const std::size_t first = levelPixels(size, 1) * kChannels * 4;
+    const GLuint value = 0;
+    glClearNamedBufferSubData(accumulation_.id(), GL_R32UI, GLintptr(first),
+                              GLsizeiptr(pixels * kChannels * 4 - first), GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &value);
+  }
 }
 
 // Trails (render.trail_length) join the splats in the same sums: drawn by
@@ -182,8 +221,8 @@ void ParticleSplat::addAtomic(const Programs& p) const {
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
-void ParticleSplat::addTiled(const Programs& p, glm::ivec2 tiles, std::size_t capacity) const {
-  const std::size_t tileCount = std::size_t(tiles.x) * std::size_t(tiles.y);
+void ParticleSplat::addTiled(const Programs& p, std::size_t tileCount, int levels,
+                             std::size_t capacity) const {
   // Records in the lists: a particle of a few pixels covers one 32-pixel tile,
   // sometimes two or four; the scatter pass adds those past the end itself.
   // SANDSTORM_SPLAT_LIST sets the number (listRecords_).
@@ -211,7 +250,7 @@ void ParticleSplat::addTiled(const Programs& p, glm::ivec2 tiles, std::size_t ca
   constexpr GLintptr kBinDispatch = 32;
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_.id());
   p.bin->use();
-  glProgramUniform2i(p.bin->id(), 0, tiles.x, tiles.y);
+  glProgramUniform1i(p.bin->id(), kLevelsUniform, levels);
   glProgramUniform1i(p.bin->id(), 1, GL_FALSE);
   glProgramUniform1ui(p.bin->id(), 2, GLuint(listCapacity));
   glDispatchComputeIndirect(kBinDispatch);
@@ -229,7 +268,7 @@ void ParticleSplat::addTiled(const Programs& p, glm::ivec2 tiles, std::size_t ca
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 
   p.tile->use();
-  glProgramUniform2i(p.tile->id(), 0, tiles.x, tiles.y);
+  glProgramUniform1i(p.tile->id(), kLevelsUniform, levels);
   glProgramUniform1ui(p.tile->id(), 1, chunk_);
   glProgramUniform1ui(p.tile->id(), 2, GLuint(listCapacity));
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, chunkDispatch_.id());

@@ -53,9 +53,10 @@ namespace sandstorm {
 class ViewTargets;
 
 // What splats show beyond the particles' colour (render.shadows,
-// render.shutter > 0).
+// render.shutter > 0), and whether large ones go to coarser levels
+// (render.splat_detail > 0).
 struct SplatLook {
-  bool shadows = false, motionBlur = false;
+  bool shadows = false, motionBlur = false, levels = false;
 };
 
 class ParticleSplat {
@@ -78,7 +79,8 @@ class ParticleSplat {
   void addAtomic(const Programs& p) const;
   void addTrails(const Programs& p, const ParticleBackend::Records& records, std::size_t capacity,
                  SplatLook look) const;
-  void addTiled(const Programs& p, glm::ivec2 tiles, std::size_t capacity) const;
+  // `tileCount`: of every level's grid; `levels`: how many the view uses.
+  void addTiled(const Programs& p, std::size_t tileCount, int levels, std::size_t capacity) const;
 
   bool tiled_;
   std::uint32_t chunk_;      // tiled: list entries a workgroup

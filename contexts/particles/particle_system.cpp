@@ -135,7 +135,9 @@ bool ParticleSystem::splats(const View* view, glm::ivec2 size) const {
 void ParticleSystem::renderParticles(const ViewTargets& targets, const View* view) const {
   if (splats(view, targets.size()))
     splat_.draw(*update_, targets, render_.sprite(),
-                {.shadows = state_.render.shadows, .motionBlur = state_.render.shutter > 0.0f});
+                {.shadows = state_.render.shadows,
+                 .motionBlur = state_.render.shutter > 0.0f,
+                 .levels = state_.render.splatDetail > 0.0f});
   else
     render_.draw(*update_, targets, state_.render.mode, state_.render.order);
   if (const MoleculeHandles m = molecules()) {

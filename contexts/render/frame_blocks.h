@@ -39,8 +39,9 @@ struct alignas(16) RenderBlock {
                         // w: 1 with a grid
   glm::vec4 light;      // rgb: the direct light's colour times its strength, w: 1 with shadows
   glm::vec4 haze;       // x: render.scattering (1/m)
+  glm::vec4 splat;      // x: render.splat_detail (px)
 };
-static_assert(sizeof(RenderBlock) == (5 + ColorMap::kGpuSamples + 10) * 16);
+static_assert(sizeof(RenderBlock) == (5 + ColorMap::kGpuSamples + 11) * 16);
 
 ViewBlock makeViewBlock(const View& view, glm::ivec2 size);
 // `field`: the field the particles move in (the colour scale's default ends,

@@ -235,9 +235,14 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("render.softness", T::Float, 0, 10, "m",
                     "Particles fade out within this distance in front of scene geometry",
                     RENDER(softness)));
-  v.push_back(entry("render.splat_pixels", T::Float, 0, 64, "px",
+  v.push_back(entry("render.splat_pixels", T::Float, 0, 248, "px",
                     "Auto mode: views where particles cover at most this many pixels use splats",
                     RENDER(splatPixels)));
+  v.push_back(entry("render.splat_detail", T::Float, 0, 31, "px",
+                    "Splats wider than this many pixels are drawn on a grid of half, a quarter or "
+                    "an eighth the resolution, so a particle's cost stops growing with its size "
+                    "(0: every splat at full resolution, at most 31 pixels wide)",
+                    RENDER(splatDetail)));
   v.push_back(enumEntry("render.order", {"unsorted", "sorted"},
                         "Billboards blend in the particles' order, or sorted back to front in "
                         "each view (a GPU radix sort by depth; splats need no order)",

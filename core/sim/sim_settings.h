@@ -64,7 +64,8 @@ struct FieldPlayback {
   std::array<std::string, 3> expression{"0", "0", "0"};
 };
 
-// Splat: billboards' look, drawn by a compute pass for small particles.
+// Splat: billboards' look, drawn by a compute pass (ParticleSplat); each
+// particle wider than RenderSettings::splatDetail pixels on a coarser grid.
 // Auto: per view, splats when a particle at the field's centre covers at most
 // RenderSettings::splatPixels pixels, billboards otherwise.
 enum class RenderMode : int { Points = 0, Billboards = 1, Splat = 2, Auto = 3 };
@@ -95,7 +96,8 @@ struct RenderSettings {
   float scattering = 0.0f;     // 1/m: the air's haze, lit through the dust's shadow (0: none)
   float shutter = 0.0f;        // s: motion blur over this much of the particles' path (0: off)
   float softness = 0.3f;       // m: particles fade out this close to scene geometry
-  float splatPixels = 4.0f;    // Auto mode: splat particles up to this projected diameter
+  float splatPixels = 64.0f;   // Auto mode: splat particles up to this projected diameter
+  float splatDetail = 4.0f;    // px: splats twice this wide go to coarser grids (0: never)
   bool fieldBox = true;        // outline the field's bounds
   // Colour by a quantity (core/color): which, through which map, over which range.
   ColorQuantity colorBy = ColorQuantity::Age;

@@ -152,15 +152,62 @@ TEST_P(ParticleSplatTest, SplatsLookLikeBillboardsForSmallParticles) {
   }
 }
 
+// Particles of 10, 25 and 40 pixels (the last beyond the 31 a splat may span
+// on one grid): splats at least twice render.splat_detail wide are drawn on
+// coarser grids and upsampled. Up to 31 pixels the image is the
+// full-resolution splats' sampled more coarsely, and is compared with it
+// (splats differ from billboards by their averaged normals already, 1.9/255
+// at 10 pixels); at 40 pixels with the billboards, which full-resolution
+// splats cannot draw (they draw them 31 pixels wide).
+TEST_P(ParticleSplatTest, LargeSplatsOnCoarserGridsLookLikeSplatsAtFullResolution) {
+  for (float size : {0.6f, 1.5f, 2.4f}) {
+    SCOPED_TRACE(size);
+    ParticleState splat = cloud(RenderMode::Splat, size, true);
+    ASSERT_GT(splat.render.splatDetail, 0.0f);
+    const Image levels = render(splat, GetParam());
+    ParticleState none = splat;
+    none.emitters[0].rate = 0.0f;
+    const Image empty = render(none, GetParam());
+    splat.render.splatDetail = 0.0f;
+    const Image full = render(splat, GetParam());
+    const Image billboards = render(cloud(RenderMode::Billboards, size, true), GetParam());
+    const Difference fromFull = compare(full, levels, empty);
+    const Difference fromBillboards = compare(billboards, levels, empty);
+    const Difference clamped = compare(billboards, full, empty);
+    std::printf(
+        "%s, %.1f m (~%.0f px): splats on levels against full resolution: mean %.2f/255, %.2f%% "
+        "of pixels off by > 16; against billboards %.2f, %.2f%% (full resolution against "
+        "billboards %.2f, %.2f%%)\n",
+        GetParam(), size, size / 0.06f, fromFull.mean, 100 * fromFull.over16, fromBillboards.mean,
+        100 * fromBillboards.over16, clamped.mean, 100 * clamped.over16);
+    if (const char* dir = std::getenv("SANDSTORM_TEST_IMAGES")) {
+      const std::string tag = std::string(GetParam()) + "-" + std::to_string(int(size * 10));
+      writePng(billboards, std::string(dir) + "/large-billboards-" + tag + ".png");
+      writePng(levels, std::string(dir) + "/large-levels-" + tag + ".png");
+      writePng(full, std::string(dir) + "/large-full-" + tag + ".png");
+    }
+    EXPECT_FALSE(levels.rgba == full.rgba);  // the levels ran
+    EXPECT_GT(fromFull.changed, 0.05);
+    if (size < 2.0f) {
+      EXPECT_LT(fromFull.mean, 1.5);
+      EXPECT_LT(fromFull.over16, 0.05);
+    } else {
+      EXPECT_LT(fromBillboards.mean, 0.85 * clamped.mean);
+      EXPECT_LT(fromBillboards.over16, 0.85 * clamped.over16);
+    }
+  }
+}
+
 TEST_P(ParticleSplatTest, TiledAndAtomicSplatsAddTheSameSumsSoDrawTheSameImage) {
-  // Plain, and with shadows and motion blur (their own programs).
-  for (bool extras : {false, true}) {
-    ParticleState state = cloud(RenderMode::Splat, 0.25f, true);
-    if (extras) {
+  // Plain, with shadows and motion blur (their own programs), and particles
+  // large enough to go to coarser grids (render.splat_detail).
+  for (int variant : {0, 1, 2}) {
+    ParticleState state = cloud(RenderMode::Splat, variant == 2 ? 0.9f : 0.25f, true);
+    if (variant == 1) {
       state = shaded(state);
       state.render.shutter = 0.2f;
     }
-    SCOPED_TRACE(extras ? "shadows and motion blur" : "plain");
+    SCOPED_TRACE(variant == 0 ? "plain" : variant == 1 ? "shadows and motion blur" : "levels");
     const Image atomic = render(state, GetParam(), 2, GpuTuning{.splat = GpuTuning::Splat::Atomic});
     ParticleState none = state;
     none.emitters[0].rate = 0.0f;
@@ -178,13 +225,19 @@ TEST_P(ParticleSplatTest, TiledAndAtomicSplatsAddTheSameSumsSoDrawTheSameImage) 
   }
 }
 
-TEST_P(ParticleSplatTest, AutoSplatsSmallParticlesAndDrawsLargeOnesAsBillboards) {
+TEST_P(ParticleSplatTest, AutoSplatsParticlesUpToSplatPixelsAndDrawsLargerOnesAsBillboards) {
   const Image smallAuto = render(cloud(RenderMode::Auto, 0.18f, true), GetParam());
   const Image smallSplat = render(cloud(RenderMode::Splat, 0.18f, true), GetParam());
-  EXPECT_TRUE(smallAuto.rgba == smallSplat.rgba);  // 3 pixels <= render.splat_pixels (4)
-  const Image largeAuto = render(cloud(RenderMode::Auto, 0.6f, true), GetParam());
+  EXPECT_TRUE(smallAuto.rgba == smallSplat.rgba);  // 3 pixels
+  // 10 pixels: splats (on a coarser grid) while render.splat_pixels allows.
+  ParticleState large = cloud(RenderMode::Auto, 0.6f, true);
+  const Image largeAuto = render(large, GetParam());
+  const Image largeSplat = render(cloud(RenderMode::Splat, 0.6f, true), GetParam());
+  EXPECT_TRUE(largeAuto.rgba == largeSplat.rgba);
+  large.render.splatPixels = 8.0f;
+  const Image largeAutoBillboards = render(large, GetParam());
   const Image largeBillboards = render(cloud(RenderMode::Billboards, 0.6f, true), GetParam());
-  EXPECT_TRUE(largeAuto.rgba == largeBillboards.rgba);  // 10 pixels
+  EXPECT_TRUE(largeAutoBillboards.rgba == largeBillboards.rgba);
 }
 
 INSTANTIATE_TEST_SUITE_P(Backends, ParticleSplatTest, ::testing::Values("tf-gs", "compute"),
