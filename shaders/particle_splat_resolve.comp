@@ -9,6 +9,7 @@
 #include "splat_common.glsl"
 #include "view_block.glsl"
 #include "splat_footprint.glsl"
+#include "splat_occupied.glsl"
 
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(std430, binding = 6) restrict buffer SplatAccumulation { uvec4 accum[]; };
@@ -35,6 +36,13 @@ void addLevel(int level, ivec2 p, inout float sums[kSplatChannels]) {
   vec2 at = (vec2(p) + 0.5) / float(1 << level) - 0.5;
   ivec2 i0 = ivec2(floor(at));
   vec2 f = at - vec2(i0);
+  // Nothing to read where no splat of this level touched the taps' tiles.
+  ivec2 t0 = clamp(i0, ivec2(0), size - 1) / kSplatTile, t1 = clamp(i0 + 1, ivec2(0), size - 1) / kSplatTile;
+  uint first = splatTileOffset(uSize, level), across = uint(splatLevelTiles(uSize, level).x);
+  bool marked = false;
+  for (int ty = t0.y; ty <= t1.y; ++ty)
+    for (int tx = t0.x; tx <= t1.x; ++tx) marked = marked || occupied[first + uint(ty) * across + uint(tx)] != 0u;
+  if (!marked) return;
   uint offset = splatLevelOffset(uSize, level);
   for (int dy = 0; dy <= 1; ++dy)
     for (int dx = 0; dx <= 1; ++dx) {

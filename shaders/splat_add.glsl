@@ -1,8 +1,12 @@
 // Adds splat s's footprint over the pixels lo..hi (inclusive, in its level's
 // pixels) to its level's sums with global atomics. Needs splat_footprint.glsl
 // and the sums declared as `accum` (kSplatStride uints a pixel, each level's
-// rows of its width, one level after another: splat_common.glsl).
+// rows of its width, one level after another: splat_common.glsl), and marks
+// a coarser level's tiles it adds to (splat_occupied.glsl).
+#include "splat_occupied.glsl"
+
 void addSplat(Splat s, ivec2 lo, ivec2 hi) {
+  markSplatTiles(s.level, lo, hi);
   ivec2 size = ivec2(view.viewport.zw);
   uint width = uint(splatLevelSize(size, s.level).x), offset = splatLevelOffset(size, s.level);
   for (int y = lo.y; y <= hi.y; ++y) {

@@ -28,6 +28,8 @@ layout(std430, binding = 12) readonly buffer ChunkDispatch {
 layout(location = 1) uniform uint uChunk;  // entries a chunk
 layout(location = 2) uniform uint uListCapacity;
 
+#include "splat_occupied.glsl"
+
 const uint kTilePixels = uint(kSplatTile * kSplatTile);
 shared uint sSums[kSplatChannels][kTilePixels];
 
@@ -71,6 +73,7 @@ void main() {
     }
   }
   barrier();
+  if (lid == 0u && level > 0 && end > begin) occupied[t] = 1u;
   uvec2 levelSize = uvec2(splatLevelSize(size, level));
   uint offset = splatLevelOffset(size, level);
   for (uint px = lid; px < kTilePixels; px += kGroup) {

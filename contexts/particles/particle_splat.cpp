@@ -56,7 +56,8 @@ enum Binding : GLuint {
   kGroupBase = 10,
   kChunkStarts = 11,
   kChunkDispatch = 12,
-  kTrailDispatch = 13
+  kTrailDispatch = 13,
+  kOccupied = 14
 };
 
 gl::Buffer allocate(std::size_t bytes, const char* what) {
@@ -86,6 +87,12 @@ ParticleSplat::ParticleSplat(const GpuTuning& tuning)
       dispatch_(gl::createBuffer()),
       chunkDispatch_(gl::createBuffer()) {
   glNamedBufferStorage(dispatch_.id(), 64, nullptr, 0);
+  // A storage buffer may hold at most GL_MAX_SHADER_STORAGE_BLOCK_SIZE bytes
+  // (2 GB on NVIDIA's driver: 134 million records); the scatter pass adds
+  // the records past the lists' end itself.
+  GLint64 maxBlock = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+  maxListRecords_ = std::size_t(std::max<GLint64>(maxBlock, 1 << 20)) / kRecordBytes;
   glNamedBufferStorage(chunkDispatch_.id(), 32, nullptr, 0);
   if (tiled_) scan_.emplace(std::vector<std::string>{"splat_scan.comp"});
   programs({});  // the plain look's, up front (compile errors show at once)
@@ -146,6 +153,14 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
     pixels_ = pixels;
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAccumulation, accumulation_.id());
+  // The coarser levels' tiles that get splats (splat_occupied.glsl).
+  const std::size_t occupancy = levels > 1 ? levelTiles(size, levels) : 0;
+  if (occupancy > occupancy_) {
+    occupied_ = allocate(occupancy * 4, "the splat tiles' marks");
+    zero(occupied_);
+    occupancy_ = occupancy;
+  }
+  if (occupancy > 0) glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOccupied, occupied_.id());
   for (const gl::Program* program : {&p.splat, &p.resolve})
     glProgramUniform1i(program->id(), kLevelsUniform, levels);
 
@@ -169,15 +184,16 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   glDispatchCompute(GLuint((size.x + 15) / 16), GLuint((size.y + 15) / 16), 1);
   // ParticlePost reads the images as textures.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-                  GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
-                  GL_BUFFER_UPDATE_BARRIER_BIT);
-  // The coarser levels' sums, which many pixels read, are cleared whole.
+                  GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  // The coarser levels' sums, which many pixels read, are zeroed after the
+  // resolve where marked, and so are the marks.
   if (levels > 1) {
-    const std::size_t first = levelPixels(size, 1) * kChannels * 4;
-    const GLuint value = 0;
-    glClearNamedBufferSubData(accumulation_.id(), GL_R32UI, GLintptr(first),
-                              GLsizeiptr(pixels * kChannels * 4 - first), GL_RED_INTEGER,
-                              GL_UNSIGNED_INT, &value);
+    if (!clear_)
+      clear_ = std::make_unique<gl::Program>(std::vector<std::string>{"splat_clear.comp"});
+    clear_->use();
+    glProgramUniform1i(clear_->id(), kLevelsUniform, levels);
+    glDispatchCompute(GLuint(occupancy - levelTiles(size, 1)), 1, 1);
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
 }
 
@@ -225,8 +241,10 @@ void ParticleSplat::addTiled(const Programs& p, std::size_t tileCount, int level
                              std::size_t capacity) const {
   // Records in the lists: a particle of a few pixels covers one 32-pixel tile,
   // sometimes two or four; the scatter pass adds those past the end itself.
-  // SANDSTORM_SPLAT_LIST sets the number (listRecords_).
-  const std::size_t listCapacity = listRecords_ ? listRecords_ : 2 * capacity + 4096;
+  // [gpu] splat_list sets the number (listRecords_); a storage buffer holds
+  // at most maxListRecords_.
+  const std::size_t listCapacity =
+      std::min(listRecords_ ? listRecords_ : 2 * capacity + 4096, maxListRecords_);
   if (tileCount > tiles_) {
     tileCounts_ = allocate(tileCount * 4, "the tile counts");
     zero(tileCounts_);  // splat_scan.comp zeroes them after each view
