@@ -5,12 +5,14 @@
 #include "sim_block.glsl"
 #include "particle_physics.glsl"
 #include "render_block.glsl"
+#include "scene_occlusion.glsl"
 
 layout(location = 6) uniform float uOpacity;
 in vec3 vPosition;
 out vec4 fragColor;
 
 void main() {
+  if (behindScene()) discard;
   vec3 local = toLocal(vPosition);
   if (sim.fieldBlend.z != 0.0 &&
       (!cellValid(false, local) || (sim.fieldBlend.y != 0.0 && !cellValid(true, local))))

@@ -6,6 +6,11 @@
 #include "contexts/render/frame_blocks.h"
 
 namespace sandstorm {
+namespace {
+
+constexpr GLuint kSceneDepthUnit = 8;  // scene_occlusion.glsl
+
+}  // namespace
 
 ViewRenderer::ViewRenderer() : viewBlock_(gl::createBuffer()), renderBlock_(gl::createBuffer()) {
   glNamedBufferStorage(viewBlock_.id(), sizeof(ViewBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
@@ -54,7 +59,11 @@ void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, 
   scene_.setHelicopter(particles.state().helicopter, HelicopterModel{}.rotorRadius);
   scene_.setObstacles(particles.state().obstacles);
   scene_.setPrimitives(particles.state().primitives);
-  scene_.draw();
+  scene_.drawOpaque();
+  background_.draw(targets_, scene_.ground());
+  // Translucent items blend over the background and are hidden behind it.
+  glBindTextureUnit(kSceneDepthUnit, targets_.sceneDepth());
+  scene_.drawTranslucent();
   particles.drawTrails(&view, size);
 }
 

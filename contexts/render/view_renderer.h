@@ -1,5 +1,6 @@
 // ViewRenderer: one image of the room for one eye: the scene into offscreen
-// buffers, then the particle system's render and post passes on top, into a
+// buffers (raster items, then the ground and sky by compute, then the
+// translucent items), then the particle system's render and post passes on top, into a
 // region of the destination framebuffer (the whole of it, or one half for
 // side-by-side stereo).
 #pragma once
@@ -10,6 +11,7 @@
 #include "contexts/gl/frame_stage_timer.h"
 #include "contexts/gl/objects.h"
 #include "contexts/render/view_targets.h"
+#include "contexts/scene/scene_background.h"
 #include "contexts/scene/scene_renderer.h"
 #include "core/cave/view.h"
 #include "core/color/color_map.h"
@@ -34,6 +36,7 @@ class ViewRenderer {
 
  private:
   SceneRenderer scene_;
+  SceneBackground background_;
   ViewTargets targets_;
   gl::Buffer viewBlock_, renderBlock_;
   ColorTableCache colorTables_;

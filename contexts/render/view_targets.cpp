@@ -35,14 +35,15 @@ void ViewTargets::resize(glm::ivec2 size) {
     throw Error(concat("ViewTargets: bad size ", size.x, "x", size.y));
   size_ = size;
   sceneColor_ = texture2D(GL_RGBA8, size);
-  sceneDepth_ = texture2D(GL_DEPTH_COMPONENT32F, size);
+  sceneDepth_ = texture2D(GL_R32F, size);
+  itemsDepth_ = texture2D(GL_DEPTH_COMPONENT32F, size);
   particleColor_ = texture2D(GL_RGBA16F, size);
   particleNormal_ = texture2D(GL_RGBA16F, size);
   particleLight_ = texture2D(GL_R16F, size);
 
   sceneFbo_ = gl::createFramebuffer();
   glNamedFramebufferTexture(sceneFbo_.id(), GL_COLOR_ATTACHMENT0, sceneColor_.id(), 0);
-  glNamedFramebufferTexture(sceneFbo_.id(), GL_DEPTH_ATTACHMENT, sceneDepth_.id(), 0);
+  glNamedFramebufferTexture(sceneFbo_.id(), GL_DEPTH_ATTACHMENT, itemsDepth_.id(), 0);
   checkComplete(sceneFbo_.id(), "scene");
 
   particleFbo_ = gl::createFramebuffer();

@@ -1,5 +1,6 @@
 // ViewTargets: the offscreen buffers one view renders through, all the view's
-// size: the scene (colour + depth, which particles test against) and the
+// size: the scene (colour; the raster items' depth buffer; and the scene's
+// depth, which SceneBackground writes and particles test against) and the
 // particle accumulation buffer (premultiplied colour + premultiplied normals,
 // both RGBA16F, and the premultiplied share of the light that reaches the
 // particles through the dust, R16F) that ParticlePost lights and composites.
@@ -20,7 +21,10 @@ class ViewTargets {
   std::uint32_t sceneFramebuffer() const { return sceneFbo_.id(); }
   std::uint32_t particleFramebuffer() const { return particleFbo_.id(); }
   std::uint32_t sceneColor() const { return sceneColor_.id(); }
+  // Window depth (R32F, 1 at the far plane) of the nearest scene surface.
   std::uint32_t sceneDepth() const { return sceneDepth_.id(); }
+  // The scene framebuffer's depth buffer: the raster items only.
+  std::uint32_t itemsDepth() const { return itemsDepth_.id(); }
   std::uint32_t particleColor() const { return particleColor_.id(); }
   std::uint32_t particleNormal() const { return particleNormal_.id(); }
   std::uint32_t particleLight() const { return particleLight_.id(); }
@@ -28,7 +32,8 @@ class ViewTargets {
  private:
   glm::ivec2 size_{0};
   gl::Framebuffer sceneFbo_, particleFbo_;
-  gl::Texture sceneColor_, sceneDepth_, particleColor_, particleNormal_, particleLight_;
+  gl::Texture sceneColor_, sceneDepth_, itemsDepth_, particleColor_, particleNormal_,
+      particleLight_;
 };
 
 // OutputTarget: an RGBA8 colour texture + depth framebuffer: an offscreen

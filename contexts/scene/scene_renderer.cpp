@@ -11,11 +11,9 @@
 namespace sandstorm {
 
 SceneRenderer::SceneRenderer()
-    : sky_(std::vector<std::string>{"fullscreen.vert", "sky.frag"}, {"FAR_PLANE"}),
-      terrain_(std::vector<std::string>{"terrain.vert", "terrain.frag"}),
+    : terrain_(std::vector<std::string>{"terrain.vert", "terrain.frag"}),
       lines_(std::vector<std::string>{"lines.vert", "lines.frag"}),
-      mesh_(std::vector<std::string>{"mesh.vert", "mesh.frag"}),
-      emptyVao_(gl::createVertexArray()) {
+      mesh_(std::vector<std::string>{"mesh.vert", "mesh.frag"}) {
   setTerrain(std::make_shared<HeightMap>(HeightMap::flat(0.0f)));
 
   // The unit cube's 12 edges; the model matrix stretches it onto the field's box.
@@ -157,14 +155,16 @@ void SceneRenderer::updateFlow(const ParticleState& state, std::shared_ptr<const
   streaklines_.update(state, dt, reset);
 }
 
-void SceneRenderer::draw() const {
+void SceneRenderer::drawOpaque() const {
   glDisable(GL_BLEND);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
-  terrain_.use();
-  glBindVertexArray(terrainVao_.id());
-  glDrawElements(GL_TRIANGLES, terrainIndexCount_, GL_UNSIGNED_INT, nullptr);
+  if (!ground_->isFlat()) {  // a flat ground is SceneBackground's
+    terrain_.use();
+    glBindVertexArray(terrainVao_.id());
+    glDrawElements(GL_TRIANGLES, terrainIndexCount_, GL_UNSIGNED_INT, nullptr);
+  }
 
   mesh_.use();
   if (helicopter_.enabled) {
@@ -209,18 +209,14 @@ void SceneRenderer::draw() const {
     cube_.draw();
   }
   streamlines_.draw();
+  glBindVertexArray(0);
+}
+
+void SceneRenderer::drawTranslucent() const {
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_LESS);
   streaklines_.draw();
   slice_.draw();
-
-  // The sky last, on the far plane, where nothing else is: each pixel is
-  // shaded once (fill rate is what a datacenter GPU's raster pipeline lacks).
-  glDepthFunc(GL_LEQUAL);
-  glDepthMask(GL_FALSE);
-  sky_.use();
-  glBindVertexArray(emptyVao_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
-  glDepthFunc(GL_LESS);
-  glDepthMask(GL_TRUE);
   glBindVertexArray(0);
 }
 

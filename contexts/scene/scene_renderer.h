@@ -55,7 +55,14 @@ class SceneRenderer {
     probe_ = point;
     probeRadius_ = radius;
   }
-  void draw() const;
+  // The opaque items into the bound scene framebuffer: a height map's
+  // terrain (a flat ground is SceneBackground's), props, the field's box, the
+  // wand, the probe, streamlines. Then SceneBackground, then the translucent
+  // ones (streaklines, the slice), which blend over the ground and sky and
+  // are hidden behind them by the scene's depth (scene_occlusion.glsl).
+  void drawOpaque() const;
+  void drawTranslucent() const;
+  const HeightMap& ground() const { return *ground_; }
 
  private:
   // A mesh of the mesh program's (unit size) stretched to `size` at `center`.
@@ -63,8 +70,7 @@ class SceneRenderer {
   void drawProp(const Mesh& mesh, const glm::vec3& center, const glm::vec3& size,
                 const glm::vec4& color) const;
 
-  gl::Program sky_, terrain_, lines_, mesh_;
-  gl::VertexArray emptyVao_;
+  gl::Program terrain_, lines_, mesh_;
   gl::VertexArray terrainVao_, boxVao_;
   gl::Buffer terrainVertices_, terrainIndices_, boxVertices_;
   UnitCube cube_;

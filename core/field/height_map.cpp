@@ -22,6 +22,12 @@ HeightMap HeightMap::flat(float height, float halfSize) {
                    std::vector<float>(4, height));
 }
 
+bool HeightMap::isFlat() const {
+  for (const float h : heights_)
+    if (h != heights_.front()) return false;
+  return true;
+}
+
 float HeightMap::heightAt(glm::vec2 p) const {
   const glm::vec2 u = glm::clamp((p - min_) * indexScale_, glm::vec2(0.0f), glm::vec2(dims_ - 1));
   const glm::ivec2 i0 = glm::min(glm::ivec2(glm::floor(u)), dims_ - 2);

@@ -26,6 +26,8 @@ class HeightMap {
   float at(int i, int j) const { return heights_[std::size_t(i) + std::size_t(dims_.x) * j]; }
   glm::vec2 indexScale() const { return indexScale_; }
 
+  // Every height the same (a plane: the scene draws it by compute).
+  bool isFlat() const;
   float heightAt(glm::vec2 p) const;
   glm::vec3 normalAt(glm::vec2 p) const;  // for shading, by central differences
   float minHeight() const;

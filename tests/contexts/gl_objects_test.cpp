@@ -40,7 +40,7 @@ TEST_F(GlObjectsTest, OneOwnerDeletesEachObjectOnce) {
 TEST_F(GlObjectsTest, CompileErrorsNameTheFileAndPrintTheLog) {
   try {
     // A define that breaks the shader's own code: `vec4` no longer names a type.
-    gl::Program broken(std::vector<std::string>{"fullscreen.vert", "sky.frag"}, {"vec4 int"});
+    gl::Program broken(std::vector<std::string>{"fullscreen.vert", "anaglyph.frag"}, {"vec4 int"});
     FAIL() << "no error";
   } catch (const Error& e) {
     const std::string m = e.what();

@@ -1,0 +1,28 @@
+#include "contexts/scene/scene_background.h"
+
+#include <epoxy/gl.h>
+
+#include "contexts/render/view_targets.h"
+
+namespace sandstorm {
+
+SceneBackground::SceneBackground() : program_(std::vector<std::string>{"scene_background.comp"}) {}
+
+void SceneBackground::draw(const ViewTargets& targets, const HeightMap& ground) const {
+  program_.use();
+  const bool flat = ground.isFlat();
+  glProgramUniform4f(program_.id(), 0, ground.min().x, ground.min().y, ground.max().x,
+                     ground.max().y);
+  glProgramUniform1f(program_.id(), 1, flat ? ground.at(0, 0) : 0.0f);
+  glProgramUniform1i(program_.id(), 2, flat ? GL_TRUE : GL_FALSE);
+  glBindTextureUnit(3, targets.itemsDepth());
+  glBindImageTexture(0, targets.sceneColor(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+  glBindImageTexture(1, targets.sceneDepth(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
+  const glm::ivec2 size = targets.size();
+  glDispatchCompute(GLuint((size.x + 15) / 16), GLuint((size.y + 15) / 16), 1);
+  // Raster items blend over the colour after; the particle passes sample both.
+  glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                  GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+}
+
+}  // namespace sandstorm

@@ -1,0 +1,121 @@
+// SceneBackground draws a flat ground and the sky by compute, after the
+// raster items; a height map's terrain stays raster. The two must draw the
+// same scene: here a flat ground against a height map that is flat but for
+// a millimetre at a corner 14 km away (so it takes the raster path), with a
+// ball of particles and an obstacle half sunk into the ground (the ground
+// must hide their lower halves: the particles by the scene depth the pass
+// writes, the obstacle by the depth compare) and, with billboards, trails
+// (translucent, drawn after the pass, hidden behind the ground by hand).
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <cstdlib>
+
+#include "contexts/render/wall_renderer.h"
+#include "core/sim/main_context.h"
+#include "tests/contexts/gl_test.h"
+
+namespace sandstorm {
+namespace {
+
+class SceneBackgroundTest : public GlTest {};
+
+constexpr glm::ivec2 kSize{160, 120};
+
+ParticleState sunkCloud(RenderMode mode) {
+  ParticleState s;
+  s.sim.maximum = 3000;
+  s.sim.groundCollision = false;
+  Emitter& e = s.emitters[0];
+  e.shape = EmitterShape::Sphere;
+  e.position = {0.8f, 0.0f, 0.2f};
+  e.radius = 1.2f;
+  e.rate = 2500.0f / 0.25f;  // everything in the first frame
+  e.lifetime = 3.0f;
+  e.lifetimeVariance = 0.0f;
+  e.velocity = {0.0f, 0.0f, 0.4f};
+  s.render.mode = mode;
+  s.render.size = 0.2f;
+  s.render.trailLength = mode == RenderMode::Billboards ? 8 : 0;
+  Obstacle ball;
+  ball.position = {-1.6f, 0.5f, 0.0f};
+  ball.radius = 0.7f;
+  ball.flow = false;
+  s.obstacles.push_back(ball);
+  return s;
+}
+
+Image render(const ParticleState& state, std::shared_ptr<HeightMap> terrain) {
+  MainContext::Options options;
+  options.fixedDt = 0.25f;
+  options.seed = 5;
+  MainContext main(state, FieldUpdate{}, options);
+  WallSpec wall;
+  wall.name = "test";
+  wall.camera = CameraSpec{{0.0f, -7.0f, 1.6f}, {0.0f, 0.0f, 0.4f}, 50.0f};
+  wall.offscreenSize = kSize;
+  WallRenderer renderer(WallRendererSetup{.wall = wall,
+                                          .initial = state,
+                                          .terrain = std::move(terrain),
+                                          .capacity = 4096,
+                                          .backend = "compute",
+                                          .nearPlane = 0.1f,
+                                          .farPlane = 200.0f});
+  for (int f = 0; f < 4; ++f) {
+    FramePacket p = main.next();
+    if (f > 0) p.emission.assign(p.emission.size(), 0u);
+    renderer.frame(p, {0, 0});
+  }
+  return renderer.capture();
+}
+
+TEST_F(SceneBackgroundTest, TheFlatGroundAndSkyByComputeMatchTheRasterTerrain) {
+  const auto flat = std::make_shared<HeightMap>(HeightMap::flat(0.0f));
+  ASSERT_TRUE(flat->isFlat());
+  const auto raster = std::make_shared<HeightMap>(glm::vec2(-1e4f), glm::vec2(1e4f), glm::ivec2(2),
+                                                  std::vector<float>{0, 0, 0, 1e-3f});
+  ASSERT_FALSE(raster->isFlat());
+  for (RenderMode mode : {RenderMode::Billboards, RenderMode::Splat}) {
+    SCOPED_TRACE(mode == RenderMode::Billboards ? "billboards and trails" : "splats");
+    const ParticleState state = sunkCloud(mode);
+    const Image a = render(state, flat), b = render(state, raster);
+    ParticleState empty = state;
+    empty.emitters[0].rate = 0.0f;
+    empty.obstacles.clear();
+    const Image scene = render(empty, flat);
+    double mean = 0.0, over16 = 0.0, shows = 0.0;
+    const int pixels = kSize.x * kSize.y;
+    for (int i = 0; i < pixels; ++i) {
+      int worst = 0, changed = 0;
+      for (int c = 0; c < 3; ++c) {
+        const std::size_t k = std::size_t(i) * 4 + std::size_t(c);
+        const int d = std::abs(int(a.rgba[k]) - int(b.rgba[k]));
+        mean += d;
+        worst = std::max(worst, d);
+        changed = std::max(changed, std::abs(int(a.rgba[k]) - int(scene.rgba[k])));
+      }
+      if (worst > 16) over16 += 1;
+      if (changed > 8) shows += 1;
+    }
+    mean /= 3.0 * pixels;
+    std::printf(
+        "|compute - raster| mean %.3f/255, %.2f%% of pixels off by > 16; the particles "
+        "and ball change %.1f%% of the image\n",
+        mean, 100.0 * over16 / pixels, 100.0 * shows / pixels);
+    if (const char* dir = std::getenv("SANDSTORM_TEST_IMAGES")) {
+      const std::string tag = mode == RenderMode::Billboards ? "billboards" : "splats";
+      writePng(a, std::string(dir) + "/background-compute-" + tag + ".png");
+      writePng(b, std::string(dir) + "/background-raster-" + tag + ".png");
+    }
+    EXPECT_GT(shows / pixels, 0.05);  // the scene shows its items
+    // The sky and ground themselves: every pixel of the empty scene is sky
+    // or ground (not the clear colour), both above and below the horizon.
+    EXPECT_NE(scene.rgba[0], 0);
+    EXPECT_NE(scene.rgba[std::size_t(pixels - 1) * 4], 0);
+    EXPECT_LT(mean, 0.5);
+    EXPECT_LT(over16 / pixels, 0.005);
+  }
+}
+
+}  // namespace
+}  // namespace sandstorm
