@@ -38,6 +38,16 @@ GlfwWindow::Options windowOptions(const std::string& title, const WindowSpec& w)
   return o;
 }
 
+// Frames left out of the run statistics: run.stats_warmup, or where the run
+// is no longer than that (a short run asked for its stage times), its first
+// half, with a warning, rather than nothing measured.
+std::uint32_t statsWarmup(const RunSpec& run) {
+  if (run.frames <= 0 || run.frames > run.statsWarmup) return std::uint32_t(run.statsWarmup);
+  log::warn("run.stats_warmup (", run.statsWarmup, ") is not shorter than the run's ", run.frames,
+            " frames: the statistics leave out its first ", run.frames / 2, " instead");
+  return std::uint32_t(run.frames / 2);
+}
+
 MainContext::Options mainOptions(const RunSpec& run) {
   MainContext::Options o;
   o.seed = run.seed;
@@ -58,6 +68,7 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
       // The project's data/ sits beside config/.
       projectRoot_(std::filesystem::absolute(configDir_).parent_path()),
       lastFrame_(config.run.frames > 0 ? config.run.frames - 1 : -1),
+      statsWarmup_(statsWarmup(config.run)),
       // In cluster mode only rank 0 makes the field (unless every rank reads it): it travels in
       // packets.
       field_(!cluster || cluster->makesField() ? makeField(config.field, configDir_)
@@ -245,7 +256,7 @@ void AppRun::openWalls() {
                             .nearPlane = config_.run.nearPlane,
                             .farPlane = config_.run.farPlane};
     walls_.push_back(std::make_unique<RenderWall>(setup, i));
-    walls_.back()->sampleFrom(std::uint32_t(config_.run.statsWarmup));
+    walls_.back()->sampleFrom(statsWarmup_);
     if (context) {
       contexts_.push_back(std::make_unique<RenderContext>(
           std::move(context), std::vector<RenderWall*>{walls_.back().get()}, channel_, barrier_));
@@ -783,7 +794,7 @@ int AppRun::finish() {
   for (const auto& w : walls_)
     measured.push_back(summarize(w->name(), w->renderer(), w->samples(), w->measuredFrames(),
                                  w->stats().liveParticles));
-  const RunStats stats = summarize(std::size_t(config_.run.statsWarmup), std::move(measured));
+  const RunStats stats = summarize(statsWarmup_, std::move(measured));
   logRunStats(stats);
   if (options_.stats) {
     writeRunStats(stats, *options_.stats);

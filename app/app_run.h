@@ -85,6 +85,8 @@ class AppRun {
   const std::filesystem::path configDir_;
   const std::filesystem::path projectRoot_;  // menu choices and recorded fields are named from here
   const int lastFrame_;                      // -1: until a window closes
+  // run.stats_warmup, or half a run too short for it (statsWarmup()).
+  const std::uint32_t statsWarmup_;
 
   FieldSource field_;
   std::shared_ptr<const HeightMap> terrain_;

@@ -58,5 +58,20 @@ TEST(RunStats, TheFramesAfterTheWarmupAreMeasuredOnEveryWall) {
   }
 }
 
+// A run no longer than run.stats_warmup (60 here) measures its second half,
+// and says so, rather than reporting nothing.
+TEST(RunStats, ARunShorterThanTheWarmupMeasuresItsSecondHalf) {
+  const auto dir = test::scratchDir("run-stats-short");
+  const auto r = test::runSandstorm("--config tests/data/identity.toml --frames 50 --stats " +
+                                    (dir / "stats.json").string());
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("leave out its first 25 instead"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("frame times over 25 frames after 25"), std::string::npos) << r.output;
+  const std::string json = test::readBytes(dir / "stats.json");
+  EXPECT_EQ(field(json, "warmup_frames"), 25.0);
+  EXPECT_EQ(field(json, "frames"), 25.0);
+  EXPECT_GT(field(json, "frame_ms_median"), 0.0);
+}
+
 }  // namespace
 }  // namespace sandstorm
