@@ -1,4 +1,5 @@
-// SceneBackground draws a flat ground and the sky by compute, after the
+// The passes that replace raster fills on offscreen walls draw what the
+// raster ones draw. SceneBackground draws a flat ground and the sky by compute, after the
 // raster items; a height map's terrain stays raster. The two must draw the
 // same scene: here a flat ground against a height map that is flat but for
 // a millimetre at a corner 14 km away (so it takes the raster path), with a
@@ -11,7 +12,13 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include <epoxy/gl.h>
+
+#include "contexts/particles/particle_post.h"
+#include "contexts/particles/particle_system.h"
+#include "contexts/render/view_renderer.h"
 #include "contexts/render/wall_renderer.h"
+#include "core/cave/view.h"
 #include "core/sim/main_context.h"
 #include "tests/contexts/gl_test.h"
 
@@ -115,6 +122,52 @@ TEST_F(SceneBackgroundTest, TheFlatGroundAndSkyByComputeMatchTheRasterTerrain) {
     EXPECT_LT(mean, 0.5);
     EXPECT_LT(over16 / pixels, 0.005);
   }
+}
+
+// ParticlePost composites by compute into an offscreen wall's RGBA8 image
+// and by a full-screen triangle elsewhere (a window; here a renderbuffer):
+// the same pixels, within the 8-bit rounding, at the view's place in a
+// destination twice as wide (side-by-side stereo's right eye).
+TEST_F(SceneBackgroundTest, TheComputeCompositeMatchesTheRasterOne) {
+  const ParticleState state = sunkCloud(RenderMode::Splat);
+  MainContext::Options options;
+  options.fixedDt = 0.25f;
+  MainContext main(state, FieldUpdate{}, options);
+  ParticleSystem system(state, {.capacity = 4096});
+  system.advance(main.next());
+  const View view =
+      perspectiveView({0.0f, -7.0f, 1.6f}, {0.0f, 0.0f, 0.4f}, {0, 0, 1}, glm::radians(50.0f),
+                      float(kSize.x) / float(kSize.y), 0.1f, 200.0f);
+  ViewRenderer renderer;
+  renderer.drawScene(system, view, kSize);
+  system.renderParticles(renderer.targets(), &view);
+
+  const glm::ivec2 wide(2 * kSize.x, kSize.y);
+  OutputTarget image;  // an RGBA8 texture: the compute pass
+  image.resize(wide);
+  gl::Renderbuffer color = gl::createRenderbuffer();  // the raster pass
+  glNamedRenderbufferStorage(color.id(), GL_RGBA8, wide.x, wide.y);
+  gl::Framebuffer window = gl::createFramebuffer();
+  glNamedFramebufferRenderbuffer(window.id(), GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, color.id());
+  ASSERT_TRUE(ParticlePost::computes(image.framebuffer()));
+  ASSERT_FALSE(ParticlePost::computes(window.id()));
+  ASSERT_FALSE(ParticlePost::computes(0));
+  for (GLuint fbo : {image.framebuffer(), window.id()}) {
+    const float grey[4] = {0.5f, 0.5f, 0.5f, 1.0f};
+    glClearNamedFramebufferfv(fbo, GL_COLOR, 0, grey);
+    system.composite(renderer.targets(), fbo, {kSize.x, 0});
+  }
+  const Image a = readFramebuffer(image.framebuffer(), GL_COLOR_ATTACHMENT0, wide);
+  const Image b = readFramebuffer(window.id(), GL_COLOR_ATTACHMENT0, wide);
+  int largest = 0, changed = 0;
+  for (std::size_t i = 0; i < a.rgba.size(); ++i) {
+    largest = std::max(largest, std::abs(int(a.rgba[i]) - int(b.rgba[i])));
+    if (i % 4 != 3 && a.rgba[i] != 128) ++changed;
+  }
+  EXPECT_LE(largest, 1);
+  // The left half keeps the clear colour; the right half holds the view.
+  EXPECT_EQ(a.rgba[0], 128);
+  EXPECT_GT(changed, kSize.x * kSize.y);
 }
 
 }  // namespace
