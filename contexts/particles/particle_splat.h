@@ -22,8 +22,11 @@
 // hold (tests make both small). The result
 // matches blending "over" exactly in alpha and, where overlapping particles
 // share a colour, in colour (tests/contexts/particle_splat_test.cpp states the
-// image tolerance). Particles wider than 31 pixels are drawn 31 pixels wide:
-// render.mode = auto leaves large particles to billboards. A splat record
+// image tolerance). Levels (render.splat_detail, splat_common.glsl): a splat
+// at least twice the detail wide is drawn on a grid of half, a quarter or an
+// eighth the resolution and upsampled by the resolve, so its cost stops
+// growing with its size; a splat is at most 31 of its grid's pixels wide
+// (248 view pixels on the coarsest). A splat record
 // keeps its centre in 1/8 pixel from -64, so views are at most 8127 pixels
 // wide (an 8K wall's 7680 fit).
 //
