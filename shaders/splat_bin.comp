@@ -1,8 +1,9 @@
 #version 450 core
 // ParticleSplat, tiled variant, steps 2 (count) and 4 (scatter): workgroup g
 // takes particles [g * perGroup, (g + 1) * perGroup) and finds the tiles each
-// covers on its level's grid (splat_common.glsl), counting them in a histogram in shared memory, so a dense tile costs
-// one global atomic a workgroup, not one a particle.
+// covers on its level's grid (splat_common.glsl), counting them in a
+// histogram in shared memory, so a dense tile costs one global atomic a
+// workgroup, not one a particle.
 //   count (uScatter false): adds the histogram to the tiles' counts; what
 //     each add returns is this workgroup's place in the tile's list (groupBase).
 //   scatter (uScatter true): counts again, from tileStart + groupBase, and
