@@ -3,10 +3,9 @@
 // uChunk splat records of one tile's list, a tile of one level's grid;
 // records past the list's capacity were added by the scatter pass). Its
 // splats add to the tile's sums in shared memory; then the workgroup adds
-// those to the view's sums (the
-// buffer the resolve pass turns into the image): a plain store where the
-// chunk is its tile's only one, a global atomic where a dense tile has
-// several. The same integers as the atomic variant adds, so the same image,
+// those to the view's sums (the buffer the resolve pass turns into the
+// image): a plain store where the chunk is its tile's only one, a global
+// atomic where a dense tile has several. The same integers as the atomic variant adds, so the same image,
 // with at most six global atomics a pixel and chunk instead of six a pixel
 // and particle.
 #include "view_block.glsl"
