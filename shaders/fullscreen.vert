@@ -5,9 +5,5 @@ out vec2 vNdc;
 void main() {
   vec2 p = vec2(float((gl_VertexID << 1) & 2), float(gl_VertexID & 2)) * 2.0 - 1.0;
   vNdc = p;
-#ifdef FAR_PLANE
-  gl_Position = vec4(p, 1.0, 1.0);  // depth 1: behind everything drawn before (the sky)
-#else
   gl_Position = vec4(p, 0.0, 1.0);
-#endif
 }

@@ -84,6 +84,7 @@ ParticleSplat::ParticleSplat(const GpuTuning& tuning)
       // Records the lists hold (0: two a particle of capacity); tests make it small.
       listRecords_(tuning.splatList),
       prepare_(std::vector<std::string>{"splat_prepare.comp"}),
+      clear_(std::vector<std::string>{"splat_clear.comp"}),
       dispatch_(gl::createBuffer()),
       chunkDispatch_(gl::createBuffer()) {
   glNamedBufferStorage(dispatch_.id(), 64, nullptr, 0);
@@ -188,10 +189,8 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   // The coarser levels' sums, which many pixels read, are zeroed after the
   // resolve where marked, and so are the marks.
   if (levels > 1) {
-    if (!clear_)
-      clear_ = std::make_unique<gl::Program>(std::vector<std::string>{"splat_clear.comp"});
-    clear_->use();
-    glProgramUniform1i(clear_->id(), kLevelsUniform, levels);
+    clear_.use();
+    glProgramUniform1i(clear_.id(), kLevelsUniform, levels);
     glDispatchCompute(GLuint(occupancy - levelTiles(size, 1)), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }

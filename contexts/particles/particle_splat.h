@@ -90,13 +90,13 @@ class ParticleSplat {
   std::size_t listRecords_;         // tiled: records the lists hold, 0: two a particle
   std::size_t maxListRecords_ = 0;  // what one storage buffer can hold
   gl::Program prepare_;
-  std::optional<gl::Program> scan_;                   // tiled
+  gl::Program clear_;                // levels: zeroes the marked tiles' sums and the marks
+  std::optional<gl::Program> scan_;  // tiled
   mutable std::unique_ptr<Programs> variants_[2][2];  // [shadows][motion blur]
   gl::Buffer dispatch_, chunkDispatch_;
   mutable gl::Buffer accumulation_;  // the sums
   mutable std::size_t pixels_ = 0;
-  mutable gl::Buffer occupied_;                 // the coarser levels' tiles with splats
-  mutable std::unique_ptr<gl::Program> clear_;  // zeroes them: made on first use
+  mutable gl::Buffer occupied_;  // the coarser levels' tiles with splats
   mutable std::size_t occupancy_ = 0;
   mutable gl::Buffer tileCounts_, tileStarts_, chunkStarts_, groupBase_,
       tileLists_;  // tiled: the bins
