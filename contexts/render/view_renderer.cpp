@@ -60,7 +60,7 @@ void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, 
   scene_.setObstacles(particles.state().obstacles);
   scene_.setPrimitives(particles.state().primitives);
   scene_.drawOpaque();
-  background_.draw(targets_, scene_.ground());
+  background_.draw(targets_, scene_.flatGround());
   // Translucent items blend over the background and are hidden behind it.
   glBindTextureUnit(kSceneDepthUnit, targets_.sceneDepth());
   scene_.drawTranslucent();

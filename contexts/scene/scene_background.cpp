@@ -8,13 +8,13 @@ namespace sandstorm {
 
 SceneBackground::SceneBackground() : program_(std::vector<std::string>{"scene_background.comp"}) {}
 
-void SceneBackground::draw(const ViewTargets& targets, const HeightMap& ground) const {
+void SceneBackground::draw(const ViewTargets& targets,
+                           const std::optional<FlatGround>& ground) const {
   program_.use();
-  const bool flat = ground.isFlat();
-  glProgramUniform4f(program_.id(), 0, ground.min().x, ground.min().y, ground.max().x,
-                     ground.max().y);
-  glProgramUniform1f(program_.id(), 1, flat ? ground.at(0, 0) : 0.0f);
-  glProgramUniform1i(program_.id(), 2, flat ? GL_TRUE : GL_FALSE);
+  const FlatGround g = ground.value_or(FlatGround{});
+  glProgramUniform4f(program_.id(), 0, g.min.x, g.min.y, g.max.x, g.max.y);
+  glProgramUniform1f(program_.id(), 1, g.height);
+  glProgramUniform1i(program_.id(), 2, ground ? GL_TRUE : GL_FALSE);
   glBindTextureUnit(3, targets.itemsDepth());
   glBindImageTexture(0, targets.sceneColor(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
   glBindImageTexture(1, targets.sceneDepth(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);

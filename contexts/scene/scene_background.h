@@ -9,20 +9,31 @@
 // bound; needs the GL context current.
 #pragma once
 
+#include <optional>
+
+#include <glm/glm.hpp>
+
 #include "contexts/gl/program.h"
-#include "core/field/height_map.h"
 
 namespace sandstorm {
 
 class ViewTargets;
+
+// A flat ground: its extent in x and y and its height (SceneRenderer finds it
+// once, when the terrain is set).
+struct FlatGround {
+  glm::vec2 min, max;
+  float height = 0.0f;
+};
 
 class SceneBackground {
  public:
   SceneBackground();
   // Fills the pixels of `targets`' scene colour that no raster item covers
   // nearer than the ground (or at all, for the sky), and writes its scene
-  // depth. `ground`: the scene's terrain; drawn here where flat.
-  void draw(const ViewTargets& targets, const HeightMap& ground) const;
+  // depth. `ground`: the scene's ground where flat (none: a height map's,
+  // drawn by raster, or no ground).
+  void draw(const ViewTargets& targets, const std::optional<FlatGround>& ground) const;
 
  private:
   gl::Program program_;

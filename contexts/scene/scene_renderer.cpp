@@ -99,6 +99,8 @@ void SceneRenderer::drawPrimitives() const {
 void SceneRenderer::setTerrain(std::shared_ptr<const HeightMap> terrain) {
   ground_ = std::move(terrain);
   const HeightMap& map = *ground_;
+  flatGround_ = std::nullopt;
+  if (map.isFlat()) flatGround_ = FlatGround{map.min(), map.max(), map.at(0, 0)};
   struct Vertex {
     glm::vec3 position, normal;
   };
@@ -160,7 +162,7 @@ void SceneRenderer::drawOpaque() const {
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDepthMask(GL_TRUE);
-  if (!ground_->isFlat()) {  // a flat ground is SceneBackground's
+  if (!flatGround_) {  // a flat ground is SceneBackground's
     terrain_.use();
     glBindVertexArray(terrainVao_.id());
     glDrawElements(GL_TRIANGLES, terrainIndexCount_, GL_UNSIGNED_INT, nullptr);

@@ -11,6 +11,7 @@
 
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
+#include "contexts/scene/scene_background.h"
 #include "contexts/scene/scene_field.h"
 #include "contexts/scene/slice_renderer.h"
 #include "contexts/scene/streakline_renderer.h"
@@ -62,7 +63,9 @@ class SceneRenderer {
   // are hidden behind them by the scene's depth (scene_occlusion.glsl).
   void drawOpaque() const;
   void drawTranslucent() const;
-  const HeightMap& ground() const { return *ground_; }
+  // The ground where it is flat (SceneBackground draws it), found once when
+  // the terrain is set.
+  const std::optional<FlatGround>& flatGround() const { return flatGround_; }
 
  private:
   // A mesh of the mesh program's (unit size) stretched to `size` at `center`.
@@ -84,6 +87,7 @@ class SceneRenderer {
   SliceRenderer slice_{sceneField_};
   StreaklineRenderer streaklines_{sceneField_};
   std::shared_ptr<const HeightMap> ground_;
+  std::optional<FlatGround> flatGround_;
   HelicopterSettings helicopter_;
   float rotorRadius_ = 7.0f;
   int terrainIndexCount_ = 0;
