@@ -5,6 +5,7 @@
 
 #include "app/app_run.h"
 #include "app/cluster/cluster_link.h"
+#include "contexts/platform/software_rasterizer.h"
 #include "core/sim/attribute_table.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
@@ -81,6 +82,7 @@ App::App(AppConfig config, AppOptions options, ClusterLink* cluster)
 
 int App::run() {
   if (cluster_) cluster_->localize(config_, options_);  // this rank's walls and outputs
+  keepSoftwareRasterizingInDrawingThreads(config_.glContexts());
   return AppRun(config_, options_, headless_, cluster_).execute();
 }
 

@@ -203,6 +203,11 @@ struct AppConfig {
   std::vector<ObstaclePath> obstaclePaths;
 
   bool anyWindow() const;
+  // The OpenGL contexts a run of this configuration draws with, each in its
+  // own thread: a window each, the operator window, and the offscreen walls'
+  // (one each, or with offscreen_contexts = "one" one for each GPU they name;
+  // run.gpus = "round-robin" counts as one GPU here).
+  int glContexts() const;
 };
 
 // Reads and validates a configuration. `monitorCount` (when known) checks

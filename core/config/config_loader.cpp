@@ -788,6 +788,20 @@ bool AppConfig::anyWindow() const {
   return false;
 }
 
+int AppConfig::glContexts() const {
+  int contexts = menu.operatorWindow ? 1 : 0;
+  std::set<int> offscreenGpus;
+  for (const WallSpec& w : walls) {
+    if (w.window)
+      ++contexts;
+    else if (run.offscreenContexts == RunSpec::OffscreenContexts::PerWall)
+      ++contexts;
+    else
+      offscreenGpus.insert(w.gpu.value_or(0));
+  }
+  return contexts + int(offscreenGpus.size());
+}
+
 AppConfig parseConfig(const std::string& text, const std::filesystem::path& name,
                       std::optional<int> monitors) {
   AppConfig c = readWithIncludes(parseToml(text, name.string()), name.string(), monitors, 0);

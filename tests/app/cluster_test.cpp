@@ -146,7 +146,7 @@ TEST(Cluster, TheCpuSolversFlowReachesEveryRankAtTheSameFrame) {
 // same flow from the same packets, so only the field's first grid crosses and
 // every rank still holds one process's particles.
 TEST(Cluster, EveryRanksGpuSolvesTheSameFlow) {
-  const std::string output = expectSameHashes("tests/data/identity-cluster.toml",
+  const std::string output = expectSameHashes("tests/data/identity-cluster-gpu-solver.toml",
                                               "--set solver.enabled=true --set solver.device=gpu",
                                               40, "cluster-gpu-solver");
   EXPECT_EQ(count(output, "field grids: 1 ("), 3) << output;

@@ -211,6 +211,28 @@ TEST(Config, OffscreenWallsChooseTheirGpu) {
   EXPECT_ERROR("[run]\ngpus = \"all\"\n" + kWall, "test.toml:2", "run.gpus", "first, round-robin");
 }
 
+// The contexts a run opens decide whether llvmpipe rasterizes in the drawing
+// threads (contexts/platform/software_rasterizer.h).
+TEST(Config, CountsTheContextsARunDrawsWith) {
+  int walls = 0;
+  const auto wall = [&](const std::string& how) {
+    std::string text = kWall + how + "\n";
+    return text.replace(text.find("\"front\""), 7, "\"w" + std::to_string(walls++) + "\"");
+  };
+  const auto contexts = [](const std::string& text) {
+    return parseConfig(text, "test.toml").glContexts();
+  };
+  const std::string offscreen = "offscreen = { size = [64, 64] }";
+  const std::string window = "window = { size = [64, 64] }";
+  EXPECT_EQ(contexts(wall(offscreen)), 1);
+  EXPECT_EQ(contexts(wall(offscreen) + wall(offscreen) + wall(offscreen)), 1);
+  const std::string perWall = "[run]\noffscreen_contexts = \"per-wall\"\n";
+  EXPECT_EQ(contexts(perWall + wall(offscreen) + wall(offscreen) + wall(offscreen)), 3);
+  EXPECT_EQ(contexts(wall(offscreen) + wall(offscreen) + wall("gpu = 1\n" + offscreen)), 2);
+  EXPECT_EQ(contexts(wall(window)), 1);
+  EXPECT_EQ(contexts(wall(window) + wall(window) + wall(offscreen)), 3);
+}
+
 TEST(Config, IntegersBeyond64BitsAreRefusedNotClamped) {
   const std::string big = "0b1" + std::string(64, '0');  // 2^64
   EXPECT_ERROR("[run]\nseed = " + big + "\n" + kWall, "test.toml:2", "does not fit in 64 bits");
