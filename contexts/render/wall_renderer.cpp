@@ -63,6 +63,8 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
                                                                 : "billboards";
   switch (wall_.stereo) {
     case StereoMode::Mono:
+    case StereoMode::LeftEye:
+    case StereoMode::RightEye:
       viewRenderer_.render(system_, views[0], size, destination, {0, 0}, &timer_);
       break;
     case StereoMode::SideBySide: {

@@ -149,7 +149,7 @@ void SceneRenderer::setFieldBox(std::optional<Box> bounds, const FieldPlacement&
 void SceneRenderer::updateFlow(const ParticleState& state, std::shared_ptr<const FieldUpdate> field,
                                float blend, float dt, bool reset) {
   if ((state.streamlines.enabled || state.slice.enabled || state.render.streaklines ||
-       field && field->colorGrid) &&
+       (field && field->colorGrid)) &&
       field && field->field)
     sceneField_.set(state, *field, blend, dt, ground_.get());
   streamlines_.update(state, field, blend);

@@ -7,7 +7,7 @@
 namespace sandstorm {
 
 bool isStereo(StereoMode mode) {
-  return mode != StereoMode::Mono;
+  return mode != StereoMode::Mono && mode != StereoMode::LeftEye && mode != StereoMode::RightEye;
 }
 
 std::vector<View> wallViews(const WallSpec& wall, const Viewer& viewer, float aspect,
@@ -21,8 +21,12 @@ std::vector<View> wallViews(const WallSpec& wall, const Viewer& viewer, float as
     const glm::vec3 forward = glm::normalize(wall.camera->target - wall.camera->position);
     right = glm::normalize(glm::cross(forward, glm::vec3(0, 0, 1)));
   }
-  if (isStereo(wall.stereo)) {
-    const float half = 0.5f * viewer.head.eyeSeparation;
+  const float half = 0.5f * viewer.head.eyeSeparation;
+  if (wall.stereo == StereoMode::LeftEye) {
+    eyes = {center - right * half};
+  } else if (wall.stereo == StereoMode::RightEye) {
+    eyes = {center + right * half};
+  } else if (isStereo(wall.stereo)) {
     eyes = {center - right * half, center + right * half};
   } else {
     eyes = {center};

@@ -1,6 +1,7 @@
-// The views a wall draws in one frame: one for mono, left then right for the
-// stereo modes. Views look at the world (the field and particles) through the
-// navigation, so view.eye is in world coordinates, where billboards live.
+// The views a wall draws in one frame: one for mono (from between the eyes)
+// and for the one-eye modes, left then right for the stereo modes. Views look
+// at the world (the field and particles) through the navigation, so view.eye
+// is in world coordinates, where billboards live.
 #pragma once
 
 #include <vector>
@@ -14,6 +15,7 @@ namespace sandstorm {
 std::vector<View> wallViews(const WallSpec& wall, const Viewer& viewer, float aspect,
                             float nearPlane, float farPlane);
 
+// Whether a wall draws both eyes (the one-eye modes draw one view).
 bool isStereo(StereoMode mode);
 
 // The ray (world coordinates) through a point of a wall's image, `at` in

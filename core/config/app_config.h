@@ -22,7 +22,9 @@
 
 namespace sandstorm {
 
-enum class StereoMode { Mono, QuadBuffer, SideBySide, TopBottom, Anaglyph };
+// LeftEye, RightEye: a wall that shows one eye's view, as each projector of a
+// passive-stereo pair does; two such walls on two GPUs share a wall's stereo.
+enum class StereoMode { Mono, QuadBuffer, SideBySide, TopBottom, Anaglyph, LeftEye, RightEye };
 
 struct WindowSpec {
   int monitor = 0;

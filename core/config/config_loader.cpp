@@ -552,7 +552,9 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
                        {"quad-buffer", StereoMode::QuadBuffer},
                        {"side-by-side", StereoMode::SideBySide},
                        {"top-bottom", StereoMode::TopBottom},
-                       {"anaglyph", StereoMode::Anaglyph}});
+                       {"anaglyph", StereoMode::Anaglyph},
+                       {"left-eye", StereoMode::LeftEye},
+                       {"right-eye", StereoMode::RightEye}});
   if (w.stereo == StereoMode::QuadBuffer && !w.window)
     r.fail(t, path + ".stereo",
            "quad-buffer stereo needs a window; offscreen walls can use side-by-side");
@@ -829,6 +831,10 @@ const char* toString(StereoMode mode) {
       return "top-bottom";
     case StereoMode::Anaglyph:
       return "anaglyph";
+    case StereoMode::LeftEye:
+      return "left-eye";
+    case StereoMode::RightEye:
+      return "right-eye";
   }
   return "?";
 }

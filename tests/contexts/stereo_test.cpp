@@ -1,6 +1,7 @@
 // Stereo layouts against the mono images of each eye: side-by-side and
-// top-bottom place each eye's image in its half; anaglyph puts the left eye's
-// luminance in red and the right eye's green and blue.
+// top-bottom place each eye's image in its half, as one-eye walls draw it;
+// anaglyph puts the left eye's luminance in red and the right eye's green and
+// blue.
 #include <gtest/gtest.h>
 
 #include "contexts/render/wall_renderer.h"
@@ -68,6 +69,19 @@ TEST_F(StereoTest, SideBySideAndTopBottomHoldEachEyesImage) {
   const Image tb = renderWall(StereoMode::TopBottom, {96, 64}, head, sep);
   EXPECT_LE(maxDifference(tb, 0, 0, leftWide, 96, 32), 1);  // left eye on top
   EXPECT_LE(maxDifference(tb, 0, 32, rightWide, 96, 32), 1);
+}
+
+// A passive-stereo projector pair (or a wall's eyes on two GPUs): each
+// one-eye wall draws its half of the side-by-side wall, byte for byte.
+TEST_F(StereoTest, OneEyeWallsDrawTheHalvesOfASideBySideWall) {
+  const glm::vec3 head(0.0f, 0.0f, 1.6f);
+  const float sep = 0.2f;
+  const Image sbs = renderWall(StereoMode::SideBySide, {96, 64}, head, sep);
+  const Image left = renderWall(StereoMode::LeftEye, {48, 64}, head, sep);
+  const Image right = renderWall(StereoMode::RightEye, {48, 64}, head, sep);
+  ASSERT_GT(maxDifference(left, 0, 0, right, 48, 64), 30) << "the eyes see the same image";
+  EXPECT_EQ(maxDifference(sbs, 0, 0, left, 48, 64), 0);
+  EXPECT_EQ(maxDifference(sbs, 48, 0, right, 48, 64), 0);
 }
 
 TEST_F(StereoTest, AnaglyphIsLeftLuminanceInRedAndRightInGreenAndBlue) {
