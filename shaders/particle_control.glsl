@@ -1,5 +1,5 @@
-// ParticleComputeUpdate's control block: the twin of the offsets in
-// contexts/particles/particle_compute_update.cpp.
+// The compute updates' control block (particles' and molecules'): the twin of
+// the offsets in contexts/particles/update_control.h.
 layout(std430, binding = 4) coherent restrict buffer Control {
   uint count[2];  // live records of each buffer set
   uint ticket;    // the update pass's next tile

@@ -16,13 +16,11 @@
 namespace sandstorm {
 namespace {
 
-constexpr GLsizeiptr kRecord = sizeof(glm::vec4);
-
-// Byte offsets in the control block (shaders/particle_control.glsl).
-constexpr GLintptr kCountOffset = 0;
-constexpr GLintptr kDispatchOffset = 16;
-constexpr GLintptr kDrawOffset = 32;
-constexpr GLsizeiptr kControlSize = 64;
+constexpr GLsizeiptr kRecord = UpdateControl::kRecord;
+constexpr GLintptr kCountOffset = UpdateControl::kCountOffset;
+constexpr GLintptr kDispatchOffset = UpdateControl::kDispatchOffset;
+constexpr GLintptr kDrawOffset = UpdateControl::kDrawOffset;
+constexpr GLsizeiptr kControlSize = UpdateControl::kSize;
 
 enum Binding : GLuint {
   kInPosition = 0,
@@ -55,7 +53,7 @@ MoleculeUpdate::MoleculeUpdate(std::size_t capacity, std::size_t capacityLimit,
       control_(gl::createBuffer()),
       simBlock_(gl::createBuffer()),
       moleculeBlock_(gl::createBuffer()),
-      history_(gl::createBuffer()),
+      counts_("MoleculeUpdate"),
       spinLimit_(scanSpinLimit(tuning)),
       environment_(tuning.fieldStorage == GpuTuning::FieldStorage::Texture
                        ? GpuField::Storage::Texture
@@ -65,11 +63,6 @@ MoleculeUpdate::MoleculeUpdate(std::size_t capacity, std::size_t capacityLimit,
   glNamedBufferStorage(control_.id(), kControlSize, zeros, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(simBlock_.id(), sizeof(SimBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(moleculeBlock_.id(), sizeof(MoleculeBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  const GLbitfield mapFlags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
-  glNamedBufferStorage(history_.id(), kHistory * sizeof(std::uint32_t), nullptr, mapFlags);
-  historyMap_ = static_cast<const std::uint32_t*>(
-      glMapNamedBufferRange(history_.id(), 0, kHistory * sizeof(std::uint32_t), mapFlags));
-  if (!historyMap_) throw Error("MoleculeUpdate: cannot map the count history buffer");
 }
 
 void MoleculeUpdate::allocate(std::size_t capacity, int members, bool keep) {
@@ -121,19 +114,8 @@ void MoleculeUpdate::clear() {
   lateCount_ = 0;
 }
 
-std::size_t MoleculeUpdate::countAfter(std::uint64_t update) const {
-  const gl::Sync& fence = historyFence_[std::size_t(update % kHistory)];
-  if (fence) {
-    const GLsync sync = reinterpret_cast<GLsync>(fence.handle());
-    while (glClientWaitSync(sync, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000) ==
-           GL_TIMEOUT_EXPIRED) {
-    }
-  }
-  return historyMap_[update % kHistory];
-}
-
 std::size_t MoleculeUpdate::liveCount() const {
-  return updates_ == 0 ? 0 : countAfter(updates_ - 1);
+  return updates_ == 0 ? 0 : counts_.after(updates_ - 1);
 }
 
 const gl::Program& MoleculeUpdate::variant(const std::string& file,
@@ -178,7 +160,7 @@ void MoleculeUpdate::step(const SimStep& step, const ParticleState& state) {
   }
   if (step.dt <= 0.0f) return;
 
-  const std::size_t count2 = updates_ >= 2 ? countAfter(updates_ - 2) : 0;
+  const std::size_t count2 = updates_ >= 2 ? counts_.after(updates_ - 2) : 0;
   lateCount_ = count2;
   const std::size_t limit = std::min(std::size_t(std::max(ms.maximum, 0)), capacity_);
   SimBlockInputs inputs;
@@ -250,10 +232,7 @@ void MoleculeUpdate::step(const SimStep& step, const ParticleState& state) {
 
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT |
                   GL_VERTEX_ATTRIB_ARRAY_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
-  const std::size_t slot = std::size_t(updates_ % kHistory);
-  glCopyNamedBufferSubData(control_.id(), history_.id(), kCountOffset + (1 - current_) * 4,
-                           GLintptr(slot * sizeof(std::uint32_t)), sizeof(std::uint32_t));
-  historyFence_[slot] = gl::createFence();
+  counts_.record(updates_, control_.id(), kCountOffset + (1 - current_) * 4);
 
   budget_.recordEmitted(born);
   current_ = 1 - current_;

@@ -34,6 +34,7 @@
 #include "contexts/molecules/molecule_handles.h"
 #include "contexts/particles/expression_programs.h"
 #include "contexts/particles/particle_environment.h"
+#include "contexts/particles/update_control.h"
 #include "core/config/gpu_tuning.h"
 #include "core/sim/emission_budget.h"
 #include "core/sim/particle.h"
@@ -85,10 +86,8 @@ class MoleculeUpdate {
   struct BufferSet {
     gl::Buffer positionLife, velocityKind;
   };
-  static constexpr int kHistory = 3;
 
   void allocate(std::size_t capacity, int members, bool keep);
-  std::size_t countAfter(std::uint64_t update) const;
   const gl::Program& updateProgram(const ParticleState& state, bool equation, bool obstacles,
                                    bool repulsion);
   const gl::Program& variant(const std::string& file, const std::vector<std::string>& defines);
@@ -97,9 +96,8 @@ class MoleculeUpdate {
   int complexity_ = 0;  // the members the buffers hold a molecule (0: none yet)
   std::array<BufferSet, 2> sets_;
   int current_ = 0;
-  gl::Buffer control_, tileStatus_, simBlock_, moleculeBlock_, history_;
-  const std::uint32_t* historyMap_ = nullptr;
-  std::array<gl::Sync, kHistory> historyFence_;
+  gl::Buffer control_, tileStatus_, simBlock_, moleculeBlock_;
+  UpdateCounts counts_;  // the counts updates left, read late
   std::map<std::string, std::unique_ptr<gl::Program>> variants_;
   ExpressionPrograms expressionPrograms_;
   std::uint32_t spinLimit_;

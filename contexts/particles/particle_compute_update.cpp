@@ -11,19 +11,18 @@
 #include "contexts/particles/record_readback.h"
 #include "contexts/particles/scan_spin.h"
 #include "contexts/particles/sim_block.h"
+#include "contexts/particles/update_control.h"
 #include "core/sim/emission.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
 namespace {
 
-constexpr GLsizeiptr kRecord = sizeof(glm::vec4);
-
-// Byte offsets in the control block (shaders/particle_control.glsl).
-constexpr GLintptr kCountOffset = 0;
-constexpr GLintptr kDispatchOffset = 16;
-constexpr GLintptr kDrawOffset = 32;
-constexpr GLsizeiptr kControlSize = 64;
+constexpr GLsizeiptr kRecord = UpdateControl::kRecord;
+constexpr GLintptr kCountOffset = UpdateControl::kCountOffset;
+constexpr GLintptr kDispatchOffset = UpdateControl::kDispatchOffset;
+constexpr GLintptr kDrawOffset = UpdateControl::kDrawOffset;
+constexpr GLsizeiptr kControlSize = UpdateControl::kSize;
 
 // Binding points of the shaders' storage blocks.
 enum Binding : GLuint {
@@ -53,7 +52,7 @@ ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity, const GpuTuni
     : capacity_(capacity),
       control_(gl::createBuffer()),
       simBlock_(gl::createBuffer()),
-      history_(gl::createBuffer()),
+      counts_("ParticleComputeUpdate"),
       prepareProgram_(std::vector<std::string>{"particle_prepare.comp"},
                       {itemsDefine(checkedItems(tuning.updateItems))}),
       emitProgram_(std::vector<std::string>{"particle_emit.comp"}),
@@ -75,11 +74,6 @@ ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity, const GpuTuni
   const std::uint32_t zeros[kControlSize / 4] = {};
   glNamedBufferStorage(control_.id(), kControlSize, zeros, GL_DYNAMIC_STORAGE_BIT);
   glNamedBufferStorage(simBlock_.id(), sizeof(SimBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
-  const GLbitfield mapFlags = GL_MAP_READ_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
-  glNamedBufferStorage(history_.id(), kHistory * sizeof(std::uint32_t), nullptr, mapFlags);
-  historyMap_ = static_cast<const std::uint32_t*>(
-      glMapNamedBufferRange(history_.id(), 0, kHistory * sizeof(std::uint32_t), mapFlags));
-  if (!historyMap_) throw Error("ParticleComputeUpdate: cannot map the count history buffer");
 }
 
 void ParticleComputeUpdate::allocate(BufferSet& set, std::size_t capacity) {
@@ -151,22 +145,11 @@ void ParticleComputeUpdate::clear() {
   updates_ = 0;
 }
 
-std::size_t ParticleComputeUpdate::countAfter(std::uint64_t update) const {
-  const gl::Sync& fence = historyFence_[std::size_t(update % kHistory)];
-  if (fence) {
-    const GLsync sync = reinterpret_cast<GLsync>(fence.handle());
-    while (glClientWaitSync(sync, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000) ==
-           GL_TIMEOUT_EXPIRED) {
-    }
-  }
-  return historyMap_[update % kHistory];
-}
-
 void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state) {
   if (step.dt <= 0.0f) return;  // paused: nothing moves, dies or is born
 
   // Count(u - 2) was produced a whole update ago, so this rarely waits.
-  const std::size_t count2 = updates_ >= 2 ? countAfter(updates_ - 2) : 0;
+  const std::size_t count2 = updates_ >= 2 ? counts_.after(updates_ - 2) : 0;
   lateCount_ = count2;
   const std::size_t limit = std::min(std::size_t(std::max(state.sim.maximum, 0)), capacity_);
   SimBlockInputs inputs;
@@ -283,10 +266,7 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   if (trails_)
     trails_->advance(out.positionLife.id(), born, control_.id(),
                      int(kCountOffset / 4) + 1 - current_);
-  const std::size_t slot = std::size_t(updates_ % kHistory);
-  glCopyNamedBufferSubData(control_.id(), history_.id(), kCountOffset + (1 - current_) * 4,
-                           GLintptr(slot * sizeof(std::uint32_t)), sizeof(std::uint32_t));
-  historyFence_[slot] = gl::createFence();
+  counts_.record(updates_, control_.id(), kCountOffset + (1 - current_) * 4);
 
   budget_.recordEmitted(born);
   current_ = 1 - current_;
@@ -320,7 +300,7 @@ std::vector<std::vector<glm::vec3>> ParticleComputeUpdate::readBackTrails() cons
 
 std::size_t ParticleComputeUpdate::liveCount() const {
   // From the mapped history, never from the control block (record_readback.h says why).
-  return updates_ == 0 ? 0 : countAfter(updates_ - 1);
+  return updates_ == 0 ? 0 : counts_.after(updates_ - 1);
 }
 
 std::vector<Particle> ParticleComputeUpdate::readBack() const {

@@ -38,6 +38,7 @@
 #include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_environment.h"
 #include "contexts/particles/particle_trails.h"
+#include "contexts/particles/update_control.h"
 #include "core/config/gpu_tuning.h"
 #include "core/sim/emission_budget.h"
 
@@ -80,11 +81,9 @@ class ParticleComputeUpdate final : public ParticleBackend {
     gl::Buffer positionLife, velocityKind;
     gl::VertexArray vao;
   };
-  static constexpr int kHistory = 3;
 
   void allocate(BufferSet& set, std::size_t capacity);
   void allocateTiles(std::size_t capacity);
-  std::size_t countAfter(std::uint64_t update) const;
   void setCount(int set, std::uint32_t count);
 
   std::size_t capacity_;
@@ -95,9 +94,7 @@ class ParticleComputeUpdate final : public ParticleBackend {
   gl::Buffer simBlock_;
   gl::Buffer collideList_;  // with obstacles: the records the update found not clear of one
   std::ptrdiff_t collideListBytes_ = 0;
-  gl::Buffer history_;  // kHistory counts, persistently mapped for reading
-  const std::uint32_t* historyMap_ = nullptr;
-  std::array<gl::Sync, kHistory> historyFence_;
+  UpdateCounts counts_;  // the counts updates left, read late
   gl::Program prepareProgram_, emitProgram_, updateProgram_;
   // Programs other than the plain update, by their defines (FIELD_EQUATION,
   // grids too large for a buffer, OBSTACLES), made on first use.
