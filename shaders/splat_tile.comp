@@ -5,9 +5,9 @@
 // splats add to the tile's sums in shared memory; then the workgroup adds
 // those to the view's sums (the buffer the resolve pass turns into the
 // image): a plain store where the chunk is its tile's only one, a global
-// atomic where a dense tile has several. The same integers as the atomic variant adds, so the same image,
-// with at most six global atomics a pixel and chunk instead of six a pixel
-// and particle.
+// atomic where a dense tile has several. The same integers as the atomic
+// variant adds, so the same image, with at most six global atomics a pixel
+// and chunk instead of six a pixel and particle.
 #include "view_block.glsl"
 #include "render_block.glsl"
 #include "splat_common.glsl"

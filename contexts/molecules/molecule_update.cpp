@@ -16,11 +16,7 @@
 namespace sandstorm {
 namespace {
 
-constexpr GLsizeiptr kRecord = UpdateControl::kRecord;
-constexpr GLintptr kCountOffset = UpdateControl::kCountOffset;
-constexpr GLintptr kDispatchOffset = UpdateControl::kDispatchOffset;
-constexpr GLintptr kDrawOffset = UpdateControl::kDrawOffset;
-constexpr GLsizeiptr kControlSize = UpdateControl::kSize;
+using namespace update_control;
 
 enum Binding : GLuint {
   kInPosition = 0,

@@ -18,11 +18,7 @@
 namespace sandstorm {
 namespace {
 
-constexpr GLsizeiptr kRecord = UpdateControl::kRecord;
-constexpr GLintptr kCountOffset = UpdateControl::kCountOffset;
-constexpr GLintptr kDispatchOffset = UpdateControl::kDispatchOffset;
-constexpr GLintptr kDrawOffset = UpdateControl::kDrawOffset;
-constexpr GLsizeiptr kControlSize = UpdateControl::kSize;
+using namespace update_control;
 
 // Binding points of the shaders' storage blocks.
 enum Binding : GLuint {

@@ -12,15 +12,16 @@
 namespace sandstorm {
 
 // Byte offsets in the control block: two counts (a buffer set each), the
-// scan's ticket and tiles, the indirect dispatch, two indirect draws.
-struct UpdateControl {
-  static constexpr std::ptrdiff_t kCountOffset = 0;
-  static constexpr std::ptrdiff_t kDispatchOffset = 16;
-  static constexpr std::ptrdiff_t kDrawOffset = 32;
-  static constexpr std::ptrdiff_t kSize = 64;
-  // A particle's (or molecule member's) two records: position and life, velocity and kind.
-  static constexpr std::ptrdiff_t kRecord = 16;
-};
+// scan's ticket and tiles, the indirect dispatch, two indirect draws. The
+// updates' sources take them with `using namespace update_control;`.
+namespace update_control {
+inline constexpr std::ptrdiff_t kCountOffset = 0;
+inline constexpr std::ptrdiff_t kDispatchOffset = 16;
+inline constexpr std::ptrdiff_t kDrawOffset = 32;
+inline constexpr std::ptrdiff_t kControlSize = 64;
+// A particle's (or molecule member's) two records: position and life, velocity and kind.
+inline constexpr std::ptrdiff_t kRecord = 16;
+}  // namespace update_control
 
 // The live count after each of the last kSlots updates, copied on the GPU
 // from the control block into a persistently mapped buffer with a fence
