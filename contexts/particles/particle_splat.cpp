@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <limits>
 #include <string_view>
 
 #include "contexts/particles/particle_backend.h"
@@ -57,8 +58,12 @@ enum Binding : GLuint {
   kChunkStarts = 11,
   kChunkDispatch = 12,
   kTrailDispatch = 13,
-  kOccupied = 14
+  kOccupied = 14,
+  kTrailRing = 15
 };
+
+// Uniform locations of trail_common.glsl.
+constexpr GLint kTrailLengthUniform = 16, kTrailHeadUniform = 17;
 
 gl::Buffer allocate(std::size_t bytes, const char* what) {
   gl::Buffer buffer = gl::createBuffer();
@@ -171,13 +176,20 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
+  const bool trails = records.trails != 0 && records.trailLength >= 2;
   if (tiled)
-    addTiled(p, levelTiles(size, levels), levels, particles.capacity());
+    addTiled(p, levelTiles(size, levels), levels,
+             listRecords(particles.capacity(), trails ? records.trailLength : 0));
   else
     addAtomic(p);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  if (records.trails != 0 && records.trailLength >= 2)
-    addTrails(p, records, particles.capacity(), look);
+  if (trails) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTrailRing, records.trails);
+    if (tiled)
+      addTiledTrails(p, records, levelTiles(size, 1), look);
+    else
+      addTrails(p, records, particles.capacity(), look);
+  }
   // Both variants leave the sums in the buffer; the resolve turns them into
   // the particle images and zeroes the full-resolution ones for the next view.
   p.resolve.use();
@@ -196,9 +208,19 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   }
 }
 
+namespace {
+
+void setTrailUniforms(const gl::Program& program, const ParticleBackend::Records& r) {
+  glProgramUniform1i(program.id(), kTrailLengthUniform, r.trailLength);
+  glProgramUniform1i(program.id(), kTrailHeadUniform, r.trailHead);
+}
+
+}  // namespace
+
 // Trails (render.trail_length) join the splats in the same sums: drawn by
 // compute, like the particles, where GL lines were 17 times slower on an
-// H100 (docs/PERFORMANCE.md).
+// H100 (docs/PERFORMANCE.md). This is the atomic variant, one invocation a
+// segment; addTiledTrails adds the same integers.
 void ParticleSplat::addTrails(const Programs& p, const ParticleBackend::Records& r,
                               std::size_t capacity, SplatLook look) const {
   if (!trailPrepare_) {
@@ -219,11 +241,55 @@ void ParticleSplat::addTrails(const Programs& p, const ParticleBackend::Records&
   glProgramUniform1ui(trailPrepare_->id(), 3, GLuint(capacity));
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, r.trails);
   trails.use();
-  glProgramUniform1i(trails.id(), 0, r.trailLength);
-  glProgramUniform1i(trails.id(), 1, r.trailHead);
+  setTrailUniforms(trails, r);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, trailDispatch_.id());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+// The tiled variant: the splats' bins, lists and chunks again (addTiled has
+// finished with them), for runs of trail pixels in the full-resolution
+// tiles (trail_bin.comp, trail_tile.comp), so a pixel costs shared-memory
+// atomics, not global ones.
+void ParticleSplat::addTiledTrails(const Programs& p, const ParticleBackend::Records& r,
+                                   std::size_t tileCount, SplatLook look) const {
+  if (!p.trailBin) {
+    const std::vector<std::string> d = lookDefines(look);
+    p.trailBin = std::make_unique<gl::Program>(std::vector<std::string>{"trail_bin.comp"}, d);
+    p.trailTile = std::make_unique<gl::Program>(std::vector<std::string>{"trail_tile.comp"}, d);
+  }
+  // Runs are 8 bytes, half a splat record; [gpu] splat_list caps them as it caps the splats.
+  const std::size_t runs = listRecords_ ? listRecords_ : 2 * listCapacity_;
+  const GLuint runCapacity =
+      GLuint(std::min<std::size_t>(runs, std::numeric_limits<GLuint>::max()));
+  const gl::Program &bin = *p.trailBin, &tile = *p.trailTile;
+  for (const gl::Program* program : {&bin, &tile}) {
+    setTrailUniforms(*program, r);
+    glProgramUniform1ui(program->id(), 2, runCapacity);
+  }
+  constexpr GLintptr kBinDispatch = 32;  // as addTiled's
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_.id());
+  bin.use();
+  glProgramUniform1i(bin.id(), 1, GL_FALSE);
+  glDispatchComputeIndirect(kBinDispatch);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+  scan_->use();
+  glProgramUniform1ui(scan_->id(), 0, GLuint(tileCount));
+  glProgramUniform1ui(scan_->id(), 1, chunk_);
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+
+  glProgramUniform1i(bin.id(), 1, GL_TRUE);
+  bin.use();
+  glDispatchComputeIndirect(kBinDispatch);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+
+  tile.use();
+  glProgramUniform1ui(tile.id(), 1, chunk_);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, chunkDispatch_.id());
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -236,14 +302,20 @@ void ParticleSplat::addAtomic(const Programs& p) const {
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
 }
 
+std::size_t ParticleSplat::listRecords(std::size_t capacity, int trailLength) const {
+  // [gpu] splat_list sets the number; a storage buffer holds at most maxListRecords_.
+  if (listRecords_ != 0) return std::min(listRecords_, maxListRecords_);
+  // A particle of a few pixels covers one 32-pixel tile, sometimes two or
+  // four; a trail of a few pixels a segment makes about one run of pixels in
+  // a tile (8 bytes, half a record) every four segments. The scatter passes
+  // add those past the end themselves.
+  const std::size_t splats = 2 * capacity;
+  const std::size_t runs = trailLength >= 2 ? capacity * std::size_t((trailLength + 2) / 4) / 2 : 0;
+  return std::min(std::max(splats, runs) + 4096, maxListRecords_);
+}
+
 void ParticleSplat::addTiled(const Programs& p, std::size_t tileCount, int levels,
-                             std::size_t capacity) const {
-  // Records in the lists: a particle of a few pixels covers one 32-pixel tile,
-  // sometimes two or four; the scatter pass adds those past the end itself.
-  // [gpu] splat_list sets the number (listRecords_); a storage buffer holds
-  // at most maxListRecords_.
-  const std::size_t listCapacity =
-      std::min(listRecords_ ? listRecords_ : 2 * capacity + 4096, maxListRecords_);
+                             std::size_t listCapacity) const {
   if (tileCount > tiles_) {
     tileCounts_ = allocate(tileCount * 4, "the tile counts");
     zero(tileCounts_);  // splat_scan.comp zeroes them after each view

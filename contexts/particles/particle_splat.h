@@ -74,16 +74,25 @@ class ParticleSplat {
  private:
   struct Programs {
     gl::Program splat, resolve;
-    std::optional<gl::Program> bin, tile;         // tiled
-    mutable std::unique_ptr<gl::Program> trails;  // made on first use
+    std::optional<gl::Program> bin, tile;  // tiled
+    // Trails: the atomic variant and the tiled one's passes, made on first use.
+    mutable std::unique_ptr<gl::Program> trails, trailBin, trailTile;
   };
   const Programs& programs(SplatLook look) const;
   // Add every particle's footprint to the sums.
   void addAtomic(const Programs& p) const;
   void addTrails(const Programs& p, const ParticleBackend::Records& records, std::size_t capacity,
                  SplatLook look) const;
-  // `tileCount`: of every level's grid; `levels`: how many the view uses.
-  void addTiled(const Programs& p, std::size_t tileCount, int levels, std::size_t capacity) const;
+  // `tileCount`: of every level's grid; `levels`: how many the view uses;
+  // `listCapacity`: the splat records the lists hold (listRecords).
+  void addTiled(const Programs& p, std::size_t tileCount, int levels,
+                std::size_t listCapacity) const;
+  // Trails in the tiled variant, after addTiled; `tileCount`: the full-resolution grid's.
+  void addTiledTrails(const Programs& p, const ParticleBackend::Records& records,
+                      std::size_t tileCount, SplatLook look) const;
+  // The splat records (16 bytes) the lists hold for `capacity` particles and
+  // their trails of `trailLength` positions (0: none).
+  std::size_t listRecords(std::size_t capacity, int trailLength) const;
 
   bool tiled_;
   std::uint32_t chunk_;             // tiled: list entries a workgroup

@@ -1,0 +1,123 @@
+// ParticleSplat, trails: what trail_splat.comp (global atomics) and the tiled
+// passes (trail_bin.comp, trail_tile.comp) share, so all three find the same
+// pixels with the same values and add the same integers.
+//
+// Segment j of particle o's trail (j = 0 the newest; the segments trail.vert
+// joins) is walked in n steps from its newer end, one pixel a step, n its
+// longer axis in pixels (at most kTrailMaxPixels); a trail's pixels are
+// numbered j * kTrailMaxPixels + step. Each adds to the splat sums
+// (splat_common.glsl's channels) like a splat's pixel: alpha fading along the
+// trail and behind the scene, the particle's colour coordinate, the normal
+// towards the eye. The positions are `precise`, so that every program that
+// includes this file puts a step on the same pixel.
+//
+// Needs view_block.glsl, render_block.glsl, splat_common.glsl, and a
+// definition of trailAdd (below) in the including shader.
+layout(std430, binding = 0) readonly restrict buffer PositionLife { vec4 positionLife[]; };
+layout(std430, binding = 1) readonly restrict buffer VelocityKind { vec4 velocityKind[]; };
+layout(std430, binding = 15) readonly restrict buffer Ring { vec4 ring[]; };  // uTrailLength a record
+layout(binding = 3) uniform sampler2D uSceneDepth;
+layout(location = 16) uniform int uTrailLength;
+layout(location = 17) uniform int uTrailHead;  // the ring's newest slot
+
+const int kTrailMaxPixels = 64;  // a segment's pixels (one frame of motion: a few)
+
+struct TrailSegment {
+  vec2 pa, d;    // the newer end and the way to the older one, in view pixels
+  float wa, wb;  // the ends' distances from the eye
+  int j, n;      // the segment, and the steps it walks
+  ivec3 normal;  // towards the eye from the newer end, fixed point
+};
+
+struct TrailLook {
+  float t, opacity;  // the colour map's coordinate and the opacity, of the particle now
+};
+
+TrailLook trailLook(uint o) {
+  vec4 pl = positionLife[o], vk = velocityKind[o];
+  float age = clamp(1.0 - pl.w / max(vk.w, 1e-6), 0.0, 1.0);
+  return TrailLook(colorCoordinate(age, vk.xyz, pl.xyz), mix(look.colorBirth.a, look.colorDeath.a, age));
+}
+
+// False where the segment has no ends yet or one lies behind the eye.
+bool trailSegment(uint o, int j, out TrailSegment s) {
+  uint base = o * uint(uTrailLength);
+  vec4 a = ring[base + uint((uTrailHead - j + uTrailLength) % uTrailLength)];
+  vec4 b = ring[base + uint((uTrailHead - j - 1 + uTrailLength) % uTrailLength)];
+  if (a.w < 0.5 || b.w < 0.5) return false;
+  precise vec4 ca = view.viewProjection * vec4(a.xyz, 1.0);
+  precise vec4 cb = view.viewProjection * vec4(b.xyz, 1.0);
+  if (ca.w <= 1e-4 || cb.w <= 1e-4) return false;
+  precise vec2 pa = (ca.xy / ca.w * 0.5 + 0.5) * view.viewport.zw;
+  precise vec2 pb = (cb.xy / cb.w * 0.5 + 0.5) * view.viewport.zw;
+  s.pa = pa;
+  s.d = pb - pa;
+  s.wa = ca.w;
+  s.wb = cb.w;
+  s.j = j;
+  s.n = min(int(ceil(max(abs(s.d.x), abs(s.d.y)))), kTrailMaxPixels);
+  s.normal = ivec3(round(normalize(view.eye.xyz - a.xyz) * kSplatScale));
+  return true;
+}
+
+// Where along the segment a step lies, 0 to 1 (the pixel at the older end belongs to the next segment).
+float trailAlong(TrailSegment s, int step) {
+  precise float u = (float(step) + 0.5) / float(max(s.n, 1));
+  return u;
+}
+
+ivec2 trailPixel(TrailSegment s, int step) {
+  precise vec2 p = s.pa + trailAlong(s, step) * s.d;
+  return ivec2(floor(p));
+}
+
+bool trailOnScreen(ivec2 p) {
+  return all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, ivec2(view.viewport.zw)));
+}
+
+// The sums a step adds at pixel p (on screen); false where it adds nothing.
+bool trailValues(TrailSegment s, TrailLook l, int step, ivec2 p, out uint v[kSplatChannels]) {
+  float u = trailAlong(s, step);
+  float distance = mix(s.wa, s.wb, u);
+  float scene = viewDistance(texelFetch(uSceneDepth, p, 0).r);
+  float fade = clamp((scene - distance) / max(look.params.y, 1e-4), 0.0, 1.0);
+  float along = (float(s.j) + u) / float(uTrailLength - 1);
+  float alpha = l.opacity * (1.0 - along) * fade;
+  if (alpha < 1.0 / 512.0) return false;
+  float opticalDepth = -log(1.0 - min(alpha, 0.999));
+#ifdef SHADOWS
+  float weight = opticalDepth;  // splat_common.glsl; trails are not shadowed (light 1)
+#else
+  float weight = alpha;
+#endif
+  v[0] = uint(weight * kSplatScale + 0.5);
+  v[1] = uint(weight * l.t * kSplatScale + 0.5);
+  v[2] = uint(opticalDepth * kSplatScale + 0.5);
+  v[3] = uint(int(round(weight * float(s.normal.x))));
+  v[4] = uint(int(round(weight * float(s.normal.y))));
+  v[5] = uint(int(round(weight * float(s.normal.z))));
+  return true;
+}
+
+// Adds a pixel's sums where the including shader keeps them (origin: the tile's).
+void trailAdd(ivec2 p, ivec2 origin, uint v[kSplatChannels]);
+
+// Adds the pixels first..last (trail pixel numbers) of particle o's trail
+// that lie in the 32x32 tile at `origin`.
+void trailRun(uint o, uint first, uint last, ivec2 origin) {
+  TrailLook l = trailLook(o);
+  int j0 = int(first) / kTrailMaxPixels, j1 = int(last) / kTrailMaxPixels;
+  for (int j = j0; j <= j1; ++j) {
+    TrailSegment s;
+    if (!trailSegment(o, j, s)) continue;
+    int from = j == j0 ? int(first) % kTrailMaxPixels : 0;
+    int to = j == j1 ? min(int(last) % kTrailMaxPixels, s.n - 1) : s.n - 1;
+    for (int step = from; step <= to; ++step) {
+      ivec2 p = trailPixel(s, step);
+      if (!trailOnScreen(p) || any(lessThan(p, origin)) || any(greaterThanEqual(p, origin + kSplatTile)))
+        continue;
+      uint v[kSplatChannels];
+      if (trailValues(s, l, step, p, v)) trailAdd(p, origin, v);
+    }
+  }
+}
