@@ -18,15 +18,33 @@ layout(rgba16f, binding = 1) writeonly uniform image2D uNormal;
 layout(r16f, binding = 2) writeonly uniform image2D uLight;
 layout(location = 0) uniform ivec2 uSize;
 
-// Adds `weight` times the sums at `index` (pixels from the buffer's start).
-void addSums(uint index, float weight, inout float sums[kSplatChannels]) {
-  uvec4 first = accum[index * 2u], second = accum[index * 2u + 1u];
+// Adds `weight` times a pixel's sums (its two uvec4).
+void addSums(uvec4 first, uvec4 second, float weight, inout float sums[kSplatChannels]) {
   sums[0] += weight * float(first.x);
   sums[1] += weight * float(first.y);
   sums[2] += weight * float(first.z);
   sums[3] += weight * float(int(first.w));
   sums[4] += weight * float(int(second.x));
   sums[5] += weight * float(int(second.y));
+}
+void addSums(uint index, float weight, inout float sums[kSplatChannels]) {
+  addSums(accum[index * 2u], accum[index * 2u + 1u], weight, sums);
+}
+
+// Adds the trails' two sums at view pixel p (splat_common.glsl): their
+// optical depth is their weight and their opacity, and their normal faces
+// the eye along the pixel's ray.
+void addTrails(ivec2 p, uvec2 trail, inout float sums[kSplatChannels]) {
+  float depth = float(trail.x);
+  vec2 ndc = (vec2(p) + 0.5) / vec2(uSize) * 2.0 - 1.0;
+  vec4 far = view.inverseViewProjection * vec4(ndc, 1.0, 1.0);
+  vec3 toEye = normalize(view.eye.xyz - far.xyz / far.w);
+  sums[0] += depth;
+  sums[1] += float(trail.y);
+  sums[2] += depth;
+  sums[3] += depth * toEye.x;
+  sums[4] += depth * toEye.y;
+  sums[5] += depth * toEye.z;
 }
 
 // Adds a coarser level's sums at view pixel p, interpolated bilinearly
@@ -58,10 +76,12 @@ void main() {
   if (p.x >= uSize.x || p.y >= uSize.y) return;
   float sums[kSplatChannels] = float[](0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
   uint index = uint(p.y) * uint(uSize.x) + uint(p.x);
-  // Each contribution adds at least 8 to channel 2: zero means nothing was
-  // splatted here, and the sums need no zeroing.
-  if (accum[index * 2u].z != 0u) {
-    addSums(index, 1.0, sums);
+  // Each splat adds at least 8 to channel 2, each trail pixel to channel 6:
+  // zero in both means nothing was drawn here, and the sums need no zeroing.
+  uvec4 first = accum[index * 2u], second = accum[index * 2u + 1u];
+  if (first.z != 0u || second.z != 0u) {
+    addSums(first, second, 1.0, sums);
+    if (second.z != 0u) addTrails(p, second.zw, sums);
     accum[index * 2u] = uvec4(0u);
     accum[index * 2u + 1u] = uvec4(0u);
   }

@@ -14,6 +14,14 @@
 // memory sector) a pixel; the tiled pass in shared memory, a tile at a time.
 const uint kSplatStride = 8u;
 const uint kSplatChannels = 6u;
+// Trails (trail_common.glsl) add two sums of their own to a full-resolution
+// pixel's spare channels: 6 sum of -ln(1 - alpha), 7 the same times t. A
+// trail's weight is its optical depth (as with SHADOWS), its light 1 and its
+// normal towards the eye along the pixel's ray, so the resolve adds channel 6
+// to channels 0 and 2 and to the normal sums: two atomics a trail pixel,
+// not six.
+const uint kSplatTrailChannel = 6u;
+const uint kSplatTrailChannels = 2u;
 const float kSplatScale = 4096.0;
 // The tiled pass: tiles of kSplatTile x kSplatTile pixels, at most
 // kSplatMaxTiles a view (a 4K view has 8160; a histogram of them fits in a

@@ -37,9 +37,10 @@ layout(location = 2) uniform uint uListCapacity;  // runs
 
 shared uint sBins[kSplatMaxTiles];
 
-void trailAdd(ivec2 p, ivec2 origin, uint v[kSplatChannels]) {
-  uint base = (uint(p.y) * uint(view.viewport.z) + uint(p.x)) * kSplatStride;
-  for (uint c = 0u; c < kSplatChannels; ++c) atomicAdd(accum[base + c], v[c]);
+void trailAdd(ivec2 p, ivec2 origin, uint v[kSplatTrailChannels]) {
+  uint base = (uint(p.y) * uint(view.viewport.z) + uint(p.x)) * kSplatStride + kSplatTrailChannel;
+  atomicAdd(accum[base], v[0]);
+  atomicAdd(accum[base + 1u], v[1]);
 }
 
 void binRun(uint o, uint tile, uint first, uint last, uint across) {

@@ -7,8 +7,9 @@
 // longer axis in pixels (at most kTrailMaxPixels); a trail's pixels are
 // numbered j * kTrailMaxPixels + step. Each adds to the splat sums
 // (splat_common.glsl's channels) like a splat's pixel: alpha fading along the
-// trail and behind the scene, the particle's colour coordinate, the normal
-// towards the eye. The positions are `precise`, so that every program that
+// trail and behind the scene, weighed by its optical depth, and the
+// particle's colour coordinate, in the trails' two channels
+// (splat_common.glsl). The positions are `precise`, so that every program that
 // includes this file puts a step on the same pixel.
 //
 // Needs view_block.glsl, render_block.glsl, splat_common.glsl, and a
@@ -26,7 +27,6 @@ struct TrailSegment {
   vec2 pa, d;    // the newer end and the way to the older one, in view pixels
   float wa, wb;  // the ends' distances from the eye
   int j, n;      // the segment, and the steps it walks
-  ivec3 normal;  // towards the eye from the newer end, fixed point
 };
 
 struct TrailLook {
@@ -56,7 +56,6 @@ bool trailSegment(uint o, int j, out TrailSegment s) {
   s.wb = cb.w;
   s.j = j;
   s.n = min(int(ceil(max(abs(s.d.x), abs(s.d.y)))), kTrailMaxPixels);
-  s.normal = ivec3(round(normalize(view.eye.xyz - a.xyz) * kSplatScale));
   return true;
 }
 
@@ -75,8 +74,9 @@ bool trailOnScreen(ivec2 p) {
   return all(greaterThanEqual(p, ivec2(0))) && all(lessThan(p, ivec2(view.viewport.zw)));
 }
 
-// The sums a step adds at pixel p (on screen); false where it adds nothing.
-bool trailValues(TrailSegment s, TrailLook l, int step, ivec2 p, out uint v[kSplatChannels]) {
+// The sums a step adds at pixel p (on screen): its optical depth and the
+// same times the colour coordinate, fixed point; false where it adds nothing.
+bool trailValues(TrailSegment s, TrailLook l, int step, ivec2 p, out uint v[kSplatTrailChannels]) {
   float u = trailAlong(s, step);
   float distance = mix(s.wa, s.wb, u);
   float scene = viewDistance(texelFetch(uSceneDepth, p, 0).r);
@@ -85,22 +85,13 @@ bool trailValues(TrailSegment s, TrailLook l, int step, ivec2 p, out uint v[kSpl
   float alpha = l.opacity * (1.0 - along) * fade;
   if (alpha < 1.0 / 512.0) return false;
   float opticalDepth = -log(1.0 - min(alpha, 0.999));
-#ifdef SHADOWS
-  float weight = opticalDepth;  // splat_common.glsl; trails are not shadowed (light 1)
-#else
-  float weight = alpha;
-#endif
-  v[0] = uint(weight * kSplatScale + 0.5);
-  v[1] = uint(weight * l.t * kSplatScale + 0.5);
-  v[2] = uint(opticalDepth * kSplatScale + 0.5);
-  v[3] = uint(int(round(weight * float(s.normal.x))));
-  v[4] = uint(int(round(weight * float(s.normal.y))));
-  v[5] = uint(int(round(weight * float(s.normal.z))));
+  v[0] = uint(opticalDepth * kSplatScale + 0.5);
+  v[1] = uint(opticalDepth * l.t * kSplatScale + 0.5);
   return true;
 }
 
 // Adds a pixel's sums where the including shader keeps them (origin: the tile's).
-void trailAdd(ivec2 p, ivec2 origin, uint v[kSplatChannels]);
+void trailAdd(ivec2 p, ivec2 origin, uint v[kSplatTrailChannels]);
 
 // Adds the pixels first..last (trail pixel numbers) of particle o's trail
 // that lie in the 32x32 tile at `origin`.
@@ -116,7 +107,7 @@ void trailRun(uint o, uint first, uint last, ivec2 origin) {
       ivec2 p = trailPixel(s, step);
       if (!trailOnScreen(p) || any(lessThan(p, origin)) || any(greaterThanEqual(p, origin + kSplatTile)))
         continue;
-      uint v[kSplatChannels];
+      uint v[kSplatTrailChannels];
       if (trailValues(s, l, step, p, v)) trailAdd(p, origin, v);
     }
   }

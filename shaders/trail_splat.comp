@@ -2,7 +2,7 @@
 // ParticleSplat, trails, atomic variant (views too large for the tiled
 // passes, and [gpu] splat = "atomic"): one invocation a trail segment walks
 // its pixels (trail_common.glsl) and adds them to the splat sums with global
-// atomics, six a pixel. Integer sums, so the order the segments arrive in
+// atomics, two a pixel. Integer sums, so the order the segments arrive in
 // does not matter, and the tiled passes add the same integers.
 #include "view_block.glsl"
 #include "render_block.glsl"
@@ -14,9 +14,10 @@ layout(std430, binding = 13) readonly restrict buffer Dispatch { uvec4 dispatch;
 
 #include "trail_common.glsl"
 
-void trailAdd(ivec2 p, ivec2 origin, uint v[kSplatChannels]) {
-  uint base = (uint(p.y) * uint(view.viewport.z) + uint(p.x)) * kSplatStride;
-  for (uint c = 0u; c < kSplatChannels; ++c) atomicAdd(accum[base + c], v[c]);
+void trailAdd(ivec2 p, ivec2 origin, uint v[kSplatTrailChannels]) {
+  uint base = (uint(p.y) * uint(view.viewport.z) + uint(p.x)) * kSplatStride + kSplatTrailChannel;
+  atomicAdd(accum[base], v[0]);
+  atomicAdd(accum[base + 1u], v[1]);
 }
 
 void main() {
@@ -30,7 +31,7 @@ void main() {
   TrailLook l = trailLook(o);
   for (int step = 0; step < s.n; ++step) {
     ivec2 p = trailPixel(s, step);
-    uint v[kSplatChannels];
+    uint v[kSplatTrailChannels];
     if (trailOnScreen(p) && trailValues(s, l, step, p, v)) trailAdd(p, p, v);
   }
 }

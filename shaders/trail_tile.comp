@@ -26,11 +26,12 @@ layout(location = 2) uniform uint uListCapacity;  // runs
 #include "trail_common.glsl"
 
 const uint kTilePixels = uint(kSplatTile * kSplatTile);
-shared uint sSums[kSplatChannels][kTilePixels];
+shared uint sSums[kSplatTrailChannels][kTilePixels];
 
-void trailAdd(ivec2 p, ivec2 origin, uint v[kSplatChannels]) {
+void trailAdd(ivec2 p, ivec2 origin, uint v[kSplatTrailChannels]) {
   uint px = uint((p.y - origin.y) * kSplatTile + (p.x - origin.x));
-  for (uint c = 0u; c < kSplatChannels; ++c) atomicAdd(sSums[c][px], v[c]);
+  atomicAdd(sSums[0][px], v[0]);
+  atomicAdd(sSums[1][px], v[1]);
 }
 
 void main() {
@@ -49,7 +50,7 @@ void main() {
 
   uint lid = gl_LocalInvocationIndex;
   for (uint px = lid; px < kTilePixels; px += kGroup)
-    for (uint c = 0u; c < kSplatChannels; ++c) sSums[c][px] = 0u;
+    for (uint c = 0u; c < kSplatTrailChannels; ++c) sSums[c][px] = 0u;
   barrier();
   uint across = uint(splatLevelTiles(size, 0).x);
   ivec2 origin = ivec2(int(t % across), int(t / across)) * kSplatTile;
@@ -61,8 +62,8 @@ void main() {
   for (uint px = lid; px < kTilePixels; px += kGroup) {
     uvec2 p = uvec2(origin) + uvec2(px % uint(kSplatTile), px / uint(kSplatTile));
     if (p.x >= uint(size.x) || p.y >= uint(size.y)) continue;
-    uint base = (p.y * uint(size.x) + p.x) * kSplatStride;
-    for (uint c = 0u; c < kSplatChannels; ++c) {
+    uint base = (p.y * uint(size.x) + p.x) * kSplatStride + kSplatTrailChannel;
+    for (uint c = 0u; c < kSplatTrailChannels; ++c) {
       uint v = sSums[c][px];
       if (v == 0u) continue;
       if (alone)

@@ -186,9 +186,9 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   if (trails) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTrailRing, records.trails);
     if (tiled)
-      addTiledTrails(p, records, levelTiles(size, 1), look);
+      addTiledTrails(records, levelTiles(size, 1));
     else
-      addTrails(p, records, particles.capacity(), look);
+      addTrails(records, particles.capacity());
   }
   // Both variants leave the sums in the buffer; the resolve turns them into
   // the particle images and zeroes the full-resolution ones for the next view.
@@ -221,18 +221,15 @@ void setTrailUniforms(const gl::Program& program, const ParticleBackend::Records
 // compute, like the particles, where GL lines were 17 times slower on an
 // H100 (docs/PERFORMANCE.md). This is the atomic variant, one invocation a
 // segment; addTiledTrails adds the same integers.
-void ParticleSplat::addTrails(const Programs& p, const ParticleBackend::Records& r,
-                              std::size_t capacity, SplatLook look) const {
+void ParticleSplat::addTrails(const ParticleBackend::Records& r, std::size_t capacity) const {
   if (!trailPrepare_) {
     trailPrepare_ =
         std::make_unique<gl::Program>(std::vector<std::string>{"trail_splat_prepare.comp"});
+    trails_ = std::make_unique<gl::Program>(std::vector<std::string>{"trail_splat.comp"});
     trailDispatch_ = gl::createBuffer();
     glNamedBufferStorage(trailDispatch_.id(), 16, nullptr, 0);
   }
-  if (!p.trails)
-    p.trails = std::make_unique<gl::Program>(std::vector<std::string>{"trail_splat.comp"},
-                                             lookDefines(look));
-  const gl::Program& trails = *p.trails;
+  const gl::Program& trails = *trails_;
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTrailDispatch, trailDispatch_.id());
   trailPrepare_->use();
   glProgramUniform1ui(trailPrepare_->id(), 0, r.countOffset / 4);
@@ -253,18 +250,16 @@ void ParticleSplat::addTrails(const Programs& p, const ParticleBackend::Records&
 // finished with them), for runs of trail pixels in the full-resolution
 // tiles (trail_bin.comp, trail_tile.comp), so a pixel costs shared-memory
 // atomics, not global ones.
-void ParticleSplat::addTiledTrails(const Programs& p, const ParticleBackend::Records& r,
-                                   std::size_t tileCount, SplatLook look) const {
-  if (!p.trailBin) {
-    const std::vector<std::string> d = lookDefines(look);
-    p.trailBin = std::make_unique<gl::Program>(std::vector<std::string>{"trail_bin.comp"}, d);
-    p.trailTile = std::make_unique<gl::Program>(std::vector<std::string>{"trail_tile.comp"}, d);
+void ParticleSplat::addTiledTrails(const ParticleBackend::Records& r, std::size_t tileCount) const {
+  if (!trailBin_) {
+    trailBin_ = std::make_unique<gl::Program>(std::vector<std::string>{"trail_bin.comp"});
+    trailTile_ = std::make_unique<gl::Program>(std::vector<std::string>{"trail_tile.comp"});
   }
   // Runs are 8 bytes, half a splat record; [gpu] splat_list caps them as it caps the splats.
   const std::size_t runs = listRecords_ ? listRecords_ : 2 * listCapacity_;
   const GLuint runCapacity =
       GLuint(std::min<std::size_t>(runs, std::numeric_limits<GLuint>::max()));
-  const gl::Program &bin = *p.trailBin, &tile = *p.trailTile;
+  const gl::Program &bin = *trailBin_, &tile = *trailTile_;
   for (const gl::Program* program : {&bin, &tile}) {
     setTrailUniforms(*program, r);
     glProgramUniform1ui(program->id(), 2, runCapacity);

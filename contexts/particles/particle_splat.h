@@ -81,15 +81,13 @@ class ParticleSplat {
   const Programs& programs(SplatLook look) const;
   // Add every particle's footprint to the sums.
   void addAtomic(const Programs& p) const;
-  void addTrails(const Programs& p, const ParticleBackend::Records& records, std::size_t capacity,
-                 SplatLook look) const;
+  void addTrails(const ParticleBackend::Records& records, std::size_t capacity) const;
   // `tileCount`: of every level's grid; `levels`: how many the view uses;
   // `listCapacity`: the splat records the lists hold (listRecords).
   void addTiled(const Programs& p, std::size_t tileCount, int levels,
                 std::size_t listCapacity) const;
   // Trails in the tiled variant, after addTiled; `tileCount`: the full-resolution grid's.
-  void addTiledTrails(const Programs& p, const ParticleBackend::Records& records,
-                      std::size_t tileCount, SplatLook look) const;
+  void addTiledTrails(const ParticleBackend::Records& records, std::size_t tileCount) const;
   // The splat records (16 bytes) the lists hold for `capacity` particles and
   // their trails of `trailLength` positions (0: none).
   std::size_t listRecords(std::size_t capacity, int trailLength) const;
@@ -110,7 +108,8 @@ class ParticleSplat {
   mutable gl::Buffer tileCounts_, tileStarts_, chunkStarts_, groupBase_,
       tileLists_;  // tiled: the bins
   mutable std::size_t tiles_ = 0, listCapacity_ = 0;
-  mutable std::unique_ptr<gl::Program> trailPrepare_;  // made on first use
+  // Trails, made on first use: the atomic variant's passes, the tiled one's.
+  mutable std::unique_ptr<gl::Program> trailPrepare_, trails_, trailBin_, trailTile_;
   mutable gl::Buffer trailDispatch_;
 };
 
