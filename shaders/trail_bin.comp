@@ -52,6 +52,11 @@ void binRun(uint o, uint tile, uint first, uint last, uint across) {
     trailRun(o, first, last, ivec2(int(tile % across), int(tile / across)) * kSplatTile);
 }
 
+// The tile of a pixel, -1 off screen.
+int tileOf(ivec2 p, uint across) {
+  return trailOnScreen(p) ? (p.y / kSplatTile) * int(across) + p.x / kSplatTile : -1;
+}
+
 void main() {
   uint lid = gl_LocalInvocationIndex;
   ivec2 size = ivec2(view.viewport.zw);
@@ -67,16 +72,19 @@ void main() {
     for (int j = 0; j < uTrailLength - 1; ++j) {
       TrailSegment s;
       if (!trailSegment(o, j, s)) continue;
-      for (int step = 0; step < s.n; ++step) {
-        ivec2 p = trailPixel(s, step);
-        int tile = trailOnScreen(p) ? (p.y / kSplatTile) * int(across) + p.x / kSplatTile : -1;
+      // A segment's pixels move monotonically along each axis, so where its
+      // first and last are in one tile on screen, so are all between.
+      int firstTile = tileOf(trailPixel(s, 0), across), lastTile = tileOf(trailPixel(s, s.n - 1), across);
+      bool oneTile = firstTile >= 0 && firstTile == lastTile;
+      for (int step = 0; step < s.n; step = oneTile ? s.n : step + 1) {
+        int tile = oneTile ? firstTile : tileOf(trailPixel(s, step), across);
         uint at = uint(j * kTrailMaxPixels + step);
         if (tile != run) {
           if (run >= 0) binRun(o, uint(run), first, last, across);
           run = tile;
           first = at;
         }
-        last = at;
+        last = oneTile ? uint(j * kTrailMaxPixels + s.n - 1) : at;
       }
     }
     if (run >= 0) binRun(o, uint(run), first, last, across);
