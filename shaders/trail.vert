@@ -14,7 +14,6 @@ layout(location = 0) uniform int uLength;
 layout(location = 1) uniform int uHead;
 layout(location = 2) uniform uint uCountIndex;  // the live count: counts[uCountIndex] + uCountAdd
 layout(location = 3) uniform uint uCountAdd;
-layout(location = 4) uniform uint uStride;  // slot k of record o at k * uStride + o
 
 out float vColor;
 out float vAlpha;
@@ -25,8 +24,8 @@ void main() {
   uint o = uint(segment / segments);
   int j = segment % segments;
   int newer = (uHead - j + uLength) % uLength, older = (uHead - j - 1 + uLength) % uLength;
-  bool valid = o < counts[uCountIndex] + uCountAdd && ring[uint(older) * uStride + o].w > 0.5;
-  vec4 slot = ring[uint(end == 0 ? newer : older) * uStride + o];
+  bool valid = o < counts[uCountIndex] + uCountAdd && ring[o * uint(uLength) + uint(older)].w > 0.5;
+  vec4 slot = ring[o * uint(uLength) + uint(end == 0 ? newer : older)];
   vec4 pl = valid ? positionLife[o] : vec4(0.0), vk = valid ? velocityKind[o] : vec4(1.0);
   float age = clamp(1.0 - pl.w / max(vk.w, 1e-6), 0.0, 1.0);
   vColor = colorCoordinate(age, vk.xyz, pl.xyz);

@@ -16,11 +16,10 @@
 // definition of trailAdd (below) in the including shader.
 layout(std430, binding = 0) readonly restrict buffer PositionLife { vec4 positionLife[]; };
 layout(std430, binding = 1) readonly restrict buffer VelocityKind { vec4 velocityKind[]; };
-layout(std430, binding = 15) readonly restrict buffer Ring { vec4 ring[]; };  // slot k of o: k * uTrailStride + o
+layout(std430, binding = 15) readonly restrict buffer Ring { vec4 ring[]; };  // uTrailLength a record
 layout(binding = 3) uniform sampler2D uSceneDepth;
 layout(location = 16) uniform int uTrailLength;
 layout(location = 17) uniform int uTrailHead;  // the ring's newest slot
-layout(location = 18) uniform uint uTrailStride;
 
 const int kTrailMaxPixels = 64;  // a segment's pixels (one frame of motion: a few)
 
@@ -42,8 +41,9 @@ TrailLook trailLook(uint o) {
 
 // False where the segment has no ends yet or one lies behind the eye.
 bool trailSegment(uint o, int j, out TrailSegment s) {
-  vec4 a = ring[uint((uTrailHead - j + uTrailLength) % uTrailLength) * uTrailStride + o];
-  vec4 b = ring[uint((uTrailHead - j - 1 + uTrailLength) % uTrailLength) * uTrailStride + o];
+  uint base = o * uint(uTrailLength);
+  vec4 a = ring[base + uint((uTrailHead - j + uTrailLength) % uTrailLength)];
+  vec4 b = ring[base + uint((uTrailHead - j - 1 + uTrailLength) % uTrailLength)];
   if (a.w < 0.5 || b.w < 0.5) return false;
   precise vec4 ca = view.viewProjection * vec4(a.xyz, 1.0);
   precise vec4 cb = view.viewProjection * vec4(b.xyz, 1.0);

@@ -1,6 +1,6 @@
 #version 450 core
 // ParticleTrails: after an update, record o's trail ring (the last K
-// positions, ring slot `uHead` the newest; slot k at k * uStride + o) is its source record's ring moved
+// positions, ring slot `uHead` the newest) is its source record's ring moved
 // along, with the particle's new position at the head; a newborn (record <
 // uBorn, or every record after the rings were made) starts a ring holding only
 // its birth position. w: 1 for a slot that holds a position, 0 not yet.
@@ -21,18 +21,17 @@ layout(location = 3) uniform int uHead;
 layout(location = 4) uniform bool uFresh;
 layout(location = 5) uniform uint uRowGroups;  // workgroups a row of the 2D dispatch
 layout(location = 6) uniform uint uCountAdd;
-layout(location = 7) uniform uint uStride;  // the rings' capacity
 
 void main() {
   uint o = (gl_WorkGroupID.y * uRowGroups + gl_WorkGroupID.x) * 256u + gl_LocalInvocationIndex;
   if (o >= counts[uSet] + uCountAdd) return;
   vec3 x = positionLife[o].xyz;
+  uint base = o * uint(uLength);
   if (uFresh || o < uBorn) {
-    for (int k = 0; k < uLength; ++k) outRing[uint(k) * uStride + o] = vec4(x, k == uHead ? 1.0 : 0.0);
+    for (int k = 0; k < uLength; ++k) outRing[base + uint(k)] = vec4(x, k == uHead ? 1.0 : 0.0);
     return;
   }
-  uint from = trailSource[o];
-  for (int k = 0; k < uLength; ++k)
-    if (k != uHead) outRing[uint(k) * uStride + o] = inRing[uint(k) * uStride + from];
-  outRing[uint(uHead) * uStride + o] = vec4(x, 1.0);
+  uint from = trailSource[o] * uint(uLength);
+  for (int k = 0; k < uLength; ++k) outRing[base + uint(k)] = inRing[from + uint(k)];
+  outRing[base + uint(uHead)] = vec4(x, 1.0);
 }

@@ -59,12 +59,10 @@ class ParticleBackend {
     // Byte offset in `countBuffer` of a DrawArraysIndirectCommand drawing the
     // records, or -1: another context can draw them without reading anything back.
     std::int64_t drawCommand = -1;
-    // Trails (ParticleTrails, render.trail_length > 0): `trailLength` vec4
-    // slots a record, slot `trailHead` the newest; slot k of record o at
-    // k * trailStride + o.
+    // Trails (ParticleTrails; compute backend, render.trail_length > 0): a
+    // buffer of `trailLength` vec4 per record, slot `trailHead` the newest.
     std::uint32_t trails = 0;
     std::int32_t trailLength = 0, trailHead = 0;
-    std::uint32_t trailStride = 0;
   };
   virtual Records records() const = 0;
 

@@ -287,8 +287,7 @@ ParticleBackend::Records ParticleComputeUpdate::records() const {
           std::int64_t(kDrawOffset + current_ * 16),
           trails_ ? trails_->ring() : 0u,
           trails_ ? trails_->length() : 0,
-          trails_ ? trails_->head() : 0,
-          trails_ ? std::uint32_t(trails_->stride()) : 0u};
+          trails_ ? trails_->head() : 0};
 }
 
 std::vector<std::vector<glm::vec3>> ParticleComputeUpdate::readBackTrails() const {

@@ -280,8 +280,7 @@ ParticleBackend::Records ParticleGeoUpdate::records() const {
           -1,
           trails_ ? trails_->ring() : 0u,
           trails_ ? trails_->length() : 0,
-          trails_ ? trails_->head() : 0,
-          trails_ ? std::uint32_t(trails_->stride()) : 0u};
+          trails_ ? trails_->head() : 0};
 }
 
 std::size_t ParticleGeoUpdate::liveCount() const {

@@ -63,7 +63,7 @@ enum Binding : GLuint {
 };
 
 // Uniform locations of trail_common.glsl.
-constexpr GLint kTrailLengthUniform = 16, kTrailHeadUniform = 17, kTrailStrideUniform = 18;
+constexpr GLint kTrailLengthUniform = 16, kTrailHeadUniform = 17;
 
 gl::Buffer allocate(std::size_t bytes, const char* what) {
   gl::Buffer buffer = gl::createBuffer();
@@ -213,7 +213,6 @@ namespace {
 void setTrailUniforms(const gl::Program& program, const ParticleBackend::Records& r) {
   glProgramUniform1i(program.id(), kTrailLengthUniform, r.trailLength);
   glProgramUniform1i(program.id(), kTrailHeadUniform, r.trailHead);
-  glProgramUniform1ui(program.id(), kTrailStrideUniform, r.trailStride);
 }
 
 }  // namespace

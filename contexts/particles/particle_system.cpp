@@ -163,8 +163,7 @@ void ParticleSystem::drawTrails(const View* view, glm::ivec2 size) const {
 
 std::vector<std::vector<glm::vec3>> ParticleSystem::readBackTrails() const {
   const ParticleBackend::Records r = update_->records();
-  return ParticleTrails::read(r.trails, r.trailLength, r.trailHead, r.trailStride,
-                              update_->liveCount());
+  return ParticleTrails::read(r.trails, r.trailLength, r.trailHead, update_->liveCount());
 }
 
 }  // namespace sandstorm

@@ -50,7 +50,6 @@ void ParticleTrails::advance(std::uint32_t positions, std::uint32_t born, std::u
   glProgramUniform1i(program_.id(), 3, head_);
   glProgramUniform1i(program_.id(), 4, fresh_ ? 1 : 0);
   glProgramUniform1ui(program_.id(), 5, row);
-  glProgramUniform1ui(program_.id(), 7, GLuint(capacity_));
   glDispatchCompute(row, (groups + row - 1) / row, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   current_ = next;
@@ -58,22 +57,20 @@ void ParticleTrails::advance(std::uint32_t positions, std::uint32_t born, std::u
 }
 
 std::vector<std::vector<glm::vec3>> ParticleTrails::readBack(std::size_t count) const {
-  return read(ring(), length_, head_, capacity_, count);
+  return read(ring(), length_, head_, count);
 }
 
 std::vector<std::vector<glm::vec3>> ParticleTrails::read(std::uint32_t ring, int length, int head,
-                                                         std::size_t stride, std::size_t count) {
+                                                         std::size_t count) {
   if (ring == 0 || length <= 0) return {};
-  count = std::min(count, stride);
-  // Slot k of every record, k after k.
   std::vector<glm::vec4> slots(count * std::size_t(length));
-  for (int k = 0; k < length && count > 0; ++k)
-    glGetNamedBufferSubData(ring, GLintptr(std::size_t(k) * stride * sizeof(glm::vec4)),
-                            GLsizeiptr(count * sizeof(glm::vec4)), &slots[std::size_t(k) * count]);
+  if (!slots.empty())
+    glGetNamedBufferSubData(ring, 0, GLsizeiptr(slots.size() * sizeof(glm::vec4)), slots.data());
   std::vector<std::vector<glm::vec3>> trails(count);
   for (std::size_t i = 0; i < count; ++i)
     for (int j = 0; j < length; ++j) {
-      const glm::vec4 slot = slots[std::size_t((head - j + length) % length) * count + i];
+      const glm::vec4 slot =
+          slots[i * std::size_t(length) + std::size_t((head - j + length) % length)];
       if (slot.w > 0.5f) trails[i].push_back(glm::vec3(slot));
     }
   return trails;

@@ -1,7 +1,5 @@
 // ParticleTrails: each particle's last K positions (render.trail_length), in
-// a ring per record on the GPU, for both backends. Slot k of record o is at
-// k * stride() + o (stride: the capacity), so the passes that read or move
-// every trail, a slot at a time, read and write consecutive memory. The update writes every
+// a ring per record on the GPU, for both backends. The update writes every
 // survivor's input record (the compute update's trailSource, or the
 // transform-feedback update's captured outSource: source());
 // after it, trail_update.comp moves each ring to its particle's new record and
@@ -42,12 +40,11 @@ class ParticleTrails {
   std::uint32_t ring() const { return rings_[std::size_t(current_)].id(); }
   int length() const { return length_; }
   int head() const { return head_; }
-  std::size_t stride() const { return capacity_; }
   // Record i's trail, newest first, the slots holding a position (tests).
   std::vector<std::vector<glm::vec3>> readBack(std::size_t count) const;
   // The same from any context that shares the ring buffer (waits for the GPU).
   static std::vector<std::vector<glm::vec3>> read(std::uint32_t ring, int length, int head,
-                                                  std::size_t stride, std::size_t count);
+                                                  std::size_t count);
 
  private:
   gl::Program program_;

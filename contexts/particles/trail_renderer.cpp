@@ -29,7 +29,6 @@ void TrailRenderer::draw(const ParticleBackend::Records& r, std::size_t capacity
   glProgramUniform1i(program_.id(), 1, r.trailHead);
   glProgramUniform1ui(program_.id(), 2, r.countOffset / 4);
   glProgramUniform1ui(program_.id(), 3, r.countAdd);
-  glProgramUniform1ui(program_.id(), 4, r.trailStride);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, r.positionLife);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, r.velocityKind);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, r.countBuffer);

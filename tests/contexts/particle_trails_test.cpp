@@ -70,7 +70,7 @@ void checkTrails(const Run& run, int length) {
 
 std::vector<std::vector<glm::vec3>> trailsOf(const ParticleBackend& gpu) {
   const ParticleBackend::Records r = gpu.records();
-  return ParticleTrails::read(r.trails, r.trailLength, r.trailHead, r.trailStride, gpu.liveCount());
+  return ParticleTrails::read(r.trails, r.trailLength, r.trailHead, gpu.liveCount());
 }
 
 TEST_F(ParticleTrailsTest, EachTrailIsItsParticlesLastPositionsThroughBirthsAndDeaths) {
