@@ -7,6 +7,8 @@
 // The live count: counts[uSet] + uCountAdd (the compute backend's control
 // block, or the transform-feedback backend's survivors plus its newborn).
 
+// One invocation a slot, so that a warp reads and writes two whole rings of
+// consecutive memory.
 layout(local_size_x = 256) in;
 layout(std430, binding = 2) readonly restrict buffer PositionLife { vec4 positionLife[]; };
 layout(std430, binding = 6) readonly restrict buffer TrailSource { uint trailSource[]; };
@@ -23,15 +25,14 @@ layout(location = 5) uniform uint uRowGroups;  // workgroups a row of the 2D dis
 layout(location = 6) uniform uint uCountAdd;
 
 void main() {
-  uint o = (gl_WorkGroupID.y * uRowGroups + gl_WorkGroupID.x) * 256u + gl_LocalInvocationIndex;
+  uint slot = (gl_WorkGroupID.y * uRowGroups + gl_WorkGroupID.x) * 256u + gl_LocalInvocationIndex;
+  uint o = slot / uint(uLength);
+  int k = int(slot % uint(uLength));
   if (o >= counts[uSet] + uCountAdd) return;
-  vec3 x = positionLife[o].xyz;
-  uint base = o * uint(uLength);
-  if (uFresh || o < uBorn) {
-    for (int k = 0; k < uLength; ++k) outRing[base + uint(k)] = vec4(x, k == uHead ? 1.0 : 0.0);
-    return;
-  }
-  uint from = trailSource[o] * uint(uLength);
-  for (int k = 0; k < uLength; ++k) outRing[base + uint(k)] = inRing[from + uint(k)];
-  outRing[base + uint(uHead)] = vec4(x, 1.0);
+  if (k == uHead)
+    outRing[slot] = vec4(positionLife[o].xyz, 1.0);
+  else if (uFresh || o < uBorn)
+    outRing[slot] = vec4(positionLife[o].xyz, 0.0);
+  else
+    outRing[slot] = inRing[trailSource[o] * uint(uLength) + uint(k)];
 }

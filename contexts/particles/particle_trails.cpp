@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "core/util/error.h"
 
@@ -13,6 +14,11 @@ ParticleTrails::ParticleTrails() : program_(std::vector<std::string>{"trail_upda
 void ParticleTrails::prepare(std::size_t capacity, int length) {
   length = std::clamp(length, 1, kMaxLength);
   if (capacity != capacity_ || length != length_) {
+    // trail_update.comp numbers the slots with a uint.
+    if (capacity * std::size_t(length) > std::numeric_limits<std::uint32_t>::max())
+      throw Error(concat("render.trail_length ", length, ": ", capacity,
+                         " particles' trails hold more than 2^32 positions; shorten the trails "
+                         "or lower sim.maximum"));
     const GLsizeiptr ringBytes = GLsizeiptr(capacity) * length * GLsizeiptr(sizeof(glm::vec4));
     glGetError();
     source_ = gl::createBuffer();
@@ -41,7 +47,7 @@ void ParticleTrails::advance(std::uint32_t positions, std::uint32_t born, std::u
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, rings_[std::size_t(current_)].id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, rings_[std::size_t(next)].id());
   program_.use();
-  const GLuint groups = GLuint((capacity_ + 255) / 256);
+  const GLuint groups = GLuint((capacity_ * std::size_t(length_) + 255) / 256);  // a slot each
   const GLuint row = std::min<GLuint>(groups, 32768u);
   glProgramUniform1i(program_.id(), 0, countIndex);
   glProgramUniform1ui(program_.id(), 6, countAdd);
