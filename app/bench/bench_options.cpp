@@ -22,6 +22,7 @@ const char* kUsage = R"(sandstorm-bench: GPU particle benchmark (headless EGL)
                   [--solver-grids 128x128x64] [--solver-iterations 40]
                   [--wall-backend compute] [--particle-size M] [--memory-gib G]
                   [--integrator euler|rk2|rk4] [--update-items 1|2|4|8] [--gpu-warmup S]
+                  [--wall-warmup S]
 
 A fixed scene (a tornado, particles in steady state at each count) timed over
 fixed frames. Sections:
@@ -37,7 +38,8 @@ fixed frames. Sections:
   walls     whole frames of 1..8 views, each wall simulating or one shared simulation,
             with trails of each --wall-trails length (render.trail_length; 0 none),
             without and with shadows (--wall-shadows: render.shadows; the update
-            stage then includes the shadow map's pass)
+            stage then includes the shadow map's pass); each configuration's
+            untimed frames last --warmup frames and --wall-warmup seconds (1)
   sort      GpuRadixSort (render.order = sorted) of --sort-keys random keys:
             ms, and its memory traffic against the copy ceiling
   solver    the live flow solver's step on the GPU (GpuFluidSolver) on each of
@@ -117,6 +119,7 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
       o.sortKeys = {5000};
       o.solverGrids = {{16, 16, 8}};
       o.gpuWarmupSeconds = 0.0;
+      o.wallWarmupSeconds = 0.0;
     }
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& a = args[i];
@@ -230,6 +233,10 @@ BenchOptions parseBenchOptions(int argc, char** argv) {
     } else if (a == "--gpu-warmup") {
       o.gpuWarmupSeconds = number(v, a);
       if (!(o.gpuWarmupSeconds >= 0.0 && o.gpuWarmupSeconds <= 600.0))
+        throw Error(concat(a, ": ", v, ": expected 0..600 seconds"));
+    } else if (a == "--wall-warmup") {
+      o.wallWarmupSeconds = number(v, a);
+      if (!(o.wallWarmupSeconds >= 0.0 && o.wallWarmupSeconds <= 600.0))
         throw Error(concat(a, ": ", v, ": expected 0..600 seconds"));
     } else if (a == "--update-items") {
       o.updateItems = int(count(v, a));

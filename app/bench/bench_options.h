@@ -37,8 +37,12 @@ struct BenchOptions {
   std::string wallBackend = "compute";
   std::string integrator = "rk2";  // euler | rk2 | rk4 (tracer particles)
   double gpuWarmupSeconds = 5.0;   // the GPU kept busy before the first measurement
-  int updateItems = 4;             // records an invocation of the compute update ([gpu])
-  double memoryGiB = 0;            // 0: what the driver reports, else unlimited
+  // Untimed frames of each walls configuration last at least this long (and
+  // --warmup frames): on an H100 a process's first configuration ran 2.7x
+  // slower for its first half second or so, whatever the GPU did before.
+  double wallWarmupSeconds = 1.0;
+  int updateItems = 4;   // records an invocation of the compute update ([gpu])
+  double memoryGiB = 0;  // 0: what the driver reports, else unlimited
 };
 
 // Parses argv; throws Error on a bad option. `--help` prints usage and exits 0.

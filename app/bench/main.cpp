@@ -474,18 +474,10 @@ class Bench {
       GpuStopwatch updates;
       StageWatches watches;
       std::vector<double> wallMs;
-      const int frames = 1 + o_.warmup + o_.frames;
-      for (int f = 0; f < frames; ++f) {
-        const bool timed = f >= frames - o_.frames;
-        if (f == frames - o_.frames) {
-          updates.clear();
-          watches.scene.clear();
-          watches.particles.clear();
-          watches.post.clear();
-          finishGpu();
-        }
-        const auto start = std::chrono::steady_clock::now();
-        const FramePacket packet = benchPacket(std::uint32_t(f), c, fieldUpdate);
+      // Untimed frames: --warmup of them and --wall-warmup seconds; then the timed ones.
+      std::uint32_t f = 0;
+      auto drawFrame = [&] {
+        const FramePacket packet = benchPacket(f++, c, fieldUpdate);
         for (auto& system : sims) {
           updates.begin();
           system->advance(packet);
@@ -495,12 +487,28 @@ class Bench {
           views[std::size_t(w)]->render(*sims[std::size_t(sim == "shared" ? 0 : w)],
                                         cameras[std::size_t(w)], o_.size, out.framebuffer(),
                                         watches);
-        if (timed) {
-          finishGpu();
-          wallMs.push_back(
-              std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                  .count());
-        }
+      };
+      const auto warmStart = std::chrono::steady_clock::now();
+      auto warming = [&] {
+        return f < std::uint32_t(1 + o_.warmup) ||
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - warmStart).count() <
+                   o_.wallWarmupSeconds;
+      };
+      while (warming()) {
+        drawFrame();
+        finishGpu();
+      }
+      updates.clear();
+      watches.scene.clear();
+      watches.particles.clear();
+      watches.post.clear();
+      for (int i = 0; i < o_.frames; ++i) {
+        const auto start = std::chrono::steady_clock::now();
+        drawFrame();
+        finishGpu();
+        wallMs.push_back(
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                .count());
       }
       // Per frame: the sum of its intervals (systems updates, `count` of each view stage).
       auto perFrame = [&](GpuStopwatch& watch, int perFrameCount) {
