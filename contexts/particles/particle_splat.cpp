@@ -224,7 +224,7 @@ void setTrailUniforms(const gl::Program& program, const ParticleBackend::Records
 void ParticleSplat::addTrails(const ParticleBackend::Records& r, std::size_t capacity) const {
   if (!trailPrepare_) {
     trailPrepare_ =
-        std::make_unique<gl::Program>(std::vector<std::string>{"trail_splat_prepare.comp"});
+        std::make_unique<gl::Program>(std::vector<std::string>{"trail_dispatch.comp"});
     trails_ = std::make_unique<gl::Program>(std::vector<std::string>{"trail_splat.comp"});
     trailDispatch_ = gl::createBuffer();
     glNamedBufferStorage(trailDispatch_.id(), 16, nullptr, 0);

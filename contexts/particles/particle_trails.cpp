@@ -9,13 +9,18 @@
 
 namespace sandstorm {
 
-ParticleTrails::ParticleTrails() : program_(std::vector<std::string>{"trail_update.comp"}) {}
+ParticleTrails::ParticleTrails()
+    : program_(std::vector<std::string>{"trail_update.comp"}),
+      dispatch_(std::vector<std::string>{"trail_dispatch.comp"}),
+      dispatchArgs_(gl::createBuffer()) {
+  glNamedBufferStorage(dispatchArgs_.id(), 16, nullptr, 0);
+}
 
 void ParticleTrails::prepare(std::size_t capacity, int length) {
   length = std::clamp(length, 1, kMaxLength);
   if (capacity != capacity_ || length != length_) {
     // trail_update.comp numbers the slots with a uint.
-    if (capacity * std::size_t(length) > std::numeric_limits<std::uint32_t>::max())
+    if (capacity * std::size_t(length) > std::numeric_limits<std::uint32_t>::max() - 255)
       throw Error(concat("render.trail_length ", length, ": ", capacity,
                          " particles' trails hold more than 2^32 positions; shorten the trails "
                          "or lower sim.maximum"));
@@ -41,22 +46,28 @@ void ParticleTrails::advance(std::uint32_t positions, std::uint32_t born, std::u
                              int countIndex, std::uint32_t countAdd) {
   const int next = 1 - current_;
   head_ = fresh_ ? 0 : (head_ + 1) % length_;
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, positions);
+  // One invocation a slot of the live records, counted on the GPU.
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, countBuffer);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 13, dispatchArgs_.id());
+  dispatch_.use();
+  glProgramUniform1ui(dispatch_.id(), 0, GLuint(countIndex));
+  glProgramUniform1ui(dispatch_.id(), 1, countAdd);
+  glProgramUniform1ui(dispatch_.id(), 2, GLuint(length_));
+  glProgramUniform1ui(dispatch_.id(), 3, GLuint(capacity_));
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 2, positions);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 6, source_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 7, rings_[std::size_t(current_)].id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 8, rings_[std::size_t(next)].id());
   program_.use();
-  const GLuint groups = GLuint((capacity_ * std::size_t(length_) + 255) / 256);  // a slot each
-  const GLuint row = std::min<GLuint>(groups, 32768u);
-  glProgramUniform1i(program_.id(), 0, countIndex);
-  glProgramUniform1ui(program_.id(), 6, countAdd);
   glProgramUniform1ui(program_.id(), 1, born);
   glProgramUniform1i(program_.id(), 2, length_);
   glProgramUniform1i(program_.id(), 3, head_);
   glProgramUniform1i(program_.id(), 4, fresh_ ? 1 : 0);
-  glProgramUniform1ui(program_.id(), 5, row);
-  glDispatchCompute(row, (groups + row - 1) / row, 1);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatchArgs_.id());
+  glDispatchComputeIndirect(0);
+  glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   current_ = next;
   fresh_ = false;

@@ -48,6 +48,8 @@ class ParticleTrails {
 
  private:
   gl::Program program_;
+  gl::Program dispatch_;     // the update's dispatch from the live count
+  gl::Buffer dispatchArgs_;  // its output
   gl::Buffer source_;
   gl::Buffer rings_[2];
   int current_ = 0;

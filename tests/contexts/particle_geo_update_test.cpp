@@ -151,7 +151,7 @@ TEST_P(ParticleBackendTest, APlacedFieldMovesParticlesTheSameOnBothSides) {
 TEST_P(ParticleBackendTest, ObstaclesTurnTheFlowAndHoldParticlesOutTheSameOnBothSides) {
   // A sphere, a box and a cylinder in the tornado; the sphere moves mid-run.
   // Last, none turns the flow (the compute backend then only puts particles out).
-  for (const auto [motion, flow] :
+  for (const auto& [motion, flow] :
        {std::pair{MotionModel::Tracer, true}, std::pair{MotionModel::Force, true},
         std::pair{MotionModel::Drag, false}}) {
     SCOPED_TRACE(::testing::Message() << int(motion) << (flow ? "" : ", no flow"));
