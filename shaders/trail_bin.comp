@@ -69,9 +69,13 @@ void main() {
   for (uint o = begin + lid; o < end; o += kGroup) {
     int run = -1;  // the tile of the run being walked
     uint first = 0u, last = 0u;
+    TrailPoint newer = trailPoint(o, 0);
     for (int j = 0; j < uTrailLength - 1; ++j) {
+      TrailPoint older = trailPoint(o, j + 1);
       TrailSegment s;
-      if (!trailSegment(o, j, s)) continue;
+      bool drawn = trailSegment(newer, older, j, s);
+      newer = older;
+      if (!drawn) continue;
       // A segment's pixels move monotonically along each axis, so where its
       // first and last are in one tile on screen, so are all between.
       int firstTile = tileOf(trailPixel(s, 0), across), lastTile = tileOf(trailPixel(s, s.n - 1), across);

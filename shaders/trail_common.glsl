@@ -39,24 +39,37 @@ TrailLook trailLook(uint o) {
   return TrailLook(colorCoordinate(age, vk.xyz, pl.xyz), mix(look.colorBirth.a, look.colorDeath.a, age));
 }
 
-// False where the segment has no ends yet or one lies behind the eye.
-bool trailSegment(uint o, int j, out TrailSegment s) {
-  uint base = o * uint(uTrailLength);
-  vec4 a = ring[base + uint((uTrailHead - j + uTrailLength) % uTrailLength)];
-  vec4 b = ring[base + uint((uTrailHead - j - 1 + uTrailLength) % uTrailLength)];
-  if (a.w < 0.5 || b.w < 0.5) return false;
-  precise vec4 ca = view.viewProjection * vec4(a.xyz, 1.0);
-  precise vec4 cb = view.viewProjection * vec4(b.xyz, 1.0);
-  if (ca.w <= 1e-4 || cb.w <= 1e-4) return false;
-  precise vec2 pa = (ca.xy / ca.w * 0.5 + 0.5) * view.viewport.zw;
-  precise vec2 pb = (cb.xy / cb.w * 0.5 + 0.5) * view.viewport.zw;
-  s.pa = pa;
-  s.d = pb - pa;
-  s.wa = ca.w;
-  s.wb = cb.w;
+// Position k back from the newest of particle o's trail, as the view sees it;
+// a walk along a trail projects each once, for the two segments it ends.
+struct TrailPoint {
+  vec2 p;      // in view pixels
+  float w;     // the distance from the eye
+  bool valid;  // the slot holds a position, and it lies in front of the eye
+};
+
+TrailPoint trailPoint(uint o, int k) {
+  vec4 x = ring[o * uint(uTrailLength) + uint((uTrailHead - k + uTrailLength) % uTrailLength)];
+  precise vec4 c = view.viewProjection * vec4(x.xyz, 1.0);
+  precise vec2 p = (c.xy / c.w * 0.5 + 0.5) * view.viewport.zw;
+  return TrailPoint(p, c.w, x.w >= 0.5 && c.w > 1e-4);
+}
+
+// Segment j from its newer end a (position j back) to its older end b (j + 1);
+// false where either end is missing or behind the eye.
+bool trailSegment(TrailPoint a, TrailPoint b, int j, out TrailSegment s) {
+  if (!a.valid || !b.valid) return false;
+  precise vec2 d = b.p - a.p;
+  s.pa = a.p;
+  s.d = d;
+  s.wa = a.w;
+  s.wb = b.w;
   s.j = j;
-  s.n = min(int(ceil(max(abs(s.d.x), abs(s.d.y)))), kTrailMaxPixels);
+  s.n = min(int(ceil(max(abs(d.x), abs(d.y)))), kTrailMaxPixels);
   return true;
+}
+
+bool trailSegment(uint o, int j, out TrailSegment s) {
+  return trailSegment(trailPoint(o, j), trailPoint(o, j + 1), j, s);
 }
 
 // Where along the segment a step lies, 0 to 1 (the pixel at the older end belongs to the next segment).
@@ -98,9 +111,13 @@ void trailAdd(ivec2 p, ivec2 origin, uint v[kSplatTrailChannels]);
 void trailRun(uint o, uint first, uint last, ivec2 origin) {
   TrailLook l = trailLook(o);
   int j0 = int(first) / kTrailMaxPixels, j1 = int(last) / kTrailMaxPixels;
+  TrailPoint newer = trailPoint(o, j0);
   for (int j = j0; j <= j1; ++j) {
+    TrailPoint older = trailPoint(o, j + 1);
     TrailSegment s;
-    if (!trailSegment(o, j, s)) continue;
+    bool drawn = trailSegment(newer, older, j, s);
+    newer = older;
+    if (!drawn) continue;
     int from = j == j0 ? int(first) % kTrailMaxPixels : 0;
     int to = j == j1 ? min(int(last) % kTrailMaxPixels, s.n - 1) : s.n - 1;
     for (int step = from; step <= to; ++step) {
