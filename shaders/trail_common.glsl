@@ -35,8 +35,9 @@ struct TrailLook {
 
 TrailLook trailLook(uint o) {
   vec4 pl = positionLife[o], vk = velocityKind[o];
-  float age = clamp(1.0 - pl.w / max(vk.w, 1e-6), 0.0, 1.0);
-  return TrailLook(colorCoordinate(age, vk.xyz, pl.xyz), mix(look.colorBirth.a, look.colorDeath.a, age));
+  precise float age = clamp(1.0 - pl.w / max(vk.w, 1e-6), 0.0, 1.0);
+  precise float t = colorCoordinate(age, vk.xyz, pl.xyz), opacity = mix(look.colorBirth.a, look.colorDeath.a, age);
+  return TrailLook(t, opacity);
 }
 
 // Position k back from the newest of particle o's trail, as the view sees it;
@@ -90,16 +91,19 @@ bool trailOnScreen(ivec2 p) {
 // The sums a step adds at pixel p (on screen): its optical depth and the
 // same times the colour coordinate, fixed point; false where it adds nothing.
 bool trailValues(TrailSegment s, TrailLook l, int step, ivec2 p, out uint v[kSplatTrailChannels]) {
+  // `precise` throughout: the atomic and the tiled passes are two programs
+  // that must add the same integers (ParticleSplat picks either a view).
   float u = trailAlong(s, step);
-  float distance = mix(s.wa, s.wb, u);
-  float scene = viewDistance(texelFetch(uSceneDepth, p, 0).r);
-  float fade = clamp((scene - distance) / max(look.params.y, 1e-4), 0.0, 1.0);
-  float along = (float(s.j) + u) / float(uTrailLength - 1);
-  float alpha = l.opacity * (1.0 - along) * fade;
+  precise float distance = mix(s.wa, s.wb, u);
+  precise float scene = viewDistance(texelFetch(uSceneDepth, p, 0).r);
+  precise float fade = clamp((scene - distance) / max(look.params.y, 1e-4), 0.0, 1.0);
+  precise float along = (float(s.j) + u) / float(uTrailLength - 1);
+  precise float alpha = l.opacity * (1.0 - along) * fade;
   if (alpha < 1.0 / 512.0) return false;
-  float opticalDepth = -log(1.0 - min(alpha, 0.999));
-  v[0] = uint(opticalDepth * kSplatScale + 0.5);
-  v[1] = uint(opticalDepth * l.t * kSplatScale + 0.5);
+  precise float opticalDepth = -log(1.0 - min(alpha, 0.999));
+  precise float depth = opticalDepth * kSplatScale + 0.5, colour = opticalDepth * l.t * kSplatScale + 0.5;
+  v[0] = uint(depth);
+  v[1] = uint(colour);
   return true;
 }
 

@@ -83,6 +83,7 @@ void zero(const gl::Buffer& buffer) {
 
 ParticleSplat::ParticleSplat(const GpuTuning& tuning)
     : tiled_(tuning.splat == GpuTuning::Splat::Tiled),
+      trailTuning_(tuning.trailPass),
       // Records a chunk: 16 an invocation; tiles with more spread over
       // several workgroups. Tests make them small to put several in a tile.
       chunk_(GLuint(tuning.splatChunk)),
@@ -185,10 +186,14 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   if (trails) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTrailRing, records.trails);
-    if (tiled)
+    const int pass = tiled ? trailPass() : kAtomicTrails;
+    const bool timed = trailTuning_ == GpuTuning::TrailPass::Auto && tiled && trailChoice_.timing();
+    if (timed) trailSpans_.begin(trailChoice_.trial() * 2 + pass);
+    if (pass == kTiledTrails)
       addTiledTrails(records, levelTiles(size, 1));
     else
       addTrails(records, particles.capacity());
+    if (timed) trailSpans_.end();
   }
   // Both variants leave the sums in the buffer; the resolve turns them into
   // the particle images and zeroes the full-resolution ones for the next view.
@@ -291,6 +296,20 @@ void ParticleSplat::addTiledTrails(const ParticleBackend::Records& r, std::size_
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+}
+
+int ParticleSplat::trailPass() const {
+  switch (trailTuning_) {
+    case GpuTuning::TrailPass::Tiled:
+      return kTiledTrails;
+    case GpuTuning::TrailPass::Atomic:
+      return kAtomicTrails;
+    case GpuTuning::TrailPass::Auto:
+      break;
+  }
+  for (const auto& [tag, ms] : trailSpans_.poll())
+    trailChoice_.measured(tag % 2, ms, tag / 2);
+  return trailChoice_.next();
 }
 
 void ParticleSplat::addAtomic(const Programs& p) const {

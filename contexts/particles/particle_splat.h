@@ -48,8 +48,10 @@
 
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
+#include "contexts/gl/timestamp_spans.h"
 #include "contexts/particles/particle_backend.h"
 #include "core/config/gpu_tuning.h"
+#include "core/util/faster_choice.h"
 
 namespace sandstorm {
 
@@ -91,8 +93,16 @@ class ParticleSplat {
   // The splat records (16 bytes) the lists hold for `capacity` particles and
   // their trails of `trailLength` positions (0: none).
   std::size_t listRecords(std::size_t capacity, int trailLength) const;
+  // Which trail pass a tiled view runs ([gpu] trail_pass; auto: trailChoice_).
+  static constexpr int kAtomicTrails = 0, kTiledTrails = 1;
+  int trailPass() const;
 
   bool tiled_;
+  GpuTuning::TrailPass trailTuning_;
+  // Auto: the faster trail pass, from timestamps of the passes as they run
+  // (both add the same integers). Five runs of each, kept 600 views.
+  mutable FasterChoice trailChoice_{5, 600};
+  mutable gl::TimestampSpans trailSpans_;
   std::uint32_t chunk_;             // tiled: list entries a workgroup
   std::size_t listRecords_;         // tiled: records the lists hold, 0: two a particle
   std::size_t maxListRecords_ = 0;  // what one storage buffer can hold

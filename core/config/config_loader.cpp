@@ -213,12 +213,17 @@ void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
 
 void readGpu(const Reader& r, const toml::value& t, GpuTuning& g) {
   r.checkKeys(t, "gpu",
-              {"splat", "splat_chunk", "splat_list", "field_storage", "update_items", "scan_spin"});
+              {"splat", "splat_chunk", "splat_list", "trail_pass", "field_storage", "update_items",
+               "scan_spin"});
   g.splat = r.choice<GpuTuning::Splat>(
       t, "splat", "gpu", g.splat,
       {{"tiled", GpuTuning::Splat::Tiled}, {"atomic", GpuTuning::Splat::Atomic}});
   g.splatChunk = std::size_t(r.integer(t, "splat_chunk", "gpu", int(g.splatChunk), 16, 1 << 20));
   g.splatList = std::size_t(r.integer(t, "splat_list", "gpu", int(g.splatList), 0, 1 << 30));
+  g.trailPass = r.choice<GpuTuning::TrailPass>(t, "trail_pass", "gpu", g.trailPass,
+                                               {{"auto", GpuTuning::TrailPass::Auto},
+                                                {"tiled", GpuTuning::TrailPass::Tiled},
+                                                {"atomic", GpuTuning::TrailPass::Atomic}});
   g.fieldStorage = r.choice<GpuTuning::FieldStorage>(
       t, "field_storage", "gpu", g.fieldStorage,
       {{"auto", GpuTuning::FieldStorage::Auto}, {"texture", GpuTuning::FieldStorage::Texture}});

@@ -13,12 +13,19 @@ namespace sandstorm {
 struct GpuTuning {
   enum class Splat { Tiled, Atomic };
   enum class FieldStorage { Auto, Texture };
+  enum class TrailPass { Auto, Tiled, Atomic };
 
   // Splats: tiled (binned per screen tile, blended in order) or atomic (one
   // atomic add a pixel; the simpler variant, slower with many particles).
   Splat splat = Splat::Tiled;
   std::size_t splatChunk = 8192;  // records one splat workgroup takes from a tile list
   std::size_t splatList = 0;      // records the tile lists hold; 0: two a particle of capacity
+  // How splat views add trails: tiled (runs of pixels binned per tile, like
+  // the splats: faster where trails run long on screen), atomic (a global
+  // atomic a pixel: faster where they are short), or Auto: time both as the
+  // views are drawn and keep the faster (FasterChoice). Tiled needs the
+  // tiled splats.
+  TrailPass trailPass = TrailPass::Auto;
   // The compute backend keeps a field's grid in a storage buffer when it fits
   // (Auto) or always in a 3D texture, as the transform-feedback backend does.
   FieldStorage fieldStorage = FieldStorage::Auto;

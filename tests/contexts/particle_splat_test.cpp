@@ -253,9 +253,19 @@ TEST_P(ParticleSplatTest, TiledAndAtomicTrailsAddTheSameSumsSoDrawTheSameImage) 
     const std::vector<std::pair<std::size_t, std::size_t>> variants{
         {8192, 0}, {37, 0}, {8192, 500}, {37, 500}};
     for (const auto& [chunk, list] : variants) {
-      const Image tiled =
-          render(state, GetParam(), 7, GpuTuning{.splatChunk = chunk, .splatList = list}, field);
+      const Image tiled = render(
+          state, GetParam(), 7,
+          GpuTuning{
+              .splatChunk = chunk, .splatList = list, .trailPass = GpuTuning::TrailPass::Tiled},
+          field);
       EXPECT_TRUE(tiled.rgba == atomic.rgba) << "chunk " << chunk << ", list " << list;
+    }
+    // The tiled splats with atomic trails, and with the choice of the two
+    // as it goes (it tries them in turn, so both run in these frames).
+    for (const GpuTuning::TrailPass pass :
+         {GpuTuning::TrailPass::Atomic, GpuTuning::TrailPass::Auto}) {
+      const Image image = render(state, GetParam(), 7, GpuTuning{.trailPass = pass}, field);
+      EXPECT_TRUE(image.rgba == atomic.rgba) << "trail pass " << int(pass);
     }
   }
 }

@@ -301,7 +301,7 @@ TEST(AttributeTableNames, ANameIsPrintableWordsAndTravelsAsOneWord) {
   EXPECT_EQ(s.render.colorArray, "Temperature_K");
   EXPECT_EQ(toString(table.get(s, "render.color_array")), "Temperature_K");
   // ParaView users' arrays have spaces: as typed, and as one word (%20).
-  for (const std::string& typed : {"Pressure (Pa)", "Pressure%20(Pa)"}) {
+  for (const char* typed : {"Pressure (Pa)", "Pressure%20(Pa)"}) {
     table.set(s, "render.color_array", table.parse("render.color_array", typed));
     EXPECT_EQ(s.render.colorArray, "Pressure (Pa)") << typed;
   }
@@ -312,7 +312,7 @@ TEST(AttributeTableNames, ANameIsPrintableWordsAndTravelsAsOneWord) {
   for (const std::string& bad : std::vector<std::string>{" lead", "trail ", "a=b", "x\ny", "\"q\"",
                                                          "50%", std::string(65, 'a')})
     EXPECT_THROW(table.set(s, "render.color_array", AttributeValue(bad)), Error) << bad;
-  for (const std::string& bad : {"50%", "a%2", "%21", "%%"})
+  for (const char* bad : {"50%", "a%2", "%21", "%%"})
     EXPECT_THROW(table.parse("render.color_array", bad), Error) << bad;
   EXPECT_THROW(table.set(s, "render.color_array", 3), Error);
   EXPECT_EQ(s.render.colorArray, "");

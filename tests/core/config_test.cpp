@@ -176,25 +176,29 @@ TEST(Config, BadValuesAreRefusedWithTheirLine) {
 
 TEST(Config, ReadsAndChecksGpuTuning) {
   const AppConfig c = parseConfig(
-      "[gpu]\nsplat = \"atomic\"\nsplat_chunk = 37\nsplat_list = 500\n"
+      "[gpu]\nsplat = \"atomic\"\nsplat_chunk = 37\nsplat_list = 500\ntrail_pass = \"tiled\"\n"
       "field_storage = \"texture\"\nupdate_items = 8\nscan_spin = 0\n" +
           kWall,
       "test.toml");
   EXPECT_EQ(c.gpu.splat, GpuTuning::Splat::Atomic);
   EXPECT_EQ(c.gpu.splatChunk, 37u);
   EXPECT_EQ(c.gpu.splatList, 500u);
+  EXPECT_EQ(c.gpu.trailPass, GpuTuning::TrailPass::Tiled);
   EXPECT_EQ(c.gpu.fieldStorage, GpuTuning::FieldStorage::Texture);
   EXPECT_EQ(c.gpu.updateItems, 8);
   EXPECT_EQ(c.gpu.scanSpin, 0u);
   const AppConfig d = parseConfig(kWall, "test.toml");
   EXPECT_EQ(d.gpu.splat, GpuTuning::Splat::Tiled);
   EXPECT_EQ(d.gpu.updateItems, 4);
+  EXPECT_EQ(d.gpu.trailPass, GpuTuning::TrailPass::Auto);
   EXPECT_FALSE(d.gpu.scanSpin.has_value());
   EXPECT_ERROR("[gpu]\nupdate_items = 3\n" + kWall, "test.toml:2", "gpu.update_items",
                "1, 2, 4 or 8");
   EXPECT_ERROR("[gpu]\nfield_storage = \"ssbo\"\n" + kWall, "test.toml:2", "gpu.field_storage",
                "auto, texture");
   EXPECT_ERROR("[gpu]\nsplat = \"fast\"\n" + kWall, "test.toml:2", "gpu.splat", "tiled, atomic");
+  EXPECT_ERROR("[gpu]\ntrail_pass = \"lines\"\n" + kWall, "test.toml:2", "gpu.trail_pass",
+               "auto, tiled, atomic");
   EXPECT_ERROR("[gpu]\nsplat_chunk = 0\n" + kWall, "test.toml:2", "gpu.splat_chunk");
   EXPECT_ERROR("[gpu]\nwarp = 32\n" + kWall, "test.toml", "warp");
 }
