@@ -1,8 +1,7 @@
 // TimestampSpans: the GPU time of stretches of commands, each with a tag,
 // from pairs of GL_TIMESTAMP queries (which, unlike GL_TIME_ELAPSED, may sit
 // inside another timer's query), read back only once the GPU has written
-// them: poll() never waits. At most kMaxPending spans are in flight; a span
-// begun beyond that is not timed.
+// them: poll() never waits. Queries are reused once read.
 //   spans.begin(tag); ...commands...; spans.end();
 //   for (auto [tag, ms] : spans.poll()) ...
 #pragma once
@@ -17,8 +16,6 @@ namespace sandstorm::gl {
 
 class TimestampSpans {
  public:
-  static constexpr std::size_t kMaxPending = 16;
-
   void begin(int tag);
   void end();
   // The spans the GPU has finished since the last call, oldest first: (tag, ms).

@@ -186,14 +186,13 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   if (trails) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTrailRing, records.trails);
-    const int pass = tiled ? trailPass() : kAtomicTrails;
-    const bool timed = trailTuning_ == GpuTuning::TrailPass::Auto && tiled && trailChoice_.timing();
-    if (timed) trailSpans_.begin(trailChoice_.trial() * 2 + pass);
-    if (pass == kTiledTrails)
+    const FasterChoice::Run pass = tiled ? trailPass() : FasterChoice::Run{kAtomicTrails, -1};
+    if (pass.ticket >= 0) trailSpans_.begin(pass.ticket);
+    if (pass.way == kTiledTrails)
       addTiledTrails(records, levelTiles(size, 1));
     else
       addTrails(records, particles.capacity());
-    if (timed) trailSpans_.end();
+    if (pass.ticket >= 0) trailSpans_.end();
   }
   // Both variants leave the sums in the buffer; the resolve turns them into
   // the particle images and zeroes the full-resolution ones for the next view.
@@ -298,17 +297,17 @@ void ParticleSplat::addTiledTrails(const ParticleBackend::Records& r, std::size_
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
-int ParticleSplat::trailPass() const {
+FasterChoice::Run ParticleSplat::trailPass() const {
   switch (trailTuning_) {
     case GpuTuning::TrailPass::Tiled:
-      return kTiledTrails;
+      return {kTiledTrails, -1};
     case GpuTuning::TrailPass::Atomic:
-      return kAtomicTrails;
+      return {kAtomicTrails, -1};
     case GpuTuning::TrailPass::Auto:
       break;
   }
-  for (const auto& [tag, ms] : trailSpans_.poll())
-    trailChoice_.measured(tag % 2, ms, tag / 2);
+  for (const auto& [ticket, ms] : trailSpans_.poll())
+    trailChoice_.measured(ticket, ms);
   return trailChoice_.next();
 }
 

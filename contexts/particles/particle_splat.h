@@ -95,13 +95,14 @@ class ParticleSplat {
   std::size_t listRecords(std::size_t capacity, int trailLength) const;
   // Which trail pass a tiled view runs ([gpu] trail_pass; auto: trailChoice_).
   static constexpr int kAtomicTrails = 0, kTiledTrails = 1;
-  int trailPass() const;
+  FasterChoice::Run trailPass() const;
 
   bool tiled_;
   GpuTuning::TrailPass trailTuning_;
   // Auto: the faster trail pass, from timestamps of the passes as they run
-  // (both add the same integers). Five runs of each, kept 600 views.
-  mutable FasterChoice trailChoice_{5, 600};
+  // (both add the same integers): three blocks of eight views each (all the
+  // views a system draws a frame, bench included), kept for 4000 views.
+  mutable FasterChoice trailChoice_{3, 8, 4000};
   mutable gl::TimestampSpans trailSpans_;
   std::uint32_t chunk_;             // tiled: list entries a workgroup
   std::size_t listRecords_;         // tiled: records the lists hold, 0: two a particle

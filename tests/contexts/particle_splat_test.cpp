@@ -236,16 +236,18 @@ TEST_P(ParticleSplatTest, TiledAndAtomicTrailsAddTheSameSumsSoDrawTheSameImage) 
     glm::vec3 evaluate(const glm::vec3& p) const override { return {-p.y, p.x, 0.0f}; }
   };
   auto field = std::make_shared<VectorField>(bake(Spin(), Box{{-5, -5, -5}, {5, 5, 5}}, {6, 6, 3}));
+  constexpr int kFrames = 12;
   for (const bool shadows : {false, true}) {
     ParticleState state = cloud(RenderMode::Splat, 0.1f, true);
     state.sim.maximum = 1500;
     state.emitters[0].rate = 1000.0f / 0.25f;
+    state.emitters[0].lifetime = 10.0f;
     if (shadows) state = shaded(state);
     SCOPED_TRACE(shadows ? "shadows" : "plain");
     const GpuTuning atomicTuning{.splat = GpuTuning::Splat::Atomic};
-    const Image without = render(state, GetParam(), 7, atomicTuning, field);
+    const Image without = render(state, GetParam(), kFrames, atomicTuning, field);
     state.render.trailLength = 8;
-    const Image atomic = render(state, GetParam(), 7, atomicTuning, field);
+    const Image atomic = render(state, GetParam(), kFrames, atomicTuning, field);
     EXPECT_FALSE(atomic.rgba == without.rgba) << "the trails show";
     // The tiled variant, as it runs; with chunks of 37 runs (several
     // workgroups a tile, adding with atomics); with lists of 500 runs (the
@@ -254,17 +256,17 @@ TEST_P(ParticleSplatTest, TiledAndAtomicTrailsAddTheSameSumsSoDrawTheSameImage) 
         {8192, 0}, {37, 0}, {8192, 500}, {37, 500}};
     for (const auto& [chunk, list] : variants) {
       const Image tiled = render(
-          state, GetParam(), 7,
+          state, GetParam(), kFrames,
           GpuTuning{
               .splatChunk = chunk, .splatList = list, .trailPass = GpuTuning::TrailPass::Tiled},
           field);
       EXPECT_TRUE(tiled.rgba == atomic.rgba) << "chunk " << chunk << ", list " << list;
     }
     // The tiled splats with atomic trails, and with the choice of the two
-    // as it goes (it tries them in turn, so both run in these frames).
+    // as it goes (it tries them in blocks of 8 views: both run in these frames).
     for (const GpuTuning::TrailPass pass :
          {GpuTuning::TrailPass::Atomic, GpuTuning::TrailPass::Auto}) {
-      const Image image = render(state, GetParam(), 7, GpuTuning{.trailPass = pass}, field);
+      const Image image = render(state, GetParam(), kFrames, GpuTuning{.trailPass = pass}, field);
       EXPECT_TRUE(image.rgba == atomic.rgba) << "trail pass " << int(pass);
     }
   }

@@ -1,5 +1,6 @@
-// FasterChoice against hand-made times: it tries both ways in turn, keeps the
-// one with the lower median, tries again after its keep, and drops late times.
+// FasterChoice against hand-made times: it tries the ways in blocks, keeps
+// the one with the lower median block, tries again after its keep, waits for
+// late times and drops those of an ended trial.
 #include "core/util/faster_choice.h"
 
 #include <gtest/gtest.h>
@@ -7,67 +8,75 @@
 namespace sandstorm {
 namespace {
 
-// Runs `runs` rounds with each way's time given by `cost`, measured at once.
+// `runs` runs, each timed (where asked) at once with cost(way, run).
 template <typename Cost>
 std::vector<int> run(FasterChoice& c, int runs, Cost cost) {
   std::vector<int> ways;
   for (int i = 0; i < runs; ++i) {
-    const int way = c.next();
-    ways.push_back(way);
-    if (c.timing()) c.measured(way, cost(way, i), c.trial());
+    const FasterChoice::Run r = c.next();
+    ways.push_back(r.way);
+    if (r.ticket >= 0) c.measured(r.ticket, cost(r.way, i));
   }
   return ways;
 }
 
-TEST(FasterChoice, TriesBothInTurnThenKeepsTheOneWithTheLowerMedian) {
-  FasterChoice c(3, 4);
+TEST(FasterChoice, TriesBothInBlocksThenKeepsTheOneWithTheLowerMedian) {
+  FasterChoice c(3, 1, 4);
   // Way 1 is faster but for one slow outlier, which the median ignores.
   const auto cost = [](int way, int i) { return way == 0 ? 2.0 : (i == 1 ? 50.0 : 1.0); };
-  const std::vector<int> ways = run(c, 6 + 4, cost);
-  EXPECT_EQ(ways, (std::vector<int>{0, 1, 0, 1, 0, 1, 1, 1, 1, 1}));
+  EXPECT_EQ(run(c, 10, cost), (std::vector<int>{0, 1, 0, 1, 0, 1, 1, 1, 1, 1}));
   EXPECT_EQ(c.kept(), 1);
   // After its keep it tries both again, and follows a change of costs.
-  const std::vector<int> again = run(c, 6, [](int way, int) { return way == 0 ? 1.0 : 3.0; });
-  EXPECT_EQ(again, (std::vector<int>{0, 1, 0, 1, 0, 1}));
+  EXPECT_EQ(run(c, 6, [](int way, int) { return way == 0 ? 1.0 : 3.0; }),
+            (std::vector<int>{0, 1, 0, 1, 0, 1}));
   EXPECT_EQ(c.kept(), 0);
-  EXPECT_EQ(c.next(), 0);
+  EXPECT_EQ(c.next().way, 0);
 }
 
-TEST(FasterChoice, WaitsForTimesThatArriveLateAndDropsThoseOfAnEndedTrial) {
-  FasterChoice c(2, 3);
-  // Times come back two runs late (GPU queries).
-  struct Pending {
-    int way, trial;
+// One chooser serving two views a frame, a cheap one and a dear one: blocks
+// of two runs give each way both views, so the comparison is fair. Runs
+// alternating one by one would give way 0 only the cheap view and choose it
+// though it is slower.
+TEST(FasterChoice, BlocksCoverEveryViewOfAFrame) {
+  const auto cost = [](int way, int i) {
+    const double view = i % 2 == 0 ? 1.0 : 10.0;  // the frame's first and second views
+    return view * (way == 0 ? 1.5 : 1.0);         // way 1 is faster in both
   };
-  std::vector<Pending> pending;
-  std::vector<int> ways;
-  for (int i = 0; i < 6; ++i) {
-    const int way = c.next();
-    ways.push_back(way);
-    if (c.timing()) pending.push_back({way, c.trial()});
-    if (pending.size() > 2) {
-      c.measured(pending.front().way, pending.front().way == 0 ? 5.0 : 1.0, pending.front().trial);
-      pending.erase(pending.begin());
-    }
-  }
-  // The fourth run's time (way 1) completed the trial at run 6.
-  EXPECT_EQ(ways, (std::vector<int>{0, 1, 0, 1, 0, 1}));
+  FasterChoice blocks(3, 2, 100);
+  EXPECT_EQ(run(blocks, 12, cost), (std::vector<int>{0, 0, 1, 1, 0, 0, 1, 1, 0, 0, 1, 1}));
+  EXPECT_EQ(blocks.kept(), 1);
+  FasterChoice single(3, 1, 100);
+  run(single, 6, cost);
+  EXPECT_EQ(single.kept(), 0) << "the bias blocks avoid";
+}
+
+TEST(FasterChoice, WaitsForLateTimesAndDropsThoseOfAnEndedTrial) {
+  FasterChoice c(1, 2, 3);
+  std::vector<FasterChoice::Run> runs;
+  for (int i = 0; i < 4; ++i)
+    runs.push_back(c.next());
+  EXPECT_EQ(runs[0].way, 0);
+  EXPECT_EQ(runs[2].way, 1);
+  // Times arrive late and out of order; a block counts only when complete.
+  c.measured(runs[2].ticket, 1.0);
+  c.measured(runs[0].ticket, 3.0);
+  c.measured(runs[3].ticket, 1.0);
+  EXPECT_EQ(c.kept(), -1) << "way 0's block still misses a run";
+  c.measured(runs[1].ticket, 3.0);
   EXPECT_EQ(c.kept(), 1);
-  // A time still in flight from the ended trial changes nothing...
-  c.measured(0, 0.001, pending.front().trial);
-  EXPECT_EQ(c.kept(), 1);
-  // ...nor does one from an older trial once the next has begun.
+  // Kept for 3 runs, untimed; then a new trial, where the old tickets count for nothing.
   for (int i = 0; i < 3; ++i)
-    EXPECT_EQ(c.next(), 1);
-  EXPECT_EQ(c.next(), 0);  // trying again
-  EXPECT_TRUE(c.timing());
-  c.measured(1, 0.001, c.trial() - 1);
-  c.measured(1, 0.001, c.trial() - 1);
-  c.measured(0, 9.0, c.trial());
-  c.measured(0, 9.0, c.trial());
-  EXPECT_EQ(c.kept(), -1) << "way 1 has no time of this trial yet";
-  c.measured(1, 10.0, c.trial());
-  c.measured(1, 10.0, c.trial());
+    EXPECT_EQ(c.next().ticket, -1);
+  const FasterChoice::Run a = c.next(), b = c.next();
+  EXPECT_EQ(a.way, 0);
+  for (const FasterChoice::Run& old : runs)
+    c.measured(old.ticket, 0.001);
+  EXPECT_EQ(c.kept(), -1);
+  c.measured(a.ticket, 0.5);
+  c.measured(b.ticket, 0.5);
+  const FasterChoice::Run d = c.next(), e = c.next();
+  c.measured(d.ticket, 4.0);
+  c.measured(e.ticket, 4.0);
   EXPECT_EQ(c.kept(), 0);
 }
 
