@@ -13,7 +13,10 @@ double median(std::vector<double> v) {
 }  // namespace
 
 FasterChoice::FasterChoice(int trials, int block, int keep)
-    : trials_(std::max(trials, 1)), block_(std::max(block, 1)), keep_(std::max(keep, 1)) {}
+    : trials_(std::max(trials, 1)),
+      block_(std::max(block, 1)),
+      keep_(std::max(keep, 1)),
+      keepNext_(std::min(2 * trials_ * block_, keep_)) {}
 
 FasterChoice::Run FasterChoice::next() {
   if (kept_ >= 0) {
@@ -40,7 +43,8 @@ void FasterChoice::measured(int ticket, double ms) {
   blocks_.erase(block);
   if (int(times_[0].size()) < trials_ || int(times_[1].size()) < trials_) return;
   kept_ = median(times_[1]) < median(times_[0]) ? 1 : 0;
-  left_ = keep_;
+  left_ = keepNext_;
+  keepNext_ = std::min(2 * keepNext_, keep_);
 }
 
 }  // namespace sandstorm

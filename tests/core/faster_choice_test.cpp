@@ -50,6 +50,25 @@ TEST(FasterChoice, BlocksCoverEveryViewOfAFrame) {
   EXPECT_EQ(single.kept(), 0) << "the bias blocks avoid";
 }
 
+// After a start the work changes (trails grow), so early choices are kept
+// briefly: as long as a trial took, then twice as long each time, up to keep.
+TEST(FasterChoice, KeepsEachChoiceTwiceAsLongAsTheLastUpToKeep) {
+  FasterChoice c(1, 1, 7);
+  std::vector<int> kept;  // the length of each stretch of untimed runs
+  int untimed = 0;
+  for (int i = 0; i < 40; ++i) {
+    const FasterChoice::Run r = c.next();
+    if (r.ticket < 0) {
+      ++untimed;
+      continue;
+    }
+    if (untimed > 0) kept.push_back(untimed);
+    untimed = 0;
+    c.measured(r.ticket, r.way == 0 ? 1.0 : 2.0);
+  }
+  EXPECT_EQ(kept, (std::vector<int>{2, 4, 7, 7, 7}));
+}
+
 TEST(FasterChoice, WaitsForLateTimesAndDropsThoseOfAnEndedTrial) {
   FasterChoice c(1, 2, 3);
   std::vector<FasterChoice::Run> runs;
