@@ -258,8 +258,10 @@ void ParticleSplat::addTiledTrails(const ParticleBackend::Records& r, std::size_
     trailBin_ = std::make_unique<gl::Program>(std::vector<std::string>{"trail_bin.comp"});
     trailTile_ = std::make_unique<gl::Program>(std::vector<std::string>{"trail_tile.comp"});
   }
-  // Runs are 8 bytes, half a splat record; [gpu] splat_list caps them as it caps the splats.
-  const std::size_t runs = listRecords_ ? listRecords_ : 2 * listCapacity_;
+  // Runs are 8 bytes, half a splat record: the lists hold twice as many;
+  // [gpu] splat_list caps them as it caps the splats.
+  const std::size_t runs =
+      listRecords_ ? std::min(listRecords_, 2 * listCapacity_) : 2 * listCapacity_;
   const GLuint runCapacity =
       GLuint(std::min<std::size_t>(runs, std::numeric_limits<GLuint>::max()));
   const gl::Program &bin = *trailBin_, &tile = *trailTile_;
