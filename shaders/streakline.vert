@@ -2,7 +2,7 @@
 // StreaklineRenderer, drawing: segment j of emitter e joins its points j and
 // j + 1 back from the newest release (ring slots head - j, head - j - 1);
 // segments with a point not (or no longer) valid are dropped. Drawn with
-// trail.frag: the colour map, fading towards the oldest point.
+// streakline.frag: the colour map, fading towards the oldest point.
 #include "view_block.glsl"
 #include "render_block.glsl"
 

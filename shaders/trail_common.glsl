@@ -2,8 +2,8 @@
 // passes (trail_bin.comp, trail_tile.comp) share, so all three find the same
 // pixels with the same values and add the same integers.
 //
-// Segment j of particle o's trail (j = 0 the newest; the segments trail.vert
-// joins) is walked in n steps from its newer end, one pixel a step, n its
+// Segment j of particle o's trail (j = 0 the newest) joins its positions j
+// and j + 1 back from the newest; it is walked in n steps from its newer end, one pixel a step, n its
 // longer axis in pixels (at most kTrailMaxPixels); a trail's pixels are
 // numbered j * kTrailMaxPixels + step. Each adds to the splat sums
 // (splat_common.glsl's channels) like a splat's pixel: alpha fading along the

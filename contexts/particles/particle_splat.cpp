@@ -153,13 +153,7 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   int levels = look.levels ? kLevels : 1;
   const bool tiled = tiled_ && levelTiles(size, 1) <= kMaxTiles;
   if (tiled && levelTiles(size, levels) > kMaxTiles) levels = 1;
-  const std::size_t pixels = levelPixels(size, levels);
-  if (pixels > pixels_) {
-    accumulation_ = allocate(pixels * kChannels * 4, "the splat sums");
-    zero(accumulation_);
-    pixels_ = pixels;
-  }
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAccumulation, accumulation_.id());
+  bindSums(levelPixels(size, levels));
   // The coarser levels' tiles that get splats (splat_occupied.glsl).
   const std::size_t occupancy = levels > 1 ? levelTiles(size, levels) : 0;
   if (occupancy > occupancy_) {
@@ -171,29 +165,15 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   for (const gl::Program* program : {&p.splat, &p.resolve})
     glProgramUniform1i(program->id(), kLevelsUniform, levels);
 
-  prepare_.use();
-  glProgramUniform1ui(prepare_.id(), 0, records.countOffset / 4);
-  glProgramUniform1ui(prepare_.id(), 1, records.countAdd);
-  glDispatchCompute(1, 1, 1);
-  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
-
-  const bool trails = records.trails != 0 && records.trailLength >= 2;
+  prepare(records);
+  const bool trails = hasTrails(records);
   if (tiled)
     addTiled(p, levelTiles(size, levels), levels,
              listRecords(particles.capacity(), trails ? records.trailLength : 0));
   else
     addAtomic(p);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  if (trails) {
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTrailRing, records.trails);
-    const FasterChoice::Run pass = tiled ? trailPass() : FasterChoice::Run{kAtomicTrails, -1};
-    if (pass.ticket >= 0) trailSpans_.begin(pass.ticket);
-    if (pass.way == kTiledTrails)
-      addTiledTrails(records, levelTiles(size, 1));
-    else
-      addTrails(records, particles.capacity());
-    if (pass.ticket >= 0) trailSpans_.end();
-  }
+  if (trails) addTrailSums(records, particles.capacity(), size, tiled);
   // Both variants leave the sums in the buffer; the resolve turns them into
   // the particle images and zeroes the full-resolution ones for the next view.
   p.resolve.use();
@@ -210,6 +190,71 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
     glDispatchCompute(GLuint(occupancy - levelTiles(size, 1)), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
+}
+
+bool ParticleSplat::hasTrails(const ParticleBackend::Records& r) {
+  return r.trails != 0 && r.trailLength >= 2;
+}
+
+void ParticleSplat::bindSums(std::size_t pixels) const {
+  if (pixels > pixels_) {
+    accumulation_ = allocate(pixels * kChannels * 4, "the splat sums");
+    zero(accumulation_);
+    pixels_ = pixels;
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAccumulation, accumulation_.id());
+}
+
+void ParticleSplat::prepare(const ParticleBackend::Records& records) const {
+  prepare_.use();
+  glProgramUniform1ui(prepare_.id(), 0, records.countOffset / 4);
+  glProgramUniform1ui(prepare_.id(), 1, records.countAdd);
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+}
+
+void ParticleSplat::addTrailSums(const ParticleBackend::Records& records, std::size_t capacity,
+                                 glm::ivec2 size, bool tiled) const {
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTrailRing, records.trails);
+  const FasterChoice::Run pass = tiled ? trailPass() : FasterChoice::Run{kAtomicTrails, -1};
+  if (pass.ticket >= 0) trailSpans_.begin(pass.ticket);
+  if (pass.way == kTiledTrails)
+    addTiledTrails(records, levelTiles(size, 1));
+  else
+    addTrails(records, capacity);
+  if (pass.ticket >= 0) trailSpans_.end();
+}
+
+// Trails in a view that draws billboards: the same passes as with splats,
+// into the trails' two sums alone, which trail_over_scene.comp then blends
+// over the scene's colour, unlit, where GL lines were (4.3 times the frame
+// in the bench's billboard views) and zeroes.
+void ParticleSplat::drawTrailsOverScene(const ParticleBackend& particles,
+                                        const ViewTargets& targets) const {
+  const ParticleBackend::Records records = particles.records();
+  if (!hasTrails(records)) return;
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPositionLife, records.positionLife);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kVelocityKind, records.velocityKind);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCounts, records.countBuffer);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kDispatch, dispatch_.id());
+  glBindTextureUnit(3, targets.sceneDepth());
+  const glm::ivec2 size = targets.size();
+  const bool tiled = tiled_ && levelTiles(size, 1) <= kMaxTiles;
+  bindSums(levelPixels(size, 1));
+  prepare(records);
+  if (tiled) bindTiles(levelTiles(size, 1), listRecords(particles.capacity(), records.trailLength));
+  addTrailSums(records, particles.capacity(), size, tiled);
+  if (!trailOverScene_)
+    trailOverScene_ =
+        std::make_unique<gl::Program>(std::vector<std::string>{"trail_over_scene.comp"});
+  // The scene's colour was drawn by the raster pipeline, which needs no barrier.
+  glBindImageTexture(0, targets.sceneColor(), 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA8);
+  trailOverScene_->use();
+  glProgramUniform2i(trailOverScene_->id(), 0, size.x, size.y);
+  glDispatchCompute(GLuint((size.x + 15) / 16), GLuint((size.y + 15) / 16), 1);
+  // The scene's next items draw into it; the composite reads it as a texture.
+  glMemoryBarrier(GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT |
+                  GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
 }
 
 namespace {
@@ -334,24 +379,7 @@ std::size_t ParticleSplat::listRecords(std::size_t capacity, int trailLength) co
 
 void ParticleSplat::addTiled(const Programs& p, std::size_t tileCount, int levels,
                              std::size_t listCapacity) const {
-  if (tileCount > tiles_) {
-    tileCounts_ = allocate(tileCount * 4, "the tile counts");
-    zero(tileCounts_);  // splat_scan.comp zeroes them after each view
-    tileStarts_ = allocate((tileCount + 1) * 4, "the tile starts");
-    chunkStarts_ = allocate((tileCount + 1) * 4, "the chunk starts");
-    groupBase_ = allocate(kMaxBinGroups * tileCount * 4, "the binning offsets");
-    tiles_ = tileCount;
-  }
-  if (listCapacity > listCapacity_) {
-    tileLists_ = allocate(listCapacity * kRecordBytes, "the tile lists");
-    listCapacity_ = listCapacity;
-  }
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileCounts, tileCounts_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileLists, tileLists_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileStarts, tileStarts_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGroupBase, groupBase_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kChunkStarts, chunkStarts_.id());
-  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kChunkDispatch, chunkDispatch_.id());
+  bindTiles(tileCount, listCapacity);
 
   // The binning dispatch size is the second uvec4 of the prepare pass's output.
   constexpr GLintptr kBinDispatch = 32;
@@ -381,6 +409,27 @@ void ParticleSplat::addTiled(const Programs& p, std::size_t tileCount, int level
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, chunkDispatch_.id());
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+}
+
+void ParticleSplat::bindTiles(std::size_t tileCount, std::size_t listCapacity) const {
+  if (tileCount > tiles_) {
+    tileCounts_ = allocate(tileCount * 4, "the tile counts");
+    zero(tileCounts_);  // splat_scan.comp zeroes them after each view
+    tileStarts_ = allocate((tileCount + 1) * 4, "the tile starts");
+    chunkStarts_ = allocate((tileCount + 1) * 4, "the chunk starts");
+    groupBase_ = allocate(kMaxBinGroups * tileCount * 4, "the binning offsets");
+    tiles_ = tileCount;
+  }
+  if (listCapacity > listCapacity_) {
+    tileLists_ = allocate(listCapacity * kRecordBytes, "the tile lists");
+    listCapacity_ = listCapacity;
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileCounts, tileCounts_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileLists, tileLists_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileStarts, tileStarts_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kGroupBase, groupBase_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kChunkStarts, chunkStarts_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kChunkDispatch, chunkDispatch_.id());
 }
 
 }  // namespace sandstorm

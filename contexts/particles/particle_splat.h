@@ -72,6 +72,10 @@ class ParticleSplat {
   // ParticleRender's puff texture.
   void draw(const ParticleBackend& particles, const ViewTargets& targets, std::uint32_t sprite,
             SplatLook look = {}) const;
+  // A view that draws billboards: the trails (render.trail_length), by the
+  // same passes, blended unlit over the view's scene colour, hidden behind
+  // the scene as with splats. With the view and render blocks bound.
+  void drawTrailsOverScene(const ParticleBackend& particles, const ViewTargets& targets) const;
 
  private:
   struct Programs {
@@ -81,6 +85,15 @@ class ParticleSplat {
     mutable std::unique_ptr<gl::Program> trails, trailBin, trailTile;
   };
   const Programs& programs(SplatLook look) const;
+  static bool hasTrails(const ParticleBackend::Records& records);
+  // The sums of `pixels` pixels, bound; the dispatch sizes from the live count.
+  void bindSums(std::size_t pixels) const;
+  void prepare(const ParticleBackend::Records& records) const;
+  // The tiled variant's bins and lists, bound.
+  void bindTiles(std::size_t tileCount, std::size_t listCapacity) const;
+  // The trails' pixels into their two sums, by the pass trailPass() picks.
+  void addTrailSums(const ParticleBackend::Records& records, std::size_t capacity, glm::ivec2 size,
+                    bool tiled) const;
   // Add every particle's footprint to the sums.
   void addAtomic(const Programs& p) const;
   void addTrails(const ParticleBackend::Records& records, std::size_t capacity) const;
@@ -120,7 +133,8 @@ class ParticleSplat {
       tileLists_;  // tiled: the bins
   mutable std::size_t tiles_ = 0, listCapacity_ = 0;
   // Trails, made on first use: the atomic variant's passes, the tiled one's.
-  mutable std::unique_ptr<gl::Program> trailPrepare_, trails_, trailBin_, trailTile_;
+  mutable std::unique_ptr<gl::Program> trailPrepare_, trails_, trailBin_, trailTile_,
+      trailOverScene_;
   mutable gl::Buffer trailDispatch_;
 };
 

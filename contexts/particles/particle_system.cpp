@@ -155,10 +155,9 @@ void ParticleSystem::composite(const ViewTargets& targets, std::uint32_t destina
 
 namespace sandstorm {
 
-void ParticleSystem::drawTrails(const View* view, glm::ivec2 size) const {
+void ParticleSystem::drawTrails(const View* view, const ViewTargets& targets) const {
   if (state_.render.trailLength < 2) return;
-  const ParticleBackend::Records records = update_->records();
-  if (!splats(view, size)) trails_.draw(records, update_->capacity());
+  if (!splats(view, targets.size())) splat_.drawTrailsOverScene(*update_, targets);
 }
 
 std::vector<std::vector<glm::vec3>> ParticleSystem::readBackTrails() const {

@@ -15,7 +15,6 @@
 #include "contexts/particles/particle_post.h"
 #include "contexts/particles/particle_render.h"
 #include "contexts/particles/particle_splat.h"
-#include "contexts/particles/trail_renderer.h"
 #include "contexts/shadows/opacity_shadow_map.h"
 #include "contexts/solver/live_flow.h"
 #include "core/cave/view.h"
@@ -68,10 +67,10 @@ class ParticleSystem {
   // at the field's centre cover at most render.splat_pixels pixels).
   bool splats(const View* view, glm::ivec2 size) const;
   void composite(const ViewTargets& targets, std::uint32_t destination, glm::ivec2 origin) const;
-  // The particles' trails (render.trail_length) into the bound scene
-  // framebuffer, with the view and render blocks bound; views drawing splats
+  // The particles' trails (render.trail_length) over the view's scene
+  // colour, with the view and render blocks bound; views drawing splats
   // (splats(view, size)) add them to the splats instead (ParticleSplat).
-  void drawTrails(const View* view, glm::ivec2 size) const;
+  void drawTrails(const View* view, const ViewTargets& targets) const;
   // This frame's shadow map (render.shadows; says "none" when off), this
   // system's own or, for a shared simulation's reader, the owner's.
   ShadowHandles shadow() const { return shadow_ ? shadow_->handles() : update_->sharedShadow(); }
@@ -106,7 +105,6 @@ class ParticleSystem {
   ParticleRender render_;
   ParticleSplat splat_;
   ParticlePost post_;
-  TrailRenderer trails_;
   std::unique_ptr<MoleculeUpdate> molecules_;  // the simulation's owner's (once per GPU)
   LiveFlow flow_;                              // solver.device = gpu: the owner's
   mutable std::unique_ptr<MoleculeRenderer> moleculeRenderer_;

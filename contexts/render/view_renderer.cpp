@@ -64,7 +64,7 @@ void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, 
   // Translucent items blend over the background and are hidden behind it.
   glBindTextureUnit(kSceneDepthUnit, targets_.sceneDepth());
   scene_.drawTranslucent();
-  particles.drawTrails(&view, size);
+  particles.drawTrails(&view, targets_);
 }
 
 }  // namespace sandstorm

@@ -9,7 +9,7 @@ namespace sandstorm {
 StreaklineRenderer::StreaklineRenderer(SceneField& field)
     : field_(field),
       update_(std::vector<std::string>{"streak_update.comp"}, {"OBSTACLES"}),
-      draw_(std::vector<std::string>{"streakline.vert", "trail.frag"}),
+      draw_(std::vector<std::string>{"streakline.vert", "streakline.frag"}),
       emptyVao_(gl::createVertexArray()) {}
 
 void StreaklineRenderer::update(const ParticleState& state, float dt, bool reset) {

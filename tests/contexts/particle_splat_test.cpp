@@ -226,24 +226,26 @@ TEST_P(ParticleSplatTest, TiledAndAtomicSplatsAddTheSameSumsSoDrawTheSameImage) 
   }
 }
 
-// Trails (compute backend only) in the tiled variant's runs of pixels a
-// tile add the same integers as the atomic variant's segments: the cloud
-// turning about the z axis, its trails of 8 positions several pixels a
-// segment, crossing the 32-pixel tiles.
+// Trails in the tiled variant's runs of pixels a tile add the same integers
+// as the atomic variant's segments: the cloud turning about the z axis, its
+// trails of 8 positions several pixels a segment, crossing the 32-pixel tiles.
 TEST_P(ParticleSplatTest, TiledAndAtomicTrailsAddTheSameSumsSoDrawTheSameImage) {
-  if (std::string(GetParam()) != "compute") GTEST_SKIP() << "trails need the compute backend";
   struct Spin final : AnalyticField {  // 1 rad/s: 0.4 m a frame at 1.6 m, about 9 pixels
     glm::vec3 evaluate(const glm::vec3& p) const override { return {-p.y, p.x, 0.0f}; }
   };
   auto field = std::make_shared<VectorField>(bake(Spin(), Box{{-5, -5, -5}, {5, 5, 5}}, {6, 6, 3}));
   constexpr int kFrames = 12;
-  for (const bool shadows : {false, true}) {
-    ParticleState state = cloud(RenderMode::Splat, 0.1f, true);
+  // Splat views add the trails to the splats; billboard views blend them
+  // over the scene by the same passes.
+  for (const auto& [mode, shadows] :
+       {std::pair{RenderMode::Splat, false}, std::pair{RenderMode::Splat, true},
+        std::pair{RenderMode::Billboards, false}}) {
+    ParticleState state = cloud(mode, 0.1f, true);
     state.sim.maximum = 1500;
     state.emitters[0].rate = 1000.0f / 0.25f;
     state.emitters[0].lifetime = 10.0f;
     if (shadows) state = shaded(state);
-    SCOPED_TRACE(shadows ? "shadows" : "plain");
+    SCOPED_TRACE(mode == RenderMode::Billboards ? "billboards" : shadows ? "shadows" : "plain");
     const GpuTuning atomicTuning{.splat = GpuTuning::Splat::Atomic};
     const Image without = render(state, GetParam(), kFrames, atomicTuning, field);
     state.render.trailLength = 8;

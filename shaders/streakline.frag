@@ -1,5 +1,5 @@
 #version 450 core
-// TrailRenderer: the particle's colour, fading along its trail.
+// StreaklineRenderer: the colour map at the point, fading along the line.
 #include "render_block.glsl"
 #include "scene_occlusion.glsl"
 
