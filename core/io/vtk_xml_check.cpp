@@ -57,7 +57,8 @@ struct Tag {
   std::string name;
   std::map<std::string, std::string> attributes;
   bool closing = false, selfClosing = false, special = false;  // special: <?..?>, <!..>
-  std::uint64_t end = 0;                                       // file position after '>'
+  bool quotedGreater = false;  // a '>' inside an attribute's value (legal XML)
+  std::uint64_t end = 0;       // file position after '>'
 };
 
 int typeSize(const std::string& type) {
@@ -208,6 +209,7 @@ class Checker {
     while ((c = in_.get()) >= 0) {
       if (quote) {
         if (c == quote) quote = 0;
+        if (c == '>') t.quotedGreater = true;
       } else if (c == '"' || c == '\'') {
         quote = char(c);
       } else if (c == '>') {
@@ -413,6 +415,12 @@ class Checker {
     }
     if (a.format != "ascii" && a.format != "binary")
       fail(concat(a.where, ": format '", a.format, "': expected ascii, binary or appended"));
+    // VTK finds an array's inline data after the first '>' past the tag's
+    // start, quoted or not, and would decode an attribute's tail as the data.
+    if (t.quotedGreater)
+      fail(concat(a.where,
+                  ": an attribute value holds '>' (write it as &gt;): VTK would read "
+                  "the inline data from inside the tag"));
     if (t.selfClosing) {
       if (tuples * a.components > 0)
         fail(concat(a.where, ": no data for ", tuples * a.components, " values"));

@@ -222,6 +222,21 @@ TEST(VtkXmlCheckHeaders, ACompressionHeaderListingEndlessBlocksIsRefused) {
                     {path.string(), "2000000000 compressed blocks", "memory budget"});
 }
 
+// VTK looks for an array's inline data after the first '>' past its tag's
+// start, even one inside a quoted value, and would decode the attribute's
+// tail as a compression header (a fuzzer's file asked for 14 GB so).
+TEST(VtkXmlCheckHeaders, AQuotedGreaterThanInAnInlineArraysTagIsRefused) {
+  const auto dir = test::scratch();
+  const auto path = write(dir, kEncodings[2]);  // inline base64, zlib
+  std::string text = test::readAll(path);
+  const std::size_t tag = text.find("<DataArray");
+  ASSERT_NE(tag, std::string::npos);
+  text.insert(tag + 10, " Note=\"0>70710678118654\"");
+  test::writeText(path, text);
+  test::expectError([&] { checkVtkXml(path, kBudget); }, {path.string(), "'>'", "&gt;"});
+  test::expectError([&] { loadField(path); }, {path.string(), "'>'"});
+}
+
 TEST(VtkXmlCheckHeaders, AnUncompressedByteCountBeyondThePayloadIsRefused) {
   const auto dir = test::scratch();
   const auto path = write(dir, kEncodings[5]);  // appended raw, UInt32
