@@ -1,16 +1,22 @@
 #version 450 core
-// ParticleSplat, tiled trails, steps 2 (count) and 4 (scatter), as
-// splat_bin.comp does for splats: workgroup g takes the trails of particles
+// ParticleSplat, tiled trails, steps 2 (stage) and 4 (place), as
+// splat_bin.comp bins splats: workgroup g takes the trails of particles
 // [g * perGroup, (g + 1) * perGroup), walks each pixel by pixel
 // (trail_common.glsl) and cuts it into runs of consecutive pixels in one
-// 32x32 tile of the view, counting the runs in a histogram of the tiles in
-// shared memory.
-//   count (uScatter false): adds the histogram to the tiles' counts; what
-//     each add returns is this workgroup's place in the tile's list.
-//   scatter (uScatter true): counts again and writes each run's record (the
-//     particle, its first and last pixel) in its tile's list; where the list
-//     is full the run adds its pixels itself with global atomics (the same
-//     integers, slower).
+// 32x32 tile of the view.
+//   stage (uPlace false): the one walk. Each run gets its rank among this
+//     workgroup's runs in its tile (a histogram of the tiles in shared
+//     memory) and is staged, with its tile and rank, in the workgroup's
+//     share of the staging buffer; the histogram is added to the tiles'
+//     counts, and what each add returns is this workgroup's place in the
+//     tile's list. A run past the workgroup's share adds its pixels itself
+//     with global atomics (the same integers, slower).
+//   place (uPlace true, after the scan): copies each staged run to its
+//     place in its tile's list; where the list is full the run adds its
+//     pixels itself, as above.
+// Staging spares a second walk: on an H100 the walk, not the memory it
+// reads, is what a pass costs (a trail made up of its particle's velocity
+// instead of read from the ring took as long).
 // A run costs its tile one record however many segments it spans: a trail
 // of a few pixels a segment makes a few runs, not one a segment.
 #include "view_block.glsl"
@@ -30,12 +36,30 @@ layout(std430, binding = 7) restrict buffer TileCounts { uint tileCount[]; };
 layout(std430, binding = 8) writeonly restrict buffer TileLists { uvec2 runs[]; };
 layout(std430, binding = 9) readonly restrict buffer TileStarts { uint tileStart[]; };
 layout(std430, binding = 10) restrict buffer GroupBase { uint groupBase[]; };  // [group][tile]
-layout(location = 1) uniform bool uScatter;
-layout(location = 2) uniform uint uListCapacity;  // runs
+// A workgroup's share of uStageCapacity records, then each workgroup's count.
+// A staged run is three words: the run's two, and its tile | rank << 13.
+layout(std430, binding = 17) restrict buffer Staged { uint staged[]; };
+layout(location = 1) uniform bool uPlace;
+layout(location = 2) uniform uint uListCapacity;   // runs
+layout(location = 3) uniform uint uStageCapacity;  // staged runs, all workgroups'
 
 #include "trail_common.glsl"
 
-shared uint sBins[kSplatMaxTiles];
+// Two tiles' counts a word, 16 bits each (a share is at most 65535 runs):
+// with the staged count, a full histogram takes 16 KB of shared memory,
+// within llvmpipe's 32 KB.
+shared uint sBins[kSplatMaxTiles / 2u];
+shared uint sStaged;
+
+const uint kRankShift = 13u;    // kSplatMaxTiles is 2^13
+const uint kMaxShare = 65535u;  // so that a tile's count fits its 16 bits
+
+// Adds one to tile t's count; returns the count before.
+uint binAdd(uint t) {
+  uint shift = (t & 1u) * 16u;
+  return (atomicAdd(sBins[t >> 1], 1u << shift) >> shift) & 0xffffu;
+}
+uint binCount(uint t) { return (sBins[t >> 1] >> ((t & 1u) * 16u)) & 0xffffu; }
 
 void trailAdd(ivec2 p, ivec2 origin, uint v[kSplatTrailChannels]) {
   uint base = (uint(p.y) * uint(view.viewport.z) + uint(p.x)) * kSplatStride + kSplatTrailChannel;
@@ -43,13 +67,24 @@ void trailAdd(ivec2 p, ivec2 origin, uint v[kSplatTrailChannels]) {
   atomicAdd(accum[base + 1u], v[1]);
 }
 
-void binRun(uint o, uint tile, uint first, uint last, uint across) {
-  uint slot = atomicAdd(sBins[tile], 1u);
-  if (!uScatter) return;
-  if (slot < uListCapacity)
-    runs[slot] = uvec2(o, first | (last << 16));
-  else
-    trailRun(o, first, last, ivec2(int(tile % across), int(tile / across)) * kSplatTile);
+ivec2 tileOrigin(uint tile, uint across) { return ivec2(int(tile % across), int(tile / across)) * kSplatTile; }
+
+uint share() { return min(uStageCapacity / gl_NumWorkGroups.x, kMaxShare); }
+// Where the workgroups' counts of staged runs follow the runs.
+uint counts() { return gl_NumWorkGroups.x * share() * 3u; }
+
+void stageRun(uint o, uint tile, uint first, uint last, uint across) {
+  uint k = atomicAdd(sStaged, 1u);
+  uvec2 run = uvec2(o, first | (last << 16));
+  if (k >= share()) {
+    trailRun(o, first, last, tileOrigin(tile, across));  // global atomics
+    return;
+  }
+  uint rank = binAdd(tile);
+  uint at = (gl_WorkGroupID.x * share() + k) * 3u;
+  staged[at] = run.x;
+  staged[at + 1u] = run.y;
+  staged[at + 2u] = tile | (rank << kRankShift);
 }
 
 // The tile of a pixel, -1 off screen.
@@ -57,16 +92,8 @@ int tileOf(ivec2 p, uint across) {
   return trailOnScreen(p) ? (p.y / kSplatTile) * int(across) + p.x / kSplatTile : -1;
 }
 
-void main() {
-  uint lid = gl_LocalInvocationIndex;
-  ivec2 size = ivec2(view.viewport.zw);
-  uint tiles = splatTileOffset(size, 1), across = uint(splatLevelTiles(size, 0).x);
-  uint group = gl_WorkGroupID.x;
-  for (uint t = lid; t < tiles; t += kGroup)
-    sBins[t] = uScatter ? tileStart[t] + groupBase[group * tiles + t] : 0u;
-  barrier();
-  uint begin = group * args.perGroup, end = min(begin + args.perGroup, args.count);
-  for (uint o = begin + lid; o < end; o += kGroup) {
+void stage(uint begin, uint end, uint across) {
+  for (uint o = begin + gl_LocalInvocationIndex; o < end; o += kGroup) {
     int run = -1;  // the tile of the run being walked
     uint first = 0u, last = 0u;
     TrailPoint newer = trailPoint(o, 0);
@@ -84,19 +111,49 @@ void main() {
         int tile = oneTile ? firstTile : tileOf(trailPixel(s, step), across);
         uint at = uint(j * kTrailMaxPixels + step);
         if (tile != run) {
-          if (run >= 0) binRun(o, uint(run), first, last, across);
+          if (run >= 0) stageRun(o, uint(run), first, last, across);
           run = tile;
           first = at;
         }
         last = oneTile ? uint(j * kTrailMaxPixels + s.n - 1) : at;
       }
     }
-    if (run >= 0) binRun(o, uint(run), first, last, across);
+    if (run >= 0) stageRun(o, uint(run), first, last, across);
   }
-  if (uScatter) return;
+}
+
+void place(uint tiles, uint across) {
+  uint group = gl_WorkGroupID.x, n = min(staged[counts() + group], share());
+  for (uint k = gl_LocalInvocationIndex; k < n; k += kGroup) {
+    uint at = (group * share() + k) * 3u;
+    uvec3 r = uvec3(staged[at], staged[at + 1u], staged[at + 2u]);
+    uint tile = r.z & ((1u << kRankShift) - 1u);
+    uint slot = tileStart[tile] + groupBase[group * tiles + tile] + (r.z >> kRankShift);
+    if (slot < uListCapacity)
+      runs[slot] = r.xy;
+    else
+      trailRun(r.x, r.y & 0xffffu, r.y >> 16, tileOrigin(tile, across));  // global atomics
+  }
+}
+
+void main() {
+  uint lid = gl_LocalInvocationIndex;
+  ivec2 size = ivec2(view.viewport.zw);
+  uint tiles = splatTileOffset(size, 1), across = uint(splatLevelTiles(size, 0).x);
+  uint group = gl_WorkGroupID.x;
+  if (uPlace) {
+    place(tiles, across);
+    return;
+  }
+  for (uint t = lid; t < (tiles + 1u) / 2u; t += kGroup) sBins[t] = 0u;
+  if (lid == 0u) sStaged = 0u;
   barrier();
+  uint begin = group * args.perGroup;
+  stage(begin, min(begin + args.perGroup, args.count), across);
+  barrier();
+  if (lid == 0u) staged[counts() + group] = sStaged;
   for (uint t = lid; t < tiles; t += kGroup) {
-    uint n = sBins[t];
+    uint n = binCount(t);
     if (n != 0u) groupBase[group * tiles + t] = atomicAdd(tileCount[t], n);
   }
 }

@@ -59,7 +59,8 @@ enum Binding : GLuint {
   kChunkDispatch = 12,
   kTrailDispatch = 13,
   kOccupied = 14,
-  kTrailRing = 15
+  kTrailRing = 15,
+  kTrailStaged = 17
 };
 
 // Uniform locations of trail_common.glsl.
@@ -297,7 +298,8 @@ void ParticleSplat::addTrails(const ParticleBackend::Records& r, std::size_t cap
 // The tiled variant: the splats' bins, lists and chunks again (addTiled has
 // finished with them), for runs of trail pixels in the full-resolution
 // tiles (trail_bin.comp, trail_tile.comp), so a pixel costs shared-memory
-// atomics, not global ones.
+// atomics, not global ones. The trails are walked once: the runs wait in
+// a staging buffer for the scan to say where their tiles' lists start.
 void ParticleSplat::addTiledTrails(const ParticleBackend::Records& r, std::size_t tileCount) const {
   if (!trailBin_) {
     trailBin_ = std::make_unique<gl::Program>(std::vector<std::string>{"trail_bin.comp"});
@@ -309,11 +311,24 @@ void ParticleSplat::addTiledTrails(const ParticleBackend::Records& r, std::size_
       listRecords_ ? std::min(listRecords_, 2 * listCapacity_) : 2 * listCapacity_;
   const GLuint runCapacity =
       GLuint(std::min<std::size_t>(runs, std::numeric_limits<GLuint>::max()));
+  // The staged runs: as many again as the lists hold and half as many more,
+  // shared by the binning workgroups (a share's overflow adds itself), three
+  // words each, then a count a workgroup; capped at what one buffer holds.
+  const std::size_t stage = std::min<std::size_t>(
+      runCapacity + runCapacity / 2, (maxListRecords_ * kRecordBytes / 4 - kMaxBinGroups) / 3);
+  const std::size_t stageBytes = (stage * 3 + kMaxBinGroups) * 4;
+  if (stageBytes > trailStagedBytes_) {
+    trailStaged_ = allocate(stageBytes, "the trails' staged runs");
+    trailStagedBytes_ = stageBytes;
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTrailStaged, trailStaged_.id());
   const gl::Program &bin = *trailBin_, &tile = *trailTile_;
+  glProgramUniform1ui(bin.id(), 3, GLuint(stage));
   for (const gl::Program* program : {&bin, &tile}) {
     setTrailUniforms(*program, r);
     glProgramUniform1ui(program->id(), 2, runCapacity);
   }
+  // Stage: the one walk along the trails, runs staged with their tile and rank.
   constexpr GLintptr kBinDispatch = 32;  // as addTiled's
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, dispatch_.id());
   bin.use();
@@ -331,6 +346,7 @@ void ParticleSplat::addTiledTrails(const ParticleBackend::Records& r, std::size_
   glDispatchCompute(1, 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
 
+  // Place: the staged runs copied into their tiles' lists.
   glProgramUniform1i(bin.id(), 1, GL_TRUE);
   bin.use();
   glDispatchComputeIndirect(kBinDispatch);

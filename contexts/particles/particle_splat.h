@@ -136,6 +136,8 @@ class ParticleSplat {
   mutable std::unique_ptr<gl::Program> trailPrepare_, trails_, trailBin_, trailTile_,
       trailOverScene_;
   mutable gl::Buffer trailDispatch_;
+  mutable gl::Buffer trailStaged_;  // tiled trails: runs between their walk and their lists
+  mutable std::size_t trailStagedBytes_ = 0;
 };
 
 }  // namespace sandstorm
