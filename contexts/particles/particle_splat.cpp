@@ -313,9 +313,12 @@ void ParticleSplat::addTiledTrails(const ParticleBackend::Records& r, std::size_
       GLuint(std::min<std::size_t>(runs, std::numeric_limits<GLuint>::max()));
   // The staged runs: as many again as the lists hold and half as many more,
   // shared by the binning workgroups (a share's overflow adds itself), three
-  // words each, then a count a workgroup; capped at what one buffer holds.
-  const std::size_t stage = std::min<std::size_t>(
-      runCapacity + runCapacity / 2, (maxListRecords_ * kRecordBytes / 4 - kMaxBinGroups) / 3);
+  // words each, then a count a workgroup; capped at what one buffer holds
+  // and at what the shader's 32-bit word indices reach.
+  const std::size_t words =
+      std::min<std::size_t>(maxListRecords_ * kRecordBytes / 4, std::numeric_limits<GLuint>::max());
+  const std::size_t stage =
+      std::min<std::size_t>(std::size_t(runCapacity) * 3 / 2, (words - kMaxBinGroups) / 3);
   const std::size_t stageBytes = (stage * 3 + kMaxBinGroups) * 4;
   if (stageBytes > trailStagedBytes_) {
     trailStaged_ = allocate(stageBytes, "the trails' staged runs");
