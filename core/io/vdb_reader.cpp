@@ -55,9 +55,10 @@ std::string chooseGrid(const std::vector<VdbGridEntry>& grids, const std::string
   for (const VdbGridEntry& g : grids)
     if (isVec3Type(g.type)) vec3.push_back(g.name);
   if (vec3.size() == 1) return vec3.front();
-  throw Error(concat(
-      file, ": ", vec3.empty() ? "holds no Vec3 grid" : "holds several Vec3 grids",
-      "; choose one by name (LoadOptions::arrayName, --array). Grids present: ", listGrids(grids)));
+  throw Error(
+      concat(file, ": ", vec3.empty() ? "holds no Vec3 grid" : "holds several Vec3 grids",
+             "; choose one by name (--array NAME, or the config's field.name). Grids present: ",
+             listGrids(grids)));
 }
 
 bool axisAligned(const openvdb::math::Transform& t) {

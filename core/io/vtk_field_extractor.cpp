@@ -92,6 +92,13 @@ Chosen chooseArray(vtkDataSet* data, const std::filesystem::path& path, const Lo
   if (name.empty()) {
     if (vtkDataArray* active = pd->GetVectors(); active && active->GetName()) {
       name = active->GetName();
+      if (const std::vector<std::string> names = vectorArrays(pd); names.size() > 1) {
+        std::string all;
+        for (const std::string& n : names)
+          all += concat(all.empty() ? "'" : ", '", n, "'");
+        report.notes.push_back(concat("vector array '", name, "' (the file's active vectors) of ",
+                                      all, "; --array NAME chooses another"));
+      }
     } else {
       std::vector<std::string> names = vectorArrays(pd);
       if (names.empty()) {
@@ -99,12 +106,13 @@ Chosen chooseArray(vtkDataSet* data, const std::filesystem::path& path, const Lo
         fromCells = true;
       }
       if (names.size() != 1)
-        throw Error(concat(file, ": ",
-                           names.empty() ? "no 3-component (vector) array"
-                                         : "several vector arrays and none marked active",
-                           "; choose one by name (LoadOptions::arrayName, --array). Arrays "
-                           "present: ",
-                           inventory(data)));
+        throw Error(
+            concat(file, ": ",
+                   names.empty() ? "no 3-component (vector) array"
+                                 : "several vector arrays and none marked active",
+                   "; choose one by name (--array NAME, or the config's field.name). Arrays "
+                   "present: ",
+                   inventory(data)));
       name = names.front();
     }
   } else if (!pd->GetAbstractArray(name.c_str())) {

@@ -1,5 +1,7 @@
 #include "core/io/vtk_legacy_reader.h"
 
+#include <algorithm>
+
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
@@ -36,12 +38,16 @@ vtkSmartPointer<vtkDataArray> toVtk(const LegacyArray& a) {
   return out;
 }
 
+// A file's one VECTORS section is its active vectors, as VTK's reader makes
+// it. Several are not: the format has no way to mark one, and VTK's reader
+// would take the first silently, so the loader asks which (--array).
 void attach(vtkDataSetAttributes* to, const std::vector<LegacyArray>& arrays) {
+  const auto vectors = std::count_if(arrays.begin(), arrays.end(),
+                                     [](const LegacyArray& a) { return a.kind == "vectors"; });
   for (const LegacyArray& a : arrays) {
     vtkSmartPointer<vtkDataArray> array = toVtk(a);
-    if (a.kind == "vectors" && !to->GetVectors())
-      to->SetVectors(
-          array);  // the file's VECTORS are the active vectors, as VTK's reader makes them
+    if (a.kind == "vectors" && vectors == 1)
+      to->SetVectors(array);
     else
       to->AddArray(array);
   }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <limits>
 
 #include <vtkCellData.h>
@@ -395,6 +396,53 @@ TEST(VtkFormats, ArraysAreChosenByNameAndListedWhenWrong) {
                      "'cellvel' (3 components, cell data)"});
   o.arrayName = "cellvel";  // cell data, moved to the points by VTK
   EXPECT_NEAR(glm::length(loadField(path, o).at(2, 0, 1) - glm::vec3(4.0f)), 0.0f, 1e-6f);
+}
+
+// A legacy file cannot mark one of several VECTORS sections active (VTK's
+// reader takes the first): the loader asks which. A file that marks one (XML)
+// gets it, and the report names the others.
+TEST(VtkFormats, SeveralVectorArraysAreAskedForUnlessOneIsMarkedActive) {
+  const auto dir = test::scratch();
+  const auto legacy = dir / "two.vtk";
+  {
+    std::ofstream f(legacy);
+    f << "# vtk DataFile Version 3.0\ntwo winds\nASCII\nDATASET STRUCTURED_POINTS\n"
+         "DIMENSIONS 2 2 2\nORIGIN 0 0 0\nSPACING 1 1 1\nPOINT_DATA 8\nVECTORS wind float\n";
+    for (int i = 0; i < 8; ++i)
+      f << "1 0 0\n";
+    f << "VECTORS gust float\n";
+    for (int i = 0; i < 8; ++i)
+      f << "0 2 0\n";
+  }
+  test::expectError([&] { loadField(legacy); },
+                    {legacy.string(), "several vector arrays", "--array", "'wind' (3 components)",
+                     "'gust' (3 components)"});
+  LoadOptions o;
+  o.arrayName = "gust";
+  EXPECT_EQ(loadField(legacy, o).at(1, 1, 1), glm::vec3(0.0f, 2.0f, 0.0f));
+
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(3, 3, 3);
+  addArrays(image);  // "velocity", the active vectors
+  vtkNew<vtkFloatArray> wind;
+  wind->SetName("wind");
+  wind->SetNumberOfComponents(3);
+  wind->SetNumberOfTuples(27);
+  wind->Fill(2.0f);
+  image->GetPointData()->AddArray(wind);
+  const auto xml = dir / "marked.vti";
+  vtkNew<vtkXMLImageDataWriter> w;
+  w->SetInputData(image);
+  w->SetFileName(xml.c_str());
+  ASSERT_EQ(w->Write(), 1);
+  LoadReport report;
+  loadField(xml, {}, &report);
+  EXPECT_EQ(report.arrayName, "velocity");
+  bool named = false;
+  for (const std::string& note : report.notes)
+    named = named || (note.find("'wind'") != std::string::npos &&
+                      note.find("'velocity'") != std::string::npos);
+  EXPECT_TRUE(named) << "the report names the other vector arrays";
 }
 
 TEST(VtkFormats, NonFiniteVectorsBecomeZeroAndAreCounted) {
