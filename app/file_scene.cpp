@@ -31,6 +31,35 @@ Flow meanFlow(const VectorField& field) {
   return {glm::vec3(sum / double(n)), float(speed / double(n))};
 }
 
+// The streamline rake, the slice and the probe where the field is, sized to
+// it, as ParaView places its Stream Tracer's line seed (the bounds' diagonal,
+// steps a fifth of a cell, lines as long as the diagonal) and its Slice
+// (through the centre): the defaults are the tornado scene's, metres from the
+// origin, which would miss most files' fields. Off until the user turns them on.
+void placeFlowTools(ParticleState& state, const VectorField& field) {
+  const Box box = field.bounds();
+  const glm::vec3 size = box.max - box.min, centre = 0.5f * (box.min + box.max);
+  const float diagonal = glm::length(size);
+  const glm::vec3 cells = size / glm::max(glm::vec3(field.dims()) - 1.0f, glm::vec3(1.0f));
+  float cell = diagonal;
+  for (int a = 0; a < 3; ++a)
+    if (cells[a] > 0.0f) cell = std::min(cell, cells[a]);
+
+  StreamlineSettings& rake = state.streamlines;
+  rake.shape = RakeShape::Line;
+  rake.from = box.min;
+  rake.to = box.max;
+  rake.across = glm::vec3(box.min.x, box.min.y, box.max.z);
+  // Within the attributes' ranges (core/sim/attribute_table.cpp).
+  rake.step = std::clamp(0.2f * cell, 1e-3f, 10.0f);
+  rake.length = std::clamp(diagonal, rake.step, 1e5f);
+  rake.width = std::clamp(0.003f * diagonal, 0.0f, 1.0f);
+
+  state.slice.origin = centre;
+  state.probe.position = centre;
+  state.probe.radius = std::clamp(0.02f * diagonal, 1e-3f, 100.0f);
+}
+
 }  // namespace
 
 Emitter seedingPlane(const VectorField& field, int maximum) {
@@ -116,6 +145,7 @@ void openFileScene(AppConfig& config, const std::filesystem::path& file, const s
     config.navigation.offset = glm::vec3(0.0f, 0.0f, 1.5f) - scale * centre;
   }
   state.render.size = std::max(0.004f * 2.0f * radius, 1e-4f);
+  placeFlowTools(state, field);
   log::info("file scene: ", file.string(), " over [", box.min.x, ",", box.min.y, ",", box.min.z,
             "]..[", box.max.x, ",", box.max.y, ",", box.max.z, "] m; seeding ",
             state.emitters[0].rate, " particles/s living ", state.emitters[0].lifetime, " s",

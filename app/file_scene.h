@@ -3,7 +3,9 @@
 // or, for a configuration with room walls, the field scaled into the room),
 // its outline drawn, an emitter seeding a plane across its bounds upstream of
 // the mean flow (or its horizontal middle plane when there is none) at a rate
-// that fills it, and the particles coloured by speed with a legend.
+// that fills it, and the particles coloured by speed with a legend. The
+// streamline rake (the bounds' diagonal), the slice and the probe (the
+// centre) are placed in the field and sized to it, off until turned on.
 #pragma once
 
 #include <filesystem>

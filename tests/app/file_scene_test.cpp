@@ -2,6 +2,7 @@
 // on a file of our own with two vector arrays.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 
 #include "app/file_scene.h"
@@ -67,6 +68,26 @@ std::filesystem::path twoArrays(const std::filesystem::path& dir) {
 </VTKFile>
 )";
   return path;
+}
+
+// A field 100 m from the origin, 8 x 4 x 2 m in cells of 1 m: the rake lies on
+// the bounds' diagonal (ParaView's line seed), steps a fifth of a cell and
+// lines as long as the diagonal; the slice and the probe at the centre.
+TEST(FileScene, TheRakeTheSliceAndTheProbeArePlacedInTheField) {
+  const VectorField f =
+      bake(Uniform({1.0f, 0.0f, 0.0f}), Box{{100, 50, 10}, {108, 54, 12}}, {9, 5, 3});
+  AppConfig config;
+  openFileScene(config, "far.vti", "", f);
+  const ParticleState& s = config.particles;
+  EXPECT_EQ(s.streamlines.shape, RakeShape::Line);
+  EXPECT_EQ(s.streamlines.from, glm::vec3(100, 50, 10));
+  EXPECT_EQ(s.streamlines.to, glm::vec3(108, 54, 12));
+  EXPECT_NEAR(s.streamlines.step, 0.2f, 1e-6f);
+  EXPECT_NEAR(s.streamlines.length, std::sqrt(84.0f), 1e-4f);
+  EXPECT_FALSE(s.streamlines.enabled);
+  EXPECT_EQ(s.slice.origin, glm::vec3(104, 52, 11));
+  EXPECT_FALSE(s.slice.enabled);
+  EXPECT_EQ(s.probe.position, glm::vec3(104, 52, 11));
 }
 
 TEST(FileScene, AFileWithSeveralArraysAsksWhichAndOpensTheOneNamed) {
