@@ -336,16 +336,24 @@ void AppRun::dumpStreamlines(const WallRenderer& wall, const FramePacket& packet
   in.obstacles = collisionShapes(state, terrain_.get());
   StreamlineSettings rake = state.streamlines;
   const std::vector<Streamline> lines = traceStreamlines(rake, in);
-  writeStreamlinesVtp(lines, state.render.colorBy, *options_.dumpStreamlines);
+  const LineColoring coloring{.quantity = state.render.colorBy,
+                              .field = field.get(),
+                              .blend = packet.fieldBlend,
+                              .strength = state.sim.fieldStrength};
+  std::vector<PointArray> extra;
+  if (auto a = streamlineColorArray(lines, coloring)) extra.push_back(std::move(*a));
+  writeStreamlinesVtp(lines, state.render.colorBy, *options_.dumpStreamlines, "--dump-streamlines",
+                      extra);
   log::info("wrote ", lines.size(), " streamlines to ", options_.dumpStreamlines->string(),
             state.streamlines.enabled ? "" : " (streamlines.enabled is off: not drawn)");
 }
 
 // The particles' trails as polylines, each ending at its particle.
-void AppRun::dumpTrails(const WallRenderer& wall) {
+void AppRun::dumpTrails(const WallRenderer& wall, const FramePacket& packet) {
   const std::vector<Particle> particles = wall.particles().update().readBack();
   const std::vector<std::vector<glm::vec3>> trails = wall.particles().readBackTrails();
   std::vector<Streamline> lines;
+  std::vector<std::size_t> owners;
   for (std::size_t i = 0; i < trails.size() && i < particles.size(); ++i) {
     if (trails[i].size() < 2) continue;
     Streamline line;
@@ -353,9 +361,17 @@ void AppRun::dumpTrails(const WallRenderer& wall) {
       line.points.push_back({*it, particles[i].velocity()});
     line.seedIndex = int(line.points.size()) - 1;  // arc length 0 at the particle
     lines.push_back(std::move(line));
+    owners.push_back(i);
   }
-  writeStreamlinesVtp(lines, wall.particles().state().render.colorBy, *options_.dumpTrails,
-                      "--dump-trails");
+  const ParticleState& state = wall.particles().state();
+  const auto field = wall.particles().field();
+  const LineColoring coloring{.quantity = state.render.colorBy,
+                              .field = field.get(),
+                              .blend = packet.fieldBlend,
+                              .strength = state.sim.fieldStrength};
+  std::vector<PointArray> extra;
+  if (auto a = trailColorArray(lines, owners, particles, coloring)) extra.push_back(std::move(*a));
+  writeStreamlinesVtp(lines, state.render.colorBy, *options_.dumpTrails, "--dump-trails", extra);
   log::info("wrote ", lines.size(), " trails to ", options_.dumpTrails->string(),
             wall.particles().state().render.trailLength > 0 ? "" : " (render.trail_length is 0)");
 }
@@ -378,7 +394,7 @@ void AppRun::hookWalls() {
         log::info("wrote ", particles.size(), " particles to ", options_.dumpParticles->string());
       }
       if (first && last && options_.dumpStreamlines) dumpStreamlines(wall, packet);
-      if (first && last && options_.dumpTrails) dumpTrails(wall);
+      if (first && last && options_.dumpTrails) dumpTrails(wall, packet);
       if (cluster_)
         cluster_->drawn(int(i), packet.frame);  // the main thread holds the swap for every rank
     });

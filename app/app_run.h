@@ -53,7 +53,7 @@ class AppRun {
   void openMenu();
   void openLegend();
   void dumpStreamlines(const WallRenderer& wall, const FramePacket& packet);
-  void dumpTrails(const WallRenderer& wall);
+  void dumpTrails(const WallRenderer& wall, const FramePacket& packet);
   void hookWalls();
   void runOneProcess();
   void runCluster();

@@ -3,14 +3,38 @@
 #include <functional>
 #include <sstream>
 
+#include "core/util/error.h"
 #include "core/util/output_file.h"
 
 namespace sandstorm {
 namespace {
 
+// A name as an XML attribute's value (a file's array may be called "a<b").
+std::string escaped(const std::string& name) {
+  std::string out;
+  for (char c : name)
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      default:
+        out += c;
+    }
+  return out;
+}
+
 void dataArray(std::ostringstream& out, const char* type, const std::string& name, int components,
                const std::function<void(std::ostringstream&)>& values) {
-  out << "        <DataArray type=\"" << type << "\" Name=\"" << name << "\"";
+  out << "        <DataArray type=\"" << type << "\" Name=\"" << escaped(name) << "\"";
   if (components > 1) out << " NumberOfComponents=\"" << components << "\"";
   out << " format=\"ascii\">\n";
   values(out);
@@ -33,10 +57,15 @@ std::string componentName(ColorQuantity q) {
 }  // namespace
 
 void writeStreamlinesVtp(std::span<const Streamline> lines, ColorQuantity colorBy,
-                         const std::filesystem::path& path, const std::string& what) {
+                         const std::filesystem::path& path, const std::string& what,
+                         std::span<const PointArray> extra) {
   std::size_t points = 0;
   for (const Streamline& l : lines)
     points += l.points.size();
+  for (const PointArray& a : extra)
+    if (a.values.size() != points)
+      throw Error(concat(what, " ", path.string(), ": array '", a.name, "' has ", a.values.size(),
+                         " values for ", points, " points"));
   auto each = [&](const std::function<void(const Streamline&, std::size_t)>& f) {
     for (const Streamline& l : lines)
       for (std::size_t i = 0; i < l.points.size(); ++i)
@@ -78,6 +107,11 @@ void writeStreamlinesVtp(std::span<const Streamline> lines, ColorQuantity colorB
       each([&](const Streamline& l, std::size_t i) { o << l.points[i].velocity[axis] << ' '; });
     });
   }
+  for (const PointArray& a : extra)
+    dataArray(out, "Float32", a.name, 1, [&](std::ostringstream& o) {
+      for (float v : a.values)
+        o << v << ' ';
+    });
   out << "      </PointData>\n      <Points>\n";
   dataArray(out, "Float32", "Points", 3, [&](std::ostringstream& o) {
     each([&](const Streamline& l, std::size_t i) {
