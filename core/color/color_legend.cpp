@@ -31,6 +31,12 @@ double niceStep(double low, double high, int target) {
   return nice * power;
 }
 
+double smallerNiceStep(double step) {
+  const double power = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+  const double fraction = step / power;
+  return fraction > 4.5 ? 2.0 * power : fraction > 1.5 ? power : 0.5 * power;
+}
+
 ColorLegend ColorLegend::of(const ColorScale& scale, int targetTicks) {
   ColorLegend legend;
   const std::string_view unit = quantityUnit(scale.quantity);
@@ -59,9 +65,18 @@ ColorLegend ColorLegend::of(const ColorScale& scale, int targetTicks) {
         if (v >= low * (1.0 - 1e-6) && v <= high * (1.0 + 1e-6)) add(v, v);
       }
     }
-    return legend;
+    if (legend.ticks.size() >= 2) return legend;
+    legend.ticks.clear();  // within a decade (1.5 to 1.9): the linear ticks, placed on the log bar
   }
-  const double step = niceStep(low, high, targetTicks);
+  // A bar with one label says nothing of its scale: the step shrinks (5, 2, 1
+  // times a power of ten) until at least two ticks fall inside the range.
+  double step = niceStep(low, high, targetTicks);
+  auto ticks = [&](double s) {
+    const double tolerance = s * 1e-6;
+    return std::floor((high + tolerance) / s) - std::ceil((low - tolerance) / s) + 1.0;
+  };
+  while (ticks(step) < 2.0)
+    step = smallerNiceStep(step);
   const double tolerance = step * 1e-6;
   for (double k = std::ceil((low - tolerance) / step);; k += 1.0) {
     const double v = k * step;

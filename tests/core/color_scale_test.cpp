@@ -116,6 +116,26 @@ TEST(ColorLegend, LogTicksAreDecadesWithTwosAndFivesWhenFew) {
             (std::vector<std::string>{"0.5", "1", "2", "5", "10", "20"}));
 }
 
+// A narrow range whose nice step leaves one tick (1.00 .. 1.044 with two
+// asked for: a step of 0.05) gets a finer step and two or more; so does a log
+// scale within one decade (no 1, 2 or 5 times a power of ten inside).
+TEST(ColorLegend, ANarrowRangeStillHasTwoTicks) {
+  ColorScale s{.quantity = ColorQuantity::Speed, .low = 1.0f, .high = 1.044f};
+  EXPECT_EQ(labels(ColorLegend::of(s, 2)), (std::vector<std::string>{"1.00", "1.02", "1.04"}));
+  s.low = 0.96f;
+  s.high = 1.01f;
+  EXPECT_EQ(labels(ColorLegend::of(s, 1)), (std::vector<std::string>{"0.96", "0.98", "1.00"}));
+  s.low = 1.5f;
+  s.high = 1.9f;
+  s.log = true;
+  const ColorLegend log = ColorLegend::of(s, 4);
+  EXPECT_EQ(labels(log), (std::vector<std::string>{"1.5", "1.6", "1.7", "1.8", "1.9"}));
+  EXPECT_NEAR(log.ticks[1].t, std::log(1.6f / 1.5f) / std::log(1.9f / 1.5f), 1e-5f);
+  EXPECT_DOUBLE_EQ(smallerNiceStep(0.05), 0.02);
+  EXPECT_DOUBLE_EQ(smallerNiceStep(0.02), 0.01);
+  EXPECT_DOUBLE_EQ(smallerNiceStep(10.0), 5.0);
+}
+
 TEST(ColorLegend, AFlatRangeHasOneTickInTheMiddle) {
   ColorScale s{.quantity = ColorQuantity::Speed, .low = 2.5f, .high = 2.5f};
   ColorLegend legend = ColorLegend::of(s);
