@@ -656,8 +656,8 @@ std::vector<std::string> AppRun::probeLines(const ParticleState& state, const Fi
   }
   if (!walls_.empty())
     if (const std::optional<ParticleMeasurement> m = walls_[0]->stats().measure) {
-      std::snprintf(text, sizeof text, "%u particles within %.2f m (frame %u)", m->nearProbe,
-                    state.probe.radius, m->frame);
+      std::snprintf(text, sizeof text, "%u particle%s within %.2f m (frame %u)", m->nearProbe,
+                    m->nearProbe == 1 ? "" : "s", state.probe.radius, m->frame);
       lines.push_back(text);
     }
   return lines;
