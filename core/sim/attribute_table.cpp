@@ -351,6 +351,7 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("slice.normal", T::Vec3, -1, 1, "",
                     "The slice plane's normal: (1 0 0), (0 1 0), (0 0 1) or any direction",
                     SLICE(normal)));
+  v.back().direction = true;
   v.push_back(entry("slice.opacity", T::Float, 0, 1, "", "The slice's opacity", SLICE(opacity)));
   v.push_back(entry("slice.arrows", T::Int, 0, 64, "",
                     "Arrow glyphs of the in-plane flow along the slice's longer side (0: none)",
@@ -785,6 +786,8 @@ AttributeResult AttributeTable::validate(std::string_view key, const AttributeVa
       glm::vec3 x = std::get<glm::vec3>(v);
       for (int i = 0; i < 3; ++i)
         x[i] = clampReport(x[i]);
+      if (info.direction && x == glm::vec3(0.0f))
+        throw Error(concat("attribute '", key, "': expected a direction, not (0, 0, 0)"));
       result.applied = x;
       break;
     }

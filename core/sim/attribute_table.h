@@ -55,6 +55,7 @@ struct AttributeInfo {
   AttributeValue defaultValue;
   std::string description;
   std::vector<std::string> choices;  // Enum only
+  bool direction = false;            // Vec3 only: a direction, so (0, 0, 0) is refused
   std::function<AttributeValue(const ParticleState&, int emitter)> get;
   std::function<void(ParticleState&, int emitter, const AttributeValue&)> set;
 

@@ -82,8 +82,16 @@ TEST(AttributeTable, RefusesWrongTypesUnknownKeysAndChoices) {
             std::string::npos);
   EXPECT_NE(errorOf([&] { table().set(s, "render.size", std::nanf("")); }).find("not finite"),
             std::string::npos);
+  // A direction of no length (the slice's normal), however it is set.
+  EXPECT_NE(errorOf([&] {
+              table().set(s, "slice.normal", glm::vec3(0.0f));
+            }).find("expected a direction, not (0, 0, 0)"),
+            std::string::npos);
   EXPECT_EQ(s.render.size, before.render.size);
   EXPECT_EQ(s.sim.maximum, before.sim.maximum);
+  EXPECT_EQ(s.slice.normal, before.slice.normal);
+  table().set(s, "slice.normal", glm::vec3(0.0f, 0.0f, -0.5f));  // any length but 0
+  EXPECT_EQ(s.slice.normal, glm::vec3(0.0f, 0.0f, -0.5f));
 }
 
 TEST(AttributeTable, ParsesText) {
