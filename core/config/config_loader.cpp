@@ -732,12 +732,7 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
   if (const auto* t = section("probe")) setAttributes(r, *t, "probe.", c.particles);
   if (const auto* t = section("molecules")) setAttributes(r, *t, "molecules.", c.particles);
   if (const auto* t = section("solver")) setAttributes(r, *t, "solver.", c.particles);
-  if (const auto* t = section("slice")) {
-    setAttributes(r, *t, "slice.", c.particles);
-    if (const toml::value* n = r.find(*t, "normal");
-        n && !(glm::length(c.particles.slice.normal) > 0.0f))
-      r.fail(*n, "slice.normal", "expected a direction, not (0, 0, 0)");
-  }
+  if (const auto* t = section("slice")) setAttributes(r, *t, "slice.", c.particles);
   if (const toml::value* emitters = r.find(root, "emitter")) {
     if (!emitters->is_array()) r.fail(*emitters, "emitter", "expected [[emitter]] tables");
     if (emitters->as_array().size() > std::size_t(ParticleState::kMaxEmitters))
