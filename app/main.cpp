@@ -3,6 +3,7 @@
 
 #include "app/app.h"
 #include "app/cluster/cluster_link.h"
+#include "app/default_config.h"
 #include "app/file_scene.h"
 #include "core/io/field_loader.h"
 #ifdef SANDSTORM_MPI
@@ -94,6 +95,7 @@ int main(int argc, char** argv) {
   } catch (const CLI::ParseError& e) {
     return cli.exit(e);
   }
+  if (configOption->count() == 0) configPath = defaultConfig("downdraft.toml").string();
   if (!logLevel.empty()) {
     log::Level level;
     log::parseLevel(logLevel, level);
@@ -160,7 +162,8 @@ int main(int argc, char** argv) {
   try {
     if (!fieldFile.empty()) {
       // The desktop scene unless a configuration was named.
-      AppConfig config = loadConfig(configOption->count() > 0 ? configPath : "config/desktop.toml");
+      AppConfig config = loadConfig(
+          configOption->count() > 0 ? configPath : defaultConfig("desktop.toml").string());
       LoadOptions load;
       load.arrayName = arrayName;
       openFileScene(config, fieldFile, arrayName, loadField(fieldFile, load));

@@ -336,7 +336,7 @@ class Parser {
         return;
       }
       if (key == "scalars") {
-        a.name = std::string(token("the scalars' name"));
+        a.name = arrayName(out, "the scalars' name");
         const std::string type = keyword("the scalars' type");
         a.components = 1;
         // An optional component count, then LOOKUP_TABLE on its own line.
@@ -355,27 +355,27 @@ class Parser {
         a.values = values(type, n * a.components, "SCALARS " + a.name);
         out.push_back(std::move(a));
       } else if (key == "vectors" || key == "normals") {
-        a.name = std::string(token("the array's name"));
+        a.name = arrayName(out, "the array's name");
         const std::string type = keyword("the array's type");
         a.components = 3;
         a.singlePrecision = type != "double";
         a.values = values(type, n * 3, lower(key) + " " + a.name);
         out.push_back(std::move(a));
       } else if (key == "tensors" || key == "tensors6") {
-        a.name = std::string(token("the tensors' name"));
+        a.name = arrayName(out, "the tensors' name");
         const std::string type = keyword("the tensors' type");
         a.components = key == "tensors" ? 9 : 6;
         a.singlePrecision = type != "double";
         a.values = values(type, n * a.components, "TENSORS " + a.name);
         out.push_back(std::move(a));
       } else if (key == "texture_coordinates") {
-        a.name = std::string(token("the texture coordinates' name"));
+        a.name = arrayName(out, "the texture coordinates' name");
         a.components = int(integer("the texture coordinates' dimension", 1, 3));
         const std::string type = keyword("the texture coordinates' type");
         a.values = values(type, n * a.components, "TEXTURE_COORDINATES " + a.name);
         out.push_back(std::move(a));
       } else if (key == "color_scalars") {
-        a.name = std::string(token("the colour scalars' name"));
+        a.name = arrayName(out, "the colour scalars' name");
         a.components = int(integer("the colour scalars' value count", 1, 4));
         a.values = values(binary_ ? "unsigned_char" : "float", n * a.components,
                           "COLOR_SCALARS " + a.name);
@@ -397,6 +397,17 @@ class Parser {
     }
   }
 
+  // An array's name, one the section has not used: VTK keeps only the last
+  // of two arrays of one name, so the first would vanish unsaid.
+  std::string arrayName(const std::vector<LegacyArray>& out, const char* what) {
+    std::string name(token(what));
+    for (const LegacyArray& a : out)
+      if (a.name == name)
+        fail(concat("a second array named '", name,
+                    "'; the arrays of a section need names of their own"));
+    return name;
+  }
+
   // FIELD name n: n arrays "name components tuples type" + values. With
   // `tuples`, every array must have that many (attribute data).
   void fieldArrays(std::vector<LegacyArray>& out, std::optional<long long> tuples) {
@@ -404,7 +415,7 @@ class Parser {
     for (long long i = 0; i < arrays; ++i) {
       LegacyArray a;
       a.kind = "FIELD";
-      a.name = std::string(token("a field array's name"));
+      a.name = arrayName(out, "a field array's name");
       a.components = int(integer(concat("field array '", a.name, "' components"), 1, 4096));
       const long long n = integer(concat("field array '", a.name, "' tuples"), 0, 1LL << 40);
       if (tuples && n != *tuples)

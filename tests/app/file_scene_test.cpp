@@ -109,6 +109,18 @@ TEST(FileScene, AFileWithSeveralArraysAsksWhichAndOpensTheOneNamed) {
   EXPECT_TRUE(std::filesystem::exists(dir / "desktop.png"));
 }
 
+// A scientist opens a field from the folder that holds it: the desktop scene
+// (config/desktop.toml) is Sandstorm's, found from wherever it starts.
+TEST(FileScene, AFileOpensFromItsOwnFolder) {
+  const auto dir = test::scratchDir("file-scene-cwd");
+  twoArrays(dir);
+  const auto run = test::runCommand("cd '" + dir.string() + "' && '" + SANDSTORM_BINARY +
+                                    "' two.vti --array wind --frames 2 --screenshot . "
+                                    "--set sim.maximum=1000 2>&1");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "desktop.png"));
+}
+
 TEST(FileScene, AFileThatIsNotThereOrNotAFieldIsAClearError) {
   const auto missing = test::runSandstorm("/nonexistent/wind.vti --frames 1");
   EXPECT_NE(missing.exitCode, 0);

@@ -94,6 +94,16 @@ TEST(BadInput, LegacyValueCountDiffersFromPointCount) {
   expectError([&] { loadField(path); }, {path.string()});
 }
 
+// Two arrays of one name in a section: VTK keeps the last, so the first
+// would vanish unsaid. The same name in point and cell data is fine.
+TEST(BadInput, LegacyArraysOfOneNameInASection) {
+  const auto dir = test::scratch();
+  const auto path = dir / "bad.vtk";
+  test::writeText(path, replaced(legacyAscii(dir), "SCALARS pressure", "SCALARS velocity"));
+  expectError([&] { loadField(path); },
+              {path.string(), "a second array named 'velocity'", "names of their own"});
+}
+
 TEST(BadInput, SpacingZeroOrNegative) {
   const auto dir = test::scratch();
   const auto legacy = dir / "bad.vtk";
