@@ -15,6 +15,7 @@
 #include <vtkPoints.h>
 #include <vtkRectilinearGrid.h>
 #include <vtkRectilinearGridWriter.h>
+#include <vtkSmartPointer.h>
 #include <vtkStructuredGrid.h>
 #include <vtkStructuredGridWriter.h>
 #include <vtkStructuredPointsWriter.h>
@@ -357,9 +358,9 @@ TEST(VtkFormats, OurVtiReadsBackThroughVtkUnchanged) {
     EXPECT_EQ(g.values()[i], f.values()[i]);
 }
 
-TEST(VtkFormats, ArraysAreChosenByNameAndListedWhenWrong) {
-  const auto dir = test::scratch();
-  vtkNew<vtkImageData> image;
+// 3x3x3 image data with addArrays' arrays and a second vector array, "wind" (2, 2, 2).
+vtkSmartPointer<vtkImageData> imageWithWind() {
+  auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(3, 3, 3);
   addArrays(image);
   vtkNew<vtkFloatArray> wind;
@@ -368,6 +369,12 @@ TEST(VtkFormats, ArraysAreChosenByNameAndListedWhenWrong) {
   wind->SetNumberOfTuples(27);
   wind->Fill(2.0f);
   image->GetPointData()->AddArray(wind);
+  return image;
+}
+
+TEST(VtkFormats, ArraysAreChosenByNameAndListedWhenWrong) {
+  const auto dir = test::scratch();
+  vtkSmartPointer<vtkImageData> image = imageWithWind();
   vtkNew<vtkFloatArray> cellVel;
   cellVel->SetName("cellvel");
   cellVel->SetNumberOfComponents(3);
@@ -421,15 +428,7 @@ TEST(VtkFormats, SeveralVectorArraysAreAskedForUnlessOneIsMarkedActive) {
   o.arrayName = "gust";
   EXPECT_EQ(loadField(legacy, o).at(1, 1, 1), glm::vec3(0.0f, 2.0f, 0.0f));
 
-  vtkNew<vtkImageData> image;
-  image->SetDimensions(3, 3, 3);
-  addArrays(image);  // "velocity", the active vectors
-  vtkNew<vtkFloatArray> wind;
-  wind->SetName("wind");
-  wind->SetNumberOfComponents(3);
-  wind->SetNumberOfTuples(27);
-  wind->Fill(2.0f);
-  image->GetPointData()->AddArray(wind);
+  vtkSmartPointer<vtkImageData> image = imageWithWind();  // "velocity" active, "wind"
   const auto xml = dir / "marked.vti";
   vtkNew<vtkXMLImageDataWriter> w;
   w->SetInputData(image);
