@@ -794,9 +794,11 @@ int AppRun::finish() {
             " frames/s), ", walls_.size(), " wall(s)");
   for (const auto& w : walls_) {
     const WallStats s = w->stats();
-    log::info("  wall '", w->name(), "': ", s.liveParticles, " live particles at frame ", s.frame,
-              ", last frame ", s.frameMs, " ms; ", s.fieldUploads, " field upload(s), the last ",
-              s.fieldUploadMs, " ms; ", s.glErrors, " GL error(s)",
+    // The count is read back late, so that the frame loop never waits for it.
+    log::info("  wall '", w->name(), "': ", s.liveParticles,
+              " live particles a frame or two before its last (", s.frame, "); last frame ",
+              s.frameMs, " ms; ", s.fieldUploads, " field upload(s), the last ", s.fieldUploadMs,
+              " ms; ", s.glErrors, " GL error(s)",
               w->error() ? " FAILED: " + *w->error() : std::string());
   }
   if (tracking_) {
