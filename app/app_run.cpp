@@ -316,8 +316,13 @@ void AppRun::openLegend() {
   for (const auto& wall : walls_) {
     const WallSpec& spec = wall->setup().wall;
     if (spec.name != chosen->name) continue;
-    legend_ = std::make_unique<LegendHost>(spec.window ? spec.window->size : spec.offscreenSize);
-    wall->addOverlay([this] { return legend_->latest(); }, legend_->font());
+    // Laid out for one eye's image and drawn into each: a stereo wall shows
+    // it to both eyes at the wall's plane, readable.
+    const glm::ivec2 image = spec.window ? spec.window->size : spec.offscreenSize;
+    const glm::ivec4 eye = eyeViewports(spec.stereo, image).front();
+    legend_ = std::make_unique<LegendHost>(glm::ivec2(eye.z, eye.w));
+    wall->addOverlay([this] { return legend_->latest(); }, legend_->font(),
+                     RenderWall::OverlayFit::EachEye);
     return;
   }
 }

@@ -54,10 +54,8 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
   const std::optional<glm::vec3> probe =
       probePoint(system_.state(), packet.wand, packet.viewer.navigation);
   viewRenderer_.scene().setProbe(probe, system_.state().probe.radius);
-  const glm::ivec2 viewSize =
-      wall_.stereo == StereoMode::SideBySide  ? glm::ivec2(size.x / 2, size.y)
-      : wall_.stereo == StereoMode::TopBottom ? glm::ivec2(size.x, size.y / 2)
-                                              : size;
+  const std::vector<glm::ivec4> eyes = eyeViewports(wall_.stereo, size);
+  const glm::ivec2 viewSize(eyes[0].z, eyes[0].w);
   renderer_ = system_.state().render.mode == RenderMode::Points ? "points"
               : system_.splats(&views[0], viewSize)             ? "splats"
                                                                 : "billboards";
@@ -67,19 +65,12 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
     case StereoMode::RightEye:
       viewRenderer_.render(system_, views[0], size, destination, {0, 0}, &timer_);
       break;
-    case StereoMode::SideBySide: {
-      const glm::ivec2 half(size.x / 2, size.y);
-      viewRenderer_.render(system_, views[0], half, destination, {0, 0}, &timer_);
-      viewRenderer_.render(system_, views[1], half, destination, {half.x, 0}, &timer_);
+    case StereoMode::SideBySide:
+    case StereoMode::TopBottom:
+      for (std::size_t eye = 0; eye < 2; ++eye)
+        viewRenderer_.render(system_, views[eye], viewSize, destination, {eyes[eye].x, eyes[eye].y},
+                             &timer_);
       break;
-    }
-    case StereoMode::TopBottom: {
-      const glm::ivec2 half(size.x, size.y / 2);
-      viewRenderer_.render(system_, views[0], half, destination, {0, half.y},
-                           &timer_);  // left eye on top
-      viewRenderer_.render(system_, views[1], half, destination, {0, 0}, &timer_);
-      break;
-    }
     case StereoMode::QuadBuffer:
       glNamedFramebufferDrawBuffer(0, GL_BACK_LEFT);
       viewRenderer_.render(system_, views[0], size, 0, {0, 0}, &timer_);
@@ -120,10 +111,16 @@ void WallRenderer::measure(std::uint32_t frame, std::optional<glm::vec3> probe) 
       probe ? std::optional<glm::vec4>(glm::vec4(*probe, state.probe.radius)) : std::nullopt);
 }
 
-void WallRenderer::drawOverlay(const UiDrawData& menu, const UiFont& font) {
+void WallRenderer::drawOverlay(const UiDrawData& menu, const UiFont& font, bool perEye) {
   if (!ui_) ui_ = std::make_unique<UiRenderer>(font);
   glBindFramebuffer(GL_FRAMEBUFFER, drewOffscreen_ ? offscreen_.framebuffer() : 0);
-  ui_->draw(menu, lastSize_);
+  if (perEye) {
+    // The same place in each eye's image: no disparity, on the wall's plane.
+    for (const glm::ivec4& viewport : eyeViewports(wall_.stereo, lastSize_))
+      ui_->draw(menu, viewport);
+  } else {
+    ui_->draw(menu, lastSize_);
+  }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

@@ -44,7 +44,9 @@ class WallRenderer {
   // The frame is done with the particles (after captures and hash probes).
   void endFrame() { system_.endFrame(); }
   // Draws the menu over the wall's last frame (the wall that shows the menu).
-  void drawOverlay(const UiDrawData& menu, const UiFont& font);
+  // `perEye`: laid out for one eye's image (the legend), drawn into each
+  // (eyeViewports), so that a stereo wall shows it to both eyes.
+  void drawOverlay(const UiDrawData& menu, const UiFont& font, bool perEye = false);
   // The image last drawn (offscreen) or the back buffer (window).
   Image capture() const;
 

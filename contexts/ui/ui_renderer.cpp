@@ -34,7 +34,8 @@ void UiRenderer::drawWindow(const UiDrawData& data, glm::ivec2 size) {
   draw(data, size);
 }
 
-void UiRenderer::draw(const UiDrawData& d, glm::ivec2 fb) {
+void UiRenderer::draw(const UiDrawData& d, glm::ivec4 viewport) {
+  const glm::ivec2 at(viewport.x, viewport.y), fb(viewport.z, viewport.w);
   if (d.commands.empty() || fb.x <= 0 || fb.y <= 0) return;
   if (d.vertices.size() > vertexCapacity_) {
     vertexCapacity_ = d.vertices.size() * 2;
@@ -54,7 +55,7 @@ void UiRenderer::draw(const UiDrawData& d, glm::ivec2 fb) {
                        d.vertices.data());
   glNamedBufferSubData(indices_.id(), 0, GLsizeiptr(d.indices.size() * 2), d.indices.data());
 
-  glViewport(0, 0, fb.x, fb.y);
+  glViewport(at.x, at.y, fb.x, fb.y);
   glEnable(GL_BLEND);
   glBlendEquation(GL_FUNC_ADD);
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
@@ -71,7 +72,8 @@ void UiRenderer::draw(const UiDrawData& d, glm::ivec2 fb) {
     const glm::vec4 clip = (c.clip - glm::vec4(d.displayPos, d.displayPos)) *
                            glm::vec4(d.framebufferScale, d.framebufferScale);
     if (clip.z <= clip.x || clip.w <= clip.y) continue;
-    glScissor(int(clip.x), int(float(fb.y) - clip.w), int(clip.z - clip.x), int(clip.w - clip.y));
+    glScissor(at.x + int(clip.x), at.y + int(float(fb.y) - clip.w), int(clip.z - clip.x),
+              int(clip.w - clip.y));
     glDrawElementsBaseVertex(GL_TRIANGLES, GLsizei(c.indexCount), GL_UNSIGNED_SHORT,
                              reinterpret_cast<const void*>(std::uintptr_t(c.firstIndex) * 2),
                              c.vertexOffset);

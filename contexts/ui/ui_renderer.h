@@ -13,7 +13,12 @@ class UiRenderer {
  public:
   explicit UiRenderer(const UiFont& font);
   // Over whatever the bound framebuffer holds.
-  void draw(const UiDrawData& data, glm::ivec2 framebufferSize);
+  void draw(const UiDrawData& data, glm::ivec2 framebufferSize) {
+    draw(data, glm::ivec4(0, 0, framebufferSize));
+  }
+  // Into `viewport` (x, y, width, height, y up) of the bound framebuffer: an
+  // eye's half of a stereo image.
+  void draw(const UiDrawData& data, glm::ivec4 viewport);
   // The whole default framebuffer: cleared to a backdrop, then the menu (an operator window).
   void drawWindow(const UiDrawData& data, glm::ivec2 framebufferSize);
 

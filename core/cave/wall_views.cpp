@@ -48,6 +48,14 @@ std::vector<View> wallViews(const WallSpec& wall, const Viewer& viewer, float as
   return views;
 }
 
+std::vector<glm::ivec4> eyeViewports(StereoMode mode, glm::ivec2 size) {
+  if (mode == StereoMode::SideBySide)
+    return {{0, 0, size.x / 2, size.y}, {size.x / 2, 0, size.x / 2, size.y}};
+  if (mode == StereoMode::TopBottom)
+    return {{0, size.y / 2, size.x, size.y / 2}, {0, 0, size.x, size.y / 2}};
+  return {{0, 0, size.x, size.y}};
+}
+
 WorldRay wallClickRay(const WallSpec& wall, const Viewer& viewer, glm::vec2 at, float aspect,
                       float nearPlane, float farPlane) {
   const std::vector<View> views = wallViews(wall, viewer, aspect, nearPlane, farPlane);

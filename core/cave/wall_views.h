@@ -18,6 +18,13 @@ std::vector<View> wallViews(const WallSpec& wall, const Viewer& viewer, float as
 // Whether a wall draws both eyes (the one-eye modes draw one view).
 bool isStereo(StereoMode mode);
 
+// Where each eye's view lies in a wall's image of `size` pixels, as (x, y,
+// width, height) with y up (GL's viewport): left then right, the halves of a
+// side-by-side (left eye on the left) or top-bottom (left eye on top) image;
+// the whole image for the other modes (quad-buffered stereo has an image an
+// eye, anaglyph mixes both in one).
+std::vector<glm::ivec4> eyeViewports(StereoMode mode, glm::ivec2 size);
+
 // The ray (world coordinates) through a point of a wall's image, `at` in
 // [0, 1]^2 of the whole image with y down, from the eye of the view drawn
 // there (side-by-side: left eye on the left half; top-bottom: on the top).

@@ -189,3 +189,23 @@ TEST(WallClickRay, PassesThroughTheClickedPointOfTheWall) {
 
 }  // namespace
 }  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+// Each eye's part of a wall's image (GL viewports, y up): the halves of a
+// side-by-side image (left eye on the left) and a top-bottom one (left eye on
+// top); the whole image otherwise.
+TEST(EyeViewports, SplitImagesHaveAHalfAnEye) {
+  using V = std::vector<glm::ivec4>;
+  EXPECT_EQ(eyeViewports(StereoMode::SideBySide, {1920, 1080}),
+            (V{{0, 0, 960, 1080}, {960, 0, 960, 1080}}));
+  EXPECT_EQ(eyeViewports(StereoMode::TopBottom, {1920, 1080}),
+            (V{{0, 540, 1920, 540}, {0, 0, 1920, 540}}));
+  for (StereoMode m : {StereoMode::Mono, StereoMode::QuadBuffer, StereoMode::Anaglyph,
+                       StereoMode::LeftEye, StereoMode::RightEye})
+    EXPECT_EQ(eyeViewports(m, {640, 480}), (V{{0, 0, 640, 480}}));
+}
+
+}  // namespace
+}  // namespace sandstorm
