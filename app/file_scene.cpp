@@ -53,7 +53,7 @@ void placeFlowTools(ParticleState& state, const VectorField& field) {
   // Within the attributes' ranges (core/sim/attribute_table.cpp).
   rake.step = std::clamp(0.2f * cell, 1e-3f, 10.0f);
   rake.length = std::clamp(diagonal, rake.step, 1e5f);
-  rake.width = std::clamp(0.003f * diagonal, 0.0f, 1.0f);
+  rake.width = std::clamp(0.003f * diagonal, 0.0f, 1000.0f);
 
   state.slice.origin = centre;
   state.probe.position = centre;
@@ -106,6 +106,10 @@ void openFileScene(AppConfig& config, const std::filesystem::path& file, const s
   const glm::vec3 size = box.max - box.min, centre = 0.5f * (box.min + box.max);
   const float radius = 0.5f * glm::length(size);
   config.scene.groundHeight = box.min.z;  // the ground under the field, not through it
+  // The flat ground reaches well past the field, however large and far it is.
+  config.scene.terrainBounds =
+      Box{glm::vec3(centre.x - 20.0f * radius, centre.y - 20.0f * radius, 0.0f),
+          glm::vec3(centre.x + 20.0f * radius, centre.y + 20.0f * radius, 1.0f)};
 
   ParticleState& state = config.particles;
   state.emitters = {seedingPlane(field, state.sim.maximum)};
@@ -122,6 +126,7 @@ void openFileScene(AppConfig& config, const std::filesystem::path& file, const s
   state.render.opacityDeath = 0.3f;
 
   bool roomWalls = false;
+  float cameraNear = 0.0f;  // the camera walls' near plane: 0 without any
   for (WallSpec& wall : config.walls) {
     if (!wall.camera) {
       roomWalls = true;
@@ -133,9 +138,14 @@ void openFileScene(AppConfig& config, const std::filesystem::path& file, const s
     const float distance = radius / std::sin(0.5f * fov) * 1.05f;
     wall.camera->target = centre;
     wall.camera->position = centre + glm::normalize(glm::vec3(1.0f, -1.0f, 0.45f)) * distance;
-    config.run.nearPlane = std::min(config.run.nearPlane, 0.01f * distance);
+    cameraNear = 0.01f * distance;
     config.run.farPlane = std::max(config.run.farPlane, 4.0f * (distance + radius));
   }
+  // A hundredth of the camera's distance, so that depth keeps its precision
+  // for a field kilometres wide as for one millimetres wide (a CAVE's walls
+  // keep theirs: the room is metres whatever the field).
+  if (cameraNear > 0.0f)
+    config.run.nearPlane = roomWalls ? std::min(config.run.nearPlane, cameraNear) : cameraNear;
   float scale = 1.0f;
   if (roomWalls) {
     // Into the room: the field's largest side 2.4 m, its centre 1.5 m up in the middle.
@@ -144,7 +154,7 @@ void openFileScene(AppConfig& config, const std::filesystem::path& file, const s
     config.navigation.yawDegrees = 0.0f;
     config.navigation.offset = glm::vec3(0.0f, 0.0f, 1.5f) - scale * centre;
   }
-  state.render.size = std::max(0.004f * 2.0f * radius, 1e-4f);
+  state.render.size = std::clamp(0.004f * 2.0f * radius, 1e-4f, 1000.0f);
   placeFlowTools(state, field);
   log::info("file scene: ", file.string(), " over [", box.min.x, ",", box.min.y, ",", box.min.z,
             "]..[", box.max.x, ",", box.max.y, ",", box.max.z, "] m; seeding ",

@@ -152,8 +152,14 @@ FieldSpec fieldSpecFor(const std::string& choice, const FieldSpec& base) {
 
 std::shared_ptr<const HeightMap> makeTerrain(const SceneSpec& spec,
                                              const std::filesystem::path& baseDir) {
-  if (spec.terrain == "flat")
-    return std::make_shared<HeightMap>(HeightMap::flat(spec.groundHeight));
+  if (spec.terrain == "flat") {
+    // 10 km each way from the origin, or as far as terrain_min..terrain_max
+    // reach (a field kilometres wide, away from the origin).
+    const glm::vec3 far =
+        glm::max(glm::abs(spec.terrainBounds.min), glm::abs(spec.terrainBounds.max));
+    return std::make_shared<HeightMap>(
+        HeightMap::flat(spec.groundHeight, std::max({1e4f, far.x, far.y})));
+  }
   if (!spec.terrain.ends_with(".pgm"))
     throw Error(concat("scene.terrain '", spec.terrain,
                        "': expected \"flat\" or a 16-bit height map (.pgm)"));

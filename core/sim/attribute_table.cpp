@@ -192,7 +192,9 @@ std::vector<AttributeInfo> makeEntries() {
                 "Draw particles as points, lit spherical billboards, splats (billboards' look, "
                 "by compute: for small particles) or auto (splats where particles are small)",
                 RENDER(mode)));
-  v.push_back(entry("render.size", T::Float, 1e-4f, 10, "m", "Particle diameter", RENDER(size)));
+  // From a micro-scale flow's to an atmospheric field's (the file scene sizes
+  // them to the field: 0.4% of its diagonal).
+  v.push_back(entry("render.size", T::Float, 1e-4f, 1000, "m", "Particle diameter", RENDER(size)));
   v.push_back(
       entry("render.color_birth", T::Vec3, 0, 1, "rgb", "Colour at birth", RENDER(colorBirth)));
   v.push_back(entry("render.color_death", T::Vec3, 0, 1, "rgb", "Colour at the end of life",
@@ -340,8 +342,9 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("streamlines.length", T::Float, 0, 1e5f, "m",
                     "Longest streamline each way from its seed (at most 4096 steps)",
                     STREAMLINES(length)));
-  v.push_back(entry("streamlines.width", T::Float, 0, 1, "m", "Ribbon width (0: one-pixel lines)",
-                    STREAMLINES(width)));
+  // Up to a kilometre: an atmospheric field's ribbons are tens of metres wide.
+  v.push_back(entry("streamlines.width", T::Float, 0, 1000, "m",
+                    "Ribbon width (0: one-pixel lines)", STREAMLINES(width)));
   // A slice plane through the field, coloured like the particles.
   v.push_back(entry("slice.enabled", T::Bool, 0, 1, "",
                     "Draw a slice plane through the field, coloured by render.color_by",

@@ -90,6 +90,28 @@ TEST(FileScene, TheRakeTheSliceAndTheProbeArePlacedInTheField) {
   EXPECT_EQ(s.probe.position, glm::vec3(104, 52, 11));
 }
 
+// A field 22 km wide, away from the origin, on a desktop camera: the near
+// plane a hundredth of the camera's distance (depth keeps its precision), the
+// flat ground reaching past the field, the ribbons and particles sized to it.
+TEST(FileScene, AFieldKilometresWideKeepsDepthPrecisionAndItsGround) {
+  const VectorField f =
+      bake(Uniform({10.0f, 0.0f, 0.0f}), Box{{0, 0, 0}, {22000, 18000, 2500}}, {12, 10, 6});
+  AppConfig config;
+  config.walls.push_back(WallSpec{.name = "desktop", .camera = CameraSpec{}});
+  openFileScene(config, "atmos.vti", "", f);
+  const glm::vec3 eye = config.walls[0].camera->position, target = config.walls[0].camera->target;
+  EXPECT_NEAR(config.run.nearPlane, 0.01f * glm::length(eye - target), 1.0f);
+  EXPECT_GT(config.run.farPlane / config.run.nearPlane, 100.0f);
+  EXPECT_LT(config.run.farPlane / config.run.nearPlane, 1e4f);
+  EXPECT_LE(config.scene.terrainBounds.min.x, 0.0f);
+  EXPECT_GE(config.scene.terrainBounds.max.x, 22000.0f);
+  EXPECT_GE(config.scene.terrainBounds.max.y, 18000.0f);
+  const float diagonal = glm::length(glm::vec3(22000, 18000, 2500));
+  EXPECT_NEAR(config.particles.streamlines.width, 0.003f * diagonal, 0.01f);
+  EXPECT_NEAR(config.particles.render.size, 0.004f * diagonal, 0.01f);
+  EXPECT_FLOAT_EQ(config.particles.streamlines.step, 10.0f);  // the attribute's most
+}
+
 TEST(FileScene, AFileWithSeveralArraysAsksWhichAndOpensTheOneNamed) {
   const auto dir = test::scratchDir("file-scene");
   const std::string file = twoArrays(dir).string();
