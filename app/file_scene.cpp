@@ -51,13 +51,13 @@ void placeFlowTools(ParticleState& state, const VectorField& field) {
   rake.to = box.max;
   rake.across = glm::vec3(box.min.x, box.min.y, box.max.z);
   // Within the attributes' ranges (core/sim/attribute_table.cpp).
-  rake.step = std::clamp(0.2f * cell, 1e-3f, 10.0f);
+  rake.step = std::clamp(0.2f * cell, 1e-7f, 10.0f);
   rake.length = std::clamp(diagonal, rake.step, 1e5f);
   rake.width = std::clamp(0.003f * diagonal, 0.0f, 1000.0f);
 
   state.slice.origin = centre;
   state.probe.position = centre;
-  state.probe.radius = std::clamp(0.02f * diagonal, 1e-3f, 100.0f);
+  state.probe.radius = std::clamp(0.02f * diagonal, 1e-7f, 100.0f);
 }
 
 }  // namespace
@@ -154,7 +154,10 @@ void openFileScene(AppConfig& config, const std::filesystem::path& file, const s
     config.navigation.yawDegrees = 0.0f;
     config.navigation.offset = glm::vec3(0.0f, 0.0f, 1.5f) - scale * centre;
   }
-  state.render.size = std::clamp(0.004f * 2.0f * radius, 1e-4f, 1000.0f);
+  state.render.size = std::clamp(0.004f * 2.0f * radius, 1e-7f, 1000.0f);
+  // Particles fade within this of the ground: a hundredth of the field, not
+  // the tornado scene's 0.3 m (all of a millimetre-wide field's would fade).
+  state.render.softness = std::clamp(0.01f * 2.0f * radius, 0.0f, 10.0f);
   placeFlowTools(state, field);
   log::info("file scene: ", file.string(), " over [", box.min.x, ",", box.min.y, ",", box.min.z,
             "]..[", box.max.x, ",", box.max.y, ",", box.max.z, "] m; seeding ",

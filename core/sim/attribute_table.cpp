@@ -192,9 +192,9 @@ std::vector<AttributeInfo> makeEntries() {
                 "Draw particles as points, lit spherical billboards, splats (billboards' look, "
                 "by compute: for small particles) or auto (splats where particles are small)",
                 RENDER(mode)));
-  // From a micro-scale flow's to an atmospheric field's (the file scene sizes
-  // them to the field: 0.4% of its diagonal).
-  v.push_back(entry("render.size", T::Float, 1e-4f, 1000, "m", "Particle diameter", RENDER(size)));
+  // From a micro-channel's flow (0.1 um) to an atmospheric field's (the file
+  // scene sizes them to the field: 0.4% of its diagonal).
+  v.push_back(entry("render.size", T::Float, 1e-7f, 1000, "m", "Particle diameter", RENDER(size)));
   v.push_back(
       entry("render.color_birth", T::Vec3, 0, 1, "rgb", "Colour at birth", RENDER(colorBirth)));
   v.push_back(entry("render.color_death", T::Vec3, 0, 1, "rgb", "Colour at the end of life",
@@ -337,7 +337,7 @@ std::vector<AttributeInfo> makeEntries() {
                     "A plane rake's second edge ends here", STREAMLINES(across)));
   v.push_back(entry("streamlines.seeds", T::Int, 1, 64, "", "Seeds along each edge of the rake",
                     STREAMLINES(seeds)));
-  v.push_back(entry("streamlines.step", T::Float, 1e-3f, 10, "m", "Integration step (arc length)",
+  v.push_back(entry("streamlines.step", T::Float, 1e-7f, 10, "m", "Integration step (arc length)",
                     STREAMLINES(step)));
   v.push_back(entry("streamlines.length", T::Float, 0, 1e5f, "m",
                     "Longest streamline each way from its seed (at most 4096 steps)",
@@ -366,7 +366,7 @@ std::vector<AttributeInfo> makeEntries() {
   v.push_back(entry("probe.position", T::Vec3, -kBig, kBig, "m",
                     "The probe without a tracked wand (the particles' coordinates)",
                     PROBE(position)));
-  v.push_back(entry("probe.radius", T::Float, 1e-3f, 100, "m",
+  v.push_back(entry("probe.radius", T::Float, 1e-7f, 100, "m",
                     "Particles within this distance of the probe are counted", PROBE(radius)));
   v.push_back(entry("probe.reach", T::Float, 0, 100, "m",
                     "With a wand and no slice: the probe is this far (room) along its ray",

@@ -7,6 +7,7 @@
 
 #include "app/file_scene.h"
 #include "core/field/analytic_field.h"
+#include "core/sim/attribute_table.h"
 #include "tests/app/run_process.h"
 
 namespace sandstorm {
@@ -110,6 +111,28 @@ TEST(FileScene, AFieldKilometresWideKeepsDepthPrecisionAndItsGround) {
   EXPECT_NEAR(config.particles.streamlines.width, 0.003f * diagonal, 0.01f);
   EXPECT_NEAR(config.particles.render.size, 0.004f * diagonal, 0.01f);
   EXPECT_FLOAT_EQ(config.particles.streamlines.step, 10.0f);  // the attribute's most
+}
+
+// A micro-channel a millimetre long, cells of 50 um: particles, steps, the
+// probe and the fade at the ground scale down with it.
+TEST(FileScene, AFieldAMillimetreLongGetsItsScale) {
+  const VectorField f =
+      bake(Uniform({1e-3f, 0.0f, 0.0f}), Box{{0, 0, 0}, {1e-3f, 5e-4f, 5e-4f}}, {21, 11, 11});
+  AppConfig config;
+  openFileScene(config, "micro.vti", "", f);
+  const ParticleState& s = config.particles;
+  const float diagonal = glm::length(glm::vec3(1e-3f, 5e-4f, 5e-4f));
+  EXPECT_NEAR(s.render.size, 0.004f * diagonal, 1e-9f);
+  EXPECT_NEAR(s.render.softness, 0.01f * diagonal, 1e-9f);
+  EXPECT_NEAR(s.streamlines.step, 0.2f * 5e-5f, 1e-10f);
+  EXPECT_NEAR(s.probe.radius, 0.02f * diagonal, 1e-9f);
+  // Each within its attribute's range (as a menu or a session would set it).
+  ParticleState copy = s;
+  for (const char* key : {"render.size", "render.softness", "streamlines.step", "probe.radius"})
+    EXPECT_TRUE(AttributeTable::instance()
+                    .set(copy, key, AttributeTable::instance().get(s, key))
+                    .warning.empty())
+        << key;
 }
 
 TEST(FileScene, AFileWithSeveralArraysAsksWhichAndOpensTheOneNamed) {
