@@ -358,6 +358,14 @@ TEST(VtkFormats, OurVtiReadsBackThroughVtkUnchanged) {
     EXPECT_EQ(g.values()[i], f.values()[i]);
 }
 
+// Writes image data as VTK XML (.vti) with VTK's own writer; false on failure.
+bool writeWithVtk(vtkImageData* image, const std::filesystem::path& path) {
+  vtkNew<vtkXMLImageDataWriter> w;
+  w->SetInputData(image);
+  w->SetFileName(path.c_str());
+  return w->Write() == 1;
+}
+
 // 3x3x3 image data with addArrays' arrays and a second vector array, "wind" (2, 2, 2).
 vtkSmartPointer<vtkImageData> imageWithWind() {
   auto image = vtkSmartPointer<vtkImageData>::New();
@@ -383,10 +391,7 @@ TEST(VtkFormats, ArraysAreChosenByNameAndListedWhenWrong) {
   image->GetCellData()->AddArray(cellVel);
   image->GetPointData()->SetActiveVectors(nullptr);
   const auto path = dir / "arrays.vti";
-  vtkNew<vtkXMLImageDataWriter> w;
-  w->SetInputData(image);
-  w->SetFileName(path.c_str());
-  ASSERT_EQ(w->Write(), 1);
+  ASSERT_TRUE(writeWithVtk(image, path));
 
   test::expectError([&] { loadField(path); },
                     {path.string(), "several vector arrays", "'velocity' (3 components)",
@@ -430,10 +435,7 @@ TEST(VtkFormats, SeveralVectorArraysAreAskedForUnlessOneIsMarkedActive) {
 
   vtkSmartPointer<vtkImageData> image = imageWithWind();  // "velocity" active, "wind"
   const auto xml = dir / "marked.vti";
-  vtkNew<vtkXMLImageDataWriter> w;
-  w->SetInputData(image);
-  w->SetFileName(xml.c_str());
-  ASSERT_EQ(w->Write(), 1);
+  ASSERT_TRUE(writeWithVtk(image, xml));
   LoadReport report;
   loadField(xml, {}, &report);
   EXPECT_EQ(report.arrayName, "velocity");
@@ -454,10 +456,7 @@ TEST(VtkFormats, NonFiniteVectorsBecomeZeroAndAreCounted) {
   v->SetTuple3(7, 1, inf, 0);
   v->SetTuple3(20, 0, 0, -inf);
   const auto path = dir / "nan.vti";
-  vtkNew<vtkXMLImageDataWriter> w;
-  w->SetInputData(image);
-  w->SetFileName(path.c_str());
-  ASSERT_EQ(w->Write(), 1);
+  ASSERT_TRUE(writeWithVtk(image, path));
   LoadReport report;
   const VectorField f = loadField(path, {}, &report);
   EXPECT_EQ(report.nonFinite, 3u);
