@@ -327,6 +327,16 @@ void AppRun::openLegend() {
   }
 }
 
+// What colours this wall's lines at this frame, for the exported polylines.
+// The wall's field outlives the call (the wall holds it until its next frame).
+LineColoring AppRun::lineColoring(const WallRenderer& wall, const FramePacket& packet) {
+  const ParticleState& state = wall.particles().state();
+  return {.quantity = state.render.colorBy,
+          .field = wall.particles().field().get(),
+          .blend = packet.fieldBlend,
+          .strength = state.sim.fieldStrength};
+}
+
 // The streamlines this wall draws, traced on the CPU (their twin) from its
 // replica of the state and field at this frame.
 void AppRun::dumpStreamlines(const WallRenderer& wall, const FramePacket& packet) {
@@ -341,12 +351,9 @@ void AppRun::dumpStreamlines(const WallRenderer& wall, const FramePacket& packet
   in.obstacles = collisionShapes(state, terrain_.get());
   StreamlineSettings rake = state.streamlines;
   const std::vector<Streamline> lines = traceStreamlines(rake, in);
-  const LineColoring coloring{.quantity = state.render.colorBy,
-                              .field = field.get(),
-                              .blend = packet.fieldBlend,
-                              .strength = state.sim.fieldStrength};
   std::vector<PointArray> extra;
-  if (auto a = streamlineColorArray(lines, coloring)) extra.push_back(std::move(*a));
+  if (auto a = streamlineColorArray(lines, lineColoring(wall, packet)))
+    extra.push_back(std::move(*a));
   writeStreamlinesVtp(lines, state.render.colorBy, *options_.dumpStreamlines, "--dump-streamlines",
                       extra);
   log::info("wrote ", lines.size(), " streamlines to ", options_.dumpStreamlines->string(),
@@ -369,16 +376,12 @@ void AppRun::dumpTrails(const WallRenderer& wall, const FramePacket& packet) {
     owners.push_back(i);
   }
   const ParticleState& state = wall.particles().state();
-  const auto field = wall.particles().field();
-  const LineColoring coloring{.quantity = state.render.colorBy,
-                              .field = field.get(),
-                              .blend = packet.fieldBlend,
-                              .strength = state.sim.fieldStrength};
   std::vector<PointArray> extra;
-  if (auto a = trailColorArray(lines, owners, particles, coloring)) extra.push_back(std::move(*a));
+  if (auto a = trailColorArray(lines, owners, particles, lineColoring(wall, packet)))
+    extra.push_back(std::move(*a));
   writeStreamlinesVtp(lines, state.render.colorBy, *options_.dumpTrails, "--dump-trails", extra);
   log::info("wrote ", lines.size(), " trails to ", options_.dumpTrails->string(),
-            wall.particles().state().render.trailLength > 0 ? "" : " (render.trail_length is 0)");
+            state.render.trailLength > 0 ? "" : " (render.trail_length is 0)");
 }
 
 void AppRun::hookWalls() {

@@ -29,6 +29,7 @@
 #include "contexts/platform/glfw_window.h"
 #include "contexts/render/render_context.h"
 #include "core/cave/viewer.h"
+#include "core/flow/polyline_color.h"
 #include "core/sim/frame_channel.h"
 #include "core/sim/main_context.h"
 #include "core/sim/session_log.h"
@@ -54,6 +55,7 @@ class AppRun {
   void openLegend();
   void dumpStreamlines(const WallRenderer& wall, const FramePacket& packet);
   void dumpTrails(const WallRenderer& wall, const FramePacket& packet);
+  static LineColoring lineColoring(const WallRenderer& wall, const FramePacket& packet);
   void hookWalls();
   void runOneProcess();
   void runCluster();

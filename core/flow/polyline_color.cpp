@@ -5,10 +5,6 @@
 namespace sandstorm {
 namespace {
 
-bool fromGrid(ColorQuantity q) {
-  return q == ColorQuantity::Vorticity || q == ColorQuantity::Array;
-}
-
 // The array's name in the file: the quantity's, or the field file's array's;
 // one the writer already uses gets " (array)" so that neither hides the other.
 std::string arrayName(const LineColoring& c) {
@@ -34,7 +30,7 @@ float colorGridAt(const LineColoring& c, const glm::vec3& point) {
 
 std::optional<PointArray> streamlineColorArray(std::span<const Streamline> lines,
                                                const LineColoring& c) {
-  if (!fromGrid(c.quantity) || !c.field || !c.field->colorGrid) return std::nullopt;
+  if (!usesColorGrid(c.quantity) || !c.field || !c.field->colorGrid) return std::nullopt;
   PointArray out{arrayName(c), {}};
   for (const Streamline& l : lines)
     for (const StreamlinePoint& p : l.points)
@@ -47,7 +43,7 @@ std::optional<PointArray> trailColorArray(std::span<const Streamline> lines,
                                           std::span<const Particle> particles,
                                           const LineColoring& c) {
   const bool age = c.quantity == ColorQuantity::Age;
-  if (!age && !(fromGrid(c.quantity) && c.field && c.field->colorGrid)) return std::nullopt;
+  if (!age && !(usesColorGrid(c.quantity) && c.field && c.field->colorGrid)) return std::nullopt;
   PointArray out{arrayName(c), {}};
   for (std::size_t i = 0; i < lines.size() && i < owners.size(); ++i) {
     const Particle& p = particles[owners[i]];
