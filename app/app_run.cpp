@@ -284,7 +284,7 @@ void AppRun::openMenu() {
   if (options_.menuScript) script = MenuScript::load(*options_.menuScript);
   menu_ = std::make_unique<MenuHost>(
       main_, std::move(console), wallWindow, wall.window ? wall.window->size : wall.offscreenSize,
-      fieldChoices(projectRoot_ / "data", projectRoot_),
+      wall.stereo, fieldChoices(projectRoot_ / "data", projectRoot_),
       [this](const std::string& choice) {
         loadField(choice);
         if (recorder_) recorder_->recordField(main_.nextFrame(), choice);
@@ -321,8 +321,7 @@ void AppRun::openLegend() {
     const glm::ivec2 image = spec.window ? spec.window->size : spec.offscreenSize;
     const glm::ivec4 eye = eyeViewports(spec.stereo, image).front();
     legend_ = std::make_unique<LegendHost>(glm::ivec2(eye.z, eye.w));
-    wall->addOverlay([this] { return legend_->latest(); }, legend_->font(),
-                     RenderWall::OverlayFit::EachEye);
+    wall->addOverlay([this] { return legend_->latest(); }, legend_->font());
     return;
   }
 }

@@ -5,14 +5,18 @@
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 
+#include <cfloat>
 #include <cstring>
+
+#include "core/cave/wall_views.h"
 
 namespace sandstorm {
 
 static_assert(sizeof(ImDrawIdx) == 2, "UiDrawData carries 16-bit indices");
 static_assert(sizeof(ImDrawVert) == sizeof(UiVertex), "UiVertex mirrors ImDrawVert");
 
-ImGuiSession::ImGuiSession(GLFWwindow* window, glm::ivec2 size) : window_(window), size_(size) {
+ImGuiSession::ImGuiSession(GLFWwindow* window, glm::ivec2 size, StereoMode eyes)
+    : window_(window), size_(size), eyes_(eyes) {
   IMGUI_CHECKVERSION();
   // Another session's context (the menu's) stays current between frames: its
   // GLFW callbacks use whichever context is current when events arrive.
@@ -46,7 +50,14 @@ void ImGuiSession::begin(float dt) {
   ImGui::SetCurrentContext(context_);
   ImGuiIO& io = ImGui::GetIO();
   if (window_) {
-    ImGui_ImplGlfw_NewFrame();
+    ImGui_ImplGlfw_NewFrame();  // the window's size, and its mouse polled (imgui 1.86)
+    const glm::vec2 window(io.DisplaySize.x, io.DisplaySize.y);
+    const glm::vec2 eye = eyeImageSize(eyes_, window);
+    io.DisplaySize = ImVec2(eye.x, eye.y);
+    if (io.MousePos.x > -FLT_MAX && io.MousePos.y > -FLT_MAX) {  // not "no mouse"
+      const glm::vec2 at = pointInEyeImage(eyes_, window, {io.MousePos.x, io.MousePos.y});
+      io.MousePos = ImVec2(at.x, at.y);
+    }
   } else {
     io.DisplaySize = ImVec2(float(size_.x), float(size_.y));
   }

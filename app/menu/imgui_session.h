@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include "contexts/ui/ui_draw_data.h"
+#include "core/config/app_config.h"
 
 struct GLFWwindow;
 struct ImGuiContext;
@@ -18,7 +19,10 @@ namespace sandstorm {
 class ImGuiSession {
  public:
   // `window` may be null: then the display is `size` pixels and input is injected.
-  ImGuiSession(GLFWwindow* window, glm::ivec2 size);
+  // `eyes`: the window shows a stereo layout with an image an eye (side by
+  // side, top-bottom); the menu is laid out for one eye's image, drawn into
+  // each, and the mouse over either half points into it.
+  ImGuiSession(GLFWwindow* window, glm::ivec2 size, StereoMode eyes = StereoMode::Mono);
   ~ImGuiSession();
   ImGuiSession(const ImGuiSession&) = delete;
   ImGuiSession& operator=(const ImGuiSession&) = delete;
@@ -39,6 +43,7 @@ class ImGuiSession {
   ImGuiContext* previous_ = nullptr;  // current before begin(); current again after end()
   GLFWwindow* window_;
   glm::ivec2 size_;
+  StereoMode eyes_;
   UiFont font_;
   bool injected_ = false;
   glm::vec2 mouse_{0.0f};

@@ -1,13 +1,18 @@
 #include "app/menu/menu_host.h"
 
+#include "core/cave/wall_views.h"
+
 namespace sandstorm {
 
 MenuHost::MenuHost(MainContext& main, std::unique_ptr<GlfwWindow> operatorWindow,
-                   GLFWwindow* wallWindow, glm::ivec2 wallSize,
+                   GLFWwindow* wallWindow, glm::ivec2 wallSize, StereoMode wallStereo,
                    std::vector<std::string> fieldChoices, MenuPanel::FieldLoader loader,
                    MenuPanel::FieldWriter writer, std::optional<MenuScript> script)
     : operatorWindow_(std::move(operatorWindow)),
-      session_(operatorWindow_ ? operatorWindow_->handle() : wallWindow, wallSize),
+      session_(
+          operatorWindow_ ? operatorWindow_->handle() : wallWindow,
+          operatorWindow_ ? wallSize : glm::ivec2(eyeImageSize(wallStereo, glm::vec2(wallSize))),
+          operatorWindow_ ? StereoMode::Mono : wallStereo),
       panel_(main, std::move(fieldChoices), std::move(loader), std::move(writer)),
       script_(std::move(script)) {
   if (operatorWindow_) {

@@ -18,9 +18,12 @@ namespace sandstorm {
 class MenuHost {
  public:
   // With `operatorWindow` the menu is drawn there; otherwise over a wall, whose
-  // window (`wallWindow`, may be null when offscreen) gives the input.
+  // window (`wallWindow`, may be null when offscreen) gives the input. On a
+  // wall with an image an eye (`wallStereo` side by side or top-bottom) it is
+  // laid out for one eye's image, to be drawn into each (a menu in one eye
+  // only cannot be read), and the wand's and the mouse's pixels are that image's.
   MenuHost(MainContext& main, std::unique_ptr<GlfwWindow> operatorWindow, GLFWwindow* wallWindow,
-           glm::ivec2 wallSize, std::vector<std::string> fieldChoices,
+           glm::ivec2 wallSize, StereoMode wallStereo, std::vector<std::string> fieldChoices,
            MenuPanel::FieldLoader loader, MenuPanel::FieldWriter writer,
            std::optional<MenuScript> script);
   ~MenuHost();

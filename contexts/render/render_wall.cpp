@@ -45,9 +45,9 @@ void RenderWall::open() {
 RenderWall::Drawn RenderWall::draw(const FramePacket& packet, glm::ivec2 framebufferSize) {
   const auto start = std::chrono::steady_clock::now();
   renderer_->frame(packet, framebufferSize);
-  for (const Overlay& overlay : overlays_)
-    if (const std::shared_ptr<const UiDrawData> data = overlay.source())
-      renderer_->drawOverlay(*data, font_, overlay.fit == OverlayFit::EachEye);
+  for (const OverlaySource& overlay : overlays_)
+    if (const std::shared_ptr<const UiDrawData> data = overlay())
+      renderer_->drawOverlay(*data, font_);
   if (hook_) hook_(*renderer_, packet);
   renderer_->endFrame();
   Drawn d;

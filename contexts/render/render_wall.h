@@ -52,9 +52,6 @@ class RenderWall {
   using FrameHook = std::function<void(WallRenderer&, const FramePacket&)>;
   // What to draw over this wall each frame, the menu or the legend (latest wins); null: nothing.
   using OverlaySource = std::function<std::shared_ptr<const UiDrawData>()>;
-  // Whether an overlay is laid out for the whole image (the menu, which takes
-  // the mouse there) or for one eye's and drawn into each (the legend).
-  enum class OverlayFit { WholeImage, EachEye };
 
   // `consumer`: this wall's place in the FrameChannel.
   RenderWall(WallRendererSetup setup, int consumer);
@@ -64,10 +61,12 @@ class RenderWall {
 
   // Before the drawing thread starts.
   void setFrameHook(FrameHook hook) { hook_ = std::move(hook); }
-  // Overlays are drawn in the order added (the menu, then the legend); they
-  // share one font atlas (Dear ImGui's default), the first one's.
-  void addOverlay(OverlaySource source, UiFont font, OverlayFit fit = OverlayFit::WholeImage) {
-    overlays_.push_back({std::move(source), fit});
+  // Overlays are drawn in the order added (the menu, then the legend), each
+  // laid out for one eye's image and drawn into each eye's (a stereo wall
+  // shows it to both eyes, on the wall's plane); they share one font atlas
+  // (Dear ImGui's default), the first one's.
+  void addOverlay(OverlaySource source, UiFont font) {
+    overlays_.push_back(std::move(source));
     if (font_.rgba.empty()) font_ = std::move(font);
   }
   // Every frame from `warmup` on (after the thread ends: the whole run); past
@@ -103,11 +102,7 @@ class RenderWall {
   WallRendererSetup setup_;
   int consumer_;
   FrameHook hook_;
-  struct Overlay {
-    OverlaySource source;
-    OverlayFit fit;
-  };
-  std::vector<Overlay> overlays_;
+  std::vector<OverlaySource> overlays_;
   UiFont font_;
   std::unique_ptr<WallRenderer> renderer_;  // on the drawing thread only
   mutable std::mutex mutex_;

@@ -111,16 +111,12 @@ void WallRenderer::measure(std::uint32_t frame, std::optional<glm::vec3> probe) 
       probe ? std::optional<glm::vec4>(glm::vec4(*probe, state.probe.radius)) : std::nullopt);
 }
 
-void WallRenderer::drawOverlay(const UiDrawData& menu, const UiFont& font, bool perEye) {
+void WallRenderer::drawOverlay(const UiDrawData& overlay, const UiFont& font) {
   if (!ui_) ui_ = std::make_unique<UiRenderer>(font);
   glBindFramebuffer(GL_FRAMEBUFFER, drewOffscreen_ ? offscreen_.framebuffer() : 0);
-  if (perEye) {
-    // The same place in each eye's image: no disparity, on the wall's plane.
-    for (const glm::ivec4& viewport : eyeViewports(wall_.stereo, lastSize_))
-      ui_->draw(menu, viewport);
-  } else {
-    ui_->draw(menu, lastSize_);
-  }
+  // The same place in each eye's image: no disparity, on the wall's plane.
+  for (const glm::ivec4& viewport : eyeViewports(wall_.stereo, lastSize_))
+    ui_->draw(overlay, viewport);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 

@@ -43,10 +43,10 @@ class WallRenderer {
   void frame(const FramePacket& packet, glm::ivec2 windowSize);
   // The frame is done with the particles (after captures and hash probes).
   void endFrame() { system_.endFrame(); }
-  // Draws the menu over the wall's last frame (the wall that shows the menu).
-  // `perEye`: laid out for one eye's image (the legend), drawn into each
-  // (eyeViewports), so that a stereo wall shows it to both eyes.
-  void drawOverlay(const UiDrawData& menu, const UiFont& font, bool perEye = false);
+  // Draws an overlay (the menu, the legend) over the wall's last frame: laid
+  // out for one eye's image and drawn into each (eyeViewports), so that a
+  // stereo wall shows it to both eyes at the same place, on the wall's plane.
+  void drawOverlay(const UiDrawData& overlay, const UiFont& font);
   // The image last drawn (offscreen) or the back buffer (window).
   Image capture() const;
 

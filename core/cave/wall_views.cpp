@@ -56,6 +56,20 @@ std::vector<glm::ivec4> eyeViewports(StereoMode mode, glm::ivec2 size) {
   return {{0, 0, size.x, size.y}};
 }
 
+glm::vec2 eyeImageSize(StereoMode mode, glm::vec2 imageSize) {
+  if (mode == StereoMode::SideBySide) return {imageSize.x * 0.5f, imageSize.y};
+  if (mode == StereoMode::TopBottom) return {imageSize.x, imageSize.y * 0.5f};
+  return imageSize;
+}
+
+glm::vec2 pointInEyeImage(StereoMode mode, glm::vec2 imageSize, glm::vec2 point) {
+  const glm::vec2 eye = eyeImageSize(mode, imageSize);
+  // The second eye's half starts where the first one's ends.
+  if (mode == StereoMode::SideBySide && point.x >= eye.x) point.x -= eye.x;
+  if (mode == StereoMode::TopBottom && point.y >= eye.y) point.y -= eye.y;
+  return point;
+}
+
 WorldRay wallClickRay(const WallSpec& wall, const Viewer& viewer, glm::vec2 at, float aspect,
                       float nearPlane, float farPlane) {
   const std::vector<View> views = wallViews(wall, viewer, aspect, nearPlane, farPlane);

@@ -25,6 +25,13 @@ bool isStereo(StereoMode mode);
 // eye, anaglyph mixes both in one).
 std::vector<glm::ivec4> eyeViewports(StereoMode mode, glm::ivec2 size);
 
+// An overlay laid out for one eye's image and drawn into each (the menu, the
+// legend): the size of that image, and where a point of the whole image
+// (y down, e.g. the desktop mouse over a stereo window) falls in it, whichever
+// eye's half it is over. Both keep the whole image for the modes without halves.
+glm::vec2 eyeImageSize(StereoMode mode, glm::vec2 imageSize);
+glm::vec2 pointInEyeImage(StereoMode mode, glm::vec2 imageSize, glm::vec2 point);
+
 // The ray (world coordinates) through a point of a wall's image, `at` in
 // [0, 1]^2 of the whole image with y down, from the eye of the view drawn
 // there (side-by-side: left eye on the left half; top-bottom: on the top).

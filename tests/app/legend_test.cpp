@@ -44,48 +44,6 @@ TEST(Legend, TheMarkedWallShowsTheMapsColourBarInItsCornerAndNoOtherWallChanges)
   EXPECT_TRUE(start) << "no pixel of the bar's low end (viridis 0)";
   EXPECT_TRUE(end) << "no pixel of the bar's high end (viridis 1)";
 }
-
-// A stereo wall shows the legend to both eyes, at the same place in each
-// eye's image (no disparity: on the wall's plane), laid out for an eye's image.
-TEST(Legend, AStereoWallShowsItInEachEyesImageAtTheSamePlace) {
-  for (const char* wall : {"front", "left"}) {
-    const auto without = test::scratchDir("legend-stereo-off"),
-               with = test::scratchDir("legend-stereo-on");
-    std::string run = "--config tests/data/legend-stereo.toml --screenshot ";
-    // The legend on the side-by-side wall (front), then on the top-bottom one (left).
-    const std::string on = std::string(" --set render.legend=true") +
-                           (std::string(wall) == "left" ? " --walls left" : "");
-    const auto a =
-        runSandstorm(run + without.string() + (std::string(wall) == "left" ? " --walls left" : ""));
-    ASSERT_EQ(a.exitCode, 0) << a.output;
-    const auto b = runSandstorm(run + with.string() + on);
-    ASSERT_EQ(b.exitCode, 0) << b.output;
-    const Image plain = readPng(without / (std::string(wall) + ".png")),
-                legend = readPng(with / (std::string(wall) + ".png"));
-    ASSERT_EQ(plain.width, legend.width);
-    const bool sideBySide = std::string(wall) == "front";
-    const int w = sideBySide ? plain.width / 2 : plain.width,
-              h = sideBySide ? plain.height : plain.height / 2;
-    // Each eye's changed pixels, relative to its image's corner.
-    auto changes = [&](int x0, int y0) {
-      std::vector<glm::ivec2> out;
-      for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x)
-          if (plain.at(x0 + x, y0 + y) != legend.at(x0 + x, y0 + y)) out.push_back({x, y});
-      return out;
-    };
-    const auto first = changes(0, 0), second = sideBySide ? changes(w, 0) : changes(0, h);
-    EXPECT_GT(first.size(), 200u) << wall << ": no legend in the first eye's image";
-    EXPECT_EQ(first, second) << wall << ": the eyes see the legend at different places";
-    for (const glm::ivec2& p : first)
-      if (p.x < w / 5 || p.y < h / 2) {
-        ADD_FAILURE() << wall << ": a legend pixel at " << p.x << "," << p.y
-                      << " outside the eye image's lower right";
-        break;
-      }
-  }
-}
-
 }  // namespace
 }  // namespace sandstorm
 

@@ -207,5 +207,27 @@ TEST(EyeViewports, SplitImagesHaveAHalfAnEye) {
     EXPECT_EQ(eyeViewports(m, {640, 480}), (V{{0, 0, 640, 480}}));
 }
 
+// The menu is laid out for one eye's image and drawn into each: the mouse over
+// either copy points at the same widget.
+TEST(EyeViewports, APointOverEitherEyesHalfFindsTheSamePlaceInTheEyesImage) {
+  const glm::vec2 image(1920.0f, 1080.0f);
+  EXPECT_EQ(eyeImageSize(StereoMode::SideBySide, image), glm::vec2(960.0f, 1080.0f));
+  EXPECT_EQ(eyeImageSize(StereoMode::TopBottom, image), glm::vec2(1920.0f, 540.0f));
+  EXPECT_EQ(eyeImageSize(StereoMode::Anaglyph, image), image);
+  // Side by side: the left eye on the left half, the right eye on the right.
+  EXPECT_EQ(pointInEyeImage(StereoMode::SideBySide, image, {100.0f, 700.0f}),
+            glm::vec2(100.0f, 700.0f));
+  EXPECT_EQ(pointInEyeImage(StereoMode::SideBySide, image, {1060.0f, 700.0f}),
+            glm::vec2(100.0f, 700.0f));
+  EXPECT_EQ(pointInEyeImage(StereoMode::SideBySide, image, {960.0f, 0.0f}), glm::vec2(0.0f));
+  // Top-bottom, y down: the left eye on top.
+  EXPECT_EQ(pointInEyeImage(StereoMode::TopBottom, image, {1500.0f, 30.0f}),
+            glm::vec2(1500.0f, 30.0f));
+  EXPECT_EQ(pointInEyeImage(StereoMode::TopBottom, image, {1500.0f, 570.0f}),
+            glm::vec2(1500.0f, 30.0f));
+  for (StereoMode m : {StereoMode::Mono, StereoMode::QuadBuffer, StereoMode::Anaglyph})
+    EXPECT_EQ(pointInEyeImage(m, image, {1500.0f, 900.0f}), glm::vec2(1500.0f, 900.0f));
+}
+
 }  // namespace
 }  // namespace sandstorm
