@@ -26,6 +26,23 @@ constexpr std::array kInferno{hex(0x000004), hex(0x160b39), hex(0x420a68), hex(0
 constexpr std::array kCividis{hex(0x00224e), hex(0x123570), hex(0x3b496c), hex(0x575d6d),
                               hex(0x707173), hex(0x8a8779), hex(0xa59c74), hex(0xc3b369),
                               hex(0xe1cc55), hex(0xfee838)};
+// ParaView's "Fast" (Remoting/Views/ColorMaps.json): sRGB control points at
+// uneven positions, interpolated in CIELAB.
+struct LabStop {
+  float t;
+  glm::vec3 rgb;
+};
+constexpr std::array kFast{
+    LabStop{0.0f, {0.0564f, 0.0564f, 0.47f}},
+    LabStop{0.17159224f, {0.243f, 0.46035f, 0.81f}},
+    LabStop{0.29849148f, {0.35681438f, 0.74502465f, 0.9543677f}},
+    LabStop{0.43212874f, {0.6882f, 0.93f, 0.91791f}},
+    LabStop{0.5f, {0.89949596f, 0.94464640f, 0.76865671f}},
+    LabStop{0.58822604f, {0.95710798f, 0.83381851f, 0.50891563f}},
+    LabStop{0.70614126f, {0.92752076f, 0.62143891f, 0.31535706f}},
+    LabStop{0.84763953f, {0.8f, 0.352f, 0.16f}},
+    LabStop{1.0f, {0.59f, 0.0767f, 0.119475f}},
+};
 // Moreland's ends of ParaView's "Cool to Warm".
 constexpr glm::vec3 kCool = hex(0x3b4cc0);  // (59, 76, 192)
 constexpr glm::vec3 kWarm = hex(0xb40426);  // (180, 4, 38)
@@ -36,7 +53,7 @@ glm::vec3 stops(std::span<const glm::vec3> colors, float t) {
   return glm::mix(colors[i], colors[i + 1], x - float(i));
 }
 
-// sRGB <-> CIELAB (D65), and Moreland's Msh: the polar form of Lab.
+// sRGB <-> CIELAB (D65).
 constexpr glm::vec3 kWhite{0.95047f, 1.0f, 1.08883f};
 
 double toLinear(double c) {
@@ -53,25 +70,21 @@ double labFInverse(double f) {
   return t > 216.0 / 24389.0 ? t : (116.0 * f - 16.0) * 27.0 / 24389.0;
 }
 
-struct Msh {
-  double m, s, h;
+struct Lab {
+  double l, a, b;
 };
 
-Msh toMsh(glm::vec3 srgb) {
+Lab toLab(glm::vec3 srgb) {
   const double r = toLinear(srgb.x), g = toLinear(srgb.y), b = toLinear(srgb.z);
   const double x = 0.4124564 * r + 0.3575761 * g + 0.1804375 * b;
   const double y = 0.2126729 * r + 0.7151522 * g + 0.0721750 * b;
   const double z = 0.0193339 * r + 0.1191920 * g + 0.9503041 * b;
   const double fx = labF(x / kWhite.x), fy = labF(y / kWhite.y), fz = labF(z / kWhite.z);
-  const double l = 116.0 * fy - 16.0, a = 500.0 * (fx - fy), bb = 200.0 * (fy - fz);
-  const double m = std::sqrt(l * l + a * a + bb * bb);
-  return {m, m > 0.0 ? std::acos(std::clamp(l / m, -1.0, 1.0)) : 0.0, std::atan2(bb, a)};
+  return {116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)};
 }
 
-glm::vec3 fromMsh(Msh c) {
-  const double l = c.m * std::cos(c.s), a = c.m * std::sin(c.s) * std::cos(c.h),
-               bb = c.m * std::sin(c.s) * std::sin(c.h);
-  const double fy = (l + 16.0) / 116.0, fx = fy + a / 500.0, fz = fy - bb / 200.0;
+glm::vec3 fromLab(Lab c) {
+  const double fy = (c.l + 16.0) / 116.0, fx = fy + c.a / 500.0, fz = fy - c.b / 200.0;
   const double x = kWhite.x * labFInverse(fx), y = kWhite.y * labFInverse(fy),
                z = kWhite.z * labFInverse(fz);
   const double r = 3.2404542 * x - 1.5371385 * y - 0.4985314 * z;
@@ -79,6 +92,33 @@ glm::vec3 fromMsh(Msh c) {
   const double b = 0.0556434 * x - 0.2040259 * y + 1.0572252 * z;
   auto channel = [](double v) { return float(std::clamp(fromLinear(std::max(v, 0.0)), 0.0, 1.0)); };
   return {channel(r), channel(g), channel(b)};
+}
+
+// Control points at uneven positions, each interval interpolated in Lab.
+glm::vec3 labStops(std::span<const LabStop> points, float t) {
+  std::size_t i = 0;
+  while (i + 2 < points.size() && t > points[i + 1].t)
+    ++i;
+  const LabStop &lo = points[i], &hi = points[i + 1];
+  const double x = std::clamp(double(t - lo.t) / double(hi.t - lo.t), 0.0, 1.0);
+  const Lab a = toLab(lo.rgb), b = toLab(hi.rgb);
+  return fromLab({a.l + x * (b.l - a.l), a.a + x * (b.a - a.a), a.b + x * (b.b - a.b)});
+}
+
+// Moreland's Msh: the polar form of Lab.
+struct Msh {
+  double m, s, h;
+};
+
+Msh toMsh(glm::vec3 srgb) {
+  const Lab c = toLab(srgb);
+  const double m = std::sqrt(c.l * c.l + c.a * c.a + c.b * c.b);
+  return {m, m > 0.0 ? std::acos(std::clamp(c.l / m, -1.0, 1.0)) : 0.0, std::atan2(c.b, c.a)};
+}
+
+glm::vec3 fromMsh(Msh c) {
+  return fromLab({c.m * std::cos(c.s), c.m * std::sin(c.s) * std::cos(c.h),
+                  c.m * std::sin(c.s) * std::sin(c.h)});
 }
 
 // The hue to give an unsaturated end so the path to a saturated one turns
@@ -135,6 +175,8 @@ glm::vec3 ColorMap::at(float t) const {
       return divergingColor(kCool, kWarm, t);
     case ColorMapName::Grey:
       return glm::vec3(t);
+    case ColorMapName::Fast:
+      return labStops(kFast, t);
   }
   return glm::vec3(t);
 }

@@ -3,8 +3,10 @@
 // inferno, cividis) are their published colours at evenly spaced stops,
 // interpolated linearly in sRGB between stops; cool-warm is Moreland's
 // diverging map ("Diverging Color Maps for Scientific Visualization", 2009;
-// ParaView's "Cool to Warm"), computed in his Msh space; grey is a ramp; life
-// is the particles' birth-to-death colours (the look before colour maps).
+// ParaView's "Cool to Warm"), computed in his Msh space; fast is ParaView's
+// default map since 5.13 ("Fast", Samsel and Scott), its published control
+// points interpolated in CIELAB as ParaView does; grey is a ramp; life is the
+// particles' birth-to-death colours (the look before colour maps).
 //
 // The GPU gets kGpuSamples samples (gpuTable) and interpolates them linearly,
 // as lookupTable does on the CPU: tests compare a render with lookupTable.
@@ -25,6 +27,7 @@ enum class ColorMapName : int {
   Cividis = 4,
   CoolWarm = 5,
   Grey = 6,
+  Fast = 7,
 };
 
 class ColorMap {

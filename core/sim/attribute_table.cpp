@@ -263,9 +263,11 @@ std::vector<AttributeInfo> makeEntries() {
                         "empty: its first",
                         RENDER(colorArray)));
   v.push_back(enumEntry(
-      "render.color_map", {"life", "viridis", "plasma", "inferno", "cividis", "cool_warm", "grey"},
+      "render.color_map",
+      {"life", "viridis", "plasma", "inferno", "cividis", "cool_warm", "grey", "fast"},
       "Colour map: life (colour_birth to colour_death), the perceptually uniform viridis, plasma, "
-      "inferno and cividis, ParaView's diverging cool_warm, or a grey ramp",
+      "inferno and cividis, ParaView's diverging cool_warm, a grey ramp, or fast (ParaView's "
+      "default map since 5.13)",
       RENDER(colorMap)));
   v.push_back(enumEntry(
       "render.color_range", {"field", "fixed", "particles"},

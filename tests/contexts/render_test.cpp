@@ -253,6 +253,9 @@ TEST_F(RenderTest, TheFieldsRangeSetsTheScaleByDefault) {
   s.render.colorMap = ColorMapName::CoolWarm;
   expectNear(centre(render(s, 6, field)), expected(ColorMapName::CoolWarm, 0.25f), 1.0f,
              "speed in the field's range");
+  s.render.colorMap = ColorMapName::Fast;  // ParaView's default, its Lab path sampled
+  expectNear(centre(render(s, 6, field)), expected(ColorMapName::Fast, 0.25f), 1.0f,
+             "fast, speed in the field's range");
   s.render.colorBy = ColorQuantity::VelocityY;  // -> 0..4 as well
   s.render.colorMap = ColorMapName::Grey;
   expectNear(centre(render(s, 6, field)), glm::vec3(0.25f), 1.0f, "velocity y");

@@ -68,6 +68,23 @@ TEST(ColorMap, CoolWarmIsMorelandsDivergingMap) {
   EXPECT_GT(map.at(0.75f).x, map.at(0.75f).z);
 }
 
+// ParaView's "Fast": its control points are its colours there, and between
+// them the path is straight in CIELAB, not in sRGB (VTK's own interpolation is
+// compared in tests/io/color_map_vtk_test.cpp).
+TEST(ColorMap, FastPassesThroughItsControlPointsAndIsDarkAtBothEnds) {
+  const ColorMap map(ColorMapName::Fast);
+  expectColor(map.at(0.0f), glm::vec3(0.0564f, 0.0564f, 0.47f), 0.5f / 255.0f, "low end");
+  expectColor(map.at(0.5f), glm::vec3(0.89949596f, 0.9446464f, 0.76865671f), 0.5f / 255.0f,
+              "middle");
+  expectColor(map.at(0.84763953f), glm::vec3(0.8f, 0.352f, 0.16f), 0.5f / 255.0f, "0.848");
+  expectColor(map.at(1.0f), glm::vec3(0.59f, 0.0767f, 0.119475f), 0.5f / 255.0f, "high end");
+  // Light in the middle, dark at the ends: a diverging map.
+  EXPECT_GT(luminance(map.at(0.5f)), luminance(map.at(0.25f)));
+  EXPECT_GT(luminance(map.at(0.5f)), luminance(map.at(0.75f)));
+  EXPECT_GT(luminance(map.at(0.25f)), luminance(map.at(0.0f)));
+  EXPECT_GT(luminance(map.at(0.75f)), luminance(map.at(1.0f)));
+}
+
 TEST(ColorMap, LifeGoesFromBirthToDeathColour) {
   const ColorMap map(ColorMapName::Life, glm::vec3(1, 0, 0), glm::vec3(0, 0, 1));
   expectColor(map.at(0.25f), glm::vec3(0.75f, 0.0f, 0.25f), 1e-6f, "a quarter of life");
@@ -82,11 +99,11 @@ TEST(ColorMap, OutOfRangeAndNonFiniteCoordinatesAreClamped) {
 }
 
 // The listed maps' stops are samples of the table, so between them the table
-// is exact; cool-warm bends between samples, most near its warm end.
+// is exact; cool-warm and fast bend between samples (Msh and Lab paths).
 TEST(ColorMap, TheGpuTableIsWithinOneStepOfEightBitsOfTheMap) {
   for (const ColorMapName name :
        {ColorMapName::Viridis, ColorMapName::Plasma, ColorMapName::Inferno, ColorMapName::Cividis,
-        ColorMapName::CoolWarm}) {
+        ColorMapName::CoolWarm, ColorMapName::Fast}) {
     const ColorMap map(name);
     const ColorMap::Table table = map.gpuTable();
     float worst = 0.0f;
@@ -95,8 +112,8 @@ TEST(ColorMap, TheGpuTableIsWithinOneStepOfEightBitsOfTheMap) {
       const glm::vec3 d = glm::abs(ColorMap::lookupTable(table, t) - map.at(t));
       worst = std::max({worst, d.x, d.y, d.z});
     }
-    EXPECT_LT(worst, (name == ColorMapName::CoolWarm ? 1.5f : 0.01f) / 255.0f)
-        << "map " << int(name);
+    const bool curved = name == ColorMapName::CoolWarm || name == ColorMapName::Fast;
+    EXPECT_LT(worst, (curved ? 1.5f : 0.01f) / 255.0f) << "map " << int(name);
   }
 }
 
