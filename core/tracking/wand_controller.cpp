@@ -5,6 +5,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "core/cave/wall_views.h"
 #include "core/tracking/wand_handles.h"
 #include "core/util/error.h"
 
@@ -24,10 +25,8 @@ float deadZone(float v, float zone) {
 }  // namespace
 
 glm::vec2 wallPixel(const WallSpec& wall, glm::ivec2 size, glm::vec2 uv) {
-  glm::vec2 view(size);
-  if (wall.stereo == StereoMode::SideBySide) view.x *= 0.5f;
-  if (wall.stereo == StereoMode::TopBottom) view.y *= 0.5f;
-  return {uv.x * view.x, (1.0f - uv.y) * view.y};
+  const glm::vec2 eye = eyeImageSize(wall.stereo, glm::vec2(size));
+  return {uv.x * eye.x, (1.0f - uv.y) * eye.y};
 }
 
 WandController::WandController(const TrackingSpec& tracking, const NavigationSpec& navigation)

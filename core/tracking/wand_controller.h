@@ -38,7 +38,7 @@
 namespace sandstorm {
 
 // The menu panel as the wand can reach it: on a wall, at a pixel rectangle
-// of that wall's image (the overlay's own coordinates, y down).
+// of one eye's image of that wall (the overlay's own coordinates, y down).
 struct WandMenuTarget {
   WallSpec wall;         // corners, image size, stereo layout
   glm::ivec2 imageSize;  // the wall image's pixels
@@ -64,8 +64,9 @@ struct WandActions {
   std::optional<Navigation> navigation;                      // flying and turning
 };
 
-// A point on a wall in that wall's image pixels (y down), for the stereo
-// layout that draws the overlay (side-by-side: the left half; top-bottom: the top).
+// A point on a wall in the pixels (y down) of one eye's image, where the
+// overlays are laid out and drawn into each eye's (eyeImageSize: a half of a
+// side-by-side or top-bottom image, else the whole image).
 glm::vec2 wallPixel(const WallSpec& wall, glm::ivec2 imageSize, glm::vec2 uv);
 
 class WandController {
