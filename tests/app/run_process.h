@@ -44,6 +44,18 @@ inline ProcessResult runSandstorm(const std::string& args, const std::string& en
                     SANDSTORM_BINARY + "' " + args + " 2>&1");
 }
 
+// Windows under a virtual X server (scripts/setup installs xvfb-run).
+inline const std::string kXvfb = "xvfb-run -a -s '-screen 0 1280x1024x24' ";
+
+inline bool haveXvfb() {
+  return std::system("command -v xvfb-run >/dev/null 2>&1") == 0;
+}
+
+inline ProcessResult runUnderXvfb(const std::string& args) {
+  return runCommand(std::string("cd '") + SANDSTORM_SOURCE_DIR + "' && " + kXvfb + "'" +
+                    SANDSTORM_BINARY + "' " + args + " 2>&1");
+}
+
 inline std::vector<std::string> readLines(const std::filesystem::path& path) {
   std::ifstream in(path);
   std::vector<std::string> lines;

@@ -76,45 +76,58 @@ TEST(StereoOverlay, TheLegendIsInEachEyesImageAtTheSamePlace) {
 // The menu on a stereo wall was laid out over the whole image: one eye saw
 // the panel, the other the scene behind it (side by side), or the panel
 // spanned both eyes' images (top-bottom). Now each eye sees all of it, and a
-// click laid out for the eye's image reaches its widget.
+// click laid out for the eye's image reaches its widget: offscreen, and in a
+// window (whose own size and mouse ImGui reads, cut to an eye's).
 TEST(StereoOverlay, TheMenuIsInEachEyesImageAtTheSamePlaceAndTakesClicks) {
-  for (const char* config : {"menu-stereo", "menu-stereo-top-bottom"}) {
+  struct Case {
+    const char* config;
+    bool sideBySide, window;
+  };
+  for (const Case c :
+       {Case{"menu-stereo", true, false}, Case{"menu-stereo-top-bottom", false, false},
+        Case{"window-stereo", true, true}}) {
+    if (c.window && !test::haveXvfb()) {
+      ADD_FAILURE() << "xvfb-run is not installed (scripts/setup installs it)";
+      continue;
+    }
+    auto run = [&](const std::string& args) {
+      const std::string all = std::string("--config tests/data/") + c.config + ".toml " + args;
+      return c.window ? test::runUnderXvfb(all) : runSandstorm(all);
+    };
     const auto without = test::scratchDir("menu-stereo-off"),
                with = test::scratchDir("menu-stereo-on");
-    const std::string run = std::string("--config tests/data/") + config + ".toml --screenshot ";
-    // Offscreen the menu shows while a script drives it; its click comes after these 4 frames.
-    const auto a = runSandstorm(run + without.string());
+    // The menu shows while a script drives it (offscreen) or always (a window,
+    // unless --no-menu); the script's click comes after these 4 frames.
+    const auto a = run("--no-menu --screenshot " + without.string());
     ASSERT_EQ(a.exitCode, 0) << a.output;
-    const auto b =
-        runSandstorm(run + with.string() + " --menu-script tests/data/menu-stereo.script");
+    const auto b = run("--menu-script tests/data/menu-stereo.script --screenshot " + with.string());
     ASSERT_EQ(b.exitCode, 0) << b.output;
     const Image plain = readPng(without / "front.png"), menu = readPng(with / "front.png");
     ASSERT_EQ(plain.width, menu.width);
-    const EyeChanges c = eyeChanges(plain, menu, std::string(config) == "menu-stereo");
+    const EyeChanges e = eyeChanges(plain, menu, c.sideBySide);
     // The panel (360 to 380 pixels wide, from (8, 8)) covers most of the eye's
     // image's left; it blends over each eye's own scene, so a faint pixel may
     // round to no change in one eye.
-    const std::size_t panel = std::size_t(c.eye.x * c.eye.y) / 2;
-    EXPECT_GT(c.first.size(), panel) << config << ": no panel in the left eye's image";
-    EXPECT_GT(c.second.size(), panel) << config << ": no panel in the right eye's image";
-    EXPECT_LT(mismatched(c), c.first.size() / 100) << config << ": the eyes see different panels";
-    for (const glm::ivec2& p : c.first)
+    const std::size_t panel = std::size_t(e.eye.x * e.eye.y) / 2;
+    EXPECT_GT(e.first.size(), panel) << c.config << ": no panel in the left eye's image";
+    EXPECT_GT(e.second.size(), panel) << c.config << ": no panel in the right eye's image";
+    EXPECT_LT(mismatched(e), e.first.size() / 100) << c.config << ": the eyes see different panels";
+    for (const glm::ivec2& p : e.first)
       if (p.x > 400 || p.y < 8) {
-        ADD_FAILURE() << config << ": a panel pixel at " << p.x << "," << p.y
+        ADD_FAILURE() << c.config << ": a panel pixel at " << p.x << "," << p.y
                       << " outside the eye image's upper left";
         break;
       }
 
     const auto session = test::scratchDir("menu-stereo-click") / "s.session";
-    const auto click = runSandstorm(std::string("--config tests/data/") + config +
-                                    ".toml --frames 12 --menu-script tests/data/menu-stereo.script "
-                                    "--record " +
-                                    session.string());
+    const auto click =
+        run("--frames 12 --menu-script tests/data/menu-stereo.script --record " + session.string());
     ASSERT_EQ(click.exitCode, 0) << click.output;
     bool sized = false;
     for (const std::string& line : test::readLines(session))
       sized = sized || line.find("render.size") != std::string::npos;
-    EXPECT_TRUE(sized) << config << ": the scripted click missed the size slider\n" << click.output;
+    EXPECT_TRUE(sized) << c.config << ": the scripted click missed the size slider\n"
+                       << click.output;
   }
 }
 

@@ -12,27 +12,11 @@
 namespace sandstorm {
 namespace {
 
+using test::haveXvfb;
+using test::kXvfb;
 using test::readLines;
 using test::runSandstorm;
-
-const std::string kXvfb = "xvfb-run -a -s '-screen 0 1280x1024x24' ";
-
-bool haveXvfb() {
-  return std::system("command -v xvfb-run >/dev/null 2>&1") == 0;
-}
-
-test::ProcessResult runUnderXvfb(const std::string& args) {
-  const std::string cmd =
-      "cd '" SANDSTORM_SOURCE_DIR "' && " + kXvfb + "'" SANDSTORM_BINARY "' " + args + " 2>&1";
-  test::ProcessResult r;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  char buffer[4096];
-  while (pipe && std::fgets(buffer, sizeof buffer, pipe))
-    r.output += buffer;
-  const int status = pipe ? pclose(pipe) : -1;
-  r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
-}
+using test::runUnderXvfb;
 
 struct Line {
   std::uint32_t frame;
