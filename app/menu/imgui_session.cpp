@@ -59,7 +59,8 @@ void ImGuiSession::begin(float dt) {
       io.MousePos = ImVec2(at.x, at.y);
     }
   } else {
-    io.DisplaySize = ImVec2(float(size_.x), float(size_.y));
+    const glm::vec2 eye = eyeImageSize(eyes_, glm::vec2(size_));
+    io.DisplaySize = ImVec2(eye.x, eye.y);
   }
   io.DeltaTime = dt > 0.0f ? dt : 1.0f / 60.0f;
   if (injected_) {

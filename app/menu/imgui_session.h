@@ -19,9 +19,9 @@ namespace sandstorm {
 class ImGuiSession {
  public:
   // `window` may be null: then the display is `size` pixels and input is injected.
-  // `eyes`: the window shows a stereo layout with an image an eye (side by
-  // side, top-bottom); the menu is laid out for one eye's image, drawn into
-  // each, and the mouse over either half points into it.
+  // `eyes`: the window (or the `size` image) shows a stereo layout with an
+  // image an eye (side by side, top-bottom); the menu is laid out for one
+  // eye's image, drawn into each, and the mouse over either half points into it.
   ImGuiSession(GLFWwindow* window, glm::ivec2 size, StereoMode eyes = StereoMode::Mono);
   ~ImGuiSession();
   ImGuiSession(const ImGuiSession&) = delete;

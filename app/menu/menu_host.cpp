@@ -1,7 +1,5 @@
 #include "app/menu/menu_host.h"
 
-#include "core/cave/wall_views.h"
-
 namespace sandstorm {
 
 MenuHost::MenuHost(MainContext& main, std::unique_ptr<GlfwWindow> operatorWindow,
@@ -9,10 +7,8 @@ MenuHost::MenuHost(MainContext& main, std::unique_ptr<GlfwWindow> operatorWindow
                    std::vector<std::string> fieldChoices, MenuPanel::FieldLoader loader,
                    MenuPanel::FieldWriter writer, std::optional<MenuScript> script)
     : operatorWindow_(std::move(operatorWindow)),
-      session_(
-          operatorWindow_ ? operatorWindow_->handle() : wallWindow,
-          operatorWindow_ ? wallSize : glm::ivec2(eyeImageSize(wallStereo, glm::vec2(wallSize))),
-          operatorWindow_ ? StereoMode::Mono : wallStereo),
+      session_(operatorWindow_ ? operatorWindow_->handle() : wallWindow, wallSize,
+               operatorWindow_ ? StereoMode::Mono : wallStereo),
       panel_(main, std::move(fieldChoices), std::move(loader), std::move(writer)),
       script_(std::move(script)) {
   if (operatorWindow_) {
