@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cstring>
 #include <fstream>
+#include <utility>
 
 #include "core/util/error.h"
 
@@ -22,10 +23,21 @@ FieldFormat xmlType(const std::string& head) {
   if (type == std::string::npos) return FieldFormat::Unknown;
   const std::string rest = head.substr(type + 6);
   const auto starts = [&](const char* s) { return rest.rfind(s, 0) == 0; };
-  if (starts("ImageData\"")) return FieldFormat::VtkImageData;
-  if (starts("RectilinearGrid\"")) return FieldFormat::VtkRectilinearGrid;
-  if (starts("StructuredGrid\"")) return FieldFormat::VtkStructuredGrid;
-  if (starts("Collection\"")) return FieldFormat::VtkCollection;
+  static const std::pair<const char*, FieldFormat> kTypes[] = {
+      {"ImageData\"", FieldFormat::VtkImageData},
+      {"RectilinearGrid\"", FieldFormat::VtkRectilinearGrid},
+      {"StructuredGrid\"", FieldFormat::VtkStructuredGrid},
+      {"UnstructuredGrid\"", FieldFormat::VtkUnstructuredGrid},
+      {"PolyData\"", FieldFormat::VtkPolyData},
+      {"PImageData\"", FieldFormat::VtkPImageData},
+      {"PRectilinearGrid\"", FieldFormat::VtkPRectilinearGrid},
+      {"PStructuredGrid\"", FieldFormat::VtkPStructuredGrid},
+      {"PUnstructuredGrid\"", FieldFormat::VtkPUnstructuredGrid},
+      {"PPolyData\"", FieldFormat::VtkPPolyData},
+      {"vtkMultiBlockDataSet\"", FieldFormat::VtkMultiBlock},
+      {"Collection\"", FieldFormat::VtkCollection}};
+  for (const auto& [name, format] : kTypes)
+    if (starts(name)) return format;
   return FieldFormat::Unknown;
 }
 
@@ -70,6 +82,14 @@ FieldFormat formatForExtension(const std::filesystem::path& path) {
   if (ext == ".vti") return FieldFormat::VtkImageData;
   if (ext == ".vtr") return FieldFormat::VtkRectilinearGrid;
   if (ext == ".vts") return FieldFormat::VtkStructuredGrid;
+  if (ext == ".vtu") return FieldFormat::VtkUnstructuredGrid;
+  if (ext == ".vtp") return FieldFormat::VtkPolyData;
+  if (ext == ".pvti") return FieldFormat::VtkPImageData;
+  if (ext == ".pvtr") return FieldFormat::VtkPRectilinearGrid;
+  if (ext == ".pvts") return FieldFormat::VtkPStructuredGrid;
+  if (ext == ".pvtu") return FieldFormat::VtkPUnstructuredGrid;
+  if (ext == ".pvtp") return FieldFormat::VtkPPolyData;
+  if (ext == ".vtm") return FieldFormat::VtkMultiBlock;
   if (ext == ".pvd") return FieldFormat::VtkCollection;
   if (ext == ".vdb") return FieldFormat::OpenVdb;
   if (ext == ".fga") return FieldFormat::UnrealFga;
@@ -87,6 +107,22 @@ std::string describe(FieldFormat format) {
       return "VTK XML rectilinear grid file (.vtr)";
     case FieldFormat::VtkStructuredGrid:
       return "VTK XML structured grid file (.vts)";
+    case FieldFormat::VtkUnstructuredGrid:
+      return "VTK XML unstructured grid file (.vtu)";
+    case FieldFormat::VtkPolyData:
+      return "VTK XML polydata file (.vtp)";
+    case FieldFormat::VtkPImageData:
+      return "VTK XML parallel image data file (.pvti)";
+    case FieldFormat::VtkPRectilinearGrid:
+      return "VTK XML parallel rectilinear grid file (.pvtr)";
+    case FieldFormat::VtkPStructuredGrid:
+      return "VTK XML parallel structured grid file (.pvts)";
+    case FieldFormat::VtkPUnstructuredGrid:
+      return "VTK XML parallel unstructured grid file (.pvtu)";
+    case FieldFormat::VtkPPolyData:
+      return "VTK XML parallel polydata file (.pvtp)";
+    case FieldFormat::VtkMultiBlock:
+      return "VTK XML multiblock file (.vtm)";
     case FieldFormat::VtkCollection:
       return "ParaView data collection (.pvd)";
     case FieldFormat::OpenVdb:
@@ -99,6 +135,12 @@ std::string describe(FieldFormat format) {
       break;
   }
   return "file of unknown format";
+}
+
+std::string knownFormats() {
+  return "a legacy VTK (.vtk), VTK XML (.vti .vtr .vts .vtu .vtp, parallel .pvti .pvtr .pvts "
+         ".pvtu .pvtp, multiblock .vtm, collection .pvd), OpenVDB (.vdb), Unreal (.fga) or "
+         "Unity (.vf) file";
 }
 
 void checkExtension(const std::filesystem::path& path, FieldFormat content) {

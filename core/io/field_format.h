@@ -13,14 +13,22 @@ namespace sandstorm {
 
 enum class FieldFormat {
   Unknown,
-  VtkLegacy,           // .vtk
-  VtkImageData,        // .vti
-  VtkRectilinearGrid,  // .vtr
-  VtkStructuredGrid,   // .vts
-  VtkCollection,       // .pvd (a time series of the above)
-  OpenVdb,             // .vdb
-  UnrealFga,           // .fga
-  UnityVf,             // .vf
+  VtkLegacy,             // .vtk
+  VtkImageData,          // .vti
+  VtkRectilinearGrid,    // .vtr
+  VtkStructuredGrid,     // .vts
+  VtkUnstructuredGrid,   // .vtu
+  VtkPolyData,           // .vtp
+  VtkPImageData,         // .pvti (pieces of image data)
+  VtkPRectilinearGrid,   // .pvtr
+  VtkPStructuredGrid,    // .pvts
+  VtkPUnstructuredGrid,  // .pvtu
+  VtkPPolyData,          // .pvtp
+  VtkMultiBlock,         // .vtm
+  VtkCollection,         // .pvd (a time series of the above)
+  OpenVdb,               // .vdb
+  UnrealFga,             // .fga
+  UnityVf,               // .vf
 };
 
 // Throws Error when the file cannot be opened; Unknown when nothing matches.
@@ -29,6 +37,8 @@ FieldFormat detectFieldFormat(const std::filesystem::path& path);
 FieldFormat formatForExtension(const std::filesystem::path& path);
 // "legacy VTK file", "VTK XML image data (.vti)", ...
 std::string describe(FieldFormat format);
+// The formats, for messages: "a legacy VTK (.vtk), VTK XML (.vti ...) ... file".
+std::string knownFormats();
 // Throws Error when the extension names a known format other than `content`.
 void checkExtension(const std::filesystem::path& path, FieldFormat content);
 

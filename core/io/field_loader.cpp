@@ -9,6 +9,7 @@
 #include "core/io/vdb_reader.h"
 #include "core/io/vtk_field_extractor.h"
 #include "core/io/vtk_legacy_reader.h"
+#include "core/io/vtk_xml_index.h"
 #include "core/io/vtk_xml_reader.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
@@ -39,8 +40,19 @@ VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
     }
     case FieldFormat::VtkImageData:
     case FieldFormat::VtkRectilinearGrid:
-    case FieldFormat::VtkStructuredGrid: {
+    case FieldFormat::VtkStructuredGrid:
+    case FieldFormat::VtkUnstructuredGrid:
+    case FieldFormat::VtkPolyData: {
       auto data = readVtkXml(path, format, options);
+      return extractVectorField(data, path, options, report);
+    }
+    case FieldFormat::VtkPImageData:
+    case FieldFormat::VtkPRectilinearGrid:
+    case FieldFormat::VtkPStructuredGrid:
+    case FieldFormat::VtkPUnstructuredGrid:
+    case FieldFormat::VtkPPolyData:
+    case FieldFormat::VtkMultiBlock: {
+      auto data = readVtkXmlIndex(path, format, options, report);
       return extractVectorField(data, path, options, report);
     }
     case FieldFormat::VtkCollection: {
@@ -67,9 +79,7 @@ VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
     case FieldFormat::Unknown:
       break;
   }
-  throw Error(concat(path.string(), ": format not recognised; expected a legacy VTK (.vtk), VTK ",
-                     "XML (.vti, .vtr, .vts, .pvd), OpenVDB (.vdb), Unreal (.fga) or Unity (.vf) "
-                     "file"));
+  throw Error(concat(path.string(), ": format not recognised; expected ", knownFormats()));
 }
 
 }  // namespace

@@ -13,6 +13,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -23,13 +24,16 @@
 namespace sandstorm {
 
 struct LoadOptions {
-  // The VTK point-data array or OpenVDB grid to load. Empty: the file's only
-  // (or active) vector array or Vec3 grid; an error lists the choices otherwise.
+  // The VTK array (point or cell data) or OpenVDB grid to load, or three
+  // one-component arrays joined into a vector ("u,v,w"). Empty: the file's
+  // only (or active) vector array or Vec3 grid; an error lists the choices
+  // otherwise.
   std::string arrayName;
   // Points per axis of the dense grid made. (0, 0, 0): the file's own
   // resolution (its grid dimensions; one point per voxel of a VDB grid's active
-  // bounding box). Anything else resamples: VTK data through
-  // vtkResampleToImage, VDB grids through OpenVDB's samplers, engine formats
+  // bounding box; for meshes, points spaced as their cells: sampling_grid.h).
+  // Anything else resamples: VTK data as vtkProbeFilter does
+  // (mesh_resampler.h), VDB grids through OpenVDB's samplers, engine formats
   // trilinearly.
   glm::ivec3 resolution{0};
   // Largest dense grid accepted, in bytes (12 per point). Checked before
@@ -43,14 +47,16 @@ struct LoadOptions {
 };
 
 struct LoadReport {
-  std::string format;                  // e.g. "VTK XML image data"
-  std::vector<std::string> available;  // arrays or grids present, e.g. "velocity (3 components)"
-  std::string arrayName;               // the array or grid loaded
-  glm::ivec3 sourceDims{0};            // the file's own grid dimensions (VDB: active bbox)
-  bool resampled = false;              // values were interpolated onto a new grid
-  std::size_t nonFinite = 0;           // NaN or Inf vectors replaced by zero
-  std::size_t outside = 0;             // points outside the file's cells (the validity mask)
-  std::vector<std::string> notes;      // anything else worth telling the user
+  std::string format;                   // e.g. "VTK XML image data"
+  std::vector<std::string> available;   // arrays or grids present, e.g. "velocity (3 components)"
+  std::string arrayName;                // the array or grid loaded
+  glm::ivec3 sourceDims{0};             // the file's own grid dimensions (VDB: active bbox)
+  bool resampled = false;               // values were interpolated onto a new grid
+  std::size_t nonFinite = 0;            // NaN or Inf vectors replaced by zero
+  std::size_t outside = 0;              // points outside the file's cells (the validity mask)
+  std::uint64_t cells = 0, points = 0;  // in the file (every block)
+  std::vector<std::string> blocks;      // a multiblock's blocks: "name: kind, cells, points"
+  std::vector<std::string> notes;       // anything else worth telling the user
 };
 
 }  // namespace sandstorm

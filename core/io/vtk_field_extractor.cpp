@@ -1,146 +1,44 @@
 #include "core/io/vtk_field_extractor.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <vtkCellData.h>
-#include <vtkCellDataToPointData.h>
 #include <vtkDataArray.h>
+#include <vtkDataObject.h>
 #include <vtkDataSet.h>
 #include <vtkImageData.h>
 #include <vtkMatrix3x3.h>
-#include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkRectilinearGrid.h>
-#include <vtkResampleToImage.h>
 #include <vtkSmartPointer.h>
 #include <vtkStructuredGrid.h>
 
-#include "core/io/vtk_message_trap.h"
+#include "core/io/mesh_resampler.h"
+#include "core/io/sampling_grid.h"
+#include "core/io/vector_array_choice.h"
+#include "core/io/vtk_blocks.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
 
 namespace sandstorm {
 namespace {
 
-std::string inventory(vtkDataSet* data) {
-  std::string out;
+void listArrays(const std::vector<VtkBlock>& blocks, LoadReport& report) {
   auto list = [&](vtkFieldData* fd, const char* where) {
     for (int i = 0; i < fd->GetNumberOfArrays(); ++i) {
       vtkAbstractArray* a = fd->GetAbstractArray(i);
-      if (!out.empty()) out += ", ";
-      out += concat("'", a->GetName() ? a->GetName() : "", "' (", a->GetNumberOfComponents(),
-                    a->GetNumberOfComponents() == 1 ? " component" : " components", where, ")");
+      const std::string item = concat(a->GetName() ? a->GetName() : "(unnamed)", " (",
+                                      a->GetNumberOfComponents(), " components", where, ")");
+      if (std::find(report.available.begin(), report.available.end(), item) ==
+          report.available.end())
+        report.available.push_back(item);
     }
   };
-  list(data->GetPointData(), "");
-  list(data->GetCellData(), ", cell data");
-  return out.empty() ? "none" : out;
-}
-
-void listArrays(vtkDataSet* data, LoadReport& report) {
-  auto list = [&](vtkFieldData* fd, const char* where) {
-    for (int i = 0; i < fd->GetNumberOfArrays(); ++i) {
-      vtkAbstractArray* a = fd->GetAbstractArray(i);
-      report.available.push_back(concat(a->GetName() ? a->GetName() : "(unnamed)", " (",
-                                        a->GetNumberOfComponents(), " components", where, ")"));
-    }
-  };
-  list(data->GetPointData(), "");
-  list(data->GetCellData(), ", cell data");
-}
-
-int scalarArrays(vtkPointData* pd) {
-  int n = 0;
-  for (int i = 0; i < pd->GetNumberOfArrays(); ++i)
-    if (vtkDataArray* a = pd->GetArray(i); a && a->GetNumberOfComponents() == 1) ++n;
-  return n;
-}
-
-std::vector<std::string> vectorArrays(vtkFieldData* fd) {
-  std::vector<std::string> names;
-  for (int i = 0; i < fd->GetNumberOfArrays(); ++i) {
-    vtkAbstractArray* a = fd->GetAbstractArray(i);
-    if (vtkDataArray::SafeDownCast(a) && a->GetNumberOfComponents() == 3 && a->GetName())
-      names.emplace_back(a->GetName());
+  for (const VtkBlock& b : blocks) {
+    list(b.data->GetPointData(), "");
+    list(b.data->GetCellData(), ", cell data");
   }
-  return names;
-}
-
-vtkSmartPointer<vtkDataSet> cellsToPoints(vtkDataSet* data, const std::filesystem::path& path) {
-  VtkMessageTrap trap(path);
-  vtkNew<vtkCellDataToPointData> filter;
-  trap.watch(filter);
-  filter->SetInputData(data);
-  filter->PassCellDataOff();
-  filter->Update();
-  trap.throwIfFailed("moving cell data to the points (vtkCellDataToPointData)");
-  return filter->GetOutput();
-}
-
-struct Chosen {
-  vtkSmartPointer<vtkDataSet> data;  // the dataset holding the array in its point data
-  std::string name;
-};
-
-Chosen chooseArray(vtkDataSet* data, const std::filesystem::path& path, const LoadOptions& options,
-                   LoadReport& report) {
-  const std::string file = path.string();
-  vtkPointData* pd = data->GetPointData();
-  vtkCellData* cd = data->GetCellData();
-  std::string name = options.arrayName;
-  bool fromCells = false;
-  if (name.empty()) {
-    if (vtkDataArray* active = pd->GetVectors(); active && active->GetName()) {
-      name = active->GetName();
-      if (const std::vector<std::string> names = vectorArrays(pd); names.size() > 1) {
-        std::string all;
-        for (const std::string& n : names)
-          all += concat(all.empty() ? "'" : ", '", n, "'");
-        report.notes.push_back(concat("vector array '", name, "' (the file's active vectors) of ",
-                                      all, "; --array NAME chooses another"));
-      }
-    } else {
-      std::vector<std::string> names = vectorArrays(pd);
-      if (names.empty()) {
-        names = vectorArrays(cd);
-        fromCells = true;
-      }
-      if (names.size() != 1)
-        throw Error(
-            concat(file, ": ",
-                   names.empty() ? "no 3-component (vector) array"
-                                 : "several vector arrays and none marked active",
-                   "; choose one by name (--array NAME, or the config's field.name). Arrays "
-                   "present: ",
-                   inventory(data)));
-      name = names.front();
-    }
-  } else if (!pd->GetAbstractArray(name.c_str())) {
-    if (!cd->GetAbstractArray(name.c_str()))
-      throw Error(concat(file, ": no array named '", name, "'; arrays present: ", inventory(data)));
-    fromCells = true;
-  }
-  vtkAbstractArray* array =
-      fromCells ? cd->GetAbstractArray(name.c_str()) : pd->GetAbstractArray(name.c_str());
-  if (!vtkDataArray::SafeDownCast(array))
-    throw Error(concat(file, ": array '", name, "' is not numeric; expected a 3-component ",
-                       "vector array. Arrays present: ", inventory(data)));
-  if (array->GetNumberOfComponents() != 3)
-    throw Error(concat(
-        file, ": array '", name, "' has ", array->GetNumberOfComponents(),
-        " component(s); expected a 3-component vector array. Arrays present: ", inventory(data)));
-  if (fromCells) {
-    report.notes.push_back(concat("array '", name, "' is cell data: moved to the points"));
-    return {cellsToPoints(data, path), name};
-  }
-  // Scalar arrays in cell data (a simulation's pressure per cell) move to the
-  // points too, as ParaView's Cell Data to Point Data does, to colour by them.
-  for (int i = 0; i < cd->GetNumberOfArrays(); ++i)
-    if (vtkDataArray* a = cd->GetArray(i); a && a->GetNumberOfComponents() == 1 && a->GetName()) {
-      report.notes.push_back("cell-data scalar arrays moved to the points");
-      return {cellsToPoints(data, path), name};
-    }
-  return {data, name};
 }
 
 // Copies tuples into `out`, zeroing non-finite ones and those `mask` marks invalid.
@@ -229,10 +127,10 @@ void checkBudget(const glm::ivec3& dims, const std::filesystem::path& path,
                          "; expected a positive point count"));
   const double points = double(dims.x) * dims.y * dims.z;
   if (points > double(VectorField::kMaxPoints) || points * perPoint > double(options.memoryBudget))
-    throw Error(concat(path.string(), ": a ", dims.x, "x", dims.y, "x", dims.z, " grid needs ",
-                       points * perPoint, " bytes, beyond the memory budget of ",
-                       options.memoryBudget,
-                       " bytes; choose a lower resolution (LoadOptions::resolution, --dims)"));
+    throw Error(
+        concat(path.string(), ": a ", dims.x, "x", dims.y, "x", dims.z, " grid needs ",
+               points * perPoint, " bytes, beyond the memory budget of ", options.memoryBudget,
+               " bytes; choose a lower resolution (field.resolution, or sandstorm-field --dims)"));
 }
 
 glm::ivec3 nativeDims(vtkDataSet* data) {
@@ -295,48 +193,137 @@ VectorField copyImage(vtkImageData* image, const std::string& name,
 
 }  // namespace
 
-VectorField extractVectorField(vtkDataSet* data, const std::filesystem::path& path,
+VectorField extractVectorField(vtkDataObject* object, const std::filesystem::path& path,
                                const LoadOptions& options, LoadReport& report) {
   const std::string file = path.string();
-  listArrays(data, report);
-  const Chosen chosen = chooseArray(data, path, options, report);
-  report.arrayName = chosen.name;
-  report.sourceDims = nativeDims(data);
+  const std::vector<VtkBlock> blocks = vtkBlocks(object);
+  if (blocks.empty()) throw Error(concat(file, ": holds no points (no dataset, or empty blocks)"));
+  listArrays(blocks, report);
+  const bool composite = vtkDataSet::SafeDownCast(object) == nullptr;
+  for (const VtkBlock& b : blocks) {
+    report.cells += std::uint64_t(b.data->GetNumberOfCells());
+    report.points += std::uint64_t(b.data->GetNumberOfPoints());
+    if (composite) report.blocks.push_back(concat(b.name, ": ", describeBlock(b.data)));
+  }
+  const VectorChoice choice = chooseVectorArray(blocks, path, options, report);
+  report.arrayName = choice.name;
 
-  vtkDataArray* array = chosen.data->GetPointData()->GetArray(chosen.name.c_str());
-  if (array->GetNumberOfTuples() != chosen.data->GetNumberOfPoints())
-    throw Error(concat(file, ": array '", chosen.name, "' holds ", array->GetNumberOfTuples(),
-                       " vectors for ", chosen.data->GetNumberOfPoints(), " grid points"));
+  std::vector<VtkBlock> used;
+  std::vector<std::string> without;
+  for (const VtkBlock& b : blocks) {
+    vtkSmartPointer<vtkDataSet> data = pointVectors(b, choice, path, report);
+    if (!data) {
+      without.push_back(b.name);
+      continue;
+    }
+    vtkDataArray* array = data->GetPointData()->GetArray(choice.name.c_str());
+    if (!array || array->GetNumberOfTuples() != data->GetNumberOfPoints())
+      throw Error(concat(file, composite ? concat(": block '", b.name, "'") : std::string(),
+                         ": array '", choice.name, "' holds ",
+                         array ? array->GetNumberOfTuples() : 0, " vectors for ",
+                         data->GetNumberOfPoints(), " points"));
+    used.push_back({b.name, data});
+  }
+  if (!without.empty()) {
+    std::string names;
+    for (const std::string& n : without)
+      names += concat(names.empty() ? "'" : ", '", n, "'");
+    const std::string note = concat(without.size(), " of ", blocks.size(), " blocks carry no '",
+                                    choice.name, "' and are left out: ", names);
+    report.notes.push_back(note);
+    log::info(file, ": ", note);
+  }
 
+  const bool single = used.size() == 1;
+  if (single) report.sourceDims = nativeDims(used.front().data);
+  const bool structured = single && report.sourceDims != glm::ivec3(0);
   const bool keep = options.resolution == glm::ivec3(0) || options.resolution == report.sourceDims;
-  if (auto* image = vtkImageData::SafeDownCast(chosen.data); image && keep)
-    return copyImage(image, chosen.name, path, report);
+  if (auto* image = vtkImageData::SafeDownCast(used.front().data); single && image && keep)
+    return copyImage(image, choice.name, path, report);
 
-  const glm::ivec3 dims =
-      options.resolution == glm::ivec3(0) ? report.sourceDims : options.resolution;
-  checkBudget(dims, path, options, 12.0 + 4.0 * scalarArrays(chosen.data->GetPointData()));
-  VtkMessageTrap trap(path);
-  vtkNew<vtkResampleToImage> resample;
-  trap.watch(resample);
-  resample->SetInputDataObject(chosen.data);
-  resample->UseInputBoundsOn();
-  resample->SetSamplingDimensions(dims.x, dims.y, dims.z);
-  resample->Update();
-  trap.throwIfFailed("resampling to a uniform grid (vtkResampleToImage)");
-  vtkImageData* image = resample->GetOutput();
-  vtkDataArray* values = image ? image->GetPointData()->GetArray(chosen.name.c_str()) : nullptr;
-  if (!values || values->GetNumberOfComponents() != 3)
-    throw Error(concat(file, ": vtkResampleToImage produced no array '", chosen.name, "'"));
-  vtkDataArray* mask = image->GetPointData()->GetArray(resample->GetMaskArrayName());
-  std::vector<glm::vec3> out;
-  reportNonFinite(copyVectors(values, mask, out), path, chosen.name, report);
+  // The scalar arrays every block carries travel with the vectors.
+  std::vector<std::string> scalars;
+  vtkPointData* first = used.front().data->GetPointData();
+  for (int i = 0; i < first->GetNumberOfArrays(); ++i) {
+    vtkDataArray* a = first->GetArray(i);
+    if (!a || !a->GetName() || a->GetNumberOfComponents() != 1 ||
+        std::string_view(a->GetName()).starts_with("vtk") || a->GetName() == choice.name)
+      continue;
+    const bool everywhere = std::all_of(used.begin(), used.end(), [&](const VtkBlock& b) {
+      vtkDataArray* other = b.data->GetPointData()->GetArray(a->GetName());
+      return other && other->GetNumberOfComponents() == 1 &&
+             other->GetNumberOfTuples() == b.data->GetNumberOfPoints();
+    });
+    if (everywhere) scalars.emplace_back(a->GetName());
+  }
+  const double perPoint = 13.0 + 4.0 * double(scalars.size());
+  const SamplingBounds bounds = boundsOf(used);
+  glm::ivec3 dims = options.resolution;
+  if (dims == glm::ivec3(0)) {
+    if (structured) {
+      dims = report.sourceDims;
+    } else {
+      std::string note;
+      dims = meshResolution(used, bounds, perPoint, options.memoryBudget, note);
+      report.notes.push_back(note);
+      log::info(file, ": ", note);
+    }
+  }
+  checkBudget(dims, path, options, perPoint);
+
+  UniformGrid grid;
+  grid.origin = bounds.min;
+  grid.dims = dims;
+  for (int a = 0; a < 3; ++a)
+    grid.spacing[a] = dims[a] > 1 ? (bounds.max[a] - bounds.min[a]) / (dims[a] - 1) : 0.0;
+  std::vector<MeshSource> sources;
+  for (const VtkBlock& b : used) {
+    MeshSource s;
+    s.data = b.data;
+    s.arrays.push_back(b.data->GetPointData()->GetArray(choice.name.c_str()));
+    for (const std::string& name : scalars)
+      s.arrays.push_back(b.data->GetPointData()->GetArray(name.c_str()));
+    sources.push_back(std::move(s));
+  }
+  ResampledArrays sampled =
+      resampleMeshes(sources, grid, concat("resampling ", path.filename().string()));
   report.resampled = true;
-  double b[6];
-  image->GetBounds(b);
-  Box bounds{{float(b[0]), float(b[2]), float(b[4])}, {float(b[1]), float(b[3]), float(b[5])}};
-  VectorField field(bounds, dims, std::move(out));
-  field.setValidity(validityOf(mask));
-  copyScalars(image->GetPointData(), mask, image->GetNumberOfPoints(), path, field, report);
+
+  const std::size_t points = grid.points();
+  std::vector<glm::vec3> vectors(points);
+  std::size_t nonFinite = 0;
+  for (std::size_t p = 0; p < points; ++p) {
+    const float* v = &sampled.values[0][3 * p];
+    const glm::vec3 value(v[0], v[1], v[2]);
+    if (!sampled.valid[p]) continue;
+    if (std::isfinite(value.x) && std::isfinite(value.y) && std::isfinite(value.z))
+      vectors[p] = value;
+    else
+      ++nonFinite;
+  }
+  reportNonFinite(nonFinite, path, choice.name, report);
+  Box box{glm::vec3(bounds.min), glm::vec3(bounds.max)};
+  VectorField field(box, dims, std::move(vectors));
+  field.setValidity(std::move(sampled.valid));
+  for (std::size_t s = 0; s < scalars.size(); ++s) {
+    std::vector<float>& values = sampled.values[s + 1];
+    std::size_t bad = 0;
+    for (std::size_t p = 0; p < points; ++p) {
+      if (!field.hasValidity() || field.validity()[p]) {
+        if (!std::isfinite(values[p])) {
+          values[p] = 0.0f;
+          ++bad;
+        }
+      } else {
+        values[p] = 0.0f;
+      }
+    }
+    if (bad > 0)
+      log::warn(file, ": ", bad, " values of array '", scalars[s],
+                "' are NaN, Inf or beyond a float; replaced by zero");
+    report.nonFinite += bad;
+    field.addScalars(scalars[s], std::move(values));
+  }
   noteOutside(field, path, report);
   return field;
 }

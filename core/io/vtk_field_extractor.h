@@ -1,16 +1,19 @@
-// extractVectorField(): the chosen vector array of a VTK dataset (image data,
-// rectilinear or structured grid) as a dense VectorField.
+// extractVectorField(): the chosen vector array of a VTK data object (image
+// data, rectilinear, structured or unstructured grid, polydata, or a
+// multiblock of any of them) as a dense VectorField.
 //
-// The array is options.arrayName, or the point data's active vectors, or its
-// only 3-component array. An array found only in cell data is moved to the
-// points by vtkCellDataToPointData. Missing, ambiguous or non-vector arrays
-// throw Error listing the arrays present (and their component counts).
+// The array is chosen over every block (vector_array_choice.h: by name, the
+// active vectors, the only vector array, or three components joined), cell
+// data moved to the points. Blocks without it are left out and named in the
+// report.
 //
-// Image data is copied point for point (spacing must be > 0, the direction
-// axis-aligned). Other grids, and image data when options.resolution asks for
-// another resolution, are resampled by vtkResampleToImage over the data's
-// bounding box; points outside a curvilinear grid's cells get zero. NaN and
-// Inf vectors become zero, counted in report.nonFinite and logged.
+// One image block is copied point for point (spacing must be > 0, the
+// direction axis-aligned) unless options.resolution asks for another grid.
+// Anything else is resampled (mesh_resampler.h) over the blocks' bounding box:
+// a structured block at its own dimensions, a mesh at the resolution its
+// cells suggest (sampling_grid.h), or options.resolution; points outside
+// every cell are marked invalid (the validity mask). NaN and Inf vectors
+// become zero, counted in report.nonFinite and logged.
 #pragma once
 
 #include <filesystem>
@@ -18,11 +21,11 @@
 #include "core/field/vector_field.h"
 #include "core/io/load_options.h"
 
-class vtkDataSet;
+class vtkDataObject;
 
 namespace sandstorm {
 
-VectorField extractVectorField(vtkDataSet* data, const std::filesystem::path& path,
+VectorField extractVectorField(vtkDataObject* data, const std::filesystem::path& path,
                                const LoadOptions& options, LoadReport& report);
 
 }  // namespace sandstorm

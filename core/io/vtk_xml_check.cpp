@@ -156,6 +156,8 @@ class Checker {
   Checker(std::filesystem::path path, std::size_t budget)
       : path_(std::move(path)), file_(path_.string()), in_(path_), budget_(budget) {}
 
+  double bytes() const { return totalBytes_; }
+
   void run() {
     if (!in_.ok()) fail(file_ + ": cannot open");
     std::error_code ec;
@@ -180,6 +182,7 @@ class Checker {
     }
     if (sawFile_ && !stack_.empty() && !appendedSeen_)
       fail(concat(file_, ": truncated: <", stack_.back(), "> is never closed"));
+    endPiece();
     for (Array& a : appendedArrays_)
       checkAppended(a);
     if (totalBytes_ > 2.0 * double(budget_))
@@ -294,8 +297,13 @@ class Checker {
       wholeText_ = t.attributes.at("WholeExtent");
       wholeExtent_ = parseExtent(wholeText_, t.name + " WholeExtent");
     } else if (t.name == "Piece") {
+      endPiece();
       ++piece_;
       dims_.reset();
+      points_.reset();
+      cells_.reset();
+      kindCells_.clear();
+      sawPoints_ = false;
       coordinate_ = 0;
       const auto extent = t.attributes.find("Extent");
       if (extent != t.attributes.end()) {
@@ -324,9 +332,8 @@ class Checker {
           n[std::size_t(a)] = std::uint64_t(count);
         }
         dims_ = n;
-      } else if (t.attributes.count("NumberOfPoints")) {
-        points_ =
-            whole(t.attributes.at("NumberOfPoints"), concat("Piece ", piece_, " NumberOfPoints"));
+      } else {
+        unstructuredPiece(t);
       }
     } else if (t.name == "Coordinates") {
       coordinate_ = 0;
@@ -353,8 +360,45 @@ class Checker {
     return e;
   }
 
-  std::optional<std::uint64_t> expectedTuples() {
+  // A .vtu or .vtp piece's counts: each within the budget, as VTK allocates
+  // them before it reads a byte of the arrays.
+  void unstructuredPiece(const Tag& t) {
+    auto count = [&](const char* key) -> std::optional<std::uint64_t> {
+      const auto it = t.attributes.find(key);
+      if (it == t.attributes.end()) return std::nullopt;
+      const std::uint64_t n = whole(it->second, concat("Piece ", piece_, " ", key));
+      if (double(n) * 12.0 > double(budget_))
+        fail(concat(file_, ": Piece ", piece_, " ", key, " ", n,
+                    " is beyond what the memory budget of ", budget_, " bytes holds"));
+      return n;
+    };
+    points_ = count("NumberOfPoints");
+    cells_ = count("NumberOfCells");
+    for (const char* kind : {"Verts", "Lines", "Strips", "Polys"})
+      if (const auto n = count(concat("NumberOf", kind).c_str())) {
+        kindCells_[kind] = *n;
+        cells_ = cells_.value_or(0) + *n;
+      }
+  }
+
+  // A piece that claims points must hold them: VTK would allocate them and
+  // leave them unset.
+  void endPiece() {
+    if (points_ && *points_ > 0 && !sawPoints_)
+      fail(concat(file_, ": Piece ", piece_, " has NumberOfPoints ", *points_,
+                  " but no Points array"));
+  }
+
+  std::optional<std::uint64_t> expectedTuples(const std::string& name) {
     const std::string section = stack_.empty() ? "" : stack_.back();
+    if (!dims_) {
+      if (section == "PointData" || section == "Points") return points_;
+      if (section == "CellData") return cells_;
+      if (section == "Cells" && (name == "offsets" || name == "types" || name == "faceoffsets"))
+        return cells_;
+      if (kindCells_.count(section) && name == "offsets") return kindCells_.at(section);
+      return std::nullopt;
+    }
     if (dims_) {
       const auto& n = *dims_;
       if (section == "PointData" || section == "Points") return n[0] * n[1] * n[2];
@@ -365,8 +409,6 @@ class Checker {
         return cells;
       }
       if (section == "Coordinates" && coordinate_ < 3) return n[coordinate_];
-    } else if (points_ && (section == "PointData" || section == "Points")) {
-      return *points_;
     }
     return std::nullopt;
   }
@@ -393,11 +435,12 @@ class Checker {
     }
     if (t.attributes.count("NumberOfTuples"))
       a.declaredTuples = whole(attribute("NumberOfTuples"), a.where + " NumberOfTuples");
-    a.expectedTuples = expectedTuples();
+    a.expectedTuples = expectedTuples(name);
+    if (section == "Points") sawPoints_ = true;
     if (section == "Coordinates") ++coordinate_;
     if (a.declaredTuples && a.expectedTuples && *a.declaredTuples != *a.expectedTuples)
-      fail(concat(a.where, ": NumberOfTuples ", *a.declaredTuples,
-                  ", but the piece's extent gives ", *a.expectedTuples));
+      fail(concat(a.where, ": NumberOfTuples ", *a.declaredTuples, ", but the piece's ",
+                  dims_ ? "extent gives " : "counts give ", *a.expectedTuples));
     const std::optional<std::uint64_t> known =
         a.declaredTuples ? a.declaredTuples : a.expectedTuples;
     const std::uint64_t tuples = known.value_or(0);
@@ -578,7 +621,9 @@ class Checker {
   std::optional<std::array<long long, 6>> wholeExtent_;
   std::optional<std::array<long long, 6>> covered_;  // the pieces' extents together
   std::string wholeText_;
-  std::optional<std::uint64_t> points_;
+  std::optional<std::uint64_t> points_, cells_;     // an unstructured piece's counts
+  std::map<std::string, std::uint64_t> kindCells_;  // a .vtp piece's Verts, Lines, ...
+  bool sawPoints_ = false;
   std::size_t coordinate_ = 0;
   double totalBytes_ = 0.0;
   std::vector<Array> appendedArrays_;
@@ -588,8 +633,10 @@ class Checker {
 
 }  // namespace
 
-void checkVtkXml(const std::filesystem::path& path, std::size_t memoryBudget) {
-  Checker(path, memoryBudget).run();
+double checkVtkXml(const std::filesystem::path& path, std::size_t memoryBudget) {
+  Checker checker(path, memoryBudget);
+  checker.run();
+  return checker.bytes();
 }
 
 }  // namespace sandstorm

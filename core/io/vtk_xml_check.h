@@ -1,4 +1,4 @@
-// checkVtkXml: a VTK XML file (.vti .vtr .vts, or any VTKFile) checked before
+// checkVtkXml: a VTK XML file (.vti .vtr .vts .vtu .vtp, or any VTKFile) checked before
 // VTK reads it, because vtkXML*Reader allocates what a DataArray's attributes
 // claim before it notices that the payload is short.
 //
@@ -7,7 +7,12 @@
 // decoded. Every DataArray of every Piece is checked:
 // - `type` is a numeric VTK type; NumberOfComponents a whole number >= 1;
 // - NumberOfTuples, when given, is what the piece's Extent gives the array
-//   (its points, its cells, or one axis of its coordinates);
+//   (its points, its cells, or one axis of its coordinates), or its counts
+//   (NumberOfPoints, NumberOfCells, NumberOfVerts/Lines/Strips/Polys: the
+//   points, the cell data, the offsets and types); each count is within the
+//   memory budget, and a piece that claims points has a Points array;
+//   connectivity has no count to check here (checkVtkCells, after reading,
+//   holds it against the offsets and the points);
 // - tuples x components x type size is within the memory budget, and all
 //   arrays together within twice it;
 // - a Piece's Extent lies inside the WholeExtent; the compressor is one VTK has;
@@ -18,7 +23,8 @@
 //   to its size; every ascii value is a finite number of the array's type.
 // VTK's structured readers leak the arrays they were filling when a payload
 // fails halfway, so a payload VTK would fail on must not reach it.
-// Throws Error naming the file, the piece and array, and the numbers.
+// Throws Error naming the file, the piece and array, and the numbers; returns
+// the bytes the arrays take (for a budget over several files).
 #pragma once
 
 #include <cstddef>
@@ -26,6 +32,6 @@
 
 namespace sandstorm {
 
-void checkVtkXml(const std::filesystem::path& path, std::size_t memoryBudget);
+double checkVtkXml(const std::filesystem::path& path, std::size_t memoryBudget);
 
 }  // namespace sandstorm

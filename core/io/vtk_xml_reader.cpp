@@ -10,14 +10,17 @@
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
 #include <vtkXMLImageDataReader.h>
+#include <vtkXMLPolyDataReader.h>
 #include <vtkXMLRectilinearGridReader.h>
 #include <vtkXMLStructuredGridReader.h>
+#include <vtkXMLUnstructuredGridReader.h>
 
 #include <cstring>
 #include <fstream>
 #include <vector>
 
 #include "core/field/vector_field.h"
+#include "core/io/vtk_cell_check.h"
 #include "core/io/vtk_message_trap.h"
 #include "core/io/vtk_xml_check.h"
 #include "core/util/error.h"
@@ -120,6 +123,28 @@ vtkSmartPointer<vtkDataSet> run(const std::filesystem::path& path, const LoadOpt
   return out;
 }
 
+// A .vtu or .vtp: the counts and payloads checked first, the cells after.
+template <class Reader>
+vtkSmartPointer<vtkDataSet> runUnstructured(const std::filesystem::path& path,
+                                            const LoadOptions& options, const std::string& what) {
+  const std::string file = path.string();
+  checkVtkXml(path, options.memoryBudget);
+  VtkMessageTrap trap(path);
+  vtkNew<Reader> reader;
+  trap.watch(reader);
+  reader->SetFileName(file.c_str());
+  if (!reader->CanReadFile(file.c_str())) {
+    trap.throwIfFailed(concat("reading the ", what));
+    throw Error(concat(file, ": VTK's reader does not accept it as a ", what));
+  }
+  reader->Update();
+  trap.throwIfFailed(concat("reading the ", what));
+  vtkSmartPointer<vtkDataSet> out = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!out) throw Error(concat(file, ": VTK read no ", what));
+  checkVtkCells(out, file);
+  return out;
+}
+
 }  // namespace
 
 vtkSmartPointer<vtkDataSet> readVtkXml(const std::filesystem::path& path, FieldFormat format,
@@ -131,6 +156,11 @@ vtkSmartPointer<vtkDataSet> readVtkXml(const std::filesystem::path& path, FieldF
       return run<vtkXMLRectilinearGridReader>(path, options, "VTK XML rectilinear grid");
     case FieldFormat::VtkStructuredGrid:
       return run<vtkXMLStructuredGridReader>(path, options, "VTK XML structured grid");
+    case FieldFormat::VtkUnstructuredGrid:
+      return runUnstructured<vtkXMLUnstructuredGridReader>(path, options,
+                                                           "VTK XML unstructured grid");
+    case FieldFormat::VtkPolyData:
+      return runUnstructured<vtkXMLPolyDataReader>(path, options, "VTK XML polydata");
     default:
       break;
   }

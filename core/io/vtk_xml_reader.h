@@ -1,9 +1,13 @@
-// readVtkXml(): a VTK XML file (.vti image data, .vtr rectilinear grid, .vts
-// structured grid) read by VTK's own XML readers.
+// readVtkXml(): a VTK XML file of one dataset (.vti image data, .vtr
+// rectilinear grid, .vts structured grid, .vtu unstructured grid, .vtp
+// polydata) read by VTK's own XML readers, after checkVtkXml has held every
+// array's payload against its counts and the memory budget.
 //
-// The reader first reads only the XML structure (UpdateInformation): the whole
-// extent must be non-empty and its point count within VectorField::kMaxPoints
-// and the memory budget before any array is read. Any error VTK reports while
+// A structured reader first reads only the XML structure (UpdateInformation):
+// the whole extent must be non-empty and its point count within
+// VectorField::kMaxPoints and the memory budget before any array is read. An
+// unstructured grid's or polydata's cells are checked once read
+// (checkVtkCells). Any error VTK reports while
 // reading (bad XML, short or undecodable data) becomes an Error naming the file.
 #pragma once
 

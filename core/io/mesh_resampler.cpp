@@ -1,0 +1,381 @@
+#include "core/io/mesh_resampler.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+#include <vtkCellData.h>
+#include <vtkCellType.h>
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
+#include <vtkDataSetAttributes.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkGenericCell.h>
+#include <vtkIdList.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkPointSet.h>
+#include <vtkPolyData.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkUnstructuredGrid.h>
+
+#include "core/util/error.h"
+#include "core/util/parallel_for.h"
+#include "core/util/progress_meter.h"
+
+namespace sandstorm {
+namespace {
+
+// VTK's cells accept a point whose parametric coordinates lie this far
+// outside them (vtkTetra::EvaluatePosition and the others).
+constexpr double kParametricTolerance = 0.001;
+// A 2D or 1D cell holds points this close to it, in units of its diagonal
+// (vtkProbeFilter's tolerance: a thousandth of a cell's length).
+constexpr double kSurfaceTolerance = 0.001;
+constexpr float kNone = std::numeric_limits<float>::infinity();
+
+// One array's point values, read without a virtual call where the array is
+// VTK's plain float or double array.
+struct ArrayView {
+  vtkDataArray* array = nullptr;
+  const float* floats = nullptr;
+  const double* doubles = nullptr;
+  int components = 0;
+  double at(vtkIdType point, int c) const {
+    const vtkIdType i = point * components + c;
+    if (floats) return double(floats[i]);
+    if (doubles) return doubles[i];
+    return array->GetComponent(point, c);
+  }
+};
+
+struct Source {
+  vtkDataSet* data = nullptr;
+  bool tetraFastPath = false;  // an unstructured grid: its tetrahedra inline
+  vtkUnsignedCharArray* ghosts = nullptr;
+  std::vector<ArrayView> arrays;
+  std::uint64_t firstCell = 0;  // of all sources' cells together
+};
+
+// What one thread needs to look at cells.
+struct Workspace {
+  vtkNew<vtkGenericCell> cell;
+  vtkNew<vtkIdList> ids;
+  std::vector<double> weights;
+  std::vector<double> corners;  // the cell's points, x y z each
+};
+
+bool isGhost(const Source& s, vtkIdType cell) {
+  if (!s.ghosts) return false;
+  const unsigned char g = s.ghosts->GetValue(cell);
+  return (g & (vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL)) != 0;
+}
+
+// The cell's points (ids into w.ids, coordinates into w.corners) and its box.
+// False for a cell without points.
+bool cellBounds(const Source& s, vtkIdType cell, Workspace& w, glm::dvec3& lo, glm::dvec3& hi) {
+  s.data->GetCellPoints(cell, w.ids);
+  const vtkIdType n = w.ids->GetNumberOfIds();
+  if (n == 0) return false;
+  w.corners.resize(std::size_t(3 * n));
+  lo = glm::dvec3(std::numeric_limits<double>::max());
+  hi = -lo;
+  for (vtkIdType i = 0; i < n; ++i) {
+    double* x = &w.corners[std::size_t(3 * i)];
+    s.data->GetPoint(w.ids->GetId(i), x);
+    for (int a = 0; a < 3; ++a) {
+      lo[a] = std::min(lo[a], x[a]);
+      hi[a] = std::max(hi[a], x[a]);
+    }
+  }
+  return true;
+}
+
+struct IndexBox {
+  glm::ivec3 lo, hi;  // inclusive; empty when any hi < lo
+  bool empty() const { return hi.x < lo.x || hi.y < lo.y || hi.z < lo.z; }
+};
+
+// The grid points within the cell's box widened by what its tolerance admits.
+IndexBox indexBox(const UniformGrid& g, const glm::dvec3& lo, const glm::dvec3& hi) {
+  const double margin =
+      1.1 * std::max(kParametricTolerance, kSurfaceTolerance) * glm::length(hi - lo);
+  IndexBox box;
+  for (int a = 0; a < 3; ++a) {
+    const double from = lo[a] - margin - g.origin[a], to = hi[a] + margin - g.origin[a];
+    if (g.dims[a] == 1 || g.spacing[a] == 0.0) {
+      const bool in = from <= 0.0 && to >= 0.0;
+      box.lo[a] = 0;
+      box.hi[a] = in ? 0 : -1;
+      continue;
+    }
+    const double first = std::ceil(from / g.spacing[a]), last = std::floor(to / g.spacing[a]);
+    box.lo[a] = int(std::clamp(first, 0.0, double(g.dims[a])));
+    box.hi[a] = int(std::clamp(last, -1.0, double(g.dims[a] - 1)));
+  }
+  return box;
+}
+
+class Resampler {
+ public:
+  Resampler(std::span<const MeshSource> sources, const UniformGrid& grid) : grid_(grid) {
+    std::size_t components = 0;
+    for (const MeshSource& m : sources) {
+      Source s;
+      s.data = m.data;
+      s.firstCell = cells_;
+      cells_ += std::uint64_t(m.data->GetNumberOfCells());
+      // Lazily built structures are built here, once, before threads read them.
+      if (auto* poly = vtkPolyData::SafeDownCast(m.data); poly && poly->NeedToBuildCells())
+        poly->BuildCells();
+      if (m.data->GetNumberOfCells() > 0) m.data->GetCell(0, workspace_.cell);
+      m.data->ComputeBounds();
+      s.tetraFastPath = vtkUnstructuredGrid::SafeDownCast(m.data) != nullptr;
+      s.ghosts = vtkUnsignedCharArray::SafeDownCast(
+          m.data->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
+      if (s.ghosts && s.ghosts->GetNumberOfTuples() != m.data->GetNumberOfCells())
+        s.ghosts = nullptr;
+      maxCellSize_ = std::max(maxCellSize_, m.data->GetMaxCellSize());
+      if (sources_.empty()) {
+        for (vtkDataArray* a : m.arrays)
+          components_.push_back(a->GetNumberOfComponents());
+      } else if (m.arrays.size() != components_.size()) {
+        throw Error("the blocks carry different numbers of arrays to resample");
+      }
+      for (std::size_t i = 0; i < m.arrays.size(); ++i) {
+        vtkDataArray* a = m.arrays[i];
+        if (a->GetNumberOfComponents() != components_[i] ||
+            a->GetNumberOfTuples() != m.data->GetNumberOfPoints())
+          throw Error(concat("array '", a->GetName() ? a->GetName() : "", "' has ",
+                             a->GetNumberOfComponents(), " components x ", a->GetNumberOfTuples(),
+                             " tuples; expected ", components_[i], " x ",
+                             m.data->GetNumberOfPoints(), " (one per point)"));
+        ArrayView v;
+        v.array = a;
+        v.components = a->GetNumberOfComponents();
+        if (auto* f = vtkFloatArray::SafeDownCast(a)) v.floats = f->GetPointer(0);
+        if (auto* d = vtkDoubleArray::SafeDownCast(a)) v.doubles = d->GetPointer(0);
+        s.arrays.push_back(v);
+      }
+      sources_.push_back(std::move(s));
+    }
+    for (int c : components_)
+      components += std::size_t(c);
+    if (cells_ >= (std::uint64_t{1} << 32))
+      throw Error(concat(cells_, " cells: more than the 2^32 that can be resampled at once"));
+    axis_ = 0;
+    for (int a = 1; a < 3; ++a)
+      if (grid_.dims[a] > grid_.dims[axis_]) axis_ = a;
+  }
+
+  ResampledArrays run(const std::string& what) {
+    ResampledArrays out;
+    const std::size_t points = grid_.points();
+    out.values.resize(components_.size());
+    for (std::size_t i = 0; i < components_.size(); ++i)
+      out.values[i].assign(points * std::size_t(components_[i]), 0.0f);
+    best_.assign(points, kNone);
+    values_ = &out.values;
+
+    ParallelFor pool;
+    bin(pool);
+    ProgressMeter progress(what, entries_.size(), "cell visits");
+    std::atomic<std::size_t> nextSlab{0};
+    pool.run(pool.threads(), [&](std::size_t, std::size_t) {
+      Workspace w;
+      w.weights.resize(std::size_t(std::max(maxCellSize_, 4)));
+      for (std::size_t s; (s = nextSlab.fetch_add(1)) < slabs_;) {
+        for (std::size_t e = slabStart_[s]; e < slabStart_[s + 1]; ++e)
+          visit(entries_[e], int(s), w);
+        progress.add(slabStart_[s + 1] - slabStart_[s]);
+      }
+    });
+    progress.finish();
+
+    out.valid.resize(points);
+    for (std::size_t p = 0; p < points; ++p) {
+      out.valid[p] = best_[p] != kNone ? 1 : 0;
+      out.validCount += out.valid[p];
+    }
+    return out;
+  }
+
+ private:
+  const Source& sourceOf(std::uint64_t global) const {
+    std::size_t s = sources_.size() - 1;
+    while (sources_[s].firstCell > global)
+      --s;
+    return sources_[s];
+  }
+
+  // Each cell's range of slabs, then the cells of each slab in order.
+  void bin(ParallelFor& pool) {
+    const int n = grid_.dims[axis_];
+    slabs_ = std::size_t(std::clamp(n, 1, int(pool.threads()) * 16));
+    slabOf_.resize(std::size_t(n));
+    slabBegin_.assign(slabs_ + 1, 0);
+    for (std::size_t s = 0; s <= slabs_; ++s)
+      slabBegin_[s] = int(std::uint64_t(n) * s / slabs_);
+    for (std::size_t s = 0; s < slabs_; ++s)
+      for (int i = slabBegin_[s]; i < slabBegin_[s + 1]; ++i)
+        slabOf_[std::size_t(i)] = int(s);
+
+    std::vector<std::int32_t> first(cells_, 0), last(cells_, -1);
+    pool.run(cells_, [&](std::size_t begin, std::size_t end) {
+      Workspace w;
+      for (std::size_t g = begin; g < end; ++g) {
+        const Source& s = sourceOf(g);
+        const vtkIdType cell = vtkIdType(g - s.firstCell);
+        glm::dvec3 lo, hi;
+        if (isGhost(s, cell) || !cellBounds(s, cell, w, lo, hi)) continue;
+        const IndexBox box = indexBox(grid_, lo, hi);
+        if (box.empty()) continue;
+        first[g] = slabOf_[std::size_t(box.lo[axis_])];
+        last[g] = slabOf_[std::size_t(box.hi[axis_])];
+      }
+    });
+    std::vector<std::size_t> count(slabs_ + 1, 0);
+    for (std::uint64_t g = 0; g < cells_; ++g)
+      for (std::int32_t s = first[g]; s <= last[g]; ++s)
+        ++count[std::size_t(s) + 1];
+    slabStart_.assign(slabs_ + 1, 0);
+    for (std::size_t s = 0; s < slabs_; ++s)
+      slabStart_[s + 1] = slabStart_[s] + count[s + 1];
+    entries_.resize(slabStart_[slabs_]);
+    std::vector<std::size_t> at(slabStart_.begin(), slabStart_.end() - 1);
+    for (std::uint64_t g = 0; g < cells_; ++g)
+      for (std::int32_t s = first[g]; s <= last[g]; ++s)
+        entries_[at[std::size_t(s)]++] = std::uint32_t(g);
+  }
+
+  // The grid points of one cell within one slab.
+  void visit(std::uint32_t global, int slab, Workspace& w) {
+    const Source& s = sourceOf(global);
+    const vtkIdType cell = vtkIdType(global - s.firstCell);
+    glm::dvec3 lo, hi;
+    if (!cellBounds(s, cell, w, lo, hi)) return;
+    IndexBox box = indexBox(grid_, lo, hi);
+    box.lo[axis_] = std::max(box.lo[axis_], slabBegin_[std::size_t(slab)]);
+    box.hi[axis_] = std::min(box.hi[axis_], slabBegin_[std::size_t(slab) + 1] - 1);
+    if (box.empty()) return;
+    const int type = s.data->GetCellType(cell);
+    if (s.tetraFastPath && type == VTK_TETRA && w.ids->GetNumberOfIds() == 4) {
+      visitTetra(s, box, w);
+      return;
+    }
+    s.data->GetCell(cell, w.cell);
+    const int dimension = w.cell->GetCellDimension();
+    const double diagonal = glm::length(hi - lo);
+    const double tolerance2 = std::pow(kSurfaceTolerance * diagonal, 2.0);
+    double closest[3], pcoords[3], dist2 = 0.0;
+    int subId = 0;
+    forEachPoint(box, [&](const double x[3], std::size_t index) {
+      const int inside =
+          w.cell->EvaluatePosition(x, closest, subId, pcoords, dist2, w.weights.data());
+      if (inside != 1) return;
+      double badness = w.cell->GetParametricDistance(pcoords);
+      if (dimension < 3) {
+        if (dist2 > tolerance2) return;
+        badness += diagonal > 0.0 ? std::sqrt(dist2) / diagonal : 0.0;
+      }
+      if (badness < double(best_[index]))
+        write(s, index, float(badness), w.cell->GetPointIds(), w.weights);
+    });
+  }
+
+  // vtkTetra::EvaluatePosition's arithmetic, without building a vtkTetra.
+  void visitTetra(const Source& s, const IndexBox& box, Workspace& w) {
+    const double* p0 = &w.corners[0];
+    double c1[3], c2[3], c3[3];
+    for (int i = 0; i < 3; ++i) {
+      c1[i] = w.corners[3 + std::size_t(i)] - p0[i];
+      c2[i] = w.corners[6 + std::size_t(i)] - p0[i];
+      c3[i] = w.corners[9 + std::size_t(i)] - p0[i];
+    }
+    const double det = vtkMath::Determinant3x3(c1, c2, c3);
+    if (det == 0.0) return;
+    constexpr double lo = -kParametricTolerance, hi = 1.0 + kParametricTolerance;
+    forEachPoint(box, [&](const double x[3], std::size_t index) {
+      const double rhs[3] = {x[0] - p0[0], x[1] - p0[1], x[2] - p0[2]};
+      const double r = vtkMath::Determinant3x3(rhs, c2, c3) / det;
+      const double s1 = vtkMath::Determinant3x3(c1, rhs, c3) / det;
+      const double t = vtkMath::Determinant3x3(c1, c2, rhs) / det;
+      const double u = 1.0 - r - s1 - t;
+      if (!(r >= lo && r <= hi && s1 >= lo && s1 <= hi && t >= lo && t <= hi && u >= lo && u <= hi))
+        return;
+      double badness = 0.0;
+      for (double p : {r, s1, t, u})
+        badness = std::max(badness, p < 0.0 ? -p : (p > 1.0 ? p - 1.0 : 0.0));
+      if (badness >= double(best_[index])) return;
+      w.weights[0] = u;
+      w.weights[1] = r;
+      w.weights[2] = s1;
+      w.weights[3] = t;
+      write(s, index, float(badness), w.ids, w.weights);
+    });
+  }
+
+  template <class F>
+  void forEachPoint(const IndexBox& box, F&& f) const {
+    double x[3];
+    for (int k = box.lo.z; k <= box.hi.z; ++k) {
+      x[2] = grid_.origin.z + k * grid_.spacing.z;
+      for (int j = box.lo.y; j <= box.hi.y; ++j) {
+        x[1] = grid_.origin.y + j * grid_.spacing.y;
+        const std::size_t row = std::size_t(grid_.dims.x) *
+                                (std::size_t(j) + std::size_t(grid_.dims.y) * std::size_t(k));
+        for (int i = box.lo.x; i <= box.hi.x; ++i) {
+          x[0] = grid_.origin.x + i * grid_.spacing.x;
+          f(x, row + std::size_t(i));
+        }
+      }
+    }
+  }
+
+  // vtkDataArray::InterpolateTuple's sum: weights times values in double.
+  void write(const Source& s, std::size_t index, float badness, vtkIdList* ids,
+             const std::vector<double>& weights) {
+    best_[index] = badness;
+    const vtkIdType n = ids->GetNumberOfIds();
+    for (std::size_t a = 0; a < s.arrays.size(); ++a) {
+      const ArrayView& v = s.arrays[a];
+      float* out = &(*values_)[a][index * std::size_t(v.components)];
+      for (int c = 0; c < v.components; ++c) {
+        double sum = 0.0;
+        for (vtkIdType i = 0; i < n; ++i)
+          sum += weights[std::size_t(i)] * v.at(ids->GetId(i), c);
+        out[c] = static_cast<float>(sum);
+      }
+    }
+  }
+
+  UniformGrid grid_;
+  std::vector<Source> sources_;
+  std::vector<int> components_;
+  std::uint64_t cells_ = 0;
+  int maxCellSize_ = 0;
+  int axis_ = 0;
+  Workspace workspace_;
+  std::size_t slabs_ = 1;
+  std::vector<int> slabOf_, slabBegin_;
+  std::vector<std::size_t> slabStart_;
+  std::vector<std::uint32_t> entries_;
+  std::vector<float> best_;  // per grid point: how far outside its cell it lies
+  std::vector<std::vector<float>>* values_ = nullptr;
+};
+
+}  // namespace
+
+ResampledArrays resampleMeshes(std::span<const MeshSource> sources, const UniformGrid& grid,
+                               const std::string& what) {
+  for (int a = 0; a < 3; ++a)
+    if (grid.dims[a] < 1)
+      throw Error(concat("resampling: ", grid.dims[a], " points along ", "xyz"[a],
+                         "; expected at least one"));
+  if (sources.empty()) throw Error("resampling: no dataset to resample");
+  return Resampler(sources, grid).run(what);
+}
+
+}  // namespace sandstorm

@@ -1,0 +1,339 @@
+#include "core/io/vector_array_choice.h"
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include <vtkCellData.h>
+#include <vtkCellDataToPointData.h>
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+
+#include "core/io/vtk_message_trap.h"
+#include "core/util/error.h"
+#include "core/util/log.h"
+
+namespace sandstorm {
+namespace {
+
+bool isNumeric(vtkAbstractArray* a) {
+  return vtkDataArray::SafeDownCast(a) != nullptr;
+}
+
+// Named numeric arrays of one location with `components` components, in file order.
+std::vector<std::string> arraysWith(vtkFieldData* fd, int components) {
+  std::vector<std::string> names;
+  for (int i = 0; i < fd->GetNumberOfArrays(); ++i) {
+    vtkAbstractArray* a = fd->GetAbstractArray(i);
+    if (isNumeric(a) && a->GetNumberOfComponents() == components && a->GetName() &&
+        !std::string_view(a->GetName()).starts_with("vtk"))
+      names.emplace_back(a->GetName());
+  }
+  return names;
+}
+
+// Names across blocks, each once, in the order first met.
+void addUnique(std::vector<std::string>& to, const std::vector<std::string>& names) {
+  for (const std::string& n : names)
+    if (std::find(to.begin(), to.end(), n) == to.end()) to.push_back(n);
+}
+
+std::vector<std::string> splitComponents(const std::string& text) {
+  std::vector<std::string> parts;
+  std::size_t start = 0;
+  for (;;) {
+    const std::size_t comma = text.find(',', start);
+    std::string part =
+        text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+    while (!part.empty() && part.front() == ' ')
+      part.erase(part.begin());
+    while (!part.empty() && part.back() == ' ')
+      part.pop_back();
+    parts.push_back(part);
+    if (comma == std::string::npos) break;
+    start = comma + 1;
+  }
+  return parts;
+}
+
+// Sets of three one-component arrays named as components of one vector.
+std::vector<std::vector<std::string>> componentSets(const std::vector<std::string>& scalars) {
+  const std::set<std::string> have(scalars.begin(), scalars.end());
+  std::vector<std::vector<std::string>> sets;
+  for (const char* uvw : {"u", "U"}) {
+    const std::string u = uvw, v = u == "u" ? "v" : "V", w = u == "u" ? "w" : "W";
+    if (have.count(u) && have.count(v) && have.count(w)) sets.push_back({u, v, w});
+  }
+  for (const std::string& name : scalars) {
+    if (name.size() < 2) continue;
+    const char last = name.back();
+    if (last != 'x' && last != 'X') continue;
+    const std::string stem = name.substr(0, name.size() - 1);
+    const bool upper = last == 'X';
+    const std::string y = stem + (upper ? "Y" : "y"), z = stem + (upper ? "Z" : "z");
+    if (have.count(y) && have.count(z)) sets.push_back({name, y, z});
+  }
+  return sets;
+}
+
+std::string joinedName(const std::vector<std::string>& parts) {
+  std::string stem = parts[0].substr(0, parts[0].size() - 1);
+  const bool alike = parts[1].substr(0, parts[1].size() - 1) == stem &&
+                     parts[2].substr(0, parts[2].size() - 1) == stem;
+  while (!stem.empty() && (stem.back() == '_' || stem.back() == '-' || stem.back() == '.'))
+    stem.pop_back();
+  return alike && !stem.empty() ? stem : "velocity";
+}
+
+std::string quotedList(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names)
+    out += concat(out.empty() ? "'" : ", '", n, "'");
+  return out;
+}
+
+vtkAbstractArray* findArray(vtkDataSet* data, const std::string& name, bool& cellData) {
+  if (vtkAbstractArray* a = data->GetPointData()->GetAbstractArray(name.c_str())) {
+    cellData = false;
+    return a;
+  }
+  cellData = true;
+  return data->GetCellData()->GetAbstractArray(name.c_str());
+}
+
+[[noreturn]] void ask(const std::string& file, const std::string& why,
+                      const std::vector<VtkBlock>& blocks) {
+  throw Error(concat(file, ": ", why,
+                     "; choose one by name (--array NAME, or the config's field.name; three "
+                     "components as --array u,v,w or field.name = [\"u\", \"v\", \"w\"]). "
+                     "Arrays present: ",
+                     arrayInventory(blocks)));
+}
+
+// The chosen name checked in every block: a 3-component numeric array where
+// it is present. True when some block has it.
+bool checkNamed(const std::vector<VtkBlock>& blocks, const std::string& name,
+                const std::string& file) {
+  bool found = false;
+  for (const VtkBlock& b : blocks) {
+    bool cell = false;
+    vtkAbstractArray* a = findArray(b.data, name, cell);
+    if (!a) continue;
+    if (!isNumeric(a))
+      throw Error(concat(file, ": array '", name, "' is not numeric; expected a 3-component ",
+                         "vector array. Arrays present: ", arrayInventory(blocks)));
+    if (a->GetNumberOfComponents() != 3)
+      throw Error(concat(file, ": array '", name, "' has ", a->GetNumberOfComponents(),
+                         " component(s); expected a 3-component vector array, or three "
+                         "components joined (--array u,v,w). Arrays present: ",
+                         arrayInventory(blocks)));
+    found = true;
+  }
+  return found;
+}
+
+bool checkComponents(const std::vector<VtkBlock>& blocks, const std::vector<std::string>& parts,
+                     const std::string& file) {
+  bool found = false;
+  for (const VtkBlock& b : blocks) {
+    int present = 0;
+    for (const std::string& part : parts) {
+      bool cell = false;
+      vtkAbstractArray* a = findArray(b.data, part, cell);
+      if (!a) continue;
+      ++present;
+      if (!isNumeric(a) || a->GetNumberOfComponents() != 1)
+        throw Error(concat(file, ": array '", part, "' has ", a->GetNumberOfComponents(),
+                           " components; a vector joined from components needs three "
+                           "one-component arrays. Arrays present: ",
+                           arrayInventory(blocks)));
+    }
+    if (present == 3) found = true;
+  }
+  return found;
+}
+
+vtkSmartPointer<vtkDataArray> joinComponents(vtkDataSet* data, const VectorChoice& choice,
+                                             bool& cellData) {
+  vtkDataArray* parts[3];
+  bool cell[3];
+  bool isDouble = false;
+  for (int c = 0; c < 3; ++c) {
+    parts[c] =
+        vtkDataArray::SafeDownCast(findArray(data, choice.components[std::size_t(c)], cell[c]));
+    if (!parts[c]) return nullptr;
+    isDouble = isDouble || parts[c]->GetDataType() == VTK_DOUBLE;
+  }
+  if (cell[0] != cell[1] || cell[0] != cell[2]) return nullptr;
+  cellData = cell[0];
+  vtkSmartPointer<vtkDataArray> out;
+  if (isDouble)
+    out = vtkSmartPointer<vtkDoubleArray>::New();
+  else
+    out = vtkSmartPointer<vtkFloatArray>::New();
+  out->SetName(choice.name.c_str());
+  out->SetNumberOfComponents(3);
+  const vtkIdType n = parts[0]->GetNumberOfTuples();
+  if (parts[1]->GetNumberOfTuples() != n || parts[2]->GetNumberOfTuples() != n) return nullptr;
+  out->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+    for (int c = 0; c < 3; ++c)
+      out->SetComponent(i, c, parts[c]->GetComponent(i, 0));
+  return out;
+}
+
+vtkSmartPointer<vtkDataSet> cellsToPoints(vtkDataSet* data, const std::filesystem::path& path) {
+  VtkMessageTrap trap(path);
+  vtkNew<vtkCellDataToPointData> filter;
+  trap.watch(filter);
+  filter->SetInputData(data);
+  filter->PassCellDataOff();
+  filter->Update();
+  trap.throwIfFailed("moving cell data to the points (vtkCellDataToPointData)");
+  return filter->GetOutput();
+}
+
+bool hasCellScalars(vtkDataSet* data) {
+  vtkCellData* cd = data->GetCellData();
+  for (int i = 0; i < cd->GetNumberOfArrays(); ++i)
+    if (vtkDataArray* a = cd->GetArray(i); a && a->GetNumberOfComponents() == 1 && a->GetName() &&
+                                           !std::string_view(a->GetName()).starts_with("vtk"))
+      return true;
+  return false;
+}
+
+}  // namespace
+
+std::string arrayInventory(const std::vector<VtkBlock>& blocks) {
+  std::vector<std::string> items;
+  auto list = [&](vtkFieldData* fd, const char* where) {
+    for (int i = 0; i < fd->GetNumberOfArrays(); ++i) {
+      vtkAbstractArray* a = fd->GetAbstractArray(i);
+      const std::string item =
+          concat("'", a->GetName() ? a->GetName() : "", "' (", a->GetNumberOfComponents(),
+                 a->GetNumberOfComponents() == 1 ? " component" : " components", where, ")");
+      if (std::find(items.begin(), items.end(), item) == items.end()) items.push_back(item);
+    }
+  };
+  for (const VtkBlock& b : blocks) {
+    list(b.data->GetPointData(), "");
+    list(b.data->GetCellData(), ", cell data");
+  }
+  std::string out;
+  for (const std::string& item : items)
+    out += (out.empty() ? "" : ", ") + item;
+  return out.empty() ? "none" : out;
+}
+
+VectorChoice chooseVectorArray(const std::vector<VtkBlock>& blocks,
+                               const std::filesystem::path& path, const LoadOptions& options,
+                               LoadReport& report) {
+  const std::string file = path.string();
+  VectorChoice choice;
+  const std::string& asked = options.arrayName;
+  if (asked.find(',') != std::string::npos) {
+    choice.components = splitComponents(asked);
+    if (choice.components.size() != 3 ||
+        std::any_of(choice.components.begin(), choice.components.end(),
+                    [](const std::string& s) { return s.empty(); }))
+      throw Error(concat(file, ": array '", asked,
+                         "': expected one array's name, or three components' names separated "
+                         "by commas (u,v,w)"));
+    if (!checkComponents(blocks, choice.components, file))
+      throw Error(concat(file, ": no block has all of the arrays ", quotedList(choice.components),
+                         "; arrays present: ", arrayInventory(blocks)));
+    choice.name = joinedName(choice.components);
+    report.notes.push_back(concat("vector '", choice.name, "' joined from the components ",
+                                  quotedList(choice.components)));
+    return choice;
+  }
+  if (!asked.empty()) {
+    if (!checkNamed(blocks, asked, file))
+      throw Error(
+          concat(file, ": no array named '", asked, "'; arrays present: ", arrayInventory(blocks)));
+    choice.name = asked;
+    return choice;
+  }
+  // The active vectors, where a block marks them.
+  for (const VtkBlock& b : blocks) {
+    vtkDataArray* active = b.data->GetPointData()->GetVectors();
+    if (!active || !active->GetName()) continue;
+    choice.name = active->GetName();
+    std::vector<std::string> all;
+    for (const VtkBlock& other : blocks)
+      addUnique(all, arraysWith(other.data->GetPointData(), 3));
+    if (all.size() > 1)
+      report.notes.push_back(concat("vector array '", choice.name,
+                                    "' (the file's active vectors) of ", quotedList(all),
+                                    "; --array NAME chooses another"));
+    checkNamed(blocks, choice.name, file);
+    return choice;
+  }
+  std::vector<std::string> pointVectors, cellVectors, pointScalars, cellScalars;
+  for (const VtkBlock& b : blocks) {
+    addUnique(pointVectors, arraysWith(b.data->GetPointData(), 3));
+    addUnique(cellVectors, arraysWith(b.data->GetCellData(), 3));
+    addUnique(pointScalars, arraysWith(b.data->GetPointData(), 1));
+    addUnique(cellScalars, arraysWith(b.data->GetCellData(), 1));
+  }
+  const std::vector<std::string>& vectors = pointVectors.empty() ? cellVectors : pointVectors;
+  if (vectors.size() == 1) {
+    choice.name = vectors.front();
+    return choice;
+  }
+  if (vectors.size() > 1) ask(file, "several vector arrays and none marked active", blocks);
+  std::vector<std::vector<std::string>> sets = componentSets(pointScalars);
+  if (sets.empty()) sets = componentSets(cellScalars);
+  if (sets.size() == 1) {
+    choice.components = sets.front();
+    choice.name = joinedName(choice.components);
+    report.notes.push_back(concat("no vector array: '", choice.name,
+                                  "' joined from the components ", quotedList(choice.components),
+                                  "; --array chooses others"));
+    return choice;
+  }
+  if (sets.size() > 1) {
+    std::string all;
+    for (const auto& set : sets)
+      all += concat(all.empty() ? "" : "; ", set[0], ",", set[1], ",", set[2]);
+    ask(file, concat("no vector array, and several sets of components (", all, ")"), blocks);
+  }
+  ask(file, "no 3-component (vector) array", blocks);
+}
+
+vtkSmartPointer<vtkDataSet> pointVectors(const VtkBlock& block, const VectorChoice& choice,
+                                         const std::filesystem::path& path, LoadReport& report) {
+  auto note = [&](const std::string& text) {
+    if (std::find(report.notes.begin(), report.notes.end(), text) == report.notes.end())
+      report.notes.push_back(text);
+  };
+  vtkSmartPointer<vtkDataSet> data = block.data;
+  bool cellData = false;
+  if (!choice.components.empty()) {
+    vtkSmartPointer<vtkDataArray> joined = joinComponents(block.data, choice, cellData);
+    if (!joined) return nullptr;
+    data.TakeReference(block.data->NewInstance());
+    data->ShallowCopy(block.data);
+    (cellData ? static_cast<vtkFieldData*>(data->GetCellData()) : data->GetPointData())
+        ->AddArray(joined);
+  } else if (!findArray(block.data, choice.name, cellData)) {
+    return nullptr;
+  }
+  if (cellData) {
+    note(concat("array '", choice.name, "' is cell data: moved to the points"));
+    return cellsToPoints(data, path);
+  }
+  // Scalar arrays in cell data (a simulation's pressure per cell) move to the
+  // points too, as ParaView's Cell Data to Point Data does, to colour by them.
+  if (hasCellScalars(data)) {
+    note("cell-data scalar arrays moved to the points");
+    return cellsToPoints(data, path);
+  }
+  return data;
+}
+
+}  // namespace sandstorm

@@ -1,0 +1,261 @@
+#include "core/io/vtk_xml_index.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include <vtkCompositeDataSet.h>
+#include <vtkDataObject.h>
+#include <vtkDataSet.h>
+#include <vtkInformation.h>
+#include <vtkNew.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
+#include <vtkXMLMultiBlockDataReader.h>
+#include <vtkXMLPImageDataReader.h>
+#include <vtkXMLPPolyDataReader.h>
+#include <vtkXMLPRectilinearGridReader.h>
+#include <vtkXMLPStructuredGridReader.h>
+#include <vtkXMLPUnstructuredGridReader.h>
+
+#include "core/field/vector_field.h"
+#include "core/io/vtk_blocks.h"
+#include "core/io/vtk_cell_check.h"
+#include "core/io/vtk_message_trap.h"
+#include "core/io/vtk_xml_check.h"
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr int kMaxDepth = 8;
+// An index lists files; one larger than this is not an index.
+constexpr std::uintmax_t kMaxIndexBytes = std::uintmax_t{64} << 20;
+
+// The serial format a parallel file's pieces have.
+FieldFormat pieceFormat(FieldFormat parallel) {
+  switch (parallel) {
+    case FieldFormat::VtkPImageData:
+      return FieldFormat::VtkImageData;
+    case FieldFormat::VtkPRectilinearGrid:
+      return FieldFormat::VtkRectilinearGrid;
+    case FieldFormat::VtkPStructuredGrid:
+      return FieldFormat::VtkStructuredGrid;
+    case FieldFormat::VtkPUnstructuredGrid:
+      return FieldFormat::VtkUnstructuredGrid;
+    case FieldFormat::VtkPPolyData:
+      return FieldFormat::VtkPolyData;
+    default:
+      break;
+  }
+  return FieldFormat::Unknown;
+}
+
+bool singleDataset(FieldFormat f) {
+  return f == FieldFormat::VtkImageData || f == FieldFormat::VtkRectilinearGrid ||
+         f == FieldFormat::VtkStructuredGrid || f == FieldFormat::VtkUnstructuredGrid ||
+         f == FieldFormat::VtkPolyData;
+}
+
+struct Entry {
+  std::string label;  // "Piece 2", "block 'inlet'"
+  std::string name;   // as the index writes it
+};
+
+// Every piece (Piece Source=) or dataset (DataSet file=) the index names, in order.
+void listEntries(vtkXMLDataElement* e, bool multiblock, std::vector<Entry>& out, int& pieces) {
+  for (int i = 0; i < e->GetNumberOfNestedElements(); ++i) {
+    vtkXMLDataElement* child = e->GetNestedElement(i);
+    const char* tag = child->GetName();
+    if (!multiblock && std::strcmp(tag, "Piece") == 0) {
+      ++pieces;
+      const char* source = child->GetAttribute("Source");
+      out.push_back({concat("Piece ", pieces), source ? source : ""});
+    } else if (multiblock && std::strcmp(tag, "DataSet") == 0) {
+      const char* file = child->GetAttribute("file");
+      if (!file) continue;  // an empty block
+      const char* name = child->GetAttribute("name");
+      const char* index = child->GetAttribute("index");
+      out.push_back({name ? concat("block '", name, "'")
+                          : concat("block ", index ? index : std::to_string(out.size())),
+                     file});
+    }
+    if (multiblock) listEntries(child, multiblock, out, pieces);
+  }
+}
+
+std::vector<Entry> parseIndex(const fs::path& path, FieldFormat format) {
+  const std::string file = path.string();
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(path, ec);
+  if (ec) throw Error(concat(file, ": cannot read its size: ", ec.message()));
+  if (size > kMaxIndexBytes)
+    throw Error(concat(file, ": ", size, " bytes; an index of pieces or blocks is far smaller"));
+  VtkMessageTrap trap(path);
+  vtkNew<vtkXMLDataParser> parser;
+  parser->SetFileName(file.c_str());
+  const int ok = parser->Parse();
+  trap.throwIfFailed("parsing the XML");
+  vtkXMLDataElement* root = parser->GetRootElement();
+  if (!ok || !root) throw Error(concat(file, ": is not well-formed XML"));
+  const bool multiblock = format == FieldFormat::VtkMultiBlock;
+  vtkXMLDataElement* top =
+      root->GetNumberOfNestedElements() > 0 ? root->GetNestedElement(0) : nullptr;
+  if (std::strcmp(root->GetName(), "VTKFile") != 0 || !top)
+    throw Error(concat(file, ": expected a <VTKFile> holding the dataset's element"));
+  std::vector<Entry> entries;
+  int pieces = 0;
+  listEntries(top, multiblock, entries, pieces);
+  if (entries.empty())
+    throw Error(concat(file, ": names no ",
+                       multiblock ? "block file (DataSet file=...)" : "piece (Piece Source=...)"));
+  return entries;
+}
+
+// The entry's file, checked to be a regular file inside the index's folder tree.
+fs::path resolve(const fs::path& index, const Entry& e) {
+  const std::string where = concat(index.string(), ": ", e.label);
+  if (e.name.empty()) throw Error(concat(where, " names no file"));
+  const fs::path named(e.name);
+  const fs::path base = index.parent_path();
+  // An index named without a folder has an empty parent: the working directory.
+  const fs::path absoluteBase = base.empty() ? fs::current_path() : fs::absolute(base);
+  const fs::path relative =
+      named.is_absolute()
+          ? named.lexically_normal().lexically_relative(absoluteBase.lexically_normal())
+          : named.lexically_normal();
+  if (relative.empty() || *relative.begin() == "..")
+    throw Error(concat(where, " names '", e.name, "', outside the folder of ",
+                       index.filename().string(), "; pieces and blocks live beside it or below"));
+  const fs::path target = base / relative;
+  std::error_code ec;
+  if (!fs::exists(target, ec))
+    throw Error(concat(where, " names '", e.name, "': no such file (", target.string(), ")"));
+  if (!fs::is_regular_file(target, ec))
+    throw Error(concat(where, " names '", e.name, "': not a regular file"));
+  if (fs::equivalent(target, index, ec)) throw Error(concat(where, " names the index itself"));
+  return target;
+}
+
+// Walks the index's files, nested .vtm too, into `leaves`.
+void collect(const fs::path& path, FieldFormat format, std::vector<fs::path>& chain,
+             std::vector<fs::path>& leaves) {
+  if (chain.size() > std::size_t(kMaxDepth))
+    throw Error(concat(path.string(), ": multiblock files nested more than ", kMaxDepth, " deep"));
+  std::error_code ec;
+  for (const fs::path& above : chain)
+    if (fs::equivalent(above, path, ec))
+      throw Error(concat(chain.back().string(), " names ", path.string(),
+                         ", which names it back: a loop of multiblock files"));
+  chain.push_back(path);
+  for (const Entry& e : parseIndex(path, format)) {
+    const fs::path target = resolve(path, e);
+    const FieldFormat kind = detectFieldFormat(target);
+    const std::string where = concat(path.string(), ": ", e.label, " (", e.name, ")");
+    if (format == FieldFormat::VtkMultiBlock) {
+      if (kind == FieldFormat::VtkMultiBlock) {
+        collect(target, kind, chain, leaves);
+        continue;
+      }
+      if (!singleDataset(kind))
+        throw Error(concat(where, " is a ", describe(kind),
+                           "; a .vtm's blocks are .vti, .vtr, .vts, .vtu, .vtp or .vtm files"));
+    } else if (kind != pieceFormat(format)) {
+      throw Error(concat(where, " is a ", describe(kind), "; the pieces of a ", describe(format),
+                         " are each a ", describe(pieceFormat(format))));
+    }
+    leaves.push_back(target);
+  }
+  chain.pop_back();
+}
+
+// A structured reader's whole extent, within the budget before it allocates.
+void checkWholeExtent(vtkAlgorithm* reader, const std::string& file, const LoadOptions& options) {
+  vtkInformation* info = reader->GetOutputInformation(0);
+  if (!info || !info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()))
+    throw Error(concat(file, ": declares no WholeExtent"));
+  int e[6];
+  info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), e);
+  double points = 1.0;
+  for (int a = 0; a < 3; ++a) {
+    const long long n = (long long)e[2 * a + 1] - e[2 * a] + 1;
+    if (n <= 0)
+      throw Error(concat(file, ": WholeExtent along ", "xyz"[a], " is ", e[2 * a], "..",
+                         e[2 * a + 1], "; expected at least one point"));
+    points *= double(n);
+  }
+  if (points > double(VectorField::kMaxPoints) || points * 12.0 > double(options.memoryBudget))
+    throw Error(concat(file, ": WholeExtent holds ", points,
+                       " points, beyond the memory budget of ", options.memoryBudget, " bytes"));
+}
+
+template <class Reader>
+vtkSmartPointer<vtkDataObject> read(const fs::path& path, const LoadOptions& options,
+                                    const std::string& what, bool structured) {
+  const std::string file = path.string();
+  VtkMessageTrap trap(path);
+  vtkNew<Reader> reader;
+  trap.watch(reader);
+  reader->SetFileName(file.c_str());
+  reader->UpdateInformation();
+  trap.throwIfFailed(concat("reading the structure of the ", what));
+  if (structured) checkWholeExtent(reader, file, options);
+  reader->Update();
+  trap.throwIfFailed(concat("reading the ", what));
+  vtkSmartPointer<vtkDataObject> out = reader->GetOutputDataObject(0);
+  if (!out) throw Error(concat(file, ": VTK read no ", what));
+  return out;
+}
+
+}  // namespace
+
+std::vector<fs::path> vtkXmlIndexFiles(const fs::path& path, FieldFormat format) {
+  std::vector<fs::path> chain, leaves;
+  collect(path, format, chain, leaves);
+  return leaves;
+}
+
+vtkSmartPointer<vtkDataObject> readVtkXmlIndex(const fs::path& path, FieldFormat format,
+                                               const LoadOptions& options, LoadReport& report) {
+  const std::string file = path.string();
+  const std::vector<fs::path> files = vtkXmlIndexFiles(path, format);
+  double bytes = 0.0;
+  for (const fs::path& f : files)
+    bytes += checkVtkXml(f, options.memoryBudget);
+  if (bytes > 2.0 * double(options.memoryBudget))
+    throw Error(concat(file, ": its ", files.size(), " files' arrays need ", bytes,
+                       " bytes together, beyond twice the memory budget of ", options.memoryBudget,
+                       " bytes"));
+  vtkSmartPointer<vtkDataObject> out;
+  switch (format) {
+    case FieldFormat::VtkPImageData:
+      out = read<vtkXMLPImageDataReader>(path, options, "parallel image data", true);
+      break;
+    case FieldFormat::VtkPRectilinearGrid:
+      out = read<vtkXMLPRectilinearGridReader>(path, options, "parallel rectilinear grid", true);
+      break;
+    case FieldFormat::VtkPStructuredGrid:
+      out = read<vtkXMLPStructuredGridReader>(path, options, "parallel structured grid", true);
+      break;
+    case FieldFormat::VtkPUnstructuredGrid:
+      out = read<vtkXMLPUnstructuredGridReader>(path, options, "parallel unstructured grid", false);
+      break;
+    case FieldFormat::VtkPPolyData:
+      out = read<vtkXMLPPolyDataReader>(path, options, "parallel polydata", false);
+      break;
+    case FieldFormat::VtkMultiBlock:
+      out = read<vtkXMLMultiBlockDataReader>(path, options, "multiblock dataset", false);
+      break;
+    default:
+      throw Error(concat(file, ": readVtkXmlIndex() got a ", describe(format)));
+  }
+  for (const VtkBlock& b : vtkBlocks(out))
+    checkVtkCells(b.data, b.name.empty() ? file : concat(file, ": ", b.name));
+  if (format != FieldFormat::VtkMultiBlock)
+    report.notes.push_back(concat(files.size(), " pieces merged"));
+  return out;
+}
+
+}  // namespace sandstorm

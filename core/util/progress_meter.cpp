@@ -1,0 +1,59 @@
+#include "core/util/progress_meter.h"
+
+#include <cstdio>
+
+#include "core/util/log.h"
+
+namespace sandstorm {
+namespace {
+
+std::int64_t nanoseconds(std::chrono::steady_clock::duration d) {
+  return std::chrono::duration_cast<std::chrono::nanoseconds>(d).count();
+}
+
+std::string shortNumber(double v) {
+  char text[32];
+  std::snprintf(text, sizeof text, v >= 1e5 ? "%.2g" : "%.0f", v);
+  return text;
+}
+
+}  // namespace
+
+ProgressMeter::ProgressMeter(std::string what, std::uint64_t total, std::string unit)
+    : what_(std::move(what)),
+      unit_(std::move(unit)),
+      total_(total),
+      start_(Clock::now()),
+      nextReportNs_(1'000'000'000) {}
+
+void ProgressMeter::add(std::uint64_t done) {
+  const std::uint64_t now = done_.fetch_add(done, std::memory_order_relaxed) + done;
+  const Clock::time_point t = Clock::now();
+  if (nanoseconds(t - start_) < nextReportNs_.load(std::memory_order_relaxed)) return;
+  std::unique_lock lock(mutex_, std::try_to_lock);
+  if (!lock.owns_lock()) return;
+  report(now, t);
+}
+
+void ProgressMeter::report(std::uint64_t done, Clock::time_point now) {
+  const double seconds = std::chrono::duration<double>(now - start_).count();
+  nextReportNs_.store(nanoseconds(now - start_) + 1'000'000'000, std::memory_order_relaxed);
+  const double rate = seconds > 0.0 ? double(done) / seconds : 0.0;
+  const double left = rate > 0.0 ? double(total_ - std::min(done, total_)) / rate : 0.0;
+  char tail[64];
+  std::snprintf(tail, sizeof tail, "%.1f s left", left);
+  log::info(what_, ": ", total_ ? int(100.0 * double(done) / double(total_)) : 100, "% (", done,
+            " of ", total_, " ", unit_, "), ", shortNumber(rate), " ", unit_, "/s, ", tail);
+  said_ = true;
+}
+
+void ProgressMeter::finish() {
+  std::lock_guard lock(mutex_);
+  if (!said_) return;
+  char seconds[32];
+  std::snprintf(seconds, sizeof seconds, "%.1f",
+                std::chrono::duration<double>(Clock::now() - start_).count());
+  log::info(what_, ": done, ", total_, " ", unit_, " in ", seconds, " s");
+}
+
+}  // namespace sandstorm
