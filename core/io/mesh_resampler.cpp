@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCellType.h>
 #include <vtkDataArray.h>
@@ -17,7 +18,10 @@
 #include <vtkMath.h>
 #include <vtkNew.h>
 #include <vtkPointSet.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkTypeInt32Array.h>
+#include <vtkTypeInt64Array.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
@@ -57,14 +61,22 @@ struct Source {
   vtkUnsignedCharArray* ghosts = nullptr;
   std::vector<ArrayView> arrays;
   std::uint64_t firstCell = 0;  // of all sources' cells together
+  // An unstructured grid's connectivity and points, read in place.
+  const vtkTypeInt64* offsets64 = nullptr;
+  const vtkTypeInt64* connectivity64 = nullptr;
+  const vtkTypeInt32* offsets32 = nullptr;
+  const vtkTypeInt32* connectivity32 = nullptr;
+  const float* pointsF = nullptr;
+  const double* pointsD = nullptr;
 };
 
 // What one thread needs to look at cells.
 struct Workspace {
   vtkNew<vtkGenericCell> cell;
-  vtkNew<vtkIdList> ids;
+  vtkNew<vtkIdList> list;
+  std::vector<vtkIdType> ids;   // the cell's points
+  std::vector<double> corners;  // their coordinates, x y z each
   std::vector<double> weights;
-  std::vector<double> corners;  // the cell's points, x y z each
 };
 
 bool isGhost(const Source& s, vtkIdType cell) {
@@ -76,15 +88,29 @@ bool isGhost(const Source& s, vtkIdType cell) {
 // The cell's points (ids into w.ids, coordinates into w.corners) and its box.
 // False for a cell without points.
 bool cellBounds(const Source& s, vtkIdType cell, Workspace& w, glm::dvec3& lo, glm::dvec3& hi) {
-  s.data->GetCellPoints(cell, w.ids);
-  const vtkIdType n = w.ids->GetNumberOfIds();
+  if (s.offsets64) {
+    w.ids.assign(s.connectivity64 + s.offsets64[cell], s.connectivity64 + s.offsets64[cell + 1]);
+  } else if (s.offsets32) {
+    w.ids.assign(s.connectivity32 + s.offsets32[cell], s.connectivity32 + s.offsets32[cell + 1]);
+  } else {
+    s.data->GetCellPoints(cell, w.list);
+    w.ids.assign(w.list->begin(), w.list->end());
+  }
+  const std::size_t n = w.ids.size();
   if (n == 0) return false;
-  w.corners.resize(std::size_t(3 * n));
+  w.corners.resize(3 * n);
   lo = glm::dvec3(std::numeric_limits<double>::max());
   hi = -lo;
-  for (vtkIdType i = 0; i < n; ++i) {
-    double* x = &w.corners[std::size_t(3 * i)];
-    s.data->GetPoint(w.ids->GetId(i), x);
+  for (std::size_t i = 0; i < n; ++i) {
+    double* x = &w.corners[3 * i];
+    const std::size_t p = 3 * std::size_t(w.ids[i]);
+    if (s.pointsF) {
+      x[0] = double(s.pointsF[p]), x[1] = double(s.pointsF[p + 1]), x[2] = double(s.pointsF[p + 2]);
+    } else if (s.pointsD) {
+      x[0] = s.pointsD[p], x[1] = s.pointsD[p + 1], x[2] = s.pointsD[p + 2];
+    } else {
+      s.data->GetPoint(w.ids[i], x);
+    }
     for (int a = 0; a < 3; ++a) {
       lo[a] = std::min(lo[a], x[a]);
       hi[a] = std::max(hi[a], x[a]);
@@ -132,7 +158,23 @@ class Resampler {
         poly->BuildCells();
       if (m.data->GetNumberOfCells() > 0) m.data->GetCell(0, workspace_.cell);
       m.data->ComputeBounds();
-      s.tetraFastPath = vtkUnstructuredGrid::SafeDownCast(m.data) != nullptr;
+      if (auto* grid = vtkUnstructuredGrid::SafeDownCast(m.data)) {
+        s.tetraFastPath = true;
+        if (vtkCellArray* cells = grid->GetCells(); cells && cells->GetNumberOfCells() > 0) {
+          if (cells->IsStorage64Bit()) {
+            s.offsets64 = cells->GetOffsetsArray64()->GetPointer(0);
+            s.connectivity64 = cells->GetConnectivityArray64()->GetPointer(0);
+          } else {
+            s.offsets32 = cells->GetOffsetsArray32()->GetPointer(0);
+            s.connectivity32 = cells->GetConnectivityArray32()->GetPointer(0);
+          }
+        }
+      }
+      if (auto* set = vtkPointSet::SafeDownCast(m.data); set && set->GetPoints()) {
+        vtkDataArray* xyz = set->GetPoints()->GetData();
+        if (auto* f = vtkFloatArray::SafeDownCast(xyz)) s.pointsF = f->GetPointer(0);
+        if (auto* d = vtkDoubleArray::SafeDownCast(xyz)) s.pointsD = d->GetPointer(0);
+      }
       s.ghosts = vtkUnsignedCharArray::SafeDownCast(
           m.data->GetCellData()->GetArray(vtkDataSetAttributes::GhostArrayName()));
       if (s.ghosts && s.ghosts->GetNumberOfTuples() != m.data->GetNumberOfCells())
@@ -261,7 +303,7 @@ class Resampler {
     box.hi[axis_] = std::min(box.hi[axis_], slabBegin_[std::size_t(slab) + 1] - 1);
     if (box.empty()) return;
     const int type = s.data->GetCellType(cell);
-    if (s.tetraFastPath && type == VTK_TETRA && w.ids->GetNumberOfIds() == 4) {
+    if (s.tetraFastPath && type == VTK_TETRA && w.ids.size() == 4) {
       visitTetra(s, box, w);
       return;
     }
@@ -275,13 +317,15 @@ class Resampler {
       const int inside =
           w.cell->EvaluatePosition(x, closest, subId, pcoords, dist2, w.weights.data());
       if (inside != 1) return;
-      double badness = w.cell->GetParametricDistance(pcoords);
+      // vtkGenericCell does not forward this one: ask the cell it holds.
+      double badness = w.cell->GetRepresentativeCell()->GetParametricDistance(pcoords);
       if (dimension < 3) {
         if (dist2 > tolerance2) return;
         badness += diagonal > 0.0 ? std::sqrt(dist2) / diagonal : 0.0;
       }
       if (badness < double(best_[index]))
-        write(s, index, float(badness), w.cell->GetPointIds(), w.weights);
+        write(s, index, float(badness), w.cell->GetPointIds()->GetPointer(0),
+              std::size_t(w.cell->GetNumberOfPoints()), w.weights);
     });
   }
 
@@ -313,7 +357,7 @@ class Resampler {
       w.weights[1] = r;
       w.weights[2] = s1;
       w.weights[3] = t;
-      write(s, index, float(badness), w.ids, w.weights);
+      write(s, index, float(badness), w.ids.data(), 4, w.weights);
     });
   }
 
@@ -335,17 +379,16 @@ class Resampler {
   }
 
   // vtkDataArray::InterpolateTuple's sum: weights times values in double.
-  void write(const Source& s, std::size_t index, float badness, vtkIdList* ids,
+  void write(const Source& s, std::size_t index, float badness, const vtkIdType* ids, std::size_t n,
              const std::vector<double>& weights) {
     best_[index] = badness;
-    const vtkIdType n = ids->GetNumberOfIds();
     for (std::size_t a = 0; a < s.arrays.size(); ++a) {
       const ArrayView& v = s.arrays[a];
       float* out = &(*values_)[a][index * std::size_t(v.components)];
       for (int c = 0; c < v.components; ++c) {
         double sum = 0.0;
-        for (vtkIdType i = 0; i < n; ++i)
-          sum += weights[std::size_t(i)] * v.at(ids->GetId(i), c);
+        for (std::size_t i = 0; i < n; ++i)
+          sum += weights[i] * v.at(ids[i], c);
         out[c] = static_cast<float>(sum);
       }
     }

@@ -1,0 +1,372 @@
+// Meshes written by VTK's own writers (unstructured grids, polydata, the
+// parallel files' pieces with their ghost cells, multiblock files) load with
+// the analytic field's values, and the validity mask marks what lies outside
+// the mesh.
+#include <gtest/gtest.h>
+
+#include <vtkArrayCalculator.h>
+#include <vtkCellArray.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkExtractUnstructuredGridPiece.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkPolyData.h>
+#include <vtkRTAnalyticSource.h>
+#include <vtkXMLMultiBlockDataWriter.h>
+#include <vtkXMLPImageDataWriter.h>
+#include <vtkXMLPUnstructuredGridWriter.h>
+#include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLUnstructuredGridWriter.h>
+
+#include "core/io/field_loader.h"
+#include "tests/io/io_test_util.h"
+#include "tests/io/mesh_test_util.h"
+
+namespace sandstorm {
+namespace {
+
+using test::asymmetric;
+
+// Trilinear sampling and tetrahedra both reproduce a linear field: only
+// float rounding remains (values up to about 7).
+constexpr double kExact = 1e-5;
+
+void writeVtu(vtkUnstructuredGrid* mesh, const std::filesystem::path& path, int mode,
+              bool zlib = false) {
+  vtkNew<vtkXMLUnstructuredGridWriter> w;
+  w->SetInputData(mesh);
+  w->SetFileName(path.c_str());
+  w->SetDataMode(mode);
+  if (zlib)
+    w->SetCompressorTypeToZLib();
+  else
+    w->SetCompressorTypeToNone();
+  ASSERT_EQ(w->Write(), 1);
+}
+
+bool hasNote(const LoadReport& report, const std::string& part) {
+  for (const std::string& note : report.notes)
+    if (note.find(part) != std::string::npos) return true;
+  return false;
+}
+
+TEST(MeshFormats, UnstructuredXmlInEveryDataModeWithItsNotchOutside) {
+  const auto dir = test::scratch();
+  const auto mesh = test::lMesh(4, asymmetric);
+  LoadOptions options;
+  options.resolution = {21, 21, 11};
+  struct Mode {
+    const char* name;
+    int mode;
+    bool zlib;
+  };
+  for (const Mode m :
+       {Mode{"ascii", vtkXMLWriter::Ascii, false}, Mode{"binary", vtkXMLWriter::Binary, false},
+        Mode{"appended", vtkXMLWriter::Appended, false},
+        Mode{"appended-zlib", vtkXMLWriter::Appended, true}}) {
+    SCOPED_TRACE(m.name);
+    const auto path = dir / (std::string(m.name) + ".vtu");
+    writeVtu(mesh, path, m.mode, m.zlib);
+    LoadReport report;
+    const VectorField f = loadField(path, options, &report);
+    EXPECT_EQ(report.arrayName, "velocity");
+    EXPECT_TRUE(report.resampled);
+    EXPECT_EQ(report.cells, std::uint64_t(mesh->GetNumberOfCells()));
+    EXPECT_EQ(f.dims(), glm::ivec3(21, 21, 11));
+    EXPECT_EQ(f.bounds().min, glm::vec3(0.0f));
+    EXPECT_EQ(f.bounds().max, glm::vec3(2.0f, 2.0f, 1.0f));
+    test::expectL(f, asymmetric, kExact);
+    // The notch: 10 x 10 columns of 11 points beyond x = 1 and y = 1.
+    EXPECT_EQ(report.outside, std::size_t(10 * 10 * 11));
+  }
+}
+
+// Without field.resolution a mesh is sampled at its cells' size: the Kuhn
+// tetrahedra of a 0.25 m hexahedron have that box, so 9 x 9 x 5 points.
+TEST(MeshFormats, AMeshIsSampledAtItsCellsSizeByDefault) {
+  const auto dir = test::scratch();
+  const auto path = dir / "l.vtu";
+  writeVtu(test::lMesh(4, asymmetric), path, vtkXMLWriter::Appended);
+  LoadReport report;
+  const VectorField f = loadField(path, {}, &report);
+  EXPECT_EQ(f.dims(), glm::ivec3(9, 9, 5));
+  EXPECT_TRUE(hasNote(report, "field.resolution"));
+  test::expectL(f, asymmetric, kExact);
+}
+
+// Cell data (a finite-volume code's cell values) becomes point data as
+// ParaView's Cell Data to Point Data makes it: each mesh point takes the mean
+// of the cells around it. For a field with gradient norm at most L, a point's
+// value then differs from the field there by at most L times the farthest
+// centroid of its cells; interpolation adds nothing for a linear field.
+TEST(MeshFormats, CellDataBecomesPointDataWithinTheMeanOfItsCells) {
+  const auto dir = test::scratch();
+  const auto mesh = test::lMesh(6, asymmetric, /*cells=*/true);
+  const auto path = dir / "cells.vtu";
+  writeVtu(mesh, path, vtkXMLWriter::Appended, true);
+  // The farthest any cell's centroid lies from one of its points.
+  double reach = 0.0;
+  for (vtkIdType c = 0; c < mesh->GetNumberOfCells(); ++c) {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    mesh->GetCellPoints(c, n, ids);
+    glm::dvec3 corners[4], centroid(0.0);
+    for (vtkIdType i = 0; i < n; ++i) {
+      double x[3];
+      mesh->GetPoint(ids[i], x);
+      corners[i] = {x[0], x[1], x[2]};
+      centroid += corners[i] / double(n);
+    }
+    for (vtkIdType i = 0; i < n; ++i)
+      reach = std::max(reach, glm::length(corners[i] - centroid));
+  }
+  const double gradient = 3.0;  // the asymmetric field's largest stretch (its z)
+  LoadOptions options;
+  options.resolution = {13, 13, 7};
+  LoadReport report;
+  const VectorField f = loadField(path, options, &report);
+  EXPECT_TRUE(hasNote(report, "cell data: moved to the points"));
+  test::expectL(f, asymmetric, gradient * reach + kExact);
+  // Where every cell around a mesh point is its mirror image (an unjittered
+  // corner of the box's top face is not; the box's middle is close to), the
+  // mean lands near the point: well inside the bound.
+  EXPECT_LT(
+      glm::length(glm::dvec3(f.at(6, 3, 3)) - asymmetric(glm::dvec3(f.pointPosition(6, 3, 3)))),
+      0.5 * gradient * reach);
+}
+
+// Polydata carrying vectors on a plane (a PIV sheet): a grid one point thick.
+TEST(MeshFormats, PolyDataOnAPlaneGivesAFlatGrid) {
+  const auto dir = test::scratch();
+  vtkNew<vtkPolyData> sheet;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> triangles;
+  vtkNew<vtkFloatArray> v;
+  v->SetName("velocity");
+  v->SetNumberOfComponents(3);
+  const int n = 6;
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const glm::dvec3 p(-1.0 + 0.5 * i, 2.0 + 0.25 * j, 0.75);
+      points->InsertNextPoint(p.x, p.y, p.z);
+      const glm::dvec3 a = asymmetric(p);
+      v->InsertNextTuple3(a.x, a.y, a.z);
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const vtkIdType a = i + (n + 1) * j, b = a + 1, c = a + n + 1, d = c + 1;
+      const vtkIdType t1[3] = {a, b, d}, t2[3] = {a, d, c};
+      triangles->InsertNextCell(3, t1);
+      triangles->InsertNextCell(3, t2);
+    }
+  sheet->SetPoints(points);
+  sheet->SetPolys(triangles);
+  sheet->GetPointData()->SetVectors(v);
+  const auto path = dir / "sheet.vtp";
+  vtkNew<vtkXMLPolyDataWriter> w;
+  w->SetInputData(sheet);
+  w->SetFileName(path.c_str());
+  ASSERT_EQ(w->Write(), 1);
+  LoadOptions options;
+  options.resolution = {13, 7, 1};
+  const VectorField f = loadField(path, options);
+  EXPECT_EQ(f.dims(), glm::ivec3(13, 7, 1));
+  EXPECT_EQ(f.invalidCount(), std::size_t(0));
+  for (int j = 0; j < 7; ++j)
+    for (int i = 0; i < 13; ++i) {
+      const glm::dvec3 p(f.pointPosition(i, j, 0));
+      EXPECT_NEAR(p.z, 0.75, 1e-6);
+      ASSERT_LE(glm::length(glm::dvec3(f.at(i, j, 0)) - asymmetric(p)), kExact);
+    }
+  // By default: flat along z, spaced as the triangles' longest sides (0.5 m).
+  EXPECT_EQ(loadField(path).dims(), glm::ivec3(7, 4, 1));
+}
+
+// Pieces a parallel run wrote, each with a layer of ghost cells it shares with
+// its neighbours (VTK's piece extractor and parallel writer, as a simulation
+// on three ranks writes them), load as the whole mesh does.
+TEST(MeshFormats, ParallelUnstructuredPiecesWithGhostCellsMergeIntoTheWholeMesh) {
+  const auto dir = test::scratch();
+  const auto mesh = test::lMesh(4, asymmetric);
+  const auto whole = dir / "whole.vtu";
+  writeVtu(mesh, whole, vtkXMLWriter::Appended);
+  vtkNew<vtkExtractUnstructuredGridPiece> pieces;
+  pieces->SetInputData(mesh);
+  vtkNew<vtkXMLPUnstructuredGridWriter> w;
+  w->SetInputConnection(pieces->GetOutputPort());
+  const auto path = dir / "parallel.pvtu";
+  w->SetFileName(path.c_str());
+  w->SetNumberOfPieces(3);
+  w->SetStartPiece(0);
+  w->SetEndPiece(2);
+  w->SetGhostLevel(1);
+  ASSERT_EQ(w->Write(), 1);
+  ASSERT_TRUE(std::filesystem::exists(dir / "parallel_2.vtu"));
+  ASSERT_NE(test::readAll(dir / "parallel_1.vtu").find("vtkGhostType"), std::string::npos);
+
+  LoadOptions options;
+  options.resolution = {21, 21, 11};
+  LoadReport report;
+  const VectorField f = loadField(path, options, &report);
+  const VectorField g = loadField(whole, options);
+  EXPECT_TRUE(hasNote(report, "3 pieces merged"));
+  EXPECT_GT(report.cells, std::uint64_t(mesh->GetNumberOfCells()));  // the ghosts, twice
+  test::expectL(f, asymmetric, kExact);
+  ASSERT_EQ(f.pointCount(), g.pointCount());
+  for (std::size_t p = 0; p < f.pointCount(); ++p)
+    ASSERT_LE(glm::length(f.values()[p] - g.values()[p]), 1e-6f) << "point " << p;
+}
+
+// Image data in pieces (VTK's streaming source, pieces by extent).
+TEST(MeshFormats, ParallelImagePiecesMergeIntoOneGrid) {
+  const auto dir = test::scratch();
+  vtkNew<vtkRTAnalyticSource> source;
+  source->SetWholeExtent(0, 8, 0, 6, 0, 4);
+  vtkNew<vtkArrayCalculator> calc;
+  calc->SetInputConnection(source->GetOutputPort());
+  calc->AddCoordinateScalarVariable("x", 0);
+  calc->AddCoordinateScalarVariable("y", 1);
+  calc->AddCoordinateScalarVariable("z", 2);
+  calc->SetFunction("(x+1)*iHat + (2*y-2)*jHat + (3*z+0.5)*kHat");
+  calc->SetResultArrayName("velocity");
+  vtkNew<vtkXMLPImageDataWriter> w;
+  w->SetInputConnection(calc->GetOutputPort());
+  const auto path = dir / "image.pvti";
+  w->SetFileName(path.c_str());
+  w->SetNumberOfPieces(3);
+  w->SetStartPiece(0);
+  w->SetEndPiece(2);
+  ASSERT_EQ(w->Write(), 1);
+  ASSERT_NE(test::readAll(dir / "image_0.vti"), test::readAll(dir / "image_1.vti"));
+  LoadOptions options;
+  options.arrayName = "velocity";
+  LoadReport report;
+  const VectorField f = loadField(path, options, &report);
+  EXPECT_EQ(f.dims(), glm::ivec3(9, 7, 5));
+  EXPECT_FALSE(report.resampled);
+  for (int k = 0; k < 5; ++k)
+    for (int j = 0; j < 7; ++j)
+      for (int i = 0; i < 9; ++i)
+        ASSERT_LE(glm::length(glm::dvec3(f.at(i, j, k)) - asymmetric(glm::dvec3(i, j, k))), kExact);
+}
+
+// A .vtm of an unstructured block and an image block beside it, both
+// carrying the array, and a block that does not: the first two make one
+// field, the third is named in the report.
+TEST(MeshFormats, MultiblockBlocksOfAnyKindMergeIntoOneField) {
+  const auto dir = test::scratch();
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  blocks->SetNumberOfBlocks(3);
+  blocks->SetBlock(0, test::lMesh(4, asymmetric));
+  blocks->GetMetaData(0u)->Set(vtkCompositeDataSet::NAME(), "fluid");
+  vtkNew<vtkImageData> box;  // x in [2, 3], beside the L
+  box->SetDimensions(5, 9, 5);
+  box->SetOrigin(2.0, 0.0, 0.0);
+  box->SetSpacing(0.25, 0.25, 0.25);
+  vtkNew<vtkFloatArray> v;
+  v->SetName("velocity");
+  v->SetNumberOfComponents(3);
+  v->SetNumberOfTuples(box->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < box->GetNumberOfPoints(); ++p) {
+    double x[3];
+    box->GetPoint(p, x);
+    const glm::dvec3 a = asymmetric({x[0], x[1], x[2]});
+    v->SetTuple3(p, a.x, a.y, a.z);
+  }
+  box->GetPointData()->AddArray(v);
+  blocks->SetBlock(1, box);
+  blocks->GetMetaData(1u)->Set(vtkCompositeDataSet::NAME(), "inlet");
+  vtkNew<vtkImageData> solid;
+  solid->SetDimensions(2, 2, 2);
+  solid->SetOrigin(0.0, 0.0, 5.0);
+  vtkNew<vtkFloatArray> temperature;
+  temperature->SetName("temperature");
+  temperature->SetNumberOfTuples(8);
+  temperature->Fill(300.0f);
+  solid->GetPointData()->AddArray(temperature);
+  blocks->SetBlock(2, solid);
+  blocks->GetMetaData(2u)->Set(vtkCompositeDataSet::NAME(), "wall");
+  const auto path = dir / "case.vtm";
+  vtkNew<vtkXMLMultiBlockDataWriter> w;
+  w->SetInputData(blocks);
+  w->SetFileName(path.c_str());
+  ASSERT_EQ(w->Write(), 1);
+
+  LoadOptions options;
+  options.resolution = {25, 9, 5};
+  LoadReport report;
+  const VectorField f = loadField(path, options, &report);
+  EXPECT_EQ(f.bounds().min, glm::vec3(0.0f));
+  EXPECT_EQ(f.bounds().max, glm::vec3(3.0f, 2.0f, 1.0f));  // the wall block is left out
+  EXPECT_TRUE(hasNote(report, "'wall'"));
+  ASSERT_EQ(report.blocks.size(), 3u);
+  EXPECT_NE(report.blocks[0].find("fluid: unstructured grid"), std::string::npos);
+  for (int k = 0; k < 5; ++k)
+    for (int j = 0; j < 9; ++j)
+      for (int i = 0; i < 25; ++i) {
+        const glm::dvec3 p(f.pointPosition(i, j, k));
+        const bool in = test::inL(p, 1e-6) || p.x >= 2.0 - 1e-6;
+        ASSERT_EQ(f.valid(i, j, k), in) << p.x << " " << p.y << " " << p.z;
+        if (in) ASSERT_LE(glm::length(glm::dvec3(f.at(i, j, k)) - asymmetric(p)), kExact);
+      }
+}
+
+// Three one-component arrays (what many codes write) joined into a vector.
+TEST(MeshFormats, ComponentsAreJoinedIntoAVector) {
+  const auto dir = test::scratch();
+  auto mesh = test::lMesh(2, asymmetric);
+  vtkSmartPointer<vtkDataArray> velocity = mesh->GetPointData()->GetVectors();
+  auto component = [&](const char* name, int c, double scale) {
+    vtkNew<vtkDoubleArray> a;
+    a->SetName(name);
+    a->SetNumberOfTuples(mesh->GetNumberOfPoints());
+    for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p)
+      a->SetValue(p, scale * velocity->GetComponent(p, c));
+    mesh->GetPointData()->AddArray(a);
+  };
+  component("u", 0, 1.0);
+  component("v", 1, 1.0);
+  component("w", 2, 1.0);
+  mesh->GetPointData()->RemoveArray("velocity");
+  const auto path = dir / "uvw.vtu";
+  writeVtu(mesh, path, vtkXMLWriter::Appended);
+  LoadOptions options;
+  options.resolution = {9, 9, 5};
+
+  LoadReport report;
+  test::expectL(loadField(path, options, &report), asymmetric, kExact);  // found by itself
+  EXPECT_TRUE(hasNote(report, "joined from the components 'u', 'v', 'w'"));
+  EXPECT_EQ(report.arrayName, "velocity");
+
+  options.arrayName = "w, v,u";  // as asked: z, y, x
+  const VectorField swapped = loadField(path, options);
+  const glm::vec3 at = swapped.at(2, 3, 1);
+  const glm::dvec3 a = asymmetric(glm::dvec3(swapped.pointPosition(2, 3, 1)));
+  EXPECT_NEAR(at.x, a.z, kExact);
+  EXPECT_NEAR(at.z, a.x, kExact);
+
+  options.arrayName = "u,v";
+  test::expectError([&] { loadField(path, options); }, {path.string(), "three components"});
+  options.arrayName = "u,v,q";
+  test::expectError([&] { loadField(path, options); }, {path.string(), "'q'", "'u' (1 component)"});
+
+  // Two sets of components: the user chooses.
+  component("vel_x", 0, 2.0);
+  component("vel_y", 1, 2.0);
+  component("vel_z", 2, 2.0);
+  writeVtu(mesh, path, vtkXMLWriter::Appended);
+  options.arrayName.clear();
+  test::expectError(
+      [&] { loadField(path, options); },
+      {path.string(), "several sets of components", "u,v,w", "vel_x,vel_y,vel_z", "--array u,v,w"});
+  options.arrayName = "vel_x,vel_y,vel_z";
+  report = {};
+  const VectorField doubled = loadField(path, options, &report);
+  EXPECT_EQ(report.arrayName, "vel");
+  EXPECT_NEAR(doubled.at(2, 3, 1).y, 2.0 * asymmetric(glm::dvec3(doubled.pointPosition(2, 3, 1))).y,
+              2 * kExact);
+}
+
+}  // namespace
+}  // namespace sandstorm
