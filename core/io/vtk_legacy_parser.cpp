@@ -5,8 +5,10 @@
 #include <cctype>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <optional>
 
 #include "core/field/vector_field.h"
@@ -14,7 +16,19 @@
 
 namespace sandstorm {
 
+long long LegacyVtkData::pointCount() const {
+  if (pointSet()) return (long long)(points.size() / 3);
+  return dims[0] * dims[1] * dims[2];
+}
+
 long long LegacyVtkData::cellCount() const {
+  if (type == Type::UnstructuredGrid) return cells.count();
+  if (type == Type::PolyData) {
+    long long n = 0;
+    for (const LegacyCells& c : polyCells)
+      n += c.count();
+    return n;
+  }
   long long cells = 1;
   for (long long n : dims)
     cells *= n > 1 ? n - 1 : 1;
@@ -143,6 +157,8 @@ class Parser {
     const std::string_view first = readLine();
     if (first.rfind("# vtk DataFile Version", 0) != 0)
       fail("this is not a legacy VTK file; expected '# vtk DataFile Version x.x' on line 1");
+    // 5.x writes cells as OFFSETS and CONNECTIVITY, earlier versions as counted lists.
+    version_ = std::atof(std::string(first.substr(22)).c_str());
     if (at_ >= text_.size()) fail("the file ends before its title line (line 2)");
     readLine();  // the title: anything
     const std::string mode = lower(token("ASCII or BINARY"));
@@ -157,13 +173,145 @@ class Parser {
       data_.type = LegacyVtkData::Type::RectilinearGrid;
     else if (type == "structured_grid")
       data_.type = LegacyVtkData::Type::StructuredGrid;
+    else if (type == "unstructured_grid")
+      data_.type = LegacyVtkData::Type::UnstructuredGrid;
+    else if (type == "polydata")
+      data_.type = LegacyVtkData::Type::PolyData;
     else
       fail(concat("DATASET ", last_,
-                  " is not a grid; expected STRUCTURED_POINTS, RECTILINEAR_GRID or "
-                  "STRUCTURED_GRID"));
+                  " is not one Sandstorm reads; expected STRUCTURED_POINTS, RECTILINEAR_GRID, "
+                  "STRUCTURED_GRID, UNSTRUCTURED_GRID or POLYDATA"));
+  }
+
+  // POINTS, cells and their types: an unstructured grid's or polydata's geometry.
+  void pointSetGeometry() {
+    bool points = false, cells = false, types = false;
+    std::array<bool, 4> lists{};
+    static const char* kLists[4] = {"vertices", "lines", "polygons", "triangle_strips"};
+    const bool grid = data_.type == LegacyVtkData::Type::UnstructuredGrid;
+    while (skipSpace(), at_ < text_.size()) {
+      const std::size_t before = at_;
+      const std::string key = keyword("the dataset's geometry");
+      if (key == "point_data" || key == "cell_data") {
+        at_ = before;
+        break;
+      }
+      if (key == "points") {
+        if (points) fail("a second POINTS");
+        points = true;
+        const long long n = integer("POINTS count", 0, 1LL << 40);
+        if (double(n) * 12.0 > double(budget_))
+          fail(concat("POINTS ", n, " exceed the memory budget of ", budget_, " bytes"));
+        const std::string type = keyword("the points' type");
+        data_.points = values(type, 3 * n, "POINTS");
+      } else if (key == "field") {
+        token("the field data's name");
+        std::vector<LegacyArray> discard;
+        fieldArrays(discard, std::nullopt);
+      } else if (grid && key == "cells") {
+        if (cells) fail("a second CELLS");
+        cells = true;
+        data_.cells = cellList("CELLS");
+      } else if (grid && key == "cell_types") {
+        if (types) fail("a second CELL_TYPES");
+        types = true;
+        const long long n = integer("CELL_TYPES count", 0, 1LL << 40);
+        if (cells && n != data_.cells.count())
+          fail(concat("CELL_TYPES ", n, " but CELLS lists ", data_.cells.count(),
+                      " cells; expected the counts to agree"));
+        for (double t : values("int", n, "CELL_TYPES")) {
+          if (t < 0 || t > 255) fail(concat("cell type ", t, "; expected a VTK cell type, 0..255"));
+          data_.cellTypes.push_back(int(t));
+        }
+      } else if (!grid &&
+                 std::find(std::begin(kLists), std::end(kLists), key) != std::end(kLists)) {
+        const std::size_t list =
+            std::size_t(std::find(std::begin(kLists), std::end(kLists), key) - std::begin(kLists));
+        if (lists[list]) fail(concat("a second ", last_));
+        lists[list] = true;
+        data_.polyCells[list] = cellList(last_);
+      } else {
+        fail(concat("'", last_, "' in the ", lower(datasetName()), " geometry; expected POINTS, ",
+                    grid ? "CELLS, CELL_TYPES" : "VERTICES, LINES, POLYGONS, TRIANGLE_STRIPS",
+                    ", FIELD, POINT_DATA or CELL_DATA"));
+      }
+      metadata();
+    }
+    if (!points) fail("no POINTS in the dataset");
+    if (grid && cells != types)
+      fail(cells ? "CELLS without CELL_TYPES" : "CELL_TYPES without CELLS");
+    if (grid && data_.cellTypes.size() != std::size_t(data_.cells.count()))
+      fail(concat("CELL_TYPES lists ", data_.cellTypes.size(), " types for ", data_.cells.count(),
+                  " cells"));
+    const long long count = data_.pointCount();
+    auto checkIds = [&](const LegacyCells& c, const std::string& what) {
+      for (std::int64_t id : c.connectivity)
+        if (id < 0 || id >= count)
+          fail(concat(what, " names point ", id, "; the POINTS are 0..", count - 1));
+    };
+    checkIds(data_.cells, "CELLS");
+    for (std::size_t l = 0; l < 4; ++l)
+      checkIds(data_.polyCells[l], kLists[l]);
+  }
+
+  // A cell list: "n size" then n counted cells (up to 4.2), or "offsets
+  // connectivity" then OFFSETS and CONNECTIVITY arrays (5.x).
+  LegacyCells cellList(const std::string& what) {
+    LegacyCells cells;
+    const long long n = integer(concat(what, " count"), 0, 1LL << 40);
+    const long long size = integer(concat(what, " size"), 0, 1LL << 40);
+    if (double(n + size) * 8.0 > double(budget_))
+      fail(concat(what, " ", n, " ", size, " exceed the memory budget of ", budget_, " bytes"));
+    if (version_ >= 5.0) {
+      if (keyword("OFFSETS") != "offsets") fail(concat("'", last_, "'; expected OFFSETS"));
+      const std::vector<double> offsets = values(keyword("the offsets' type"), n, "OFFSETS");
+      if (keyword("CONNECTIVITY") != "connectivity")
+        fail(concat("'", last_, "'; expected CONNECTIVITY"));
+      const std::vector<double> connectivity =
+          values(keyword("the connectivity's type"), size, "CONNECTIVITY");
+      if (n == 0) {
+        if (size != 0) fail(concat(what, ": no offsets for ", size, " point ids"));
+        return cells;
+      }
+      if (offsets.front() != 0.0)
+        fail(concat(what, ": the first offset is ", offsets.front(), "; expected 0"));
+      cells.offsets.clear();
+      for (std::size_t i = 0; i < offsets.size(); ++i) {
+        if (i > 0 && offsets[i] < offsets[i - 1])
+          fail(concat(what, ": offset ", i, " (", offsets[i], ") is below the one before it"));
+        cells.offsets.push_back(std::int64_t(offsets[i]));
+      }
+      if (offsets.back() != double(size))
+        fail(concat(what, ": the last offset is ", offsets.back(), " but CONNECTIVITY holds ", size,
+                    " ids"));
+      cells.connectivity.assign(connectivity.begin(), connectivity.end());
+      return cells;
+    }
+    const std::vector<double> list = values("int", size, what);
+    cells.offsets.reserve(std::size_t(n) + 1);
+    std::size_t at = 0;
+    for (long long c = 0; c < n; ++c) {
+      if (at >= list.size())
+        fail(concat(what, ": ", c, " of ", n, " cells fill its size of ", size, " values"));
+      const double k = list[at++];
+      if (k < 0 || k > double(list.size() - at))
+        fail(concat(what, ": cell ", c, " has ", k, " points; only ", list.size() - at,
+                    " values of its size are left"));
+      for (std::size_t i = 0; i < std::size_t(k); ++i)
+        cells.connectivity.push_back(std::int64_t(list[at++]));
+      cells.offsets.push_back(std::int64_t(cells.connectivity.size()));
+    }
+    if (at != list.size())
+      fail(concat(what, ": its ", n, " cells take ", at, " of the ", size,
+                  " values its size says; expected them to agree"));
+    return cells;
   }
 
   void geometry() {
+    if (data_.pointSet()) {
+      pointSetGeometry();
+      return;
+    }
     bool dims = false, origin = false, spacing = false;
     std::array<bool, 3> coordinates{};
     bool points = false;
@@ -253,9 +401,13 @@ class Parser {
       case LegacyVtkData::Type::RectilinearGrid:
         return "RECTILINEAR_GRID";
       case LegacyVtkData::Type::StructuredGrid:
+        return "STRUCTURED_GRID";
+      case LegacyVtkData::Type::UnstructuredGrid:
+        return "UNSTRUCTURED_GRID";
+      case LegacyVtkData::Type::PolyData:
         break;
     }
-    return "STRUCTURED_GRID";
+    return "POLYDATA";
   }
 
   // `count` values of `type`: ASCII numbers, or BINARY big-endian words starting on the next line.
@@ -323,6 +475,10 @@ class Parser {
 
   void attributes(std::vector<LegacyArray>& out, long long expected, const char* section) {
     const long long n = integer(concat(section, " count"), 0, 1LL << 40);
+    if (n != expected && data_.pointSet())
+      fail(concat(section, " ", n, " but the dataset has ", expected,
+                  std::string(section) == "POINT_DATA" ? " points" : " cells",
+                  "; expected the counts to agree"));
     if (n != expected)
       fail(concat(section, " ", n, " but DIMENSIONS ", data_.dims[0], " ", data_.dims[1], " ",
                   data_.dims[2], " make ", expected, "; expected the counts to agree"));
@@ -434,6 +590,7 @@ class Parser {
   std::size_t at_ = 0, start_ = 0;
   std::string last_;
   bool binary_ = false;
+  double version_ = 0.0;
   LegacyVtkData data_;
 };
 

@@ -1,22 +1,27 @@
 // parseVtkLegacy: a legacy VTK file (.vtk, "# vtk DataFile Version 2.0" to
-// 5.1, ASCII or BINARY) holding STRUCTURED_POINTS, RECTILINEAR_GRID or
-// STRUCTURED_GRID, read by Sandstorm itself: VTK's legacy readers trust the
-// file's keywords and counts (a misspelt keyword can crash them), so none of
-// them sees the file.
+// 5.1, ASCII or BINARY) holding STRUCTURED_POINTS, RECTILINEAR_GRID,
+// STRUCTURED_GRID, UNSTRUCTURED_GRID or POLYDATA, read by Sandstorm itself:
+// VTK's legacy readers trust the file's keywords and counts (a misspelt
+// keyword can crash them), so none of them sees the file.
 //
 // The whole grammar is checked: the header lines, the dataset's geometry
-// (DIMENSIONS, ORIGIN, SPACING or ASPECT_RATIO; X/Y/Z_COORDINATES; POINTS),
+// (DIMENSIONS, ORIGIN, SPACING or ASPECT_RATIO; X/Y/Z_COORDINATES; POINTS;
+// CELLS and CELL_TYPES; VERTICES, LINES, POLYGONS, TRIANGLE_STRIPS, as
+// counted lists (up to version 4.2) or OFFSETS and CONNECTIVITY (5.x)),
 // POINT_DATA and CELL_DATA with SCALARS (+ LOOKUP_TABLE), COLOR_SCALARS,
 // LOOKUP_TABLE, VECTORS, NORMALS, TEXTURE_COORDINATES, TENSORS and FIELD
 // arrays, each array's METADATA block, and dataset-level FIELD data. Every
-// count must agree with DIMENSIONS, every array must fit in the memory
-// budget and in the bytes that are left, ASCII values must be numbers and
-// BINARY values (big-endian) must be all there. Anything else throws Error
-// "file:line: what was found; what was expected". Pure C++: no VTK here.
+// count must agree with DIMENSIONS (or the points and cells), every array
+// must fit in the memory budget and in the bytes that are left, ASCII values
+// must be numbers and BINARY values (big-endian) must be all there; a cell
+// list's sizes must add up to its size and every point id name a point.
+// Anything else throws Error "file:line: what was found; what was expected".
+// Pure C++: no VTK here (the reader checks the cell types: checkVtkCells).
 #pragma once
 
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -31,16 +36,29 @@ struct LegacyArray {
   std::vector<double> values;   // tuples x components
 };
 
+// Cells as VTK 9 keeps them: cell c's points are connectivity[offsets[c] ..
+// offsets[c + 1]).
+struct LegacyCells {
+  std::vector<std::int64_t> offsets{0};
+  std::vector<std::int64_t> connectivity;
+  long long count() const { return (long long)offsets.size() - 1; }
+};
+
 struct LegacyVtkData {
-  enum class Type { StructuredPoints, RectilinearGrid, StructuredGrid };
+  enum class Type { StructuredPoints, RectilinearGrid, StructuredGrid, UnstructuredGrid, PolyData };
   Type type = Type::StructuredPoints;
   std::array<long long, 3> dims{1, 1, 1};
   std::array<double, 3> origin{0, 0, 0}, spacing{1, 1, 1};  // structured points
   std::array<std::vector<double>, 3> coordinates;           // rectilinear grid
-  std::vector<double> points;                               // structured grid, x y z each
+  std::vector<double> points;  // structured and unstructured grids, polydata: x y z each
+  LegacyCells cells;           // unstructured grid
+  std::vector<int> cellTypes;  // unstructured grid: VTK cell types
+  // Polydata: vertices, lines, polygons, triangle strips.
+  std::array<LegacyCells, 4> polyCells;
   std::vector<LegacyArray> pointData, cellData;
 
-  long long pointCount() const { return dims[0] * dims[1] * dims[2]; }
+  bool pointSet() const { return type == Type::UnstructuredGrid || type == Type::PolyData; }
+  long long pointCount() const;
   long long cellCount() const;
 };
 

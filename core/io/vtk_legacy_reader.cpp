@@ -2,16 +2,22 @@
 
 #include <algorithm>
 
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkPolyData.h>
 #include <vtkRectilinearGrid.h>
 #include <vtkStructuredGrid.h>
 #include <vtkStructuredPoints.h>
+#include <vtkTypeInt64Array.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkUnstructuredGrid.h>
 
+#include "core/io/vtk_cell_check.h"
 #include "core/io/vtk_legacy_parser.h"
 
 namespace sandstorm {
@@ -61,6 +67,28 @@ vtkSmartPointer<vtkDoubleArray> coordinates(const std::vector<double>& values) {
   return c;
 }
 
+vtkSmartPointer<vtkPoints> pointsOf(const std::vector<double>& xyz) {
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToDouble();
+  points->SetNumberOfPoints(vtkIdType(xyz.size() / 3));
+  for (vtkIdType i = 0; i < vtkIdType(xyz.size() / 3); ++i)
+    points->SetPoint(i, &xyz[std::size_t(3 * i)]);
+  return points;
+}
+
+vtkSmartPointer<vtkCellArray> cellArray(const LegacyCells& cells) {
+  vtkNew<vtkTypeInt64Array> offsets, connectivity;
+  offsets->SetNumberOfTuples(vtkIdType(cells.offsets.size()));
+  for (std::size_t i = 0; i < cells.offsets.size(); ++i)
+    offsets->SetValue(vtkIdType(i), cells.offsets[i]);
+  connectivity->SetNumberOfTuples(vtkIdType(cells.connectivity.size()));
+  for (std::size_t i = 0; i < cells.connectivity.size(); ++i)
+    connectivity->SetValue(vtkIdType(i), cells.connectivity[i]);
+  auto array = vtkSmartPointer<vtkCellArray>::New();
+  array->SetData(offsets, connectivity);
+  return array;
+}
+
 }  // namespace
 
 vtkSmartPointer<vtkDataSet> readVtkLegacy(const std::filesystem::path& path,
@@ -98,7 +126,29 @@ vtkSmartPointer<vtkDataSet> readVtkLegacy(const std::filesystem::path& path,
       out = grid;
       break;
     }
+    case LegacyVtkData::Type::UnstructuredGrid: {
+      auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
+      grid->SetPoints(pointsOf(d.points));
+      vtkNew<vtkUnsignedCharArray> types;
+      types->SetNumberOfTuples(vtkIdType(d.cellTypes.size()));
+      for (std::size_t i = 0; i < d.cellTypes.size(); ++i)
+        types->SetValue(vtkIdType(i), static_cast<unsigned char>(d.cellTypes[i]));
+      grid->SetCells(types, cellArray(d.cells));
+      out = grid;
+      break;
+    }
+    case LegacyVtkData::Type::PolyData: {
+      auto poly = vtkSmartPointer<vtkPolyData>::New();
+      poly->SetPoints(pointsOf(d.points));
+      poly->SetVerts(cellArray(d.polyCells[0]));
+      poly->SetLines(cellArray(d.polyCells[1]));
+      poly->SetPolys(cellArray(d.polyCells[2]));
+      poly->SetStrips(cellArray(d.polyCells[3]));
+      out = poly;
+      break;
+    }
   }
+  checkVtkCells(out, path.string());
   attach(out->GetPointData(), d.pointData);
   attach(out->GetCellData(), d.cellData);
   return out;

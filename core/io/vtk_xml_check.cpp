@@ -156,7 +156,7 @@ class Checker {
   Checker(std::filesystem::path path, std::size_t budget)
       : path_(std::move(path)), file_(path_.string()), in_(path_), budget_(budget) {}
 
-  double bytes() const { return totalBytes_; }
+  VtkXmlSummary summary() const { return {totalBytes_, declared_}; }
 
   void run() {
     if (!in_.ok()) fail(file_ + ": cannot open");
@@ -435,6 +435,7 @@ class Checker {
     }
     if (t.attributes.count("NumberOfTuples"))
       a.declaredTuples = whole(attribute("NumberOfTuples"), a.where + " NumberOfTuples");
+    declared_.push_back({section, name, a.type, a.components});
     a.expectedTuples = expectedTuples(name);
     if (section == "Points") sawPoints_ = true;
     if (section == "Coordinates") ++coordinate_;
@@ -626,6 +627,7 @@ class Checker {
   bool sawPoints_ = false;
   std::size_t coordinate_ = 0;
   double totalBytes_ = 0.0;
+  std::vector<VtkXmlArray> declared_;
   std::vector<Array> appendedArrays_;
   bool appendedSeen_ = false, base64Appended_ = false;
   std::uint64_t appendedStart_ = 0, appendedEnd_ = 0;
@@ -633,10 +635,10 @@ class Checker {
 
 }  // namespace
 
-double checkVtkXml(const std::filesystem::path& path, std::size_t memoryBudget) {
+VtkXmlSummary checkVtkXml(const std::filesystem::path& path, std::size_t memoryBudget) {
   Checker checker(path, memoryBudget);
   checker.run();
-  return checker.bytes();
+  return checker.summary();
 }
 
 }  // namespace sandstorm

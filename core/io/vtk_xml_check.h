@@ -24,14 +24,31 @@
 // VTK's structured readers leak the arrays they were filling when a payload
 // fails halfway, so a payload VTK would fail on must not reach it.
 // Throws Error naming the file, the piece and array, and the numbers; returns
-// the bytes the arrays take (for a budget over several files).
+// the bytes the arrays take (for a budget over several files) and the arrays
+// declared (to hold a parallel file's pieces to its declarations).
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <string>
+#include <vector>
 
 namespace sandstorm {
 
-double checkVtkXml(const std::filesystem::path& path, std::size_t memoryBudget);
+// One DataArray as a file declares it.
+struct VtkXmlArray {
+  std::string section;  // "Points", "PointData", "CellData", "Coordinates", ...
+  std::string name;
+  std::string type;  // "Float32", ...
+  std::uint64_t components = 1;
+};
+
+struct VtkXmlSummary {
+  double bytes = 0.0;               // all arrays together
+  std::vector<VtkXmlArray> arrays;  // every piece's, in file order
+};
+
+VtkXmlSummary checkVtkXml(const std::filesystem::path& path, std::size_t memoryBudget);
 
 }  // namespace sandstorm

@@ -30,7 +30,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-constexpr int kMaxDepth = 8;
 // An index lists files; one larger than this is not an index.
 constexpr std::uintmax_t kMaxIndexBytes = std::uintmax_t{64} << 20;
 
@@ -86,7 +85,34 @@ void listEntries(vtkXMLDataElement* e, bool multiblock, std::vector<Entry>& out,
   }
 }
 
-std::vector<Entry> parseIndex(const fs::path& path, FieldFormat format) {
+// A parallel file's declarations of its pieces' arrays (PPoints, PPointData,
+// PCellData, PCoordinates), as the sections the pieces hold them in.
+void listDeclarations(vtkXMLDataElement* top, std::vector<VtkXmlArray>& out) {
+  for (int i = 0; i < top->GetNumberOfNestedElements(); ++i) {
+    vtkXMLDataElement* section = top->GetNestedElement(i);
+    const std::string name = section->GetName();
+    if (name.size() < 2 || name[0] != 'P' || name == "Piece") continue;
+    for (int j = 0; j < section->GetNumberOfNestedElements(); ++j) {
+      vtkXMLDataElement* a = section->GetNestedElement(j);
+      if (std::strcmp(a->GetName(), "PDataArray") != 0) continue;
+      VtkXmlArray d;
+      d.section = name.substr(1);
+      d.name = a->GetAttribute("Name") ? a->GetAttribute("Name") : "";
+      d.type = a->GetAttribute("type") ? a->GetAttribute("type") : "";
+      int components = 1;
+      a->GetScalarAttribute("NumberOfComponents", components);
+      d.components = std::uint64_t(std::max(components, 0));
+      out.push_back(d);
+    }
+  }
+}
+
+struct Index {
+  std::vector<Entry> entries;
+  std::vector<VtkXmlArray> declared;  // a parallel file's
+};
+
+Index parseIndex(const fs::path& path, FieldFormat format) {
   const std::string file = path.string();
   std::error_code ec;
   const std::uintmax_t size = fs::file_size(path, ec);
@@ -105,13 +131,42 @@ std::vector<Entry> parseIndex(const fs::path& path, FieldFormat format) {
       root->GetNumberOfNestedElements() > 0 ? root->GetNestedElement(0) : nullptr;
   if (std::strcmp(root->GetName(), "VTKFile") != 0 || !top)
     throw Error(concat(file, ": expected a <VTKFile> holding the dataset's element"));
-  std::vector<Entry> entries;
+  Index index;
   int pieces = 0;
-  listEntries(top, multiblock, entries, pieces);
-  if (entries.empty())
+  listEntries(top, multiblock, index.entries, pieces);
+  if (index.entries.empty())
     throw Error(concat(file, ": names no ",
                        multiblock ? "block file (DataSet file=...)" : "piece (Piece Source=...)"));
-  return entries;
+  if (!multiblock) listDeclarations(top, index.declared);
+  return index;
+}
+
+// VTK's parallel readers copy each piece's arrays into arrays made as the
+// index declares them: a piece that holds one of another type or shape (or
+// none) would be copied out of bounds.
+void checkPieceArrays(const std::string& where, const std::vector<VtkXmlArray>& declared,
+                      const std::vector<VtkXmlArray>& held) {
+  std::size_t coordinate = 0;
+  for (const VtkXmlArray& d : declared) {
+    const VtkXmlArray* match = nullptr;
+    if (d.section == "Points") {
+      for (const VtkXmlArray& h : held)
+        if (h.section == "Points") match = &h;
+    } else if (d.section == "Coordinates") {
+      std::size_t n = 0;
+      for (const VtkXmlArray& h : held)
+        if (h.section == "Coordinates" && n++ == coordinate) match = &h;
+      ++coordinate;
+    } else {
+      for (const VtkXmlArray& h : held)
+        if (h.section == d.section && h.name == d.name) match = &h;
+    }
+    const std::string what = concat(d.section, d.name.empty() ? "" : " '" + d.name + "'");
+    if (!match) throw Error(concat(where, " holds no ", what, " array, which the index declares"));
+    if (match->type != d.type || match->components != d.components)
+      throw Error(concat(where, ": its ", what, " array is ", match->type, " x ", match->components,
+                         "; the index declares ", d.type, " x ", d.components));
+  }
 }
 
 // The entry's file, checked to be a regular file inside the index's folder tree.
@@ -139,36 +194,28 @@ fs::path resolve(const fs::path& index, const Entry& e) {
   return target;
 }
 
-// Walks the index's files, nested .vtm too, into `leaves`.
-void collect(const fs::path& path, FieldFormat format, std::vector<fs::path>& chain,
-             std::vector<fs::path>& leaves) {
-  if (chain.size() > std::size_t(kMaxDepth))
-    throw Error(concat(path.string(), ": multiblock files nested more than ", kMaxDepth, " deep"));
-  std::error_code ec;
-  for (const fs::path& above : chain)
-    if (fs::equivalent(above, path, ec))
-      throw Error(concat(chain.back().string(), " names ", path.string(),
-                         ", which names it back: a loop of multiblock files"));
-  chain.push_back(path);
-  for (const Entry& e : parseIndex(path, format)) {
+struct Leaf {
+  fs::path file;
+  std::string where;                  // "run.pvtu: Piece 2 (run_1.vtu)"
+  std::vector<VtkXmlArray> declared;  // what its parallel index declares
+};
+
+// The index's files, checked, into `leaves`.
+void collect(const fs::path& path, FieldFormat format, std::vector<Leaf>& leaves) {
+  const Index index = parseIndex(path, format);
+  for (const Entry& e : index.entries) {
     const fs::path target = resolve(path, e);
     const FieldFormat kind = detectFieldFormat(target);
     const std::string where = concat(path.string(), ": ", e.label, " (", e.name, ")");
-    if (format == FieldFormat::VtkMultiBlock) {
-      if (kind == FieldFormat::VtkMultiBlock) {
-        collect(target, kind, chain, leaves);
-        continue;
-      }
-      if (!singleDataset(kind))
-        throw Error(concat(where, " is a ", describe(kind),
-                           "; a .vtm's blocks are .vti, .vtr, .vts, .vtu, .vtp or .vtm files"));
-    } else if (kind != pieceFormat(format)) {
+    if (format == FieldFormat::VtkMultiBlock && !singleDataset(kind))
+      throw Error(concat(where, " is a ", describe(kind),
+                         "; a .vtm's blocks are .vti, .vtr, .vts, .vtu or .vtp files (VTK "
+                         "reads no index inside a .vtm: nest blocks in <Block> elements)"));
+    if (format != FieldFormat::VtkMultiBlock && kind != pieceFormat(format))
       throw Error(concat(where, " is a ", describe(kind), "; the pieces of a ", describe(format),
                          " are each a ", describe(pieceFormat(format))));
-    }
-    leaves.push_back(target);
+    leaves.push_back({target, where, index.declared});
   }
-  chain.pop_back();
 }
 
 // A structured reader's whole extent, within the budget before it allocates.
@@ -212,18 +259,25 @@ vtkSmartPointer<vtkDataObject> read(const fs::path& path, const LoadOptions& opt
 }  // namespace
 
 std::vector<fs::path> vtkXmlIndexFiles(const fs::path& path, FieldFormat format) {
-  std::vector<fs::path> chain, leaves;
-  collect(path, format, chain, leaves);
-  return leaves;
+  std::vector<fs::path> files;
+  std::vector<Leaf> leaves;
+  collect(path, format, leaves);
+  for (const Leaf& l : leaves)
+    files.push_back(l.file);
+  return files;
 }
 
 vtkSmartPointer<vtkDataObject> readVtkXmlIndex(const fs::path& path, FieldFormat format,
                                                const LoadOptions& options, LoadReport& report) {
   const std::string file = path.string();
-  const std::vector<fs::path> files = vtkXmlIndexFiles(path, format);
+  std::vector<Leaf> files;
+  collect(path, format, files);
   double bytes = 0.0;
-  for (const fs::path& f : files)
-    bytes += checkVtkXml(f, options.memoryBudget);
+  for (const Leaf& f : files) {
+    const VtkXmlSummary summary = checkVtkXml(f.file, options.memoryBudget);
+    checkPieceArrays(f.where, f.declared, summary.arrays);
+    bytes += summary.bytes;
+  }
   if (bytes > 2.0 * double(options.memoryBudget))
     throw Error(concat(file, ": its ", files.size(), " files' arrays need ", bytes,
                        " bytes together, beyond twice the memory budget of ", options.memoryBudget,

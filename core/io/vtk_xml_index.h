@@ -9,10 +9,13 @@
 //   "..", no absolute path elsewhere);
 // - the file exists, is a regular file, is not the index itself;
 // - its content is the kind the index needs (a .pvtu's pieces .vtu, ...; a
-//   .vtm's blocks any single-dataset XML file, or another .vtm, nested at most
-//   8 deep and never back to one above it);
+//   .vtm's blocks any single-dataset XML file: VTK reads no .vtm as a block);
 // - checkVtkXml passes it, and all the files' arrays together fit twice the
-//   memory budget.
+//   memory budget;
+// - a piece holds every array its parallel index declares (PPoints,
+//   PPointData, PCellData, PCoordinates), of the declared type and
+//   components: VTK copies pieces into arrays made as declared, and a
+//   mismatch (Float64 points under a Float32 declaration) crashes it.
 // Once read, every block's cells are checked (checkVtkCells). Errors name the
 // index, the piece or block and its file, and what was wrong. Ghost cells
 // that pieces share stay marked (vtkGhostType); the resampler skips them.

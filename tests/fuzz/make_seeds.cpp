@@ -3,21 +3,30 @@
 // session log and packet codecs, the height-map writer), VTK's writers for
 // the VTK formats Sandstorm only reads, the bundled configurations and
 // sample data, and small hand-made engine files. Run by scripts/fuzz.
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataWriter.h>
 #include <vtkRectilinearGrid.h>
 #include <vtkStructuredGrid.h>
 #include <vtkStructuredPointsWriter.h>
+#include <vtkUnstructuredGrid.h>
+#include <vtkUnstructuredGridWriter.h>
 #include <vtkXMLImageDataWriter.h>
+#include <vtkXMLPolyDataWriter.h>
 #include <vtkXMLRectilinearGridWriter.h>
 #include <vtkXMLStructuredGridWriter.h>
+#include <vtkXMLUnstructuredGridWriter.h>
 
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include "core/field/analytic_field_factory.h"
@@ -79,9 +88,10 @@ int main(int argc, char** argv) {
   }
   const fs::path out = argv[1], source = argv[2];
   for (const char* t :
-       {"fuzz_field_vtk", "fuzz_field_vti", "fuzz_field_vtr", "fuzz_field_vts", "fuzz_field_vdb",
-        "fuzz_field_fga", "fuzz_field_vf", "fuzz_height_map", "fuzz_config", "fuzz_session_log",
-        "fuzz_cluster_packet", "fuzz_dtrack", "fuzz_pvx", "fuzz_tracker_path"})
+       {"fuzz_field_vtk", "fuzz_field_vti", "fuzz_field_vtr", "fuzz_field_vts", "fuzz_field_vtu",
+        "fuzz_field_vtp", "fuzz_field_index", "fuzz_field_vdb", "fuzz_field_fga", "fuzz_field_vf",
+        "fuzz_height_map", "fuzz_config", "fuzz_session_log", "fuzz_cluster_packet", "fuzz_dtrack",
+        "fuzz_pvx", "fuzz_tracker_path"})
     fs::create_directories(out / t);
 
   // Image data in every encoding VTK writes, and the legacy format.
@@ -125,6 +135,95 @@ int main(int argc, char** argv) {
   grid->GetPointData()->SetVectors(velocity(8));
   xml<vtkXMLStructuredGridWriter>(grid.Get(), out / "fuzz_field_vts" / "ascii.vts", 0, false);
   xml<vtkXMLStructuredGridWriter>(grid.Get(), out / "fuzz_field_vts" / "binary.vts", 1, false);
+
+  // Meshes: two tetrahedra and a hexahedron carrying vectors and a cell
+  // scalar, as unstructured grids (XML in each mode, legacy 4.2 and 5.1 in
+  // ASCII and binary) and polydata.
+  vtkNew<vtkUnstructuredGrid> mesh;
+  {
+    vtkNew<vtkPoints> p;
+    for (int i = 0; i < 12; ++i)
+      p->InsertNextPoint(i & 1, (i >> 1) & 1, i >> 2);
+    mesh->SetPoints(p);
+    const vtkIdType t1[4] = {0, 1, 2, 4}, t2[4] = {1, 3, 2, 7}, h[8] = {4, 5, 7, 6, 8, 9, 11, 10};
+    mesh->InsertNextCell(VTK_TETRA, 4, t1);
+    mesh->InsertNextCell(VTK_TETRA, 4, t2);
+    mesh->InsertNextCell(VTK_HEXAHEDRON, 8, h);
+    mesh->GetPointData()->SetVectors(velocity(12));
+    vtkNew<vtkFloatArray> pressure;
+    pressure->SetName("pressure");
+    pressure->SetNumberOfTuples(3);
+    pressure->Fill(2.0f);
+    mesh->GetCellData()->AddArray(pressure);
+  }
+  for (int mode = 0; mode < 3; ++mode)
+    xml<vtkXMLUnstructuredGridWriter>(
+        mesh.Get(), out / "fuzz_field_vtu" / ("mode" + std::to_string(mode) + ".vtu"), mode,
+        mode == 2);
+  for (int version : {42, 51})
+    for (bool binary : {false, true}) {
+      vtkNew<vtkUnstructuredGridWriter> w;
+      w->SetInputData(mesh);
+      w->SetFileVersion(version);
+      w->SetFileName((out / "fuzz_field_vtk" /
+                      ("mesh" + std::to_string(version) + (binary ? "b" : "a") + ".vtk"))
+                         .c_str());
+      if (binary) w->SetFileTypeToBinary();
+      w->Write();
+    }
+  vtkNew<vtkPolyData> sheet;
+  {
+    vtkNew<vtkPoints> p;
+    for (int i = 0; i < 6; ++i)
+      p->InsertNextPoint(i % 3, i / 3, 0.5);
+    vtkNew<vtkCellArray> polys, lines, verts;
+    const vtkIdType tri[3] = {0, 1, 4}, quad[4] = {1, 2, 5, 4}, line[2] = {0, 3}, vert[1] = {3};
+    polys->InsertNextCell(3, tri);
+    polys->InsertNextCell(4, quad);
+    lines->InsertNextCell(2, line);
+    verts->InsertNextCell(1, vert);
+    sheet->SetPoints(p);
+    sheet->SetPolys(polys);
+    sheet->SetLines(lines);
+    sheet->SetVerts(verts);
+    sheet->GetPointData()->SetVectors(velocity(6));
+  }
+  xml<vtkXMLPolyDataWriter>(sheet.Get(), out / "fuzz_field_vtp" / "ascii.vtp", 0, false);
+  xml<vtkXMLPolyDataWriter>(sheet.Get(), out / "fuzz_field_vtp" / "appended.vtp", 2, true);
+  {
+    vtkNew<vtkPolyDataWriter> w;
+    w->SetInputData(sheet);
+    w->SetFileName((out / "fuzz_field_vtk" / "sheet.vtk").c_str());
+    w->Write();
+  }
+  // Index files with the one piece or block they name, "p0" (fuzz_field_index.cpp).
+  const auto index = [&](const std::string& name, const std::string& head, const fs::path& piece) {
+    std::ifstream in(piece, std::ios::binary);
+    text(out / "fuzz_field_index" / name,
+         head + "
+#-- -
+" + std::string(std::istreambuf_iterator<char>(in), {}));
+  };
+  index("pvtu",
+        "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\">\n"
+        "<PUnstructuredGrid GhostLevel=\"0\">\n<PPointData Vectors=\"velocity\">\n"
+        "<PDataArray type=\"Float32\" Name=\"velocity\" NumberOfComponents=\"3\"/>\n"
+        "</PPointData>\n<PPoints><PDataArray type=\"Float32\" NumberOfComponents=\"3\"/>"
+        "</PPoints>\n<Piece Source=\"p0\"/>\n</PUnstructuredGrid>\n</VTKFile>",
+        out / "fuzz_field_vtu" / "mode0.vtu");
+  index("pvti",
+        "<?xml version=\"1.0\"?>\n<VTKFile type=\"PImageData\" version=\"0.1\">\n"
+        "<PImageData WholeExtent=\"0 2 0 1 0 1\" GhostLevel=\"0\" Origin=\"0 0 0\" "
+        "Spacing=\"1 1 1\">\n<PPointData><PDataArray type=\"Float32\" Name=\"velocity\" "
+        "NumberOfComponents=\"3\"/></PPointData>\n<Piece Extent=\"0 2 0 1 0 1\" "
+        "Source=\"p0\"/>\n</PImageData>\n</VTKFile>",
+        out / "fuzz_field_vti" / "mode0.vti");
+  index("vtm",
+        "<?xml version=\"1.0\"?>\n<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\">\n"
+        "<vtkMultiBlockDataSet>\n<DataSet index=\"0\" name=\"fluid\" file=\"p0\"/>\n"
+        "<Block index=\"1\"><DataSet index=\"0\" file=\"p0\"/></Block>\n"
+        "</vtkMultiBlockDataSet>\n</VTKFile>",
+        out / "fuzz_field_vtu" / "mode2.vtu");
 
   // The project's own writers.
   const auto tornado = makeAnalyticField("tornado", {});

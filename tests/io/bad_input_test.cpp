@@ -162,13 +162,13 @@ TEST(BadInput, ScalarArrayWhereVectorsWereAsked) {
   expectError([&] { loadField(path, o); }, {path.string(), "'pressure' has 1 component"});
 }
 
-TEST(BadInput, LegacyDatasetThatIsNoGrid) {
+TEST(BadInput, LegacyDatasetOfAnotherKind) {
   const auto dir = test::scratch();
-  const auto path = dir / "poly.vtk";
+  const auto path = dir / "graph.vtk";
   test::writeText(
-      path, "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 1 float\n0 0 0\n");
+      path, "# vtk DataFile Version 3.0\nx\nASCII\nDATASET GRAPH\nPOINTS 1 float\n0 0 0\n");
   expectError([&] { loadField(path); },
-              {path.string(), ":4", "POLYDATA", "expected STRUCTURED_POINTS"});
+              {path.string(), ":4", "GRAPH", "expected STRUCTURED_POINTS", "POLYDATA"});
   test::writeText(path, "# vtk DataFile Version 3.0\nx\nTEXT\nDATASET STRUCTURED_POINTS\n");
   expectError([&] { loadField(path); }, {path.string(), ":3", "expected ASCII or BINARY"});
 }

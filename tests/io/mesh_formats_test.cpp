@@ -8,11 +8,14 @@
 #include <vtkCellArray.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkExtractUnstructuredGridPiece.h>
+#include <vtkGeometryFilter.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkPolyData.h>
+#include <vtkPolyDataWriter.h>
 #include <vtkRTAnalyticSource.h>
+#include <vtkUnstructuredGridWriter.h>
 #include <vtkXMLMultiBlockDataWriter.h>
 #include <vtkXMLPImageDataWriter.h>
 #include <vtkXMLPUnstructuredGridWriter.h>
@@ -366,6 +369,50 @@ TEST(MeshFormats, ComponentsAreJoinedIntoAVector) {
   EXPECT_EQ(report.arrayName, "vel");
   EXPECT_NEAR(doubled.at(2, 3, 1).y, 2.0 * asymmetric(glm::dvec3(doubled.pointPosition(2, 3, 1))).y,
               2 * kExact);
+}
+
+// Legacy files as VTK writes them: counted cell lists (up to version 4.2) and
+// OFFSETS with CONNECTIVITY (5.1), ASCII and BINARY; polydata too.
+TEST(MeshFormats, LegacyUnstructuredGridsAndPolyDataInEveryVersion) {
+  const auto dir = test::scratch();
+  const auto mesh = test::lMesh(4, asymmetric);
+  LoadOptions options;
+  options.resolution = {21, 21, 11};
+  for (int version : {42, 51})
+    for (bool binary : {false, true}) {
+      SCOPED_TRACE(concat("version ", version, binary ? " binary" : " ascii"));
+      const auto path = dir / concat("mesh", version, binary ? "b" : "a", ".vtk");
+      vtkNew<vtkUnstructuredGridWriter> w;
+      w->SetInputData(mesh);
+      w->SetFileVersion(version);
+      if (binary) w->SetFileTypeToBinary();
+      w->SetFileName(path.c_str());
+      ASSERT_EQ(w->Write(), 1);
+      LoadReport report;
+      test::expectL(loadField(path, options, &report), asymmetric, kExact);
+      EXPECT_EQ(report.cells, std::uint64_t(mesh->GetNumberOfCells()));
+    }
+  vtkNew<vtkPolyData> surface;  // the L's boundary, triangulated: a closed surface
+  {
+    vtkNew<vtkGeometryFilter> outside;
+    outside->SetInputData(mesh);
+    outside->Update();
+    surface->DeepCopy(outside->GetOutput());
+  }
+  const auto path = dir / "surface.vtk";
+  vtkNew<vtkPolyDataWriter> w;
+  w->SetInputData(surface);
+  w->SetFileName(path.c_str());
+  ASSERT_EQ(w->Write(), 1);
+  LoadReport report;
+  const VectorField f = loadField(path, options, &report);
+  EXPECT_EQ(report.cells, std::uint64_t(surface->GetNumberOfCells()));
+  // Only points on the surface lie in its cells: the box's faces.
+  EXPECT_TRUE(f.valid(0, 7, 3));
+  EXPECT_FALSE(f.valid(5, 5, 5));
+  EXPECT_LE(
+      glm::length(glm::dvec3(f.at(0, 7, 3)) - asymmetric(glm::dvec3(f.pointPosition(0, 7, 3)))),
+      kExact);
 }
 
 }  // namespace
