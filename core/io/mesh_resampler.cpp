@@ -147,7 +147,6 @@ IndexBox indexBox(const UniformGrid& g, const glm::dvec3& lo, const glm::dvec3& 
 class Resampler {
  public:
   Resampler(std::span<const MeshSource> sources, const UniformGrid& grid) : grid_(grid) {
-    std::size_t components = 0;
     for (const MeshSource& m : sources) {
       Source s;
       s.data = m.data;
@@ -203,8 +202,6 @@ class Resampler {
       }
       sources_.push_back(std::move(s));
     }
-    for (int c : components_)
-      components += std::size_t(c);
     if (cells_ >= (std::uint64_t{1} << 32))
       throw Error(concat(cells_, " cells: more than the 2^32 that can be resampled at once"));
     axis_ = 0;
