@@ -24,11 +24,13 @@ int main(int argc, char** argv) {
                                   ->check(CLI::ExistingFile);
   std::string fieldFile, arrayName;
   cli.add_option("field,--field", fieldFile,
-                 "Open this field file (.vti .vtr .vts .vtk .pvd .vdb .fga .vf) as ParaView "
-                 "does: in the desktop scene, or in --config's walls")
-      ->check(CLI::ExistingFile);
+                 "Open this field file as ParaView does: in the desktop scene, or in --config's "
+                 "walls. VTK (.vti .vtr .vts .vtu .vtp .vtk, parallel .pvt?, multiblock .vtm, "
+                 "series .pvd), OpenVDB (.vdb), Unreal (.fga), Unity (.vf)")
+      ->check(CLI::ExistingPath);
   cli.add_option("--array", arrayName,
-                 "The field file's vector array or grid (a file with several asks for one)");
+                 "The field file's vector array or grid (a file with several asks for one), or "
+                 "three components joined: u,v,w");
   cli.add_option("-n,--frames", frames, "Frames to run, then exit (0: until a window closes)")
       ->check(CLI::NonNegativeNumber);
   cli.add_option("--screenshot", screenshotDir, "Write each wall's last frame as DIR/<wall>.png");

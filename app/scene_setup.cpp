@@ -6,6 +6,7 @@
 
 #include "core/field/analytic_field_factory.h"
 #include "core/field/height_map_io.h"
+#include "core/io/field_format.h"
 #include "core/io/field_loader.h"
 #include "core/io/field_sequence.h"
 #include "core/sim/main_context.h"
@@ -128,8 +129,7 @@ std::vector<std::string> fieldChoices(const std::filesystem::path& dataDir,
        !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
     const std::string ext = it->path().extension().string();
     const bool inSeries = it->path().parent_path().filename() == "series" && ext != ".pvd";
-    if (!inSeries && (ext == ".vti" || ext == ".vtk" || ext == ".vtr" || ext == ".vts" ||
-                      ext == ".vdb" || ext == ".fga" || ext == ".vf" || ext == ".pvd"))
+    if (!inSeries && hasFieldExtension(it->path()))
       files.push_back(std::filesystem::relative(it->path(), base).string());
   }
   std::sort(files.begin(), files.end());

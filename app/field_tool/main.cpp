@@ -67,14 +67,19 @@ void info(const std::string& file, const Common& c) {
   const glm::ivec3 d = f.dims();
   std::cout << "file:        " << file << "\n"
             << "format:      " << report.format << "\n";
+  for (const std::string& block : report.blocks)
+    std::cout << "block:       " << block << "\n";
+  if (report.cells > 0 || report.points > 0)
+    std::cout << "cells:       " << report.cells << " cells, " << report.points << " points\n";
   std::cout << "contents:    ";
   for (std::size_t i = 0; i < report.available.size(); ++i)
     std::cout << (i ? ", " : "") << report.available[i];
   std::cout << "\n"
-            << "loaded:      " << report.arrayName << "\n"
-            << "file grid:   " << report.sourceDims.x << " x " << report.sourceDims.y << " x "
-            << report.sourceDims.z << "\n"
-            << "dims:        " << d.x << " x " << d.y << " x " << d.z << " (" << f.pointCount()
+            << "loaded:      " << report.arrayName << "\n";
+  if (report.sourceDims != glm::ivec3(0))
+    std::cout << "file grid:   " << report.sourceDims.x << " x " << report.sourceDims.y << " x "
+              << report.sourceDims.z << "\n";
+  std::cout << "dims:        " << d.x << " x " << d.y << " x " << d.z << " (" << f.pointCount()
             << " points" << (report.resampled ? ", resampled" : "") << ")\n"
             << "bounds:      " << vec(f.bounds().min) << " .. " << vec(f.bounds().max) << " m\n"
             << "spacing:     " << vec(f.spacing()) << " m\n"

@@ -260,7 +260,22 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   f.source = r.string(t, "source", "field", f.source);
   if (f.source != "analytic") f.source = relativeTo(r, f.source);
   // A file's array or grid is chosen by name; without one, the file's only (or active) vector one.
-  f.name = r.string(t, "name", "field", f.source == "analytic" ? f.name : std::string());
+  // Three one-component arrays joined into a vector: name = ["u", "v", "w"].
+  const toml::value* name = r.find(t, "name");
+  if (name && name->is_array()) {
+    const auto& parts = name->as_array();
+    f.name.clear();
+    for (const toml::value& part : parts) {
+      if (!part.is_string() || part.as_string().str.empty() ||
+          part.as_string().str.find(',') != std::string::npos)
+        r.fail(*name, "field.name", "expected three array names, e.g. [\"u\", \"v\", \"w\"]");
+      f.name += (f.name.empty() ? "" : ",") + part.as_string().str;
+    }
+    if (parts.size() != 3)
+      r.fail(*name, "field.name", "expected three array names, e.g. [\"u\", \"v\", \"w\"]");
+  } else {
+    f.name = r.string(t, "name", "field", f.source == "analytic" ? f.name : std::string());
+  }
   if (const toml::value* res = r.find(t, "resolution")) {
     const glm::vec3 v = r.vec<3>(*res, "field.resolution");
     for (int a = 0; a < 3; ++a)

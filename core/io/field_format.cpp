@@ -97,6 +97,25 @@ FieldFormat formatForExtension(const std::filesystem::path& path) {
   return FieldFormat::Unknown;
 }
 
+bool hasFieldExtension(const std::filesystem::path& path) {
+  return formatForExtension(path) != FieldFormat::Unknown;
+}
+
+bool namesOtherFiles(FieldFormat format) {
+  switch (format) {
+    case FieldFormat::VtkPImageData:
+    case FieldFormat::VtkPRectilinearGrid:
+    case FieldFormat::VtkPStructuredGrid:
+    case FieldFormat::VtkPUnstructuredGrid:
+    case FieldFormat::VtkPPolyData:
+    case FieldFormat::VtkMultiBlock:
+    case FieldFormat::VtkCollection:
+      return true;
+    default:
+      return false;
+  }
+}
+
 std::string describe(FieldFormat format) {
   switch (format) {
     case FieldFormat::VtkLegacy:

@@ -35,6 +35,10 @@ enum class FieldFormat {
 FieldFormat detectFieldFormat(const std::filesystem::path& path);
 // The format an extension names (case-insensitive); Unknown for others.
 FieldFormat formatForExtension(const std::filesystem::path& path);
+// Whether the extension names a format loadField() reads (case-insensitive).
+bool hasFieldExtension(const std::filesystem::path& path);
+// Whether files of this format name other files (parallel pieces, blocks).
+bool namesOtherFiles(FieldFormat format);
 // "legacy VTK file", "VTK XML image data (.vti)", ...
 std::string describe(FieldFormat format);
 // The formats, for messages: "a legacy VTK (.vtk), VTK XML (.vti ...) ... file".

@@ -4,6 +4,7 @@
 #include <fstream>
 #include <set>
 
+#include "core/io/field_format.h"
 #include "core/io/pvd_file.h"
 #include "core/util/error.h"
 
@@ -12,15 +13,12 @@ namespace {
 
 namespace fs = std::filesystem;
 
+// A step of a folder: a field file, not hidden, not a collection of steps itself.
 bool fieldFile(const fs::path& p) {
-  static const std::set<std::string> kExtensions{".vti", ".vtr", ".vts", ".vtk",
-                                                 ".vdb", ".fga", ".vf"};
   const std::string name = p.filename().string();
   if (name.empty() || name.front() == '.') return false;
-  std::string ext = p.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char c) { return char(std::tolower(c)); });
-  return kExtensions.count(ext) > 0;
+  const FieldFormat format = formatForExtension(p);
+  return format != FieldFormat::Unknown && format != FieldFormat::VtkCollection;
 }
 
 // Whether an XML file ends with its root's closing tag (a .pvd caught half
@@ -88,6 +86,11 @@ std::vector<FieldStreamScanner::Step> FieldStreamScanner::pollFolder(
   for (auto it = fs::directory_iterator(source_, ec); !ec && it != fs::directory_iterator();
        it.increment(ec))
     if (it->is_regular_file(ec) && fieldFile(it->path())) files.push_back(it->path());
+  // A simulation on many ranks writes each step as an index (.pvtu, .vtm)
+  // beside its pieces: then the indexes are the steps.
+  if (std::any_of(files.begin(), files.end(),
+                  [](const fs::path& f) { return namesOtherFiles(formatForExtension(f)); }))
+    std::erase_if(files, [](const fs::path& f) { return !namesOtherFiles(formatForExtension(f)); });
   std::sort(files.begin(), files.end());
   // Every candidate is looked at (each needs two looks); steps come in order,
   // so the first one not yet complete holds back those after it.

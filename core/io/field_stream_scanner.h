@@ -1,8 +1,9 @@
 // FieldStreamScanner: which steps of a field that a running simulation writes
 // are complete, looked at again and again (FieldStream polls it). The source
 // is either
-//   - a folder: its field files (.vti .vtr .vts .vtk .vdb .fga .vf; hidden
-//     names and .tmp/.part files left alone) in name order; step k of them
+//   - a folder: its field files (any format loadField reads, .pvd aside; hidden
+//     names and .tmp/.part files left alone; where a step is an index beside
+//     its pieces, .pvtu or .vtm, only the indexes) in name order; step k of them
 //     gets the time k * `interval`. A file is complete once two looks at
 //     least `settle` seconds apart found it with the same non-zero size and
 //     modification time (a file still being written grows between them; a
