@@ -78,29 +78,34 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
     options.arrayName = spec.name;
     options.resolution = spec.resolution;
     std::error_code ec;
-    if (spec.watch || std::filesystem::is_directory(path, ec)) {
+    // A folder is watched for steps, unless it is an OpenFOAM case.
+    if (spec.watch || (std::filesystem::is_directory(path, ec) &&
+                       detectFieldFormat(path) != FieldFormat::OpenFoam)) {
       out = watchedField(path, spec, options);
-    } else if (path.extension() == ".pvd") {
-      const FieldSequence sequence = FieldSequence::fromPvd(path, options);
-      std::vector<double> times;
-      std::vector<std::shared_ptr<const VectorField>> frames;
-      for (std::size_t i = 0; i < sequence.size(); ++i) {
-        times.push_back(sequence.time(i));
-        frames.push_back(std::make_shared<VectorField>(sequence.frame(i)));
-      }
-      out.timeline = FieldTimeline(std::move(times), std::move(frames));
-      out.update = FieldUpdate{.field = out.timeline->frame(0), .placement = spec.placement};
-      out.description = concat(path.string(), ": ", sequence.size(), " frames over ",
-                               sequence.endTime() - sequence.startTime(), " s");
     } else {
+      // A file's time steps (a .pvd, or Exodus, EnSight, OpenFOAM ... steps) make a timeline.
       LoadReport report;
-      auto field = std::make_shared<VectorField>(loadField(path, options, &report));
-      out.description = concat(path.string(), " (", report.format, ", '", report.arrayName, "')");
+      FieldSequence sequence = FieldSequence::fromFile(path, options, Playback::Clamp, &report);
       for (const std::string& note : report.notes)
         log::info(path.string(), ": ", note);
       if (report.nonFinite > 0)
         log::warn(path.string(), ": ", report.nonFinite, " NaN or Inf vectors set to zero");
-      out.update = FieldUpdate{.field = std::move(field), .placement = spec.placement};
+      const double start = sequence.startTime(), end = sequence.endTime();
+      std::vector<double> times;
+      for (std::size_t i = 0; i < sequence.size(); ++i)
+        times.push_back(sequence.time(i));
+      std::vector<std::shared_ptr<const VectorField>> frames;
+      for (VectorField& frame : std::move(sequence).takeFrames())
+        frames.push_back(std::make_shared<const VectorField>(std::move(frame)));
+      if (frames.size() > 1) {
+        out.description = concat(path.string(), ": ", frames.size(), " frames over ", end - start,
+                                 " s ('", report.arrayName, "')");
+        out.timeline = FieldTimeline(std::move(times), std::move(frames));
+        out.update = FieldUpdate{.field = out.timeline->frame(0), .placement = spec.placement};
+      } else {
+        out.description = concat(path.string(), " (", report.format, ", '", report.arrayName, "')");
+        out.update = FieldUpdate{.field = frames.front(), .placement = spec.placement};
+      }
     }
   }
   const VectorField& f = *out.update.field;

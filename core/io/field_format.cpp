@@ -58,7 +58,52 @@ bool looksLikeFga(const std::string& head) {
 
 }  // namespace
 
+bool looksLikeEnSightCase(const std::string& head) {
+  std::size_t i = 0;
+  while (i < head.size()) {  // comment lines (#) and blank lines before FORMAT
+    while (i < head.size() && std::isspace(static_cast<unsigned char>(head[i])))
+      ++i;
+    if (i < head.size() && head[i] == '#') {
+      i = head.find('\n', i);
+      if (i == std::string::npos) return false;
+      continue;
+    }
+    break;
+  }
+  return head.compare(i, 6, "FORMAT") == 0;
+}
+
+// An OpenFOAM case: the folder, its .foam or .OpenFOAM file (ParaView's
+// convention, any content), or its system/controlDict.
+bool isOpenFoamCase(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec))
+    return std::filesystem::is_regular_file(path / "system" / "controlDict", ec);
+  const std::string ext = lower(path.extension().string());
+  return ext == ".foam" || ext == ".openfoam" || path.filename() == "controlDict";
+}
+
+FieldFormat containerFormat(const std::filesystem::path& path, const std::string& head) {
+  const std::string ext = lower(path.extension().string());
+  const bool hdf5 = head.rfind("\x89HDF\r\n\x1a\n", 0) == 0;
+  const bool classic = head.size() >= 4 && head.compare(0, 3, "CDF") == 0 &&
+                       (head[3] == 1 || head[3] == 2 || head[3] == 5);
+  const FieldFormat named = formatForExtension(path);
+  if (classic) {
+    if (named == FieldFormat::ExodusII || named == FieldFormat::NetCdf) return named;
+    // Exodus declares its dimensions first: num_nodes is in the first kilobyte.
+    return head.find("num_nodes") != std::string::npos ? FieldFormat::ExodusII
+                                                       : FieldFormat::NetCdf;
+  }
+  if (!hdf5) return FieldFormat::Unknown;
+  if (named == FieldFormat::ExodusII || named == FieldFormat::NetCdf ||
+      named == FieldFormat::Cgns || named == FieldFormat::VtkHdf)
+    return named;
+  return FieldFormat::Unknown;
+}
+
 FieldFormat detectFieldFormat(const std::filesystem::path& path) {
+  if (isOpenFoamCase(path)) return FieldFormat::OpenFoam;
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(concat(path.string(), ": cannot open the file for reading"));
   std::string head(1024, '\0');
@@ -72,6 +117,9 @@ FieldFormat detectFieldFormat(const std::filesystem::path& path) {
   if (head.rfind("VF_V", 0) == 0 || head.rfind("VF_F", 0) == 0 || head.rfind("VF2X", 0) == 0)
     return FieldFormat::UnityVf;
   if (const FieldFormat xml = xmlType(head); xml != FieldFormat::Unknown) return xml;
+  if (const FieldFormat c = containerFormat(path, head); c != FieldFormat::Unknown) return c;
+  if (head.rfind("@(#)ADF Database Version", 0) == 0) return FieldFormat::Cgns;
+  if (looksLikeEnSightCase(head)) return FieldFormat::EnSightGold;
   if (looksLikeFga(head)) return FieldFormat::UnrealFga;
   return FieldFormat::Unknown;
 }
@@ -91,6 +139,13 @@ FieldFormat formatForExtension(const std::filesystem::path& path) {
   if (ext == ".pvtp") return FieldFormat::VtkPPolyData;
   if (ext == ".vtm") return FieldFormat::VtkMultiBlock;
   if (ext == ".pvd") return FieldFormat::VtkCollection;
+  if (ext == ".e" || ext == ".exo" || ext == ".g" || ext == ".ex2" || ext == ".exii")
+    return FieldFormat::ExodusII;
+  if (ext == ".case") return FieldFormat::EnSightGold;
+  if (ext == ".foam" || ext == ".openfoam") return FieldFormat::OpenFoam;
+  if (ext == ".nc" || ext == ".nc4" || ext == ".cdf") return FieldFormat::NetCdf;
+  if (ext == ".cgns") return FieldFormat::Cgns;
+  if (ext == ".vtkhdf" || ext == ".hdf") return FieldFormat::VtkHdf;
   if (ext == ".vdb") return FieldFormat::OpenVdb;
   if (ext == ".fga") return FieldFormat::UnrealFga;
   if (ext == ".vf") return FieldFormat::UnityVf;
@@ -144,6 +199,18 @@ std::string describe(FieldFormat format) {
       return "VTK XML multiblock file (.vtm)";
     case FieldFormat::VtkCollection:
       return "ParaView data collection (.pvd)";
+    case FieldFormat::ExodusII:
+      return "Exodus II file (.e)";
+    case FieldFormat::EnSightGold:
+      return "EnSight Gold case (.case)";
+    case FieldFormat::OpenFoam:
+      return "OpenFOAM case";
+    case FieldFormat::NetCdf:
+      return "NetCDF file (.nc)";
+    case FieldFormat::Cgns:
+      return "CGNS file (.cgns)";
+    case FieldFormat::VtkHdf:
+      return "VTKHDF file (.vtkhdf)";
     case FieldFormat::OpenVdb:
       return "OpenVDB file (.vdb)";
     case FieldFormat::UnrealFga:
@@ -158,8 +225,9 @@ std::string describe(FieldFormat format) {
 
 std::string knownFormats() {
   return "a legacy VTK (.vtk), VTK XML (.vti .vtr .vts .vtu .vtp, parallel .pvti .pvtr .pvts "
-         ".pvtu .pvtp, multiblock .vtm, collection .pvd), OpenVDB (.vdb), Unreal (.fga) or "
-         "Unity (.vf) file";
+         ".pvtu .pvtp, multiblock .vtm, collection .pvd), Exodus II (.e .exo .g), EnSight Gold "
+         "(.case), OpenFOAM (a case folder, .foam, controlDict), NetCDF CF (.nc), CGNS (.cgns), "
+         "VTKHDF (.vtkhdf .hdf), OpenVDB (.vdb), Unreal (.fga) or Unity (.vf) file";
 }
 
 void checkExtension(const std::filesystem::path& path, FieldFormat content) {

@@ -1,5 +1,9 @@
 // FieldFormat: the kinds of field file loadField() reads, recognised by their
-// content (magic bytes, header), not their name.
+// content (magic bytes, header), not their name; where one container holds
+// several formats (NetCDF holds Exodus meshes and CF fields, HDF5 holds
+// NetCDF-4, CGNS and VTKHDF) the content decides what it can and the
+// extension the rest. An OpenFOAM case is a folder (or its .foam file, or its
+// system/controlDict).
 //
 // detectFieldFormat() reads at most the first kilobyte. checkExtension()
 // throws when a file's extension names another format than its content
@@ -26,6 +30,12 @@ enum class FieldFormat {
   VtkPPolyData,          // .pvtp
   VtkMultiBlock,         // .vtm
   VtkCollection,         // .pvd (a time series of the above)
+  ExodusII,              // .e .exo .g .ex2 (NetCDF inside)
+  EnSightGold,           // .case
+  OpenFoam,              // a case folder, its .foam file or its system/controlDict
+  NetCdf,                // .nc (NetCDF CF)
+  Cgns,                  // .cgns
+  VtkHdf,                // .vtkhdf .hdf
   OpenVdb,               // .vdb
   UnrealFga,             // .fga
   UnityVf,               // .vf

@@ -2,6 +2,7 @@
 
 #include <vtkDataSet.h>
 
+#include "core/io/exodus_reader.h"
 #include "core/io/fga_reader.h"
 #include "core/io/field_format.h"
 #include "core/io/pvd_file.h"
@@ -55,6 +56,16 @@ VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
       auto data = readVtkXmlIndex(path, format, options, report);
       return extractVectorField(data, path, options, report);
     }
+    case FieldFormat::ExodusII: {
+      auto data = readExodus(path, options, report);
+      return extractVectorField(data, path, options, report);
+    }
+    case FieldFormat::EnSightGold:
+    case FieldFormat::OpenFoam:
+    case FieldFormat::NetCdf:
+    case FieldFormat::Cgns:
+    case FieldFormat::VtkHdf:
+      throw Error(concat(path.string(), ": ", describe(format), "s are not read yet"));
     case FieldFormat::VtkCollection: {
       const std::vector<PvdFrame> frames = readPvd(path);
       report.notes.push_back(concat("time series of ", frames.size(),
@@ -89,9 +100,15 @@ VectorField loadField(const std::filesystem::path& path, const LoadOptions& opti
   const std::string file = path.string();
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) throw Error(concat(file, ": no such file"));
-  if (!std::filesystem::is_regular_file(path, ec))
+  const bool folder = std::filesystem::is_directory(path, ec);
+  if (!folder && !std::filesystem::is_regular_file(path, ec))
     throw Error(concat(file, ": not a regular file"));
   const FieldFormat format = detectFieldFormat(path);
+  if (folder && format != FieldFormat::OpenFoam)
+    throw Error(concat(file,
+                       ": a folder, and not an OpenFOAM case (no system/controlDict); "
+                       "expected ",
+                       knownFormats()));
   checkExtension(path, format);
   checkResolution(file, options);
   LoadReport local;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <regex>
 
+#include "core/io/field_format.h"
 #include "core/io/field_loader.h"
 #include "core/io/pvd_file.h"
 #include "core/util/error.h"
@@ -77,7 +78,7 @@ FieldSequence FieldSequence::fromPvd(const std::filesystem::path& pvd, const Loa
     if (bytes > double(options.memoryBudget))
       throw Error(concat(pvd.string(), ": its frames together exceed the memory budget of ",
                          options.memoryBudget, " bytes at ", f.file.string(),
-                         "; lower the resolution (LoadOptions::resolution)"));
+                         "; lower the resolution (field.resolution)"));
     if (frames.size() > 1 && (frames.back().dims() != frames.front().dims() ||
                               frames.back().bounds().min != frames.front().bounds().min ||
                               frames.back().bounds().max != frames.front().bounds().max))
@@ -86,6 +87,48 @@ FieldSequence FieldSequence::fromPvd(const std::filesystem::path& pvd, const Loa
                          "; expected every frame on the same grid"));
   }
   return FieldSequence(std::move(times), std::move(frames), playback);
+}
+
+FieldSequence FieldSequence::fromFile(const std::filesystem::path& path, const LoadOptions& options,
+                                      Playback playback, LoadReport* report) {
+  if (detectFieldFormat(path) == FieldFormat::VtkCollection) {
+    if (report) *report = LoadReport{};
+    FieldSequence sequence = fromPvd(path, options, playback);
+    if (report) {
+      loadField(readPvd(path).front().file, options, report);
+      for (std::size_t i = 0; i < sequence.size(); ++i)
+        report->times.push_back(sequence.time(i));
+    }
+    return sequence;
+  }
+  LoadReport local;
+  LoadReport& first = report ? *report : local;
+  std::vector<VectorField> frames;
+  frames.push_back(loadField(path, options, &first));
+  if (first.times.size() <= 1)
+    return FieldSequence({first.times.empty() ? 0.0 : first.times.front()}, std::move(frames),
+                         playback);
+  // Every step on the grid the first one chose.
+  LoadOptions step = options;
+  step.resolution = frames.front().dims();
+  double bytes = 12.0 * double(frames.front().pointCount());
+  for (std::size_t i = 1; i < first.times.size(); ++i) {
+    step.timeStep = i;
+    LoadReport r;
+    frames.push_back(loadField(path, step, &r));
+    bytes += 12.0 * double(frames.back().pointCount());
+    if (bytes > double(options.memoryBudget))
+      throw Error(concat(path.string(), ": its ", first.times.size(),
+                         " time steps together exceed the memory budget of ", options.memoryBudget,
+                         " bytes at step ", i, " (t = ", first.times[i],
+                         "); lower the resolution (field.resolution)"));
+    if (frames.back().bounds().min != frames.front().bounds().min ||
+        frames.back().bounds().max != frames.front().bounds().max)
+      throw Error(concat(path.string(), ": time step ", i, " (t = ", first.times[i],
+                         ") covers other bounds than the first; expected every step on the "
+                         "same grid (a moving mesh is not supported)"));
+  }
+  return FieldSequence(first.times, std::move(frames), playback);
 }
 
 FieldSequence FieldSequence::fromPattern(const std::string& pattern, double startTime, double dt,
@@ -106,7 +149,7 @@ FieldSequence FieldSequence::fromPattern(const std::string& pattern, double star
     if (bytes > double(options.memoryBudget))
       throw Error(concat(name, ": the frames of '", pattern,
                          "' together exceed the memory budget of ", options.memoryBudget,
-                         " bytes; lower the resolution (LoadOptions::resolution)"));
+                         " bytes; lower the resolution (field.resolution)"));
     if (frames.size() > 1 && (frames.back().dims() != frames.front().dims() ||
                               frames.back().bounds().min != frames.front().bounds().min ||
                               frames.back().bounds().max != frames.front().bounds().max))

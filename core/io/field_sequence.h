@@ -1,7 +1,8 @@
 // FieldSequence: a time-varying field, a list of frames (time, VectorField)
 // interpolated linearly in time.
 //
-// Frames come from a .pvd collection (fromPvd) or a numbered file pattern
+// Frames come from a .pvd collection (fromPvd), a file's own time steps
+// (fromFile: Exodus, EnSight, OpenFOAM, NetCDF, CGNS) or a numbered file pattern
 // (fromPattern: "data/series/step_%03d.vti" with frame n at start + n * dt),
 // all loaded at once with loadField(). Every frame must share the dims and
 // bounds of the first (Error naming the odd file otherwise), times must
@@ -42,6 +43,12 @@ class FieldSequence {
 
   static FieldSequence fromPvd(const std::filesystem::path& pvd, const LoadOptions& options = {},
                                Playback playback = Playback::Clamp);
+  // Any field file: a .pvd's frames, the time steps a file holds itself
+  // (Exodus, EnSight, OpenFOAM, NetCDF, CGNS: every step on the grid the
+  // first chose), or the one field of a file without time steps. `report`
+  // gets the first step's LoadReport (its times: every step's).
+  static FieldSequence fromFile(const std::filesystem::path& path, const LoadOptions& options = {},
+                                Playback playback = Playback::Clamp, LoadReport* report = nullptr);
   // `pattern` holds one printf integer conversion (%d, %03d, ...); frames are
   // read from index `firstIndex` on until a file is missing.
   static FieldSequence fromPattern(const std::string& pattern, double startTime, double dt,
@@ -55,6 +62,9 @@ class FieldSequence {
   double endTime() const { return times_.back(); }
   const Box& bounds() const { return frames_.front().bounds(); }
   const glm::ivec3& dims() const { return frames_.front().dims(); }
+
+  // The frames, moved out (the sequence is empty after).
+  std::vector<VectorField> takeFrames() && { return std::move(frames_); }
 
   Playback playback() const { return playback_; }
   void setPlayback(Playback playback) { playback_ = playback; }

@@ -39,6 +39,9 @@ struct LoadOptions {
   // Largest dense grid accepted, in bytes (12 per point). Checked before
   // anything large is allocated; above it loading fails saying how to fit.
   std::size_t memoryBudget = std::size_t{2} << 30;
+  // The time step to read of a file that holds several (Exodus, EnSight,
+  // OpenFOAM, NetCDF, CGNS): an index into LoadReport::times.
+  std::size_t timeStep = 0;
   // Unity and Unreal axes and units to Sandstorm's (see above).
   bool convertEngineAxes = true;
   // Unity .vf files carry no bounds: the box they fill, in Unity units before
@@ -56,6 +59,7 @@ struct LoadReport {
   std::size_t outside = 0;              // points outside the file's cells (the validity mask)
   std::uint64_t cells = 0, points = 0;  // in the file (every block)
   std::vector<std::string> blocks;      // a multiblock's blocks: "name: kind, cells, points"
+  std::vector<double> times;            // the file's time steps, when it holds several
   std::vector<std::string> notes;       // anything else worth telling the user
 };
 

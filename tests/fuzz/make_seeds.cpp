@@ -5,6 +5,7 @@
 // sample data, and small hand-made engine files. Run by scripts/fuzz.
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkExodusIIWriter.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -89,9 +90,9 @@ int main(int argc, char** argv) {
   const fs::path out = argv[1], source = argv[2];
   for (const char* t :
        {"fuzz_field_vtk", "fuzz_field_vti", "fuzz_field_vtr", "fuzz_field_vts", "fuzz_field_vtu",
-        "fuzz_field_vtp", "fuzz_field_index", "fuzz_field_vdb", "fuzz_field_fga", "fuzz_field_vf",
-        "fuzz_height_map", "fuzz_config", "fuzz_session_log", "fuzz_cluster_packet", "fuzz_dtrack",
-        "fuzz_pvx", "fuzz_tracker_path"})
+        "fuzz_field_vtp", "fuzz_field_index", "fuzz_field_e", "fuzz_field_vdb", "fuzz_field_fga",
+        "fuzz_field_vf", "fuzz_height_map", "fuzz_config", "fuzz_session_log",
+        "fuzz_cluster_packet", "fuzz_dtrack", "fuzz_pvx", "fuzz_tracker_path"})
     fs::create_directories(out / t);
 
   // Image data in every encoding VTK writes, and the legacy format.
@@ -194,6 +195,12 @@ int main(int argc, char** argv) {
     vtkNew<vtkPolyDataWriter> w;
     w->SetInputData(sheet);
     w->SetFileName((out / "fuzz_field_vtk" / "sheet.vtk").c_str());
+    w->Write();
+  }
+  {
+    vtkNew<vtkExodusIIWriter> w;  // 64-bit-offset NetCDF, as Exodus writes it
+    w->SetInputData(mesh);
+    w->SetFileName((out / "fuzz_field_e" / "mesh.e").c_str());
     w->Write();
   }
   // Index files with the one piece or block they name, "p0" (fuzz_field_index.cpp).

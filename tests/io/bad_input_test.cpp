@@ -165,8 +165,8 @@ TEST(BadInput, ScalarArrayWhereVectorsWereAsked) {
 TEST(BadInput, LegacyDatasetOfAnotherKind) {
   const auto dir = test::scratch();
   const auto path = dir / "graph.vtk";
-  test::writeText(
-      path, "# vtk DataFile Version 3.0\nx\nASCII\nDATASET GRAPH\nPOINTS 1 float\n0 0 0\n");
+  test::writeText(path,
+                  "# vtk DataFile Version 3.0\nx\nASCII\nDATASET GRAPH\nPOINTS 1 float\n0 0 0\n");
   expectError([&] { loadField(path); },
               {path.string(), ":4", "GRAPH", "expected STRUCTURED_POINTS", "POLYDATA"});
   test::writeText(path, "# vtk DataFile Version 3.0\nx\nTEXT\nDATASET STRUCTURED_POINTS\n");

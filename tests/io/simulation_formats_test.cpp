@@ -1,0 +1,147 @@
+// Files simulations write, made with the formats' own libraries and writers
+// (the Exodus II library, VTK's writers, the NetCDF library, hand-written
+// OpenFOAM dictionaries as OpenFOAM writes them): every one loads with the
+// analytic field's values, over its blocks and its time steps.
+#include <gtest/gtest.h>
+
+#include <vtk_exodusII.h>
+
+#include "core/io/field_loader.h"
+#include "core/io/field_sequence.h"
+#include "tests/io/io_test_util.h"
+
+namespace sandstorm {
+namespace {
+
+using test::asymmetric;
+
+constexpr double kExact = 1e-5;
+
+// The flow at time t: the asymmetric field, growing with time.
+glm::dvec3 flowAt(const glm::dvec3& p, double t) {
+  return asymmetric(p) * (1.0 + t);
+}
+
+// Two element blocks of hexahedra over [0, 2] x [0, 1] x [0, 1] (x < 1, x > 1),
+// n cells per metre, nodal vel_x/vel_y/vel_z and an element "pressure" at
+// times 0, 0.5 and 1, written by the Exodus II library.
+void writeExodus(const std::filesystem::path& path, int n) {
+  int cpu = 8, io = 8;
+  const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu, &io);
+  ASSERT_GE(id, 0);
+  const int nx = 2 * n + 1, ny = n + 1, nz = n + 1;
+  const int nodes = nx * ny * nz, cells = 2 * n * n * n;
+  ASSERT_EQ(ex_put_init(id, "two blocks", 3, nodes, cells, 2, 0, 0), 0);
+  std::vector<double> x, y, z;
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i) {
+        x.push_back(double(i) / n);
+        y.push_back(double(j) / n);
+        z.push_back(double(k) / n);
+      }
+  ASSERT_EQ(ex_put_coord(id, x.data(), y.data(), z.data()), 0);
+  auto node = [&](int i, int j, int k) { return 1 + i + nx * (j + ny * k); };
+  for (int block = 0; block < 2; ++block) {
+    const int blockId = 10 + block;
+    ASSERT_EQ(ex_put_block(id, EX_ELEM_BLOCK, blockId, "HEX8", n * n * n, 8, 0, 0, 0), 0);
+    std::vector<int> connect;
+    for (int k = 0; k < n; ++k)
+      for (int j = 0; j < n; ++j)
+        for (int i = block * n; i < (block + 1) * n; ++i)
+          for (const int c : {node(i, j, k), node(i + 1, j, k), node(i + 1, j + 1, k),
+                              node(i, j + 1, k), node(i, j, k + 1), node(i + 1, j, k + 1),
+                              node(i + 1, j + 1, k + 1), node(i, j + 1, k + 1)})
+            connect.push_back(c);
+    ASSERT_EQ(ex_put_conn(id, EX_ELEM_BLOCK, blockId, connect.data(), nullptr, nullptr), 0);
+  }
+  char* nodal[] = {const_cast<char*>("vel_x"), const_cast<char*>("vel_y"),
+                   const_cast<char*>("vel_z")};
+  ASSERT_EQ(ex_put_variable_param(id, EX_NODAL, 3), 0);
+  ASSERT_EQ(ex_put_variable_names(id, EX_NODAL, 3, nodal), 0);
+  char* element[] = {const_cast<char*>("pressure")};
+  ASSERT_EQ(ex_put_variable_param(id, EX_ELEM_BLOCK, 1), 0);
+  ASSERT_EQ(ex_put_variable_names(id, EX_ELEM_BLOCK, 1, element), 0);
+  const double times[] = {0.0, 0.5, 1.0};
+  for (int step = 1; step <= 3; ++step) {
+    const double t = times[step - 1];
+    ASSERT_EQ(ex_put_time(id, step, &t), 0);
+    for (int c = 0; c < 3; ++c) {
+      std::vector<double> v(static_cast<std::size_t>(nodes));
+      for (int p = 0; p < nodes; ++p)
+        v[std::size_t(p)] = flowAt({x[std::size_t(p)], y[std::size_t(p)], z[std::size_t(p)]}, t)[c];
+      ASSERT_EQ(ex_put_var(id, step, EX_NODAL, c + 1, 1, nodes, v.data()), 0);
+    }
+    for (int block = 0; block < 2; ++block) {
+      const std::vector<double> pressure(std::size_t(n * n * n), 100.0 * (block + 1) + t);
+      ASSERT_EQ(ex_put_var(id, step, EX_ELEM_BLOCK, 1, 10 + block, n * n * n, pressure.data()), 0);
+    }
+  }
+  ASSERT_EQ(ex_close(id), 0);
+}
+
+void expectFlow(const VectorField& f, double t, double tolerance) {
+  for (int k = 0; k < f.dims().z; ++k)
+    for (int j = 0; j < f.dims().y; ++j)
+      for (int i = 0; i < f.dims().x; ++i) {
+        const glm::dvec3 p(f.pointPosition(i, j, k));
+        ASSERT_TRUE(f.valid(i, j, k));
+        ASSERT_LE(glm::length(glm::dvec3(f.at(i, j, k)) - flowAt(p, t)), tolerance * (1 + t))
+            << "at " << p.x << " " << p.y << " " << p.z << ", t = " << t;
+      }
+}
+
+TEST(SimulationFormats, ExodusBlocksMergeAndItsTimeStepsPlay) {
+  const auto dir = test::scratch();
+  const auto path = dir / "flow.e";
+  writeExodus(path, 4);
+  LoadReport report;
+  LoadOptions options;
+  options.resolution = {17, 9, 9};
+  const VectorField first = loadField(path, options, &report);
+  EXPECT_EQ(report.format, "Exodus II file (.e)");
+  EXPECT_EQ(report.arrayName, "vel_");  // vel_x, vel_y, vel_z joined by VTK's reader
+  EXPECT_EQ(report.blocks.size(), 2u);
+  EXPECT_EQ(report.cells, std::uint64_t(2 * 64));
+  ASSERT_EQ(report.times, (std::vector<double>{0.0, 0.5, 1.0}));
+  EXPECT_EQ(first.bounds().max, glm::vec3(2.0f, 1.0f, 1.0f));
+  expectFlow(first, 0.0, kExact);
+  // The element variable, moved to the points: the blocks' means meet at x = 1.
+  const VectorField::Scalars* pressure = first.findScalars("pressure");
+  ASSERT_NE(pressure, nullptr);
+  EXPECT_NEAR(first.sampleScalars(*pressure, {0.25f, 0.5f, 0.5f}), 100.0, 1e-4);
+  EXPECT_NEAR(first.sampleScalars(*pressure, {1.75f, 0.5f, 0.5f}), 200.0, 1e-4);
+
+  options.timeStep = 2;
+  expectFlow(loadField(path, options), 1.0, kExact);
+  options.timeStep = 3;
+  test::expectError([&] { loadField(path, options); },
+                    {path.string(), "3 time steps", "asked for step 3"});
+
+  options.timeStep = 0;
+  const FieldSequence sequence = FieldSequence::fromFile(path, options);
+  ASSERT_EQ(sequence.size(), 3u);
+  EXPECT_EQ(sequence.time(1), 0.5);
+  expectFlow(sequence.frame(1), 0.5, kExact);
+  // By default: the hexahedra's size, 0.25 m.
+  EXPECT_EQ(loadField(path).dims(), glm::ivec3(9, 5, 5));
+}
+
+TEST(SimulationFormats, ExodusFilesThatClaimMoreThanTheyHoldAreRefused) {
+  const auto dir = test::scratch();
+  const auto path = dir / "flow.e";
+  writeExodus(path, 2);
+  const std::string whole = test::readAll(path);
+  const auto cut = dir / "cut.e";
+  test::writeText(cut, whole.substr(0, whole.size() - 100));
+  test::expectError([&] { loadField(cut); }, {cut.string(), "claims bytes", "truncated"});
+  test::writeText(cut, whole.substr(0, 40));
+  test::expectError([&] { loadField(cut); },
+                    {cut.string(), "the file ends inside", "NetCDF header"});
+  LoadOptions small;
+  small.memoryBudget = 1000;
+  test::expectError([&] { loadField(path, small); }, {path.string(), "memory budget of 1000"});
+}
+
+}  // namespace
+}  // namespace sandstorm
