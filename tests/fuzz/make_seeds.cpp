@@ -207,9 +207,7 @@ int main(int argc, char** argv) {
   const auto index = [&](const std::string& name, const std::string& head, const fs::path& piece) {
     std::ifstream in(piece, std::ios::binary);
     text(out / "fuzz_field_index" / name,
-         head + "
-#-- -
-" + std::string(std::istreambuf_iterator<char>(in), {}));
+         head + "\n#---\n" + std::string(std::istreambuf_iterator<char>(in), {}));
   };
   index("pvtu",
         "<?xml version=\"1.0\"?>\n<VTKFile type=\"PUnstructuredGrid\" version=\"0.1\">\n"
