@@ -5,6 +5,7 @@
 #include "core/io/exodus_reader.h"
 #include "core/io/fga_reader.h"
 #include "core/io/field_format.h"
+#include "core/io/openfoam_reader.h"
 #include "core/io/pvd_file.h"
 #include "core/io/unity_vf_reader.h"
 #include "core/io/vdb_reader.h"
@@ -60,8 +61,11 @@ VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
       auto data = readExodus(path, options, report);
       return extractVectorField(data, path, options, report);
     }
+    case FieldFormat::OpenFoam: {
+      auto data = readOpenFoam(path, options, report);
+      return extractVectorField(data, path, options, report);
+    }
     case FieldFormat::EnSightGold:
-    case FieldFormat::OpenFoam:
     case FieldFormat::NetCdf:
     case FieldFormat::Cgns:
     case FieldFormat::VtkHdf:

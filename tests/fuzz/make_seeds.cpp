@@ -37,6 +37,7 @@
 #include "core/sim/session_log.h"
 #include "core/tracking/dtrack_writer.h"
 #include "core/tracking/tracker_script.h"
+#include "tests/io/openfoam_case.h"
 
 namespace fs = std::filesystem;
 using namespace sandstorm;
@@ -90,8 +91,8 @@ int main(int argc, char** argv) {
   const fs::path out = argv[1], source = argv[2];
   for (const char* t :
        {"fuzz_field_vtk", "fuzz_field_vti", "fuzz_field_vtr", "fuzz_field_vts", "fuzz_field_vtu",
-        "fuzz_field_vtp", "fuzz_field_index", "fuzz_field_e", "fuzz_field_vdb", "fuzz_field_fga",
-        "fuzz_field_vf", "fuzz_height_map", "fuzz_config", "fuzz_session_log",
+        "fuzz_field_vtp", "fuzz_field_index", "fuzz_field_e", "fuzz_openfoam", "fuzz_field_vdb",
+        "fuzz_field_fga", "fuzz_field_vf", "fuzz_height_map", "fuzz_config", "fuzz_session_log",
         "fuzz_cluster_packet", "fuzz_dtrack", "fuzz_pvx", "fuzz_tracker_path"})
     fs::create_directories(out / t);
 
@@ -202,6 +203,28 @@ int main(int argc, char** argv) {
     w->SetInputData(mesh);
     w->SetFileName((out / "fuzz_field_e" / "mesh.e").c_str());
     w->Write();
+  }
+  // OpenFOAM cases of two cells, ascii and binary, as fuzz_openfoam.cpp takes them.
+  for (const bool binary : {false, true}) {
+    test::FoamCase c;
+    c.n = 2;
+    c.binary = binary;
+    c.times = {0.0, 1.0};
+    c.flow = [](const glm::dvec3& p, double t) { return p * (1.0 + t); };
+    const fs::path folder = out / "openfoam-case";
+    fs::remove_all(folder);
+    test::writeFoamCase(c, folder);
+    std::string joined;
+    for (const char* name :
+         {"system/controlDict", "constant/polyMesh/points", "constant/polyMesh/faces",
+          "constant/polyMesh/owner", "constant/polyMesh/neighbour", "constant/polyMesh/boundary",
+          "0/U", "1/U"}) {
+      std::ifstream in(folder / name, std::ios::binary);
+      joined += std::string("//@ ") + name + "\n" +
+                std::string(std::istreambuf_iterator<char>(in), {}) + "\n";
+    }
+    text(out / "fuzz_openfoam" / (binary ? "binary" : "ascii"), joined);
+    fs::remove_all(folder);
   }
   // Index files with the one piece or block they name, "p0" (fuzz_field_index.cpp).
   const auto index = [&](const std::string& name, const std::string& head, const fs::path& piece) {

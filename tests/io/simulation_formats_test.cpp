@@ -6,9 +6,12 @@
 
 #include <vtk_exodusII.h>
 
+#include <cmath>
+
 #include "core/io/field_loader.h"
 #include "core/io/field_sequence.h"
 #include "tests/io/io_test_util.h"
+#include "tests/io/openfoam_case.h"
 
 namespace sandstorm {
 namespace {
@@ -141,6 +144,80 @@ TEST(SimulationFormats, ExodusFilesThatClaimMoreThanTheyHoldAreRefused) {
   LoadOptions small;
   small.memoryBudget = 1000;
   test::expectError([&] { loadField(path, small); }, {path.string(), "memory budget of 1000"});
+}
+
+// An OpenFOAM case's cell values at the points: each mesh point takes the mean
+// of the cells around it, exact for a linear flow where those cells lie
+// symmetrically about it (inside the box), within the flow's stretch (3)
+// times a cell's half diagonal on the box's faces.
+void expectFoamFlow(const VectorField& f, int n, double t) {
+  const double h = 1.0 / n, reach = 0.5 * std::sqrt(3.0) * h;
+  ASSERT_EQ(f.dims(), glm::ivec3(n + 1));
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const glm::dvec3 p(f.pointPosition(i, j, k));
+        const bool inside = i > 0 && i < n && j > 0 && j < n && k > 0 && k < n;
+        const double error = glm::length(glm::dvec3(f.at(i, j, k)) - flowAt(p, t));
+        ASSERT_LE(error, (inside ? kExact : 3.0 * reach + kExact) * (1 + t))
+            << "at " << p.x << " " << p.y << " " << p.z;
+      }
+}
+
+TEST(SimulationFormats, OpenFoamCasesAsciiBinaryAndDecomposed) {
+  const auto dir = test::scratch();
+  for (const bool binary : {false, true})
+    for (const bool decomposed : {false, true}) {
+      SCOPED_TRACE(concat(binary ? "binary" : "ascii", decomposed ? ", decomposed" : ""));
+      test::FoamCase c;
+      c.binary = binary;
+      c.decomposed = decomposed;
+      c.flow = flowAt;
+      const auto folder = dir / concat(binary ? "binary" : "ascii", decomposed ? "-dec" : "");
+      test::writeFoamCase(c, folder);
+      LoadOptions options;
+      options.resolution = glm::ivec3(c.n + 1);
+      LoadReport report;
+      const VectorField f = loadField(folder, options, &report);
+      EXPECT_EQ(report.format, "OpenFOAM case");
+      EXPECT_EQ(report.arrayName, "U");
+      EXPECT_EQ(report.cells, std::uint64_t(c.n * c.n * c.n));
+      ASSERT_EQ(report.times, c.times);
+      EXPECT_EQ(f.invalidCount(), 0u);
+      expectFoamFlow(f, c.n, 0.0);
+      // The .foam file and controlDict name the same case; a later time folder.
+      options.timeStep = 2;
+      expectFoamFlow(loadField(folder / "case.foam", options), c.n, 1.0);
+      expectFoamFlow(loadField(folder / "system" / "controlDict", options), c.n, 1.0);
+    }
+}
+
+TEST(SimulationFormats, OpenFoamListsThatClaimMoreThanTheyHoldAreRefused) {
+  const auto dir = test::scratch();
+  for (const bool binary : {false, true}) {
+    SCOPED_TRACE(binary ? "binary" : "ascii");
+    test::FoamCase c;
+    c.binary = binary;
+    c.n = 2;
+    c.flow = flowAt;
+    const auto folder = dir / (binary ? "binary" : "ascii");
+    test::writeFoamCase(c, folder);
+    EXPECT_NO_THROW(loadField(folder));
+    const auto points = folder / "constant" / "polyMesh" / "points";
+    const std::string good = test::readAll(points);
+    std::string bad = good;
+    bad.replace(bad.find("27\n("), 4, "2700000000\n(");
+    test::writeText(points, bad);
+    test::expectError([&] { loadField(folder); }, {points.string(), "2700000000 elements"});
+    bad = good;
+    bad.replace(bad.find("27\n("), 4, "28\n(");
+    test::writeText(points, bad);
+    test::expectError([&] { loadField(folder); }, {points.string(), "28 elements"});
+    test::writeText(points, good.substr(0, good.size() - 40));
+    test::expectError([&] { loadField(folder); }, {points.string()});
+    test::writeText(points, good);
+  }
+  test::expectError([&] { loadField(dir); }, {dir.string(), "not an OpenFOAM case"});
 }
 
 }  // namespace

@@ -1,0 +1,61 @@
+// An OpenFOAM case: the input is its files, each after a line "//@ NAME"
+// naming one of the files below (others are ignored, so the fuzzer writes
+// nothing else), loaded as a case folder.
+#include <array>
+#include <filesystem>
+#include <string>
+
+#include "core/io/field_loader.h"
+#include "core/io/vtk_message_trap.h"
+#include "core/util/error.h"
+#include "tests/fuzz/fuzz_input.h"
+
+namespace {
+
+constexpr std::array<const char*, 9> kFiles = {"system/controlDict",
+                                               "constant/polyMesh/points",
+                                               "constant/polyMesh/faces",
+                                               "constant/polyMesh/owner",
+                                               "constant/polyMesh/neighbour",
+                                               "constant/polyMesh/boundary",
+                                               "0/U",
+                                               "1/U",
+                                               "processor0/constant/polyMesh/points"};
+
+}  // namespace
+
+extern "C" int LLVMFuzzerInitialize(int*, char***) {
+  sandstorm::VtkMessageTrap::installOutputWindow();
+  return 0;
+}
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  using namespace sandstorm;
+  namespace fs = std::filesystem;
+  const fs::path root = fuzz::scratch() / "case";
+  fs::remove_all(root);
+  const std::string_view text = fuzz::asText(data, size);
+  std::size_t at = text.find("//@ ");
+  while (at != std::string_view::npos) {
+    const std::size_t eol = text.find('\n', at);
+    if (eol == std::string_view::npos) break;
+    const std::string name(text.substr(at + 4, eol - at - 4));
+    const std::size_t next = text.find("\n//@ ", eol);
+    const std::string_view body =
+        text.substr(eol + 1, next == std::string_view::npos ? std::string_view::npos : next - eol);
+    for (const char* allowed : kFiles)
+      if (name == allowed) {
+        fs::create_directories((root / name).parent_path());
+        fuzz::asFile(reinterpret_cast<const std::uint8_t*>(body.data()), body.size(),
+                     fs::path("case") / name);
+      }
+    at = next == std::string_view::npos ? next : next + 1;
+  }
+  LoadOptions options;
+  options.memoryBudget = fuzz::kBudget;
+  try {
+    loadField(root, options);
+  } catch (const Error&) {
+  }
+  return 0;
+}
