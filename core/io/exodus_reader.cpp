@@ -1,5 +1,8 @@
 #include "core/io/exodus_reader.h"
 
+#include <algorithm>
+#include <vector>
+
 #include <vtkDataSet.h>
 #include <vtkExodusIIReader.h>
 #include <vtkMultiBlockDataSet.h>
@@ -14,6 +17,81 @@
 
 namespace sandstorm {
 namespace {
+
+// The Exodus II layout the reader walks: every object count with its ids,
+// every block with its sizes and connectivity, the coordinates, the result
+// variables' names and values, each of the shape its dimensions give (VTK's
+// reader fails, and leaks, on files that lack one).
+void checkExodusLayout(const NetcdfHeader& h, const std::string& file) {
+  auto fail = [&](const std::string& what) {
+    throw Error(concat(file, ": ", what, " (the Exodus II layout)"));
+  };
+  auto length = [&](const std::string& dim) -> std::uint64_t {
+    const auto* d = h.dimension(dim);
+    return d ? d->length : 0;
+  };
+  // A variable named `name` whose dimensions are `dims` exactly.
+  auto expect = [&](const std::string& name, const std::vector<std::string>& dims) {
+    const NetcdfVariable* v = h.variable(name);
+    if (!v) fail(concat("no variable '", name, "'"));
+    bool same = v->dims.size() == dims.size();
+    for (std::size_t i = 0; same && i < dims.size(); ++i)
+      same = h.dims[v->dims[i]].name == dims[i];
+    if (!same) {
+      std::string want;
+      for (const std::string& d : dims)
+        want += (want.empty() ? "" : ", ") + d;
+      fail(concat("variable '", name, "' is not shaped (", want, ")"));
+    }
+  };
+  static const std::pair<const char*, const char*> kObjects[] = {
+      {"num_el_blk", "eb_prop1"},     {"num_node_sets", "ns_prop1"},
+      {"num_side_sets", "ss_prop1"},  {"num_ed_blk", "ed_prop1"},
+      {"num_fa_blk", "fa_prop1"},     {"num_elem_sets", "els_prop1"},
+      {"num_edge_sets", "es_prop1"},  {"num_face_sets", "fs_prop1"},
+      {"num_node_maps", "nm_prop1"},  {"num_elem_maps", "em_prop1"},
+      {"num_edge_maps", "edm_prop1"}, {"num_face_maps", "fam_prop1"}};
+  for (const auto& [count, ids] : kObjects)
+    if (h.dimension(count)) expect(ids, {count});
+  if (length("num_nodes") > 0) {
+    if (h.variable("coord")) {
+      expect("coord", {"num_dim", "num_nodes"});
+    } else {
+      const char* axes[] = {"coordx", "coordy", "coordz"};
+      for (std::uint64_t a = 0; a < std::min<std::uint64_t>(length("num_dim"), 3); ++a)
+        expect(axes[a], {"num_nodes"});
+    }
+  }
+  const std::uint64_t blocks = length("num_el_blk");
+  if (blocks > 100000) fail(concat(blocks, " element blocks"));
+  for (std::uint64_t b = 1; b <= blocks; ++b) {
+    const std::string in = concat("num_el_in_blk", b), per = concat("num_nod_per_el", b);
+    if (!h.dimension(in)) fail(concat("no dimension '", in, "'"));
+    if (length(in) > 0) {
+      if (!h.dimension(per)) fail(concat("no dimension '", per, "'"));
+      expect(concat("connect", b), {in, per});
+    }
+  }
+  for (const char* kind : {"nod", "elem", "glo"}) {
+    const std::string count = concat("num_", kind, "_var");
+    if (length(count) > 0) expect(concat("name_", kind, "_var"), {count, "len_name"});
+  }
+  const std::uint64_t nodal = length("num_nod_var");
+  if (h.variable("vals_nod_var")) {
+    expect("vals_nod_var", {"time_step", "num_nod_var", "num_nodes"});
+  } else {
+    for (std::uint64_t v = 1; v <= nodal; ++v)
+      expect(concat("vals_nod_var", v), {"time_step", "num_nodes"});
+  }
+  if (h.dimension("time_step")) expect("time_whole", {"time_step"});
+  for (const NetcdfVariable& v : h.variables) {
+    // vals_elem_var<v>eb<b>: one step of block b's elements.
+    if (v.name.rfind("vals_elem_var", 0) != 0) continue;
+    const std::size_t eb = v.name.find("eb");
+    if (eb == std::string::npos) fail(concat("variable '", v.name, "' names no block"));
+    expect(v.name, {"time_step", concat("num_el_in_blk", v.name.substr(eb + 2))});
+  }
+}
 
 // What the reader will hold at once, against the budget; and the shape of an
 // Exodus file at all.
@@ -45,7 +123,9 @@ void checkExodusHeader(const NetcdfHeader& h, const std::string& file, const Loa
 vtkSmartPointer<vtkDataObject> readExodus(const std::filesystem::path& path,
                                           const LoadOptions& options, LoadReport& report) {
   const std::string file = path.string();
-  checkExodusHeader(readNetcdfHeader(path), file, options);
+  const NetcdfHeader header = readNetcdfHeader(path);
+  checkExodusHeader(header, file, options);
+  checkExodusLayout(header, file);
   VtkMessageTrap trap(path);
   vtkNew<vtkExodusIIReader> reader;
   trap.watch(reader);

@@ -2,6 +2,7 @@
 
 #include <vtkDataSet.h>
 
+#include "core/io/ensight_reader.h"
 #include "core/io/exodus_reader.h"
 #include "core/io/fga_reader.h"
 #include "core/io/field_format.h"
@@ -65,7 +66,10 @@ VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
       auto data = readOpenFoam(path, options, report);
       return extractVectorField(data, path, options, report);
     }
-    case FieldFormat::EnSightGold:
+    case FieldFormat::EnSightGold: {
+      auto data = readEnSight(path, options, report);
+      return extractVectorField(data, path, options, report);
+    }
     case FieldFormat::NetCdf:
     case FieldFormat::Cgns:
     case FieldFormat::VtkHdf:

@@ -187,10 +187,18 @@ vtkSmartPointer<vtkDataArray> joinComponents(vtkDataSet* data, const VectorChoic
 }
 
 vtkSmartPointer<vtkDataSet> cellsToPoints(vtkDataSet* data, const std::filesystem::path& path) {
+  // A cell array named as a point array would replace it at the points.
+  vtkSmartPointer<vtkDataSet> input;
+  input.TakeReference(data->NewInstance());
+  input->ShallowCopy(data);
+  vtkCellData* cd = input->GetCellData();
+  for (int i = cd->GetNumberOfArrays() - 1; i >= 0; --i)
+    if (const char* name = cd->GetArrayName(i); name && input->GetPointData()->GetArray(name))
+      cd->RemoveArray(i);
   VtkMessageTrap trap(path);
   vtkNew<vtkCellDataToPointData> filter;
   trap.watch(filter);
-  filter->SetInputData(data);
+  filter->SetInputData(input);
   filter->PassCellDataOff();
   filter->Update();
   trap.throwIfFailed("moving cell data to the points (vtkCellDataToPointData)");

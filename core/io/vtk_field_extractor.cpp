@@ -217,6 +217,10 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
       continue;
     }
     vtkDataArray* array = data->GetPointData()->GetArray(choice.name.c_str());
+    if (array && array->GetNumberOfComponents() != 3)
+      throw Error(concat(file, composite ? concat(": block '", b.name, "'") : std::string(),
+                         ": array '", choice.name, "' has ", array->GetNumberOfComponents(),
+                         " components at the points; expected a 3-component vector array"));
     if (!array || array->GetNumberOfTuples() != data->GetNumberOfPoints())
       throw Error(concat(file, composite ? concat(": block '", b.name, "'") : std::string(),
                          ": array '", choice.name, "' holds ",

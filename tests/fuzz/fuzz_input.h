@@ -37,6 +37,33 @@ inline std::string_view asText(const std::uint8_t* data, std::size_t size) {
   return {reinterpret_cast<const char*>(data), size};
 }
 
+// Several files in one input, each after a line "//@ NAME": those whose NAME
+// is in `allowed` are written under `root` (emptied first), the others ignored,
+// so a fuzzer writes nowhere else.
+template <class Names>
+void asFiles(std::string_view text, const std::filesystem::path& root, const Names& allowed) {
+  std::filesystem::remove_all(root);
+  std::filesystem::create_directories(root);
+  std::size_t at = text.rfind("//@ ", 0) == 0 ? 0 : text.find("\n//@ ");
+  if (at != std::string_view::npos && at > 0) ++at;
+  while (at != std::string_view::npos) {
+    const std::size_t eol = text.find('\n', at);
+    if (eol == std::string_view::npos) break;
+    const std::string name(text.substr(at + 4, eol - at - 4));
+    const std::size_t next = text.find("\n//@ ", eol);
+    const std::string_view body =
+        text.substr(eol + 1, next == std::string_view::npos ? std::string_view::npos : next - eol);
+    for (const char* a : allowed)
+      if (name == a) {
+        const std::filesystem::path path = root / name;
+        std::filesystem::create_directories(path.parent_path());
+        std::ofstream(path, std::ios::binary | std::ios::trunc)
+            .write(body.data(), std::streamsize(body.size()));
+      }
+    at = next == std::string_view::npos ? next : next + 1;
+  }
+}
+
 // Loaders run with this budget: enough for any seed, small enough that a
 // refused allocation shows as a fuzzer's malloc limit, not as swapping.
 constexpr std::size_t kBudget = std::size_t{64} << 20;

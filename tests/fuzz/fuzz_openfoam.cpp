@@ -33,24 +33,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   using namespace sandstorm;
   namespace fs = std::filesystem;
   const fs::path root = fuzz::scratch() / "case";
-  fs::remove_all(root);
-  const std::string_view text = fuzz::asText(data, size);
-  std::size_t at = text.find("//@ ");
-  while (at != std::string_view::npos) {
-    const std::size_t eol = text.find('\n', at);
-    if (eol == std::string_view::npos) break;
-    const std::string name(text.substr(at + 4, eol - at - 4));
-    const std::size_t next = text.find("\n//@ ", eol);
-    const std::string_view body =
-        text.substr(eol + 1, next == std::string_view::npos ? std::string_view::npos : next - eol);
-    for (const char* allowed : kFiles)
-      if (name == allowed) {
-        fs::create_directories((root / name).parent_path());
-        fuzz::asFile(reinterpret_cast<const std::uint8_t*>(body.data()), body.size(),
-                     fs::path("case") / name);
-      }
-    at = next == std::string_view::npos ? next : next + 1;
-  }
+  fuzz::asFiles(fuzz::asText(data, size), root, kFiles);
   LoadOptions options;
   options.memoryBudget = fuzz::kBudget;
   try {

@@ -5,9 +5,11 @@
 // sample data, and small hand-made engine files. Run by scripts/fuzz.
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkEnSightWriter.h>
 #include <vtkExodusIIWriter.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
+#include <vtkIntArray.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -90,10 +92,11 @@ int main(int argc, char** argv) {
   }
   const fs::path out = argv[1], source = argv[2];
   for (const char* t :
-       {"fuzz_field_vtk", "fuzz_field_vti", "fuzz_field_vtr", "fuzz_field_vts", "fuzz_field_vtu",
-        "fuzz_field_vtp", "fuzz_field_index", "fuzz_field_e", "fuzz_openfoam", "fuzz_field_vdb",
-        "fuzz_field_fga", "fuzz_field_vf", "fuzz_height_map", "fuzz_config", "fuzz_session_log",
-        "fuzz_cluster_packet", "fuzz_dtrack", "fuzz_pvx", "fuzz_tracker_path"})
+       {"fuzz_field_vtk",      "fuzz_field_vti",  "fuzz_field_vtr",   "fuzz_field_vts",
+        "fuzz_field_vtu",      "fuzz_field_vtp",  "fuzz_field_index", "fuzz_field_e",
+        "fuzz_openfoam",       "fuzz_ensight",    "fuzz_field_vdb",   "fuzz_field_fga",
+        "fuzz_field_vf",       "fuzz_height_map", "fuzz_config",      "fuzz_session_log",
+        "fuzz_cluster_packet", "fuzz_dtrack",     "fuzz_pvx",         "fuzz_tracker_path"})
     fs::create_directories(out / t);
 
   // Image data in every encoding VTK writes, and the legacy format.
@@ -224,6 +227,43 @@ int main(int argc, char** argv) {
                 std::string(std::istreambuf_iterator<char>(in), {}) + "\n";
     }
     text(out / "fuzz_openfoam" / (binary ? "binary" : "ascii"), joined);
+    fs::remove_all(folder);
+  }
+  // An EnSight Gold case (VTK's writer: C binary) and one in ascii, as
+  // fuzz_ensight.cpp takes them.
+  {
+    const fs::path folder = out / "ensight-case";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    vtkNew<vtkIntArray> block;
+    block->SetName("BlockId");
+    block->SetNumberOfTuples(mesh->GetNumberOfCells());
+    block->Fill(1);
+    mesh->GetCellData()->AddArray(block);
+    vtkNew<vtkEnSightWriter> w;
+    w->SetInputData(mesh);
+    w->SetPath(folder.c_str());
+    w->SetBaseName("flow");
+    w->SetNumberOfBlocks(1);
+    w->Write();
+    mesh->GetCellData()->RemoveArray("BlockId");
+    auto file = [&](const char* name) {
+      std::ifstream in(folder / name, std::ios::binary);
+      return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    text(out / "fuzz_ensight" / "binary",
+         "//@ flow.case\nFORMAT\ntype: ensight gold\nGEOMETRY\nmodel: flow.geo\nVARIABLE\n"
+         "vector per node: velocity flow.vel\n\n//@ flow.geo\n" +
+             file("flow.0.00000.geo") + "\n//@ flow.vel\n" + file("flow.0.00000_n.velocity") +
+             "\n");
+    text(out / "fuzz_ensight" / "ascii",
+         "//@ flow.case\nFORMAT\ntype: ensight gold\nGEOMETRY\nmodel: 1 flow.*****.geo\n"
+         "VARIABLE\nvector per node: 1 velocity flow.*****.vel\nTIME\ntime set: 1\n"
+         "number of steps: 1\nfilename start number: 1\nfilename increment: 1\ntime values: 0\n"
+         "//@ flow.00001.geo\nmesh\nascii\nnode id off\nelement id off\npart\n1\nbox\n"
+         "coordinates\n4\n0\n1\n0\n0\n0\n0\n1\n0\n0\n0\n0\n1\ntetra4\n1\n1 2 3 4\n"
+         "//@ flow.00001.vel\nvelocity\npart\n1\ncoordinates\n1\n2\n3\n4\n1\n2\n3\n4\n1\n"
+         "2\n3\n4\n");
     fs::remove_all(folder);
   }
   // Index files with the one piece or block they name, "p0" (fuzz_field_index.cpp).

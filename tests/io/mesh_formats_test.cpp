@@ -311,7 +311,9 @@ TEST(MeshFormats, MultiblockBlocksOfAnyKindMergeIntoOneField) {
         const glm::dvec3 p(f.pointPosition(i, j, k));
         const bool in = test::inL(p, 1e-6) || p.x >= 2.0 - 1e-6;
         ASSERT_EQ(f.valid(i, j, k), in) << p.x << " " << p.y << " " << p.z;
-        if (in) ASSERT_LE(glm::length(glm::dvec3(f.at(i, j, k)) - asymmetric(p)), kExact);
+        if (in) {
+          ASSERT_LE(glm::length(glm::dvec3(f.at(i, j, k)) - asymmetric(p)), kExact);
+        }
       }
 }
 

@@ -4,6 +4,15 @@
 // analytic field's values, over its blocks and its time steps.
 #include <gtest/gtest.h>
 
+#include <vtkCellData.h>
+#include <vtkDataSetTriangleFilter.h>
+#include <vtkEnSightWriter.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkIntArray.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtk_exodusII.h>
 
 #include <cmath>
@@ -19,6 +28,12 @@ namespace {
 using test::asymmetric;
 
 constexpr double kExact = 1e-5;
+
+std::string replaceFirst(std::string text, const std::string& from, const std::string& to) {
+  const std::size_t at = text.find(from);
+  if (at != std::string::npos) text.replace(at, from.size(), to);
+  return text;
+}
 
 // The flow at time t: the asymmetric field, growing with time.
 glm::dvec3 flowAt(const glm::dvec3& p, double t) {
@@ -218,6 +233,117 @@ TEST(SimulationFormats, OpenFoamListsThatClaimMoreThanTheyHoldAreRefused) {
     test::writeText(points, good);
   }
   test::expectError([&] { loadField(dir); }, {dir.string(), "not an OpenFOAM case"});
+}
+
+// A mesh of tetrahedra over [0, 1]^3 carrying the flow at time t.
+vtkSmartPointer<vtkUnstructuredGrid> tetraBox(double t) {
+  vtkNew<vtkImageData> box;
+  box->SetDimensions(5, 5, 5);
+  box->SetSpacing(0.25, 0.25, 0.25);
+  vtkNew<vtkDataSetTriangleFilter> tets;
+  tets->SetInputData(box);
+  tets->Update();
+  auto mesh = vtkSmartPointer<vtkUnstructuredGrid>::New();
+  mesh->DeepCopy(tets->GetOutput());
+  vtkNew<vtkFloatArray> v;
+  v->SetName("velocity");
+  v->SetNumberOfComponents(3);
+  v->SetNumberOfTuples(mesh->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < mesh->GetNumberOfPoints(); ++p) {
+    double x[3];
+    mesh->GetPoint(p, x);
+    const glm::dvec3 f = flowAt({x[0], x[1], x[2]}, t);
+    v->SetTuple3(p, f.x, f.y, f.z);
+  }
+  mesh->GetPointData()->AddArray(v);
+  vtkNew<vtkIntArray> block;  // the writer's parts
+  block->SetName("BlockId");
+  block->SetNumberOfTuples(mesh->GetNumberOfCells());
+  block->Fill(1);
+  mesh->GetCellData()->AddArray(block);
+  return mesh;
+}
+
+TEST(SimulationFormats, EnSightGoldBinaryTransientCases) {
+  const auto dir = test::scratch();
+  vtkSmartPointer<vtkEnSightWriter> writer;
+  for (int step = 0; step < 3; ++step) {
+    writer = vtkSmartPointer<vtkEnSightWriter>::New();
+    writer->SetInputData(tetraBox(0.5 * step));
+    writer->SetPath(dir.c_str());
+    writer->SetBaseName("flow");
+    writer->SetNumberOfBlocks(1);
+    writer->SetTimeStep(step);
+    writer->SetTransientGeometry(1);
+    writer->Write();
+  }
+  // The case file as the writer's WriteCaseFile writes it (which leaves its
+  // file unflushed until the process ends), with times 0, 0.5, 1.
+  const auto path = dir / "flow.0.case";
+  test::writeText(path,
+                  "FORMAT\ntype: ensight gold\n\n\nGEOMETRY\nmodel: 1 flow.0.*****.geo\n\n"
+                  "VARIABLE\nvector per node: 1 velocity_n flow.0.*****_n.velocity\n\nTIME\n"
+                  "time set: 1\nnumber of steps: 3\nfilename start number: 00000\n"
+                  "filename increment: 00001\ntime values: \n0 0.5 1\n");
+
+  LoadOptions options;
+  options.resolution = {5, 5, 5};
+  LoadReport report;
+  const VectorField f = loadField(path, options, &report);
+  EXPECT_EQ(report.format, "EnSight Gold case (.case)");
+  EXPECT_EQ(report.arrayName, "velocity_n");  // VTK's writer adds its _n
+  ASSERT_EQ(report.times, (std::vector<double>{0.0, 0.5, 1.0}));
+  expectFlow(f, 0.0, kExact);
+  const FieldSequence sequence = FieldSequence::fromFile(path, options);
+  ASSERT_EQ(sequence.size(), 3u);
+  expectFlow(sequence.frame(2), 1.0, kExact);
+
+  // A count beyond the file, a wildcard file missing, a file outside the case.
+  const auto geo = dir / "flow.0.00001.geo";
+  const std::string good = test::readAll(geo);
+  test::writeText(geo, good.substr(0, good.size() - 64));
+  options.timeStep = 1;
+  test::expectError([&] { loadField(path, options); }, {geo.string(), "part 1", "truncated"});
+  std::filesystem::remove(geo);
+  test::expectError([&] { loadField(path, options); }, {geo.string(), "no such file"});
+  test::writeText(path, "FORMAT\ntype: ensight gold\nGEOMETRY\nmodel: ../flow.0.00000.geo\n");
+  test::expectError([&] { loadField(path); }, {"outside the case's folder"});
+  test::writeText(path, "FORMAT\ntype: ensight\nGEOMETRY\nmodel: flow.0.00000.geo\n");
+  test::expectError([&] { loadField(path); }, {path.string(), "EnSight 6 is not read"});
+}
+
+// EnSight Gold ascii as its format guide lays it out: a value a line, an
+// element a line; a hexahedron, its node ids given, and a per-node vector.
+TEST(SimulationFormats, EnSightGoldAscii) {
+  const auto dir = test::scratch();
+  std::string geo =
+      "one hexahedron\nascii\nnode id given\nelement id given\npart\n1\nbox\n"
+      "coordinates\n8\n";
+  for (int i = 1; i <= 8; ++i)
+    geo += std::to_string(i) + "\n";
+  const int corner[8][3] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0},
+                            {0, 0, 1}, {1, 0, 1}, {1, 1, 1}, {0, 1, 1}};
+  std::string vec = "velocity\npart\n1\ncoordinates\n";
+  for (int a = 0; a < 3; ++a) {
+    for (const auto& c : corner)
+      geo += concat(2.0 * c[a], "\n");
+    for (const auto& c : corner)
+      vec += concat(flowAt(2.0 * glm::dvec3(c[0], c[1], c[2]), 0.0)[a], "\n");
+  }
+  geo += "hexa8\n1\n1\n1 2 3 4 5 6 7 8\n";
+  test::writeText(dir / "box.geo", geo);
+  test::writeText(dir / "box.vel", vec);
+  const auto path = dir / "box.case";
+  test::writeText(path,
+                  "FORMAT\ntype: ensight gold\n\nGEOMETRY\nmodel: box.geo\n\nVARIABLE\n"
+                  "vector per node: velocity box.vel\n");
+  LoadOptions options;
+  options.resolution = {5, 5, 5};
+  const VectorField f = loadField(path, options);
+  EXPECT_EQ(f.bounds().max, glm::vec3(2.0f));
+  expectFlow(f, 0.0, kExact);
+  test::writeText(dir / "box.geo", replaceFirst(geo, "hexa8\n1\n", "hexa8\n1000000\n"));
+  test::expectError([&] { loadField(path); }, {"box.geo", "part 1's hexa8", "the file ends"});
 }
 
 }  // namespace
