@@ -6,6 +6,7 @@
 #include "core/io/exodus_reader.h"
 #include "core/io/fga_reader.h"
 #include "core/io/field_format.h"
+#include "core/io/netcdf_cf_reader.h"
 #include "core/io/openfoam_reader.h"
 #include "core/io/pvd_file.h"
 #include "core/io/unity_vf_reader.h"
@@ -70,7 +71,11 @@ VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
       auto data = readEnSight(path, options, report);
       return extractVectorField(data, path, options, report);
     }
-    case FieldFormat::NetCdf:
+    case FieldFormat::NetCdf: {
+      LoadOptions named = options;  // the flow's components, by their standard names
+      auto data = readNetcdfCf(path, named, report);
+      return extractVectorField(data, path, named, report);
+    }
     case FieldFormat::Cgns:
     case FieldFormat::VtkHdf:
       throw Error(concat(path.string(), ": ", describe(format), "s are not read yet"));

@@ -4,6 +4,7 @@
 // analytic field's values, over its blocks and its time steps.
 #include <gtest/gtest.h>
 
+#include <netcdf.h>
 #include <vtkCellData.h>
 #include <vtkDataSetTriangleFilter.h>
 #include <vtkEnSightWriter.h>
@@ -14,6 +15,8 @@
 #include <vtkPointData.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtk_exodusII.h>
+
+#include <cstring>
 
 #include <cmath>
 
@@ -235,6 +238,14 @@ TEST(SimulationFormats, OpenFoamListsThatClaimMoreThanTheyHoldAreRefused) {
   test::expectError([&] { loadField(dir); }, {dir.string(), "not an OpenFOAM case"});
 }
 
+// A flow linear in metres east, north and up of 10 E, 44.5 N, time t.
+glm::dvec3 netcdfFlow(double lon, double lat, double z, double t) {
+  const double radians = 3.14159265358979323846 / 180.0, r = 6371000.0;
+  const double x = lon * radians * r * std::cos(44.5 * radians);
+  const double y = (lat - 44.5) * radians * r;
+  return glm::dvec3(x / 10000.0 - 80.0, 2.0 * y / 10000.0, 3.0 * z / 100.0 + 0.5) * (1.0 + t);
+}
+
 // A mesh of tetrahedra over [0, 1]^3 carrying the flow at time t.
 vtkSmartPointer<vtkUnstructuredGrid> tetraBox(double t) {
   vtkNew<vtkImageData> box;
@@ -344,6 +355,104 @@ TEST(SimulationFormats, EnSightGoldAscii) {
   expectFlow(f, 0.0, kExact);
   test::writeText(dir / "box.geo", replaceFirst(geo, "hexa8\n1\n", "hexa8\n1000000\n"));
   test::expectError([&] { loadField(path); }, {"box.geo", "part 1's hexa8", "the file ends"});
+}
+
+// A NetCDF CF file as a weather model writes one, through the NetCDF
+// library: u, v, w (by their CF standard names ua, va, wa, or named u, v, w)
+// on longitude, latitude (running north to south) and height, two times.
+void writeNetcdf(const std::filesystem::path& path, bool standardNames, const char* levelUnits) {
+  int id = -1;
+  ASSERT_EQ(nc_create(path.c_str(), NC_CLOBBER, &id), NC_NOERR);
+  int time, lev, lat, lon;
+  ASSERT_EQ(nc_def_dim(id, "time", NC_UNLIMITED, &time), NC_NOERR);
+  ASSERT_EQ(nc_def_dim(id, "lev", 3, &lev), NC_NOERR);
+  ASSERT_EQ(nc_def_dim(id, "lat", 5, &lat), NC_NOERR);
+  ASSERT_EQ(nc_def_dim(id, "lon", 6, &lon), NC_NOERR);
+  auto coordinate = [&](const char* name, int dim, const char* units, const char* standard) {
+    int v = -1;
+    EXPECT_EQ(nc_def_var(id, name, NC_DOUBLE, 1, &dim, &v), NC_NOERR);
+    nc_put_att_text(id, v, "units", std::strlen(units), units);
+    nc_put_att_text(id, v, "standard_name", std::strlen(standard), standard);
+    return v;
+  };
+  const int vt = coordinate("time", time, "seconds since 2026-01-01", "time");
+  const int vz = coordinate("lev", lev, levelUnits, "height");
+  const int vy = coordinate("lat", lat, "degrees_north", "latitude");
+  const int vx = coordinate("lon", lon, "degrees_east", "longitude");
+  const int dims[4] = {time, lev, lat, lon};
+  const char* names[3] = {"u", "v", "w"};
+  const char* standard[3] = {"eastward_wind", "northward_wind", "upward_air_velocity"};
+  int flow[3];
+  for (int c = 0; c < 3; ++c) {
+    const std::string name = standardNames ? std::string(names[c]) + "a" : names[c];
+    ASSERT_EQ(nc_def_var(id, name.c_str(), NC_FLOAT, 4, dims, &flow[c]), NC_NOERR);
+    if (standardNames)
+      nc_put_att_text(id, flow[c], "standard_name", std::strlen(standard[c]), standard[c]);
+    nc_put_att_text(id, flow[c], "units", 3, "m/s");
+  }
+  ASSERT_EQ(nc_enddef(id), NC_NOERR);
+  const double lons[6] = {10.0, 10.1, 10.2, 10.3, 10.4, 10.5};
+  const double lats[5] = {45.0, 44.75, 44.5, 44.25, 44.0};
+  const double levs[3] = {0.0, 100.0, 200.0};
+  ASSERT_EQ(nc_put_var_double(id, vx, lons), NC_NOERR);
+  ASSERT_EQ(nc_put_var_double(id, vy, lats), NC_NOERR);
+  ASSERT_EQ(nc_put_var_double(id, vz, levs), NC_NOERR);
+  for (std::size_t step = 0; step < 2; ++step) {
+    const double t = double(step);
+    const std::size_t one = 1;
+    nc_put_vara_double(id, vt, &step, &one, &t);
+    for (int c = 0; c < 3; ++c) {
+      std::vector<float> values;
+      for (double z : levs)
+        for (double la : lats)
+          for (double lo : lons)
+            values.push_back(float(netcdfFlow(lo, la, z, t)[c]));
+      const std::size_t start[4] = {step, 0, 0, 0}, count[4] = {1, 3, 5, 6};
+      ASSERT_EQ(nc_put_vara_float(id, flow[c], start, count, values.data()), NC_NOERR);
+    }
+  }
+  ASSERT_EQ(nc_close(id), NC_NOERR);
+}
+
+TEST(SimulationFormats, NetcdfCfOnLongitudeLatitudeAndHeightInMetres) {
+  const auto dir = test::scratch();
+  for (const bool standardNames : {false, true}) {
+    SCOPED_TRACE(standardNames ? "ua, va, wa by standard_name" : "u, v, w");
+    const auto path = dir / (standardNames ? "cf.nc" : "uvw.nc");
+    writeNetcdf(path, standardNames, "m");
+    LoadReport report;
+    const VectorField f = loadField(path, {}, &report);
+    EXPECT_EQ(report.format, "NetCDF file (.nc)");
+    ASSERT_EQ(report.times, (std::vector<double>{0.0, 1.0}));
+    EXPECT_EQ(f.dims(), glm::ivec3(6, 5, 3));
+    // x: 0.5 degrees of longitude at 44.5 N; y: a degree of latitude about it.
+    const double radians = 3.14159265358979323846 / 180.0, r = 6371000.0;
+    EXPECT_NEAR(f.bounds().max.x - f.bounds().min.x, 0.5 * radians * r * std::cos(44.5 * radians),
+                1.0);
+    EXPECT_NEAR(f.bounds().min.y, -0.5 * radians * r, 1.0);
+    EXPECT_NEAR(f.bounds().max.y, 0.5 * radians * r, 1.0);
+    EXPECT_FLOAT_EQ(f.bounds().max.z, 200.0f);
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < 6; ++i) {
+          const glm::dvec3 expected = netcdfFlow(10.0 + 0.1 * i, 44.0 + 0.25 * j, 100.0 * k, 0.0);
+          ASSERT_LE(glm::length(glm::dvec3(f.at(i, j, k)) - expected), 1e-4)
+              << i << " " << j << " " << k;
+        }
+    LoadOptions later;
+    later.timeStep = 1;
+    EXPECT_NEAR(loadField(path, later).at(2, 1, 1).x, netcdfFlow(10.2, 44.25, 100.0, 1.0).x, 1e-4);
+  }
+  // A vertical axis in pressure: kept, and said.
+  const auto pressure = dir / "pressure.nc";
+  writeNetcdf(pressure, false, "hPa");
+  LoadReport report;
+  const VectorField f = loadField(pressure, {}, &report);
+  EXPECT_FLOAT_EQ(f.bounds().max.z, 200.0f);
+  bool said = false;
+  for (const std::string& note : report.notes)
+    said = said || note.find("axis 'lev' (units 'hpa')") != std::string::npos;
+  EXPECT_TRUE(said);
 }
 
 }  // namespace
