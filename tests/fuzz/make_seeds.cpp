@@ -26,7 +26,10 @@
 #include <vtkXMLStructuredGridWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <netcdf.h>
+
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -265,6 +268,39 @@ int main(int argc, char** argv) {
          "//@ flow.00001.vel\nvelocity\npart\n1\ncoordinates\n1\n2\n3\n4\n1\n2\n3\n4\n1\n"
          "2\n3\n4\n");
     fs::remove_all(folder);
+  }
+  // A NetCDF CF field: u, v, w on longitude, latitude and height, two times,
+  // in the classic and 64-bit-offset formats.
+  for (const int mode : {0, NC_64BIT_OFFSET}) {
+    int id = -1, dims[4], vars[7];
+    const fs::path nc = out / "fuzz_field_nc" / (mode ? "offset64.nc" : "classic.nc");
+    nc_create(nc.c_str(), NC_CLOBBER | mode, &id);
+    const char* names[4] = {"time", "lev", "lat", "lon"};
+    const std::size_t sizes[4] = {NC_UNLIMITED, 2, 2, 3};
+    for (int d = 0; d < 4; ++d)
+      nc_def_dim(id, names[d], sizes[d], &dims[d]);
+    const char* units[4] = {"seconds", "m", "degrees_north", "degrees_east"};
+    for (int d = 0; d < 4; ++d) {
+      nc_def_var(id, names[d], NC_DOUBLE, 1, &dims[d], &vars[d]);
+      nc_put_att_text(id, vars[d], "units", std::strlen(units[d]), units[d]);
+    }
+    const char* flow[3] = {"u", "v", "w"};
+    for (int c = 0; c < 3; ++c)
+      nc_def_var(id, flow[c], NC_FLOAT, 4, dims, &vars[4 + c]);
+    nc_enddef(id);
+    const double lev[2] = {0, 10}, lat[2] = {44, 45}, lon[3] = {10, 11, 12};
+    nc_put_var_double(id, vars[1], lev);
+    nc_put_var_double(id, vars[2], lat);
+    nc_put_var_double(id, vars[3], lon);
+    for (std::size_t step = 0; step < 2; ++step) {
+      const double t = double(step);
+      const std::size_t one = 1, start[4] = {step, 0, 0, 0}, count[4] = {1, 2, 2, 3};
+      nc_put_vara_double(id, vars[0], &step, &one, &t);
+      const std::vector<float> values(12, 1.5f + float(step));
+      for (int c = 0; c < 3; ++c)
+        nc_put_vara_float(id, vars[4 + c], start, count, values.data());
+    }
+    nc_close(id);
   }
   // Index files with the one piece or block they name, "p0" (fuzz_field_index.cpp).
   const auto index = [&](const std::string& name, const std::string& head, const fs::path& piece) {
