@@ -9,6 +9,7 @@
 #include "core/field/analytic_field.h"
 #include "core/sim/attribute_table.h"
 #include "tests/app/run_process.h"
+#include "tests/io/openfoam_case.h"
 
 namespace sandstorm {
 namespace {
@@ -176,6 +177,80 @@ TEST(FileScene, AFileThatIsNotThereOrNotAFieldIsAClearError) {
   const auto bad = test::runSandstorm(path.string() + " --frames 1");
   EXPECT_EQ(bad.exitCode, 1);
   EXPECT_NE(bad.output.find("wind.vti"), std::string::npos) << bad.output;
+}
+
+// An unstructured grid (VTK XML, ascii): hexahedra over a 4 x 2 x 2 m box
+// carrying a wind along x; resampled at its cells' size, it opens as any file.
+std::filesystem::path hexahedra(const std::filesystem::path& dir) {
+  const auto path = dir / "mesh.vtu";
+  std::ofstream out(path);
+  const int nx = 4, ny = 2, nz = 2;
+  auto id = [&](int i, int j, int k) { return i + (nx + 1) * (j + (ny + 1) * k); };
+  const int points = (nx + 1) * (ny + 1) * (nz + 1), cells = nx * ny * nz;
+  out << R"(<?xml version="1.0"?>
+<VTKFile type="UnstructuredGrid" version="1.0" byte_order="LittleEndian">
+<UnstructuredGrid>
+<Piece NumberOfPoints=")"
+      << points << "\" NumberOfCells=\"" << cells << R"(">
+<PointData Vectors="wind">
+<DataArray type="Float32" Name="wind" NumberOfComponents="3" format="ascii">)";
+  for (int p = 0; p < points; ++p)
+    out << "2 0 0.1 ";
+  out << R"(</DataArray>
+</PointData>
+<Points>
+<DataArray type="Float32" NumberOfComponents="3" format="ascii">)";
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i)
+        out << i << " " << j << " " << k << " ";
+  out << R"(</DataArray>
+</Points>
+<Cells>
+<DataArray type="Int32" Name="connectivity" format="ascii">)";
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        out << id(i, j, k) << " " << id(i + 1, j, k) << " " << id(i + 1, j + 1, k) << " "
+            << id(i, j + 1, k) << " " << id(i, j, k + 1) << " " << id(i + 1, j, k + 1) << " "
+            << id(i + 1, j + 1, k + 1) << " " << id(i, j + 1, k + 1) << " ";
+  out << R"(</DataArray>
+<DataArray type="Int32" Name="offsets" format="ascii">)";
+  for (int c = 1; c <= cells; ++c)
+    out << 8 * c << " ";
+  out << R"(</DataArray>
+<DataArray type="UInt8" Name="types" format="ascii">)";
+  for (int c = 0; c < cells; ++c)
+    out << "12 ";
+  out << R"(</DataArray>
+</Cells>
+</Piece>
+</UnstructuredGrid>
+</VTKFile>
+)";
+  return path;
+}
+
+TEST(FileScene, AnUnstructuredMeshAndAnOpenFoamCaseOpenWithTheirPictures) {
+  const auto dir = test::scratchDir("file-scene-mesh");
+  const auto mesh = hexahedra(dir);
+  const auto run = test::runSandstorm(mesh.string() + " --frames 3 --screenshot " + dir.string() +
+                                      " --set sim.maximum=2000");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_NE(run.output.find("VTK XML unstructured grid"), std::string::npos) << run.output;
+  EXPECT_NE(run.output.find("5x3x3"), std::string::npos) << run.output;  // its cells' size
+  EXPECT_TRUE(std::filesystem::exists(dir / "desktop.png"));
+
+  // An OpenFOAM case is a folder: 'sandstorm CASE' opens it, its time folders playing.
+  test::FoamCase c;
+  c.flow = [](const glm::dvec3& p, double t) { return glm::dvec3(1.0 + t, 0.2 * p.x, 0.0); };
+  test::writeFoamCase(c, dir / "cavity");
+  std::filesystem::remove(dir / "desktop.png");
+  const auto foam = test::runSandstorm((dir / "cavity").string() + " --frames 3 --screenshot " +
+                                       dir.string() + " --set sim.maximum=2000");
+  ASSERT_EQ(foam.exitCode, 0) << foam.output;
+  EXPECT_NE(foam.output.find("3 frames over 1 s ('U')"), std::string::npos) << foam.output;
+  EXPECT_TRUE(std::filesystem::exists(dir / "desktop.png"));
 }
 
 TEST(FileScene, AnArrayWithoutAFileIsRefused) {
