@@ -18,6 +18,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr std::uintmax_t kMaxCaseBytes = 1 << 20;
+constexpr std::size_t kMaxLine = 255;  // VTK's EnSight readers read lines into 256 bytes
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -66,13 +67,15 @@ struct Part {
 // 32-bit numbers (either byte order), or ascii lines.
 class EnSightFile {
  public:
-  EnSightFile(const fs::path& path, std::size_t budget) : file_(path.string()), budget_(budget) {
+  // A geometry file says whether it is binary; a variable file is as its geometry (`binary`).
+  EnSightFile(const fs::path& path, std::size_t budget, int binary = -1)
+      : file_(path.string()), budget_(budget) {
     std::ifstream in(path, std::ios::binary);
     if (!in) throw Error(concat(file_, ": cannot open the file for reading"));
     std::ostringstream s;
     s << in.rdbuf();
     bytes_ = s.str();
-    binary_ = bytes_.rfind("C Binary", 0) == 0;
+    binary_ = binary < 0 ? bytes_.rfind("C Binary", 0) == 0 : binary == 1;
     if (bytes_.rfind("Fortran Binary", 0) == 0)
       fail("Fortran binary EnSight files are not read; write C binary or ascii");
   }
@@ -102,6 +105,8 @@ class EnSightFile {
     if (at_ >= bytes_.size()) fail(concat("the file ends where ", what, " should be"));
     const std::size_t eol = bytes_.find('\n', at_);
     std::string s = bytes_.substr(at_, eol == std::string::npos ? std::string::npos : eol - at_);
+    if (s.size() > kMaxLine)
+      fail(concat("a line of ", s.size(), " characters, past VTK's ", kMaxLine));
     at_ = eol == std::string::npos ? bytes_.size() : eol + 1;
     return trim(s);
   }
@@ -142,6 +147,9 @@ class EnSightFile {
       if (at_ >= bytes_.size())
         fail(concat(what, ": ", n, " values, but the file ends after ", i * perLine));
       const std::size_t eol = bytes_.find('\n', at_);
+      const std::size_t end = eol == std::string::npos ? bytes_.size() : eol;
+      if (end - at_ > kMaxLine)
+        fail(concat(what, ": a line of ", end - at_, " characters, past VTK's ", kMaxLine));
       at_ = eol == std::string::npos ? bytes_.size() : eol + 1;
     }
   }
@@ -168,8 +176,9 @@ class EnSightFile {
   int order_ = 0;  // 1 little-endian, 2 big
 };
 
-std::map<long long, Part> checkGeometry(const fs::path& path, std::size_t budget) {
+std::map<long long, Part> checkGeometry(const fs::path& path, std::size_t budget, bool& binary) {
   EnSightFile f(path, budget);
+  binary = f.binary();
   if (f.binary()) f.text("'C Binary'");
   f.text("the first description line");
   f.text("the second description line");
@@ -271,8 +280,8 @@ int componentsOf(const std::string& kind) {
 }
 
 void checkVariable(const fs::path& path, const std::string& kind,
-                   const std::map<long long, Part>& parts, std::size_t budget) {
-  EnSightFile f(path, budget);
+                   const std::map<long long, Part>& parts, std::size_t budget, bool binary) {
+  EnSightFile f(path, budget, binary ? 1 : 0);
   const int components = componentsOf(kind);
   const bool perNode = kind.find("per node") != std::string::npos;
   f.text("the description");
@@ -353,16 +362,28 @@ EnSightCase parseEnSightCase(const fs::path& caseFile) {
   };
   while (std::getline(in, line)) {
     ++lineNumber;
+    // VTK's reader reads lines into 256 bytes and never gets past a longer one.
+    if (line.size() > kMaxLine)
+      fail(concat("a line of ", line.size(), " characters; EnSight's are at most ", kMaxLine));
     line = trim(line.substr(0, line.find('#')));
     if (line.empty()) continue;
     const std::string low = lower(line);
-    if (low == "format" || low == "geometry" || low == "variable" || low == "time" ||
-        low == "file") {
+    if (low == "format" || low == "geometry" || low == "variable" || low == "time") {
       section = low;
       pendingKey.clear();
       continue;
     }
+    if (low == "file" || low == "material" || low == "block_continuation" || low == "scripts")
+      fail(concat("a ", line,
+                  " section: not read (single-file transient cases, materials and "
+                  "scripts are not supported)"));
     const std::size_t colon = line.find(':');
+    if (colon == std::string::npos &&
+        !(section == "time" && (pendingKey == "time values" || pendingKey == "filename numbers")))
+      fail(concat("'", line.substr(0, 40),
+                  "'; expected a section (FORMAT, GEOMETRY, VARIABLE, "
+                  "TIME) or 'key: value'"));
+    if (section.empty()) fail("a line before the FORMAT section");
     std::string key = colon == std::string::npos ? pendingKey : lower(trim(line.substr(0, colon)));
     const std::string value = colon == std::string::npos ? line : trim(line.substr(colon + 1));
     if (section == "format") {
@@ -441,9 +462,11 @@ EnSightCase parseEnSightCase(const fs::path& caseFile) {
 void checkEnSightStep(const EnSightCase& c, std::size_t step, std::size_t memoryBudget) {
   const long long number = step < c.fileNumbers.size() ? c.fileNumbers[step] : 0;
   const fs::path geometry = inside(c, filled(c.geometry, number), "the geometry");
-  const std::map<long long, Part> parts = checkGeometry(geometry, memoryBudget);
+  bool binary = false;
+  const std::map<long long, Part> parts = checkGeometry(geometry, memoryBudget, binary);
   for (const EnSightCase::Variable& v : c.variables)
-    checkVariable(inside(c, filled(v.file, number), "a variable"), v.kind, parts, memoryBudget);
+    checkVariable(inside(c, filled(v.file, number), "a variable"), v.kind, parts, memoryBudget,
+                  binary);
 }
 
 }  // namespace sandstorm

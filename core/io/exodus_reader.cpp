@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include <netcdf.h>
+
 #include <vtkDataSet.h>
 #include <vtkExodusIIReader.h>
 #include <vtkMultiBlockDataSet.h>
@@ -93,6 +95,36 @@ void checkExodusLayout(const NetcdfHeader& h, const std::string& file) {
   }
 }
 
+// Every block's connectivity names nodes of the mesh: VTK's reader takes each
+// node number as an index into the coordinates unchecked.
+void checkConnectivity(const NetcdfHeader& h, const std::string& file) {
+  const auto* nodes = h.dimension("num_nodes");
+  const auto* blocks = h.dimension("num_el_blk");
+  if (!nodes || !blocks || blocks->length == 0) return;
+  int id = -1;
+  if (const int status = nc_open(file.c_str(), NC_NOWRITE, &id); status != NC_NOERR)
+    throw Error(concat(file, ": the NetCDF library cannot open it: ", nc_strerror(status)));
+  struct Close {
+    int id;
+    ~Close() { nc_close(id); }
+  } close{id};
+  for (std::uint64_t b = 1; b <= blocks->length; ++b) {
+    const std::string name = concat("connect", b);
+    const NetcdfVariable* v = h.variable(name);
+    if (!v) continue;
+    int var = -1;
+    if (nc_inq_varid(id, name.c_str(), &var) != NC_NOERR)
+      throw Error(concat(file, ": the NetCDF library finds no '", name, "'"));
+    std::vector<long long> connectivity(std::size_t(h.values(*v)));
+    if (!connectivity.empty() && nc_get_var_longlong(id, var, connectivity.data()) != NC_NOERR)
+      throw Error(concat(file, ": reading '", name, "' failed"));
+    for (std::size_t i = 0; i < connectivity.size(); ++i)
+      if (connectivity[i] < 1 || connectivity[i] > (long long)nodes->length)
+        throw Error(concat(file, ": element block ", b, "'s connectivity names node ",
+                           connectivity[i], "; the nodes are 1..", nodes->length));
+  }
+}
+
 // What the reader will hold at once, against the budget; and the shape of an
 // Exodus file at all.
 void checkExodusHeader(const NetcdfHeader& h, const std::string& file, const LoadOptions& options) {
@@ -126,6 +158,7 @@ vtkSmartPointer<vtkDataObject> readExodus(const std::filesystem::path& path,
   const NetcdfHeader header = readNetcdfHeader(path);
   checkExodusHeader(header, file, options);
   checkExodusLayout(header, file);
+  checkConnectivity(header, file);
   VtkMessageTrap trap(path);
   vtkNew<vtkExodusIIReader> reader;
   trap.watch(reader);

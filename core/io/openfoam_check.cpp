@@ -80,6 +80,8 @@ class FoamScanner {
   FoamScanner(const fs::path& path, std::size_t budget)
       : in_(path), file_(path.string()), budget_(budget) {}
 
+  const OpenFoamFacts& facts() const { return facts_; }
+
   void run() {
     if (!in_.open()) throw Error(concat(file_, ": cannot open the file for reading"));
     while (true) {
@@ -185,6 +187,7 @@ class FoamScanner {
     if (c == ';' || c == ')' || c == '}' || c == ']') {
       if (c == ';') {
         in_.get();
+        inInternalField_ = false;
         return false;
       }
       fail(concat("an unmatched '", char(c), "'"));
@@ -196,15 +199,25 @@ class FoamScanner {
       return false;
     }
     if (integer(w)) {
+      const std::uint64_t value = std::strtoull(w.c_str(), nullptr, 10);
       skipSpace();
       const int next = in_.peek();
       if (next == '(' || next == '{') {
-        list(std::strtoull(w.c_str(), nullptr, 10), next == '{', depth);
+        if (depth == 0) facts_.lists.push_back({value, 0});
+        if (inInternalField_) facts_.internalField = value;
+        inInternalField_ = false;
+        list(value, next == '{', depth);
         lastType_.clear();
         return true;
       }
+      if (depth > 0 && !facts_.lists.empty())
+        facts_.lists.back().maxLabel = std::max(facts_.lists.back().maxLabel, value);
+      if (lastWord_ == "nFaces") facts_.patches.push_back({0, value});
+      if (lastWord_ == "startFace" && !facts_.patches.empty()) facts_.patches.back().first = value;
     }
     if (w.rfind("List<", 0) == 0) lastType_ = w.substr(5, w.size() - 6);
+    if (w == "internalField") inInternalField_ = true;
+    lastWord_ = w;
     return true;
   }
 
@@ -280,7 +293,13 @@ class FoamScanner {
     // A binary file writes lists of fixed-size elements as raw bytes; lists
     // of anything else (a boundary's dictionaries) as text.
     if (const int size = binary_ && !uniform ? elementSize() : 0; size > 0) {
-      if (!in_.skip(count * std::uint64_t(size)))
+      // Labels are read, for the mesh's cross-checks; other values skipped.
+      const bool labels = (lastType_ == "label" ||
+                           (lastType_.empty() && size == label_ && class_ != "scalarField")) &&
+                          depth == 0 && !facts_.lists.empty();
+      const bool complete = labels ? readLabels(count, facts_.lists.back().maxLabel)
+                                   : in_.skip(count * std::uint64_t(size));
+      if (!complete)
         fail(concat("a binary list of ", count, " elements of ", size,
                     " bytes runs past the end of the file (truncated)"));
       if (in_.get() != ')') fail(concat("a binary list of ", count, " elements does not close"));
@@ -307,9 +326,27 @@ class FoamScanner {
       fail(concat("a list of ", count, " elements holds ", items, " (the count is wrong)"));
   }
 
+  // `count` binary labels; false when the file ends first.
+  bool readLabels(std::uint64_t count, std::uint64_t& largest) {
+    for (std::uint64_t i = 0; i < count; ++i) {
+      std::uint64_t v = 0;
+      for (int b = 0; b < label_; ++b) {
+        const int c = in_.get();
+        if (c < 0) return false;
+        v |= std::uint64_t(c) << (8 * b);  // LSB, as the arch says
+      }
+      if (label_ == 4 && (v & 0x80000000u)) v = ~std::uint64_t(0);  // negative: flagged large
+      largest = std::max(largest, v);
+    }
+    return true;
+  }
+
   GzStream in_;
   std::string file_;
   std::size_t budget_;
+  OpenFoamFacts facts_;
+  std::string lastWord_;
+  bool inInternalField_ = false;
   int pending_ = 0;
   int braces_ = 0;
   bool binary_ = false;
@@ -349,30 +386,86 @@ void addFiles(const fs::path& folder, std::vector<fs::path>& out, int depth) {
 
 }  // namespace
 
-void checkOpenFoamFile(const fs::path& file, std::size_t memoryBudget) {
-  FoamScanner(file, memoryBudget).run();
+OpenFoamFacts checkOpenFoamFile(const fs::path& file, std::size_t memoryBudget) {
+  FoamScanner scanner(file, memoryBudget);
+  scanner.run();
+  return scanner.facts();
 }
 
-std::vector<fs::path> openFoamFilesToRead(const fs::path& caseDir, bool decomposed,
-                                          std::size_t timeStep) {
-  std::vector<fs::path> roots;
+std::uint64_t checkOpenFoamMesh(const fs::path& root, std::size_t memoryBudget) {
+  const fs::path mesh = root / "constant" / "polyMesh";
+  auto read = [&](const char* name) {
+    fs::path p = mesh / name;
+    std::error_code ec;
+    if (!fs::exists(p, ec) && fs::exists(mesh / (std::string(name) + ".gz"), ec))
+      p = mesh / (std::string(name) + ".gz");
+    if (!fs::exists(p, ec)) throw Error(concat(p.string(), ": the mesh has no ", name));
+    return std::pair(p.string(), checkOpenFoamFile(p, memoryBudget));
+  };
+  const auto [pointsFile, points] = read("points");
+  const auto [facesFile, faces] = read("faces");
+  const auto [ownerFile, owner] = read("owner");
+  const auto [neighbourFile, neighbour] = read("neighbour");
+  const auto [boundaryFile, boundary] = read("boundary");
+  auto first = [](const OpenFoamFacts& f, const std::string& file, const char* what) {
+    if (f.lists.empty()) throw Error(concat(file, ": no list of ", what));
+    return f.lists.front();
+  };
+  const std::uint64_t nPoints = first(points, pointsFile, "points").count;
+  std::uint64_t nFaces = 0;
+  if (faces.lists.size() == 2) {  // faceCompactList: offsets, then the points of every face
+    nFaces = faces.lists[0].count > 0 ? faces.lists[0].count - 1 : 0;
+    if (faces.lists[0].maxLabel > faces.lists[1].count)
+      throw Error(concat(facesFile, ": an offset (", faces.lists[0].maxLabel,
+                         ") past the face points (", faces.lists[1].count, ")"));
+    if (nFaces > 0 && faces.lists[1].maxLabel >= nPoints)
+      throw Error(concat(facesFile, ": a face names point ", faces.lists[1].maxLabel,
+                         "; the points are 0..", nPoints - 1));
+  } else {
+    const OpenFoamFacts::List list = first(faces, facesFile, "faces");
+    nFaces = list.count;
+    if (nFaces > 0 && list.maxLabel >= nPoints)
+      throw Error(concat(facesFile, ": a face names point ", list.maxLabel, "; the points are 0..",
+                         nPoints - 1));
+  }
+  const OpenFoamFacts::List owners = first(owner, ownerFile, "owners");
+  if (owners.count != nFaces)
+    throw Error(concat(ownerFile, ": ", owners.count, " owners for ", nFaces, " faces"));
+  // OpenFOAM counts the cells as the largest owner plus one; each has a face.
+  const std::uint64_t nCells = nFaces > 0 ? owners.maxLabel + 1 : 0;
+  if (nCells > nFaces)
+    throw Error(concat(ownerFile, ": owner ", owners.maxLabel, " names a cell beyond the ", nFaces,
+                       " faces' cells"));
+  const OpenFoamFacts::List neighbours = first(neighbour, neighbourFile, "neighbours");
+  if (neighbours.count > nFaces || (neighbours.count > 0 && neighbours.maxLabel >= nCells))
+    throw Error(concat(neighbourFile, ": ", neighbours.count, " neighbours up to cell ",
+                       neighbours.maxLabel, " for ", nFaces, " faces and ", nCells, " cells"));
+  for (const auto& [start, count] : boundary.patches)
+    if (start + count > nFaces)
+      throw Error(concat(boundaryFile, ": a patch of faces ", start, "..", start + count,
+                         " past the ", nFaces, " faces"));
+  return nCells;
+}
+
+std::vector<OpenFoamRoot> openFoamFilesToRead(const fs::path& caseDir, bool decomposed,
+                                              std::size_t timeStep) {
+  std::vector<OpenFoamRoot> roots;
   std::error_code ec;
   if (decomposed) {
     for (auto it = fs::directory_iterator(caseDir, ec); !ec && it != fs::directory_iterator();
          it.increment(ec))
       if (it->is_directory(ec) && it->path().filename().string().rfind("processor", 0) == 0)
-        roots.push_back(it->path());
-    std::sort(roots.begin(), roots.end());
+        roots.push_back({it->path(), {}});
+    std::sort(roots.begin(), roots.end(),
+              [](const OpenFoamRoot& a, const OpenFoamRoot& b) { return a.root < b.root; });
   } else {
-    roots.push_back(caseDir);
+    roots.push_back({caseDir, {}});
   }
-  std::vector<fs::path> files;
-  for (const fs::path& root : roots) {
-    addFiles(root / "constant" / "polyMesh", files, 0);
-    const std::vector<fs::path> times = timeFolders(root);
-    if (timeStep < times.size()) addFiles(times[timeStep], files, 1);
+  for (OpenFoamRoot& r : roots) {
+    const std::vector<fs::path> times = timeFolders(r.root);
+    if (timeStep < times.size()) addFiles(times[timeStep], r.fields, 1);
   }
-  return files;
+  return roots;
 }
 
 }  // namespace sandstorm

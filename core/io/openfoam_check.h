@@ -19,18 +19,42 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
+#include <optional>
+#include <utility>
 #include <vector>
 
 namespace sandstorm {
 
-void checkOpenFoamFile(const std::filesystem::path& file, std::size_t memoryBudget);
+// What a file's lists and dictionaries say, for the checks across a mesh's files.
+struct OpenFoamFacts {
+  struct List {
+    std::uint64_t count = 0;     // its elements
+    std::uint64_t maxLabel = 0;  // the largest whole number in it
+  };
+  std::vector<List> lists;                                       // the top-level lists, in order
+  std::vector<std::pair<std::uint64_t, std::uint64_t>> patches;  // (startFace, nFaces)
+  std::optional<std::uint64_t> internalField;                    // a nonuniform field's count
+};
 
-// The files of a case the reader opens for the time step `timeStep` (an
-// index into the case's numeric time folders, in time order): each mesh's
-// constant/polyMesh files and every file of that time folder (and a mesh in
-// it), for the case itself or, decomposed, each processor* folder.
-std::vector<std::filesystem::path> openFoamFilesToRead(const std::filesystem::path& caseDir,
-                                                       bool decomposed, std::size_t timeStep);
+OpenFoamFacts checkOpenFoamFile(const std::filesystem::path& file, std::size_t memoryBudget);
+
+// A mesh's files checked together (vtkOpenFOAMReader counts the cells as the
+// largest owner plus one, and indexes the points by the faces' labels
+// unchecked): every face's points among the points, an owner for each face
+// and no more cells than faces, neighbours among the cells, every patch
+// within the faces. Returns the cell count.
+std::uint64_t checkOpenFoamMesh(const std::filesystem::path& root, std::size_t memoryBudget);
+
+// The meshes of a case (the case folder, or each processor* folder of a
+// decomposed one) and the files of the time folder for `timeStep` (an index
+// into the numeric time folders, in time order) in each.
+struct OpenFoamRoot {
+  std::filesystem::path root;
+  std::vector<std::filesystem::path> fields;
+};
+std::vector<OpenFoamRoot> openFoamFilesToRead(const std::filesystem::path& caseDir, bool decomposed,
+                                              std::size_t timeStep);
 
 }  // namespace sandstorm

@@ -121,8 +121,15 @@ vtkSmartPointer<vtkDataObject> readOpenFoam(const fs::path& path, const LoadOpti
                        ": the OpenFOAM case has no constant/polyMesh (nor processor* "
                        "folders of a decomposed case)"));
   checkOpenFoamFile(control, options.memoryBudget);
-  for (const fs::path& f : openFoamFilesToRead(folder, decomposed, options.timeStep))
-    checkOpenFoamFile(f, options.memoryBudget);
+  for (const OpenFoamRoot& r : openFoamFilesToRead(folder, decomposed, options.timeStep)) {
+    const std::uint64_t cells = checkOpenFoamMesh(r.root, options.memoryBudget);
+    for (const fs::path& f : r.fields) {
+      const OpenFoamFacts facts = checkOpenFoamFile(f, options.memoryBudget);
+      if (facts.internalField && *facts.internalField != cells)
+        throw Error(concat(f.string(), ": internalField holds ", *facts.internalField,
+                           " values for the mesh's ", cells, " cells"));
+    }
+  }
 
   VtkMessageTrap trap(path);
   vtkSmartPointer<vtkAlgorithm> algorithm;

@@ -156,7 +156,7 @@ class Checker {
   Checker(std::filesystem::path path, std::size_t budget)
       : path_(std::move(path)), file_(path_.string()), in_(path_), budget_(budget) {}
 
-  VtkXmlSummary summary() const { return {totalBytes_, declared_}; }
+  VtkXmlSummary summary() const { return {totalBytes_, declared_, extents_}; }
 
   void run() {
     if (!in_.ok()) fail(file_ + ": cannot open");
@@ -309,6 +309,7 @@ class Checker {
       if (extent != t.attributes.end()) {
         const std::string what = concat("Piece ", piece_, " Extent");
         const std::array<long long, 6> e = parseExtent(extent->second, what);
+        extents_.push_back(e);
         for (int i = 0; i < 6 && wholeExtent_; i += 2) {
           const auto& w = *wholeExtent_;
           if (e[std::size_t(i)] < w[std::size_t(i)] ||
@@ -628,6 +629,7 @@ class Checker {
   std::size_t coordinate_ = 0;
   double totalBytes_ = 0.0;
   std::vector<VtkXmlArray> declared_;
+  std::vector<std::array<long long, 6>> extents_;
   std::vector<Array> appendedArrays_;
   bool appendedSeen_ = false, base64Appended_ = false;
   std::uint64_t appendedStart_ = 0, appendedEnd_ = 0;

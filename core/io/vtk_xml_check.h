@@ -28,6 +28,7 @@
 // declared (to hold a parallel file's pieces to its declarations).
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
@@ -45,8 +46,9 @@ struct VtkXmlArray {
 };
 
 struct VtkXmlSummary {
-  double bytes = 0.0;               // all arrays together
-  std::vector<VtkXmlArray> arrays;  // every piece's, in file order
+  double bytes = 0.0;                             // all arrays together
+  std::vector<VtkXmlArray> arrays;                // every piece's, in file order
+  std::vector<std::array<long long, 6>> extents;  // every piece's Extent, where given
 };
 
 VtkXmlSummary checkVtkXml(const std::filesystem::path& path, std::size_t memoryBudget);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstring>
+#include <sstream>
 
 #include <vtkCompositeDataSet.h>
 #include <vtkDataObject.h>
@@ -59,8 +60,9 @@ bool singleDataset(FieldFormat f) {
 }
 
 struct Entry {
-  std::string label;  // "Piece 2", "block 'inlet'"
-  std::string name;   // as the index writes it
+  std::string label;   // "Piece 2", "block 'inlet'"
+  std::string name;    // as the index writes it
+  std::string extent;  // a structured piece's Extent, as the index gives it
 };
 
 // Every piece (Piece Source=) or dataset (DataSet file=) the index names, in order.
@@ -71,7 +73,8 @@ void listEntries(vtkXMLDataElement* e, bool multiblock, std::vector<Entry>& out,
     if (!multiblock && std::strcmp(tag, "Piece") == 0) {
       ++pieces;
       const char* source = child->GetAttribute("Source");
-      out.push_back({concat("Piece ", pieces), source ? source : ""});
+      const char* extent = child->GetAttribute("Extent");
+      out.push_back({concat("Piece ", pieces), source ? source : "", extent ? extent : ""});
     } else if (multiblock && std::strcmp(tag, "DataSet") == 0) {
       const char* file = child->GetAttribute("file");
       if (!file) continue;  // an empty block
@@ -79,7 +82,7 @@ void listEntries(vtkXMLDataElement* e, bool multiblock, std::vector<Entry>& out,
       const char* index = child->GetAttribute("index");
       out.push_back({name ? concat("block '", name, "'")
                           : concat("block ", index ? index : std::to_string(out.size())),
-                     file});
+                     file, ""});
     }
     if (multiblock) listEntries(child, multiblock, out, pieces);
   }
@@ -93,8 +96,8 @@ void listDeclarations(vtkXMLDataElement* top, std::vector<VtkXmlArray>& out) {
     const std::string name = section->GetName();
     if (name.size() < 2 || name[0] != 'P' || name == "Piece") continue;
     for (int j = 0; j < section->GetNumberOfNestedElements(); ++j) {
+      // VTK makes an array of every element here, whatever its tag says.
       vtkXMLDataElement* a = section->GetNestedElement(j);
-      if (std::strcmp(a->GetName(), "PDataArray") != 0) continue;
       VtkXmlArray d;
       d.section = name.substr(1);
       d.name = a->GetAttribute("Name") ? a->GetAttribute("Name") : "";
@@ -198,7 +201,24 @@ struct Leaf {
   fs::path file;
   std::string where;                  // "run.pvtu: Piece 2 (run_1.vtu)"
   std::vector<VtkXmlArray> declared;  // what its parallel index declares
+  std::string extent;                 // the Extent the index gives a structured piece
 };
+
+// VTK copies a structured piece into the place its index's Extent gives it,
+// sized by the piece file's own: the two must be one.
+void checkPieceExtent(const Leaf& leaf, const VtkXmlSummary& summary) {
+  if (leaf.extent.empty()) return;
+  std::array<long long, 6> e{};
+  std::istringstream in(leaf.extent);
+  for (long long& v : e)
+    if (!(in >> v))
+      throw Error(concat(leaf.where, ": the index's Extent '", leaf.extent.substr(0, 60),
+                         "' is not six whole numbers"));
+  if (summary.extents.size() != 1 || summary.extents.front() != e)
+    throw Error(concat(leaf.where, ": the index gives it the Extent '", leaf.extent,
+                       "', but the file holds ",
+                       summary.extents.size() == 1 ? "another" : "not exactly one piece's"));
+}
 
 // The index's files, checked, into `leaves`.
 void collect(const fs::path& path, FieldFormat format, std::vector<Leaf>& leaves) {
@@ -214,7 +234,7 @@ void collect(const fs::path& path, FieldFormat format, std::vector<Leaf>& leaves
     if (format != FieldFormat::VtkMultiBlock && kind != pieceFormat(format))
       throw Error(concat(where, " is a ", describe(kind), "; the pieces of a ", describe(format),
                          " are each a ", describe(pieceFormat(format))));
-    leaves.push_back({target, where, index.declared});
+    leaves.push_back({target, where, index.declared, e.extent});
   }
 }
 
@@ -276,6 +296,7 @@ vtkSmartPointer<vtkDataObject> readVtkXmlIndex(const fs::path& path, FieldFormat
   for (const Leaf& f : files) {
     const VtkXmlSummary summary = checkVtkXml(f.file, options.memoryBudget);
     checkPieceArrays(f.where, f.declared, summary.arrays);
+    checkPieceExtent(f, summary);
     bytes += summary.bytes;
   }
   if (bytes > 2.0 * double(options.memoryBudget))
