@@ -14,6 +14,7 @@
 #include "core/io/vtk_field_extractor.h"
 #include "core/io/vtk_legacy_reader.h"
 #include "core/io/vtk_xml_index.h"
+#include "core/io/vtkhdf_reader.h"
 #include "core/io/vtk_xml_reader.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
@@ -76,8 +77,11 @@ VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
       auto data = readNetcdfCf(path, named, report);
       return extractVectorField(data, path, named, report);
     }
+    case FieldFormat::VtkHdf: {
+      auto data = readVtkHdf(path, options, report);
+      return extractVectorField(data, path, options, report);
+    }
     case FieldFormat::Cgns:
-    case FieldFormat::VtkHdf:
       throw Error(concat(path.string(), ": ", describe(format), "s are not read yet"));
     case FieldFormat::VtkCollection: {
       const std::vector<PvdFrame> frames = readPvd(path);

@@ -4,6 +4,7 @@
 // analytic field's values, over its blocks and its time steps.
 #include <gtest/gtest.h>
 
+#include <hdf5.h>
 #include <netcdf.h>
 #include <vtkCellData.h>
 #include <vtkDataSetTriangleFilter.h>
@@ -453,6 +454,93 @@ TEST(SimulationFormats, NetcdfCfOnLongitudeLatitudeAndHeightInMetres) {
   for (const std::string& note : report.notes)
     said = said || note.find("axis 'lev' (units 'hpa')") != std::string::npos;
   EXPECT_TRUE(said);
+}
+
+// VTKHDF (version 1) as its specification lays it out, written with the HDF5
+// library: an unstructured grid of one piece, the mesh's tetrahedra.
+void writeVtkHdf(const std::filesystem::path& path, vtkUnstructuredGrid* mesh,
+                 long long extraPoints = 0) {
+  const hid_t file = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+  ASSERT_GE(file, 0);
+  const hid_t root = H5Gcreate2(file, "VTKHDF", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  const hsize_t two = 2;
+  const hid_t versionSpace = H5Screate_simple(1, &two, nullptr);
+  const hid_t version =
+      H5Acreate2(root, "Version", H5T_NATIVE_INT, versionSpace, H5P_DEFAULT, H5P_DEFAULT);
+  const int v[2] = {1, 0};
+  H5Awrite(version, H5T_NATIVE_INT, v);
+  H5Aclose(version);
+  H5Sclose(versionSpace);
+  const hid_t text = H5Tcopy(H5T_C_S1);
+  H5Tset_size(text, 16);
+  H5Tset_strpad(text, H5T_STR_NULLPAD);
+  const hid_t scalar = H5Screate(H5S_SCALAR);
+  const hid_t type = H5Acreate2(root, "Type", text, scalar, H5P_DEFAULT, H5P_DEFAULT);
+  const char typeName[17] = "UnstructuredGrid";  // 16 characters, NULLPAD: no terminator
+  H5Awrite(type, text, typeName);
+  H5Aclose(type);
+  H5Sclose(scalar);
+  H5Tclose(text);
+  auto dataset = [&](hid_t at, const char* name, hid_t memType, std::vector<hsize_t> dims,
+                     const void* data) {
+    const hid_t space = H5Screate_simple(int(dims.size()), dims.data(), nullptr);
+    const hid_t d = H5Dcreate2(at, name, memType, space, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    H5Dwrite(d, memType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data);
+    H5Dclose(d);
+    H5Sclose(space);
+  };
+  const long long points = mesh->GetNumberOfPoints(), cells = mesh->GetNumberOfCells();
+  std::vector<double> xyz;
+  for (vtkIdType p = 0; p < points; ++p) {
+    double x[3];
+    mesh->GetPoint(p, x);
+    xyz.insert(xyz.end(), x, x + 3);
+  }
+  std::vector<long long> offsets{0}, connectivity;
+  std::vector<unsigned char> types;
+  for (vtkIdType c = 0; c < cells; ++c) {
+    vtkIdType n = 0;
+    const vtkIdType* ids = nullptr;
+    mesh->GetCellPoints(c, n, ids);
+    connectivity.insert(connectivity.end(), ids, ids + n);
+    offsets.push_back((long long)connectivity.size());
+    types.push_back((unsigned char)mesh->GetCellType(c));
+  }
+  const long long counts[3] = {points + extraPoints, cells, (long long)connectivity.size()};
+  dataset(root, "NumberOfPoints", H5T_NATIVE_LLONG, {1}, &counts[0]);
+  dataset(root, "NumberOfCells", H5T_NATIVE_LLONG, {1}, &counts[1]);
+  dataset(root, "NumberOfConnectivityIds", H5T_NATIVE_LLONG, {1}, &counts[2]);
+  dataset(root, "Points", H5T_NATIVE_DOUBLE, {hsize_t(points), 3}, xyz.data());
+  dataset(root, "Types", H5T_NATIVE_UCHAR, {hsize_t(cells)}, types.data());
+  dataset(root, "Offsets", H5T_NATIVE_LLONG, {hsize_t(cells + 1)}, offsets.data());
+  dataset(root, "Connectivity", H5T_NATIVE_LLONG, {connectivity.size()}, connectivity.data());
+  const hid_t pointData = H5Gcreate2(root, "PointData", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+  std::vector<float> velocity;
+  vtkDataArray* a = mesh->GetPointData()->GetArray("velocity");
+  for (vtkIdType p = 0; p < points; ++p)
+    for (int c = 0; c < 3; ++c)
+      velocity.push_back(float(a->GetComponent(p, c)));
+  dataset(pointData, "velocity", H5T_NATIVE_FLOAT, {hsize_t(points), 3}, velocity.data());
+  H5Gclose(pointData);
+  H5Gclose(root);
+  H5Fclose(file);
+}
+
+TEST(SimulationFormats, VtkHdfUnstructuredGrids) {
+  const auto dir = test::scratch();
+  const auto mesh = tetraBox(0.0);
+  const auto path = dir / "flow.vtkhdf";
+  writeVtkHdf(path, mesh);
+  LoadOptions options;
+  options.resolution = {5, 5, 5};
+  LoadReport report;
+  expectFlow(loadField(path, options, &report), 0.0, kExact);
+  EXPECT_EQ(report.format, "VTKHDF file (.vtkhdf)");
+  EXPECT_EQ(report.cells, std::uint64_t(mesh->GetNumberOfCells()));
+  // Counts that the datasets do not hold are refused before VTK reads them.
+  writeVtkHdf(path, mesh, 5);
+  test::expectError([&] { loadField(path, options); },
+                    {path.string(), "dataset Points is not shaped as the counts give"});
 }
 
 }  // namespace
