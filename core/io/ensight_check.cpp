@@ -354,6 +354,7 @@ EnSightCase parseEnSightCase(const fs::path& caseFile) {
   int lineNumber = 0;
   long long steps = -1, start = 0, increment = 1;
   int timeSet = 0;
+  std::vector<int> usedTimeSets;
   bool gold = false;
   std::vector<double> times;
   std::vector<long long> numbers;
@@ -390,16 +391,24 @@ EnSightCase parseEnSightCase(const fs::path& caseFile) {
       if (key == "type") gold = lower(value).find("gold") != std::string::npos;
     } else if (section == "geometry") {
       if (key == "model") {
-        for (const std::string& w : words(value))
-          if (!isInteger(w)) {
-            c.geometry = w;
-            break;
-          }
+        std::vector<std::string> w = words(value);
+        if (!w.empty() && isInteger(w.front())) {
+          usedTimeSets.push_back(std::atoi(w.front().c_str()));
+          w.erase(w.begin());
+        }
+        while (!w.empty() && isInteger(w.front()))
+          w.erase(w.begin());
+        if (w.empty()) fail("model: expected its file name");
+        c.geometry = w.front();
       }
     } else if (section == "variable") {
       if (key.find("constant per case") != std::string::npos) continue;
       std::vector<std::string> w = words(value);
-      while (!w.empty() && isInteger(w.front()))
+      if (!w.empty() && isInteger(w.front()) && w.size() > 2) {
+        usedTimeSets.push_back(std::atoi(w.front().c_str()));
+        w.erase(w.begin());
+      }
+      while (!w.empty() && isInteger(w.front()) && w.size() > 2)
         w.erase(w.begin());
       if (w.size() < 2) fail(concat("variable '", key, "': expected a description and a file"));
       if (componentsOf(key) == 0 || (key.find("per node") == std::string::npos &&
@@ -421,8 +430,7 @@ EnSightCase parseEnSightCase(const fs::path& caseFile) {
       };
       if (key == "time set") {
         timeSet = std::atoi(value.c_str());
-      } else if (timeSet > 1) {
-        continue;  // the first time set only
+        if (timeSet != 1) fail(concat("time set ", value, ": only one time set (1) is read"));
       } else if (key == "number of steps") {
         steps = std::atoll(value.c_str());
         if (steps < 1 || steps > 1000000)
@@ -439,6 +447,10 @@ EnSightCase parseEnSightCase(const fs::path& caseFile) {
     }
     pendingKey = key;
   }
+  for (int used : usedTimeSets)
+    if (used != 1 || steps < 1)
+      throw Error(
+          concat(file, ": a file of time set ", used, ", which the TIME section does not define"));
   if (!gold)
     throw Error(concat(file,
                        ": not an EnSight Gold case (FORMAT type: ensight gold); EnSight 6 "

@@ -14,8 +14,8 @@
 #include "core/io/vtk_field_extractor.h"
 #include "core/io/vtk_legacy_reader.h"
 #include "core/io/vtk_xml_index.h"
-#include "core/io/vtkhdf_reader.h"
 #include "core/io/vtk_xml_reader.h"
+#include "core/io/vtkhdf_reader.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
 

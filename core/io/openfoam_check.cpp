@@ -204,6 +204,8 @@ class FoamScanner {
       const int next = in_.peek();
       if (next == '(' || next == '{') {
         if (depth == 0) facts_.lists.push_back({value, 0});
+        if (depth == 1 && !facts_.lists.empty())
+          facts_.lists.back().minInner = std::min(facts_.lists.back().minInner, value);
         if (inInternalField_) facts_.internalField = value;
         inInternalField_ = false;
         list(value, next == '{', depth);
@@ -297,8 +299,8 @@ class FoamScanner {
       const bool labels = (lastType_ == "label" ||
                            (lastType_.empty() && size == label_ && class_ != "scalarField")) &&
                           depth == 0 && !facts_.lists.empty();
-      const bool complete = labels ? readLabels(count, facts_.lists.back().maxLabel)
-                                   : in_.skip(count * std::uint64_t(size));
+      const bool complete =
+          labels ? readLabels(count, facts_.lists.back()) : in_.skip(count * std::uint64_t(size));
       if (!complete)
         fail(concat("a binary list of ", count, " elements of ", size,
                     " bytes runs past the end of the file (truncated)"));
@@ -326,8 +328,9 @@ class FoamScanner {
       fail(concat("a list of ", count, " elements holds ", items, " (the count is wrong)"));
   }
 
-  // `count` binary labels; false when the file ends first.
-  bool readLabels(std::uint64_t count, std::uint64_t& largest) {
+  // `count` binary labels into `list`'s facts; false when the file ends first.
+  bool readLabels(std::uint64_t count, OpenFoamFacts::List& list) {
+    std::int64_t previous = 0;
     for (std::uint64_t i = 0; i < count; ++i) {
       std::uint64_t v = 0;
       for (int b = 0; b < label_; ++b) {
@@ -335,8 +338,14 @@ class FoamScanner {
         if (c < 0) return false;
         v |= std::uint64_t(c) << (8 * b);  // LSB, as the arch says
       }
-      if (label_ == 4 && (v & 0x80000000u)) v = ~std::uint64_t(0);  // negative: flagged large
-      largest = std::max(largest, v);
+      const std::int64_t label =
+          label_ == 4 ? std::int64_t(std::int32_t(std::uint32_t(v))) : std::int64_t(v);
+      list.maxLabel = std::max(list.maxLabel, label < 0 ? ~std::uint64_t(0) : std::uint64_t(label));
+      if (i == 0)
+        list.first = label;
+      else
+        list.minStep = std::min(list.minStep, label - previous);
+      list.last = previous = label;
     }
     return true;
   }
@@ -414,16 +423,21 @@ std::uint64_t checkOpenFoamMesh(const fs::path& root, std::size_t memoryBudget) 
   const std::uint64_t nPoints = first(points, pointsFile, "points").count;
   std::uint64_t nFaces = 0;
   if (faces.lists.size() == 2) {  // faceCompactList: offsets, then the points of every face
-    nFaces = faces.lists[0].count > 0 ? faces.lists[0].count - 1 : 0;
-    if (faces.lists[0].maxLabel > faces.lists[1].count)
-      throw Error(concat(facesFile, ": an offset (", faces.lists[0].maxLabel,
-                         ") past the face points (", faces.lists[1].count, ")"));
+    const OpenFoamFacts::List& offsets = faces.lists[0];
+    nFaces = offsets.count > 0 ? offsets.count - 1 : 0;
+    if (offsets.count > 0 &&
+        (offsets.first != 0 || offsets.last != std::int64_t(faces.lists[1].count) ||
+         (offsets.count > 1 && offsets.minStep < 3)))
+      throw Error(concat(facesFile, ": the faces' offsets must run from 0 to the ",
+                         faces.lists[1].count, " face points, each face at least 3 of them"));
     if (nFaces > 0 && faces.lists[1].maxLabel >= nPoints)
       throw Error(concat(facesFile, ": a face names point ", faces.lists[1].maxLabel,
                          "; the points are 0..", nPoints - 1));
   } else {
     const OpenFoamFacts::List list = first(faces, facesFile, "faces");
     nFaces = list.count;
+    if (nFaces > 0 && list.minInner < 3)
+      throw Error(concat(facesFile, ": a face of ", list.minInner, " points; expected 3 or more"));
     if (nFaces > 0 && list.maxLabel >= nPoints)
       throw Error(concat(facesFile, ": a face names point ", list.maxLabel, "; the points are 0..",
                          nPoints - 1));

@@ -21,6 +21,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <optional>
 #include <utility>
 #include <vector>
@@ -32,6 +33,11 @@ struct OpenFoamFacts {
   struct List {
     std::uint64_t count = 0;     // its elements
     std::uint64_t maxLabel = 0;  // the largest whole number in it
+    // A binary list of labels: its first and last, and the smallest step
+    // from one to the next (negative: it runs backwards somewhere).
+    std::int64_t first = 0, last = 0, minStep = std::numeric_limits<std::int64_t>::max();
+    // An ascii list of lists (faces): the smallest of the inner lists' counts.
+    std::uint64_t minInner = std::numeric_limits<std::uint64_t>::max();
   };
   std::vector<List> lists;                                       // the top-level lists, in order
   std::vector<std::pair<std::uint64_t, std::uint64_t>> patches;  // (startFace, nFaces)

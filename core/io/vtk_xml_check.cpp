@@ -5,6 +5,7 @@
 #include <charconv>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <limits>
 #include <map>
@@ -141,6 +142,8 @@ bool asciiValueFits(std::string_view token, const std::string& type) {
 
 struct Array {
   std::string where;
+  std::string cellList;  // "offsets" or "connectivity" of a piece's cells; empty for others
+  std::string key;       // the piece and section the cell list belongs to
   std::string type;
   int size = 0;
   std::uint64_t components = 1;
@@ -185,6 +188,7 @@ class Checker {
     endPiece();
     for (Array& a : appendedArrays_)
       checkAppended(a);
+    checkCellLists();
     if (totalBytes_ > 2.0 * double(budget_))
       fail(concat(file_, ": its arrays need ", totalBytes_, " bytes together, beyond twice the ",
                   "memory budget of ", budget_, " bytes"));
@@ -437,6 +441,14 @@ class Checker {
     if (t.attributes.count("NumberOfTuples"))
       a.declaredTuples = whole(attribute("NumberOfTuples"), a.where + " NumberOfTuples");
     declared_.push_back({section, name, a.type, a.components});
+    static const char* kCellSections[] = {"Cells", "Verts", "Lines", "Strips", "Polys"};
+    if ((name == "offsets" || name == "connectivity") &&
+        std::find(std::begin(kCellSections), std::end(kCellSections), section) !=
+            std::end(kCellSections)) {
+      a.cellList = name;
+      a.key = concat("Piece ", std::max(piece_, 1), " ", section);
+      cellLists_[a.key].where = concat(file_, ": ", a.key);
+    }
     a.expectedTuples = expectedTuples(name);
     if (section == "Points") sawPoints_ = true;
     if (section == "Coordinates") ++coordinate_;
@@ -473,7 +485,17 @@ class Checker {
     }
     const std::uint64_t words = tuples * a.components;
     if (a.format == "ascii") {
+      asciiOffsets_.clear();
       readAscii(a);
+      if (!a.cellList.empty()) {
+        CellList& list = cellLists_[a.key];
+        if (a.cellList == "connectivity") {
+          list.connectivity = a.asciiValues / a.components;
+        } else {
+          list.haveOffsets = true;
+          list.offsets = std::move(asciiOffsets_);
+        }
+      }
       if (known && a.asciiValues != words)
         fail(concat(a.where, ": holds ", a.asciiValues, " ascii values; ", tuples, " tuples x ",
                     a.components, " components need ", words,
@@ -481,8 +503,61 @@ class Checker {
       return;
     }
     VtkXmlPayload payload(format(), a.where, needed(a), needText(a));
+    std::vector<std::uint8_t> decoded;
+    if (a.cellList == "offsets") payload.capture(&decoded);
     readBase64(a, payload);
     payload.finish();
+    noteCellList(a, payload, decoded);
+  }
+
+  // What VTK will build the cells from: the connectivity's length and the
+  // offsets' values (VTK sizes the connectivity by the last offset).
+  void noteCellList(const Array& a, const VtkXmlPayload& payload,
+                    const std::vector<std::uint8_t>& bytes) {
+    if (a.cellList.empty()) return;
+    CellList& list = cellLists_[a.key];
+    if (a.cellList == "connectivity") {
+      list.connectivity = payload.declaredBytes() / std::uint64_t(a.size * a.components);
+      return;
+    }
+    list.haveOffsets = true;
+    list.offsets = integers(bytes, a);
+  }
+
+  std::vector<std::int64_t> integers(const std::vector<std::uint8_t>& bytes, const Array& a) const {
+    if (a.type.rfind("Float", 0) == 0)
+      fail(concat(a.where, ": offsets of type ", a.type, "; expected whole numbers"));
+    std::vector<std::int64_t> out;
+    const std::size_t n = bytes.size() / std::size_t(a.size);
+    out.reserve(n);
+    const bool isSigned = a.type.rfind("Int", 0) == 0 || a.type == "Char";
+    for (std::size_t i = 0; i < n; ++i) {
+      std::uint64_t w = 0;
+      for (int b = 0; b < a.size; ++b) {
+        const std::uint64_t byte = bytes[i * std::size_t(a.size) + std::size_t(b)];
+        w |= byte << (8 * (bigEndian_ ? a.size - 1 - b : b));
+      }
+      const int shift = 64 - 8 * a.size;
+      out.push_back(isSigned && shift > 0 ? std::int64_t(w << shift) >> shift : std::int64_t(w));
+    }
+    return out;
+  }
+
+  void checkCellLists() const {
+    for (const auto& [key, list] : cellLists_) {
+      if (!list.haveOffsets || list.offsets.empty()) continue;
+      std::int64_t previous = 0;
+      for (std::size_t i = 0; i < list.offsets.size(); ++i) {
+        if (list.offsets[i] < previous)
+          fail(concat(list.where, ": offset ", i, " (", list.offsets[i],
+                      ") is below the one before it"));
+        previous = list.offsets[i];
+      }
+      const std::uint64_t length = list.connectivity.value_or(0);
+      if (std::uint64_t(previous) != length)
+        fail(concat(list.where, ": the last offset is ", previous, " but the connectivity holds ",
+                    length, " point ids"));
+    }
   }
 
   VtkPayloadFormat format() const {
@@ -516,6 +591,8 @@ class Checker {
       }
       if (token.empty()) continue;
       ++a.asciiValues;
+      if (a.cellList == "offsets" && asciiValueFits(token, a.type))
+        asciiOffsets_.push_back(std::strtoll(token.c_str(), nullptr, 10));
       if (!asciiValueFits(token, a.type))
         fail(concat(a.where, ": ascii value ", a.asciiValues, " ('", token.substr(0, 40),
                     "') is not ", a.type == "Float32" || a.type == "Float64" ? "a finite " : "an ",
@@ -577,6 +654,8 @@ class Checker {
       fail(concat(a.where, ": offset ", a.offset, " lies beyond the appended data (",
                   appendedEnd_ - appendedStart_, " bytes)"));
     VtkXmlPayload payload(format(), a.where, needed(a), needText(a));
+    std::vector<std::uint8_t> bytes;
+    if (a.cellList == "offsets") payload.capture(&bytes);
     in_.seek(at);
     if (base64Appended_) {
       Base64Decoder decoder;
@@ -607,6 +686,7 @@ class Checker {
       }
     }
     payload.finish();
+    noteCellList(a, payload, bytes);
   }
 
   std::filesystem::path path_;
@@ -628,6 +708,14 @@ class Checker {
   bool sawPoints_ = false;
   std::size_t coordinate_ = 0;
   double totalBytes_ = 0.0;
+  struct CellList {
+    std::string where;
+    std::optional<std::uint64_t> connectivity;
+    std::vector<std::int64_t> offsets;
+    bool haveOffsets = false;
+  };
+  std::map<std::string, CellList> cellLists_;
+  std::vector<std::int64_t> asciiOffsets_;
   std::vector<VtkXmlArray> declared_;
   std::vector<std::array<long long, 6>> extents_;
   std::vector<Array> appendedArrays_;

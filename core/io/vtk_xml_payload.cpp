@@ -67,6 +67,7 @@ bool VtkXmlPayload::push(std::uint8_t byte) {
       }
       break;
     case State::Data:
+      if (sink_) sink_->push_back(byte);
       if (--remaining_ == 0) state_ = State::Done;
       break;
     case State::Block:
@@ -80,7 +81,11 @@ bool VtkXmlPayload::push(std::uint8_t byte) {
 }
 
 std::uint64_t VtkXmlPayload::skippable() const {
-  return state_ == State::Data ? remaining_ : 0;
+  return state_ == State::Data && !sink_ ? remaining_ : 0;
+}
+
+std::uint64_t VtkXmlPayload::declaredBytes() const {
+  return declared_;
 }
 
 void VtkXmlPayload::skipped(std::uint64_t bytes) {
@@ -173,6 +178,7 @@ void VtkXmlPayload::endBlock() {
         z.next_out = scratch_.data();
         z.avail_out = uInt(scratch_.size());
         status = inflate(&z, Z_NO_FLUSH);
+        if (sink_) sink_->insert(sink_->end(), scratch_.data(), z.next_out);
         out += scratch_.size() - z.avail_out;
         if (status == Z_BUF_ERROR && z.avail_in == 0) break;  // the stream stops short
       }
@@ -193,6 +199,7 @@ void VtkXmlPayload::endBlock() {
           LZ4_decompress_safe(reinterpret_cast<const char*>(bytes_.data()),
                               reinterpret_cast<char*>(scratch_.data()), int(in), int(expected));
       if (n < 0) fail(concat(which, " is not a valid LZ4 block"));
+      if (sink_) sink_->insert(sink_->end(), scratch_.data(), scratch_.data() + n);
       out = std::uint64_t(n);
       break;
     }
@@ -207,6 +214,7 @@ void VtkXmlPayload::endBlock() {
         z.next_out = scratch_.data();
         z.avail_out = scratch_.size();
         status = lzma_code(&z, z.avail_in == 0 ? LZMA_FINISH : LZMA_RUN);
+        if (sink_) sink_->insert(sink_->end(), scratch_.data(), z.next_out);
         out += scratch_.size() - z.avail_out;
       }
       lzma_end(&z);

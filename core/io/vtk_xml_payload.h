@@ -56,6 +56,11 @@ class VtkXmlPayload {
   void skipped(std::uint64_t bytes);
   // Throws "truncated" unless the payload is complete.
   void finish() const;
+  // Keeps the decoded (decompressed) data in `sink` as it arrives; nothing is
+  // skippable then. For the few arrays whose values must be looked at.
+  void capture(std::vector<std::uint8_t>* sink) { sink_ = sink; }
+  // The data bytes the header declares (after decompression).
+  std::uint64_t declaredBytes() const;
 
  private:
   enum class State { Header, Sizes, Data, Block, Done };
@@ -78,6 +83,7 @@ class VtkXmlPayload {
   std::vector<std::uint64_t> sizes_;
   std::uint64_t block_ = 0;
   std::vector<std::uint8_t> scratch_;
+  std::vector<std::uint8_t>* sink_ = nullptr;
 };
 
 }  // namespace sandstorm

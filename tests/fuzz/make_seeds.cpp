@@ -97,7 +97,7 @@ int main(int argc, char** argv) {
   for (const char* t :
        {"fuzz_field_vtk",      "fuzz_field_vti",  "fuzz_field_vtr",   "fuzz_field_vts",
         "fuzz_field_vtu",      "fuzz_field_vtp",  "fuzz_field_index", "fuzz_field_e",
-        "fuzz_openfoam",       "fuzz_ensight",    "fuzz_field_vdb",   "fuzz_field_fga",
+        "fuzz_field_nc",       "fuzz_openfoam",       "fuzz_ensight",    "fuzz_field_vdb",   "fuzz_field_fga",
         "fuzz_field_vf",       "fuzz_height_map", "fuzz_config",      "fuzz_session_log",
         "fuzz_cluster_packet", "fuzz_dtrack",     "fuzz_pvx",         "fuzz_tracker_path"})
     fs::create_directories(out / t);
