@@ -2,6 +2,7 @@
 
 #include <vtkDataSet.h>
 
+#include "core/io/cgns_reader.h"
 #include "core/io/ensight_reader.h"
 #include "core/io/exodus_reader.h"
 #include "core/io/fga_reader.h"
@@ -81,8 +82,10 @@ VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
       auto data = readVtkHdf(path, options, report);
       return extractVectorField(data, path, options, report);
     }
-    case FieldFormat::Cgns:
-      throw Error(concat(path.string(), ": ", describe(format), "s are not read yet"));
+    case FieldFormat::Cgns: {
+      auto data = readCgns(path, options, report);
+      return extractVectorField(data, path, options, report);
+    }
     case FieldFormat::VtkCollection: {
       const std::vector<PvdFrame> frames = readPvd(path);
       report.notes.push_back(concat("time series of ", frames.size(),

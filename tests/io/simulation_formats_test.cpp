@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <hdf5.h>
+#include <vtk_cgns.h>
+#include VTK_CGNS(cgnslib.h)
 #include <netcdf.h>
 #include <vtkCellData.h>
 #include <vtkDataSetTriangleFilter.h>
@@ -541,6 +543,100 @@ TEST(SimulationFormats, VtkHdfUnstructuredGrids) {
   writeVtkHdf(path, mesh, 5);
   test::expectError([&] { loadField(path, options); },
                     {path.string(), "dataset Points is not shaped as the counts give"});
+}
+
+// CGNS as a CFD code writes it, through the CGNS library (HDF5): a
+// structured zone and an unstructured zone of tetrahedra beside it, their
+// VelocityX/Y/Z at the vertices.
+void writeCgns(const std::filesystem::path& path, vtkUnstructuredGrid* tetrahedra) {
+  ASSERT_EQ(cg_set_file_type(CG_FILE_HDF5), CG_OK);
+  int fn = -1, base = -1;
+  ASSERT_EQ(cg_open(path.c_str(), CG_MODE_WRITE, &fn), CG_OK) << cg_get_error();
+  ASSERT_EQ(cg_base_write(fn, "Base", 3, 3, &base), CG_OK);
+  auto velocity = [&](int zone, const std::vector<double>& x, const std::vector<double>& y,
+                      const std::vector<double>& z) {
+    int solution = -1, field = -1;
+    ASSERT_EQ(cg_sol_write(fn, base, zone, "Flow", CGNS_ENUMV(Vertex), &solution), CG_OK);
+    const char* names[3] = {"VelocityX", "VelocityY", "VelocityZ"};
+    for (int c = 0; c < 3; ++c) {
+      std::vector<double> v;
+      for (std::size_t i = 0; i < x.size(); ++i)
+        v.push_back(flowAt({x[i], y[i], z[i]}, 0.0)[c]);
+      ASSERT_EQ(cg_field_write(fn, base, zone, solution, CGNS_ENUMV(RealDouble), names[c], v.data(),
+                               &field),
+                CG_OK);
+    }
+  };
+  auto coordinates = [&](int zone, const std::vector<double>& x, const std::vector<double>& y,
+                         const std::vector<double>& z) {
+    int c = -1;
+    ASSERT_EQ(cg_coord_write(fn, base, zone, CGNS_ENUMV(RealDouble), "CoordinateX", x.data(), &c),
+              CG_OK);
+    ASSERT_EQ(cg_coord_write(fn, base, zone, CGNS_ENUMV(RealDouble), "CoordinateY", y.data(), &c),
+              CG_OK);
+    ASSERT_EQ(cg_coord_write(fn, base, zone, CGNS_ENUMV(RealDouble), "CoordinateZ", z.data(), &c),
+              CG_OK);
+  };
+  // A structured box over x in [1, 2], y and z in [0, 1], i fastest.
+  {
+    int zone = -1;
+    cgsize_t size[9] = {5, 5, 5, 4, 4, 4, 0, 0, 0};
+    ASSERT_EQ(cg_zone_write(fn, base, "Block", size, CGNS_ENUMV(Structured), &zone), CG_OK);
+    std::vector<double> x, y, z;
+    for (int k = 0; k < 5; ++k)
+      for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < 5; ++i) {
+          x.push_back(1.0 + 0.25 * i);
+          y.push_back(0.25 * j);
+          z.push_back(0.25 * k);
+        }
+    coordinates(zone, x, y, z);
+    velocity(zone, x, y, z);
+  }
+  // The tetrahedra over [0, 1]^3.
+  {
+    int zone = -1, section = -1;
+    cgsize_t size[3] = {cgsize_t(tetrahedra->GetNumberOfPoints()),
+                        cgsize_t(tetrahedra->GetNumberOfCells()), 0};
+    ASSERT_EQ(cg_zone_write(fn, base, "Tetrahedra", size, CGNS_ENUMV(Unstructured), &zone), CG_OK);
+    std::vector<double> x, y, z;
+    for (vtkIdType p = 0; p < tetrahedra->GetNumberOfPoints(); ++p) {
+      double q[3];
+      tetrahedra->GetPoint(p, q);
+      x.push_back(q[0]);
+      y.push_back(q[1]);
+      z.push_back(q[2]);
+    }
+    coordinates(zone, x, y, z);
+    std::vector<cgsize_t> connectivity;
+    for (vtkIdType c = 0; c < tetrahedra->GetNumberOfCells(); ++c) {
+      vtkIdType n = 0;
+      const vtkIdType* ids = nullptr;
+      tetrahedra->GetCellPoints(c, n, ids);
+      for (vtkIdType i = 0; i < n; ++i)
+        connectivity.push_back(cgsize_t(ids[i] + 1));
+    }
+    ASSERT_EQ(cg_section_write(fn, base, zone, "Cells", CGNS_ENUMV(TETRA_4), 1,
+                               cgsize_t(tetrahedra->GetNumberOfCells()), 0, connectivity.data(),
+                               &section),
+              CG_OK);
+    velocity(zone, x, y, z);
+  }
+  ASSERT_EQ(cg_close(fn), CG_OK);
+}
+
+TEST(SimulationFormats, CgnsStructuredAndUnstructuredZones) {
+  const auto dir = test::scratch();
+  const auto path = dir / "flow.cgns";
+  writeCgns(path, tetraBox(0.0));
+  LoadOptions options;
+  options.resolution = {9, 5, 5};
+  LoadReport report;
+  const VectorField f = loadField(path, options, &report);
+  EXPECT_EQ(report.format, "CGNS file (.cgns)");
+  EXPECT_EQ(report.blocks.size(), 2u);
+  EXPECT_EQ(f.bounds().max, glm::vec3(2.0f, 1.0f, 1.0f));
+  expectFlow(f, 0.0, kExact);
 }
 
 }  // namespace
