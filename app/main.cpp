@@ -26,7 +26,9 @@ int main(int argc, char** argv) {
   cli.add_option("field,--field", fieldFile,
                  "Open this field file as ParaView does: in the desktop scene, or in --config's "
                  "walls. VTK (.vti .vtr .vts .vtu .vtp .vtk, parallel .pvt?, multiblock .vtm, "
-                 "series .pvd), OpenVDB (.vdb), Unreal (.fga), Unity (.vf)")
+                 "series .pvd), Exodus II (.e), EnSight Gold (.case), an OpenFOAM case, NetCDF "
+                 "CF (.nc), CGNS (.cgns), VTKHDF (.vtkhdf), OpenVDB (.vdb), Unreal (.fga), "
+                 "Unity (.vf)")
       ->check(CLI::ExistingPath);
   cli.add_option("--array", arrayName,
                  "The field file's vector array or grid (a file with several asks for one), or "
