@@ -69,6 +69,9 @@ void info(const std::string& file, const Common& c) {
             << "format:      " << report.format << "\n";
   for (const std::string& block : report.blocks)
     std::cout << "block:       " << block << "\n";
+  if (report.times.size() > 1)
+    std::cout << "time steps:  " << report.times.size() << ", t = " << report.times.front()
+              << " .. " << report.times.back() << " s (this is the first)\n";
   if (report.cells > 0 || report.points > 0)
     std::cout << "cells:       " << report.cells << " cells, " << report.points << " points\n";
   std::cout << "contents:    ";
