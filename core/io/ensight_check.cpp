@@ -385,6 +385,12 @@ EnSightCase parseEnSightCase(const fs::path& caseFile) {
                   "'; expected a section (FORMAT, GEOMETRY, VARIABLE, "
                   "TIME) or 'key: value'"));
     if (section.empty()) fail("a line before the FORMAT section");
+    // VTK's reader matches keys word for word: one space between words, no tabs.
+    if (colon != std::string::npos) {
+      const std::string raw = trim(line.substr(0, colon));
+      if (raw.find('\t') != std::string::npos || raw.find("  ") != std::string::npos)
+        fail(concat("'", raw.substr(0, 40), "': a key's words are one space apart"));
+    }
     std::string key = colon == std::string::npos ? pendingKey : lower(trim(line.substr(0, colon)));
     const std::string value = colon == std::string::npos ? line : trim(line.substr(colon + 1));
     if (section == "format") {

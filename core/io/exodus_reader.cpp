@@ -72,6 +72,9 @@ void checkExodusLayout(const NetcdfHeader& h, const std::string& file) {
     if (length(in) > 0) {
       if (!h.dimension(per)) fail(concat("no dimension '", per, "'"));
       expect(concat("connect", b), {in, per});
+      const NetcdfAttribute* type = h.variable(concat("connect", b))->attribute("elem_type");
+      if (!type || type->text.empty() || type->text.size() > 32)
+        fail(concat("connect", b, " has no elem_type naming its elements"));
     }
   }
   for (const char* kind : {"nod", "elem", "glo"}) {

@@ -126,6 +126,9 @@ struct IndexBox {
 
 // The grid points within the cell's box widened by what its tolerance admits.
 IndexBox indexBox(const UniformGrid& g, const glm::dvec3& lo, const glm::dvec3& hi) {
+  for (int a = 0; a < 3; ++a)
+    if (!std::isfinite(lo[a]) || !std::isfinite(hi[a]))
+      return {glm::ivec3(0), glm::ivec3(-1)};  // a cell at no finite place holds no point
   const double margin =
       1.1 * std::max(kParametricTolerance, kSurfaceTolerance) * glm::length(hi - lo);
   IndexBox box;

@@ -47,6 +47,10 @@ SamplingBounds boundsOf(const std::vector<VtkBlock>& blocks) {
   for (const VtkBlock& b : blocks) {
     double box[6];
     b.data->GetBounds(box);
+    for (double v : box)
+      if (!std::isfinite(v))
+        throw Error(concat("the points of ", b.name.empty() ? "the data" : "block '" + b.name + "'",
+                           " are not all at finite places (NaN or Inf coordinates)"));
     for (int a = 0; a < 3; ++a) {
       out.min[a] = std::min(out.min[a], box[2 * a]);
       out.max[a] = std::max(out.max[a], box[2 * a + 1]);

@@ -7,4 +7,6 @@ folder="$2"
 shopt -s nullglob
 inputs=("$folder"/*)
 [ ${#inputs[@]} -eq 0 ] && { echo "no regression inputs in $folder"; exit 0; }
+# VTK readers' leaks on malformed input (tests/sanitize/lsan-suppressions.txt).
+export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$(cd "$(dirname "$0")/../.." && pwd)/tests/sanitize/lsan-suppressions.txt}"
 exec "$target" -rss_limit_mb=2560 -malloc_limit_mb=2048 -timeout=30 "${inputs[@]}"
