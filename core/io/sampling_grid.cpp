@@ -59,6 +59,23 @@ SamplingBounds boundsOf(const std::vector<VtkBlock>& blocks) {
   return out;
 }
 
+double cloudSpacing(const std::vector<VtkBlock>& blocks, const SamplingBounds& bounds) {
+  const glm::dvec3 extent = bounds.max - bounds.min;
+  const double longest = std::max({extent.x, extent.y, extent.z});
+  vtkIdType points = 0;
+  for (const VtkBlock& b : blocks)
+    points += b.data->GetNumberOfPoints();
+  double volume = 1.0;
+  int axes = 0;
+  for (int a = 0; a < 3; ++a)
+    if (extent[a] > 1e-6 * longest) {
+      volume *= extent[a];
+      ++axes;
+    }
+  if (axes == 0) return 0.0;
+  return std::pow(volume / double(std::max<vtkIdType>(points, 1)), 1.0 / axes);
+}
+
 glm::ivec3 meshResolution(const std::vector<VtkBlock>& blocks, const SamplingBounds& bounds,
                           double bytesPerPoint, std::size_t memoryBudget, std::string& note) {
   const glm::dvec3 extent = bounds.max - bounds.min;
@@ -79,13 +96,7 @@ glm::ivec3 meshResolution(const std::vector<VtkBlock>& blocks, const SamplingBou
     spacing = sizes[sizes.size() / 2];
     from = concat("the cells' median size ", spacing, " m");
   } else {
-    vtkIdType points = 0;
-    for (const VtkBlock& b : blocks)
-      points += b.data->GetNumberOfPoints();
-    double volume = 1.0;
-    for (int a = 0; a < 3; ++a)
-      if (extent[a] > 1e-6 * longest) volume *= extent[a];
-    spacing = std::pow(volume / double(std::max<vtkIdType>(points, 1)), 1.0 / std::max(axes, 1));
+    spacing = cloudSpacing(blocks, bounds);
     from = concat("the points' mean spacing ", spacing, " m");
   }
   const double cap = std::min(double(kDefaultPoints),

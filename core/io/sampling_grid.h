@@ -33,6 +33,10 @@ struct SamplingBounds {
 // The box around every block's points.
 SamplingBounds boundsOf(const std::vector<VtkBlock>& blocks);
 
+// The mean spacing of the blocks' points over the box: (volume / points) to
+// the power of one over the axes the data is not flat along.
+double cloudSpacing(const std::vector<VtkBlock>& blocks, const SamplingBounds& bounds);
+
 glm::ivec3 meshResolution(const std::vector<VtkBlock>& blocks, const SamplingBounds& bounds,
                           double bytesPerPoint, std::size_t memoryBudget, std::string& note);
 

@@ -15,6 +15,7 @@
 #include <vtkStructuredGrid.h>
 
 #include "core/io/mesh_resampler.h"
+#include "core/io/point_cloud_interpolator.h"
 #include "core/io/sampling_grid.h"
 #include "core/io/vector_array_choice.h"
 #include "core/io/vtk_blocks.h"
@@ -289,8 +290,31 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
       s.arrays.push_back(b.data->GetPointData()->GetArray(name.c_str()));
     sources.push_back(std::move(s));
   }
-  ResampledArrays sampled =
-      resampleMeshes(sources, grid, concat("resampling ", path.filename().string()));
+  // Points without cells (a particle tracker's vectors) are interpolated
+  // between, within twice their mean spacing; cells are resampled.
+  std::size_t clouds = 0;
+  for (const VtkBlock& b : used)
+    clouds += isPointCloud(b.data) ? 1 : 0;
+  if (clouds > 0 && clouds < used.size())
+    throw Error(concat(file, ": ", clouds, " of its ", used.size(),
+                       " blocks are points without cells and the others meshes; expected one "
+                       "or the other"));
+  ResampledArrays sampled;
+  if (clouds > 0) {
+    const double radius = 2.0 * cloudSpacing(used, bounds);
+    const std::string note = concat(
+        "points without cells: each grid point the inverse-square-distance mean of the "
+        "points within ",
+        radius,
+        " m (twice their mean spacing), outside the field where "
+        "there are none");
+    report.notes.push_back(note);
+    log::info(file, ": ", note);
+    sampled = interpolatePointCloud(sources, grid, radius,
+                                    concat("interpolating ", path.filename().string()));
+  } else {
+    sampled = resampleMeshes(sources, grid, concat("resampling ", path.filename().string()));
+  }
   report.resampled = true;
 
   const std::size_t points = grid.points();

@@ -417,5 +417,60 @@ TEST(MeshFormats, LegacyUnstructuredGridsAndPolyDataInEveryVersion) {
       kExact);
 }
 
+// Vectors at scattered points (a particle tracker's output), as vertices of
+// polydata: each grid point the Shepard mean of the points within twice
+// their spacing, so within the field's stretch (3) times that radius of it.
+TEST(MeshFormats, ScatteredPointsAreInterpolatedBetween) {
+  const auto dir = test::scratch();
+  vtkNew<vtkPolyData> cloud;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> vertices;
+  vtkNew<vtkFloatArray> v;
+  v->SetName("velocity");
+  v->SetNumberOfComponents(3);
+  std::uint32_t state = 12345u;
+  auto uniform = [&] {
+    state = state * 1664525u + 1013904223u;
+    return double(state >> 8) / double(1u << 24);
+  };
+  const int n = 4000;
+  for (int i = 0; i < n; ++i) {
+    const glm::dvec3 p(2.0 * uniform(), uniform(), uniform());
+    const vtkIdType id = points->InsertNextPoint(p.x, p.y, p.z);
+    vertices->InsertNextCell(1, &id);
+    const glm::dvec3 a = asymmetric(p);
+    v->InsertNextTuple3(a.x, a.y, a.z);
+  }
+  cloud->SetPoints(points);
+  cloud->SetVerts(vertices);
+  cloud->GetPointData()->SetVectors(v);
+  const auto path = dir / "tracks.vtp";
+  vtkNew<vtkXMLPolyDataWriter> w;
+  w->SetInputData(cloud);
+  w->SetFileName(path.c_str());
+  ASSERT_EQ(w->Write(), 1);
+  LoadReport report;
+  LoadOptions options;
+  options.resolution = {21, 11, 11};
+  const VectorField f = loadField(path, options, &report);
+  ASSERT_TRUE(hasNote(report, "points without cells"));
+  double radius = 0.0;
+  for (const std::string& note : report.notes)
+    if (const auto at = note.find("within "); at != std::string::npos)
+      radius = std::stod(note.substr(at + 7));
+  ASSERT_GT(radius, 0.0);
+  EXPECT_NEAR(radius, 2.0 * std::cbrt(2.0 / n), 0.1 * radius);
+  std::size_t valid = 0;
+  for (int k = 0; k < 11; ++k)
+    for (int j = 0; j < 11; ++j)
+      for (int i = 0; i < 21; ++i) {
+        if (!f.valid(i, j, k)) continue;
+        ++valid;
+        const glm::dvec3 p(f.pointPosition(i, j, k));
+        ASSERT_LE(glm::length(glm::dvec3(f.at(i, j, k)) - asymmetric(p)), 3.0 * radius + kExact);
+      }
+  EXPECT_GT(valid, std::size_t(0.95 * 21 * 11 * 11));
+}
+
 }  // namespace
 }  // namespace sandstorm
