@@ -105,6 +105,31 @@ TEST(FieldStreamScanner, APvdsEntriesComeWhenListedAndWrittenInTimeOrder) {
   EXPECT_NE(messages[0].find("skipped"), std::string::npos);
 }
 
+// A simulation on many ranks writes each step as an index beside its pieces:
+// the indexes are the steps; a folder of plain meshes has every file a step.
+TEST(FieldStreamScanner, AFolderOfMeshStepsAndOfIndexesBesideTheirPieces) {
+  const fs::path meshes = test::scratch() / "meshes";
+  fs::create_directories(meshes);
+  write(meshes / "flow_0.vtu", "a");
+  write(meshes / "flow_1.vtu", "b");
+  write(meshes / "flow_2.e", "c");
+  FieldStreamScanner plain(meshes, 1.0);
+  std::vector<std::string> messages;
+  plain.poll(messages);
+  EXPECT_EQ(names(plain.poll(messages)),
+            (std::vector<std::string>{"flow_0.vtu", "flow_1.vtu", "flow_2.e"}));
+
+  const fs::path pieces = test::scratch() / "pieces";
+  fs::create_directories(pieces);
+  for (const char* name : {"step_0.pvtu", "step_0_0.vtu", "step_0_1.vtu", "step_1.pvtu",
+                           "step_1_0.vtu", "step_1_1.vtu"})
+    write(pieces / name, name);
+  FieldStreamScanner indexed(pieces, 1.0);
+  indexed.poll(messages);
+  EXPECT_EQ(names(indexed.poll(messages)),
+            (std::vector<std::string>{"step_0.pvtu", "step_1.pvtu"}));
+}
+
 TEST(FieldStreamScanner, RefusesSourcesItCannotWatch) {
   EXPECT_THROW(FieldStreamScanner(test::scratch() / "x.vti"), Error);
   EXPECT_THROW(FieldStreamScanner(test::scratch(), 0.0), Error);
