@@ -99,9 +99,14 @@ glm::ivec3 meshResolution(const std::vector<VtkBlock>& blocks, const SamplingBou
     spacing = cloudSpacing(blocks, bounds);
     from = concat("the points' mean spacing ", spacing, " m");
   }
-  const double cap = std::min(double(kDefaultPoints),
-                              std::min(double(VectorField::kMaxPoints),
-                                       double(memoryBudget) / std::max(bytesPerPoint, 1.0)));
+  // A few cells spread far apart do not make a fine grid worth its memory:
+  // no more than 64 grid points a cell (or a data point), 32^3 at least.
+  double cells = 0.0;
+  for (const VtkBlock& b : blocks)
+    cells += double(std::max(b.data->GetNumberOfCells(), b.data->GetNumberOfPoints()));
+  const double cap = std::min({double(kDefaultPoints), double(VectorField::kMaxPoints),
+                               double(memoryBudget) / std::max(bytesPerPoint, 1.0),
+                               std::max(32768.0, 64.0 * cells)});
   auto dimsFor = [&](double h) {
     glm::ivec3 d(1);
     for (int a = 0; a < 3; ++a)

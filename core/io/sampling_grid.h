@@ -6,7 +6,8 @@
 // cell's box, over up to 20000 cells taken evenly from every block), the same
 // along every axis; an axis the data is flat along gets one point. The grid
 // is made coarser, keeping its proportions, until it holds at most
-// kDefaultPoints points and fits the memory budget at `bytesPerPoint`. A
+// kDefaultPoints points, 64 a cell (32^3 at least: a few small cells far
+// apart make no fine grid) and fits the memory budget at `bytesPerPoint`. A
 // cloud of points without cells is spaced by its points' density instead.
 // `note` says what was chosen and why, naming the setting that chooses
 // another.
