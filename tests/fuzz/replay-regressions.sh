@@ -9,4 +9,5 @@ inputs=("$folder"/*)
 [ ${#inputs[@]} -eq 0 ] && { echo "no regression inputs in $folder"; exit 0; }
 # VTK readers' leaks on malformed input (tests/sanitize/lsan-suppressions.txt).
 export LSAN_OPTIONS="${LSAN_OPTIONS:-suppressions=$(cd "$(dirname "$0")/../.." && pwd)/tests/sanitize/lsan-suppressions.txt}"
+export ASAN_OPTIONS="${ASAN_OPTIONS:+$ASAN_OPTIONS:}fast_unwind_on_malloc=0"
 exec "$target" -rss_limit_mb=2560 -malloc_limit_mb=2048 -timeout=30 "${inputs[@]}"
