@@ -108,6 +108,20 @@ vtkSmartPointer<vtkDataObject> readNetcdfCf(const std::filesystem::path& path, L
     throw Error(concat(file,
                        ": no variable on a grid of two or three dimensions to take the "
                        "flow from; choose one with --array (u,v,w)"));
+  // Each of the flow's dimensions holds data (a record dimension no step was
+  // written along holds none), and its coordinate variable, where there is
+  // one, is CF's: one-dimensional along it, numeric. VTK's reader takes both
+  // on trust.
+  for (std::size_t d : flow->dims) {
+    const auto& dim = h.dims[d];
+    if (dim.length == 0)
+      throw Error(concat(file, ": variable '", flow->name, "' has no values along '", dim.name, "'",
+                         dim.unlimited ? " (no time step was written)" : ""));
+    if (const NetcdfVariable* c = h.variable(dim.name);
+        c && (c->dims.size() != 1 || c->dims[0] != d || c->type == 2 /* NC_CHAR */))
+      throw Error(concat(file, ": coordinate variable '", dim.name,
+                         "' is not a list of numbers along its dimension"));
+  }
   // Every variable on the flow's grid is read: one step of each, together.
   double bytes = 0.0;
   for (const NetcdfVariable& v : h.variables)

@@ -90,6 +90,17 @@ TEST(Config, UnknownKeysAreRefused) {
   EXPECT_ERROR("[sim]\nmaximun = 4\n" + kWall, "test.toml:2", "sim.maximun", "sim.maximum");
 }
 
+// A file's vector as three one-component arrays: field.name = ["u", "v", "w"].
+TEST(Config, AFieldsComponentsAreNamedAsThreeArrays) {
+  const AppConfig c = parseConfig(
+      "[field]\nsource = \"flow.nc\"\nname = [\"u\", \"v\", \"w\"]\n" + kWall, "test.toml");
+  EXPECT_EQ(c.field.name, "u,v,w");
+  EXPECT_ERROR("[field]\nsource = \"flow.nc\"\nname = [\"u\", \"v\"]\n" + kWall, "test.toml:3",
+               "field.name", "three array names");
+  EXPECT_ERROR("[field]\nsource = \"flow.nc\"\nname = [\"u\", 2, \"w\"]\n" + kWall, "field.name",
+               "three array names");
+}
+
 TEST(Config, ColourSettingsAreReadAndAnEmptyOrNonPositiveLogRangeIsRefused) {
   const AppConfig c = parseConfig(R"([render]
 color_by = "velocity_z"

@@ -95,11 +95,12 @@ int main(int argc, char** argv) {
   }
   const fs::path out = argv[1], source = argv[2];
   for (const char* t :
-       {"fuzz_field_vtk",      "fuzz_field_vti",  "fuzz_field_vtr",   "fuzz_field_vts",
-        "fuzz_field_vtu",      "fuzz_field_vtp",  "fuzz_field_index", "fuzz_field_e",
-        "fuzz_field_nc",       "fuzz_openfoam",       "fuzz_ensight",    "fuzz_field_vdb",   "fuzz_field_fga",
-        "fuzz_field_vf",       "fuzz_height_map", "fuzz_config",      "fuzz_session_log",
-        "fuzz_cluster_packet", "fuzz_dtrack",     "fuzz_pvx",         "fuzz_tracker_path"})
+       {"fuzz_field_vtk",   "fuzz_field_vti",      "fuzz_field_vtr",   "fuzz_field_vts",
+        "fuzz_field_vtu",   "fuzz_field_vtp",      "fuzz_field_index", "fuzz_field_e",
+        "fuzz_field_nc",    "fuzz_openfoam",       "fuzz_ensight",     "fuzz_field_vdb",
+        "fuzz_field_fga",   "fuzz_field_vf",       "fuzz_height_map",  "fuzz_config",
+        "fuzz_session_log", "fuzz_cluster_packet", "fuzz_dtrack",      "fuzz_pvx",
+        "fuzz_tracker_path"})
     fs::create_directories(out / t);
 
   // Image data in every encoding VTK writes, and the legacy format.

@@ -8,7 +8,6 @@
 #include <vtkCellArray.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkExtractUnstructuredGridPiece.h>
-#include <vtkGeometryFilter.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
@@ -23,6 +22,7 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include "core/io/field_loader.h"
+#include "core/io/field_sequence.h"
 #include "tests/io/io_test_util.h"
 #include "tests/io/mesh_test_util.h"
 
@@ -394,27 +394,64 @@ TEST(MeshFormats, LegacyUnstructuredGridsAndPolyDataInEveryVersion) {
       test::expectL(loadField(path, options, &report), asymmetric, kExact);
       EXPECT_EQ(report.cells, std::uint64_t(mesh->GetNumberOfCells()));
     }
-  vtkNew<vtkPolyData> surface;  // the L's boundary, triangulated: a closed surface
-  {
-    vtkNew<vtkGeometryFilter> outside;
-    outside->SetInputData(mesh);
-    outside->Update();
-    surface->DeepCopy(outside->GetOutput());
-  }
-  const auto path = dir / "surface.vtk";
+  // Polydata: a sheet of triangles at z = 0.75 (VTK's geometry filter, which
+  // would make a surface of the mesh, leaks in 9.1).
+  vtkNew<vtkPolyData> sheet;
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> triangles;
+  vtkNew<vtkFloatArray> v;
+  v->SetName("velocity");
+  v->SetNumberOfComponents(3);
+  for (int j = 0; j <= 4; ++j)
+    for (int i = 0; i <= 4; ++i) {
+      const glm::dvec3 p(0.5 * i, 0.5 * j, 0.75);
+      points->InsertNextPoint(p.x, p.y, p.z);
+      const glm::dvec3 a = asymmetric(p);
+      v->InsertNextTuple3(a.x, a.y, a.z);
+    }
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) {
+      const vtkIdType a = i + 5 * j, t1[3] = {a, a + 1, a + 6}, t2[3] = {a, a + 6, a + 5};
+      triangles->InsertNextCell(3, t1);
+      triangles->InsertNextCell(3, t2);
+    }
+  sheet->SetPoints(points);
+  sheet->SetPolys(triangles);
+  sheet->GetPointData()->SetVectors(v);
+  const auto path = dir / "sheet.vtk";
   vtkNew<vtkPolyDataWriter> w;
-  w->SetInputData(surface);
+  w->SetInputData(sheet);
   w->SetFileName(path.c_str());
   ASSERT_EQ(w->Write(), 1);
+  LoadOptions flat;
+  flat.resolution = {9, 9, 1};
   LoadReport report;
-  const VectorField f = loadField(path, options, &report);
-  EXPECT_EQ(report.cells, std::uint64_t(surface->GetNumberOfCells()));
-  // Only points on the surface lie in its cells: the box's faces.
-  EXPECT_TRUE(f.valid(0, 7, 3));
-  EXPECT_FALSE(f.valid(5, 5, 5));
-  EXPECT_LE(
-      glm::length(glm::dvec3(f.at(0, 7, 3)) - asymmetric(glm::dvec3(f.pointPosition(0, 7, 3)))),
-      kExact);
+  const VectorField f = loadField(path, flat, &report);
+  EXPECT_EQ(report.cells, std::uint64_t(32));
+  EXPECT_EQ(f.invalidCount(), 0u);
+  for (int j = 0; j < 9; ++j)
+    for (int i = 0; i < 9; ++i)
+      ASSERT_LE(
+          glm::length(glm::dvec3(f.at(i, j, 0)) - asymmetric(glm::dvec3(f.pointPosition(i, j, 0)))),
+          kExact);
+}
+
+// A .pvd of meshes is a time series like any other: every frame on the
+// first frame's grid.
+TEST(MeshFormats, APvdOfMeshesIsATimeSeries) {
+  const auto dir = test::scratch();
+  const auto doubled = [](const glm::dvec3& p) { return 2.0 * asymmetric(p); };
+  writeVtu(test::lMesh(4, asymmetric), dir / "t0.vtu", vtkXMLWriter::Appended);
+  writeVtu(test::lMesh(4, doubled), dir / "t1.vtu", vtkXMLWriter::Appended);
+  test::writeText(dir / "run.pvd",
+                  "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n"
+                  "<Collection>\n<DataSet timestep=\"0\" file=\"t0.vtu\"/>\n"
+                  "<DataSet timestep=\"2.5\" file=\"t1.vtu\"/>\n</Collection>\n</VTKFile>\n");
+  const FieldSequence sequence = FieldSequence::fromFile(dir / "run.pvd");
+  ASSERT_EQ(sequence.size(), 2u);
+  EXPECT_EQ(sequence.time(1), 2.5);
+  test::expectL(sequence.frame(0), asymmetric, kExact);
+  test::expectL(sequence.frame(1), doubled, 2 * kExact);
 }
 
 // Vectors at scattered points (a particle tracker's output), as vertices of
