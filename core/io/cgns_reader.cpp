@@ -3,8 +3,6 @@
 #include <vtk_cgns.h>
 #include VTK_CGNS(cgnslib.h)
 
-#include <cstring>
-#include <fstream>
 #include <vector>
 
 #include <vtkCGNSReader.h>
@@ -137,15 +135,6 @@ void checkCgns(const std::string& file, const LoadOptions& options) {
 vtkSmartPointer<vtkDataObject> readCgns(const std::filesystem::path& path,
                                         const LoadOptions& options, LoadReport& report) {
   const std::string file = path.string();
-  {
-    std::ifstream in(path, std::ios::binary);
-    char head[8] = {};
-    in.read(head, 8);
-    if (std::memcmp(head, "\x89HDF\r\n\x1a\n", 8) != 0)
-      throw Error(concat(file,
-                         ": a CGNS file in the older ADF layout, which is not read; "
-                         "convert it to HDF5 (cgnstools' adf2hdf)"));
-  }
   checkCgns(file, options);
   VtkMessageTrap trap(path);
   vtkNew<vtkCGNSReader> reader;

@@ -1,4 +1,4 @@
-// readCgns(): a CGNS file (.cgns, HDF5 inside) read by VTK's vtkCGNSReader at
+// readCgns(): a CGNS file (.cgns, HDF5 or the older ADF inside) read by VTK's vtkCGNSReader at
 // options.timeStep: the first base's zones, structured or unstructured
 // (merged by the field extractor), their flow solutions at the vertices or
 // cell centres (VelocityX/Y/Z joined into a vector), the base's iterative
@@ -8,9 +8,8 @@
 // reads its node tree, not the data): zone sizes and every unstructured
 // section within the memory budget, each section's element type one VTK
 // reads (not the polyhedral NGON_n/NFACE_n), and its connectivity, read,
-// naming the zone's vertices. CGNS files in the older ADF layout are refused
-// (convert them with cgnstools' adf2hdf). Throws Error naming the file, the
-// zone and what was wrong.
+// naming the zone's vertices. Throws Error naming the file, the zone and what
+// was wrong.
 #pragma once
 
 #include <filesystem>

@@ -118,7 +118,10 @@ FieldFormat detectFieldFormat(const std::filesystem::path& path) {
     return FieldFormat::UnityVf;
   if (const FieldFormat xml = xmlType(head); xml != FieldFormat::Unknown) return xml;
   if (const FieldFormat c = containerFormat(path, head); c != FieldFormat::Unknown) return c;
-  if (head.rfind("@(#)ADF Database Version", 0) == 0) return FieldFormat::Cgns;
+  // CGNS's older ADF layout: "@(#)" (written with each byte's high bit set
+  // by some versions), then its name.
+  if (head.size() >= 24 && head.compare(4, 20, "ADF Database Version") == 0)
+    return FieldFormat::Cgns;
   if (looksLikeEnSightCase(head)) return FieldFormat::EnSightGold;
   if (looksLikeFga(head)) return FieldFormat::UnrealFga;
   return FieldFormat::Unknown;

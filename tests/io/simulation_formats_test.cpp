@@ -548,8 +548,8 @@ TEST(SimulationFormats, VtkHdfUnstructuredGrids) {
 // CGNS as a CFD code writes it, through the CGNS library (HDF5): a
 // structured zone and an unstructured zone of tetrahedra beside it, their
 // VelocityX/Y/Z at the vertices.
-void writeCgns(const std::filesystem::path& path, vtkUnstructuredGrid* tetrahedra) {
-  ASSERT_EQ(cg_set_file_type(CG_FILE_HDF5), CG_OK);
+void writeCgns(const std::filesystem::path& path, vtkUnstructuredGrid* tetrahedra, int layout) {
+  ASSERT_EQ(cg_set_file_type(layout), CG_OK);
   int fn = -1, base = -1;
   ASSERT_EQ(cg_open(path.c_str(), CG_MODE_WRITE, &fn), CG_OK) << cg_get_error();
   ASSERT_EQ(cg_base_write(fn, "Base", 3, 3, &base), CG_OK);
@@ -627,16 +627,19 @@ void writeCgns(const std::filesystem::path& path, vtkUnstructuredGrid* tetrahedr
 
 TEST(SimulationFormats, CgnsStructuredAndUnstructuredZones) {
   const auto dir = test::scratch();
-  const auto path = dir / "flow.cgns";
-  writeCgns(path, tetraBox(0.0));
-  LoadOptions options;
-  options.resolution = {9, 5, 5};
-  LoadReport report;
-  const VectorField f = loadField(path, options, &report);
-  EXPECT_EQ(report.format, "CGNS file (.cgns)");
-  EXPECT_EQ(report.blocks.size(), 2u);
-  EXPECT_EQ(f.bounds().max, glm::vec3(2.0f, 1.0f, 1.0f));
-  expectFlow(f, 0.0, kExact);
+  for (const int layout : {CG_FILE_HDF5, CG_FILE_ADF}) {
+    SCOPED_TRACE(layout == CG_FILE_HDF5 ? "HDF5" : "ADF");
+    const auto path = dir / (layout == CG_FILE_HDF5 ? "flow.cgns" : "adf.cgns");
+    writeCgns(path, tetraBox(0.0), layout);
+    LoadOptions options;
+    options.resolution = {9, 5, 5};
+    LoadReport report;
+    const VectorField f = loadField(path, options, &report);
+    EXPECT_EQ(report.format, "CGNS file (.cgns)");
+    EXPECT_EQ(report.blocks.size(), 2u);
+    EXPECT_EQ(f.bounds().max, glm::vec3(2.0f, 1.0f, 1.0f));
+    expectFlow(f, 0.0, kExact);
+  }
 }
 
 }  // namespace
