@@ -260,10 +260,11 @@ VectorChoice chooseVectorArray(const std::vector<VtkBlock>& blocks,
     return choice;
   }
   if (!asked.empty()) {
-    if (!checkNamed(blocks, asked, file))
+    choice.name = asked;
+    // VTK's Exodus reader names the vector it joins from vel_x, vel_y, vel_z "vel_".
+    if (!checkNamed(blocks, asked, file) && !checkNamed(blocks, choice.name = asked + "_", file))
       throw Error(
           concat(file, ": no array named '", asked, "'; arrays present: ", arrayInventory(blocks)));
-    choice.name = asked;
     return choice;
   }
   // The active vectors, where a block marks them.
