@@ -144,12 +144,7 @@ vtkSmartPointer<vtkDataObject> readCgns(const std::filesystem::path& path,
   trap.throwIfFailed("reading the CGNS file's structure");
   reader->EnableAllPointArrays();
   reader->EnableAllCellArrays();
-  updateAtStep(reader, options, report, file);
-  trap.throwIfFailed("reading the CGNS file");
-  vtkSmartPointer<vtkDataObject> out = reader->GetOutputDataObject(0);
-  if (!out) throw Error(concat(file, ": VTK's CGNS reader returned nothing"));
-  for (const VtkBlock& b : vtkBlocks(out))
-    checkVtkCells(b.data, concat(file, ": ", b.name));
+  vtkSmartPointer<vtkDataObject> out = readAtStep(reader, trap, options, report, file, "CGNS file");
   return out;
 }
 

@@ -28,12 +28,8 @@ vtkSmartPointer<vtkDataObject> readEnSight(const std::filesystem::path& path,
   reader->ReadAllVariablesOn();
   reader->UpdateInformation();
   trap.throwIfFailed("reading the EnSight case's structure");
-  updateAtStep(reader, options, report, file);
-  trap.throwIfFailed("reading the EnSight case");
-  vtkSmartPointer<vtkDataObject> out = reader->GetOutputDataObject(0);
-  if (!out) throw Error(concat(file, ": VTK's EnSight reader returned nothing"));
-  for (const VtkBlock& b : vtkBlocks(out))
-    checkVtkCells(b.data, concat(file, ": ", b.name));
+  vtkSmartPointer<vtkDataObject> out =
+      readAtStep(reader, trap, options, report, file, "EnSight case");
   return out;
 }
 

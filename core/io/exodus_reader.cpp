@@ -104,13 +104,8 @@ void checkConnectivity(const NetcdfHeader& h, const std::string& file) {
   const auto* nodes = h.dimension("num_nodes");
   const auto* blocks = h.dimension("num_el_blk");
   if (!nodes || !blocks || blocks->length == 0) return;
-  int id = -1;
-  if (const int status = nc_open(file.c_str(), NC_NOWRITE, &id); status != NC_NOERR)
-    throw Error(concat(file, ": the NetCDF library cannot open it: ", nc_strerror(status)));
-  struct Close {
-    int id;
-    ~Close() { nc_close(id); }
-  } close{id};
+  const NetcdfFile f(file);
+  const int id = f.id();
   for (std::uint64_t b = 1; b <= blocks->length; ++b) {
     const std::string name = concat("connect", b);
     const NetcdfVariable* v = h.variable(name);
@@ -183,12 +178,8 @@ vtkSmartPointer<vtkDataObject> readExodus(const std::filesystem::path& path,
     reader->SetObjectStatus(vtkExodusIIReader::ELEM_BLOCK, i, 1);
   reader->SetAllArrayStatus(vtkExodusIIReader::NODAL, 1);
   reader->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK, 1);
-  updateAtStep(reader, options, report, file);
-  trap.throwIfFailed("reading the Exodus II file");
-  vtkSmartPointer<vtkDataObject> out = reader->GetOutputDataObject(0);
-  if (!out) throw Error(concat(file, ": VTK's Exodus II reader returned nothing"));
-  for (const VtkBlock& b : vtkBlocks(out))
-    checkVtkCells(b.data, concat(file, ": ", b.name));
+  vtkSmartPointer<vtkDataObject> out =
+      readAtStep(reader, trap, options, report, file, "Exodus II file");
   return out;
 }
 

@@ -1,6 +1,8 @@
 #include "core/io/field_loader.h"
 
+#include <vtkDataObject.h>
 #include <vtkDataSet.h>
+#include <vtkSmartPointer.h>
 
 #include "core/io/cgns_reader.h"
 #include "core/io/ensight_reader.h"
@@ -37,55 +39,49 @@ void checkResolution(const std::string& file, const LoadOptions& options) {
                        " bytes; choose a lower resolution"));
 }
 
-VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
-                     const LoadOptions& options, LoadReport& report) {
+// The VTK data a VTK-based format's reader makes of the file; null for the
+// formats read otherwise.
+vtkSmartPointer<vtkDataObject> readVtkData(const std::filesystem::path& path, FieldFormat format,
+                                           LoadOptions& options, LoadReport& report) {
   switch (format) {
-    case FieldFormat::VtkLegacy: {
-      auto data = readVtkLegacy(path, options);
-      return extractVectorField(data, path, options, report);
-    }
+    case FieldFormat::VtkLegacy:
+      return readVtkLegacy(path, options);
     case FieldFormat::VtkImageData:
     case FieldFormat::VtkRectilinearGrid:
     case FieldFormat::VtkStructuredGrid:
     case FieldFormat::VtkUnstructuredGrid:
-    case FieldFormat::VtkPolyData: {
-      auto data = readVtkXml(path, format, options);
-      return extractVectorField(data, path, options, report);
-    }
+    case FieldFormat::VtkPolyData:
+      return readVtkXml(path, format, options);
     case FieldFormat::VtkPImageData:
     case FieldFormat::VtkPRectilinearGrid:
     case FieldFormat::VtkPStructuredGrid:
     case FieldFormat::VtkPUnstructuredGrid:
     case FieldFormat::VtkPPolyData:
-    case FieldFormat::VtkMultiBlock: {
-      auto data = readVtkXmlIndex(path, format, options, report);
-      return extractVectorField(data, path, options, report);
-    }
-    case FieldFormat::ExodusII: {
-      auto data = readExodus(path, options, report);
-      return extractVectorField(data, path, options, report);
-    }
-    case FieldFormat::OpenFoam: {
-      auto data = readOpenFoam(path, options, report);
-      return extractVectorField(data, path, options, report);
-    }
-    case FieldFormat::EnSightGold: {
-      auto data = readEnSight(path, options, report);
-      return extractVectorField(data, path, options, report);
-    }
-    case FieldFormat::NetCdf: {
-      LoadOptions named = options;  // the flow's components, by their standard names
-      auto data = readNetcdfCf(path, named, report);
-      return extractVectorField(data, path, named, report);
-    }
-    case FieldFormat::VtkHdf: {
-      auto data = readVtkHdf(path, options, report);
-      return extractVectorField(data, path, options, report);
-    }
-    case FieldFormat::Cgns: {
-      auto data = readCgns(path, options, report);
-      return extractVectorField(data, path, options, report);
-    }
+    case FieldFormat::VtkMultiBlock:
+      return readVtkXmlIndex(path, format, options, report);
+    case FieldFormat::ExodusII:
+      return readExodus(path, options, report);
+    case FieldFormat::OpenFoam:
+      return readOpenFoam(path, options, report);
+    case FieldFormat::EnSightGold:
+      return readEnSight(path, options, report);
+    case FieldFormat::NetCdf:
+      return readNetcdfCf(path, options, report);  // may name the flow's components
+    case FieldFormat::VtkHdf:
+      return readVtkHdf(path, options, report);
+    case FieldFormat::Cgns:
+      return readCgns(path, options, report);
+    default:
+      return nullptr;
+  }
+}
+
+VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
+                     const LoadOptions& options, LoadReport& report) {
+  LoadOptions read = options;
+  if (vtkSmartPointer<vtkDataObject> data = readVtkData(path, format, read, report))
+    return extractVectorField(data, path, read, report);
+  switch (format) {
     case FieldFormat::VtkCollection: {
       const std::vector<PvdFrame> frames = readPvd(path);
       report.notes.push_back(concat("time series of ", frames.size(),
@@ -107,7 +103,7 @@ VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
       return readFga(path, options, report);
     case FieldFormat::UnityVf:
       return readUnityVf(path, options, report);
-    case FieldFormat::Unknown:
+    default:  // Unknown; the VTK-based formats were read above
       break;
   }
   throw Error(concat(path.string(), ": format not recognised; expected ", knownFormats()));

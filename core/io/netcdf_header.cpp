@@ -221,13 +221,8 @@ class ClassicWalker {
 
 // NetCDF-4: the library's own inquiry of the root group's metadata.
 NetcdfHeader inquire(const std::string& file) {
-  int id = -1;
-  if (const int status = nc_open(file.c_str(), NC_NOWRITE, &id); status != NC_NOERR)
-    throw Error(concat(file, ": the NetCDF library cannot open it: ", nc_strerror(status)));
-  struct Close {
-    int id;
-    ~Close() { nc_close(id); }
-  } close{id};
+  const NetcdfFile f(file);
+  const int id = f.id();
   auto check = [&](int status, const std::string& what) {
     if (status != NC_NOERR)
       throw Error(concat(file, ": reading ", what, ": ", nc_strerror(status)));
@@ -279,6 +274,15 @@ NetcdfHeader inquire(const std::string& file) {
 }
 
 }  // namespace
+
+NetcdfFile::NetcdfFile(const std::string& file) {
+  if (const int status = nc_open(file.c_str(), NC_NOWRITE, &id_); status != NC_NOERR)
+    throw Error(concat(file, ": the NetCDF library cannot open it: ", nc_strerror(status)));
+}
+
+NetcdfFile::~NetcdfFile() {
+  nc_close(id_);
+}
 
 const NetcdfAttribute* NetcdfVariable::attribute(const std::string& n) const {
   for (const NetcdfAttribute& a : attributes)

@@ -52,6 +52,20 @@ struct NetcdfHeader {
   double values(const NetcdfVariable& v) const;
 };
 
+// A NetCDF file opened read-only through the NetCDF library, closed when it
+// goes; throws Error naming the file when the library cannot open it.
+class NetcdfFile {
+ public:
+  explicit NetcdfFile(const std::string& file);
+  ~NetcdfFile();
+  NetcdfFile(const NetcdfFile&) = delete;
+  NetcdfFile& operator=(const NetcdfFile&) = delete;
+  int id() const { return id_; }
+
+ private:
+  int id_ = -1;
+};
+
 // Whether the file starts as NetCDF does ("CDF" 1, 2 or 5) or as HDF5.
 bool looksLikeNetcdf(const std::string& head);
 

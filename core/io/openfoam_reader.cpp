@@ -149,12 +149,8 @@ vtkSmartPointer<vtkDataObject> readOpenFoam(const fs::path& path, const LoadOpti
   trap.watch(algorithm);
   algorithm->UpdateInformation();
   trap.throwIfFailed("reading the OpenFOAM case's structure");
-  updateAtStep(algorithm, options, report, file);
-  trap.throwIfFailed("reading the OpenFOAM case");
-  vtkSmartPointer<vtkDataObject> out = algorithm->GetOutputDataObject(0);
-  if (!out) throw Error(concat(file, ": VTK's OpenFOAM reader returned nothing"));
-  for (const VtkBlock& b : vtkBlocks(out))
-    checkVtkCells(b.data, concat(file, ": ", b.name));
+  vtkSmartPointer<vtkDataObject> out =
+      readAtStep(algorithm, trap, options, report, file, "OpenFOAM case");
   if (decomposed) return mergeProcessorSeams(out);
   return out;
 }

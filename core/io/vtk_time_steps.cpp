@@ -1,9 +1,13 @@
 #include "core/io/vtk_time_steps.h"
 
 #include <vtkAlgorithm.h>
+#include <vtkDataObject.h>
+#include <vtkDataSet.h>
 #include <vtkInformation.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 
+#include "core/io/vtk_blocks.h"
+#include "core/io/vtk_cell_check.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -29,6 +33,18 @@ void updateAtStep(vtkAlgorithm* reader, const LoadOptions& options, LoadReport& 
     throw Error(concat(file, ": has ", report.times.size(), " time steps; asked for step ",
                        options.timeStep));
   reader->UpdateTimeStep(report.times[options.timeStep]);
+}
+
+vtkSmartPointer<vtkDataObject> readAtStep(vtkAlgorithm* reader, const VtkMessageTrap& trap,
+                                          const LoadOptions& options, LoadReport& report,
+                                          const std::string& file, const std::string& what) {
+  updateAtStep(reader, options, report, file);
+  trap.throwIfFailed(concat("reading the ", what));
+  vtkSmartPointer<vtkDataObject> out = reader->GetOutputDataObject(0);
+  if (!out) throw Error(concat(file, ": VTK's reader of the ", what, " returned nothing"));
+  for (const VtkBlock& b : vtkBlocks(out))
+    checkVtkCells(b.data, concat(file, ": ", b.name));
+  return out;
 }
 
 }  // namespace sandstorm

@@ -7,9 +7,13 @@
 #include <string>
 #include <vector>
 
+#include <vtkSmartPointer.h>
+
 #include "core/io/load_options.h"
+#include "core/io/vtk_message_trap.h"
 
 class vtkAlgorithm;
+class vtkDataObject;
 
 namespace sandstorm {
 
@@ -18,5 +22,12 @@ std::vector<double> advertisedTimes(vtkAlgorithm* reader);
 // Throws Error naming `file` when options.timeStep is past the last step.
 void updateAtStep(vtkAlgorithm* reader, const LoadOptions& options, LoadReport& report,
                   const std::string& file);
+
+// updateAtStep(), then the reader's output with every block's cells checked
+// (checkVtkCells); `trap` watches the reader; `what` names the file's kind in
+// messages ("Exodus II file").
+vtkSmartPointer<vtkDataObject> readAtStep(vtkAlgorithm* reader, const VtkMessageTrap& trap,
+                                          const LoadOptions& options, LoadReport& report,
+                                          const std::string& file, const std::string& what);
 
 }  // namespace sandstorm

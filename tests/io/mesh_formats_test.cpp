@@ -54,6 +54,36 @@ bool hasNote(const LoadReport& report, const std::string& part) {
   return false;
 }
 
+// An n x n sheet of triangles at height z, cells of dx by dy from (x0, y0),
+// carrying the asymmetric field (a PIV plane).
+vtkSmartPointer<vtkPolyData> triangleSheet(int n, double x0, double y0, double dx, double dy,
+                                           double z) {
+  auto sheet = vtkSmartPointer<vtkPolyData>::New();
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> triangles;
+  vtkNew<vtkFloatArray> v;
+  v->SetName("velocity");
+  v->SetNumberOfComponents(3);
+  for (int j = 0; j <= n; ++j)
+    for (int i = 0; i <= n; ++i) {
+      const glm::dvec3 p(x0 + dx * i, y0 + dy * j, z);
+      points->InsertNextPoint(p.x, p.y, p.z);
+      const glm::dvec3 a = asymmetric(p);
+      v->InsertNextTuple3(a.x, a.y, a.z);
+    }
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const vtkIdType a = i + (n + 1) * j, b = a + 1, c = a + n + 1, d = c + 1;
+      const vtkIdType t1[3] = {a, b, d}, t2[3] = {a, d, c};
+      triangles->InsertNextCell(3, t1);
+      triangles->InsertNextCell(3, t2);
+    }
+  sheet->SetPoints(points);
+  sheet->SetPolys(triangles);
+  sheet->GetPointData()->SetVectors(v);
+  return sheet;
+}
+
 TEST(MeshFormats, UnstructuredXmlInEveryDataModeWithItsNotchOutside) {
   const auto dir = test::scratch();
   const auto mesh = test::lMesh(4, asymmetric);
@@ -142,30 +172,7 @@ TEST(MeshFormats, CellDataBecomesPointDataWithinTheMeanOfItsCells) {
 // Polydata carrying vectors on a plane (a PIV sheet): a grid one point thick.
 TEST(MeshFormats, PolyDataOnAPlaneGivesAFlatGrid) {
   const auto dir = test::scratch();
-  vtkNew<vtkPolyData> sheet;
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> triangles;
-  vtkNew<vtkFloatArray> v;
-  v->SetName("velocity");
-  v->SetNumberOfComponents(3);
-  const int n = 6;
-  for (int j = 0; j <= n; ++j)
-    for (int i = 0; i <= n; ++i) {
-      const glm::dvec3 p(-1.0 + 0.5 * i, 2.0 + 0.25 * j, 0.75);
-      points->InsertNextPoint(p.x, p.y, p.z);
-      const glm::dvec3 a = asymmetric(p);
-      v->InsertNextTuple3(a.x, a.y, a.z);
-    }
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      const vtkIdType a = i + (n + 1) * j, b = a + 1, c = a + n + 1, d = c + 1;
-      const vtkIdType t1[3] = {a, b, d}, t2[3] = {a, d, c};
-      triangles->InsertNextCell(3, t1);
-      triangles->InsertNextCell(3, t2);
-    }
-  sheet->SetPoints(points);
-  sheet->SetPolys(triangles);
-  sheet->GetPointData()->SetVectors(v);
+  const auto sheet = triangleSheet(6, -1.0, 2.0, 0.5, 0.25, 0.75);
   const auto path = dir / "sheet.vtp";
   vtkNew<vtkXMLPolyDataWriter> w;
   w->SetInputData(sheet);
@@ -396,28 +403,7 @@ TEST(MeshFormats, LegacyUnstructuredGridsAndPolyDataInEveryVersion) {
     }
   // Polydata: a sheet of triangles at z = 0.75 (VTK's geometry filter, which
   // would make a surface of the mesh, leaks in 9.1).
-  vtkNew<vtkPolyData> sheet;
-  vtkNew<vtkPoints> points;
-  vtkNew<vtkCellArray> triangles;
-  vtkNew<vtkFloatArray> v;
-  v->SetName("velocity");
-  v->SetNumberOfComponents(3);
-  for (int j = 0; j <= 4; ++j)
-    for (int i = 0; i <= 4; ++i) {
-      const glm::dvec3 p(0.5 * i, 0.5 * j, 0.75);
-      points->InsertNextPoint(p.x, p.y, p.z);
-      const glm::dvec3 a = asymmetric(p);
-      v->InsertNextTuple3(a.x, a.y, a.z);
-    }
-  for (int j = 0; j < 4; ++j)
-    for (int i = 0; i < 4; ++i) {
-      const vtkIdType a = i + 5 * j, t1[3] = {a, a + 1, a + 6}, t2[3] = {a, a + 6, a + 5};
-      triangles->InsertNextCell(3, t1);
-      triangles->InsertNextCell(3, t2);
-    }
-  sheet->SetPoints(points);
-  sheet->SetPolys(triangles);
-  sheet->GetPointData()->SetVectors(v);
+  const auto sheet = triangleSheet(4, 0.0, 0.0, 0.5, 0.5, 0.75);
   const auto path = dir / "sheet.vtk";
   vtkNew<vtkPolyDataWriter> w;
   w->SetInputData(sheet);
