@@ -229,6 +229,11 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
                          data->GetNumberOfPoints(), " points"));
     used.push_back({b.name, data});
   }
+  if (used.empty())
+    throw Error(concat(file, ": no block holds '", choice.name,
+                       "' whole (its components at the points in some blocks and the cells in "
+                       "others?); arrays present: ",
+                       arrayInventory(blocks)));
   if (!without.empty()) {
     std::string names;
     for (const std::string& n : without)
