@@ -360,6 +360,21 @@ TEST(MeshFormats, ComponentsAreJoinedIntoAVector) {
 
   options.arrayName = "u,v";
   test::expectError([&] { loadField(path, options); }, {path.string(), "three components"});
+  {  // one component at the cells, two at the points: nothing to join
+    auto split = vtkSmartPointer<vtkUnstructuredGrid>::New();
+    split->DeepCopy(mesh);
+    vtkNew<vtkDoubleArray> w;
+    w->SetName("w");
+    w->SetNumberOfTuples(split->GetNumberOfCells());
+    w->Fill(1.0);
+    split->GetPointData()->RemoveArray("w");
+    split->GetCellData()->AddArray(w);
+    const auto splitPath = dir / "split.vtu";
+    writeVtu(split, splitPath, vtkXMLWriter::Appended);
+    options.arrayName = "u,v,w";
+    test::expectError([&] { loadField(splitPath, options); },
+                      {splitPath.string(), "no block holds 'velocity' whole"});
+  }
   options.arrayName = "u,v,q";
   test::expectError([&] { loadField(path, options); }, {path.string(), "'q'", "'u' (1 component)"});
 
