@@ -64,9 +64,9 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
       options_(options),
       headless_(headless),
       cluster_(cluster),
-      configDir_(config.path.parent_path()),
+      configDir_(config.folder),
       // The project's data/ sits beside config/.
-      projectRoot_(std::filesystem::absolute(configDir_).parent_path()),
+      projectRoot_(configDir_.parent_path()),
       lastFrame_(config.run.frames > 0 ? config.run.frames - 1 : -1),
       statsWarmup_(statsWarmup(config.run)),
       // In cluster mode only rank 0 makes the field (unless every rank reads it): it travels in
@@ -478,8 +478,16 @@ void AppRun::showMenu(float dt, const std::vector<std::string>& probe) {
   }
   if (tracking_) {
     const TrackingStatus t = tracking_->status();
-    stats.tracking = MenuTrackingStats{t.source, t.stats.received, t.stats.dropped,  t.waiting,
-                                       t.lost,   t.trackerFrame,   t.stats.lastError};
+    stats.tracking = MenuTrackingStats{.source = t.source,
+                                       .received = t.stats.received,
+                                       .dropped = t.stats.dropped,
+                                       .foreign = t.stats.foreign,
+                                       .waiting = t.waiting,
+                                       .lost = t.lost,
+                                       .trackerFrame = t.trackerFrame,
+                                       .lastError = t.stats.lastError,
+                                       .wandTracked = t.wandTracked,
+                                       .wandPresent = t.wandPresent};
   }
   stats.probe = probe;
   menu_->frame(main_.nextFrame(), dt, stats);
@@ -714,6 +722,7 @@ void AppRun::runOneProcess() {
     if (!options_.replay) obstaclePaths_.update(main_, *lastPacket_);
     ++frames_;
     reportProgress(now);
+    pacer_.wait();
   }
 }
 
@@ -773,6 +782,7 @@ void AppRun::runCluster() {
     if (!packet) break;
     ++frames_;
     reportProgress(now);
+    if (cluster_->root()) pacer_.wait();  // the others wait for its packets
   }
   barrier_.arrive_and_drop();  // walls finish what was published without the main thread
 }
@@ -811,7 +821,7 @@ int AppRun::finish() {
   if (tracking_) {
     const TrackingStatus t = tracking_->status();
     log::info("  tracking (", t.source, "): ", t.stats.received, " frames received, ",
-              t.stats.dropped, " dropped",
+              t.stats.dropped, " dropped, ", t.stats.foreign, " from other hosts dropped",
               t.waiting ? ", none measured" : (t.lost ? ", lost at the end" : ""),
               t.stats.lastError.empty() ? std::string() : "; last refused: " + t.stats.lastError);
   }
@@ -819,7 +829,11 @@ int AppRun::finish() {
   for (const auto& w : walls_)
     measured.push_back(summarize(w->name(), w->renderer(), w->samples(), w->measuredFrames(),
                                  w->stats().liveParticles));
-  const RunStats stats = summarize(statsWarmup_, std::move(measured));
+  RunStats stats = summarize(statsWarmup_, std::move(measured));
+  if (tracking_) {
+    const TrackerStats t = tracking_->status().stats;
+    stats.tracking = TrackingRunStats{t.received, t.dropped, t.foreign};
+  }
   logRunStats(stats);
   if (options_.stats) {
     writeRunStats(stats, *options_.stats);

@@ -34,6 +34,7 @@
 #include "core/sim/main_context.h"
 #include "core/sim/session_log.h"
 #include "core/sim/state_mirror.h"
+#include "core/util/frame_pacer.h"
 
 namespace sandstorm {
 
@@ -130,6 +131,7 @@ class AppRun {
   int frames_ = 0;
   bool failed_ = false;
   Clock::time_point start_, lastReport_, lastTick_;
+  FramePacer pacer_{config_.run.maxFps};
 };
 
 }  // namespace sandstorm

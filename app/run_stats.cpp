@@ -96,7 +96,12 @@ void writeRunStats(const RunStats& r, const std::filesystem::path& path) {
       << ", \"post_ms\": " << w.postMs << ", \"swap_wait_ms\": " << w.barrierWaitMs
       << ", \"packet_wait_ms\": " << w.packetWaitMs << ", \"live_particles\": " << w.live << "}";
   }
-  j << "\n  ]\n}\n";
+  j << "\n  ]";
+  if (r.tracking)
+    j << ",\n  \"tracking\": {\"received\": " << r.tracking->received
+      << ", \"dropped\": " << r.tracking->dropped << ", \"foreign\": " << r.tracking->foreign
+      << "}";
+  j << "\n}\n";
   const std::string text = j.str();
   writeFile(path, text, "--stats");
 }

@@ -7,7 +7,9 @@
 // the end of every run; --stats FILE writes it as JSON.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,11 +29,18 @@ struct WallRunStats {
   std::size_t live = 0;
 };
 
+// The tracker's datagrams over the run, where one was listened to.
+struct TrackingRunStats {
+  std::uint64_t received = 0, dropped = 0;
+  std::uint64_t foreign = 0;  // from hosts not in tracking.sender
+};
+
 struct RunStats {
   std::size_t warmup = 0;
   std::size_t frames = 0;  // measured: the first wall's frames after the warm-up
   double frameMs = 0.0, frameP95Ms = 0.0, fps = 0.0;
   std::vector<WallRunStats> walls;
+  std::optional<TrackingRunStats> tracking;
 };
 
 // `samples`: every measured frame, or a uniform sample of them in a long run

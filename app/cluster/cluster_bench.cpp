@@ -17,7 +17,7 @@ int runClusterBench(MpiCluster& cluster, const AppConfig& config, int frames) {
   FieldSource field;
   std::string error;
   try {
-    if (cluster.makesField()) field = makeField(config.field, config.path.parent_path());
+    if (cluster.makesField()) field = makeField(config.field, config.folder);
   } catch (const std::exception& e) {
     error = e.what();
   }

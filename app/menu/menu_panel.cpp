@@ -172,6 +172,11 @@ void MenuPanel::trackingSection(const MenuTrackingStats& t) {
               static_cast<unsigned long long>(t.dropped));
   if (!t.lastError.empty() && ImGui::IsItemHovered())
     ImGui::SetTooltip("last refused: %s", t.lastError.c_str());
+  if (t.foreign > 0)
+    ImGui::TextColored(ImVec4(1.0f, 0.6f, 0.2f, 1.0f), "from other hosts, dropped: %llu",
+                       static_cast<unsigned long long>(t.foreign));
+  if (!t.waiting)
+    ImGui::Text("wand: %s", !t.wandPresent ? "not heard" : t.wandTracked ? "tracked" : "untracked");
 }
 
 void MenuPanel::emitterSection(const ParticleState& state) {

@@ -28,10 +28,12 @@ struct MenuWallStats {
 struct MenuTrackingStats {
   std::string source;
   std::uint64_t received = 0, dropped = 0;
-  bool waiting = true;  // nothing measured yet
-  bool lost = false;    // no fresh measurement: the last poses are held
+  std::uint64_t foreign = 0;  // from hosts not in tracking.sender
+  bool waiting = true;        // nothing measured yet
+  bool lost = false;          // no fresh measurement: the last poses are held
   std::uint32_t trackerFrame = 0;
   std::string lastError;
+  bool wandTracked = false, wandPresent = false;
 };
 
 struct MenuStats {

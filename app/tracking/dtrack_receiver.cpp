@@ -6,12 +6,14 @@
 #include <sys/socket.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstring>
 #include <vector>
 
 #include "core/tracking/dtrack_parser.h"
+#include "core/tracking/ipv4_address.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
 
@@ -31,9 +33,33 @@ namespace {
 
 constexpr int kLoggedDrops = 3;  // reasons logged in full; later drops are counted
 
+// An address the configuration already checked (core/config); checked again
+// here for a receiver made in code.
+std::uint32_t address(const std::string& text, const char* setting) {
+  const std::optional<std::uint32_t> a = parseIpv4(text);
+  if (!a) throw Error(concat(setting, ": '", text, "' is not an IPv4 address"));
+  return *a;
+}
+
+std::string listed(const std::vector<std::string>& addresses) {
+  std::string out;
+  for (const std::string& a : addresses)
+    out += (out.empty() ? "" : ", ") + a;
+  return out;
+}
+
+std::string dotted(std::uint32_t a) {
+  return concat(a >> 24, ".", (a >> 16) & 255u, ".", (a >> 8) & 255u, ".", a & 255u);
+}
+
 }  // namespace
 
 DTrackReceiver::DTrackReceiver(Options options) : options_(std::move(options)) {
+  for (const std::string& s : options_.senders)
+    senders_.push_back(address(s, "tracking.sender"));
+  const std::uint32_t local = options_.interfaceAddress.empty()
+                                  ? INADDR_ANY
+                                  : address(options_.interfaceAddress, "tracking.interface");
   const std::string where = concat("tracking.port ", options_.port);
   const int fd = ::socket(AF_INET, SOCK_DGRAM | SOCK_CLOEXEC, 0);
   if (fd < 0) fail(fd, where + ": cannot open a UDP socket");
@@ -54,16 +80,21 @@ DTrackReceiver::DTrackReceiver(Options options) : options_(std::move(options)) {
   sockaddr_in address{};
   address.sin_family = AF_INET;
   address.sin_port = htons(std::uint16_t(options_.port));
-  address.sin_addr.s_addr = htonl(INADDR_ANY);
+  // A multicast group is received on a socket bound to any address; the
+  // interface then picks where the group is joined.
+  address.sin_addr.s_addr = htonl(options_.multicast.empty() ? local : INADDR_ANY);
   if (::bind(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0)
     fail(fd, concat("tracking: cannot listen on UDP port ", options_.port,
+                    options_.interfaceAddress.empty() ? "" : " of " + options_.interfaceAddress,
                     errno == EADDRINUSE ? " (another program uses it; is a second Sandstorm "
                                           "running? set [tracking] port)"
-                                        : ""));
+                    : errno == EADDRNOTAVAIL
+                        ? " (no interface has that address; set [tracking] interface)"
+                        : ""));
   if (!options_.multicast.empty()) {
     ip_mreq request{};
     request.imr_multiaddr = group;
-    request.imr_interface.s_addr = htonl(INADDR_ANY);
+    request.imr_interface.s_addr = htonl(local);
     if (::setsockopt(fd, IPPROTO_IP, IP_ADD_MEMBERSHIP, &request, sizeof request) != 0)
       fail(fd, concat("tracking: cannot join multicast group ", options_.multicast, " on port ",
                       options_.port));
@@ -74,7 +105,14 @@ DTrackReceiver::DTrackReceiver(Options options) : options_(std::move(options)) {
   socket_ = fd;
   thread_ = std::thread([this] { run(); });
   log::info("tracking: listening for DTrack on UDP port ", port_,
-            options_.multicast.empty() ? "" : " (multicast " + options_.multicast + ")");
+            options_.multicast.empty() ? "" : " (multicast " + options_.multicast + ")",
+            options_.interfaceAddress.empty() ? "" : " of " + options_.interfaceAddress,
+            senders_.empty() ? "" : ", from " + listed(options_.senders) + " only");
+  if (senders_.empty())
+    log::warn(
+        "tracking: tracking.sender is not set, so datagrams from any host on the "
+        "network move the head and the wand and click the menu; set tracking.sender to "
+        "the DTrack controller's address");
 }
 
 DTrackReceiver::~DTrackReceiver() {
@@ -90,9 +128,18 @@ void DTrackReceiver::run() {
   while (!stop_) {
     const int ready = ::poll(&waiting, 1, 50);  // wake up to notice stop_
     if (ready <= 0) continue;
-    const ssize_t n = ::recv(socket_, buffer.data(), buffer.size(), MSG_TRUNC | MSG_DONTWAIT);
+    sockaddr_in from{};
+    socklen_t fromLength = sizeof from;
+    const ssize_t n = ::recvfrom(socket_, buffer.data(), buffer.size(), MSG_TRUNC | MSG_DONTWAIT,
+                                 reinterpret_cast<sockaddr*>(&from), &fromLength);
     if (n < 0) continue;
     const double arrival = steadySeconds();
+    const std::uint32_t sender = ntohl(from.sin_addr.s_addr);
+    if (!senders_.empty() &&
+        std::find(senders_.begin(), senders_.end(), sender) == senders_.end()) {
+      refuse(sender);
+      continue;
+    }
     if (std::size_t(n) > DTrackLimits::kMaxDatagram) {
       drop(concat("DTrack datagram: ", n, " bytes exceed the limit of ",
                   DTrackLimits::kMaxDatagram));
@@ -127,6 +174,18 @@ void DTrackReceiver::drop(const std::string& why) {
               dropped == kLoggedDrops ? " (further drops are counted in the stats)" : "");
   else
     log::debug("tracking: dropped a datagram: ", why);
+}
+
+void DTrackReceiver::refuse(std::uint32_t sender) {
+  std::uint64_t foreign;
+  {
+    std::lock_guard lock(mutex_);
+    foreign = ++stats_.foreign;
+  }
+  if (foreign == 1)
+    log::warn("tracking: dropped a datagram from ", dotted(sender),
+              ", which is not in tracking.sender (", listed(options_.senders),
+              "); further ones are counted in the stats");
 }
 
 std::optional<TrackerMeasurement> DTrackReceiver::newest() const {

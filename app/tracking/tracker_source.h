@@ -23,6 +23,7 @@ namespace sandstorm {
 struct TrackerStats {
   std::uint64_t received = 0;  // complete measurements taken
   std::uint64_t dropped = 0;   // datagrams refused (malformed, oversized)
+  std::uint64_t foreign = 0;   // datagrams from hosts not in tracking.sender, dropped
   std::string lastError;       // why the last one was refused
 };
 

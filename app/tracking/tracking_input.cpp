@@ -30,7 +30,10 @@ TrackingInput::TrackingInput(const TrackingSpec& tracking, const NavigationSpec&
                        "(its 'track' lines)"));
   if (tracking.source == TrackingSource::DTrack && !source_)
     source_ = std::make_unique<DTrackReceiver>(
-        DTrackReceiver::Options{.port = tracking.port, .multicast = tracking.multicast});
+        DTrackReceiver::Options{.port = tracking.port,
+                                .multicast = tracking.multicast,
+                                .senders = tracking.senders,
+                                .interfaceAddress = tracking.interfaceAddress});
 }
 
 TrackingSample TrackingInput::sample(std::uint32_t frame) {
@@ -57,6 +60,8 @@ TrackingStatus TrackingInput::status() const {
   s.waiting = !last_.active;
   s.lost = last_.stale;
   s.trackerFrame = last_.trackerFrame;
+  s.wandPresent = last_.wand.present;
+  s.wandTracked = last_.wand.tracked;
   return s;
 }
 

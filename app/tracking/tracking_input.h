@@ -27,6 +27,7 @@ struct TrackingStatus {
   bool waiting = true;  // nothing measured yet
   bool lost = false;    // stale: the last poses are held
   std::uint32_t trackerFrame = 0;
+  bool wandPresent = false, wandTracked = false;  // the Flystick heard; its pose measured
 };
 
 class TrackingInput {

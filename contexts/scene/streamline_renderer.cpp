@@ -2,6 +2,8 @@
 
 #include <epoxy/gl.h>
 
+#include "core/flow/cash_karp.h"
+
 namespace sandstorm {
 namespace {
 
@@ -21,8 +23,8 @@ bool StreamlineRenderer::Key::operator==(const Key& o) const {
          placement.offset == o.placement.offset && placement.scale == o.placement.scale &&
          placement.rotation == o.placement.rotation && a.shape == b.shape && a.from == b.from &&
          a.to == b.to && a.across == b.across && a.seeds == b.seeds && a.step == b.step &&
-         a.length == b.length && integrator == o.integrator && strength == o.strength &&
-         obstacles == o.obstacles;
+         a.length == b.length && a.integrator == b.integrator && a.tolerance == b.tolerance &&
+         strength == o.strength && obstacles == o.obstacles;
 }
 
 StreamlineRenderer::StreamlineRenderer(SceneField& field)
@@ -37,9 +39,9 @@ void StreamlineRenderer::update(const ParticleState& state,
   enabled_ = state.streamlines.enabled && field && field->field;
   width_ = state.streamlines.width;
   if (!enabled_) return;
-  const Key key{field->field.get(),      field->next.get(), field->next ? blend : 0.0f,
-                field->placement,        state.streamlines, state.sim.integrator,
-                state.sim.fieldStrength, field_.obstacles()};
+  const Key key{field->field.get(), field->next.get(), field->next ? blend : 0.0f,
+                field->placement,   state.streamlines, state.sim.fieldStrength,
+                field_.obstacles()};
   if (traced_ && *traced_ == key) return;
   trace(state);
   traced_ = key;
@@ -68,6 +70,10 @@ void StreamlineRenderer::trace(const ParticleState& state) {
   glProgramUniform1ui(trace_.id(), 0, GLuint(lineCount_));
   glProgramUniform1i(trace_.id(), 1, steps_);
   glProgramUniform1f(trace_.id(), 2, state.streamlines.step);
+  glProgramUniform1i(trace_.id(), 3, int(state.streamlines.integrator));
+  glProgramUniform1f(trace_.id(), 4, state.streamlines.tolerance);
+  glProgramUniform1f(trace_.id(), 5, state.streamlines.length);
+  glProgramUniform1fv(trace_.id(), 6, GLsizei(kCashKarp.size()), kCashKarp.data());
   glDispatchCompute(GLuint((lineCount_ + 63) / 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }

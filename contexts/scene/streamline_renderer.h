@@ -38,7 +38,6 @@ class StreamlineRenderer {
     float blend = 0.0f;
     FieldPlacement placement;
     StreamlineSettings rake;
-    Integrator integrator = Integrator::RK2;
     float strength = 1.0f;
     std::vector<Obstacle> obstacles;
     bool operator==(const Key& o) const;

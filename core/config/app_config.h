@@ -93,8 +93,12 @@ struct TrackingSpec {
   TrackingSource source = TrackingSource::None;
   int port = 5000;        // UDP port DTrack sends to
   std::string multicast;  // a multicast group to join ("239.0.0.1"); empty: unicast
-  int headBody = 0;       // the glasses: standard body id (6d)
-  int wandFlystick = 0;   // the wand: Flystick id (6df2 / 6df)
+  // The DTrack controller's addresses: datagrams from any other host are
+  // dropped and counted. Empty: any host (a warning at start).
+  std::vector<std::string> senders;
+  std::string interfaceAddress;  // the local address to listen on; empty: every interface
+  int headBody = 0;              // the glasses: standard body id (6d)
+  int wandFlystick = 0;          // the wand: Flystick id (6df2 / 6df)
   // Tracker room -> Sandstorm room: room = offset + rotation * (millimetres / 1000).
   glm::vec3 offset{0.0f};
   glm::mat3 rotation{1.0f};
@@ -145,6 +149,7 @@ struct RunSpec {
   std::size_t capacityLimit = 1u << 26;  // raising sim.maximum grows the buffers up to this
   float fixedDt = 0.0f;                  // > 0: fixed steps; 0: the main context's clock
   int frames = 0;                        // 0: until a window closes
+  double maxFps = 0.0;                   // > 0: frames a second at most (FramePacer)
   std::string backend =
       "compute";  // or "tf-gs" (the thesis's); compute is faster (docs/PERFORMANCE.md)
   // One simulation per GPU: the walls whose contexts can share objects (all
@@ -189,7 +194,8 @@ struct MenuSpec {
 };
 
 struct AppConfig {
-  std::filesystem::path path;
+  std::filesystem::path path;    // as the user named it (messages)
+  std::filesystem::path folder;  // its folder, absolute, links followed: relative paths start here
   ParticleState particles;
   FieldSpec field;
   SceneSpec scene;

@@ -12,6 +12,7 @@
 #include "core/config/app_config.h"
 #include "core/config/pvx_import.h"
 #include "core/sim/attribute_table.h"
+#include "core/tracking/ipv4_address.h"
 #include "core/util/error.h"
 #include "core/util/toml_text.h"
 
@@ -175,9 +176,10 @@ void checkColorRange(const Reader& r, const toml::value& t, const RenderSettings
 }
 
 void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
-  r.checkKeys(t, "run",
-              {"seed", "capacity", "capacity_limit", "fixed_dt", "frames", "backend",
-               "shared_simulation", "near", "far", "stats_warmup", "offscreen_contexts", "gpus"});
+  r.checkKeys(
+      t, "run",
+      {"seed", "capacity", "capacity_limit", "fixed_dt", "frames", "backend", "shared_simulation",
+       "near", "far", "stats_warmup", "offscreen_contexts", "gpus", "max_fps"});
   if (const toml::value* seed = r.find(t, "seed")) {
     if (!seed->is_integer() || seed->as_integer() < 0)
       r.fail(*seed, "run.seed", "expected a non-negative integer");
@@ -192,6 +194,10 @@ void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
   if (run.fixedDt < 0.0f || run.fixedDt > 1.0f)
     r.fail(t, "run.fixed_dt", "expected 0 (real clock) to 1 s");
   run.frames = r.integer(t, "frames", "run", run.frames, 0, 100000000);
+  run.maxFps = r.real(t, "max_fps", "run", float(run.maxFps));
+  if (!(run.maxFps >= 0.0 && run.maxFps <= 1000.0))
+    r.fail(*r.find(t, "max_fps"), "run.max_fps",
+           concat("expected 0 (no limit) to 1000 frames a second, got ", run.maxFps));
   run.backend = r.choice<std::string>(t, "backend", "run", run.backend,
                                       {{"tf-gs", "tf-gs"}, {"compute", "compute"}});
   run.sharedSimulation = r.boolean(t, "shared_simulation", "run", run.sharedSimulation);
@@ -245,11 +251,23 @@ glm::mat3 rotationFromDegrees(const glm::vec3& degrees) {
   return z * y * x;
 }
 
+// The folder a config file's relative paths start from: the folder of the
+// file itself, symbolic links followed (a link to a shared config finds the
+// data beside it), as an absolute path. A bare file name's folder is the
+// current one: an empty parent path must not reach std::filesystem::absolute.
+std::filesystem::path folderOf(const std::string& file) {
+  std::error_code ec;
+  std::filesystem::path real = std::filesystem::weakly_canonical(file, ec);
+  if (ec || real.empty()) real = std::filesystem::absolute(file, ec);
+  if (ec || real.empty()) return std::filesystem::path(file).parent_path();
+  return real.parent_path();
+}
+
 // A file named in a config is relative to that config file's folder (so an
 // included scene finds its data wherever it is included from).
 std::string relativeTo(const Reader& r, const std::string& path) {
   if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
-  return (std::filesystem::path(r.file()).parent_path() / path).lexically_normal().string();
+  return (folderOf(r.file()) / path).lexically_normal().string();
 }
 
 void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
@@ -462,10 +480,11 @@ glm::vec3 axis(const Reader& r, const toml::value& t, const std::string& key, gl
 }
 
 void readTracking(const Reader& r, const toml::value& t, TrackingSpec& k) {
-  r.checkKeys(t, "tracking",
-              {"source", "port", "multicast", "head_body", "wand_flystick", "offset",
-               "rotation_deg", "stale_ms", "eye_offset", "head_right", "head_up", "wand_forward",
-               "wand_up", "trigger_button", "grab_button", "grab_radius", "ray_length"});
+  r.checkKeys(
+      t, "tracking",
+      {"source", "port", "multicast", "sender", "interface", "head_body", "wand_flystick", "offset",
+       "rotation_deg", "stale_ms", "eye_offset", "head_right", "head_up", "wand_forward", "wand_up",
+       "trigger_button", "grab_button", "grab_radius", "ray_length"});
   k.line = int(t.location().line());
   k.source = r.choice(t, "source", "tracking", k.source,
                       {{"none", TrackingSource::None},
@@ -474,14 +493,40 @@ void readTracking(const Reader& r, const toml::value& t, TrackingSpec& k) {
   k.port = r.integer(t, "port", "tracking", k.port, 1, 65535);
   k.multicast = r.string(t, "multicast", "tracking", k.multicast);
   if (!k.multicast.empty()) {
-    int a = -1, b = -1, c = -1, d = -1;
-    char tail = 0;
-    const bool dotted =
-        std::sscanf(k.multicast.c_str(), "%d.%d.%d.%d%c", &a, &b, &c, &d, &tail) == 4;
-    if (!dotted || a < 224 || a > 239 || b < 0 || b > 255 || c < 0 || c > 255 || d < 0 || d > 255)
+    const std::optional<std::uint32_t> group = parseIpv4(k.multicast);
+    if (!group || !isMulticast(*group))
       r.fail(*r.find(t, "multicast"), "tracking.multicast",
              "expected an IPv4 multicast group (224.0.0.0 .. 239.255.255.255), got '" +
                  k.multicast + "'");
+  }
+  // sender = "10.0.0.5" or ["10.0.0.5", "10.0.0.6"]: the DTrack controllers.
+  if (const toml::value* sender = r.find(t, "sender")) {
+    std::vector<const toml::value*> items;
+    if (sender->is_array())
+      for (const toml::value& v : sender->as_array())
+        items.push_back(&v);
+    else
+      items.push_back(sender);
+    if (items.empty())
+      r.fail(*sender, "tracking.sender", "expected an address or a list of addresses, got []");
+    k.senders.clear();
+    for (const toml::value* v : items) {
+      const std::optional<std::uint32_t> a =
+          v->is_string() ? parseIpv4(v->as_string().str) : std::nullopt;
+      if (!a || *a == 0 || isMulticast(*a))
+        r.fail(*v, "tracking.sender",
+               "expected the DTrack controller's IPv4 address (\"192.168.0.20\"), got " +
+                   toml::format(*v));
+      k.senders.push_back(v->as_string().str);
+    }
+  }
+  k.interfaceAddress = r.string(t, "interface", "tracking", k.interfaceAddress);
+  if (!k.interfaceAddress.empty()) {
+    const std::optional<std::uint32_t> a = parseIpv4(k.interfaceAddress);
+    if (!a || isMulticast(*a))
+      r.fail(*r.find(t, "interface"), "tracking.interface",
+             "expected a local IPv4 address to listen on (\"192.168.0.10\", \"127.0.0.1\"), got '" +
+                 k.interfaceAddress + "'");
   }
   k.headBody = r.integer(t, "head_body", "tracking", k.headBody, 0, 9999);
   k.wandFlystick = r.integer(t, "wand_flystick", "tracking", k.wandFlystick, 0, 9999);
@@ -688,7 +733,7 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
     if (!include->is_string()) r.fail(*include, "include", "expected a file name");
     if (depth > 4) r.fail(*include, "include", "includes nest too deeply");
     const std::filesystem::path path =
-        std::filesystem::path(file).parent_path() / include->as_string().str;
+        (folderOf(file) / include->as_string().str).lexically_normal();
     const toml::value inner =
         parseToml(readFile(path, r.at(*include) + ": include: "), path.string());
     read(inner, path.string(), monitors, c, depth + 1);
@@ -827,6 +872,7 @@ AppConfig parseConfig(const std::string& text, const std::filesystem::path& name
         concat(name.string(), ": no [[wall]] given; expected at least one wall, window or camera"));
   placeWalls(c);
   c.path = name;
+  c.folder = folderOf(name.string());
   return c;
 }
 

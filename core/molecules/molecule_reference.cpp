@@ -1,6 +1,8 @@
 #include "core/molecules/molecule_reference.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "core/molecules/molecule_grid.h"
 #include "core/sim/capacity.h"
@@ -10,6 +12,13 @@ namespace sandstorm {
 
 MoleculeReference::MoleculeReference(std::size_t capacity, std::size_t capacityLimit)
     : capacity_(capacity), capacityLimit_(std::max(capacity, capacityLimit)) {}
+
+void MoleculeReference::adopt(std::span<const Particle> records) {
+  if (records.size() != records_.size())
+    throw std::invalid_argument("adopt: " + std::to_string(records.size()) + " records for " +
+                                std::to_string(records_.size()));
+  std::copy(records.begin(), records.end(), records_.begin());
+}
 
 void MoleculeReference::clear() {
   records_.clear();

@@ -44,6 +44,11 @@ class MoleculeReference {
   }
   std::size_t capacity() const { return capacity_; }
 
+  // Continues from `records` (the GPU's, read back), as many as it holds:
+  // a comparison then measures one update's difference, not its growth
+  // through the springs. Throws std::invalid_argument on a different count.
+  void adopt(std::span<const Particle> records);
+
  private:
   std::size_t capacity_;
   std::size_t capacityLimit_;

@@ -339,8 +339,15 @@ std::vector<AttributeInfo> makeEntries() {
                     "A plane rake's second edge ends here", STREAMLINES(across)));
   v.push_back(entry("streamlines.seeds", T::Int, 1, 64, "", "Seeds along each edge of the rake",
                     STREAMLINES(seeds)));
-  v.push_back(entry("streamlines.step", T::Float, 1e-7f, 10, "m", "Integration step (arc length)",
-                    STREAMLINES(step)));
+  v.push_back(entry("streamlines.step", T::Float, 1e-7f, 10, "m",
+                    "Integration step (arc length); rk45's longest", STREAMLINES(step)));
+  v.push_back(enumEntry("streamlines.integrator", {"euler", "rk2", "rk4", "rk45"},
+                        "Streamline integration: fixed steps, or adaptive Runge-Kutta 4-5 "
+                        "within streamlines.tolerance (ParaView's default)",
+                        STREAMLINES(integrator)));
+  v.push_back(entry("streamlines.tolerance", T::Float, 1e-9f, 1, "m",
+                    "rk45: the largest error a step may make (shorter steps where the flow bends)",
+                    STREAMLINES(tolerance)));
   v.push_back(entry("streamlines.length", T::Float, 0, 1e5f, "m",
                     "Longest streamline each way from its seed (at most 4096 steps)",
                     STREAMLINES(length)));

@@ -1,6 +1,8 @@
 #include "core/sim/reference_simulator.h"
 
 #include <algorithm>
+#include <stdexcept>
+#include <string>
 
 #include "core/sim/capacity.h"
 #include "core/sim/emission.h"
@@ -48,6 +50,13 @@ void ReferenceSimulator::step(const SimStep& step, const ParticleState& state) {
   std::swap(particles_, next_);
   count2_ = count1_;
   count1_ = particles_.size();
+}
+
+void ReferenceSimulator::adopt(std::span<const Particle> particles) {
+  if (particles.size() != particles_.size())
+    throw std::invalid_argument("adopt: " + std::to_string(particles.size()) + " particles for " +
+                                std::to_string(particles_.size()));
+  std::copy(particles.begin(), particles.end(), particles_.begin());
 }
 
 void ReferenceSimulator::clear() {

@@ -36,6 +36,12 @@ class ReferenceSimulator {
   std::span<const Particle> particles() const { return particles_; }
   std::size_t capacity() const { return capacity_; }
 
+  // Continues from `particles` (another simulator's, read back): as many as
+  // it holds, in its order. So a GPU whose sqrt and division are not IEEE's
+  // is compared one update at a time, not through the growth of differences
+  // over many. Throws std::invalid_argument on a different count.
+  void adopt(std::span<const Particle> particles);
+
  private:
   std::size_t capacity_;
   std::size_t capacityLimit_;

@@ -22,10 +22,10 @@ struct TrackedPose {
 
 struct WandSample {
   bool present = false;       // the Flystick is known (its buttons are valid)
-  bool tracked = false;       // its pose is valid (fresh, or held within tracking.stale_ms)
+  bool tracked = false;       // its pose is valid (measured, or held within tracking.stale_ms)
   TrackedPose pose;           // the wand's tip; forward() is where it points
   std::uint32_t buttons = 0;  // bit i: button i pressed
-  glm::vec2 joystick{0.0f};   // x right, y up, -1..1
+  glm::vec2 joystick{0.0f};   // x right, y up, -1..1 (live while present, tracked or not)
 
   bool pressed(int button) const {
     return button >= 0 && button < 32 && (buttons >> unsigned(button)) & 1u;

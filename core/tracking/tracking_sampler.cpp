@@ -22,9 +22,11 @@ TrackingSample TrackingSampler::sample(const TrackerMeasurement* newest, double 
       held_.wand.present = true;
       held_.wand.buttons = wand->buttons;
       held_.wand.joystick = wand->joystick;
+      // DTrack's own word that the wand is untracked counts at once: only a
+      // measurement that is missing (no datagram) holds the last pose.
+      haveWand_ = wand->tracked;
       if (wand->tracked) {
         held_.wand.pose = wand->pose;
-        haveWand_ = true;
         wandSeconds_ = newest->arrivalSeconds;
       }
     }
@@ -39,7 +41,7 @@ TrackingSample TrackingSampler::sample(const TrackerMeasurement* newest, double 
     s.wand.present = false;  // the radio went quiet too: no button stays held
     s.wand.buttons = 0;
   }
-  if (!s.wand.tracked) s.wand.joystick = glm::vec2(0.0f);  // no flying on a lost wand
+  if (!s.wand.present) s.wand.joystick = glm::vec2(0.0f);  // a quiet radio: no flying
   if (s.stale && !lost_)
     log::warn("tracking lost: no measurement of head body ", spec_.headBody, " for more than ",
               spec_.staleMs, " ms; holding the last pose");

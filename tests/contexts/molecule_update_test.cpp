@@ -3,13 +3,15 @@
 // changes; with obstacles, the push tool, repulsion, a terrain, every motion
 // model and integrator, a field expression and both paths of the look-back
 // scan. Counts are equal every frame; positions and velocities bit for bit
-// where the GPU rounds sqrt and division correctly (llvmpipe), within 1e-4
-// elsewhere (an H100's first differences: 3e-8 .. 1.4e-7 m). What would break
+// where the GPU rounds sqrt and division correctly (llvmpipe); elsewhere in
+// lockstep, each update within the bound of tests/contexts/gpu_arithmetic.h
+// (the springs amplify any difference frame after frame). What would break
 // it: any operation of shaders/molecule_*.glsl that differs from
 // core/molecules/molecule_physics.cpp, or a compaction that reorders molecules.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <functional>
 
 #include <epoxy/gl.h>
@@ -21,6 +23,7 @@
 #include "core/molecules/molecule_reference.h"
 #include "core/sim/main_context.h"
 #include "tests/contexts/gl_test.h"
+#include "tests/contexts/gpu_arithmetic.h"
 
 namespace sandstorm {
 namespace {
@@ -64,15 +67,11 @@ struct MoleculeRun {
   std::function<void(MainContext&, int frame)> changes = [](MainContext&, int) {};
 };
 
-// Whether this GPU's sqrt and division are IEEE's (llvmpipe's are), so the
-// GPU can equal the CPU bit for bit.
-bool exactArithmetic() {
-  const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-  return renderer && std::strstr(renderer, "llvmpipe");
-}
+using test::exactArithmetic;
 
 // Frames whose records all matched (counts exactly; bit for bit with exact
-// arithmetic, else within 1e-4); stops at the first that differs.
+// arithmetic, else one update at a time within its bound); stops at the
+// first that differs.
 int matchingFrames(const MoleculeRun& run, std::size_t* most = nullptr) {
   MoleculeUpdate gpu(1024, 1 << 16, GpuTuning{.scanSpin = run.spin});
   MoleculeReference cpu(1024, 1 << 16);
@@ -91,6 +90,7 @@ int matchingFrames(const MoleculeRun& run, std::size_t* most = nullptr) {
   MainContext main(run.state, FieldUpdate{.field = vortex()}, options);
   ParticleState state = main.initialState();
   int matching = 0;
+  float worstUlps = 0.0f;
   for (int f = 0; f < run.frames; ++f) {
     run.changes(main, f);
     const FramePacket packet = main.next();
@@ -110,17 +110,29 @@ int matchingFrames(const MoleculeRun& run, std::size_t* most = nullptr) {
                     << " on the CPU";
       break;
     }
-    float worst = 0.0f;
-    for (std::size_t i = 0; i < g.size(); ++i)
+    float worst = 0.0f, scale = 0.0f;
+    for (std::size_t i = 0; i < g.size(); ++i) {
       worst = std::max({worst, glm::length(g[i].positionLife - c[i].positionLife),
                         glm::length(g[i].velocityKind - c[i].velocityKind)});
-    if (worst > (exactArithmetic() ? 0.0f : 1e-4f)) {
-      ADD_FAILURE() << "frame " << f << ": max |gpu - cpu| = " << worst;
+      const glm::vec4 p = glm::abs(c[i].positionLife), v = glm::abs(c[i].velocityKind);
+      scale = std::max({scale, p.x, p.y, p.z, p.w, v.x, v.y, v.z});
+    }
+    const bool exact = exactArithmetic();
+    if (worst > (exact ? 0.0f : test::oneUpdateBound(scale))) {
+      ADD_FAILURE() << "frame " << f << ": max |gpu - cpu| = " << worst << " ("
+                    << worst / test::ulpAt(scale) << " ulp of the largest value " << scale << ")";
       break;
+    }
+    if (!exact) {
+      worstUlps = std::max(worstUlps, worst / test::ulpAt(scale));
+      cpu.adopt(g);
     }
     if (most) *most = std::max(*most, cpu.count());
     ++matching;
   }
+  if (!exactArithmetic())
+    std::printf("lockstep: one update differs by at most %.1f ulp (bound %.0f)\n", worstUlps,
+                test::kOneUpdateUlps);
   return matching;
 }
 

@@ -17,6 +17,7 @@
 #include "core/sim/reference_simulator.h"
 #include "core/util/error.h"
 #include "tests/contexts/gl_test.h"
+#include "tests/contexts/gpu_arithmetic.h"
 
 namespace sandstorm {
 namespace {
@@ -66,13 +67,15 @@ Scenario tornado(MotionModel motion, Integrator integrator, BoundaryMode boundar
 
 struct Agreement {
   std::size_t frames = 0;
-  float maxError = 0.0f;
+  float maxError = 0.0f;   // over the run, or one update's in lockstep
+  float worstUlps = 0.0f;  // one update's, in ulps of the frame's largest coordinate
   std::size_t peak = 0;
   std::vector<Particle> last;  // the GPU's particles after the last frame
   ParticleState state;         // and the state then
 };
 
 // `script`: requests made before each frame's packet (beyond the rate change at 50).
+// On a GPU without IEEE sqrt and division, in lockstep (tests/contexts/gpu_arithmetic.h).
 Agreement compare(const std::string& backend, Scenario s, int frames, std::size_t capacity,
                   const GpuTuning& tuning = {},
                   const std::function<void(MainContext&, int)>& script = {}) {
@@ -105,15 +108,28 @@ Agreement compare(const std::string& backend, Scenario s, int frames, std::size_
     const auto c = cpu.particles();
     EXPECT_EQ(g.size(), c.size()) << "alive count at frame " << f;
     if (g.size() != c.size()) return a;
+    float worst = 0.0f, scale = 0.0f;
     for (std::size_t i = 0; i < g.size(); ++i) {
-      a.maxError = std::max(a.maxError, glm::length(g[i].position() - c[i].position()));
-      a.maxError = std::max(a.maxError, std::abs(g[i].life() - c[i].life()));
+      worst = std::max(worst, glm::length(g[i].position() - c[i].position()));
+      worst = std::max(worst, std::abs(g[i].life() - c[i].life()));
+      const glm::vec3 p = glm::abs(c[i].position());
+      scale = std::max({scale, p.x, p.y, p.z, std::abs(c[i].life())});
+    }
+    a.maxError = std::max(a.maxError, worst);
+    if (!test::exactArithmetic()) {
+      a.worstUlps = std::max(a.worstUlps, worst / test::ulpAt(scale));
+      EXPECT_LE(worst, test::oneUpdateBound(scale))
+          << "frame " << f << ", largest coordinate " << scale;
+      cpu.adopt(g);
     }
     a.peak = std::max(a.peak, g.size());
     ++a.frames;
     a.last = g;
     a.state = state;
   }
+  if (!test::exactArithmetic())
+    std::printf("lockstep: one update differs by at most %.1f ulp (bound %.0f)\n", a.worstUlps,
+                test::kOneUpdateUlps);
   return a;
 }
 

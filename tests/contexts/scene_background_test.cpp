@@ -153,7 +153,8 @@ TEST_F(SceneBackgroundTest, TheComputeCompositeMatchesTheRasterOne) {
   ASSERT_FALSE(ParticlePost::computes(window.id()));
   ASSERT_FALSE(ParticlePost::computes(0));
   for (GLuint fbo : {image.framebuffer(), window.id()}) {
-    const float grey[4] = {0.5f, 0.5f, 0.5f, 1.0f};
+    // 128/255, not 0.5: 127.5 rounds to 127 on NVIDIA and to 128 on llvmpipe.
+    const float grey[4] = {128.0f / 255.0f, 128.0f / 255.0f, 128.0f / 255.0f, 1.0f};
     glClearNamedFramebufferfv(fbo, GL_COLOR, 0, grey);
     system.composite(renderer.targets(), fbo, {kSize.x, 0});
   }

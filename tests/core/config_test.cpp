@@ -376,6 +376,8 @@ TEST(Config, ReadsTracking) {
 source = "dtrack"
 port = 5001
 multicast = "239.1.2.3"
+sender = ["10.0.0.5", "10.0.0.6"]
+interface = "10.0.0.1"
 head_body = 3
 wand_flystick = 1
 offset = [0.0, 1.5, 0.0]
@@ -394,6 +396,11 @@ turn_speed_deg = 30.0
   EXPECT_EQ(c.tracking.source, TrackingSource::DTrack);
   EXPECT_EQ(c.tracking.port, 5001);
   EXPECT_EQ(c.tracking.multicast, "239.1.2.3");
+  EXPECT_EQ(c.tracking.senders, (std::vector<std::string>{"10.0.0.5", "10.0.0.6"}));
+  EXPECT_EQ(c.tracking.interfaceAddress, "10.0.0.1");
+  EXPECT_EQ(
+      parseConfig("[tracking]\nsender = \"192.168.0.20\"\n" + kWall, "test.toml").tracking.senders,
+      std::vector<std::string>{"192.168.0.20"});
   EXPECT_EQ(c.tracking.headBody, 3);
   EXPECT_EQ(c.tracking.wandFlystick, 1);
   EXPECT_EQ(c.tracking.offset, glm::vec3(0, 1.5f, 0));
@@ -412,6 +419,16 @@ TEST(Config, BadTrackingIsRefusedWithItsLineAndKey) {
   EXPECT_ERROR("[tracking]\nmulticast = \"10.0.0.1\"\n" + kWall, "tracking.multicast",
                "multicast group");
   EXPECT_ERROR("[tracking]\nmulticast = \"239.1.2\"\n" + kWall, "tracking.multicast");
+  EXPECT_ERROR("[tracking]\nmulticast = \"239.01.2.3\"\n" + kWall, "tracking.multicast");
+  EXPECT_ERROR("[tracking]\nsender = \"dtrack.local\"\n" + kWall, "test.toml:2", "tracking.sender",
+               "IPv4 address");
+  EXPECT_ERROR("[tracking]\nsender = [\"10.0.0.5\", \"10.0.0.256\"]\n" + kWall, "tracking.sender",
+               "10.0.0.256");
+  EXPECT_ERROR("[tracking]\nsender = []\n" + kWall, "tracking.sender", "a list of addresses");
+  EXPECT_ERROR("[tracking]\nsender = [5]\n" + kWall, "tracking.sender");
+  EXPECT_ERROR("[tracking]\nsender = \"239.1.2.3\"\n" + kWall, "tracking.sender");
+  EXPECT_ERROR("[tracking]\ninterface = \"10.0.0\"\n" + kWall, "test.toml:2", "tracking.interface",
+               "local IPv4 address");
   EXPECT_ERROR("[tracking]\nstale_ms = 0\n" + kWall, "tracking.stale_ms");
   EXPECT_ERROR("[tracking]\nhead_right = [0, 0, 0]\n" + kWall, "test.toml:2", "tracking.head_right",
                "non-zero");

@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
+
 #include "core/sim/emission.h"
 
 namespace sandstorm {
@@ -45,6 +47,31 @@ TEST(ReferenceSimulator, NewbornComeFirstAndSurvivorsKeepTheirOrder) {
     EXPECT_FLOAT_EQ(sim.particles()[i].life(), 10.0f);
   for (std::size_t i = 0; i < first.size(); ++i)
     EXPECT_FLOAT_EQ(sim.particles()[born + i].life(), first[i].life() - 0.1f);
+}
+
+// Adopting another simulator's particles continues from them: two simulators
+// that parted (one stepped once more) agree again after the one adopts.
+TEST(ReferenceSimulator, AdoptedParticlesAreWhereTheNextUpdateStarts) {
+  ParticleState s;
+  s.emitters[0].rate = 80.0f;
+  s.emitters[0].lifetime = 10.0f;
+  s.emitters[0].velocity = {0.5f, 0.0f, 0.0f};
+  ReferenceSimulator a(1000), b(1000);
+  a.step(stepFor(s, 0, 0.1f), s);
+  b.step(stepFor(s, 0, 0.1f), s);
+  std::vector<Particle> moved(a.particles().begin(), a.particles().end());
+  for (Particle& p : moved)
+    p.positionLife.x += 1.0f;
+  b.adopt(moved);
+  EXPECT_EQ(b.particles()[0].positionLife.x, moved[0].positionLife.x);
+  a.adopt(moved);
+  a.step(stepFor(s, 1, 0.1f), s);
+  b.step(stepFor(s, 1, 0.1f), s);
+  ASSERT_EQ(a.particles().size(), b.particles().size());
+  for (std::size_t i = 0; i < a.particles().size(); ++i)
+    EXPECT_EQ(a.particles()[i].positionLife, b.particles()[i].positionLife);
+  moved.pop_back();
+  EXPECT_THROW(b.adopt(moved), std::invalid_argument);
 }
 
 TEST(ReferenceSimulator, MaximumIsASoftLimitAndCapacityAHardOne) {

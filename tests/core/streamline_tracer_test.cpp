@@ -19,16 +19,18 @@ struct Still final : AnalyticField {
   glm::vec3 evaluate(const glm::vec3&) const override { return glm::vec3(0.0f); }
 };
 
-PhysicsInputs inputs(const VectorField& f, Integrator integrator = Integrator::RK4) {
+PhysicsInputs inputs(const VectorField& f) {
   PhysicsInputs in;
   in.field = &f;
-  in.settings.integrator = integrator;
+  in.settings.integrator = Integrator::Euler;  // the particles': the streamlines ignore it
   return in;
 }
 
-StreamlineSettings lineRake(glm::vec3 from, glm::vec3 to, int seeds) {
+StreamlineSettings lineRake(glm::vec3 from, glm::vec3 to, int seeds,
+                            StreamIntegrator method = StreamIntegrator::RK4) {
   StreamlineSettings s;
   s.enabled = true;
+  s.integrator = method;
   s.from = from;
   s.to = to;
   s.seeds = seeds;
@@ -58,9 +60,55 @@ TEST(StreamlineTracer, StreamlinesOfSolidBodyRotationAreCircles) {
 TEST(StreamlineTracer, EulerDriftsOutwardWhereRk4StaysOnTheCircle) {
   const VectorField f = bake(Spin(), Box{{-4, -4, 0}, {4, 4, 2}}, {9, 9, 3});
   const auto euler =
-      traceStreamlines(lineRake({2, 0, 1}, {2, 0, 1}, 1), inputs(f, Integrator::Euler));
+      traceStreamlines(lineRake({2, 0, 1}, {2, 0, 1}, 1, StreamIntegrator::Euler), inputs(f));
   ASSERT_EQ(euler.size(), 1u);
   EXPECT_GT(glm::length(glm::vec2(euler[0].points.back().position)), 2.01f);
+}
+
+// The streamlines' default, adaptive RK45 within streamlines.tolerance: on
+// circles of every size it stays within the tolerance's reach of the analytic
+// radius, shortening its steps on the tight ones, where RK4 at the same
+// longest step drifts off.
+TEST(StreamlineTracer, TheDefaultRk45HoldsTheCircleAndShortensItsStepsWhereItBends) {
+  EXPECT_EQ(StreamlineSettings{}.integrator, StreamIntegrator::RK45);
+  const VectorField f = bake(Spin(), Box{{-4, -4, 0}, {4, 4, 2}}, {9, 9, 3});
+  for (const float r : {0.02f, 1.0f, 3.0f}) {
+    SCOPED_TRACE(r);
+    StreamlineSettings rake = lineRake({r, 0, 1}, {r, 0, 1}, 1, StreamIntegrator::RK45);
+    rake.step = 0.05f;
+    rake.length = 5.0f;
+    const auto lines = traceStreamlines(rake, inputs(f));
+    ASSERT_EQ(lines.size(), 1u);
+    const std::vector<StreamlinePoint>& p = lines[0].points;
+    float worst = 0.0f, shortest = 1.0f, longest = 0.0f, arc = 0.0f;
+    for (std::size_t i = 0; i < p.size(); ++i) {
+      worst = std::max(worst, std::abs(glm::length(glm::vec2(p[i].position)) - r));
+      if (i > 0) {
+        const float chord = glm::length(p[i].position - p[i - 1].position);
+        shortest = std::min(shortest, chord);
+        longest = std::max(longest, chord);
+        // The arc each chord cuts from the circle: the length integrated.
+        if (int(i) > lines[0].seedIndex)
+          arc += 2.0f * r * std::asin(std::min(1.0f, 0.5f * chord / r));
+      }
+    }
+    EXPECT_LT(worst, 2e-5f);
+    EXPECT_LE(longest, rake.step * 1.0001f);
+    EXPECT_NEAR(arc, 5.0f, 5e-3f);
+    if (r < 0.05f) {
+      EXPECT_LT(shortest, 0.5f * rake.step);
+      StreamlineSettings fixed = rake;
+      fixed.integrator = StreamIntegrator::RK4;
+      float drift = 0.0f;
+      const auto fixedLines = traceStreamlines(fixed, inputs(f));
+      ASSERT_EQ(fixedLines.size(), 1u);
+      for (const StreamlinePoint& q : fixedLines[0].points)
+        drift = std::max(drift, std::abs(glm::length(glm::vec2(q.position)) - r));
+      EXPECT_GT(drift, 10.0f * worst) << "RK4 at the longest step should drift on radius " << r;
+    } else {
+      EXPECT_GT(shortest, 0.9f * rake.step);  // gentle bends: the longest step throughout
+    }
+  }
 }
 
 TEST(StreamlineTracer, AUniformWindGivesAStraightLineToTheFieldsEdge) {

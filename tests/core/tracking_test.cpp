@@ -5,6 +5,7 @@
 
 #include <cmath>
 
+#include "core/tracking/ipv4_address.h"
 #include "core/tracking/tracker_calibration.h"
 #include "core/tracking/tracking_sampler.h"
 #include "core/util/error.h"
@@ -37,6 +38,17 @@ TrackerFrame frameWith(glm::vec3 headMm, glm::mat3 headRotation) {
   s.controllers = {0.5f, -0.25f};
   f.flysticks.push_back(s);
   return f;
+}
+
+TEST(Ipv4Address, DottedQuadsOnly) {
+  EXPECT_EQ(parseIpv4("192.168.0.20"), 0xC0A80014u);
+  EXPECT_EQ(parseIpv4("0.0.0.0"), 0u);
+  EXPECT_EQ(parseIpv4("255.255.255.255"), 0xFFFFFFFFu);
+  for (const char* bad : {"", "1.2.3", "1.2.3.4.", "256.0.0.1", " 1.2.3.4", "1.2.3.4 ", "01.2.3.4",
+                          "1.2.3.4x", "1..3.4", "-1.2.3.4", "1234.1.1.1", "host.example"})
+    EXPECT_FALSE(parseIpv4(bad)) << bad;
+  EXPECT_TRUE(isMulticast(*parseIpv4("239.255.0.1")));
+  EXPECT_FALSE(isMulticast(*parseIpv4("10.0.0.1")));
 }
 
 TEST(TrackerCalibration, MillimetresBecomeRoomMetres) {
@@ -167,6 +179,43 @@ TEST(TrackingSampler, AHeadMissingFromFreshMeasurementsGoesStaleToo) {
   EXPECT_TRUE(t.stale);
   expectNear(t.head.position, {0, 0, 1.7f});
   EXPECT_TRUE(t.wand.tracked);
+}
+
+// DTrack lists every Flystick in every datagram, tracked or not (quality -1
+// when occluded), with its buttons and joystick either way.
+TEST(TrackingSampler, AnOccludedWandIsUntrackedAtOnceWithItsButtonsAndJoystickLive) {
+  TrackingSpec spec;
+  spec.staleMs = 500.0f;
+  TrackingSampler s(spec);
+  const TrackerMeasurement seen = measured(1, 0.0, {0, 0, 1700});
+  const TrackingSample a = s.sample(&seen, 0.0);
+  ASSERT_TRUE(a.wand.tracked);
+  for (std::uint64_t n = 2; n <= 6; ++n) {  // well within stale_ms of the tracked one, and after
+    TrackerMeasurement hidden = measured(n, 0.01 * double(n), {0, 0, 1700});
+    TrackedFlystick& f = hidden.frame.flysticks[0];
+    f.quality = -1.0f;
+    f.position = glm::vec3(0.0f);  // DTrack sends zeros for an untracked pose
+    f.rotation = glm::mat3(0.0f);
+    f.buttons = std::uint32_t(n);
+    f.controllers = {0.0f, 0.75f};
+    const TrackingSample t = s.sample(&hidden, 0.01 * double(n));
+    SCOPED_TRACE(n);
+    EXPECT_FALSE(t.wand.tracked);  // the first untracked datagram as every later one
+    EXPECT_TRUE(t.wand.present);
+    EXPECT_EQ(t.wand.buttons, std::uint32_t(n));
+    EXPECT_EQ(t.wand.joystick, glm::vec2(0.0f, 0.75f));
+  }
+  // Tracked again: its new pose at once.
+  TrackerMeasurement back = measured(7, 0.1, {0, 0, 1700});
+  back.frame.flysticks[0].position = {300.0f, 0.0f, 1000.0f};
+  const TrackingSample b = s.sample(&back, 0.1);
+  EXPECT_TRUE(b.wand.tracked);
+  expectNear(b.wand.pose.position, {0.3f, 0.0f, 1.0f});
+  // The radio quiet past stale_ms: buttons and joystick released.
+  const TrackingSample quiet = s.sample(&back, 0.7);
+  EXPECT_FALSE(quiet.wand.present);
+  EXPECT_EQ(quiet.wand.buttons, 0u);
+  EXPECT_EQ(quiet.wand.joystick, glm::vec2(0.0f));
 }
 
 TEST(TrackingSampler, TheNewestMeasurementIsTheOneUsed) {

@@ -280,6 +280,27 @@ TEST(WandController, AnUntrackedWandDrawsNothingAndLetsGo) {
   EXPECT_EQ(f.wand.holding(), -1);
 }
 
+TEST(WandController, AnOccludedWandStillFliesWhereTheHeadLooks) {
+  Fixture f;
+  NavigationSpec speeds;
+  speeds.flySpeed = 2.0f;
+  f.wand = WandController(TrackingSpec{}, speeds);
+  f.scene.navigation = Navigation{};
+  // The wand points +y but is hidden; the head looks along +x.
+  TrackingSample s = wandAt({0, 0, 1.2f}, 90.0f, 0.0f, 0, {0.0f, 1.0f});
+  s.wand.tracked = false;
+  s.head.axes = bodyRotation(0.0f, 0.0f, 0.0f);
+  ASSERT_GT(s.head.forward().x, 0.99f);
+  Navigation n = f.scene.navigation;
+  for (int i = 0; i < 30; ++i) {  // half a second at 2 m/s
+    const WandActions a = f.step(s);
+    EXPECT_FALSE(a.ray.visible);
+    ASSERT_TRUE(a.navigation) << "the joystick of a hidden wand must still fly";
+    f.scene.navigation = n = *a.navigation;
+  }
+  expectNear(n.offset, {-1.0f, 0.0f, 0.0f});
+}
+
 TEST(WandController, TheGroundStopsTheRay) {
   Fixture f;
   HeightMap ground = HeightMap::flat(0.0f);
