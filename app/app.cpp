@@ -50,7 +50,10 @@ App::App(AppConfig config, AppOptions options, ClusterLink* cluster)
   }
   const bool offscreenOnly = !config_.anyWindow();
   if (options_.frames) config_.run.frames = *options_.frames;
-  if (offscreenOnly && config_.run.frames == 0) config_.run.frames = kHeadlessFrames;
+  // Without windows nothing closes: a run of its own is kHeadlessFrames long,
+  // while an explicit --frames 0 runs until Ctrl-C or SIGTERM.
+  if (offscreenOnly && config_.run.frames == 0 && !options_.frames)
+    config_.run.frames = kHeadlessFrames;
   if (offscreenOnly && !options_.screenshotDir) options_.screenshotDir = "out";
   if (offscreenOnly && config_.run.fixedDt == 0.0f) config_.run.fixedDt = 1.0f / 60.0f;
   applySets(config_, options_.sets);

@@ -53,6 +53,10 @@ void placeFlowTools(ParticleState& state, const VectorField& field) {
   // Within the attributes' ranges (core/sim/attribute_table.cpp).
   rake.step = std::clamp(0.2f * cell, 1e-7f, 10.0f);
   rake.length = std::clamp(diagonal, rake.step, 1e5f);
+  // rk45's tolerance in metres: a ten-millionth of the field's size, 1e-6 m
+  // for a 10 m field; an absolute 1e-6 m would be below float resolution in a
+  // field kilometres wide and force the shortest step everywhere.
+  rake.tolerance = std::clamp(1e-7f * diagonal, 1e-9f, 1.0f);
   rake.width = std::clamp(0.003f * diagonal, 0.0f, 1000.0f);
 
   state.slice.origin = centre;

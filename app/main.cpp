@@ -33,7 +33,8 @@ int main(int argc, char** argv) {
   cli.add_option("--array", arrayName,
                  "The field file's vector array or grid (a file with several asks for one), or "
                  "three components joined: u,v,w");
-  cli.add_option("-n,--frames", frames, "Frames to run, then exit (0: until a window closes)")
+  cli.add_option("-n,--frames", frames,
+                 "Frames to run, then exit (0: until a window closes, or Ctrl-C)")
       ->check(CLI::NonNegativeNumber);
   cli.add_option("--screenshot", screenshotDir, "Write each wall's last frame as DIR/<wall>.png");
   cli.add_option("--screenshot-every", options.screenshotEvery,

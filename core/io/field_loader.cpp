@@ -30,13 +30,13 @@ void checkResolution(const std::string& file, const LoadOptions& options) {
   if (r == glm::ivec3(0)) return;
   for (int a = 0; a < 3; ++a)
     if (r[a] <= 0)
-      throw Error(concat(file, ": requested resolution along ", "xyz"[a], " is ", r[a],
+      throw Error(concat(file, ": field.resolution along ", "xyz"[a], " is ", r[a],
                          "; expected a positive point count (or 0 0 0 for the file's own)"));
   const double points = double(r.x) * r.y * r.z;
   if (points > double(VectorField::kMaxPoints) || points * 12.0 > double(options.memoryBudget))
     throw Error(concat(file, ": the requested ", r.x, "x", r.y, "x", r.z, " grid needs ",
                        points * 12.0, " bytes, beyond the memory budget of ", options.memoryBudget,
-                       " bytes; choose a lower resolution"));
+                       " bytes; choose a lower field.resolution"));
 }
 
 // The VTK data a VTK-based format's reader makes of the file; null for the
@@ -141,8 +141,8 @@ VectorField loadField(const std::filesystem::path& path, const LoadOptions& opti
     if (what.rfind(file, 0) == 0) throw;
     throw Error(concat(file, ": ", what));
   } catch (const std::bad_alloc&) {
-    throw Error(concat(file, ": ran out of memory while loading; lower the resolution or the ",
-                       "memory budget"));
+    throw Error(concat(file, ": ran out of memory while loading; lower the resolution ",
+                       "(field.resolution)"));
   }
 }
 

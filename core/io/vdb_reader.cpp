@@ -81,9 +81,9 @@ void checkBudget(const glm::ivec3& dims, const std::string& file, const std::str
   throw Error(concat(file, ": densifying grid '", grid, "' over its active bounding box (index ",
                      bbox.min(), " to ", bbox.max(), ") at ", dims.x, "x", dims.y, "x", dims.z,
                      " points needs ", bytes, " bytes, beyond the memory budget of ",
-                     options.memoryBudget, " bytes. Lower the resolution (LoadOptions::resolution,",
-                     " sandstorm-field --dims), e.g. --dims ", fit.x, " ", fit.y, " ", fit.z,
-                     " fits, or raise the budget"));
+                     options.memoryBudget,
+                     " bytes. Lower the resolution (field.resolution, sandstorm-field",
+                     " --dims): ", fit.x, " ", fit.y, " ", fit.z, " fits"));
 }
 
 template <class GridT>
@@ -135,7 +135,7 @@ VectorField densify(const GridT& grid, const std::string& file, const LoadOption
   }
   for (int a = 0; a < 3; ++a)
     if (dims[a] <= 0)
-      throw Error(concat(file, ": resolution along ", "xyz"[a], " is ", dims[a],
+      throw Error(concat(file, ": field.resolution along ", "xyz"[a], " is ", dims[a],
                          "; expected a positive point count"));
   checkBudget(dims, file, grid.getName(), bbox, options);
   const bool exact = aligned && !staggered && dims == report.sourceDims;

@@ -124,7 +124,7 @@ void checkBudget(const glm::ivec3& dims, const std::filesystem::path& path,
                  const LoadOptions& options, double perPoint) {
   for (int a = 0; a < 3; ++a)
     if (dims[a] <= 0)
-      throw Error(concat(path.string(), ": resolution along ", "xyz"[a], " is ", dims[a],
+      throw Error(concat(path.string(), ": field.resolution along ", "xyz"[a], " is ", dims[a],
                          "; expected a positive point count"));
   const double points = double(dims.x) * dims.y * dims.z;
   if (points > double(VectorField::kMaxPoints) || points * perPoint > double(options.memoryBudget))

@@ -412,6 +412,13 @@ turn_speed_deg = 30.0
   EXPECT_EQ(c.navigation.turnSpeedDeg, 30.0f);
 }
 
+TEST(Config, MaxFpsPacesARunOrIsRefused) {
+  EXPECT_EQ(parseConfig("[run]\nmax_fps = 90\n" + kWall, "test.toml").run.maxFps, 90.0);
+  EXPECT_EQ(parseConfig(kWall, "test.toml").run.maxFps, 0.0);
+  EXPECT_ERROR("[run]\nmax_fps = -1\n" + kWall, "test.toml:2", "run.max_fps", "0 (no limit)");
+  EXPECT_ERROR("[run]\nmax_fps = 5000\n" + kWall, "run.max_fps", "1000");
+}
+
 TEST(Config, BadTrackingIsRefusedWithItsLineAndKey) {
   EXPECT_ERROR("[tracking]\nsource = \"vrpn\"\n" + kWall, "test.toml:2", "tracking.source",
                "dtrack");

@@ -249,7 +249,7 @@ TEST(BadInput, ResolutionMustBePositiveAndFit) {
   test::writeText(path, legacyAscii(dir));
   LoadOptions o;
   o.resolution = {4, 0, 4};
-  expectError([&] { loadField(path, o); }, {path.string(), "resolution along y is 0"});
+  expectError([&] { loadField(path, o); }, {path.string(), "field.resolution along y is 0"});
   o.resolution = {100000, 100000, 100000};
   expectError([&] { loadField(path, o); }, {path.string(), "memory budget"});
 }
