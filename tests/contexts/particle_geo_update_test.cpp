@@ -67,8 +67,10 @@ Scenario tornado(MotionModel motion, Integrator integrator, BoundaryMode boundar
 
 struct Agreement {
   std::size_t frames = 0;
-  float maxError = 0.0f;   // over the run, or one update's in lockstep
-  float worstUlps = 0.0f;  // one update's, in ulps of the frame's largest coordinate
+  float maxError = 0.0f;             // over the run, or one update's in lockstep
+  float worstUlps = 0.0f;            // one update's, in ulps of the frame's largest coordinate
+  std::size_t updates = 0;           // particle updates compared
+  std::size_t surfaceDecisions = 0;  // lockstep: pushed out on one side only (see compare)
   std::size_t peak = 0;
   std::vector<Particle> last;  // the GPU's particles after the last frame
   ParticleState state;         // and the state then
@@ -108,18 +110,39 @@ Agreement compare(const std::string& backend, Scenario s, int frames, std::size_
     const auto c = cpu.particles();
     EXPECT_EQ(g.size(), c.size()) << "alive count at frame " << f;
     if (g.size() != c.size()) return a;
-    float worst = 0.0f, scale = 0.0f;
+    float scale = 0.0f;
     for (std::size_t i = 0; i < g.size(); ++i) {
-      worst = std::max(worst, glm::length(g[i].position() - c[i].position()));
-      worst = std::max(worst, std::abs(g[i].life() - c[i].life()));
       const glm::vec3 p = glm::abs(c[i].position());
       scale = std::max({scale, p.x, p.y, p.z, std::abs(c[i].life())});
     }
+    const bool lockstep = !test::exactArithmetic();
+    const float bound = test::oneUpdateBound(scale);
+    // Whether x lies on an obstacle's surface, within the push's margin.
+    const auto onSurface = [&](const glm::vec3& x) {
+      for (const Obstacle& o : state.obstacles)
+        if (std::abs(obstacleSurface(o, x).distance) <= kObstacleMargin + bound) return true;
+      return false;
+    };
+    float worst = 0.0f;
+    for (std::size_t i = 0; i < g.size(); ++i) {
+      const float d = std::max(glm::length(g[i].position() - c[i].position()),
+                               std::abs(g[i].life() - c[i].life()));
+      // In lockstep, a particle that ended a step a few ulps inside an
+      // obstacle on one side and a few outside on the other is pushed out by
+      // kObstacleMargin on one side only: a decision at the surface, which no
+      // bound on rounding can remove. Allowed there, up to the margin, and counted.
+      if (lockstep && d > bound && d <= kObstacleMargin + bound && onSurface(c[i].position()) &&
+          onSurface(g[i].position())) {
+        ++a.surfaceDecisions;
+        continue;
+      }
+      worst = std::max(worst, d);
+    }
     a.maxError = std::max(a.maxError, worst);
-    if (!test::exactArithmetic()) {
+    a.updates += g.size();
+    if (lockstep) {
       a.worstUlps = std::max(a.worstUlps, worst / test::ulpAt(scale));
-      EXPECT_LE(worst, test::oneUpdateBound(scale))
-          << "frame " << f << ", largest coordinate " << scale;
+      EXPECT_LE(worst, bound) << "frame " << f << ", largest coordinate " << scale;
       cpu.adopt(g);
     }
     a.peak = std::max(a.peak, g.size());
@@ -127,9 +150,14 @@ Agreement compare(const std::string& backend, Scenario s, int frames, std::size_
     a.last = g;
     a.state = state;
   }
-  if (!test::exactArithmetic())
-    std::printf("lockstep: one update differs by at most %.1f ulp (bound %.0f)\n", a.worstUlps,
-                test::kOneUpdateUlps);
+  if (!test::exactArithmetic()) {
+    std::printf(
+        "lockstep: one update differs by at most %.1f ulp (bound %.0f); %zu of %zu "
+        "updates decided differently at an obstacle's surface\n",
+        a.worstUlps, test::kOneUpdateUlps, a.surfaceDecisions, a.updates);
+    // Rare: a particle must end a step within ulps of a surface.
+    EXPECT_LE(a.surfaceDecisions * 10000, a.updates) << "more than 1 in 10^4";
+  }
   return a;
 }
 
