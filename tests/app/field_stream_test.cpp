@@ -49,6 +49,9 @@ std::string config(const fs::path& dir) {
 [run]
 fixed_dt = 0.016666668
 capacity = 8192
+# A CAVE's pace: "joins within a frame of being found" means a frame of a
+# display's length; a fast GPU headless runs frames shorter than a read.
+max_fps = 120
 
 [field]
 source = "steps"
