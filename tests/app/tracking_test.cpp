@@ -429,6 +429,50 @@ TEST(TrackedWand, TiltingTheWandUpRaisesTheHelicoptersThrottle) {
   EXPECT_GT(throttles.back(), 0.55f);
 }
 
+// DTrack lists every Flystick in every datagram; an occluded one with
+// quality -1, its buttons and joystick still live. Recorded: untracked from
+// the first such datagram on, every frame alike, with the joystick as sent,
+// and the user flies on (navigate lines) while the wand is hidden.
+TEST(TrackedWand, AHiddenWandIsUntrackedAtOnceAndItsJoystickStillFlies) {
+  const auto dir = test::scratchDir("tracked-hidden");
+  const int port = test::freeUdpPort();
+  const auto config = test::trackedConfig(dir, "tests/data/tracked.toml", port);
+  const auto path = test::writeFile(
+      dir / "hidden.toml",
+      "loop = false\n[[key]]\ntime = 0.0\nwand = [0.0, 0.0, 1.2]\n"
+      "[[key]]\ntime = 0.6\nwand_visible = false\njoystick = [0.0, 1.0]\nbuttons = 4\n");
+  const auto r = test::runTracked(
+      "--config " + config.string() + " --frames 150 --record " + (dir / "session.log").string(),
+      "--port " + std::to_string(port) + " --rate 250 --duration 60 --path " + path.string(), dir);
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  int tracked = 0, hidden = 0, flownWhileHidden = 0;
+  bool wasHidden = false;
+  for (const std::string& line : readLines(dir / "session.log")) {
+    if (line.find(" navigate ") != std::string::npos && wasHidden) ++flownWhileHidden;
+    const std::size_t at = line.find(" wand=");
+    if (at == std::string::npos) continue;
+    const std::string value = line.substr(at + 6, line.find(' ', at + 6) - at - 6);
+    if (value == "-") continue;
+    const std::vector<std::string> v = split(value, ',');
+    ASSERT_EQ(v.size(), 17u) << line;
+    const bool isTracked = v[1] == "1";
+    const bool joystickForward = std::stof(v[16]) == 1.0f;
+    if (joystickForward) {  // sent only with the wand hidden
+      wasHidden = true;
+      ++hidden;
+      EXPECT_FALSE(isTracked) << "a hidden wand recorded as tracked: " << line;
+      EXPECT_EQ(v[0], "1") << line;   // present: its radio is heard
+      EXPECT_EQ(v[14], "4") << line;  // its buttons as sent
+    } else {
+      EXPECT_FALSE(wasHidden) << "the joystick fell back to zero: " << line;
+      if (isTracked) ++tracked;
+    }
+  }
+  EXPECT_GT(tracked, 10);
+  EXPECT_GT(hidden, 30);
+  EXPECT_GT(flownWhileHidden, 10) << "the joystick of a hidden wand did not fly";
+}
+
 TEST(TrackedCave, AMalformedDatagramStormLeavesItRunning) {
   const auto dir = test::scratchDir("tracked-storm");
   const int port = test::freeUdpPort();
