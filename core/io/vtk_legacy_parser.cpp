@@ -254,6 +254,15 @@ class Parser {
       checkIds(data_.polyCells[l], kLists[l]);
   }
 
+  // A point id, offset or count read as a number: a whole number from 0 up
+  // to 2^53 (past that a double cannot hold it), checked before it becomes
+  // an integer. Ids are held to the POINTS later.
+  std::int64_t index(double v, const std::string& what) {
+    if (!(v >= 0.0 && v < 9007199254740992.0) || v != std::floor(v))
+      fail(concat(what, ": ", v, " is not a point index (a whole number from 0)"));
+    return std::int64_t(v);
+  }
+
   // A cell list: "n size" then n counted cells (up to 4.2), or "offsets
   // connectivity" then OFFSETS and CONNECTIVITY arrays (5.x).
   LegacyCells cellList(const std::string& what) {
@@ -279,12 +288,14 @@ class Parser {
       for (std::size_t i = 0; i < offsets.size(); ++i) {
         if (i > 0 && offsets[i] < offsets[i - 1])
           fail(concat(what, ": offset ", i, " (", offsets[i], ") is below the one before it"));
-        cells.offsets.push_back(std::int64_t(offsets[i]));
+        cells.offsets.push_back(index(offsets[i], concat(what, " offset ", i)));
       }
       if (offsets.back() != double(size))
         fail(concat(what, ": the last offset is ", offsets.back(), " but CONNECTIVITY holds ", size,
                     " ids"));
-      cells.connectivity.assign(connectivity.begin(), connectivity.end());
+      cells.connectivity.reserve(connectivity.size());
+      for (const double id : connectivity)
+        cells.connectivity.push_back(index(id, concat(what, " CONNECTIVITY")));
       return cells;
     }
     const std::vector<double> list = values("int", size, what);
@@ -293,12 +304,12 @@ class Parser {
     for (long long c = 0; c < n; ++c) {
       if (at >= list.size())
         fail(concat(what, ": ", c, " of ", n, " cells fill its size of ", size, " values"));
-      const double k = list[at++];
-      if (k < 0 || k > double(list.size() - at))
+      const double k = double(index(list[at++], concat(what, ": cell ", c, "'s point count")));
+      if (k > double(list.size() - at))
         fail(concat(what, ": cell ", c, " has ", k, " points; only ", list.size() - at,
                     " values of its size are left"));
       for (std::size_t i = 0; i < std::size_t(k); ++i)
-        cells.connectivity.push_back(std::int64_t(list[at++]));
+        cells.connectivity.push_back(index(list[at++], what));
       cells.offsets.push_back(std::int64_t(cells.connectivity.size()));
     }
     if (at != list.size())

@@ -69,6 +69,19 @@ TEST(MeshBadInput, LegacyCellsThatDoNotAddUp) {
                   legacyMesh("CELLS 3 12\nOFFSETS vtktypeint64\n0 4 13\n" + conn, types, "5.1"));
   expectError([&] { loadField(path); },
               {path.string(), "the last offset is 13 but CONNECTIVITY holds 12"});
+  // Ids, offsets and counts that are no whole numbers, or beyond what an
+  // integer holds (once undefined behaviour in the conversion: a fuzz find).
+  test::writeText(path, legacyMesh("CELLS 3 12\nOFFSETS vtktypeint64\n0 4 12\n"
+                                   "CONNECTIVITY vtktypeint64\n0 1 2 4 4 5 7 6 8 9 11 4.4e32\n",
+                                   types, "5.1"));
+  expectError([&] { loadField(path); }, {path.string(), "CONNECTIVITY", "is not a point index"});
+  test::writeText(path,
+                  legacyMesh("CELLS 3 12\nOFFSETS vtktypeint64\n0 4.5 12\n" + conn, types, "5.1"));
+  expectError([&] { loadField(path); }, {path.string(), "offset 1", "4.5 is not a point index"});
+  test::writeText(path, legacyMesh("CELLS 2 14\n4 0 1 2 4\n8 4 5 7 6 8 9 11 -1e300\n", types));
+  expectError([&] { loadField(path); }, {path.string(), "CELLS", "is not a point index"});
+  test::writeText(path, legacyMesh("CELLS 2 14\n4 0 1 2 4\n7.5 4 5 7 6 8 9 11 10\n", types));
+  expectError([&] { loadField(path); }, {path.string(), "cell 1's point count", "7.5"});
   test::writeText(path,
                   "# vtk DataFile Version 4.2\nm\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n"
                   "0 0 0 1 0 0 0 1 0\nPOLYGONS 1 3\n2 0 1\n");
