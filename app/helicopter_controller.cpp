@@ -57,7 +57,8 @@ void HelicopterController::update(MainContext& main) {
   parts.push_back(std::make_unique<CurlNoiseField>(gusts));
   const SumField air(std::move(parts));
   const float reach = 5.0f * model_.rotorRadius;
-  const Box bounds{{-reach, -reach, 0.0f}, {reach, reach, s.altitude + model_.rotorRadius}};
+  // Room above the rotor for the cloud the recirculation lifts (brownout rises past the disc).
+  const Box bounds{{-reach, -reach, 0.0f}, {reach, reach, s.altitude + 2.0f * model_.rotorRadius}};
   // The live flow starts from still air: the wash it shows is all its own.
   const SumField still;
   const AnalyticField& start = solving ? static_cast<const AnalyticField&>(still) : air;

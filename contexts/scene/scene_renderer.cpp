@@ -40,7 +40,36 @@ SceneRenderer::SceneRenderer()
 
 void SceneRenderer::setHelicopter(const HelicopterSettings& helicopter, float rotorRadius) {
   helicopter_ = helicopter;
+  if (helicopter.enabled && (helicopterModel_.empty() || rotorRadius != rotorRadius_)) {
+    helicopterModel_.clear();
+    for (const ModelPart& part : helicopterModel(rotorRadius))
+      helicopterModel_.push_back({UnitMesh::triangles(part.triangles), part.color});
+  }
   rotorRadius_ = rotorRadius;
+}
+
+// The helicopter's opaque parts, or (after the opaque scene, blended, the
+// depth kept) its rotors' translucent blur.
+void SceneRenderer::drawHelicopter(bool translucent) const {
+  if (!helicopter_.enabled) return;
+  const glm::mat4 model =
+      glm::translate(glm::mat4(1.0f), helicopterHub(helicopter_, ground_.get()));
+  mesh_.use();
+  glProgramUniformMatrix4fv(mesh_.id(), 0, 1, GL_FALSE, glm::value_ptr(model));
+  if (translucent) {
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glDepthMask(GL_FALSE);
+  }
+  for (const ModelMesh& part : helicopterModel_) {
+    if ((part.color.w < 1.0f) != translucent) continue;
+    glProgramUniform4f(mesh_.id(), 1, part.color.x, part.color.y, part.color.z, part.color.w);
+    part.mesh.draw();
+  }
+  if (translucent) {
+    glDepthMask(GL_TRUE);
+    glDisable(GL_BLEND);
+  }
 }
 
 template <class Mesh>
@@ -168,15 +197,8 @@ void SceneRenderer::drawOpaque() const {
     glDrawElements(GL_TRIANGLES, terrainIndexCount_, GL_UNSIGNED_INT, nullptr);
   }
 
+  drawHelicopter(false);
   mesh_.use();
-  if (helicopter_.enabled) {
-    // Hub at the rotor; the fuselage hangs below it, the boom runs aft (-x).
-    const glm::vec3 hub = helicopterHub(helicopter_, ground_.get());
-    for (const HelicopterPart& p : helicopterParts(rotorRadius_)) {
-      if (p.role == HelicopterPart::Role::Disc) continue;  // the blades show it
-      drawProp(cube_, hub + p.center, p.size, glm::vec4(p.color, 1.0f));
-    }
-  }
   for (const Obstacle& o : obstacles_) {
     if (!o.enabled) continue;
     const glm::vec4 green(0.25f, 0.6f, 0.3f, 1.0f);
@@ -219,6 +241,7 @@ void SceneRenderer::drawTranslucent() const {
   glDepthFunc(GL_LESS);
   streaklines_.draw();
   slice_.draw();
+  drawHelicopter(true);
   glBindVertexArray(0);
 }
 

@@ -90,6 +90,12 @@ class SceneRenderer {
   std::optional<FlatGround> flatGround_;
   HelicopterSettings helicopter_;
   float rotorRadius_ = 7.0f;
+  struct ModelMesh {
+    UnitMesh mesh;
+    glm::vec4 color;
+  };
+  std::vector<ModelMesh> helicopterModel_;  // core/props/helicopter_model.h, for rotorRadius_
+  void drawHelicopter(bool translucent) const;
   int terrainIndexCount_ = 0;
   std::optional<Box> box_;
   std::optional<glm::vec3> probe_;

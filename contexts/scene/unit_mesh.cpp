@@ -57,6 +57,13 @@ UnitMesh UnitMesh::cylinder(int segments) {
   return mesh;
 }
 
+UnitMesh UnitMesh::triangles(std::span<const ModelVertex> vertices) {
+  static_assert(sizeof(ModelVertex) == 6 * sizeof(float));
+  UnitMesh mesh;
+  mesh.upload(&vertices[0].position.x, vertices.size());
+  return mesh;
+}
+
 void UnitMesh::upload(const float* vertices, std::size_t count) {
   vertices_ = gl::createBuffer();
   vao_ = gl::createVertexArray();
