@@ -32,7 +32,9 @@ glm::vec2 wallPixel(const WallSpec& wall, glm::ivec2 size, glm::vec2 uv) {
 WandController::WandController(const TrackingSpec& tracking, const NavigationSpec& navigation)
     : tracking_(tracking), navigation_(navigation) {}
 
-WandActions WandController::update(const TrackingSample& sample, const WandScene& scene, float dt) {
+WandActions WandController::update(const TrackingSample& sample, const WandScene& scene,
+                                   float frameSeconds) {
+  const float dt = std::min(frameSeconds, kMaxFrameSeconds);
   WandActions out;
   const WandSample& wand = sample.wand;
   const std::uint32_t pressedNow = wand.present ? wand.buttons : 0u;

@@ -79,6 +79,10 @@ class WandController {
   static constexpr float kThrottleRate = 0.4f;  // per second at full tilt
   static constexpr float kJoystickDeadZone = 0.1f;
   static constexpr float kPushReach = 0.5f;  // m (room) ahead of the wand
+  // The longest frame the throttle and flying integrate over: a stalled frame
+  // (a shader compiled, a field re-baked) must not jump the throttle or the
+  // user across the scene.
+  static constexpr float kMaxFrameSeconds = 0.1f;
 
   WandController(const TrackingSpec& tracking, const NavigationSpec& navigation);
 

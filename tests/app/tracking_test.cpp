@@ -440,9 +440,11 @@ TEST(TrackedWand, AHiddenWandIsUntrackedAtOnceAndItsJoystickStillFlies) {
   const auto path = test::writeFile(
       dir / "hidden.toml",
       "loop = false\n[[key]]\ntime = 0.0\nwand = [0.0, 0.0, 1.2]\n"
-      "[[key]]\ntime = 0.6\nwand_visible = false\njoystick = [0.0, 1.0]\nbuttons = 4\n");
+      "[[key]]\ntime = 2.0\nwand_visible = false\njoystick = [0.0, 1.0]\nbuttons = 4\n");
+  // Hidden 2 s after the tracker starts (an app slow to start still sees it
+  // tracked first); 300 frames at the tracked configs' 60 a second.
   const auto r = test::runTracked(
-      "--config " + config.string() + " --frames 150 --record " + (dir / "session.log").string(),
+      "--config " + config.string() + " --frames 300 --record " + (dir / "session.log").string(),
       "--port " + std::to_string(port) + " --rate 250 --duration 60 --path " + path.string(), dir);
   ASSERT_EQ(r.exitCode, 0) << r.output;
   int tracked = 0, hidden = 0, flownWhileHidden = 0;

@@ -280,6 +280,20 @@ TEST(WandController, AnUntrackedWandDrawsNothingAndLetsGo) {
   EXPECT_EQ(f.wand.holding(), -1);
 }
 
+TEST(WandController, AStalledFrameMovesTheThrottleAndTheUserNoMoreThanATenthOfASecond) {
+  Fixture f;
+  f.state.helicopter.enabled = true;
+  f.state.helicopter.throttle = 0.5f;
+  NavigationSpec speeds;
+  speeds.flySpeed = 2.0f;
+  f.wand = WandController(TrackingSpec{}, speeds);
+  f.step(wandAt({0, 0, 1.2f}, 90.0f, 60.0f), 3.0f);  // tilted fully up through a 3 s stall
+  EXPECT_LE(f.state.helicopter.throttle, 0.5f + 0.1f * WandController::kThrottleRate + 1e-6f);
+  const WandActions a = f.step(wandAt({0, 0, 1.2f}, 90.0f, 0.0f, 0, {0.0f, 1.0f}), 3.0f);
+  ASSERT_TRUE(a.navigation);
+  EXPECT_NEAR(glm::length(a.navigation->offset - f.scene.navigation.offset), 0.2f, 1e-4f);
+}
+
 TEST(WandController, AnOccludedWandStillFliesWhereTheHeadLooks) {
   Fixture f;
   NavigationSpec speeds;
