@@ -48,10 +48,6 @@ std::string listed(const std::vector<std::string>& addresses) {
   return out;
 }
 
-std::string dotted(std::uint32_t a) {
-  return concat(a >> 24, ".", (a >> 16) & 255u, ".", (a >> 8) & 255u, ".", a & 255u);
-}
-
 }  // namespace
 
 DTrackReceiver::DTrackReceiver(Options options) : options_(std::move(options)) {
@@ -183,7 +179,7 @@ void DTrackReceiver::refuse(std::uint32_t sender) {
     foreign = ++stats_.foreign;
   }
   if (foreign == 1)
-    log::warn("tracking: dropped a datagram from ", dotted(sender),
+    log::warn("tracking: dropped a datagram from ", formatIpv4(sender),
               ", which is not in tracking.sender (", listed(options_.senders),
               "); further ones are counted in the stats");
 }

@@ -22,4 +22,9 @@ std::optional<std::uint32_t> parseIpv4(std::string_view text) {
   return address;
 }
 
+std::string formatIpv4(std::uint32_t a) {
+  return std::to_string(a >> 24) + "." + std::to_string((a >> 16) & 255u) + "." +
+         std::to_string((a >> 8) & 255u) + "." + std::to_string(a & 255u);
+}
+
 }  // namespace sandstorm

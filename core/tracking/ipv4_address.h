@@ -7,12 +7,16 @@
 
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 
 namespace sandstorm {
 
 // The address in host byte order, or nothing if `text` is not one.
 std::optional<std::uint32_t> parseIpv4(std::string_view text);
+
+// The address as dotted quads, as parseIpv4 reads it.
+std::string formatIpv4(std::uint32_t address);
 
 inline bool isMulticast(std::uint32_t address) {
   return (address >> 28) == 0xEu;

@@ -47,6 +47,8 @@ TEST(Ipv4Address, DottedQuadsOnly) {
   for (const char* bad : {"", "1.2.3", "1.2.3.4.", "256.0.0.1", " 1.2.3.4", "1.2.3.4 ", "01.2.3.4",
                           "1.2.3.4x", "1..3.4", "-1.2.3.4", "1234.1.1.1", "host.example"})
     EXPECT_FALSE(parseIpv4(bad)) << bad;
+  EXPECT_EQ(formatIpv4(0xC0A80014u), "192.168.0.20");
+  EXPECT_EQ(parseIpv4(formatIpv4(0x7F000002u)), 0x7F000002u);
   EXPECT_TRUE(isMulticast(*parseIpv4("239.255.0.1")));
   EXPECT_FALSE(isMulticast(*parseIpv4("10.0.0.1")));
 }

@@ -184,6 +184,46 @@ TEST(StreamTracer, Rk4TrajectoriesMatchVtkStreamTracer) {
   EXPECT_LT(worstTime, 5e-3);  // VTK's integration time within 0.5%
 }
 
+// VTK's streamlines (of at least 10 points) each beside ours from the same
+// seed the same way, both as paths from the seed.
+struct LinePair {
+  Path theirs, mine;
+};
+std::vector<LinePair> pairWithOurs(vtkPolyData* lines, const std::vector<Streamline>& ours) {
+  vtkDataArray* times = lines->GetPointData()->GetArray("IntegrationTime");
+  std::vector<LinePair> pairs;
+  if (!times) {
+    ADD_FAILURE() << "VTK's lines have no IntegrationTime";
+    return pairs;
+  }
+  vtkNew<vtkIdList> ids;
+  lines->GetLines()->InitTraversal();
+  while (lines->GetLines()->GetNextCell(ids)) {
+    if (ids->GetNumberOfIds() < 10) continue;
+    LinePair pair;
+    for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i) {
+      double x[3];
+      lines->GetPoint(ids->GetId(i), x);
+      appendPoint(pair.theirs, {x[0], x[1], x[2]});
+    }
+    const bool backward = times->GetTuple1(ids->GetId(ids->GetNumberOfIds() - 1)) < 0.0;
+    const Streamline* line = nullptr;
+    for (const Streamline& l : ours)
+      if (glm::length(glm::dvec3(l.points[std::size_t(l.seedIndex)].position) -
+                      pair.theirs.points[0]) < 1e-5)
+        line = &l;
+    if (!line) {
+      ADD_FAILURE() << "no streamline of ours from the seed of VTK's";
+      continue;
+    }
+    const int n = int(line->points.size());
+    for (int i = line->seedIndex; i >= 0 && i < n; i += backward ? -1 : 1)
+      appendPoint(pair.mine, glm::dvec3(line->points[std::size_t(i)].position));
+    pairs.push_back(std::move(pair));
+  }
+  return pairs;
+}
+
 // Streamlines of the rake both ways against vtkStreamTracer's (BOTH
 // directions, LENGTH_UNIT steps of 0.01 m, RK4): both integrate the normalised
 // field in arc length, so they are compared at equal arc length from the seed.
@@ -215,28 +255,7 @@ TEST(StreamTracer, StreamlinesMatchVtkStreamTracerBothWays) {
 
   double worst = 0.0;
   int compared = 0;
-  vtkNew<vtkIdList> ids;
-  lines->GetLines()->InitTraversal();
-  while (lines->GetLines()->GetNextCell(ids)) {
-    if (ids->GetNumberOfIds() < 10) continue;
-    Path theirs;
-    for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i) {
-      double x[3];
-      lines->GetPoint(ids->GetId(i), x);
-      appendPoint(theirs, {x[0], x[1], x[2]});
-    }
-    const bool backward = times->GetTuple1(ids->GetId(ids->GetNumberOfIds() - 1)) < 0.0;
-    // Our line of the same seed, from the seed the same way.
-    const Streamline* line = nullptr;
-    for (const Streamline& l : ours)
-      if (glm::length(glm::dvec3(l.points[std::size_t(l.seedIndex)].position) - theirs.points[0]) <
-          1e-5)
-        line = &l;
-    ASSERT_NE(line, nullptr) << "no streamline of ours from the seed of VTK's";
-    Path mine;
-    const int n = int(line->points.size());
-    for (int i = line->seedIndex; i >= 0 && i < n; i += backward ? -1 : 1)
-      appendPoint(mine, glm::dvec3(line->points[std::size_t(i)].position));
+  for (const auto& [theirs, mine] : pairWithOurs(lines, ours)) {
     EXPECT_NEAR(mine.arc.back(), theirs.arc.back(), 0.02) << "both stop at 4 m or the field's edge";
     for (std::size_t i = 0; i < theirs.points.size(); ++i)
       if (theirs.arc[i] <= mine.arc.back())
@@ -244,6 +263,7 @@ TEST(StreamTracer, StreamlinesMatchVtkStreamTracerBothWays) {
     ++compared;
   }
   // Exported, the same lines read back in VTK point for point, with their arrays.
+  vtkNew<vtkIdList> ids;
   const auto vtp = dir / "streamlines.vtp";
   writeStreamlinesVtp(ours, ColorQuantity::VelocityZ, vtp);
   vtkNew<vtkXMLPolyDataReader> back;
@@ -299,33 +319,9 @@ double toPolyline(const glm::dvec3& x, const Path& p) {
 // whether both end alike; `compared` counts the directions.
 double worstAgainst(vtkPolyData* lines, const std::vector<Streamline>& ours, double ends,
                     int& compared) {
-  vtkDataArray* times = lines->GetPointData()->GetArray("IntegrationTime");
   double worst = 0.0;
   compared = 0;
-  vtkNew<vtkIdList> ids;
-  lines->GetLines()->InitTraversal();
-  while (lines->GetLines()->GetNextCell(ids)) {
-    if (ids->GetNumberOfIds() < 10) continue;
-    Path theirs;
-    for (vtkIdType i = 0; i < ids->GetNumberOfIds(); ++i) {
-      double x[3];
-      lines->GetPoint(ids->GetId(i), x);
-      appendPoint(theirs, {x[0], x[1], x[2]});
-    }
-    const bool backward = times->GetTuple1(ids->GetId(ids->GetNumberOfIds() - 1)) < 0.0;
-    const Streamline* line = nullptr;
-    for (const Streamline& l : ours)
-      if (glm::length(glm::dvec3(l.points[std::size_t(l.seedIndex)].position) - theirs.points[0]) <
-          1e-5)
-        line = &l;
-    if (!line) {
-      ADD_FAILURE() << "no streamline of ours from the seed of VTK's";
-      continue;
-    }
-    Path mine;
-    const int n = int(line->points.size());
-    for (int i = line->seedIndex; i >= 0 && i < n; i += backward ? -1 : 1)
-      appendPoint(mine, glm::dvec3(line->points[std::size_t(i)].position));
+  for (const auto& [theirs, mine] : pairWithOurs(lines, ours)) {
     // Both stop at 5 m or at the field's edge (RK45 within a step's sixty-fourth).
     EXPECT_NEAR(mine.arc.back(), theirs.arc.back(), ends);
     // Points at the end of VTK's line or past it have nothing to be compared
