@@ -87,8 +87,9 @@ void disc(Triangles& t, glm::vec3 centre, glm::vec3 normal, float r, int segment
 }  // namespace
 
 std::vector<ModelPart> helicopterModel(float r) {
-  // Sand-coloured livery, darker metal, tinted glazing.
-  const glm::vec4 livery(0.55f, 0.52f, 0.42f, 1.0f), metal(0.16f, 0.16f, 0.17f, 1.0f),
+  // Olive-drab livery, dark against the light dust it raises; darker metal,
+  // tinted glazing.
+  const glm::vec4 livery(0.3f, 0.34f, 0.2f, 1.0f), metal(0.16f, 0.16f, 0.17f, 1.0f),
       glass(0.16f, 0.24f, 0.3f, 1.0f);
   ModelPart body{"body", livery, {}}, dark{"metal", metal, {}}, glazing{"glazing", glass, {}},
       stabiliser{"stabiliser", livery, {}};
