@@ -202,6 +202,13 @@ void AppRun::openWalls() {
   std::map<int, ShareGroup> groups;  // by GPU, -1: windows
   for (int gpu : gpus)
     ++groups[gpu].readers;
+  const auto offscreenGpus =
+      std::ranges::count_if(groups, [](const auto& g) { return g.first >= 0; });
+  if (offscreenGpus > 2)
+    log::warn("this process draws on ", offscreenGpus,
+              " GPUs, whose GL threads take turns on a lock of the driver (NVIDIA's, measured: "
+              "four GPUs in one process are slower than one); run one rank a GPU in cluster "
+              "mode instead (mpirun, [[wall]] rank and gpu; docs/CLUSTER.md)");
   for (auto& [gpu, g] : groups)
     if (g.readers-- > 0 && config_.run.sharedSimulation)
       g.share = std::make_shared<SimulationShare>(g.readers);
