@@ -8,7 +8,8 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <cstdlib>
+#include <string>
+#include <utility>
 
 #include "core/config/app_config.h"
 #include "core/util/image.h"
