@@ -4,6 +4,7 @@
 #include <cstdlib>
 
 #include "app/app_run.h"
+#include "app/movie_recorder.h"
 #include "app/cluster/cluster_link.h"
 #include "contexts/platform/software_rasterizer.h"
 #include "core/sim/attribute_table.h"
@@ -38,7 +39,9 @@ void applySets(AppConfig& config, const std::vector<std::string>& sets) {
 
 App::App(AppConfig config, AppOptions options, ClusterLink* cluster)
     : config_(std::move(config)), options_(std::move(options)), cluster_(cluster) {
-  headless_ = options_.headless || !haveDisplay();
+  // A movie of its own size is a render job: its walls are drawn offscreen.
+  const bool movieSize = options_.movie && options_.movie->size;
+  headless_ = options_.headless || movieSize || !haveDisplay();
   if (headless_) {
     if (config_.anyWindow() && !options_.headless)
       log::info("no display: rendering the windows offscreen instead");
@@ -48,15 +51,6 @@ App::App(AppConfig config, AppOptions options, ClusterLink* cluster)
       if (w.stereo == StereoMode::QuadBuffer) w.stereo = StereoMode::SideBySide;
     }
   }
-  const bool offscreenOnly = !config_.anyWindow();
-  if (options_.frames) config_.run.frames = *options_.frames;
-  // Without windows nothing closes: a run of its own is kHeadlessFrames long,
-  // while an explicit --frames 0 runs until Ctrl-C or SIGTERM.
-  if (offscreenOnly && config_.run.frames == 0 && !options_.frames)
-    config_.run.frames = kHeadlessFrames;
-  if (offscreenOnly && !options_.screenshotDir) options_.screenshotDir = "out";
-  if (offscreenOnly && config_.run.fixedDt == 0.0f) config_.run.fixedDt = 1.0f / 60.0f;
-  applySets(config_, options_.sets);
   if (!options_.walls.empty()) {
     std::vector<WallSpec> chosen;
     for (const std::string& name : options_.walls) {
@@ -73,9 +67,25 @@ App::App(AppConfig config, AppOptions options, ClusterLink* cluster)
     }
     config_.walls = std::move(chosen);
   }
+  if (options_.movie) MovieRecorder::prepareWalls(config_, *options_.movie);
+  const bool offscreenOnly = !config_.anyWindow();
+  if (options_.frames) config_.run.frames = *options_.frames;
+  // Without windows nothing closes: a run of its own is kHeadlessFrames long,
+  // while an explicit --frames 0 runs until Ctrl-C or SIGTERM.
+  if (offscreenOnly && config_.run.frames == 0 && !options_.frames)
+    config_.run.frames = kHeadlessFrames;
+  if (offscreenOnly && !options_.screenshotDir && !options_.movie) options_.screenshotDir = "out";
+  if (offscreenOnly && config_.run.fixedDt == 0.0f) config_.run.fixedDt = 1.0f / 60.0f;
+  applySets(config_, options_.sets);
   // Offscreen there is nobody at a mouse: the menu shows when a script or a tracked wand drives it.
-  if (headless_ && !options_.menuScript && config_.tracking.source == TrackingSource::None)
+  if (headless_ && !options_.menuScript && config_.tracking.source == TrackingSource::None &&
+      !(options_.movie && options_.movie->menu))
     options_.noMenu = true;
+  // --movie-menu: a menu in the movie, on its first wall unless a wall is the menu's.
+  if (options_.movie && options_.movie->menu && !options_.noMenu && !config_.walls.empty() &&
+      std::none_of(config_.walls.begin(), config_.walls.end(),
+                   [](const WallSpec& w) { return w.menu; }))
+    config_.walls.front().menu = true;
   if (options_.noMenu) {
     config_.menu.operatorWindow.reset();
     for (WallSpec& w : config_.walls)

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "core/config/app_config.h"
+#include "core/movie/movie_spec.h"
 
 namespace sandstorm {
 
@@ -36,6 +37,7 @@ struct AppOptions {
   // The field editor at the end of the run: its composition as a configuration
   // block (.toml), the composed field as a grid file (.vti or .vdb).
   std::optional<std::filesystem::path> saveField, bakeField;
+  std::optional<MovieSpec> movie;  // --movie and its options
 };
 
 // Applies --set overrides to the configuration's particle state. Throws Error.

@@ -93,6 +93,13 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
   if (options_.stats) checkOutputFile(*options_.stats, "--stats");
   if (options_.saveField) checkOutputFile(*options_.saveField, "--save-field");
   if (options_.bakeField) checkOutputFile(*options_.bakeField, "--bake-field");
+  if (options_.movie) {
+    if (cluster_)
+      throw Error(
+          "--movie: cluster mode does not write movies; record the session (--record) and "
+          "replay it in one process into a movie (--replay FILE --movie FILE --movie-size WxH)");
+    movie_ = std::make_unique<MovieRecorder>(*options_.movie, config.walls, config.run);
+  }
   if (field_.timeline) useField(main_, field_);
   if (options_.record) {
     recorder_ = std::make_unique<SessionRecorder>(*options_.record);
@@ -304,7 +311,8 @@ void AppRun::openMenu() {
       },
       std::move(script));
   if (!operatorWindow_ && wallCount > 0)
-    walls_[std::size_t(shown)]->addOverlay([this] { return menu_->latest(); }, menu_->font());
+    walls_[std::size_t(shown)]->addOverlay([this] { return menu_->latest(); }, menu_->font(),
+                                           RenderWall::Layer::Menu);
 }
 
 // The legend's wall: the one marked `legend = true`, else the menu's, else the
@@ -328,7 +336,8 @@ void AppRun::openLegend() {
     const glm::ivec2 image = spec.window ? spec.window->size : spec.offscreenSize;
     const glm::ivec4 eye = eyeViewports(spec.stereo, image).front();
     legend_ = std::make_unique<LegendHost>(glm::ivec2(eye.z, eye.w));
-    wall->addOverlay([this] { return legend_->latest(); }, legend_->font());
+    wall->addOverlay([this] { return legend_->latest(); }, legend_->font(),
+                     RenderWall::Layer::Picture);
     return;
   }
 }
@@ -412,6 +421,12 @@ void AppRun::hookWalls() {
       if (cluster_)
         cluster_->drawn(int(i), packet.frame);  // the main thread holds the swap for every rank
     });
+    if (movie_ && movie_->shows(i))
+      walls_[i]->setPictureHook(
+          [this, i](WallRenderer& wall, const FramePacket& packet) {
+            movie_->add(i, packet.frame, wall.captureEyes());
+          },
+          options_.movie->menu);
   }
   for (auto& c : contexts_)
     c->start();
@@ -800,6 +815,7 @@ int AppRun::finish() {
   else if (lastFrame_ < 0 || frames_ <= lastFrame_)
     log::info("a window closed: stopped every wall cleanly");
   if (cluster_) cluster_->finish();
+  if (movie_ && !movie_->finish()) failed_ = true;
   if (options_.hashLog) hashes_.write(*options_.hashLog);
   if (!cluster_ || cluster_->root()) {
     try {

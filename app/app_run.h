@@ -22,6 +22,7 @@
 #include "app/menu/legend_host.h"
 #include "app/menu/menu_host.h"
 #include "app/molecule_push.h"
+#include "app/movie_recorder.h"
 #include "app/obstacle_drag.h"
 #include "app/obstacle_driver.h"
 #include "app/scene_setup.h"
@@ -127,6 +128,7 @@ class AppRun {
   std::vector<std::unique_ptr<RenderWall>> walls_;        // one a wall, by index
   std::vector<std::unique_ptr<RenderContext>> contexts_;  // after walls_: joined first
   HashLog hashes_;
+  std::unique_ptr<MovieRecorder> movie_;  // --movie; after walls_: they hand it pictures
 
   int frames_ = 0;
   bool failed_ = false;

@@ -11,6 +11,7 @@
 #endif
 #include "core/util/error.h"
 #include "core/util/log.h"
+#include "core/util/output_file.h"
 
 int main(int argc, char** argv) {
   using namespace sandstorm;
@@ -56,6 +57,26 @@ int main(int argc, char** argv) {
   cli.add_option("--bake-field", bakeField,
                  "At the end, write the field in use (with the editor's primitives) as a grid "
                  "file (.vti or .vdb)");
+  std::string moviePath, movieWall, movieStereo = "left", movieSize;
+  double movieFps = 0.0;
+  int movieCrf = -1;
+  bool movieMenu = false;
+  cli.add_option("--movie", moviePath,
+                 "Write the run as a movie: FILE.mp4 (H.264) or FILE.webm (VP9), one frame a "
+                 "frame at 1/run.fixed_dt frames per second");
+  cli.add_option("--movie-wall", movieWall,
+                 "The wall the movie shows (default: the first), or 'all': every wall unfolded "
+                 "as the CAVE's cross");
+  cli.add_option("--movie-stereo", movieStereo,
+                 "A stereo wall's left eye, or both eyes side by side: left or side-by-side");
+  cli.add_option("--movie-size", movieSize,
+                 "The movie's size, WIDTHxHEIGHT: its walls are drawn offscreen for it (e.g. a "
+                 "recorded session replayed into 3840x2160)");
+  cli.add_option("--movie-fps", movieFps, "The movie's frame rate (default: 1/run.fixed_dt)");
+  cli.add_option("--movie-crf", movieCrf,
+                 "The movie's quality: lower is better and larger; H.264 0-51 (default 18), "
+                 "VP9 0-63 (default 24)");
+  cli.add_flag("--movie-menu", movieMenu, "Show the menu panel in the movie");
   cli.add_option("--set", options.sets,
                  "Set an attribute, e.g. --set emitter.0.rate=50000 (repeatable)");
   std::string hashLog;
@@ -147,6 +168,29 @@ int main(int argc, char** argv) {
       return 2;
     }
     options.dumpTrails = trailPath;
+  }
+  try {
+    if (!moviePath.empty()) {
+      MovieSpec movie;
+      movie.path = moviePath;
+      movie.container = movieContainerFor(movie.path);
+      movie.wall = movieWall;
+      movie.stereo = parseMovieStereo(movieStereo);
+      if (!movieSize.empty()) movie.size = parseMovieSize(movieSize);
+      if (movieFps != 0.0) movie.fps = movieFps;
+      if (movieCrf != -1) movie.crf = movieCrf;
+      movie.menu = movieMenu;
+      validateMovieSpec(movie);
+      checkOutputFile(movie.path, "--movie");
+      options.movie = std::move(movie);
+    } else if (!movieWall.empty() || !movieSize.empty() || movieFps != 0.0 || movieCrf != -1 ||
+               movieMenu || movieStereo != "left") {
+      throw Error("--movie-wall, --movie-stereo, --movie-size, --movie-fps, --movie-crf and "
+                  "--movie-menu shape a movie: give --movie FILE too");
+    }
+  } catch (const Error& e) {
+    log::error(e.what());
+    return 2;
   }
 #ifdef SANDSTORM_MPI
   if (!fieldFile.empty() && (cluster || launchedByMpirun())) {

@@ -45,9 +45,10 @@ void RenderWall::open() {
 RenderWall::Drawn RenderWall::draw(const FramePacket& packet, glm::ivec2 framebufferSize) {
   const auto start = std::chrono::steady_clock::now();
   renderer_->frame(packet, framebufferSize);
-  for (const OverlaySource& overlay : overlays_)
-    if (const std::shared_ptr<const UiDrawData> data = overlay())
-      renderer_->drawOverlay(*data, font_);
+  drawOverlays(Layer::Picture);
+  if (pictureHook_ && !pictureWithMenu_) pictureHook_(*renderer_, packet);
+  drawOverlays(Layer::Menu);
+  if (pictureHook_ && pictureWithMenu_) pictureHook_(*renderer_, packet);
   if (hook_) hook_(*renderer_, packet);
   renderer_->endFrame();
   Drawn d;
@@ -66,6 +67,13 @@ RenderWall::Drawn RenderWall::draw(const FramePacket& packet, glm::ivec2 framebu
   d.cpuMs =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return d;
+}
+
+void RenderWall::drawOverlays(Layer layer) {
+  for (const Overlay& overlay : overlays_)
+    if (overlay.layer == layer)
+      if (const std::shared_ptr<const UiDrawData> data = overlay.source())
+        renderer_->drawOverlay(*data, font_);
 }
 
 void RenderWall::record(const FramePacket& packet, const Drawn& drawn, double intervalMs,

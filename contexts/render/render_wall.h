@@ -61,12 +61,19 @@ class RenderWall {
 
   // Before the drawing thread starts.
   void setFrameHook(FrameHook hook) { hook_ = std::move(hook); }
-  // Overlays are drawn in the order added (the menu, then the legend), each
-  // laid out for one eye's image and drawn into each eye's (a stereo wall
-  // shows it to both eyes, on the wall's plane); they share one font atlas
+  // Called with the wall's picture (the views and the legend) before the menu
+  // is drawn over it, or after it with `withMenu`: what a movie records.
+  void setPictureHook(FrameHook hook, bool withMenu) {
+    pictureHook_ = std::move(hook);
+    pictureWithMenu_ = withMenu;
+  }
+  // Overlays, each laid out for one eye's image and drawn into each eye's (a
+  // stereo wall shows it to both eyes, on the wall's plane): the picture's
+  // (the legend) first, then the menu's on top; they share one font atlas
   // (Dear ImGui's default), the first one's.
-  void addOverlay(OverlaySource source, UiFont font) {
-    overlays_.push_back(std::move(source));
+  enum class Layer { Picture, Menu };
+  void addOverlay(OverlaySource source, UiFont font, Layer layer) {
+    overlays_.push_back({std::move(source), layer});
     if (font_.rgba.empty()) font_ = std::move(font);
   }
   // Every frame from `warmup` on (after the thread ends: the whole run); past
@@ -101,8 +108,14 @@ class RenderWall {
  private:
   WallRendererSetup setup_;
   int consumer_;
-  FrameHook hook_;
-  std::vector<OverlaySource> overlays_;
+  FrameHook hook_, pictureHook_;
+  bool pictureWithMenu_ = false;
+  struct Overlay {
+    OverlaySource source;
+    Layer layer;
+  };
+  void drawOverlays(Layer layer);
+  std::vector<Overlay> overlays_;
   UiFont font_;
   std::unique_ptr<WallRenderer> renderer_;  // on the drawing thread only
   mutable std::mutex mutex_;

@@ -27,12 +27,32 @@ void checkComplete(GLuint fbo, const char* what) {
                        status, ")"));
 }
 
+// An image the GPU can hold: within its largest texture and renderbuffer side.
+void checkImageSize(glm::ivec2 size) {
+  GLint texture = 0, renderbuffer = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+  const int limit = std::min(texture, renderbuffer);
+  if (size.x > limit || size.y > limit)
+    throw Error(concat("an image of ", size.x, "x", size.y,
+                       " pixels is larger than this GPU draws (", limit,
+                       " pixels a side); choose a smaller wall or --movie-size"));
+}
+
+// After allocating a size's images: the GPU's memory held them.
+void checkAllocated(glm::ivec2 size, const char* what) {
+  if (glGetError() == GL_OUT_OF_MEMORY)
+    throw Error(concat("the GPU is out of memory for the ", what, " images of ", size.x, "x",
+                       size.y, " pixels; choose a smaller wall or --movie-size"));
+}
+
 }  // namespace
 
 void ViewTargets::resize(glm::ivec2 size) {
   if (size == size_) return;
   if (size.x <= 0 || size.y <= 0)
     throw Error(concat("ViewTargets: bad size ", size.x, "x", size.y));
+  checkImageSize(size);
   size_ = size;
   sceneColor_ = texture2D(GL_RGBA8, size);
   sceneDepth_ = texture2D(GL_R32F, size);
@@ -40,6 +60,7 @@ void ViewTargets::resize(glm::ivec2 size) {
   particleColor_ = texture2D(GL_RGBA16F, size);
   particleNormal_ = texture2D(GL_RGBA16F, size);
   particleLight_ = texture2D(GL_R16F, size);
+  checkAllocated(size, "view's");
 
   sceneFbo_ = gl::createFramebuffer();
   glNamedFramebufferTexture(sceneFbo_.id(), GL_COLOR_ATTACHMENT0, sceneColor_.id(), 0);
@@ -59,10 +80,12 @@ void OutputTarget::resize(glm::ivec2 size) {
   if (size == size_) return;
   if (size.x <= 0 || size.y <= 0)
     throw Error(concat("OutputTarget: bad size ", size.x, "x", size.y));
+  checkImageSize(size);
   size_ = size;
   color_ = texture2D(GL_RGBA8, size);
   depth_ = gl::createRenderbuffer();
   glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT24, size.x, size.y);
+  checkAllocated(size, "wall's");
   fbo_ = gl::createFramebuffer();
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
   glNamedFramebufferRenderbuffer(fbo_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());

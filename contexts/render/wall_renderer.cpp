@@ -4,6 +4,7 @@
 
 #include "core/cave/wall_views.h"
 #include "core/flow/probe.h"
+#include "core/movie/movie_compositor.h"
 #include "core/tracking/wand_handles.h"
 
 namespace sandstorm {
@@ -123,6 +124,13 @@ void WallRenderer::drawOverlay(const UiDrawData& overlay, const UiFont& font) {
 Image WallRenderer::capture() const {
   if (drewOffscreen_) return offscreen_.readPixels();
   return readFramebuffer(0, GL_BACK, lastSize_);
+}
+
+std::vector<Image> WallRenderer::captureEyes() const {
+  if (!drewOffscreen_ && wall_.stereo == StereoMode::QuadBuffer)
+    return {readFramebuffer(0, GL_BACK_LEFT, lastSize_),
+            readFramebuffer(0, GL_BACK_RIGHT, lastSize_)};
+  return splitEyes(capture(), wall_.stereo);
 }
 
 }  // namespace sandstorm

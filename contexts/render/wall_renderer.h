@@ -49,6 +49,10 @@ class WallRenderer {
   void drawOverlay(const UiDrawData& overlay, const UiFont& font);
   // The image last drawn (offscreen) or the back buffer (window).
   Image capture() const;
+  // Each eye's image of the last frame: the halves of a side-by-side or
+  // top-bottom image, a quad-buffered window's left and right back buffers;
+  // one image for the modes that draw one picture.
+  std::vector<Image> captureEyes() const;
 
   // GPU milliseconds of this wall's stages in a recent frame (a few frames old).
   const std::optional<gl::FrameStageTimer::Times>& stageTimes() const { return timer_.latest(); }

@@ -42,6 +42,11 @@ void ProgressMeter::report(std::uint64_t done, Clock::time_point now) {
   const double left = rate > 0.0 ? double(total_ - std::min(done, total_)) / rate : 0.0;
   char tail[64];
   std::snprintf(tail, sizeof tail, "%.1f s left", left);
+  if (total_ == 0) {  // open-ended: what is done and how fast
+    log::info(what_, ": ", done, " ", unit_, ", ", shortNumber(rate), " ", unit_, "/s");
+    said_ = true;
+    return;
+  }
   log::info(what_, ": ", total_ ? int(100.0 * double(done) / double(total_)) : 100, "% (", done,
             " of ", total_, " ", unit_, "), ", shortNumber(rate), " ", unit_, "/s, ", tail);
   said_ = true;
@@ -53,7 +58,7 @@ void ProgressMeter::finish() {
   char seconds[32];
   std::snprintf(seconds, sizeof seconds, "%.1f",
                 std::chrono::duration<double>(Clock::now() - start_).count());
-  log::info(what_, ": done, ", total_, " ", unit_, " in ", seconds, " s");
+  log::info(what_, ": done, ", total_ ? total_ : done_.load(), " ", unit_, " in ", seconds, " s");
 }
 
 }  // namespace sandstorm

@@ -17,7 +17,8 @@ namespace sandstorm {
 
 class ProgressMeter {
  public:
-  // `what`: "resampling wind.vtu"; `unit`: what is counted, plural ("cells").
+  // `what`: "resampling wind.vtu"; `unit`: what is counted, plural ("cells");
+  // `total` 0: open-ended (no share or time left is said).
   ProgressMeter(std::string what, std::uint64_t total, std::string unit);
   ProgressMeter(const ProgressMeter&) = delete;
   ProgressMeter& operator=(const ProgressMeter&) = delete;
