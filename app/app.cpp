@@ -4,8 +4,8 @@
 #include <cstdlib>
 
 #include "app/app_run.h"
-#include "app/movie_recorder.h"
 #include "app/cluster/cluster_link.h"
+#include "app/movie_recorder.h"
 #include "contexts/platform/software_rasterizer.h"
 #include "core/sim/attribute_table.h"
 #include "core/util/error.h"

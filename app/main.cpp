@@ -74,8 +74,8 @@ int main(int argc, char** argv) {
                  "recorded session replayed into 3840x2160)");
   cli.add_option("--movie-fps", movieFps, "The movie's frame rate (default: 1/run.fixed_dt)");
   cli.add_option("--movie-crf", movieCrf,
-                 "The movie's quality: lower is better and larger; H.264 0-51 (default 18), "
-                 "VP9 0-63 (default 24)");
+                 "The movie's quality: lower is better and larger; H.264 0-51 (default 15), "
+                 "VP9 0-63 (default 20)");
   cli.add_flag("--movie-menu", movieMenu, "Show the menu panel in the movie");
   cli.add_option("--set", options.sets,
                  "Set an attribute, e.g. --set emitter.0.rate=50000 (repeatable)");
@@ -185,8 +185,9 @@ int main(int argc, char** argv) {
       options.movie = std::move(movie);
     } else if (!movieWall.empty() || !movieSize.empty() || movieFps != 0.0 || movieCrf != -1 ||
                movieMenu || movieStereo != "left") {
-      throw Error("--movie-wall, --movie-stereo, --movie-size, --movie-fps, --movie-crf and "
-                  "--movie-menu shape a movie: give --movie FILE too");
+      throw Error(
+          "--movie-wall, --movie-stereo, --movie-size, --movie-fps, --movie-crf and "
+          "--movie-menu shape a movie: give --movie FILE too");
     }
   } catch (const Error& e) {
     log::error(e.what());

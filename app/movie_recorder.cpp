@@ -23,8 +23,8 @@ std::vector<std::size_t> chosenWalls(const std::vector<WallSpec>& walls, const M
     std::string known;
     for (const WallSpec& w : walls)
       known += (known.empty() ? "" : ", ") + w.name;
-    throw Error(concat("--movie-wall: no wall named '", spec.wall, "'; expected all or one of ",
-                       known));
+    throw Error(
+        concat("--movie-wall: no wall named '", spec.wall, "'; expected all or one of ", known));
   }
   return chosen;
 }
@@ -83,8 +83,9 @@ MovieRecorder::MovieRecorder(const MovieSpec& spec, const std::vector<WallSpec>&
   } else if (run.fixedDt > 0.0f) {
     fps_ = 1.0 / double(run.fixedDt);
   } else {
-    log::info("--movie: run.fixed_dt is 0 (the real clock), so the movie plays at 60 frames/s; "
-              "set --movie-fps or run.fixed_dt for another rate");
+    log::info(
+        "--movie: run.fixed_dt is 0 (the real clock), so the movie plays at 60 frames/s; "
+        "set --movie-fps or run.fixed_dt for another rate");
   }
   const glm::ivec2 size = compositor_->layout().frame;
   const int crf = spec.crf.value_or(defaultCrf(spec.container));
@@ -98,12 +99,12 @@ MovieRecorder::MovieRecorder(const MovieSpec& spec, const std::vector<WallSpec>&
         walls[i].stereo != StereoMode::LeftEye && walls[i].stereo != StereoMode::RightEye)
       log::info("--movie-stereo side-by-side: wall '", walls[i].name,
                 "' draws one picture; both halves show it");
-  log::info("movie ", spec.path.string(), ": ", size.x, "x", size.y, " ", encoder_->codec(),
-            " at ", fps_, " frames/s (--movie-crf ", crf, "), of ",
+  log::info("movie ", spec.path.string(), ": ", size.x, "x", size.y, " ", encoder_->codec(), " at ",
+            fps_, " frames/s (--movie-crf ", crf, "), of ",
             chosen.size() > 1 ? "the walls " : "wall ", names);
-  progress_ = std::make_unique<ProgressMeter>("writing " + spec.path.filename().string(),
-                                              run.frames > 0 ? std::uint64_t(run.frames) : 0,
-                                              "frames");
+  progress_ =
+      std::make_unique<ProgressMeter>("writing " + spec.path.filename().string(),
+                                      run.frames > 0 ? std::uint64_t(run.frames) : 0, "frames");
   thread_ = std::thread([this] { encodeLoop(); });
 }
 
@@ -133,12 +134,10 @@ void MovieRecorder::encodeLoop() {
   Image frame;
   for (;;) {
     std::vector<std::vector<Image>> eyes;
-    std::uint32_t at = 0;
     {
       std::unique_lock lock(mutex_);
       changed_.wait(lock, [&] { return !ready_.empty() || closing_; });
       if (ready_.empty()) return;
-      at = ready_.front().first;
       eyes = std::move(ready_.front().second);
       ready_.pop_front();
       changed_.notify_all();
@@ -148,7 +147,7 @@ void MovieRecorder::encodeLoop() {
       encoder_->add(frame);
       progress_->add(1);
     } catch (const Error& e) {
-      log::error(e.what(), " (the run's frame ", at, "); the movie ends there and plays as written");
+      log::error(e.what(), "; the movie ends there and plays as written");
       std::lock_guard lock(mutex_);
       failed_ = true;
       ready_.clear();
@@ -174,8 +173,8 @@ bool MovieRecorder::finish() {
       failed_ = true;
     }
   }
-  progress_->finish();
   if (!failed_) {
+    progress_->finish();
     std::error_code ec;
     const auto bytes = std::filesystem::file_size(spec_.path, ec);
     log::info("wrote ", encoder_->frames(), " frames to ", spec_.path.string(), " (",

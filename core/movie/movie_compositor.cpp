@@ -12,7 +12,8 @@ Image crop(const Image& image, int x, int y, int width, int height) {
   Image out{width, height, std::vector<std::uint8_t>(std::size_t(width) * std::size_t(height) * 4)};
   for (int row = 0; row < height; ++row)
     std::copy_n(image.rgba.data() + (std::size_t(y + row) * std::size_t(image.width) + x) * 4,
-                std::size_t(width) * 4, out.rgba.data() + std::size_t(row) * std::size_t(width) * 4);
+                std::size_t(width) * 4,
+                out.rgba.data() + std::size_t(row) * std::size_t(width) * 4);
   return out;
 }
 

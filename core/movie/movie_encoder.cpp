@@ -68,10 +68,11 @@ struct MovieEncoder::State {
       av_packet_rescale_ts(packet, codec->time_base, stream->time_base);
       packet->stream_index = stream->index;
       r = av_interleaved_write_frame(format, packet);
+      // Out to the file now, so that a full disk shows at this frame, not at the end.
+      if (r >= 0) avio_flush(format->pb);
       if (r < 0 || format->pb->error < 0)
         throw Error(concat(where(), ": writing frame ", frames, ": ",
-                           avError(r < 0 ? r : format->pb->error),
-                           " (is the disk full?)"));
+                           avError(r < 0 ? r : format->pb->error), " (is the disk full?)"));
     }
   }
 
@@ -114,7 +115,11 @@ MovieEncoder::MovieEncoder(const Options& options) : state_(std::make_unique<Sta
   s.packet = av_packet_alloc();
   if (!s.stream || !s.codec || !s.frame || !s.packet) throw Error(concat(where, ": out of memory"));
 
-  const AVRational rate = av_d2q(options.fps, 100000);
+  // 1 / run.fixed_dt in floats is 29.9999985 for 30: a whole rate is meant.
+  const double whole = std::round(options.fps);
+  const AVRational rate = std::abs(options.fps - whole) < 1e-4 * whole
+                              ? AVRational{int(whole), 1}
+                              : av_d2q(options.fps, 100000);
   s.codec->width = options.size.x;
   s.codec->height = options.size.y;
   s.codec->pix_fmt = AV_PIX_FMT_YUV420P;
@@ -153,7 +158,8 @@ MovieEncoder::MovieEncoder(const Options& options) : state_(std::make_unique<Sta
   r = av_frame_get_buffer(s.frame, 0);
   if (r < 0) throw Error(concat(where, ": ", avError(r)));
   s.scale = sws_getContext(options.size.x, options.size.y, AV_PIX_FMT_RGBA, options.size.x,
-                           options.size.y, AV_PIX_FMT_YUV420P, SWS_BICUBIC, nullptr, nullptr,
+                           options.size.y, AV_PIX_FMT_YUV420P,
+                           SWS_BICUBIC | SWS_ACCURATE_RND | SWS_FULL_CHR_H_INP, nullptr, nullptr,
                            nullptr);
   if (!s.scale) throw Error(concat(where, ": no RGB to YUV conversion"));
   // Full-range RGB in, BT.709 limited-range YUV out, as the stream says.
@@ -217,7 +223,8 @@ void MovieEncoder::close() {
     }
     const int r = av_write_trailer(s.format);
     if (failure.empty() && (r < 0 || s.format->pb->error < 0))
-      failure = concat(s.where(), ": finishing the file: ", avError(r < 0 ? r : s.format->pb->error));
+      failure =
+          concat(s.where(), ": finishing the file: ", avError(r < 0 ? r : s.format->pb->error));
   }
   if (s.format && s.format->pb) {
     const int r = avio_closep(&s.format->pb);

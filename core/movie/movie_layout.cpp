@@ -38,8 +38,8 @@ PlaneMap mapOf(const WallCorners& w, glm::dvec2 ll2, glm::dvec2 lr2, glm::dvec2 
 }
 
 glm::dvec3 normalOf(const WallCorners& w) {
-  return glm::normalize(glm::cross(glm::dvec3(w.lowerRight - w.lowerLeft),
-                                   glm::dvec3(w.upperLeft - w.lowerLeft)));
+  return glm::normalize(
+      glm::cross(glm::dvec3(w.lowerRight - w.lowerLeft), glm::dvec3(w.upperLeft - w.lowerLeft)));
 }
 
 // Whether p lies on the placed wall `w` (its plane, inside its rectangle), within `tol` metres.
@@ -59,8 +59,8 @@ MoviePlacement placementOf(glm::dvec2 ll, glm::dvec2 lr, glm::dvec2 ul) {
 struct Box {
   glm::dvec2 lo{std::numeric_limits<double>::max()}, hi{std::numeric_limits<double>::lowest()};
   void add(const MoviePlacement& p) {
-    for (const glm::dvec2& c : {p.origin, p.origin + p.right, p.origin + p.up,
-                                p.origin + p.right + p.up}) {
+    for (const glm::dvec2& c :
+         {p.origin, p.origin + p.right, p.origin + p.up, p.origin + p.right + p.up}) {
       lo = glm::min(lo, c);
       hi = glm::max(hi, c);
     }
@@ -100,8 +100,8 @@ std::vector<MoviePlacement> unfoldWalls(const std::vector<MovieWallShape>& walls
       maps[i] = mapOf(*w.corners, at, lr, ul);
     } else {
       const double height = box.empty() ? 1.0 : box.hi.y - box.lo.y;
-      placed[i] = placementOf(at, at + glm::dvec2(height * w.aspect, 0.0),
-                              at + glm::dvec2(0.0, height));
+      placed[i] =
+          placementOf(at, at + glm::dvec2(height * w.aspect, 0.0), at + glm::dvec2(0.0, height));
     }
   };
 
@@ -191,12 +191,11 @@ MovieLayout layoutMovie(const std::vector<MovieWallShape>& walls, std::optional<
   for (const MoviePlacement& p : unfolded) {
     // Metres (y up) to pixels (y down) of the left half.
     auto toPixels = [&](glm::dvec2 m) {
-      return glm::dvec2(offset.x + (m.x - box.lo.x) * scale,
-                        offset.y + (box.hi.y - m.y) * scale);
+      return glm::dvec2(offset.x + (m.x - box.lo.x) * scale, offset.y + (box.hi.y - m.y) * scale);
     };
     const glm::dvec2 origin = toPixels(p.origin);
-    layout.walls.push_back({origin, toPixels(p.origin + p.right) - origin,
-                            toPixels(p.origin + p.up) - origin});
+    layout.walls.push_back(
+        {origin, toPixels(p.origin + p.right) - origin, toPixels(p.origin + p.up) - origin});
   }
   return layout;
 }

@@ -33,8 +33,8 @@ MovieContainer movieContainerFor(const std::filesystem::path& path);
 // 16384. Throws Error naming --movie-size.
 glm::ivec2 parseMovieSize(const std::string& text);
 MovieStereo parseMovieStereo(const std::string& text);
-// Constant rate factor: lower is better and larger. H.264 0-51 (default 18,
-// visually lossless for most pictures), VP9 0-63 (default 24).
+// Constant rate factor: lower is better and larger. H.264 0-51 (default 15,
+// visually lossless for most pictures), VP9 0-63 (default 20).
 int defaultCrf(MovieContainer container);
 int maxCrf(MovieContainer container);
 // Checks the values that do not need the configuration; throws Error naming the option.
