@@ -52,6 +52,7 @@ class App {
   int run();
 
   const AppConfig& config() const { return config_; }
+  const AppOptions& options() const { return options_; }
 
  private:
   AppConfig config_;

@@ -7,6 +7,7 @@
 
 #include "app/cluster/cluster_link.h"
 #include "app/run_stats.h"
+#include "app/wall_lines.h"
 #include "contexts/particles/simulation_share.h"
 #include "contexts/platform/egl_context.h"
 #include "core/cave/wall_views.h"
@@ -127,6 +128,20 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
 }
 
 int AppRun::execute() {
+  if (!start()) return 1;
+  std::signal(SIGINT, onInterrupt);
+  std::signal(SIGTERM, onInterrupt);
+  if (cluster_)
+    runCluster();
+  else
+    while (advance()) {
+    }
+  std::signal(SIGINT, SIG_DFL);
+  std::signal(SIGTERM, SIG_DFL);
+  return stop();
+}
+
+bool AppRun::start() {
   openWindowLibrary();
   openWalls();
   std::vector<GLFWwindow*> inputWindows;
@@ -141,24 +156,19 @@ int AppRun::execute() {
   openMenu();
   openLegend();
   if (cluster_) {
-    if (!cluster_->ready("")) return 1;  // some rank could not open its walls; rank 0 said why
+    if (!cluster_->ready("")) return false;  // some rank could not open its walls; rank 0 said why
     cluster_->shareField(field_);
   }
   hookWalls();
-
   interrupted = false;
-  std::signal(SIGINT, onInterrupt);
-  std::signal(SIGTERM, onInterrupt);
   start_ = lastReport_ = lastTick_ = Clock::now();
-  if (cluster_)
-    runCluster();
-  else
-    runOneProcess();
+  return true;
+}
+
+int AppRun::stop() {
   channel_.close();
   for (auto& c : contexts_)
     c->join();
-  std::signal(SIGINT, SIG_DFL);
-  std::signal(SIGTERM, SIG_DFL);
   return finish();
 }
 
@@ -356,16 +366,8 @@ LineColoring AppRun::lineColoring(const WallRenderer& wall, const FramePacket& p
 // replica of the state and field at this frame.
 void AppRun::dumpStreamlines(const WallRenderer& wall, const FramePacket& packet) {
   const ParticleState& state = wall.particles().state();
-  const auto field = wall.particles().field();
-  PhysicsInputs in;
-  in.field = field ? field->field.get() : nullptr;
-  in.nextField = field ? field->next.get() : nullptr;
-  in.blend = packet.fieldBlend;
-  in.placement = field ? field->placement : FieldPlacement{};
-  in.settings = state.sim;
-  in.obstacles = collisionShapes(state, terrain_.get());
-  StreamlineSettings rake = state.streamlines;
-  const std::vector<Streamline> lines = traceStreamlines(rake, in);
+  const std::vector<Streamline> lines =
+      wallStreamlines(state, wall.particles().field(), packet.fieldBlend, terrain_.get());
   std::vector<PointArray> extra;
   if (auto a = streamlineColorArray(lines, lineColoring(wall, packet)))
     extra.push_back(std::move(*a));
@@ -378,18 +380,9 @@ void AppRun::dumpStreamlines(const WallRenderer& wall, const FramePacket& packet
 // The particles' trails as polylines, each ending at its particle.
 void AppRun::dumpTrails(const WallRenderer& wall, const FramePacket& packet) {
   const std::vector<Particle> particles = wall.particles().update().readBack();
-  const std::vector<std::vector<glm::vec3>> trails = wall.particles().readBackTrails();
-  std::vector<Streamline> lines;
   std::vector<std::size_t> owners;
-  for (std::size_t i = 0; i < trails.size() && i < particles.size(); ++i) {
-    if (trails[i].size() < 2) continue;
-    Streamline line;
-    for (auto it = trails[i].rbegin(); it != trails[i].rend(); ++it)
-      line.points.push_back({*it, particles[i].velocity()});
-    line.seedIndex = int(line.points.size()) - 1;  // arc length 0 at the particle
-    lines.push_back(std::move(line));
-    owners.push_back(i);
-  }
+  const std::vector<Streamline> lines =
+      trailLines(particles, wall.particles().readBackTrails(), owners);
   const ParticleState& state = wall.particles().state();
   std::vector<PointArray> extra;
   if (auto a = trailColorArray(lines, owners, particles, lineColoring(wall, packet)))
@@ -418,6 +411,7 @@ void AppRun::hookWalls() {
       }
       if (first && last && options_.dumpStreamlines) dumpStreamlines(wall, packet);
       if (first && last && options_.dumpTrails) dumpTrails(wall, packet);
+      if (observer_) observer_(i, wall, packet);
       if (cluster_)
         cluster_->drawn(int(i), packet.frame);  // the main thread holds the swap for every rank
     });
@@ -709,43 +703,43 @@ void AppRun::reportProgress(Clock::time_point now) {
             "'", tracking_ && tracking_->status().lost ? "; tracking lost" : "");
 }
 
-void AppRun::runOneProcess() {
-  log::info("the walls are ready: frames begin");
-  while (!interrupted && (lastFrame_ < 0 || frames_ <= lastFrame_)) {
-    const auto now = Clock::now();
-    const float dt = std::chrono::duration<float>(now - lastTick_).count();
-    lastTick_ = now;
-    if (glfw_) {
-      GlfwLibrary::pollEvents();
-      if (menu_ && menu_->scriptCloses(main_.nextFrame()) && !windows_.empty())
-        windows_.front()->requestClose();
-      bool close = menu_ && menu_->operatorWindowClosed();
-      for (GlfwWindow* w : windows_)
-        close = close || w->shouldClose();
-      if (close) break;
-      input_->update(dt, dynamic_cast<DesktopHead*>(head_.get()), navigation_,
-                     menu_ && menu_->wantsMouse(), false);
-      pickProbe();
-      dragObstacle(dt);
-    }
-    for (const auto& w : walls_)
-      failed_ = failed_ || w->error().has_value();
-    if (recorder_ && recorder_->error()) {
-      log::error(*recorder_->error());
-      failed_ = true;
-    }
-    if (failed_) break;
-    beforePacket(dt);
-    lastPacket_ = std::make_shared<const FramePacket>(main_.next());
-    if (!channel_.publish(lastPacket_)) break;
-    helicopter_.update(main_);
-    editor_.update(main_);
-    fluid_.update(main_, *lastPacket_);
-    if (!options_.replay) obstaclePaths_.update(main_, *lastPacket_);
-    ++frames_;
-    reportProgress(now);
-    pacer_.wait();
+bool AppRun::advance() {
+  if (interrupted || (lastFrame_ >= 0 && frames_ > lastFrame_)) return false;
+  if (frames_ == 0) log::info("the walls are ready: frames begin");
+  const auto now = Clock::now();
+  const float dt = std::chrono::duration<float>(now - lastTick_).count();
+  lastTick_ = now;
+  if (glfw_) {
+    GlfwLibrary::pollEvents();
+    if (menu_ && menu_->scriptCloses(main_.nextFrame()) && !windows_.empty())
+      windows_.front()->requestClose();
+    bool close = menu_ && menu_->operatorWindowClosed();
+    for (GlfwWindow* w : windows_)
+      close = close || w->shouldClose();
+    if (close) return false;
+    input_->update(dt, dynamic_cast<DesktopHead*>(head_.get()), navigation_,
+                   menu_ && menu_->wantsMouse(), false);
+    pickProbe();
+    dragObstacle(dt);
   }
+  for (const auto& w : walls_)
+    failed_ = failed_ || w->error().has_value();
+  if (recorder_ && recorder_->error()) {
+    log::error(*recorder_->error());
+    failed_ = true;
+  }
+  if (failed_) return false;
+  beforePacket(dt);
+  lastPacket_ = std::make_shared<const FramePacket>(main_.next());
+  if (!channel_.publish(lastPacket_)) return false;
+  helicopter_.update(main_);
+  editor_.update(main_);
+  fluid_.update(main_, *lastPacket_);
+  if (!options_.replay) obstaclePaths_.update(main_, *lastPacket_);
+  ++frames_;
+  reportProgress(now);
+  pacer_.wait();
+  return true;
 }
 
 void AppRun::runCluster() {

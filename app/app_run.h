@@ -9,6 +9,7 @@
 #pragma once
 
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -45,7 +46,24 @@ class AppRun {
  public:
   // The configuration as App prepared it (cluster mode: already localized to this rank).
   AppRun(const AppConfig& config, const AppOptions& options, bool headless, ClusterLink* cluster);
+  // The whole run: start(), frames until the end (or Ctrl-C), stop(). Returns the exit code.
   int execute();
+
+  // A run stepped by its caller (SteppedRun, the Python module; one process):
+  // start() opens the walls (false: they could not), advance() makes one
+  // frame's packet (false: the run is over: a wall failed, a window closed,
+  // the frame count reached), stop() ends it and returns the exit code.
+  // The observer, set before start(), sees every wall's every frame on the
+  // wall's drawing thread, after its picture and overlays are drawn.
+  using FrameObserver = std::function<void(std::size_t wall, WallRenderer&, const FramePacket&)>;
+  void setFrameObserver(FrameObserver observer) { observer_ = std::move(observer); }
+  bool start();
+  bool advance();
+  int stop();
+  int framesMade() const { return frames_; }
+  MainContext& mainContext() { return main_; }
+  const std::vector<std::unique_ptr<RenderWall>>& walls() const { return walls_; }
+  const std::shared_ptr<const HeightMap>& terrain() const { return terrain_; }
 
  private:
   using Clock = std::chrono::steady_clock;
@@ -59,7 +77,6 @@ class AppRun {
   void dumpTrails(const WallRenderer& wall, const FramePacket& packet);
   static LineColoring lineColoring(const WallRenderer& wall, const FramePacket& packet);
   void hookWalls();
-  void runOneProcess();
   void runCluster();
   void track(float dt);
   std::optional<WandMenuTarget> menuTarget() const;
@@ -128,6 +145,7 @@ class AppRun {
   std::vector<std::unique_ptr<RenderWall>> walls_;        // one a wall, by index
   std::vector<std::unique_ptr<RenderContext>> contexts_;  // after walls_: joined first
   HashLog hashes_;
+  FrameObserver observer_;
   std::unique_ptr<MovieRecorder> movie_;  // --movie; after walls_: they hand it pictures
 
   int frames_ = 0;

@@ -21,8 +21,8 @@
 #include "core/field/analytic_field_factory.h"
 #include "core/field/derived_scalars.h"
 #include "core/field/height_map_io.h"
+#include "core/io/field_info.h"
 #include "core/io/field_loader.h"
-#include "core/io/field_statistics.h"
 #include "core/io/field_writer.h"
 #include "core/util/error.h"
 
@@ -54,47 +54,10 @@ LoadOptions optionsFrom(const Common& c) {
   return o;
 }
 
-std::string vec(const glm::vec3& v) {
-  std::ostringstream os;
-  os << std::setprecision(6) << v.x << " " << v.y << " " << v.z;
-  return os.str();
-}
-
 void info(const std::string& file, const Common& c) {
   LoadReport report;
   const VectorField f = loadField(file, optionsFrom(c), &report);
-  const FieldStatistics s = computeStatistics(f);
-  const glm::ivec3 d = f.dims();
-  std::cout << "file:        " << file << "\n"
-            << "format:      " << report.format << "\n";
-  for (const std::string& block : report.blocks)
-    std::cout << "block:       " << block << "\n";
-  if (report.times.size() > 1)
-    std::cout << "time steps:  " << report.times.size() << ", t = " << report.times.front()
-              << " .. " << report.times.back() << " s (this is the first)\n";
-  if (report.cells > 0 || report.points > 0)
-    std::cout << "cells:       " << report.cells << " cells, " << report.points << " points\n";
-  std::cout << "contents:    ";
-  for (std::size_t i = 0; i < report.available.size(); ++i)
-    std::cout << (i ? ", " : "") << report.available[i];
-  std::cout << "\n"
-            << "loaded:      " << report.arrayName << "\n";
-  if (report.sourceDims != glm::ivec3(0))
-    std::cout << "file grid:   " << report.sourceDims.x << " x " << report.sourceDims.y << " x "
-              << report.sourceDims.z << "\n";
-  std::cout << "dims:        " << d.x << " x " << d.y << " x " << d.z << " (" << f.pointCount()
-            << " points" << (report.resampled ? ", resampled" : "") << ")\n"
-            << "bounds:      " << vec(f.bounds().min) << " .. " << vec(f.bounds().max) << " m\n"
-            << "spacing:     " << vec(f.spacing()) << " m\n"
-            << "magnitude:   min " << s.minMagnitude << "  max " << s.maxMagnitude << "  mean "
-            << s.meanMagnitude << "\n"
-            << "zero:        " << s.zero << " vectors\n"
-            << "NaN/Inf:     " << report.nonFinite << " vectors (replaced by zero)\n"
-            << "outside:     " << f.invalidCount()
-            << " points outside the file's cells (vtkValidPointMask)\n"
-            << "scalars:     " << f.scalarNames() << "\n";
-  for (const std::string& note : report.notes)
-    std::cout << "note:        " << note << "\n";
+  std::cout << describeField(file, f, report);
 }
 
 void convert(const std::string& in, const std::string& out, const Common& c) {
