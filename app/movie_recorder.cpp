@@ -38,6 +38,13 @@ MovieWallShape shapeOf(const WallSpec& wall) {
   return shape;
 }
 
+// The wall the cross unfolds from: the one named "front", else the first.
+std::size_t rootOf(const std::vector<WallSpec>& walls, const std::vector<std::size_t>& chosen) {
+  for (std::size_t k = 0; k < chosen.size(); ++k)
+    if (walls[chosen[k]].name == "front") return k;
+  return 0;
+}
+
 std::vector<MovieWallShape> shapesOf(const std::vector<WallSpec>& walls,
                                      const std::vector<std::size_t>& chosen) {
   std::vector<MovieWallShape> shapes;
@@ -51,7 +58,8 @@ std::vector<MovieWallShape> shapesOf(const std::vector<WallSpec>& walls,
 void MovieRecorder::prepareWalls(AppConfig& config, const MovieSpec& spec) {
   const std::vector<std::size_t> chosen = chosenWalls(config.walls, spec);
   if (!spec.size) return;
-  const MovieLayout layout = layoutMovie(shapesOf(config.walls, chosen), spec.size, spec.stereo);
+  const MovieLayout layout = layoutMovie(shapesOf(config.walls, chosen), spec.size, spec.stereo,
+                                         rootOf(config.walls, chosen));
   std::vector<WallSpec> walls;
   for (std::size_t k = 0; k < chosen.size(); ++k) {
     WallSpec w = config.walls[chosen[k]];
@@ -77,7 +85,7 @@ MovieRecorder::MovieRecorder(const MovieSpec& spec, const std::vector<WallSpec>&
     slots_[chosen[k]] = int(k);
   shown_ = chosen.size();
   compositor_ = std::make_unique<MovieCompositor>(
-      layoutMovie(shapesOf(walls, chosen), spec.size, spec.stereo));
+      layoutMovie(shapesOf(walls, chosen), spec.size, spec.stereo, rootOf(walls, chosen)));
   if (spec.fps) {
     fps_ = *spec.fps;
   } else if (run.fixedDt > 0.0f) {

@@ -75,8 +75,11 @@ glm::ivec2 MoviePlacement::pixels() const {
           std::max(1, int(std::lround(glm::length(up))))};
 }
 
-std::vector<MoviePlacement> unfoldWalls(const std::vector<MovieWallShape>& walls) {
+std::vector<MoviePlacement> unfoldWalls(const std::vector<MovieWallShape>& walls,
+                                        std::size_t root) {
   if (walls.empty()) throw Error("--movie: there are no walls to record");
+  if (root >= walls.size()) root = 0;
+  std::vector<std::size_t> order;  // the walls in the order they were placed
   std::vector<std::optional<MoviePlacement>> placed(walls.size());
   std::vector<std::optional<PlaneMap>> maps(walls.size());
   double size = 0.0;  // the largest wall edge, for the tolerance
@@ -103,6 +106,7 @@ std::vector<MoviePlacement> unfoldWalls(const std::vector<MovieWallShape>& walls
       placed[i] =
           placementOf(at, at + glm::dvec2(height * w.aspect, 0.0), at + glm::dvec2(0.0, height));
     }
+    order.push_back(i);
   };
 
   // A wall joined to placed wall `a`: coplanar, or along one of its edges.
@@ -116,6 +120,7 @@ std::vector<MoviePlacement> unfoldWalls(const std::vector<MovieWallShape>& walls
       const glm::dvec2 ll = m.map(c[0]), lr = m.map(c[1]), ul = m.map(c[3]);
       placed[i] = placementOf(ll, lr, ul);
       maps[i] = mapOf(b, ll, lr, ul);
+      order.push_back(i);
       return true;
     }
     for (int e = 0; e < 4; ++e) {
@@ -135,18 +140,21 @@ std::vector<MoviePlacement> unfoldWalls(const std::vector<MovieWallShape>& walls
       c2[std::size_t((e + 2) % 4)] = c2[std::size_t(q)] + depth * n;
       placed[i] = placementOf(c2[0], c2[1], c2[3]);
       maps[i] = mapOf(b, c2[0], c2[1], c2[3]);
+      order.push_back(i);
       return true;
     }
     return false;
   };
 
-  placeAlone(0);
+  placeAlone(root);
   for (;;) {
     bool progress = false;
     for (std::size_t i = 0; i < walls.size(); ++i) {
       if (placed[i] || !walls[i].corners) continue;
-      for (std::size_t a = 0; a < walls.size() && !placed[i]; ++a)
-        if (maps[a] && join(i, a)) progress = true;
+      // Joined to the earliest placed wall it meets: the floor to the front, not to a side.
+      const std::vector<std::size_t> byPlacement = order;
+      for (std::size_t a : byPlacement)
+        if (!placed[i] && maps[a] && join(i, a)) progress = true;
     }
     if (progress) continue;
     const auto next = std::ranges::find_if(placed, [](const auto& p) { return !p; });
@@ -160,8 +168,8 @@ std::vector<MoviePlacement> unfoldWalls(const std::vector<MovieWallShape>& walls
 }
 
 MovieLayout layoutMovie(const std::vector<MovieWallShape>& walls, std::optional<glm::ivec2> size,
-                        MovieStereo stereo) {
-  const std::vector<MoviePlacement> unfolded = unfoldWalls(walls);
+                        MovieStereo stereo, std::size_t root) {
+  const std::vector<MoviePlacement> unfolded = unfoldWalls(walls, root);
   Box box;
   for (const MoviePlacement& p : unfolded)
     box.add(p);

@@ -1,5 +1,5 @@
 // MovieLayout: where each wall's picture goes in a movie frame. The walls are
-// unfolded into the first wall's plane as a CAVE's cross is drawn on paper: a
+// unfolded into the front wall's plane as a CAVE's cross is drawn on paper: a
 // wall that shares an edge with a placed one turns about that edge into the
 // plane, on the far side from it (the floor below the front, the sides beside
 // it, the back beyond a side); a wall in the same plane keeps its place (a
@@ -43,13 +43,16 @@ struct MovieLayout {
 };
 
 // The walls laid out in their unfolded plane, in metres with y up (camera
-// walls: one unit high). Throws Error when there are no walls.
-std::vector<MoviePlacement> unfoldWalls(const std::vector<MovieWallShape>& walls);
+// walls: one unit high), starting from wall `root` (the front), each joined
+// to the earliest placed wall it shares an edge with. Throws Error when
+// there are no walls.
+std::vector<MoviePlacement> unfoldWalls(const std::vector<MovieWallShape>& walls,
+                                        std::size_t root = 0);
 
 // The frame: `size` if given (the cross scaled to fit each half, centred),
 // else at the finest pixel density any wall's image has, capped at 16384
 // pixels a side.
 MovieLayout layoutMovie(const std::vector<MovieWallShape>& walls, std::optional<glm::ivec2> size,
-                        MovieStereo stereo);
+                        MovieStereo stereo, std::size_t root = 0);
 
 }  // namespace sandstorm

@@ -53,6 +53,16 @@ TEST(MovieLayout, TheBackWallUnfoldsBeyondASideWithoutCoveringAnything) {
   expectPlaced(p[3], {-6, 0}, {3, 0}, {0, 3});
 }
 
+TEST(MovieLayout, TheCrossUnfoldsFromTheFrontWhateverTheWallsOrder) {
+  // As config/cave4-desktop.toml lists them: the left wall first. The floor
+  // meets the left wall too, but joins the front, placed before it.
+  const auto p = unfoldWalls({shape(kLeft), shape(kFront), shape(kRight), shape(kFloor)}, 1);
+  expectPlaced(p[1], {0, 0}, {3, 0}, {0, 3});
+  expectPlaced(p[0], {-3, 0}, {3, 0}, {0, 3});
+  expectPlaced(p[2], {3, 0}, {3, 0}, {0, 3});
+  expectPlaced(p[3], {0, -3}, {3, 0}, {0, 3});
+}
+
 TEST(MovieLayout, TiledAndUnconnectedWallsKeepTheirShape) {
   // Two tiles of one display wall, side by side, and a camera wall.
   const WallCorners a = wall({0, 2, 0}, {2, 2, 0}, {0, 2, 1});
