@@ -71,6 +71,24 @@ TEST(Movie, FramesSizeRateAndPicturesAsAskedLiveAndReplayed) {
   if (!crossed.frames.empty()) writePng(crossed.frames.back(), dir / "cross-last.png");
 }
 
+// A scripted menu on the wall: in its screenshot always, in its movie only with --movie-menu.
+TEST(Movie, TheMenuIsLeftOutUnlessAsked) {
+  const auto dir = test::scratchDir("movie-menu");
+  const std::string d = dir.string() + "/";
+  const std::string run = kConfig + "--walls front --menu-script tests/data/slider.script ";
+  const auto plain = runSandstorm(run + "--movie " + d + "plain.mp4 --screenshot " + d);
+  const auto menu = runSandstorm(run + "--movie " + d + "menu.mp4 --movie-menu");
+  ASSERT_EQ(plain.exitCode, 0) << plain.output;
+  ASSERT_EQ(menu.exitCode, 0) << menu.output;
+  const Image shot = readPng(dir / "front.png");  // the menu covers most of this small wall
+  const test::DecodedMovie without = decodeMovie(dir / "plain.mp4");
+  const test::DecodedMovie with = decodeMovie(dir / "menu.mp4");
+  ASSERT_EQ(without.frames.size(), 24u);
+  ASSERT_EQ(with.frames.size(), 24u);
+  EXPECT_GE(psnr(with.frames.back(), shot), 28.0);  // the menu's text, in 4:2:0 colour
+  EXPECT_LT(psnr(without.frames.back(), shot), 15.0);
+}
+
 TEST(Movie, BadRequestsStopTheStartNamingTheOption) {
   const auto dir = test::scratchDir("movie-bad");
   const std::string ok = (dir / "ok.mp4").string();
