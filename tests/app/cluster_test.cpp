@@ -147,7 +147,8 @@ TEST(Cluster, TheCpuSolversFlowReachesEveryRankAtTheSameFrame) {
 // every rank still holds one process's particles.
 TEST(Cluster, EveryRanksGpuSolvesTheSameFlow) {
   const std::string output = expectSameHashes("tests/data/identity-cluster-gpu-solver.toml",
-                                              "--set solver.enabled=true --set solver.device=gpu",
+                                              "--set solver.enabled=true --set solver.device=gpu "
+                                              "--set solver.every=4 --set solver.iterations=4",
                                               40, "cluster-gpu-solver");
   EXPECT_EQ(count(output, "field grids: 1 ("), 3) << output;
 }
