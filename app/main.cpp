@@ -74,7 +74,7 @@ int main(int argc, char** argv) {
                  "recorded session replayed into 3840x2160)");
   cli.add_option("--movie-fps", movieFps, "The movie's frame rate (default: 1/run.fixed_dt)");
   cli.add_option("--movie-crf", movieCrf,
-                 "The movie's quality: lower is better and larger; H.264 0-51 (default 15), "
+                 "The movie's quality: lower is better and larger; H.264 0-51 (default 13), "
                  "VP9 0-63 (default 20)");
   cli.add_flag("--movie-menu", movieMenu, "Show the menu panel in the movie");
   cli.add_option("--set", options.sets,

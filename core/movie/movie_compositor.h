@@ -29,7 +29,7 @@ class MovieCompositor {
 
  private:
   MovieLayout layout_;
-  ParallelFor rows_{4};
+  ParallelFor rows_;  // the machine's threads (at most 16)
 };
 
 }  // namespace sandstorm

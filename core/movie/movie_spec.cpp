@@ -50,7 +50,7 @@ MovieStereo parseMovieStereo(const std::string& text) {
 }
 
 int defaultCrf(MovieContainer container) {
-  return container == MovieContainer::Mp4 ? 15 : 20;
+  return container == MovieContainer::Mp4 ? 13 : 20;
 }
 
 int maxCrf(MovieContainer container) {

@@ -33,7 +33,7 @@ MovieContainer movieContainerFor(const std::filesystem::path& path);
 // 16384. Throws Error naming --movie-size.
 glm::ivec2 parseMovieSize(const std::string& text);
 MovieStereo parseMovieStereo(const std::string& text);
-// Constant rate factor: lower is better and larger. H.264 0-51 (default 15,
+// Constant rate factor: lower is better and larger. H.264 0-51 (default 13,
 // visually lossless for most pictures), VP9 0-63 (default 20).
 int defaultCrf(MovieContainer container);
 int maxCrf(MovieContainer container);

@@ -85,7 +85,10 @@ TEST(Movie, TheMenuIsLeftOutUnlessAsked) {
   const test::DecodedMovie with = decodeMovie(dir / "menu.mp4");
   ASSERT_EQ(without.frames.size(), 24u);
   ASSERT_EQ(with.frames.size(), 24u);
-  EXPECT_GE(psnr(with.frames.back(), shot), 28.0);  // the menu's text, in 4:2:0 colour
+  // The menu shows this run's timings, which differ from the screenshot run's:
+  // the same picture but for a few digits (measured 25 to 31 dB), against a
+  // picture without the menu (9 dB).
+  EXPECT_GE(psnr(with.frames.back(), shot), 20.0);
   EXPECT_LT(psnr(without.frames.back(), shot), 15.0);
 }
 
