@@ -19,6 +19,7 @@
 #include "app/stepped_run.h"
 #include "core/io/field_info.h"
 #include "core/io/field_loader.h"
+#include "core/io/field_writer.h"
 #include "core/io/pvd_file.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
@@ -103,6 +104,30 @@ Field loadFieldFile(const std::string& path, const std::optional<std::string>& a
   for (const VectorField::Scalars& s : f.scalars())
     out.scalars[py::str(s.name)] = array<float>({d.z, d.y, d.x}, s.values.data());
   return out;
+}
+
+// numpy in: a field computed in Python, written where Run and every other
+// tool can open it.
+void saveFieldFile(const std::string& path, const py::array& values, const py::tuple& bounds,
+                   const std::string& arrayName) {
+  const auto v = py::array_t<float, py::array::c_style | py::array::forcecast>::ensure(values);
+  if (!v || v.ndim() != 4 || v.shape(3) != 3)
+    throw Error(concat("save_field ", path, ": values must be an array of shape (nz, ny, nx, 3)"));
+  const glm::ivec3 dims(int(v.shape(2)), int(v.shape(1)), int(v.shape(0)));
+  if (py::len(bounds) != 2)
+    throw Error(concat("save_field ", path, ": bounds must be ((x0, y0, z0), (x1, y1, z1))"));
+  Box box;
+  for (int c = 0; c < 3; ++c) {
+    const py::sequence lo = bounds[0].cast<py::sequence>(), hi = bounds[1].cast<py::sequence>();
+    if (py::len(lo) != 3 || py::len(hi) != 3)
+      throw Error(concat("save_field ", path, ": bounds must be ((x0, y0, z0), (x1, y1, z1))"));
+    box.min[c] = lo[c].cast<float>();
+    box.max[c] = hi[c].cast<float>();
+  }
+  std::vector<glm::vec3> points(std::size_t(v.size() / 3));
+  std::copy_n(v.data(), v.size(), &points[0].x);
+  py::gil_scoped_release release;
+  saveField(path, VectorField(box, dims, std::move(points)), arrayName);
 }
 
 py::list linesToPython(const std::vector<Streamline>& lines) {
@@ -313,6 +338,11 @@ PYBIND11_MODULE(sandstorm, m) {
         py::arg("resolution") = py::none(), py::arg("time_step") = 0,
         "Reads a field file (every format the application reads): its values, validity "
         "mask, bounds, times and description. resolution=(nx, ny, nz) resamples.");
+
+  m.def("save_field", &saveFieldFile, py::arg("path"), py::arg("values"), py::arg("bounds"),
+        py::arg("array") = "velocity",
+        "Writes (nz, ny, nx, 3) values over bounds ((x0, y0, z0), (x1, y1, z1)) as a .vti or "
+        ".vdb file that Run, load_field and the application open");
 
   py::class_<Run>(m, "Run", "A run of the application, stepped from Python, headless")
       .def(py::init<const std::string&, const std::optional<py::dict>&,

@@ -68,6 +68,19 @@ def test_a_loaded_field_is_the_analytic_field(tmp_path):
     np.testing.assert_allclose(g.values, analytic(*grid((9, 7, 5), lo, hi)), atol=2e-6)
 
 
+def test_a_field_made_in_numpy_runs(tmp_path):
+    dims, lo, hi = (12, 10, 8), (-2.0, -2.0, 0.0), (2.0, 2.0, 3.0)
+    values = analytic(*grid(dims, lo, hi))
+    sandstorm.save_field(str(tmp_path / "mine.vti"), values, (lo, hi))
+    back = sandstorm.load_field(str(tmp_path / "mine.vti"))
+    np.testing.assert_array_equal(back.values, values)
+    with sandstorm.Run(str(tmp_path / "mine.vti")) as run:  # opened as `sandstorm FILE` opens it
+        run.step(5)
+        assert len(run.particles()["position"]) > 0
+    with pytest.raises(sandstorm.Error, match="shape \\(nz, ny, nx, 3\\)"):
+        sandstorm.save_field(str(tmp_path / "bad.vti"), values[..., :2], (lo, hi))
+
+
 def test_a_series_has_its_times_and_steps(tmp_path):
     dims, lo, hi = (3, 3, 3), (0.0, 0.0, 0.0), (1.0, 1.0, 1.0)
     x, y, z = grid(dims, lo, hi)
@@ -170,3 +183,17 @@ def test_a_run_writes_a_movie(tmp_path):
         run.step(12)
     data = (tmp_path / "a.mp4").read_bytes()
     assert data[4:8] == b"ftyp" and len(data) > 1000
+
+
+def test_closing_a_run_ends_its_threads_and_contexts():
+    def threads():
+        return len(os.listdir("/proc/self/task"))
+    with sandstorm.Run(CONFIG, walls=["front"]) as run:  # a first run: libraries load
+        run.step(2)
+    before = threads()
+    for _ in range(3):
+        run = sandstorm.Run(CONFIG)  # four walls drawn by a thread of their own
+        run.step(2)
+        assert threads() > before
+        assert run.close() == 0
+        assert threads() == before
