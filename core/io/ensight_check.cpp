@@ -393,6 +393,13 @@ EnSightCase parseEnSightCase(const fs::path& caseFile) {
     }
     std::string key = colon == std::string::npos ? pendingKey : lower(trim(line.substr(0, colon)));
     const std::string value = colon == std::string::npos ? line : trim(line.substr(colon + 1));
+    // VTK's reader loops for ever on a key it does not know in these sections.
+    if (section == "format" && key != "type")
+      fail(concat("'", key.substr(0, 40), "' in the FORMAT section; expected type"));
+    if (section == "geometry" && key != "model")
+      fail(concat("'", key.substr(0, 40),
+                  "' in the GEOMETRY section; expected model (measured, match and boundary "
+                  "geometry are not read)"));
     if (section == "format") {
       if (key == "type") gold = lower(value).find("gold") != std::string::npos;
     } else if (section == "geometry") {

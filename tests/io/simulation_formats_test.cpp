@@ -326,6 +326,15 @@ TEST(SimulationFormats, EnSightGoldBinaryTransientCases) {
   test::expectError([&] { loadField(path); }, {"outside the case's folder"});
   test::writeText(path, "FORMAT\ntype: ensight\nGEOMETRY\nmodel: flow.0.00000.geo\n");
   test::expectError([&] { loadField(path); }, {path.string(), "EnSight 6 is not read"});
+  // Keys VTK's reader would loop on for ever (a fuzz find), refused before it reads.
+  test::writeText(path,
+                  "FORMAT\ntype: ensight gold\nGEOMETRY\nmodel: flow.0.00000.geo\n"
+                  "Xmodel: vector per node: 1 velocity flow.vel\n");
+  test::expectError([&] { loadField(path); },
+                    {path.string() + ":5", "'xmodel' in the GEOMETRY section; expected model"});
+  test::writeText(path, "FORMAT\ntype: ensight gold\nXtype: foo\nGEOMETRY\nmodel: flow.geo\n");
+  test::expectError([&] { loadField(path); },
+                    {path.string() + ":3", "'xtype' in the FORMAT section; expected type"});
 }
 
 // EnSight Gold ascii as its format guide lays it out: a value a line, an
