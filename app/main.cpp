@@ -11,7 +11,6 @@
 #endif
 #include "core/util/error.h"
 #include "core/util/log.h"
-#include "core/util/output_file.h"
 
 int main(int argc, char** argv) {
   using namespace sandstorm;
@@ -171,18 +170,14 @@ int main(int argc, char** argv) {
   }
   try {
     if (!moviePath.empty()) {
-      MovieSpec movie;
-      movie.path = moviePath;
-      movie.container = movieContainerFor(movie.path);
-      movie.wall = movieWall;
-      movie.stereo = parseMovieStereo(movieStereo);
-      if (!movieSize.empty()) movie.size = parseMovieSize(movieSize);
-      if (movieFps != 0.0) movie.fps = movieFps;
-      if (movieCrf != -1) movie.crf = movieCrf;
-      movie.menu = movieMenu;
-      validateMovieSpec(movie);
-      checkOutputFile(movie.path, "--movie");
-      options.movie = std::move(movie);
+      options.movie = movieSpecFrom(
+          {.path = moviePath,
+           .wall = movieWall,
+           .stereo = movieStereo,
+           .size = movieSize.empty() ? std::nullopt : std::optional<std::string>(movieSize),
+           .fps = movieFps != 0.0 ? std::optional<double>(movieFps) : std::nullopt,
+           .crf = movieCrf != -1 ? std::optional<int>(movieCrf) : std::nullopt,
+           .menu = movieMenu});
     } else if (!movieWall.empty() || !movieSize.empty() || movieFps != 0.0 || movieCrf != -1 ||
                movieMenu || movieStereo != "left") {
       throw Error(

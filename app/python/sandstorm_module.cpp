@@ -23,7 +23,6 @@
 #include "core/io/pvd_file.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
-#include "core/util/output_file.h"
 
 namespace py = pybind11;
 
@@ -175,18 +174,13 @@ class Run {
     if (record) options.record = *record;
     if (replay) options.replay = *replay;
     if (movie) {
-      MovieSpec spec;
-      spec.path = *movie;
-      spec.container = movieContainerFor(spec.path);
-      spec.wall = movieWall.value_or("");
-      spec.stereo = parseMovieStereo(movieStereo);
-      if (movieSize) spec.size = parseMovieSize(*movieSize);
-      spec.fps = movieFps;
-      spec.crf = movieCrf;
-      spec.menu = movieMenu;
-      validateMovieSpec(spec);
-      checkOutputFile(spec.path, "--movie");
-      options.movie = spec;
+      options.movie = movieSpecFrom({.path = *movie,
+                                     .wall = movieWall.value_or(""),
+                                     .stereo = movieStereo,
+                                     .size = movieSize,
+                                     .fps = movieFps,
+                                     .crf = movieCrf,
+                                     .menu = movieMenu});
     }
     py::gil_scoped_release release;
     AppConfig appConfig;

@@ -5,6 +5,7 @@
 #include <charconv>
 
 #include "core/util/error.h"
+#include "core/util/output_file.h"
 
 namespace sandstorm {
 namespace {
@@ -64,6 +65,21 @@ void validateMovieSpec(const MovieSpec& spec) {
     throw Error(concat("--movie-crf ", *spec.crf, ": expected 0 (lossless) to ",
                        maxCrf(spec.container), " for a .",
                        spec.container == MovieContainer::Mp4 ? "mp4" : "webm", " movie"));
+}
+
+MovieSpec movieSpecFrom(const MovieRequest& request) {
+  MovieSpec spec;
+  spec.path = request.path;
+  spec.container = movieContainerFor(spec.path);
+  spec.wall = request.wall;
+  spec.stereo = parseMovieStereo(request.stereo);
+  if (request.size) spec.size = parseMovieSize(*request.size);
+  spec.fps = request.fps;
+  spec.crf = request.crf;
+  spec.menu = request.menu;
+  validateMovieSpec(spec);
+  checkOutputFile(spec.path, "--movie");
+  return spec;
 }
 
 }  // namespace sandstorm

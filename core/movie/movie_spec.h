@@ -40,4 +40,18 @@ int maxCrf(MovieContainer container);
 // Checks the values that do not need the configuration; throws Error naming the option.
 void validateMovieSpec(const MovieSpec& spec);
 
+// --movie and its options as the command line (or the Python module) gives
+// them: parsed, checked, and the file tried for writing. Throws Error naming
+// the option.
+struct MovieRequest {
+  std::filesystem::path path;
+  std::string wall;
+  std::string stereo = "left";
+  std::optional<std::string> size;
+  std::optional<double> fps;
+  std::optional<int> crf;
+  bool menu = false;
+};
+MovieSpec movieSpecFrom(const MovieRequest& request);
+
 }  // namespace sandstorm
