@@ -106,9 +106,11 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
     recorder_ = std::make_unique<SessionRecorder>(*options_.record);
     main_.setChangeListener(
         [this](std::uint32_t frame, const StateChange& c) { recorder_->record(frame, c); });
+    main_.setFieldWaitListener([this](std::uint32_t frame) { recorder_->recordFieldWait(frame); });
   }
   if (options_.replay) {
     replay_ = readSession(*options_.replay);
+    main_.replayFieldWaits(replay_.fieldWaits);
     for (const ScheduledChange& s : replay_.changes)
       main_.schedule(s.frame, s.change);
   }

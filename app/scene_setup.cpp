@@ -8,7 +8,7 @@
 #include "core/field/height_map_io.h"
 #include "core/io/field_format.h"
 #include "core/io/field_loader.h"
-#include "core/io/field_sequence.h"
+#include "core/io/series_index.h"
 #include "core/sim/main_context.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
@@ -59,6 +59,59 @@ FieldSource watchedField(const std::filesystem::path& path, const FieldSpec& spe
   }
 }
 
+// Bytes a step of `field`'s grid takes in memory (vectors, mask, scalar arrays).
+double stepBytes(const VectorField& field) {
+  double bytes = 12.0 * double(field.pointCount()) + double(field.validity().size());
+  for (const VectorField::Scalars& s : field.scalars())
+    bytes += 4.0 * double(s.values.size());
+  return bytes;
+}
+
+// A file: one field, or a series (a .pvd, or the steps an Exodus, EnSight,
+// OpenFOAM ... file holds) streamed from disk as playback needs its steps.
+FieldSource fileField(const std::filesystem::path& path, const FieldSpec& spec,
+                      const LoadOptions& options) {
+  FieldSource out;
+  LoadReport report;
+  SeriesIndex index = indexSeries(path, options, &report);
+  for (const std::string& note : report.notes)
+    log::info(path.string(), ": ", note);
+  if (report.nonFinite > 0)
+    log::warn(path.string(), ": ", report.nonFinite, " NaN or Inf vectors set to zero");
+  if (index.times.size() == 1) {
+    out.description = concat(path.string(), " (", report.format, ", '", report.arrayName, "')");
+    out.update = FieldUpdate{.field = index.first, .placement = spec.placement};
+    return out;
+  }
+  // The two steps being blended, and those read ahead, within the budget.
+  const double step = stepBytes(*index.first), budget = double(options.memoryBudget);
+  const std::size_t fit = std::size_t(budget / step);
+  if (fit < 2)
+    throw Error(concat(path.string(), ": a step of the series takes ", formatByteSize(step),
+                       " and playback holds two at once, beyond field.memory_budget (",
+                       formatByteSize(budget),
+                       "); raise field.memory_budget or lower "
+                       "field.resolution"));
+  std::size_t capacity = 2 + std::size_t(spec.readAhead);
+  if (capacity > fit) {
+    log::warn(path.string(), ": field.read_ahead = ", spec.readAhead, " needs ", capacity,
+              " steps of ", formatByteSize(step), " in memory, beyond field.memory_budget (",
+              formatByteSize(budget), "); reading ", fit - 2, " ahead");
+    capacity = fit;
+  }
+  const std::size_t steps = index.times.size();
+  const double start = index.times.front(), end = index.times.back();
+  auto reader =
+      std::make_shared<SeriesReader>(std::move(index.sources), index.stepOptions, index.first,
+                                     capacity, int(std::clamp<std::size_t>(capacity - 2, 1, 4)));
+  out.description = concat(path.string(), ": ", steps, " steps over ", end - start, " s ('",
+                           report.arrayName, "'), streamed: at most ", capacity, " steps (",
+                           formatByteSize(double(capacity) * step), ") in memory");
+  out.timeline = FieldTimeline(std::move(index.times), reader);
+  out.update = FieldUpdate{.field = index.first, .placement = spec.placement};
+  return out;
+}
+
 }  // namespace
 
 FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDir) {
@@ -77,35 +130,14 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
     LoadOptions options;
     options.arrayName = spec.name;
     options.resolution = spec.resolution;
+    options.memoryBudget = std::size_t(fieldMemoryBudget(spec));
     std::error_code ec;
     // A folder is watched for steps, unless it is an OpenFOAM case.
     if (spec.watch || (std::filesystem::is_directory(path, ec) &&
                        detectFieldFormat(path) != FieldFormat::OpenFoam)) {
       out = watchedField(path, spec, options);
     } else {
-      // A file's time steps (a .pvd, or Exodus, EnSight, OpenFOAM ... steps) make a timeline.
-      LoadReport report;
-      FieldSequence sequence = FieldSequence::fromFile(path, options, Playback::Clamp, &report);
-      for (const std::string& note : report.notes)
-        log::info(path.string(), ": ", note);
-      if (report.nonFinite > 0)
-        log::warn(path.string(), ": ", report.nonFinite, " NaN or Inf vectors set to zero");
-      const double start = sequence.startTime(), end = sequence.endTime();
-      std::vector<double> times;
-      for (std::size_t i = 0; i < sequence.size(); ++i)
-        times.push_back(sequence.time(i));
-      std::vector<std::shared_ptr<const VectorField>> frames;
-      for (VectorField& frame : std::move(sequence).takeFrames())
-        frames.push_back(std::make_shared<const VectorField>(std::move(frame)));
-      if (frames.size() > 1) {
-        out.description = concat(path.string(), ": ", frames.size(), " frames over ", end - start,
-                                 " s ('", report.arrayName, "')");
-        out.timeline = FieldTimeline(std::move(times), std::move(frames));
-        out.update = FieldUpdate{.field = out.timeline->frame(0), .placement = spec.placement};
-      } else {
-        out.description = concat(path.string(), " (", report.format, ", '", report.arrayName, "')");
-        out.update = FieldUpdate{.field = frames.front(), .placement = spec.placement};
-      }
+      out = fileField(path, spec, options);
     }
   }
   const VectorField& f = *out.update.field;

@@ -249,10 +249,11 @@ void MpiCluster::shareField(const FieldSource& field) {
   } frameTimeout{mpi_, frameTimeout_};
   if (!readField_) return;
   std::vector<std::shared_ptr<const VectorField>> grids;
-  if (field.timeline)
+  if (field.timeline) {
+    // A streamed series' steps in memory now (its first); later ones travel as they come.
     for (std::size_t i = 0; i < field.timeline->size(); ++i)
-      grids.push_back(field.timeline->frame(i));
-  else
+      if (auto frame = field.timeline->frame(i)) grids.push_back(std::move(frame));
+  } else
     grids.push_back(field.update.field);
   if (broadcaster_->pinLocal(grids) && root())
     log::info("cluster: every rank read the same field (", grids.size(),

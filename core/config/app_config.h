@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "core/cave/wall.h"
+#include "core/config/byte_size.h"
 #include "core/config/gpu_tuning.h"
 #include "core/field/box.h"
 #include "core/field/field_placement.h"
@@ -133,7 +134,22 @@ struct FieldSpec {
   double stepInterval = 1.0;   // s between a folder's steps (a .pvd gives its own times)
   double waitSeconds = 60.0;   // how long the start waits for a watched source's first step
   double settleSeconds = 0.2;  // a step's file is complete once unchanged this long
+  // The largest grid (and a series' steps in memory together) a file may
+  // load into, in bytes; 0: automatic, half this machine's memory
+  // (fieldMemoryBudget()).
+  std::uint64_t memoryBudget = 0;
+  // Steps of a series read ahead of playback, beyond the two being blended.
+  int readAhead = 2;
 };
+
+// FieldSpec::memoryBudget, the automatic one worked out: half the host's
+// memory (a field is read into host memory before the GPU gets it), 2 GiB
+// where the system does not say.
+inline std::uint64_t fieldMemoryBudget(const FieldSpec& spec) {
+  if (spec.memoryBudget > 0) return spec.memoryBudget;
+  const std::uint64_t host = hostMemoryBytes();
+  return host > 0 ? host / 2 : std::uint64_t{2} << 30;
+}
 
 struct SceneSpec {
   std::string terrain = "flat";  // "flat", or a height map file (16-bit PGM / PNG)

@@ -10,6 +10,7 @@
 #include <toml.hpp>
 
 #include "core/config/app_config.h"
+#include "core/config/byte_size.h"
 #include "core/config/pvx_import.h"
 #include "core/sim/attribute_table.h"
 #include "core/tracking/ipv4_address.h"
@@ -274,7 +275,7 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   r.checkKeys(t, "field",
               {"source", "name", "dims", "resolution", "bounds_min", "bounds_max", "params",
                "offset", "scale", "yaw_deg", "rotation_deg", "mode", "expression", "watch",
-               "step_interval", "wait_s", "settle_s"});
+               "step_interval", "wait_s", "settle_s", "memory_budget", "read_ahead"});
   f.source = r.string(t, "source", "field", f.source);
   if (f.source != "analytic") f.source = relativeTo(r, f.source);
   // A file's array or grid is chosen by name; without one, the file's only (or active) vector one.
@@ -340,6 +341,21 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   f.waitSeconds = r.real(t, "wait_s", "field", float(f.waitSeconds));
   if (!(f.waitSeconds >= 0.0 && f.waitSeconds <= 86400.0))
     r.fail(*r.find(t, "wait_s"), "field.wait_s", "expected 0..86400 seconds");
+  if (const toml::value* budget = r.find(t, "memory_budget")) {
+    const char* expected =
+        "expected \"auto\" or a size such as \"16 GiB\" or \"800 MiB\" (at least 1 MiB)";
+    if (budget->is_integer() && budget->as_integer() >= (1 << 20)) {
+      f.memoryBudget = std::uint64_t(budget->as_integer());
+    } else if (budget->is_string() && budget->as_string().str == "auto") {
+      f.memoryBudget = 0;
+    } else {
+      const std::optional<std::uint64_t> bytes =
+          budget->is_string() ? parseByteSize(budget->as_string().str) : std::nullopt;
+      if (!bytes || *bytes < (1u << 20)) r.fail(*budget, "field.memory_budget", expected);
+      f.memoryBudget = *bytes;
+    }
+  }
+  f.readAhead = r.integer(t, "read_ahead", "field", f.readAhead, 0, 64);
 }
 
 void readScene(const Reader& r, const toml::value& t, SceneSpec& s) {

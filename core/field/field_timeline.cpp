@@ -6,17 +6,29 @@
 #include "core/util/error.h"
 
 namespace sandstorm {
+namespace {
+
+void checkTimes(const std::vector<double>& times) {
+  if (times.empty()) throw Error("FieldTimeline: no frames");
+  for (std::size_t i = 0; i < times.size(); ++i) {
+    if (!std::isfinite(times[i]))
+      throw Error(concat("FieldTimeline: frame ", i, "'s time is not finite"));
+    if (i > 0 && !(times[i] > times[i - 1]))
+      throw Error(concat("FieldTimeline: frame ", i, "'s time ", times[i], " does not follow ",
+                         times[i - 1]));
+  }
+}
+
+}  // namespace
 
 FieldTimeline::FieldTimeline(std::vector<double> times,
                              std::vector<std::shared_ptr<const VectorField>> frames)
     : times_(std::move(times)), frames_(std::move(frames)) {
   if (frames_.empty() || frames_.size() != times_.size())
     throw Error(concat("FieldTimeline: ", frames_.size(), " frames for ", times_.size(), " times"));
+  checkTimes(times_);
   for (std::size_t i = 0; i < frames_.size(); ++i) {
     if (!frames_[i]) throw Error(concat("FieldTimeline: frame ", i, " is missing"));
-    if (i > 0 && !(times_[i] > times_[i - 1]))
-      throw Error(concat("FieldTimeline: frame ", i, "'s time ", times_[i], " does not follow ",
-                         times_[i - 1]));
     const VectorField& f = *frames_[i];
     if (f.dims() != frames_[0]->dims() || f.bounds().min != frames_[0]->bounds().min ||
         f.bounds().max != frames_[0]->bounds().max)
@@ -25,7 +37,22 @@ FieldTimeline::FieldTimeline(std::vector<double> times,
   }
 }
 
+FieldTimeline::FieldTimeline(std::vector<double> times, std::shared_ptr<FieldSteps> steps)
+    : times_(std::move(times)), steps_(std::move(steps)) {
+  if (!steps_) throw Error("FieldTimeline: no steps to stream");
+  checkTimes(times_);
+}
+
+std::shared_ptr<const VectorField> FieldTimeline::frame(std::size_t i) const {
+  return steps_ ? steps_->get(i) : frames_[i];
+}
+
+std::shared_ptr<const VectorField> FieldTimeline::wait(std::size_t i) const {
+  return steps_ ? steps_->wait(i) : frames_[i];
+}
+
 void FieldTimeline::append(double time, std::shared_ptr<const VectorField> frame) {
+  if (steps_) throw Error("FieldTimeline: a streamed series takes no appended frames");
   if (!frame) throw Error("FieldTimeline: a missing frame");
   if (!(time > times_.back()))
     throw Error(concat("FieldTimeline: a frame at ", time, " s does not follow the last one's ",
@@ -42,7 +69,7 @@ void FieldTimeline::append(double time, std::shared_ptr<const VectorField> frame
 }
 
 FieldTimeline::Position FieldTimeline::at(double t, bool loop) const {
-  const std::size_t n = frames_.size();
+  const std::size_t n = times_.size();
   if (n == 1) return {0, 0, 0.0f};
   const double start = times_.front(), end = times_.back();
   if (loop) {
@@ -60,6 +87,31 @@ FieldTimeline::Position FieldTimeline::at(double t, bool loop) const {
       std::size_t(std::upper_bound(times_.begin(), times_.end(), t) - times_.begin());
   const std::size_t a = b - 1;
   return {a, b, float((t - times_[a]) / (times_[b] - times_[a]))};
+}
+
+void FieldTimeline::readAhead(const Position& at, bool backwards, bool loop) const {
+  if (!steps_) return;
+  const std::size_t n = times_.size(), count = std::min(steps_->capacity(), n);
+  std::vector<std::size_t> order;
+  const auto add = [&](std::size_t i) {
+    if (std::find(order.begin(), order.end(), i) == order.end()) order.push_back(i);
+  };
+  add(at.first);
+  add(at.second);
+  // Onwards from the pair in the direction of play.
+  std::size_t i = backwards ? at.first : at.second;
+  for (std::size_t tries = 0; order.size() < count && tries < n; ++tries) {
+    if (backwards) {
+      if (i == 0 && !loop) break;
+      i = i == 0 ? n - 1 : i - 1;
+    } else {
+      if (i + 1 == n && !loop) break;
+      i = i + 1 == n ? 0 : i + 1;
+    }
+    add(i);
+  }
+  order.resize(std::min(order.size(), count));
+  steps_->want(order);
 }
 
 }  // namespace sandstorm

@@ -4,15 +4,43 @@
 // the two frames themselves (field + (next - field) * weight), so a frame
 // travels to them once, when it comes into use, and only the weight travels
 // every frame.
+//
+// Frames are held in memory (a field stream's steps, tests), or streamed:
+// FieldSteps reads them on demand (core/io/series_reader.h) and keeps only
+// the few around the playback time, so a series of any length plays in the
+// memory of a handful of steps. A streamed frame may not be read yet:
+// frame() is then null and the main context's playback waits for it.
 #pragma once
 
 #include <cstddef>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "core/field/vector_field.h"
 
 namespace sandstorm {
+
+// Frames read on demand. Thread-safe.
+class FieldSteps {
+ public:
+  virtual ~FieldSteps() = default;
+  // The steps wanted next, most urgent first (at most capacity()); steps not
+  // listed may be dropped from memory, listed ones are read in this order.
+  virtual void want(const std::vector<std::size_t>& order) = 0;
+  // Step i if it is in memory, null otherwise (never blocks).
+  virtual std::shared_ptr<const VectorField> get(std::size_t i) = 0;
+  // Step i, read now if it has to be. Throws Error naming its file when it cannot be read.
+  virtual std::shared_ptr<const VectorField> wait(std::size_t i) = 0;
+  // Why step i could not be read (its file and the error), or empty.
+  virtual std::string failure(std::size_t i) const = 0;
+  // The step's file, for messages.
+  virtual std::string name(std::size_t i) const = 0;
+  // How many steps may be in memory at once (>= 2: the two being blended).
+  virtual std::size_t capacity() const = 0;
+  // The steps in memory now, ascending (for the menu's loaded range).
+  virtual std::vector<std::size_t> resident() const = 0;
+};
 
 class FieldTimeline {
  public:
@@ -21,25 +49,40 @@ class FieldTimeline {
     float weight = 0.0f;  // towards `second`
   };
 
-  // Throws Error unless there are frames, times increase, and every frame
-  // shares the first one's dims and bounds.
+  // Frames held in memory. Throws Error unless there are frames, times
+  // increase, and every frame shares the first one's dims and bounds.
   FieldTimeline(std::vector<double> times, std::vector<std::shared_ptr<const VectorField>> frames);
+  // Frames streamed by `steps` (which checks each one's grid as it reads it).
+  FieldTimeline(std::vector<double> times, std::shared_ptr<FieldSteps> steps);
 
   // Before the start: the first frame; past the end: the last, or with `loop`
   // wrapped into [start, end) (the last frame blends back into the first).
   Position at(double time, bool loop) const;
 
   // A new last frame (a simulation's next step, FieldStream): throws Error,
-  // changing nothing, unless it follows the last frame's time and shares its grid.
+  // changing nothing, unless it follows the last frame's time and shares its
+  // grid, or the frames are streamed.
   void append(double time, std::shared_ptr<const VectorField> frame);
 
-  std::size_t size() const { return frames_.size(); }
-  const std::shared_ptr<const VectorField>& frame(std::size_t i) const { return frames_[i]; }
+  std::size_t size() const { return times_.size(); }
   double time(std::size_t i) const { return times_[i]; }
+  bool streamed() const { return steps_ != nullptr; }
+  // Frame i, or null while a streamed frame is not read yet.
+  std::shared_ptr<const VectorField> frame(std::size_t i) const;
+  // Frame i, waiting for a streamed one to be read. Throws Error when it cannot be.
+  std::shared_ptr<const VectorField> wait(std::size_t i) const;
+  // Streamed frames only: null otherwise.
+  const std::shared_ptr<FieldSteps>& steps() const { return steps_; }
+
+  // Asks a streamed timeline for the frames playback needs from `at` on,
+  // going forwards or (with a negative speed) backwards: the pair in use,
+  // then the frames after it, wrapping with `loop`, as many as the steps keep.
+  void readAhead(const Position& at, bool backwards, bool loop) const;
 
  private:
   std::vector<double> times_;
-  std::vector<std::shared_ptr<const VectorField>> frames_;
+  std::vector<std::shared_ptr<const VectorField>> frames_;  // held frames (empty when streamed)
+  std::shared_ptr<FieldSteps> steps_;
 };
 
 }  // namespace sandstorm

@@ -81,8 +81,8 @@ void checkCgns(const std::string& file, const LoadOptions& options) {
     }
     bytes += vertices * 8.0 * 6.0;  // coordinates and a vector of doubles
     if (bytes > budget)
-      f.fail(concat(where, ": its vertices take the memory budget of ", options.memoryBudget,
-                    " bytes"));
+      f.fail(concat(where, ": its vertices take the memory budget (field.memory_budget) of ",
+                    options.memoryBudget, " bytes"));
     if (type != CGNS_ENUMV(Unstructured)) continue;
     int sections = 0;
     f.ok(cg_nsections(f.id(), 1, z, &sections), concat("reading ", where, "'s sections"));
@@ -101,7 +101,7 @@ void checkCgns(const std::string& file, const LoadOptions& options) {
       f.ok(cg_ElementDataSize(f.id(), 1, z, s, &dataSize), concat("sizing ", in));
       if (end < start || dataSize < 0 || double(dataSize) * 8.0 > budget - bytes)
         f.fail(concat(in, ": elements ", start, "..", end, " of ", dataSize,
-                      " ids, beyond the memory budget"));
+                      " ids, beyond the memory budget (field.memory_budget)"));
       bytes += double(dataSize) * 8.0;
       std::vector<cgsize_t> ids(static_cast<std::size_t>(dataSize));
       std::vector<cgsize_t> parents;

@@ -145,7 +145,8 @@ void checkExodusHeader(const NetcdfHeader& h, const std::string& file, const Loa
   if (bytes > double(options.memoryBudget))
     throw Error(concat(file, ": its ", nodes->length, " nodes, their connectivity and one step of ",
                        nodalVariables, " nodal variables need ", bytes,
-                       " bytes, beyond the memory budget of ", options.memoryBudget, " bytes"));
+                       " bytes, beyond the memory budget (field.memory_budget) of ",
+                       options.memoryBudget, " bytes"));
 }
 
 }  // namespace

@@ -86,7 +86,8 @@ VectorField readFga(const std::filesystem::path& path, const LoadOptions& option
   }
   const double points = double(n.x) * n.y * n.z;
   if (points > double(VectorField::kMaxPoints) || points * 12.0 > double(options.memoryBudget))
-    throw Error(concat(file, ": ", n.x, "x", n.y, "x", n.z, " voxels exceed the memory budget of ",
+    throw Error(concat(file, ": ", n.x, "x", n.y, "x", n.z,
+                       " voxels exceed the memory budget (field.memory_budget) of ",
                        options.memoryBudget, " bytes (12 per point)"));
   if (points * 6.0 > double(size))  // each vector takes at least "0,0,0,"
     throw Error(concat(file, ": ", n.x, "x", n.y, "x", n.z, " vectors cannot fit in its ", size,

@@ -35,8 +35,8 @@ void checkResolution(const std::string& file, const LoadOptions& options) {
   const double points = double(r.x) * r.y * r.z;
   if (points > double(VectorField::kMaxPoints) || points * 12.0 > double(options.memoryBudget))
     throw Error(concat(file, ": the requested ", r.x, "x", r.y, "x", r.z, " grid needs ",
-                       points * 12.0, " bytes, beyond the memory budget of ", options.memoryBudget,
-                       " bytes; choose a lower field.resolution"));
+                       points * 12.0, " bytes, beyond the memory budget (field.memory_budget) of ",
+                       options.memoryBudget, " bytes; choose a lower field.resolution"));
 }
 
 // The VTK data a VTK-based format's reader makes of the file; null for the

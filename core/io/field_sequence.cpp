@@ -76,7 +76,8 @@ FieldSequence FieldSequence::fromPvd(const std::filesystem::path& pvd, const Loa
     times.push_back(f.time);
     bytes += 12.0 * double(frames.back().pointCount());
     if (bytes > double(options.memoryBudget))
-      throw Error(concat(pvd.string(), ": its frames together exceed the memory budget of ",
+      throw Error(concat(pvd.string(),
+                         ": its frames together exceed the memory budget (field.memory_budget) of ",
                          options.memoryBudget, " bytes at ", f.file.string(),
                          "; lower the resolution (field.resolution)"));
     if (frames.size() > 1 && (frames.back().dims() != frames.front().dims() ||
@@ -119,8 +120,8 @@ FieldSequence FieldSequence::fromFile(const std::filesystem::path& path, const L
     bytes += 12.0 * double(frames.back().pointCount());
     if (bytes > double(options.memoryBudget))
       throw Error(concat(path.string(), ": its ", first.times.size(),
-                         " time steps together exceed the memory budget of ", options.memoryBudget,
-                         " bytes at step ", i, " (t = ", first.times[i],
+                         " time steps together exceed the memory budget (field.memory_budget) of ",
+                         options.memoryBudget, " bytes at step ", i, " (t = ", first.times[i],
                          "); lower the resolution (field.resolution)"));
     if (frames.back().bounds().min != frames.front().bounds().min ||
         frames.back().bounds().max != frames.front().bounds().max)
@@ -148,8 +149,8 @@ FieldSequence FieldSequence::fromPattern(const std::string& pattern, double star
     bytes += 12.0 * double(frames.back().pointCount());
     if (bytes > double(options.memoryBudget))
       throw Error(concat(name, ": the frames of '", pattern,
-                         "' together exceed the memory budget of ", options.memoryBudget,
-                         " bytes; lower the resolution (field.resolution)"));
+                         "' together exceed the memory budget (field.memory_budget) of ",
+                         options.memoryBudget, " bytes; lower the resolution (field.resolution)"));
     if (frames.size() > 1 && (frames.back().dims() != frames.front().dims() ||
                               frames.back().bounds().min != frames.front().bounds().min ||
                               frames.back().bounds().max != frames.front().bounds().max))

@@ -133,7 +133,8 @@ vtkSmartPointer<vtkDataObject> readNetcdfCf(const std::filesystem::path& path, L
     }
   if (bytes > double(options.memoryBudget))
     throw Error(concat(file, ": one time step of its variables on the grid of '", flow->name,
-                       "' needs ", bytes, " bytes, beyond the memory budget of ",
+                       "' needs ", bytes,
+                       " bytes, beyond the memory budget (field.memory_budget) of ",
                        options.memoryBudget, " bytes"));
 
   VtkMessageTrap trap(path);

@@ -289,7 +289,8 @@ class FoamScanner {
     if (count > kMaxCount)
       fail(concat("a list of ", count, " elements; OpenFOAM counts in 31 bits"));
     if (double(count) * 24.0 > double(budget_))
-      fail(concat("a list of ", count, " elements, beyond the memory budget of ", budget_,
+      fail(concat("a list of ", count,
+                  " elements, beyond the memory budget (field.memory_budget) of ", budget_,
                   " bytes"));
     const char open = char(in_.get()), close = open == '(' ? ')' : '}';
     // A binary file writes lists of fixed-size elements as raw bytes; lists

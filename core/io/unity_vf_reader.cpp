@@ -78,7 +78,8 @@ VectorField readUnityVf(const std::filesystem::path& path, const LoadOptions& op
                                        : "; the value count differs "
                                          "from the point count"));
   if (double(count) * 12.0 > double(options.memoryBudget))
-    throw Error(concat(file, ": ", count, " vectors exceed the memory budget of ",
+    throw Error(concat(file, ": ", count,
+                       " vectors exceed the memory budget (field.memory_budget) of ",
                        options.memoryBudget, " bytes"));
   std::vector<glm::vec3> raw(count);
   read(raw.data(), count * 12, "vectors");

@@ -189,7 +189,7 @@ class GridWalk {
     nodeBytes_ += bytes;
     if (nodeBytes_ > double(budget_))
       fail(concat("its tree's nodes need more than ", nodeBytes_,
-                  " bytes, beyond the memory budget of ", budget_, " bytes"));
+                  " bytes, beyond the memory budget (field.memory_budget) of ", budget_, " bytes"));
   }
 
   void root() {

@@ -78,12 +78,12 @@ void checkBudget(const glm::ivec3& dims, const std::string& file, const std::str
   const double limit = std::min(double(options.memoryBudget), 12.0 * VectorField::kMaxPoints);
   const double f = std::cbrt(limit / bytes) * 0.99;
   const glm::ivec3 fit = glm::max(glm::ivec3(glm::floor(glm::vec3(dims) * float(f))), 1);
-  throw Error(concat(file, ": densifying grid '", grid, "' over its active bounding box (index ",
-                     bbox.min(), " to ", bbox.max(), ") at ", dims.x, "x", dims.y, "x", dims.z,
-                     " points needs ", bytes, " bytes, beyond the memory budget of ",
-                     options.memoryBudget,
-                     " bytes. Lower the resolution (field.resolution, sandstorm-field",
-                     " --dims): ", fit.x, " ", fit.y, " ", fit.z, " fits"));
+  throw Error(concat(
+      file, ": densifying grid '", grid, "' over its active bounding box (index ", bbox.min(),
+      " to ", bbox.max(), ") at ", dims.x, "x", dims.y, "x", dims.z, " points needs ", bytes,
+      " bytes, beyond the memory budget (field.memory_budget) of ", options.memoryBudget,
+      " bytes. Lower the resolution (field.resolution, sandstorm-field", " --dims): ", fit.x, " ",
+      fit.y, " ", fit.z, " fits"));
 }
 
 template <class GridT>
@@ -228,9 +228,10 @@ void addScalarGrids(const std::filesystem::path& path, const std::vector<VdbGrid
   for (std::size_t i = 0; i < grids.size(); ++i) {
     if (!isScalarType(grids[i].type) || field.findScalars(grids[i].name)) continue;
     if (used + perArray > double(options.memoryBudget)) {
-      report.notes.push_back(concat("scalar grid '", grids[i].name,
-                                    "' left out: it would pass the memory budget of ",
-                                    options.memoryBudget, " bytes"));
+      report.notes.push_back(
+          concat("scalar grid '", grids[i].name,
+                 "' left out: it would pass the memory budget (field.memory_budget) of ",
+                 options.memoryBudget, " bytes"));
       continue;
     }
     checkVdbGrid(path, grids, i, options.memoryBudget);

@@ -128,10 +128,10 @@ void checkBudget(const glm::ivec3& dims, const std::filesystem::path& path,
                          "; expected a positive point count"));
   const double points = double(dims.x) * dims.y * dims.z;
   if (points > double(VectorField::kMaxPoints) || points * perPoint > double(options.memoryBudget))
-    throw Error(
-        concat(path.string(), ": a ", dims.x, "x", dims.y, "x", dims.z, " grid needs ",
-               points * perPoint, " bytes, beyond the memory budget of ", options.memoryBudget,
-               " bytes; choose a lower resolution (field.resolution, or sandstorm-field --dims)"));
+    throw Error(concat(
+        path.string(), ": a ", dims.x, "x", dims.y, "x", dims.z, " grid needs ", points * perPoint,
+        " bytes, beyond the memory budget (field.memory_budget) of ", options.memoryBudget,
+        " bytes; choose a lower resolution (field.resolution, or sandstorm-field --dims)"));
 }
 
 glm::ivec3 nativeDims(vtkDataSet* data) {

@@ -201,7 +201,8 @@ class Parser {
         points = true;
         const long long n = integer("POINTS count", 0, 1LL << 40);
         if (double(n) * 12.0 > double(budget_))
-          fail(concat("POINTS ", n, " exceed the memory budget of ", budget_, " bytes"));
+          fail(concat("POINTS ", n, " exceed the memory budget (field.memory_budget) of ", budget_,
+                      " bytes"));
         const std::string type = keyword("the points' type");
         data_.points = values(type, 3 * n, "POINTS");
       } else if (key == "field") {
@@ -270,7 +271,8 @@ class Parser {
     const long long n = integer(concat(what, " count"), 0, 1LL << 40);
     const long long size = integer(concat(what, " size"), 0, 1LL << 40);
     if (double(n + size) * 8.0 > double(budget_))
-      fail(concat(what, " ", n, " ", size, " exceed the memory budget of ", budget_, " bytes"));
+      fail(concat(what, " ", n, " ", size, " exceed the memory budget (field.memory_budget) of ",
+                  budget_, " bytes"));
     if (version_ >= 5.0) {
       if (keyword("OFFSETS") != "offsets") fail(concat("'", last_, "'; expected OFFSETS"));
       const std::vector<double> offsets = values(keyword("the offsets' type"), n, "OFFSETS");
@@ -344,7 +346,7 @@ class Parser {
         const double n = double(data_.dims[0]) * double(data_.dims[1]) * double(data_.dims[2]);
         if (n > double(VectorField::kMaxPoints) || n * 12.0 > double(budget_))
           fail(concat("DIMENSIONS ", data_.dims[0], " ", data_.dims[1], " ", data_.dims[2], " = ",
-                      n, " points exceed the memory budget of ", budget_,
+                      n, " points exceed the memory budget (field.memory_budget) of ", budget_,
                       " bytes (12 per point, at most ", VectorField::kMaxPoints, " points)"));
         dims = true;
       } else if (key == "field") {
@@ -429,7 +431,8 @@ class Parser {
                   "' is not a number type Sandstorm reads (unsigned_char .. double; bit and "
                   "string arrays are not supported)"));
     if (count < 0 || double(count) * 8.0 > double(budget_))
-      fail(concat(what, ": ", count, " values exceed the memory budget of ", budget_, " bytes"));
+      fail(concat(what, ": ", count, " values exceed the memory budget (field.memory_budget) of ",
+                  budget_, " bytes"));
     const std::size_t n = std::size_t(count);
     if (binary_) {
       endOfLine(concat(what, "'s type"));
@@ -615,8 +618,10 @@ LegacyVtkData parseVtkLegacy(const std::filesystem::path& path, std::size_t memo
   // ASCII takes at least two bytes a value and BINARY four: a file larger than
   // four times the budget holds more than the budget allows.
   if (double(size) > 4.0 * double(memoryBudget) + 65536.0)
-    throw Error(concat(file, ": ", size, " bytes, more than a grid within the memory budget of ",
-                       memoryBudget, " bytes can take"));
+    throw Error(
+        concat(file, ": ", size,
+               " bytes, more than a grid within the memory budget (field.memory_budget) of ",
+               memoryBudget, " bytes can take"));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(concat(file, ": cannot open the file for reading"));
   std::string text(std::size_t(size), '\0');

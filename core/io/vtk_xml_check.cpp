@@ -191,7 +191,7 @@ class Checker {
     checkCellLists();
     if (totalBytes_ > 2.0 * double(budget_))
       fail(concat(file_, ": its arrays need ", totalBytes_, " bytes together, beyond twice the ",
-                  "memory budget of ", budget_, " bytes"));
+                  "memory budget (field.memory_budget) of ", budget_, " bytes"));
     // Points no piece holds would be silent garbage (and VTK's structured
     // readers leak the arrays they were filling when pieces leave gaps).
     if (wholeExtent_ && covered_ && *covered_ != *wholeExtent_)
@@ -374,7 +374,8 @@ class Checker {
       const std::uint64_t n = whole(it->second, concat("Piece ", piece_, " ", key));
       if (double(n) * 12.0 > double(budget_))
         fail(concat(file_, ": Piece ", piece_, " ", key, " ", n,
-                    " is beyond what the memory budget of ", budget_, " bytes holds"));
+                    " is beyond what the memory budget (field.memory_budget) of ", budget_,
+                    " bytes holds"));
       return n;
     };
     points_ = count("NumberOfPoints");
@@ -461,7 +462,8 @@ class Checker {
     const double bytes = double(tuples) * double(a.components) * double(a.size);
     if (bytes > double(budget_))
       fail(concat(a.where, ": ", tuples, " tuples x ", a.components, " components x ", a.size,
-                  " bytes = ", bytes, " bytes, beyond the memory budget of ", budget_, " bytes"));
+                  " bytes = ", bytes, " bytes, beyond the memory budget (field.memory_budget) of ",
+                  budget_, " bytes"));
     totalBytes_ += bytes;
     a.format = attribute("format");
     if (a.format.empty()) a.format = "ascii";

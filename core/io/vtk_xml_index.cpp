@@ -255,7 +255,8 @@ void checkWholeExtent(vtkAlgorithm* reader, const std::string& file, const LoadO
   }
   if (points > double(VectorField::kMaxPoints) || points * 12.0 > double(options.memoryBudget))
     throw Error(concat(file, ": WholeExtent holds ", points,
-                       " points, beyond the memory budget of ", options.memoryBudget, " bytes"));
+                       " points, beyond the memory budget (field.memory_budget) of ",
+                       options.memoryBudget, " bytes"));
 }
 
 template <class Reader>
@@ -301,8 +302,8 @@ vtkSmartPointer<vtkDataObject> readVtkXmlIndex(const fs::path& path, FieldFormat
   }
   if (bytes > 2.0 * double(options.memoryBudget))
     throw Error(concat(file, ": its ", files.size(), " files' arrays need ", bytes,
-                       " bytes together, beyond twice the memory budget of ", options.memoryBudget,
-                       " bytes"));
+                       " bytes together, beyond twice the memory budget (field.memory_budget) of ",
+                       options.memoryBudget, " bytes"));
   vtkSmartPointer<vtkDataObject> out;
   switch (format) {
     case FieldFormat::VtkPImageData:

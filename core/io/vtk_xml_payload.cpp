@@ -117,7 +117,8 @@ void VtkXmlPayload::headerComplete() {
     if (needed_ && declared != *needed_)
       fail(concat("its ", what, " declares ", declared, " bytes; ", needText_));
     if (!needed_ && declared > format_.memoryBudget)
-      fail(concat("its ", what, " declares ", declared, " bytes, beyond the memory budget of ",
+      fail(concat("its ", what, " declares ", declared,
+                  " bytes, beyond the memory budget (field.memory_budget) of ",
                   format_.memoryBudget, " bytes"));
   };
   if (format_.compressor == VtkCompressor::None) {
@@ -132,15 +133,17 @@ void VtkXmlPayload::headerComplete() {
   bytes_.clear();
   if (blocks_ > 0 && blockSize_ == 0) fail(concat(blocks_, " compressed blocks of 0 bytes"));
   if (blockSize_ > format_.memoryBudget)
-    fail(concat("compression blocks of ", blockSize_, " bytes, beyond the memory budget of ",
-                format_.memoryBudget, " bytes"));
+    fail(concat("compression blocks of ", blockSize_,
+                " bytes, beyond the memory budget (field.memory_budget) of ", format_.memoryBudget,
+                " bytes"));
   if (lastSize_ > blockSize_)
     fail(concat("the last compressed block (", lastSize_, " bytes) is larger than a block (",
                 blockSize_, ")"));
   // blocks_ - 1 whole blocks must fit in the budget before they are multiplied.
   if (blocks_ > 1 && blocks_ - 1 > format_.memoryBudget / blockSize_)
     fail(concat(blocks_, " compressed blocks of ", blockSize_,
-                " bytes, beyond the memory budget of ", format_.memoryBudget, " bytes"));
+                " bytes, beyond the memory budget (field.memory_budget) of ", format_.memoryBudget,
+                " bytes"));
   declared_ = blocks_ == 0 ? 0 : (blocks_ - 1) * blockSize_ + (lastSize_ ? lastSize_ : blockSize_);
   expect(declared_, "compression header (uncompressed size)");
   state_ = blocks_ == 0 ? State::Done : State::Sizes;

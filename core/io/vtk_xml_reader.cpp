@@ -110,8 +110,9 @@ vtkSmartPointer<vtkDataSet> run(const std::filesystem::path& path, const LoadOpt
   if (points > double(VectorField::kMaxPoints) || points * 12.0 > double(options.memoryBudget))
     throw Error(concat(file, ": WholeExtent ", extent[0], " ", extent[1], " ", extent[2], " ",
                        extent[3], " ", extent[4], " ", extent[5], " holds ", points,
-                       " points, beyond the memory budget of ", options.memoryBudget,
-                       " bytes (12 per point, at most ", VectorField::kMaxPoints, " points)"));
+                       " points, beyond the memory budget (field.memory_budget) of ",
+                       options.memoryBudget, " bytes (12 per point, at most ",
+                       VectorField::kMaxPoints, " points)"));
   reader->Update();
   trap.throwIfFailed(concat("reading the ", what));
   checkValueCounts(reader->GetXMLParser(), points, file);

@@ -98,7 +98,8 @@ class Layout {
     for (hsize_t n : dims)
       values *= double(n);
     if (values * 8.0 > budget_)
-      fail(concat("dataset ", name, " holds ", values, " values, beyond the memory budget"));
+      fail(concat("dataset ", name, " holds ", values,
+                  " values, beyond the memory budget (field.memory_budget)"));
     return dims;
   }
 

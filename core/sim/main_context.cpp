@@ -105,35 +105,49 @@ void MainContext::enqueue(const StateChange& change) {
 void MainContext::setField(FieldUpdate field) {
   std::lock_guard lock(mutex_);
   field_ = std::make_shared<const FieldUpdate>(withRange(std::move(field), state_));
-  timeline_.reset();
+  player_.reset();
   fieldChanged_ = true;
 }
 
 void MainContext::setFieldTimeline(FieldTimeline timeline, const FieldPlacement& placement) {
+  const bool loop = state().field.loop;
+  FieldPlayer player(std::move(timeline), placement, loop);  // waits for its first pair
   std::lock_guard lock(mutex_);
-  timeline_ = std::move(timeline);
-  timelinePlacement_ = placement;
-  fieldTime_ = timeline_->time(0);
-  fieldPosition_ = timeline_->at(fieldTime_, state_.field.loop);
+  player_.emplace(std::move(player));
+  if (waitListener_) player_->setWaitListener(waitListener_);
+  if (replayWaits_) player_->replayWaits(*replayWaits_);
+  const FieldPlayer::Frame now = player_->current();
   field_ = std::make_shared<const FieldUpdate>(
-      withRange(FieldUpdate{.field = timeline_->frame(fieldPosition_.first),
-                            .placement = placement,
-                            .next = timeline_->frame(fieldPosition_.second)},
-                state_));
+      withRange(FieldUpdate{.field = now.field, .placement = placement, .next = now.next}, state_));
   fieldChanged_ = true;
 }
 
 void MainContext::appendFieldFrame(double time, std::shared_ptr<const VectorField> frame) {
   std::lock_guard lock(mutex_);
-  if (!timeline_) throw Error("appendFieldFrame: the field is not time-varying");
-  timeline_->append(time, std::move(frame));
-  // The pair in use may now blend towards the new frame: look again at the next packet.
-  fieldPosition_ = {timeline_->size(), timeline_->size(), 0.0f};
+  if (!player_) throw Error("appendFieldFrame: the field is not time-varying");
+  player_->append(time, std::move(frame));
 }
 
 std::size_t MainContext::fieldFrames() const {
   std::lock_guard lock(mutex_);
-  return timeline_ ? timeline_->size() : 1;
+  return player_ ? player_->size() : 1;
+}
+
+FieldPlaybackStatus MainContext::fieldStatus() const {
+  std::lock_guard lock(mutex_);
+  return player_ ? player_->status() : FieldPlaybackStatus{};
+}
+
+void MainContext::setFieldWaitListener(FieldPlayer::WaitListener listener) {
+  std::lock_guard lock(mutex_);
+  waitListener_ = std::move(listener);
+  if (player_) player_->setWaitListener(waitListener_);
+}
+
+void MainContext::replayFieldWaits(std::set<std::uint32_t> frames) {
+  std::lock_guard lock(mutex_);
+  replayWaits_ = std::move(frames);
+  if (player_) player_->replayWaits(*replayWaits_);
 }
 
 void MainContext::reset() {
@@ -215,22 +229,16 @@ FramePacket MainContext::next() {
   packet.simDt = state_.sim.paused ? 0.0f : dt * state_.sim.timeScale;
   packet.simTime = simTime_;
   simTime_ += double(packet.simDt);
-  if (timeline_) {
-    // The field's clock runs on simulated time, at the playback speed; following
-    // a growing field, it stands at the newest frame.
-    if (state_.field.follow) fieldTime_ = timeline_->time(timeline_->size() - 1);
-    const FieldTimeline::Position at = timeline_->at(fieldTime_, state_.field.loop);
-    if (at.first != fieldPosition_.first || at.second != fieldPosition_.second) {
-      field_ = std::make_shared<const FieldUpdate>(
-          withRange(FieldUpdate{.field = timeline_->frame(at.first),
-                                .placement = timelinePlacement_,
-                                .next = timeline_->frame(at.second)},
-                    state_));
+  if (player_) {
+    // The field's clock runs on simulated time, at the playback speed (FieldPlayer).
+    const FieldPlayer::Frame now = player_->advance(frame_, state_.field, double(packet.simDt));
+    if (now.changed) {
+      field_ = std::make_shared<const FieldUpdate>(withRange(
+          FieldUpdate{.field = now.field, .placement = player_->placement(), .next = now.next},
+          state_));
       fieldChanged_ = true;
     }
-    fieldPosition_ = at;
-    packet.fieldBlend = at.weight;
-    if (!state_.field.paused) fieldTime_ += double(packet.simDt) * state_.field.speed;
+    packet.fieldBlend = now.weight;
   }
   // Coloured by another grid now (or no longer): the field goes again with it.
   if (field_ && field_->field && carriedColorGrid(*field_) != wantedColorGrid(state_, *field_)) {

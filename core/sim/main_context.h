@@ -16,11 +16,13 @@
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string_view>
 #include <vector>
 
 #include "core/field/field_timeline.h"
 #include "core/sim/attribute_table.h"
+#include "core/sim/field_player.h"
 #include "core/sim/frame_packet.h"
 #include "core/sim/level_of_detail.h"
 #include "core/sim/particle_state.h"
@@ -50,7 +52,9 @@ class MainContext {
   void addEmitter(const Emitter& emitter);
   void removeEmitter(int index);
   void setField(FieldUpdate field);
-  // A time-varying field: played by the field.* attributes (speed, loop, pause).
+  // A time-varying field: played by the field.* attributes (speed, loop,
+  // pause; FieldPlayer). Waits for a streamed timeline's first pair; throws
+  // Error when it cannot be read.
   void setFieldTimeline(FieldTimeline timeline, const FieldPlacement& placement);
   // A new last frame of the time-varying field (a step a running simulation
   // wrote, FieldStream); with field.follow the field jumps to it at the next
@@ -59,6 +63,13 @@ class MainContext {
   void appendFieldFrame(double time, std::shared_ptr<const VectorField> frame);
   // The time-varying field's frames (1 for a still field) and the newest's time.
   std::size_t fieldFrames() const;
+  // Where a time-varying field's playback stands (for the menu).
+  FieldPlaybackStatus fieldStatus() const;
+  // Called at every frame a streamed field's playback waited for the disk (the recorder).
+  void setFieldWaitListener(FieldPlayer::WaitListener listener);
+  // Replaying a recorded run: playback waits at exactly these frames (FieldPlayer),
+  // of this and any later time-varying field.
+  void replayFieldWaits(std::set<std::uint32_t> frames);
   void reset();
   // The head and navigation the next packets carry (the app samples its trackers).
   void setViewer(const Viewer& viewer);
@@ -94,10 +105,9 @@ class MainContext {
   std::vector<StateChange> queued_;
   std::multimap<std::uint32_t, StateChange> scheduled_;
   std::shared_ptr<const FieldUpdate> field_;
-  std::optional<FieldTimeline> timeline_;
-  FieldPlacement timelinePlacement_;
-  double fieldTime_ = 0.0;
-  FieldTimeline::Position fieldPosition_;
+  std::optional<FieldPlayer> player_;
+  FieldPlayer::WaitListener waitListener_;
+  std::optional<std::set<std::uint32_t>> replayWaits_;
   bool fieldChanged_ = true;  // packet 0 always carries the field
   bool warnedMissingArray_ = false;
   std::uint32_t frame_ = 0;

@@ -202,9 +202,8 @@ SessionLog parseSession(const std::string& text, const std::string& name) {
     lastFrame = frame;
     if (!(words >> verb))
       throw Error(where +
-                  "expected set, add-emitter, remove-emitter, reset, track, navigate, field or "
-                  "field-step after "
-                  "the frame");
+                  "expected set, add-emitter, remove-emitter, reset, track, navigate, field, "
+                  "field-step or field-wait after the frame");
     try {
       if (verb == "set") {
         std::string key, value, extra;
@@ -246,6 +245,10 @@ SessionLog parseSession(const std::string& text, const std::string& name) {
         if (end != time.c_str() + time.size() || !std::isfinite(t))
           throw Error("field-step: expected a time in seconds, got '" + time + "'");
         log.fieldSteps.push_back({frame, t, file});
+      } else if (verb == "field-wait") {
+        std::string extra;
+        if (words >> extra) throw Error("expected 'field-wait' alone after the frame");
+        log.fieldWaits.insert(frame);
       } else if (verb == "navigate") {
         std::string values, extra;
         if (!(words >> values) || (words >> extra))
@@ -255,8 +258,8 @@ SessionLog parseSession(const std::string& text, const std::string& name) {
         log.navigation.push_back({frame, Navigation{{v[0], v[1], v[2]}, v[3], v[4]}});
       } else {
         throw Error("unknown change '" + verb +
-                    "'; expected set, add-emitter, remove-emitter, reset, track, navigate, field "
-                    "or field-step");
+                    "'; expected set, add-emitter, remove-emitter, reset, track, navigate, field, "
+                    "field-step or field-wait");
       }
     } catch (const Error& e) {
       const std::string what = e.what();
@@ -326,6 +329,13 @@ void SessionRecorder::recordFieldStep(std::uint32_t frame, double time, const st
   char text[32];
   std::snprintf(text, sizeof text, "%.17g", time);
   out_ << frame << " field-step " << text << " " << file << "\n";
+  out_.flush();
+  checkWritten();
+}
+
+void SessionRecorder::recordFieldWait(std::uint32_t frame) {
+  std::lock_guard lock(mutex_);
+  out_ << frame << " field-wait\n";
   out_.flush();
   checkWritten();
 }

@@ -12,6 +12,7 @@
 //   302 navigate 0.5,2.6,0,0.1,0.35        (offset x y z, yaw in radians, scale)
 //   400 field data/tornado.vti              (the menu loaded this field; or analytic:NAME)
 //   460 field-step 2.5 /runs/sim/step_003.vti  (a watched field's step, its time, appended)
+//   470 field-wait                          (a streamed field's playback waited for the disk)
 //
 // A `track` line is the tracking sample the frame used (core/tracking), in
 // room coordinates, written when it differs from the frame before; a
@@ -25,6 +26,7 @@
 #include <fstream>
 #include <mutex>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -64,6 +66,7 @@ struct SessionLog {
   std::vector<ScheduledChange> changes;
   std::vector<ScheduledField> fields;           // in frame order
   std::vector<ScheduledFieldStep> fieldSteps;   // in frame order
+  std::set<std::uint32_t> fieldWaits;           // frames a streamed field's playback waited
   std::vector<ScheduledTracking> tracking;      // in frame order
   std::vector<ScheduledNavigation> navigation;  // in frame order
 };
@@ -89,6 +92,7 @@ class SessionRecorder {
   void recordNavigation(std::uint32_t frame, const Navigation& navigation);
   void recordField(std::uint32_t frame, const std::string& source);
   void recordFieldStep(std::uint32_t frame, double time, const std::string& file);
+  void recordFieldWait(std::uint32_t frame);
   // Set once a write failed (a full disk): the run should stop and say so.
   std::optional<std::string> error() const;
 

@@ -1,0 +1,46 @@
+#include "core/io/series_index.h"
+
+#include "core/io/field_format.h"
+#include "core/io/field_loader.h"
+#include "core/io/pvd_file.h"
+#include "core/util/error.h"
+
+namespace sandstorm {
+
+SeriesIndex indexSeries(const std::filesystem::path& path, const LoadOptions& options,
+                        LoadReport* report) {
+  LoadReport local;
+  LoadReport& first = report ? *report : local;
+  SeriesIndex index;
+  index.stepOptions = options;
+  if (detectFieldFormat(path) == FieldFormat::VtkCollection) {
+    // readPvd sorts by time and refuses repeated times.
+    for (const PvdFrame& f : readPvd(path)) {
+      index.times.push_back(f.time);
+      index.sources.push_back({f.file, 0});
+    }
+    first = LoadReport{};
+    index.first =
+        std::make_shared<const VectorField>(loadField(index.sources.front().file, options, &first));
+    first.times = index.times;
+    return index;
+  }
+  index.first = std::make_shared<const VectorField>(loadField(path, options, &first));
+  if (first.times.size() <= 1) {
+    index.times = {first.times.empty() ? 0.0 : first.times.front()};
+    index.sources = {{path, 0}};
+    return index;
+  }
+  for (std::size_t i = 0; i < first.times.size(); ++i) {
+    if (i > 0 && !(first.times[i] > first.times[i - 1]))
+      throw Error(concat(path.string(), ": time step ", i, " (t = ", first.times[i],
+                         ") does not come after step ", i - 1, " (t = ", first.times[i - 1], ")"));
+    index.times.push_back(first.times[i]);
+    index.sources.push_back({path, i});
+  }
+  // Every step on the grid the first one chose (a mesh's steps resample onto it).
+  index.stepOptions.resolution = index.first->dims();
+  return index;
+}
+
+}  // namespace sandstorm

@@ -1,0 +1,166 @@
+#include "core/io/series_reader.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "core/io/field_loader.h"
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+bool contains(const std::vector<std::size_t>& v, std::size_t i) {
+  return std::find(v.begin(), v.end(), i) != v.end();
+}
+
+}  // namespace
+
+SeriesReader::SeriesReader(std::vector<Source> sources, LoadOptions options,
+                           std::shared_ptr<const VectorField> first, std::size_t capacity,
+                           int threads)
+    : sources_(std::move(sources)),
+      options_(std::move(options)),
+      first_(std::move(first)),
+      capacity_(std::max<std::size_t>(capacity, 2)) {
+  if (sources_.empty() || !first_) throw Error("SeriesReader: a series needs its first step");
+  held_[0] = first_;
+  for (int t = 0; t < std::max(threads, 1); ++t)
+    threads_.emplace_back([this] { run(); });
+}
+
+SeriesReader::~SeriesReader() {
+  {
+    std::lock_guard lock(mutex_);
+    stop_ = true;
+  }
+  changed_.notify_all();
+  for (std::thread& t : threads_)
+    t.join();
+}
+
+std::shared_ptr<const VectorField> SeriesReader::read(const Source& source,
+                                                      const LoadOptions& options,
+                                                      const VectorField* grid) {
+  LoadOptions step = options;
+  step.timeStep = source.timeStep;
+  auto field = std::make_shared<const VectorField>(loadField(source.file, step));
+  if (grid && (field->dims() != grid->dims() || field->bounds().min != grid->bounds().min ||
+               field->bounds().max != grid->bounds().max))
+    throw Error(concat(source.file.string(),
+                       source.timeStep > 0 ? concat(" (time step ", source.timeStep, ")") : "",
+                       ": a ", field->dims().x, "x", field->dims().y, "x", field->dims().z,
+                       " grid over other bounds than the series' first step's ", grid->dims().x,
+                       "x", grid->dims().y, "x", grid->dims().z,
+                       "; expected every step on the same grid"));
+  return field;
+}
+
+void SeriesReader::want(const std::vector<std::size_t>& order) {
+  {
+    std::lock_guard lock(mutex_);
+    wanted_.clear();
+    for (std::size_t i : order)
+      if (i < sources_.size() && !contains(wanted_, i) && wanted_.size() < capacity_)
+        wanted_.push_back(i);
+    // Drop what playback has left behind (a wall showing it keeps its own reference).
+    for (auto it = held_.begin(); it != held_.end();)
+      it = contains(wanted_, it->first) ? std::next(it) : held_.erase(it);
+  }
+  changed_.notify_all();
+}
+
+std::shared_ptr<const VectorField> SeriesReader::get(std::size_t i) {
+  std::lock_guard lock(mutex_);
+  const auto it = held_.find(i);
+  return it == held_.end() ? nullptr : it->second;
+}
+
+std::shared_ptr<const VectorField> SeriesReader::wait(std::size_t i) {
+  if (i >= sources_.size()) throw Error(concat("SeriesReader: step ", i, " of ", sources_.size()));
+  std::unique_lock lock(mutex_);
+  if (!contains(wanted_, i)) {
+    // Asked for out of order (a replay, the start): first in line.
+    wanted_.insert(wanted_.begin(), i);
+    if (wanted_.size() > capacity_) wanted_.pop_back();
+    changed_.notify_all();
+  }
+  changed_.wait(lock, [&] { return held_.count(i) || failed_.count(i) || stop_; });
+  if (const auto f = failed_.find(i); f != failed_.end()) throw Error(f->second);
+  if (stop_) throw Error("SeriesReader: stopped");
+  return held_.at(i);
+}
+
+std::string SeriesReader::failure(std::size_t i) const {
+  std::lock_guard lock(mutex_);
+  const auto it = failed_.find(i);
+  return it == failed_.end() ? std::string() : it->second;
+}
+
+std::string SeriesReader::name(std::size_t i) const {
+  if (i >= sources_.size()) return {};
+  const Source& s = sources_[i];
+  // Steps of one file (Exodus, EnSight, ...) are told apart by their index.
+  const bool oneFile = sources_.size() > 1 && sources_[0].file == sources_[1].file;
+  return oneFile ? concat(s.file.string(), " (time step ", s.timeStep, ")") : s.file.string();
+}
+
+std::vector<std::size_t> SeriesReader::resident() const {
+  std::lock_guard lock(mutex_);
+  std::vector<std::size_t> out;
+  for (const auto& [i, field] : held_)
+    out.push_back(i);
+  return out;
+}
+
+SeriesReader::Stats SeriesReader::stats() const {
+  std::lock_guard lock(mutex_);
+  return stats_;
+}
+
+bool SeriesReader::nextToRead(std::size_t& step) const {
+  for (std::size_t i : wanted_)
+    if (!held_.count(i) && !failed_.count(i) && !contains(reading_, i)) {
+      step = i;
+      return true;
+    }
+  return false;
+}
+
+void SeriesReader::run() {
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    std::size_t step = 0;
+    changed_.wait(lock, [&] { return stop_ || nextToRead(step); });
+    if (stop_) return;
+    reading_.push_back(step);
+    lock.unlock();
+    const auto start = std::chrono::steady_clock::now();
+    std::shared_ptr<const VectorField> field;
+    std::string error;
+    try {
+      field = read(sources_[step], options_, first_.get());
+    } catch (const Error& e) {
+      error = e.what();
+    } catch (const std::bad_alloc&) {
+      error = concat(name(step),
+                     ": out of memory reading it (lower field.read_ahead or "
+                     "field.resolution)");
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    lock.lock();
+    reading_.erase(std::find(reading_.begin(), reading_.end(), step));
+    if (!error.empty()) {
+      failed_[step] = error;
+    } else {
+      stats_.stepsRead += 1;
+      stats_.bytesRead += 12.0 * double(field->pointCount());
+      stats_.secondsReading += seconds;
+      // Kept only while still wanted (playback may have moved on meanwhile).
+      if (contains(wanted_, step)) held_[step] = std::move(field);
+    }
+    changed_.notify_all();
+  }
+}
+
+}  // namespace sandstorm

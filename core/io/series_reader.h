@@ -1,0 +1,86 @@
+// SeriesReader: the steps of a time series read from disk as playback needs
+// them (FieldSteps for a streamed FieldTimeline), on threads of its own.
+//
+// The main context says each frame which steps it wants, most urgent first
+// (the pair being blended, then the next ones in the direction of play:
+// FieldTimeline::readAhead). Reader threads take the first wanted step not
+// yet in memory; a step no longer wanted is dropped (freed once no wall shows
+// it), so at most `capacity` steps are in memory however long the series.
+//
+// Every step must have the first step's dims and bounds: one that does not,
+// or does not read (missing, truncated, malformed), fails with its file named
+// and is not tried again. Counts bytes and time spent reading, for the log's
+// read rate.
+#pragma once
+
+#include <condition_variable>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+#include "core/field/field_timeline.h"
+#include "core/io/load_options.h"
+
+namespace sandstorm {
+
+class SeriesReader final : public FieldSteps {
+ public:
+  struct Source {
+    std::filesystem::path file;
+    std::size_t timeStep = 0;  // within a file of several (Exodus, EnSight, ...)
+  };
+  struct Stats {
+    std::uint64_t stepsRead = 0;
+    double bytesRead = 0.0;       // the steps' grids, 12 bytes a point
+    double secondsReading = 0.0;  // summed over the threads
+  };
+
+  // `first`: step 0, already read (it fixes the grid every step must have).
+  // `capacity` >= 2 steps in memory; `threads` >= 1 readers.
+  SeriesReader(std::vector<Source> sources, LoadOptions options,
+               std::shared_ptr<const VectorField> first, std::size_t capacity, int threads);
+  ~SeriesReader() override;
+  SeriesReader(const SeriesReader&) = delete;
+  SeriesReader& operator=(const SeriesReader&) = delete;
+
+  void want(const std::vector<std::size_t>& order) override;
+  std::shared_ptr<const VectorField> get(std::size_t i) override;
+  std::shared_ptr<const VectorField> wait(std::size_t i) override;
+  std::string failure(std::size_t i) const override;
+  std::string name(std::size_t i) const override;
+  std::size_t capacity() const override { return capacity_; }
+  std::vector<std::size_t> resident() const override;
+
+  Stats stats() const;
+  std::size_t size() const { return sources_.size(); }
+
+  // Reads one step and checks its grid against `grid` (or nothing when null).
+  // Throws Error naming the file.
+  static std::shared_ptr<const VectorField> read(const Source& source, const LoadOptions& options,
+                                                 const VectorField* grid);
+
+ private:
+  void run();
+  // The first wanted step neither in memory, being read nor failed; false if none.
+  bool nextToRead(std::size_t& step) const;
+
+  const std::vector<Source> sources_;
+  const LoadOptions options_;
+  const std::shared_ptr<const VectorField> first_;
+  const std::size_t capacity_;
+  mutable std::mutex mutex_;
+  std::condition_variable changed_;
+  std::vector<std::size_t> wanted_;
+  std::map<std::size_t, std::shared_ptr<const VectorField>> held_;
+  std::map<std::size_t, std::string> failed_;
+  std::vector<std::size_t> reading_;
+  Stats stats_;
+  bool stop_ = false;
+  std::vector<std::thread> threads_;
+};
+
+}  // namespace sandstorm

@@ -1,0 +1,169 @@
+// FieldPlayer: a streamed field's playback waits for a step that is not read
+// yet (the clock stands, the walls keep their pair and weight), a replay given
+// the recorded waits plays the same packets whatever its disk does, and a step
+// that cannot be read stops playback with its name while the run goes on.
+#include "core/sim/field_player.h"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "core/sim/main_context.h"
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+// Steps whose reading the test controls: a step is in memory once `arrived`
+// holds it; wait() reads it at once (a replay); `broken` ones never read.
+class ScriptedSteps final : public FieldSteps {
+ public:
+  explicit ScriptedSteps(int n) {
+    for (int i = 0; i < n; ++i) {
+      auto f = std::make_shared<VectorField>(Box{{0, 0, 0}, {1, 1, 1}}, glm::ivec3(2));
+      for (glm::vec3& v : f->values())
+        v = glm::vec3(float(i));
+      frames.push_back(f);
+    }
+  }
+  void want(const std::vector<std::size_t>& order) override { wanted = order; }
+  std::shared_ptr<const VectorField> get(std::size_t i) override {
+    return arrived.count(i) ? frames[i] : nullptr;
+  }
+  std::shared_ptr<const VectorField> wait(std::size_t i) override {
+    if (broken.count(i)) throw Error(failure(i));
+    waited.insert(i);
+    arrived.insert(i);
+    return frames[i];
+  }
+  std::string failure(std::size_t i) const override {
+    return broken.count(i) ? name(i) + ": truncated" : "";
+  }
+  std::string name(std::size_t i) const override { return "step_" + std::to_string(i) + ".vti"; }
+  std::size_t capacity() const override { return 4; }
+  std::vector<std::size_t> resident() const override { return {arrived.begin(), arrived.end()}; }
+
+  std::vector<std::shared_ptr<const VectorField>> frames;
+  std::set<std::size_t> arrived, waited, broken;
+  std::vector<std::size_t> wanted;
+};
+
+struct Shown {
+  int field = -1, next = -1;  // the pair a packet sent (-1: none)
+  float blend = 0.0f;
+  bool operator==(const Shown&) const = default;
+};
+
+// Runs `frames` packets; before frame f, `arrive(f)` may let steps arrive.
+std::vector<Shown> play(MainContext& main, int frames, const std::function<void(int)>& arrive) {
+  std::vector<Shown> out;
+  for (int f = 0; f < frames; ++f) {
+    arrive(f);
+    const FramePacket p = main.next();
+    Shown s;
+    if (p.fieldUpdate) {
+      s.field = int(p.fieldUpdate->field->values()[0].x);
+      s.next = int(p.fieldUpdate->next->values()[0].x);
+    }
+    s.blend = p.fieldBlend;
+    out.push_back(s);
+  }
+  return out;
+}
+
+MainContext::Options quarterSteps() {
+  MainContext::Options o;
+  o.fixedDt = 0.25f;  // four frames a step of 1 s
+  return o;
+}
+
+ParticleState unlooped() {
+  ParticleState s;
+  s.field.loop = false;
+  return s;
+}
+
+TEST(FieldPlayer, WaitsForAStepNotReadYetAndAReplayWaitsAtTheSameFrames) {
+  auto steps = std::make_shared<ScriptedSteps>(5);
+  MainContext live(unlooped(), FieldUpdate{}, quarterSteps());
+  std::vector<std::uint32_t> waits;
+  live.setFieldWaitListener([&](std::uint32_t f) { waits.push_back(f); });
+  live.setFieldTimeline(FieldTimeline({0, 1, 2, 3, 4}, steps), FieldPlacement{});
+  EXPECT_EQ(steps->waited, (std::set<std::size_t>{0, 1}));  // the start waits for its pair
+  // Step 2 is read only before frame 6, step 3 at once.
+  const std::vector<Shown> shown = play(live, 12, [&](int f) {
+    if (f == 0) steps->arrived.insert(3);
+    if (f == 6) steps->arrived.insert(2);
+  });
+  EXPECT_EQ(waits, (std::vector<std::uint32_t>{4, 5}));
+  // Frames 4 and 5 keep the pair (0, 1) at its last weight; frame 6 starts (1, 2) at 0.
+  EXPECT_EQ(shown[0], (Shown{0, 1, 0.0f}));
+  EXPECT_EQ(shown[3], (Shown{-1, -1, 0.75f}));
+  EXPECT_EQ(shown[4], (Shown{-1, -1, 0.75f}));
+  EXPECT_EQ(shown[5], (Shown{-1, -1, 0.75f}));
+  EXPECT_EQ(shown[6], (Shown{1, 2, 0.0f}));
+  EXPECT_EQ(shown[7], (Shown{-1, -1, 0.25f}));
+  EXPECT_EQ(shown[10], (Shown{2, 3, 0.0f}));
+  // The read-ahead asks for the pair, then the steps after it.
+  EXPECT_EQ(steps->wanted, (std::vector<std::size_t>{2, 3, 4}));
+
+  // A replay whose disk is fast: told the waits, it shows exactly the same.
+  auto fast = std::make_shared<ScriptedSteps>(5);
+  MainContext replay(unlooped(), FieldUpdate{}, quarterSteps());
+  replay.replayFieldWaits({4, 5});
+  replay.setFieldTimeline(FieldTimeline({0, 1, 2, 3, 4}, fast), FieldPlacement{});
+  EXPECT_EQ(play(replay, 12, [&](int f) { fast->arrived.insert(std::size_t(f % 5)); }), shown);
+  // A replay whose disk is slower still reads what it needs (nothing arrives by itself).
+  auto slow = std::make_shared<ScriptedSteps>(5);
+  MainContext slowReplay(unlooped(), FieldUpdate{}, quarterSteps());
+  slowReplay.replayFieldWaits({4, 5});
+  slowReplay.setFieldTimeline(FieldTimeline({0, 1, 2, 3, 4}, slow), FieldPlacement{});
+  EXPECT_EQ(play(slowReplay, 12, [](int) {}), shown);
+  // Without the waits, the same steps play another sequence: the waits matter.
+  auto other = std::make_shared<ScriptedSteps>(5);
+  MainContext unrecorded(unlooped(), FieldUpdate{}, quarterSteps());
+  unrecorded.replayFieldWaits({});
+  unrecorded.setFieldTimeline(FieldTimeline({0, 1, 2, 3, 4}, other), FieldPlacement{});
+  EXPECT_NE(play(unrecorded, 12, [](int) {}), shown);
+}
+
+TEST(FieldPlayer, AStepThatCannotBeReadStopsPlaybackAndTheRunGoesOn) {
+  auto steps = std::make_shared<ScriptedSteps>(5);
+  steps->broken.insert(2);
+  MainContext main(unlooped(), FieldUpdate{}, quarterSteps());
+  std::vector<std::uint32_t> waits;
+  main.setFieldWaitListener([&](std::uint32_t f) { waits.push_back(f); });
+  main.setFieldTimeline(FieldTimeline({0, 1, 2, 3, 4}, steps), FieldPlacement{});
+  steps->arrived.insert(3);
+  const std::vector<Shown> shown = play(main, 16, [](int) {});
+  for (int f = 4; f < 16; ++f)
+    EXPECT_EQ(shown[std::size_t(f)], (Shown{-1, -1, 0.75f})) << f;  // the last pair read, held
+  EXPECT_TRUE(waits.empty());                                       // stopped, not waiting
+  const FieldPlaybackStatus status = main.fieldStatus();
+  EXPECT_NE(status.error.find("step_2.vti: truncated"), std::string::npos);
+  EXPECT_EQ(status.first, 0u);
+  EXPECT_TRUE(status.waitingFor.empty());
+  // The same in a replay, where the step is waited for and fails.
+  auto again = std::make_shared<ScriptedSteps>(5);
+  again->broken.insert(2);
+  MainContext replay(unlooped(), FieldUpdate{}, quarterSteps());
+  replay.replayFieldWaits({});
+  replay.setFieldTimeline(FieldTimeline({0, 1, 2, 3, 4}, again), FieldPlacement{});
+  EXPECT_EQ(play(replay, 16, [](int) {}), shown);
+}
+
+TEST(FieldPlayer, TheStatusSaysWhatPlaybackWaitsForAndWhatIsInMemory) {
+  auto steps = std::make_shared<ScriptedSteps>(5);
+  MainContext main(unlooped(), FieldUpdate{}, quarterSteps());
+  main.setFieldTimeline(FieldTimeline({0, 1, 2, 3, 4}, steps), FieldPlacement{});
+  play(main, 5, [](int) {});
+  const FieldPlaybackStatus status = main.fieldStatus();
+  EXPECT_TRUE(status.streamed);
+  EXPECT_EQ(status.steps, 5u);
+  EXPECT_EQ(status.waitingFor, "step_2.vti");
+  EXPECT_EQ(status.resident, (std::vector<std::size_t>{0, 1}));
+  EXPECT_DOUBLE_EQ(status.time, 1.0);  // stood still at the step it waits for
+}
+
+}  // namespace
+}  // namespace sandstorm
