@@ -185,6 +185,28 @@ TEST(Config, BadValuesAreRefusedWithTheirLine) {
   EXPECT_ERROR(kWall + kWall, "test.toml:8", "'front' is used twice");
 }
 
+TEST(Config, TheFieldsMemoryBudgetIsASizeOrAutomatic) {
+  const auto budget = [](const std::string& value) {
+    return parseConfig("[field]\nmemory_budget = " + value + "\n" + kWall, "test.toml")
+        .field.memoryBudget;
+  };
+  EXPECT_EQ(budget("\"16 GiB\""), std::uint64_t{16} << 30);
+  EXPECT_EQ(budget("\"800MiB\""), std::uint64_t{800} << 20);
+  EXPECT_EQ(budget("\"2.5 GB\""), std::uint64_t{2500000000});
+  EXPECT_EQ(budget("3000000000"), std::uint64_t{3000000000});
+  EXPECT_EQ(budget("\"auto\""), 0u);
+  // Automatic: half the machine's memory.
+  FieldSpec automatic;
+  EXPECT_EQ(fieldMemoryBudget(automatic), hostMemoryBytes() / 2);
+  automatic.memoryBudget = 12345678;
+  EXPECT_EQ(fieldMemoryBudget(automatic), 12345678u);
+  for (const char* bad : {"\"lots\"", "\"16 GiBs\"", "\"-4 GiB\"", "100", "\"1 KiB\"", "true"})
+    EXPECT_ERROR("[field]\nmemory_budget = " + std::string(bad) + "\n" + kWall, "test.toml:2",
+                 "field.memory_budget", "16 GiB");
+  EXPECT_EQ(parseConfig("[field]\nread_ahead = 6\n" + kWall, "test.toml").field.readAhead, 6);
+  EXPECT_ERROR("[field]\nread_ahead = -1\n" + kWall, "test.toml:2", "field.read_ahead", "0..64");
+}
+
 TEST(Config, ReadsAndChecksGpuTuning) {
   const AppConfig c = parseConfig(
       "[gpu]\nsplat = \"atomic\"\nsplat_chunk = 37\nsplat_list = 500\ntrail_pass = \"tiled\"\n"
