@@ -1,5 +1,8 @@
 #include "app/app_run.h"
 
+#include "core/config/byte_size.h"
+#include "core/io/series_reader.h"
+
 #include <algorithm>
 #include <atomic>
 #include <csignal>
@@ -11,8 +14,10 @@
 #include "contexts/particles/simulation_share.h"
 #include "contexts/platform/egl_context.h"
 #include "core/cave/wall_views.h"
+#include "core/config/byte_size.h"
 #include "core/flow/probe.h"
 #include "core/flow/streamline_vtp.h"
+#include "core/io/series_reader.h"
 #include "core/obstacles/collision_shapes.h"
 #include "core/sim/particle_dump.h"
 #include "core/util/error.h"
@@ -843,6 +848,16 @@ int AppRun::finish() {
               t.stats.dropped, " dropped, ", t.stats.foreign, " from other hosts dropped",
               t.waiting ? ", none measured" : (t.lost ? ", lost at the end" : ""),
               t.stats.lastError.empty() ? std::string() : "; last refused: " + t.stats.lastError);
+  }
+  if (field_.series) {
+    // What reading the series cost, against what playback needed.
+    const SeriesReader::Stats r = field_.series->stats();
+    const FieldPlaybackStatus p = main_.fieldStatus();
+    log::info("  field series: ", r.stepsRead, " step(s) read from disk, ",
+              formatByteSize(r.bytesRead), " at ",
+              formatByteSize(r.bytesRead / std::max(r.secondsReading, 1e-9)),
+              "/s a reader; playback waited ", p.framesWaited, " frame(s) for steps",
+              p.error.empty() ? std::string() : "; stopped: " + p.error);
   }
   std::vector<WallRunStats> measured;
   for (const auto& w : walls_)

@@ -108,6 +108,7 @@ FieldSource fileField(const std::filesystem::path& path, const FieldSpec& spec,
                            report.arrayName, "'), streamed: at most ", capacity, " steps (",
                            formatByteSize(double(capacity) * step), ") in memory");
   out.timeline = FieldTimeline(std::move(index.times), reader);
+  out.series = reader;
   out.update = FieldUpdate{.field = index.first, .placement = spec.placement};
   return out;
 }

@@ -23,6 +23,8 @@ struct FieldSource {
   std::optional<FieldTimeline>
       timeline;  // or a time-varying one (update then holds its first frame)
   std::string description;
+  // A series streamed from disk: its reader (for the read rate the run reports).
+  std::shared_ptr<class SeriesReader> series;
   // A watched source (a folder, or a .pvd with watch): its scanner, past the
   // first step (the timeline's only frame), and how its steps load.
   std::shared_ptr<class FieldStreamScanner> stream;

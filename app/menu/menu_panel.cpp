@@ -104,6 +104,7 @@ void MenuPanel::build(const MenuStats& stats) {
   fieldSection(state);
   editorSection(state);
   if (ImGui::CollapsingHeader("Field playback")) {
+    playbackStatus();
     for (const AttributeInfo& info : AttributeTable::instance().entries())
       if (info.key.starts_with("field.")) attributeWidget(info, info.key, state);
   }
@@ -111,6 +112,41 @@ void MenuPanel::build(const MenuStats& stats) {
   const ImVec2 at = ImGui::GetWindowPos(), size = ImGui::GetWindowSize();
   panel_ = Rect{{at.x, at.y}, {at.x + size.x, at.y + size.y}};
   ImGui::End();
+}
+
+void MenuPanel::playbackStatus() {
+  const FieldPlaybackStatus s = main_.fieldStatus();
+  if (s.steps <= 1) return;
+  ImGui::Text("t = %.3f s: steps %zu-%zu of %zu", s.time, s.first, s.second, s.steps);
+  if (s.streamed) {
+    // The loaded range over the series: which steps are in memory now.
+    std::string held;
+    for (std::size_t i = 0; i < s.resident.size(); ++i) {
+      const bool runStart = i == 0 || s.resident[i] != s.resident[i - 1] + 1;
+      const bool runEnd = i + 1 == s.resident.size() || s.resident[i + 1] != s.resident[i] + 1;
+      if (runStart) held += (held.empty() ? "" : ", ") + std::to_string(s.resident[i]);
+      if (runEnd && !runStart) held += "-" + std::to_string(s.resident[i]);
+    }
+    ImGui::Text("in memory: steps %s", held.c_str());
+    const float width = ImGui::GetContentRegionAvail().x;
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    const float height = ImGui::GetTextLineHeight() * 0.6f;
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddRectFilled(at, ImVec2(at.x + width, at.y + height), IM_COL32(60, 60, 60, 255));
+    const float step = width / float(s.steps);
+    for (std::size_t i : s.resident)
+      draw->AddRectFilled(ImVec2(at.x + step * float(i), at.y),
+                          ImVec2(at.x + step * float(i + 1) + 1.0f, at.y + height),
+                          IM_COL32(90, 160, 230, 255));
+    draw->AddRectFilled(ImVec2(at.x + step * float(s.first), at.y - 2.0f),
+                        ImVec2(at.x + step * float(s.first) + 2.0f, at.y + height + 2.0f),
+                        IM_COL32(255, 255, 255, 255));
+    ImGui::Dummy(ImVec2(width, height + 2.0f));
+  }
+  if (!s.waitingFor.empty())
+    ImGui::TextColored(ImVec4(1.0f, 0.8f, 0.2f, 1.0f), "waiting for %s", s.waitingFor.c_str());
+  if (!s.error.empty())
+    ImGui::TextColored(ImVec4(1.0f, 0.3f, 0.2f, 1.0f), "stopped: %s", s.error.c_str());
 }
 
 void MenuPanel::runControls(const ParticleState& state) {

@@ -70,6 +70,8 @@ class MenuPanel {
  private:
   void attributeWidget(const AttributeInfo& info, const std::string& key,
                        const ParticleState& state);
+  // A time-varying field: where playback stands, the steps in memory, waits and errors.
+  void playbackStatus();
   void runControls(const ParticleState& state);
   void emitterSection(const ParticleState& state);
   void obstacleSection(const ParticleState& state);

@@ -46,9 +46,10 @@ bool FieldPlayer::fetch(std::uint32_t frame, const FieldTimeline::Position& at, 
     if (!failure.empty()) error_ = failure;
   }
   if (!error_.empty()) {
-    log::error("field: ", error_, "; playback stops at t = ",
-               timeline_.time(std::min(position_.first, timeline_.size() - 1)),
-               " s (the last step read) and the run goes on");
+    const std::size_t last = timeline_.size() - 1;
+    log::error("field: ", error_, "; playback stops at the last pair read (t = ",
+               timeline_.time(std::min(position_.first, last)), " to ",
+               timeline_.time(std::min(position_.second, last)), " s) and the run goes on");
     waitingFor_.clear();
     return false;
   }
@@ -75,7 +76,10 @@ FieldPlayer::Frame FieldPlayer::advance(std::uint32_t frame, const FieldPlayback
                     "further ahead, field.speed plays slower)");
         }
       }
-      if (listener_ && error_.empty()) listener_(frame);
+      if (error_.empty()) {
+        ++framesWaited_;
+        if (listener_) listener_(frame);
+      }
       return Frame{false, field_, next_, position_.weight};
     }
     if (!waitingFor_.empty())
@@ -101,6 +105,7 @@ FieldPlaybackStatus FieldPlayer::status() const {
   if (s.streamed) s.resident = timeline_.steps()->resident();
   s.waitingFor = waitingFor_;
   s.error = error_;
+  s.framesWaited = framesWaited_;
   return s;
 }
 

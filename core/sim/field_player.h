@@ -36,6 +36,7 @@ struct FieldPlaybackStatus {
   std::vector<std::size_t> resident;  // streamed frames in memory now
   std::string waitingFor;             // the frame's file playback waits for, or empty
   std::string error;                  // why playback stopped, or empty
+  std::uint64_t framesWaited = 0;     // frames playback has waited for the disk
 };
 
 class FieldPlayer {
@@ -77,6 +78,7 @@ class FieldPlayer {
   std::optional<std::set<std::uint32_t>> replayWaits_;
   std::string waitingFor_, error_;
   std::uint32_t waitStart_ = 0;
+  std::uint64_t framesWaited_ = 0;
 };
 
 }  // namespace sandstorm
