@@ -22,62 +22,12 @@
 #include "core/field/vector_field.h"
 #include "core/io/vtk_cell_check.h"
 #include "core/io/vtk_message_trap.h"
+#include "core/io/vtk_read_progress.h"
 #include "core/io/vtk_xml_check.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
 namespace {
-
-// VTK reads as many values as the extent asks for and ignores any surplus, so
-// an extent smaller than the data loads silently. Each point array of a single
-// piece is asked here, through VTK's own parser, for one word more than the
-// points need: getting it means the file holds more values than points.
-void checkValueCounts(vtkXMLDataParser* parser, double points, const std::string& file) {
-  if (!parser || !parser->GetRootElement()) return;
-  vtkXMLDataElement* dataset = parser->GetRootElement()->GetNestedElement(0);
-  if (!dataset || dataset->GetNumberOfNestedElements() != 1) return;  // several pieces
-  vtkXMLDataElement* piece = dataset->GetNestedElement(0);
-  vtkXMLDataElement* pointData = piece ? piece->FindNestedElementWithName("PointData") : nullptr;
-  if (!pointData) return;
-  // The reader has closed its stream by now: lend the parser one of ours.
-  std::ifstream stream(file, std::ios::binary);
-  if (!stream) return;
-  std::istream* previous = parser->GetStream();
-  parser->SetStream(&stream);
-  struct Restore {
-    vtkXMLDataParser* parser;
-    std::istream* previous;
-    ~Restore() { parser->SetStream(previous); }
-  } restore{parser, previous};
-  for (int i = 0; i < pointData->GetNumberOfNestedElements(); ++i) {
-    vtkXMLDataElement* array = pointData->GetNestedElement(i);
-    if (std::strcmp(array->GetName(), "DataArray") != 0) continue;
-    int wordType = 0, components = 1;
-    if (!array->GetWordTypeAttribute("type", wordType)) continue;
-    array->GetScalarAttribute("NumberOfComponents", components);
-    const int wordSize = vtkAbstractArray::GetDataTypeSize(wordType);
-    const double words = points * std::max(components, 1);
-    if (wordSize <= 0 || words <= 0 || words > 1e9) continue;
-    const std::size_t ask = std::size_t(words) + 1;
-    std::vector<unsigned char> buffer(ask * std::size_t(wordSize));
-    const char* format = array->GetAttribute("format");
-    std::size_t got = 0;
-    if (format && std::strcmp(format, "appended") == 0) {
-      vtkTypeInt64 offset = 0;
-      if (!array->GetScalarAttribute("offset", offset)) continue;
-      got = parser->ReadAppendedData(offset, buffer.data(), 0, ask, wordType);
-    } else {
-      got = parser->ReadInlineData(array, format && std::strcmp(format, "ascii") == 0,
-                                   buffer.data(), 0, ask, wordType);
-    }
-    if (got > std::size_t(words)) {
-      const char* name = array->GetAttribute("Name");
-      throw Error(concat(file, ": point array '", name ? name : "", "' holds more than the ", words,
-                         " values its ", points, " points need; the extent and the data ",
-                         "disagree (value count differs from the point count)"));
-    }
-  }
-}
 
 template <class Reader>
 vtkSmartPointer<vtkDataSet> run(const std::filesystem::path& path, const LoadOptions& options,
@@ -113,9 +63,11 @@ vtkSmartPointer<vtkDataSet> run(const std::filesystem::path& path, const LoadOpt
                        " points, beyond the memory budget (field.memory_budget) of ",
                        options.memoryBudget, " bytes (12 per point, at most ",
                        VectorField::kMaxPoints, " points)"));
+  // The values' count against the extent was held by checkVtkXml (each payload
+  // exactly what the piece's extent needs), so VTK reads each array once.
+  VtkReadProgress progress(reader, path);
   reader->Update();
-  trap.throwIfFailed(concat("reading the ", what));
-  checkValueCounts(reader->GetXMLParser(), points, file);
+  progress.finish();
   trap.throwIfFailed(concat("reading the ", what));
   vtkSmartPointer<vtkDataSet> out = reader->GetOutput();
   if (!out || out->GetNumberOfPoints() != static_cast<vtkIdType>(points))
