@@ -35,14 +35,22 @@ void GpuField::uploadTexture(const VectorField& field) {
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
   const glm::ivec3 d = field.dims();
   if (d.x > maxSize || d.y > maxSize || d.z > maxSize)
-    throw Error(concat("GpuField: a ", d.x, "x", d.y, "x", d.z, " field exceeds this GPU's 3D ",
-                       "texture limit of ", maxSize, " per axis; resample it to a coarser grid"));
+    throw Error(concat("the field's upload: a ", d.x, "x", d.y, "x", d.z,
+                       " field exceeds this GPU's 3D ", "texture limit of ", maxSize,
+                       " per axis; lower field.resolution"));
   // RGB32F (texelFetch reads alpha 1: every point valid), or RGBA32F with the
   // validity mask in alpha when the field has one.
   const bool masked = field.hasValidity();
   if (!texture_ || dims_ != d || masked_ != masked) {
     texture_ = gl::createTexture(GL_TEXTURE_3D);
+    glGetError();
     glTextureStorage3D(texture_.id(), 1, masked ? GL_RGBA32F : GL_RGB32F, d.x, d.y, d.z);
+    if (glGetError() != GL_NO_ERROR) {
+      texture_ = {};
+      throw Error(concat("the field's upload: no GPU memory for a ", d.x, "x", d.y, "x", d.z,
+                         " field (", double(d.x) * d.y * d.z * (masked ? 16.0 : 12.0),
+                         " bytes); lower field.resolution"));
+    }
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
@@ -81,8 +89,8 @@ void GpuField::uploadBuffer(const VectorField& field) {
     if (glGetError() != GL_NO_ERROR) {
       buffer_ = {};
       const glm::ivec3 d = field.dims();
-      throw Error(concat("GpuField: no GPU memory for a ", d.x, "x", d.y, "x", d.z, " field (",
-                         bytes, " bytes); resample it to a coarser grid"));
+      throw Error(concat("the field's upload: no GPU memory for a ", d.x, "x", d.y, "x", d.z,
+                         " field (", bytes, " bytes); lower field.resolution"));
     }
   }
   glNamedBufferSubData(buffer_.id(), 0, bytes, padded.data());

@@ -29,9 +29,10 @@ namespace sandstorm {
 
 class VectorField {
  public:
-  // The largest grid accepted, in points (4 GiB of vec3 at 12 bytes each would
-  // be far beyond any GPU 3D texture limit anyway).
-  static constexpr std::size_t kMaxPoints = std::size_t{1} << 28;
+  // A guard against sizes that overflow, not a limit users meet: 2^36 points
+  // (768 GiB of vectors) is beyond any GPU's memory and 2048^3 textures. What
+  // limits a grid is memory: field.memory_budget, checked by every reader.
+  static constexpr std::size_t kMaxPoints = std::size_t{1} << 36;
 
   VectorField() = default;
   // Throws Error when dims are not positive, the point count exceeds kMaxPoints,
