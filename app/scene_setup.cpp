@@ -121,6 +121,7 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
     FieldParams params(spec.params.begin(), spec.params.end());
     const auto analytic = makeAnalyticField(spec.name, params);
     auto field = std::make_shared<VectorField>(bake(*analytic, spec.bounds, spec.dims));
+    if (spec.halfPrecision) field->roundToHalf();
     out.description = concat("analytic '", spec.name, "' baked to ", spec.dims.x, "x", spec.dims.y,
                              "x", spec.dims.z);
     out.update = FieldUpdate{.field = std::move(field), .placement = spec.placement};
@@ -132,6 +133,7 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
     options.arrayName = spec.name;
     options.resolution = spec.resolution;
     options.memoryBudget = std::size_t(fieldMemoryBudget(spec));
+    options.halfPrecision = spec.halfPrecision;
     std::error_code ec;
     // A folder is watched for steps, unless it is an OpenFOAM case.
     if (spec.watch || (std::filesystem::is_directory(path, ec) &&

@@ -2,6 +2,8 @@
 
 #include <epoxy/gl.h>
 
+#include <glm/gtc/packing.hpp>
+
 #include <chrono>
 #include <cstdlib>
 #include <string_view>
@@ -13,8 +15,11 @@ namespace sandstorm {
 
 void GpuField::upload(const VectorField& field) {
   const auto start = std::chrono::steady_clock::now();
+  // A half-precision grid is a 16-bit float texture (the buffer holds floats).
   const Storage storage =
-      preferred_ == Storage::Buffer && fitsBuffer(field) ? Storage::Buffer : Storage::Texture;
+      preferred_ == Storage::Buffer && !field.halfPrecision() && fitsBuffer(field)
+          ? Storage::Buffer
+          : Storage::Texture;
   if (storage != storage_) {
     texture_ = {};
     buffer_ = {};
@@ -40,11 +45,13 @@ void GpuField::uploadTexture(const VectorField& field) {
                        " per axis; lower field.resolution"));
   // RGB32F (texelFetch reads alpha 1: every point valid), or RGBA32F with the
   // validity mask in alpha when the field has one.
-  const bool masked = field.hasValidity();
-  if (!texture_ || dims_ != d || masked_ != masked) {
+  const bool masked = field.hasValidity(), half = field.halfPrecision();
+  if (!texture_ || dims_ != d || masked_ != masked || half_ != half) {
     texture_ = gl::createTexture(GL_TEXTURE_3D);
     glGetError();
-    glTextureStorage3D(texture_.id(), 1, masked ? GL_RGBA32F : GL_RGB32F, d.x, d.y, d.z);
+    const GLenum format =
+        half ? (masked ? GL_RGBA16F : GL_RGB16F) : (masked ? GL_RGBA32F : GL_RGB32F);
+    glTextureStorage3D(texture_.id(), 1, format, d.x, d.y, d.z);
     if (glGetError() != GL_NO_ERROR) {
       texture_ = {};
       throw Error(concat("the field's upload: no GPU memory for a ", d.x, "x", d.y, "x", d.z,
@@ -53,6 +60,16 @@ void GpuField::uploadTexture(const VectorField& field) {
     }
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+  half_ = half;
+  if (half) {
+    // The values are already 16-bit exact: sent as halves, half the bytes, kept exactly.
+    const std::vector<std::uint16_t> packed = halfTexels(field);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
+    glTextureSubImage3D(texture_.id(), 0, 0, 0, 0, d.x, d.y, d.z, masked ? GL_RGBA : GL_RGB,
+                        GL_HALF_FLOAT, packed.data());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    return;
   }
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   if (!masked) {
@@ -71,6 +88,20 @@ std::vector<glm::vec4> GpuField::withValidity(const VectorField& field) {
   for (std::size_t i = 0; i < values.size(); ++i)
     padded[i] = glm::vec4(values[i], valid.empty() || valid[i] ? 1.0f : 0.0f);
   return padded;
+}
+
+std::vector<std::uint16_t> GpuField::halfTexels(const VectorField& field) {
+  const std::span<const glm::vec3> values = field.values();
+  const std::span<const std::uint8_t> valid = field.validity();
+  const std::size_t channels = field.hasValidity() ? 4 : 3;
+  std::vector<std::uint16_t> packed(values.size() * channels);
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const glm::u16vec3 h = glm::packHalf(values[i]);
+    for (std::size_t c = 0; c < 3; ++c)
+      packed[i * channels + c] = h[int(c)];
+    if (channels == 4) packed[i * 4 + 3] = glm::packHalf1x16(valid[i] ? 1.0f : 0.0f);
+  }
+  return packed;
 }
 
 bool GpuField::fitsBuffer(const VectorField& field) {

@@ -4,7 +4,10 @@
 // (shaders/particle_physics.glsl), so the GPU agrees with the CPU bit for bit.
 //   Texture: an RGB32F 3D texture read with texelFetch (thesis 5.2); the
 //     transform-feedback backend's. A field with a validity mask
-//     (VectorField::setValidity) is RGBA32F, the mask in alpha.
+//     (VectorField::setValidity) is RGBA32F, the mask in alpha. A field
+//     rounded to half precision (field.precision = "half") is RGB16F or
+//     RGBA16F, always a texture: texelFetch returns the very values the CPU
+//     twin samples, in half the memory.
 //   Buffer: a shader storage buffer of vec4 (xyz, w: 1 valid, 0 not), x fastest; what
 //     the compute backend prefers: on an H200 its eight loads a sample made
 //     the update 12% (RK2) to 23% (RK4) faster than eight texelFetch
@@ -52,12 +55,15 @@ class GpuField {
   void uploadTexture(const VectorField& field);
   void uploadBuffer(const VectorField& field);
   static std::vector<glm::vec4> withValidity(const VectorField& field);
+  // A half-precision field's texels: RGB, or RGBA with the mask in alpha.
+  static std::vector<std::uint16_t> halfTexels(const VectorField& field);
 
   Storage preferred_, storage_;
   gl::Texture texture_;
   gl::Buffer buffer_;
   std::shared_ptr<const VectorField> holds_;
   glm::ivec3 dims_{0};
+  bool half_ = false;
   bool masked_ = false;
   double lastUploadMs_ = 0.0;
 };

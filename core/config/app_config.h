@@ -140,6 +140,8 @@ struct FieldSpec {
   std::uint64_t memoryBudget = 0;
   // Steps of a series read ahead of playback, beyond the two being blended.
   int readAhead = 2;
+  // precision = "half": 16-bit floats on the GPU (VectorField::roundToHalf).
+  bool halfPrecision = false;
 };
 
 // FieldSpec::memoryBudget, the automatic one worked out: half the host's

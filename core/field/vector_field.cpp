@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <glm/gtc/packing.hpp>
+
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -42,6 +44,19 @@ VectorField::VectorField(const Box& bounds, const glm::ivec3& dims, std::vector<
     throw Error(concat("VectorField: ", values_.size(), " values for ", count, " grid points"));
   for (int a = 0; a < 3; ++a)
     indexScale_[a] = dims[a] > 1 ? float(dims[a] - 1) / (bounds.max[a] - bounds.min[a]) : 0.0f;
+}
+
+void VectorField::roundToHalf() {
+  for (std::size_t i = 0; i < values_.size(); ++i)
+    for (int c = 0; c < 3; ++c)
+      if (!(std::abs(values_[i][c]) <= kHalfMax))
+        throw Error(concat("field.precision = \"half\": point ", i, " has the component ",
+                           values_[i][c], ", beyond the ", kHalfMax,
+                           " that 16-bit floats hold; keep field.precision = \"float\" or scale "
+                           "the field's units"));
+  for (glm::vec3& v : values_)
+    v = glm::unpackHalf(glm::packHalf(v));
+  half_ = true;
 }
 
 glm::vec3 VectorField::pointPosition(int i, int j, int k) const {

@@ -133,6 +133,7 @@ VectorField loadField(const std::filesystem::path& path, const LoadOptions& opti
   try {
     VectorField field = dispatch(path, format, options, r);
     if (r.format.empty()) r.format = describe(format);
+    if (options.halfPrecision) field.roundToHalf();
     log::debug("loaded ", file, " (", r.format, "): ", field.dims().x, "x", field.dims().y, "x",
                field.dims().z, " points");
     return field;

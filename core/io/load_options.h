@@ -42,6 +42,9 @@ struct LoadOptions {
   // The time step to read of a file that holds several (Exodus, EnSight,
   // OpenFOAM, NetCDF, CGNS): an index into LoadReport::times.
   std::size_t timeStep = 0;
+  // field.precision = "half": the vectors rounded to 16-bit floats
+  // (VectorField::roundToHalf), for a GPU that keeps them so.
+  bool halfPrecision = false;
   // Unity and Unreal axes and units to Sandstorm's (see above).
   bool convertEngineAxes = true;
   // Unity .vf files carry no bounds: the box they fill, in Unity units before

@@ -1,5 +1,7 @@
 #include "core/sim/frame_packet_codec.h"
 
+#include <glm/gtc/packing.hpp>
+
 #include <optional>
 #include <string>
 
@@ -14,7 +16,7 @@ constexpr std::uint32_t kPacketMagic = 0x50465353;  // "SSFP"
 constexpr std::uint32_t kFieldMagic = 0x46565353;   // "SSVF"
 // 2: equation terms, lod scale; 3: tracking, wand ray; 4: grid validity;
 // 5: field range; 6: vorticity; 7: colour grids by name, grids' scalar arrays.
-constexpr std::uint16_t kVersion = 9;
+constexpr std::uint16_t kVersion = 10;
 constexpr std::uint32_t kMaxScalarArrays = 256;
 
 // Limits far above any real packet, so a corrupt count cannot make us allocate gigabytes.
@@ -264,7 +266,16 @@ std::vector<std::byte> encodeField(const VectorField& grid) {
   for (int a = 0; a < 3; ++a)
     w.i32(grid.dims()[a]);
   const std::span<const glm::vec3> values = grid.values();
-  w.f32s(std::span<const float>(&values.data()->x, values.size() * 3));
+  // A half-precision grid travels as its 16-bit floats: half the bytes, exactly.
+  w.boolean(grid.halfPrecision());
+  if (grid.halfPrecision()) {
+    for (const glm::vec3& v : values) {
+      const glm::u16vec3 h = glm::packHalf(v);
+      w.u16(h.x), w.u16(h.y), w.u16(h.z);
+    }
+  } else {
+    w.f32s(std::span<const float>(&values.data()->x, values.size() * 3));
+  }
   w.boolean(grid.hasValidity());
   if (grid.hasValidity()) w.raw(std::as_bytes(grid.validity()));
   w.u32(std::uint32_t(grid.scalars().size()));
@@ -293,13 +304,27 @@ VectorField decodeField(std::span<const std::byte> bytes, std::string_view name)
       r.fail("dims", concat(dims.x, "x", dims.y, "x", dims.z, " points exceed the limit of ",
                             VectorField::kMaxPoints));
   }
-  // The vectors, a flag, the validity mask when the flag says there is one,
-  // and the scalar arrays (a count, then a name and a float per point each).
-  if (r.remaining() < points * 12 + 5)
-    r.fail("values", concat("expected at least ", points * 12 + 5, " bytes of vectors for ", dims.x,
+  // Whether the vectors are halves, the vectors, a flag, the validity mask
+  // when the flag says there is one, and the scalar arrays (a count, then a
+  // name and a float per point each).
+  const bool half = r.boolean("half precision");
+  const std::uint64_t vectorBytes = points * (half ? 6 : 12);
+  if (r.remaining() < vectorBytes + 5)
+    r.fail("values", concat("expected at least ", vectorBytes + 5, " bytes of vectors for ", dims.x,
                             "x", dims.y, "x", dims.z, ", got ", r.remaining()));
   std::vector<glm::vec3> values(points);
-  r.f32s(std::span<float>(&values.data()->x, values.size() * 3), "values");
+  if (half) {
+    for (glm::vec3& v : values) {
+      glm::u16vec3 h;
+      for (int c = 0; c < 3; ++c)
+        h[c] = r.u16("values");
+      v = glm::unpackHalf(h);
+      if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
+        r.fail("values", "a half-precision vector that is not finite");
+    }
+  } else {
+    r.f32s(std::span<float>(&values.data()->x, values.size() * 3), "values");
+  }
   std::vector<std::uint8_t> valid;
   if (r.boolean("validity mask")) {
     const std::span<const std::byte> mask = r.raw(points, "validity mask");
@@ -325,6 +350,7 @@ VectorField decodeField(std::span<const std::byte> bytes, std::string_view name)
   r.finish();
   try {
     VectorField field(bounds, dims, std::move(values));
+    if (half) field.roundToHalf();  // exact already: marks it half
     field.setValidity(std::move(valid));
     for (VectorField::Scalars& a : scalars)
       field.addScalars(std::move(a.name), std::move(a.values));

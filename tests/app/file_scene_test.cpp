@@ -249,7 +249,7 @@ TEST(FileScene, AnUnstructuredMeshAndAnOpenFoamCaseOpenWithTheirPictures) {
   const auto foam = test::runSandstorm((dir / "cavity").string() + " --frames 3 --screenshot " +
                                        dir.string() + " --set sim.maximum=2000");
   ASSERT_EQ(foam.exitCode, 0) << foam.output;
-  EXPECT_NE(foam.output.find("3 frames over 1 s ('U')"), std::string::npos) << foam.output;
+  EXPECT_NE(foam.output.find("3 steps over 1 s ('U'), streamed"), std::string::npos) << foam.output;
   EXPECT_TRUE(std::filesystem::exists(dir / "desktop.png"));
 }
 

@@ -41,5 +41,38 @@ TEST_F(GpuFieldTest, AGridBeyondTheStorageBufferLimitIsKeptAsATexture) {
   EXPECT_EQ(field.storage(), GpuField::Storage::Buffer);
 }
 
+TEST_F(GpuFieldTest, AHalfPrecisionGridIsASixteenBitTextureHoldingItsValuesExactly) {
+  for (const bool masked : {false, true}) {
+    SCOPED_TRACE(masked ? "masked" : "unmasked");
+    VectorField f = grid({6, 5, 4});
+    for (std::size_t i = 0; i < f.pointCount(); ++i)
+      f.values()[i] = glm::vec3(0.013f * float(i), -1.7f + float(i % 5), 1000.0f / float(i + 3));
+    if (masked) {
+      std::vector<std::uint8_t> valid(f.pointCount(), 1);
+      valid[7] = 0;
+      f.setValidity(valid);
+    }
+    f.roundToHalf();
+    GpuField field(GpuField::Storage::Buffer);  // a buffer holds floats: a texture it is
+    field.upload(f);
+    ASSERT_EQ(field.storage(), GpuField::Storage::Texture);
+    GLint texture = 0;
+    field.bindTexture(3);
+    glActiveTexture(GL_TEXTURE3);
+    glGetIntegerv(GL_TEXTURE_BINDING_3D, &texture);
+    GLint format = 0;
+    glGetTextureLevelParameteriv(GLuint(texture), 0, GL_TEXTURE_INTERNAL_FORMAT, &format);
+    EXPECT_EQ(format, masked ? GL_RGBA16F : GL_RGB16F);
+    std::vector<glm::vec4> texels(f.pointCount());
+    glGetTextureImage(GLuint(texture), 0, GL_RGBA, GL_FLOAT, GLsizei(texels.size() * 16),
+                      texels.data());
+    for (std::size_t i = 0; i < f.pointCount(); ++i) {
+      ASSERT_EQ(glm::vec3(texels[i]), f.values()[i]) << "point " << i;
+      EXPECT_EQ(texels[i].w, masked && i == 7 ? 0.0f : 1.0f);
+    }
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  }
+}
+
 }  // namespace
 }  // namespace sandstorm

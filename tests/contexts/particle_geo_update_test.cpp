@@ -302,6 +302,34 @@ TEST_P(ParticleBackendTest, GridsKeptAsTexturesMoveParticlesTheSame) {
   EXPECT_GT(a.peak, 4000u);
 }
 
+// field.precision = "half": the grid on the GPU as 16-bit floats (a texture
+// either backend), the CPU twin sampling the same rounded values: the same
+// particles to rounding, with and without a validity mask, and blended in time.
+TEST_P(ParticleBackendTest, AHalfPrecisionFieldMovesParticlesAsTheCpuTwin) {
+  for (const bool masked : {false, true}) {
+    SCOPED_TRACE(masked ? "masked" : "unmasked");
+    Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, BoundaryMode::Kill);
+    auto half = std::make_shared<VectorField>(*s.field);
+    if (masked) {  // a corner of the box without data
+      std::vector<std::uint8_t> valid(half->pointCount(), 1);
+      const glm::ivec3 d = half->dims();
+      for (int k = 0; k < d.z; ++k)
+        for (int j = 0; j < d.y; ++j)
+          for (int i = 0; i < d.x; ++i) {
+            const glm::vec3 p = half->pointPosition(i, j, k);
+            if (p.x > 0.5f && p.z > 1.0f) valid[half->index(i, j, k)] = 0;
+          }
+      half->setValidity(valid);
+    }
+    half->roundToHalf();
+    s.field = half;
+    const Agreement a = compare(GetParam(), s, 60, 16384);
+    EXPECT_EQ(a.frames, 60u);
+    EXPECT_LT(a.maxError, 1e-4f);
+    EXPECT_GT(a.peak, 2000u);
+  }
+}
+
 // A field with a validity mask (points a resampled file had no data for):
 // the same particles die (kill) or stop (clamp) on the GPU as on the CPU,
 // whether the grid is a storage buffer (w) or a texture (alpha).

@@ -205,6 +205,11 @@ TEST(Config, TheFieldsMemoryBudgetIsASizeOrAutomatic) {
                  "field.memory_budget", "16 GiB");
   EXPECT_EQ(parseConfig("[field]\nread_ahead = 6\n" + kWall, "test.toml").field.readAhead, 6);
   EXPECT_ERROR("[field]\nread_ahead = -1\n" + kWall, "test.toml:2", "field.read_ahead", "0..64");
+  EXPECT_FALSE(parseConfig(kWall, "test.toml").field.halfPrecision);
+  EXPECT_TRUE(
+      parseConfig("[field]\nprecision = \"half\"\n" + kWall, "test.toml").field.halfPrecision);
+  EXPECT_ERROR("[field]\nprecision = \"double\"\n" + kWall, "test.toml:2", "field.precision",
+               "float, half");
 }
 
 TEST(Config, ReadsAndChecksGpuTuning) {

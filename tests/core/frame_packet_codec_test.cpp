@@ -229,6 +229,20 @@ TEST(FramePacketCodec, FieldGridsRoundTripAndHashByContent) {
   EXPECT_NE(fieldHash(*grid(1.0001f)), fieldHash(*a));
 }
 
+TEST(FramePacketCodec, AHalfPrecisionGridTravelsAsHalvesExactly) {
+  VectorField a = *grid(1.37f);
+  const std::size_t floatBytes = encodeField(a).size();
+  a.roundToHalf();
+  const std::vector<std::byte> bytes = encodeField(a);
+  EXPECT_EQ(bytes.size(), floatBytes - 6 * a.pointCount() + 0);
+  const VectorField b = decodeField(bytes);
+  EXPECT_TRUE(b.halfPrecision());
+  ASSERT_EQ(b.pointCount(), a.pointCount());
+  EXPECT_EQ(std::memcmp(b.values().data(), a.values().data(), a.values().size_bytes()), 0);
+  EXPECT_EQ(fieldHash(b), fieldHash(a));
+  EXPECT_NE(fieldHash(a), fieldHash(*grid(1.37f)));
+}
+
 TEST(FramePacketCodec, AGridsScalarArraysTravelWithIt) {
   VectorField a = *grid(1);
   std::vector<float> t(a.pointCount()), p(a.pointCount());
@@ -287,7 +301,7 @@ TEST(FramePacketCodec, CorruptBuffersAreClearErrors) {
     return b;
   };
   expectError(with(0, 'X'), true, "not a frame packet");
-  expectError(with(4, 10), true, "version 10");
+  expectError(with(4, 11), true, "version 11");
   expectError(with(42, 7), true, "reset");  // the reset flag: 0 or 1
   expectError(with(46, 0xff), true,
               "change count");  // a huge count is refused before any allocation
@@ -304,6 +318,9 @@ TEST(FramePacketCodec, CorruptBuffersAreClearErrors) {
   field[32] = std::byte{0xff};
   field[33] = std::byte{0xff};
   expectError(field, false, "expected positive dims");
+  field = encodeField(*grid(1));
+  field[42] = std::byte{2};  // after magic, version, bounds and dims: the half flag, 0 or 1
+  expectError(field, false, "half precision");
 }
 
 TEST(FieldStore, SenderAndReceiverHoldTheSameGridsWithoutTalking) {

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+#include <iomanip>
+
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -20,6 +24,54 @@ VectorField linearField() {
       for (int i = 0; i < 5; ++i)
         f.at(i, j, k) = linear(f.pointPosition(i, j, k));
   return f;
+}
+
+// IEEE binary16 by hand: the nearest half to x (ties away from zero, as
+// glm::packHalf rounds), from its definition (11 significant bits; below
+// 2^-14 a fixed step of 2^-24).
+float nearestHalf(float x) {
+  const double a = std::abs(double(x));
+  if (a == 0.0) return x;
+  const int exponent = std::max(int(std::floor(std::log2(a))), -14);
+  const double step = std::ldexp(1.0, exponent - 10);
+  const double q = a / step, low = std::floor(q);
+  const double n = q - low >= 0.5 ? low + 1 : low;
+  return float(std::copysign(n * step, double(x)));
+}
+
+TEST(VectorField, HalfPrecisionRoundsToTheNearestHalfWithinAThousandthOfTheFastest) {
+  VectorField f(Box{{0, 0, 0}, {1, 1, 1}}, {9, 7, 5});
+  std::uint32_t state = 12345;
+  const auto next = [&] {
+    state = state * 1664525u + 1013904223u;
+    return float(state >> 8) / float(1u << 24);
+  };
+  for (glm::vec3& v : f.values())
+    v = glm::vec3(next() - 0.5f, next() * 1e-6f, 40.0f * next() - 20.0f) * 1.7f;
+  f.values()[3] = glm::vec3(1.0f, 0.5f, -2048.0f);  // exactly representable: kept
+  const VectorField before = f;
+  EXPECT_FALSE(f.halfPrecision());
+  f.roundToHalf();
+  EXPECT_TRUE(f.halfPrecision());
+  const float fastest = before.maxMagnitude();
+  float worst = 0.0f;
+  std::size_t changed = 0;
+  for (std::size_t i = 0; i < f.pointCount(); ++i) {
+    for (int c = 0; c < 3; ++c)
+      ASSERT_EQ(f.values()[i][c], nearestHalf(before.values()[i][c]))
+          << i << "," << c << ": " << std::setprecision(12) << before.values()[i][c];
+    worst = std::max(worst, glm::length(f.values()[i] - before.values()[i]));
+    changed += f.values()[i] != before.values()[i];
+  }
+  EXPECT_LE(worst, 1e-3f * fastest);
+  EXPECT_GT(changed, f.pointCount() / 2);
+  EXPECT_EQ(f.values()[3], glm::vec3(1.0f, 0.5f, -2048.0f));
+  // Beyond what half holds: refused, nothing changed.
+  VectorField big(Box{{0, 0, 0}, {1, 1, 1}}, {2, 2, 2});
+  big.values()[5] = glm::vec3(0.1f, -70000.0f, 0.0f);
+  EXPECT_THROW(big.roundToHalf(), Error);
+  EXPECT_FALSE(big.halfPrecision());
+  EXPECT_EQ(big.values()[5].x, 0.1f);
 }
 
 TEST(VectorField, PointPositionsSpanTheBounds) {
