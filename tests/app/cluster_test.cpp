@@ -163,6 +163,14 @@ TEST(Cluster, ATimeVaryingFieldSendsEachGridOnce) {
       << output;  // one slot per frame, grids apart
 }
 
+TEST(Cluster, AHalfPrecisionSeriesTravelsAsHalvesAndDrawsTheSameEverywhere) {
+  const std::string output =
+      expectSameHashes("tests/data/series-half-cluster.toml", "", 60, "cluster-series-half");
+  // Three grids of 20x20x12 points reach each rank (1 s of the series), at
+  // 6 bytes a vector and 84 of header and flags: 86652 bytes (as floats: 173052).
+  EXPECT_EQ(count(output, "field grids: 3 (86652 B"), 3) << output;
+}
+
 TEST(Cluster, HeadlessPngsEqualTheSingleProcessOnes) {
   const auto dir = test::scratchDir("cluster-png");
   const auto one =
