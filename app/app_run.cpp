@@ -1,7 +1,6 @@
 #include "app/app_run.h"
 
-#include "core/config/byte_size.h"
-#include "core/io/series_reader.h"
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <atomic>
@@ -831,8 +830,11 @@ int AppRun::finish() {
   const double seconds = std::chrono::duration<double>(Clock::now() - start_).count();
   for (const auto& w : walls_)
     failed_ = failed_ || w->error().has_value();
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
   log::info("stats: ", frames_, " frames in ", seconds, " s (", frames_ / std::max(seconds, 1e-9),
-            " frames/s), ", walls_.size(), " wall(s)");
+            " frames/s), ", walls_.size(), " wall(s); peak memory ",
+            formatByteSize(double(usage.ru_maxrss) * 1024.0), " resident");
   for (const auto& w : walls_) {
     const WallStats s = w->stats();
     // The count is read back late, so that the frame loop never waits for it.
