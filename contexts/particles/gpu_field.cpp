@@ -4,12 +4,16 @@
 
 #include <glm/gtc/packing.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <functional>
 #include <string_view>
+#include <thread>
 #include <vector>
 
 #include "core/util/error.h"
+#include "core/util/parallel_for.h"
 
 namespace sandstorm {
 
@@ -85,8 +89,10 @@ std::vector<glm::vec4> GpuField::withValidity(const VectorField& field) {
   const std::span<const glm::vec3> values = field.values();
   const std::span<const std::uint8_t> valid = field.validity();
   std::vector<glm::vec4> padded(values.size());
-  for (std::size_t i = 0; i < values.size(); ++i)
-    padded[i] = glm::vec4(values[i], valid.empty() || valid[i] ? 1.0f : 0.0f);
+  forChunks(values.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      padded[i] = glm::vec4(values[i], valid.empty() || valid[i] ? 1.0f : 0.0f);
+  });
   return padded;
 }
 
@@ -95,12 +101,15 @@ std::vector<std::uint16_t> GpuField::halfTexels(const VectorField& field) {
   const std::span<const std::uint8_t> valid = field.validity();
   const std::size_t channels = field.hasValidity() ? 4 : 3;
   std::vector<std::uint16_t> packed(values.size() * channels);
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    const glm::u16vec3 h = glm::packHalf(values[i]);
-    for (std::size_t c = 0; c < 3; ++c)
-      packed[i * channels + c] = h[int(c)];
-    if (channels == 4) packed[i * 4 + 3] = glm::packHalf1x16(valid[i] ? 1.0f : 0.0f);
-  }
+  const std::uint16_t one = glm::packHalf1x16(1.0f), zero = glm::packHalf1x16(0.0f);
+  forChunks(values.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i) {
+      const glm::u16vec3 h = glm::packHalf(values[i]);
+      for (std::size_t c = 0; c < 3; ++c)
+        packed[i * channels + c] = h[int(c)];
+      if (channels == 4) packed[i * 4 + 3] = valid[i] ? one : zero;
+    }
+  });
   return packed;
 }
 

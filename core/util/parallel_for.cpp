@@ -68,4 +68,15 @@ void ParallelFor::run(std::size_t count,
   done_.wait(lock, [&] { return pending_ == 0; });
 }
 
+void forChunks(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body,
+               std::size_t grain) {
+  const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
+  const std::size_t threads =
+      std::clamp<std::size_t>(std::min(cores, count / std::max<std::size_t>(grain, 1)), 1, 16);
+  std::vector<std::jthread> workers;
+  for (std::size_t t = 1; t < threads; ++t)
+    workers.emplace_back(body, count * t / threads, count * (t + 1) / threads);
+  body(0, count / threads);
+}
+
 }  // namespace sandstorm

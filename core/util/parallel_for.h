@@ -15,6 +15,13 @@
 
 namespace sandstorm {
 
+// body(begin, end) over [0, count) in contiguous chunks on threads started for
+// the call (up to the machine's cores, 16 at most, one per `grain` indices at
+// least), this one included; returns once all are done. For one-off passes
+// over a large grid from any thread, where a pool would sit idle between them.
+void forChunks(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body,
+               std::size_t grain = std::size_t{1} << 16);
+
 class ParallelFor {
  public:
   // `threads` 0: the machine's hardware threads (at most 16).
