@@ -45,6 +45,9 @@ struct LoadOptions {
   // field.precision = "half": the vectors rounded to 16-bit floats
   // (VectorField::roundToHalf), for a GPU that keeps them so.
   bool halfPrecision = false;
+  // Long reads say how far they are in the log (bytes, rate, time left);
+  // off for the steps a series reads in the background.
+  bool showProgress = true;
   // Unity and Unreal axes and units to Sandstorm's (see above).
   bool convertEngineAxes = true;
   // Unity .vf files carry no bounds: the box they fill, in Unity units before

@@ -43,6 +43,7 @@ std::shared_ptr<const VectorField> SeriesReader::read(const Source& source,
                                                       const VectorField* grid) {
   LoadOptions step = options;
   step.timeStep = source.timeStep;
+  step.showProgress = false;  // read in the background, as playback needs it
   auto field = std::make_shared<const VectorField>(loadField(source.file, step));
   if (grid && (field->dims() != grid->dims() || field->bounds().min != grid->bounds().min ||
                field->bounds().max != grid->bounds().max))

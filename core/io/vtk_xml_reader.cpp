@@ -17,6 +17,7 @@
 
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <vector>
 
 #include "core/field/vector_field.h"
@@ -65,9 +66,10 @@ vtkSmartPointer<vtkDataSet> run(const std::filesystem::path& path, const LoadOpt
                        VectorField::kMaxPoints, " points)"));
   // The values' count against the extent was held by checkVtkXml (each payload
   // exactly what the piece's extent needs), so VTK reads each array once.
-  VtkReadProgress progress(reader, path);
+  std::optional<VtkReadProgress> progress;
+  if (options.showProgress) progress.emplace(reader, path);
   reader->Update();
-  progress.finish();
+  if (progress) progress->finish();
   trap.throwIfFailed(concat("reading the ", what));
   vtkSmartPointer<vtkDataSet> out = reader->GetOutput();
   if (!out || out->GetNumberOfPoints() != static_cast<vtkIdType>(points))
