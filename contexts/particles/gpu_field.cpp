@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
+#include <cstring>
 #include <functional>
 #include <string_view>
 #include <thread>
@@ -66,51 +67,81 @@ void GpuField::uploadTexture(const VectorField& field) {
     glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
   half_ = half;
-  if (half) {
-    // The values are already 16-bit exact: sent as halves, half the bytes, kept exactly.
-    const std::vector<std::uint16_t> packed = halfTexels(field);
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 2);
-    glTextureSubImage3D(texture_.id(), 0, 0, 0, 0, d.x, d.y, d.z, masked ? GL_RGBA : GL_RGB,
-                        GL_HALF_FLOAT, packed.data());
-    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    return;
-  }
+  // Through a staging buffer the GPU copies from: the frame does not wait
+  // for the driver to take a copy of a grid hundreds of megabytes large.
+  const Layout layout = half ? (masked ? Layout::HalfRgba : Layout::HalfRgb)
+                             : (masked ? Layout::FloatRgba : Layout::FloatRgb);
+  const gl::Buffer staging = stage(field, layout);
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, staging.id());
+  glPixelStorei(GL_UNPACK_ALIGNMENT, half ? 2 : 4);
+  glTextureSubImage3D(texture_.id(), 0, 0, 0, 0, d.x, d.y, d.z, masked ? GL_RGBA : GL_RGB,
+                      half ? GL_HALF_FLOAT : GL_FLOAT, nullptr);
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-  if (!masked) {
-    glTextureSubImage3D(texture_.id(), 0, 0, 0, 0, d.x, d.y, d.z, GL_RGB, GL_FLOAT,
-                        field.values().data());
-    return;
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+}
+
+std::size_t GpuField::texelBytes(Layout layout) {
+  switch (layout) {
+    case Layout::FloatRgb:
+      return 12;
+    case Layout::FloatRgba:
+      return 16;
+    case Layout::HalfRgb:
+      return 6;
+    case Layout::HalfRgba:
+      return 8;
   }
-  const std::vector<glm::vec4> padded = withValidity(field);
-  glTextureSubImage3D(texture_.id(), 0, 0, 0, 0, d.x, d.y, d.z, GL_RGBA, GL_FLOAT, padded.data());
+  return 16;
 }
 
-std::vector<glm::vec4> GpuField::withValidity(const VectorField& field) {
+void GpuField::writeTexels(const VectorField& field, Layout layout, void* out) {
   const std::span<const glm::vec3> values = field.values();
   const std::span<const std::uint8_t> valid = field.validity();
-  std::vector<glm::vec4> padded(values.size());
-  forChunks(values.size(), [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i)
-      padded[i] = glm::vec4(values[i], valid.empty() || valid[i] ? 1.0f : 0.0f);
-  });
-  return padded;
-}
-
-std::vector<std::uint16_t> GpuField::halfTexels(const VectorField& field) {
-  const std::span<const glm::vec3> values = field.values();
-  const std::span<const std::uint8_t> valid = field.validity();
-  const std::size_t channels = field.hasValidity() ? 4 : 3;
-  std::vector<std::uint16_t> packed(values.size() * channels);
+  const auto isValid = [&](std::size_t i) { return valid.empty() || valid[i] != 0; };
   const std::uint16_t one = glm::packHalf1x16(1.0f), zero = glm::packHalf1x16(0.0f);
   forChunks(values.size(), [&](std::size_t begin, std::size_t end) {
-    for (std::size_t i = begin; i < end; ++i) {
-      const glm::u16vec3 h = glm::packHalf(values[i]);
-      for (std::size_t c = 0; c < 3; ++c)
-        packed[i * channels + c] = h[int(c)];
-      if (channels == 4) packed[i * 4 + 3] = valid[i] ? one : zero;
+    switch (layout) {
+      case Layout::FloatRgb:
+        std::memcpy(static_cast<glm::vec3*>(out) + begin, values.data() + begin,
+                    (end - begin) * sizeof(glm::vec3));
+        break;
+      case Layout::FloatRgba:  // w: 1 valid, 0 not
+        for (std::size_t i = begin; i < end; ++i)
+          static_cast<glm::vec4*>(out)[i] = glm::vec4(values[i], isValid(i) ? 1.0f : 0.0f);
+        break;
+      case Layout::HalfRgb:
+      case Layout::HalfRgba: {
+        const std::size_t channels = layout == Layout::HalfRgba ? 4 : 3;
+        auto* texels = static_cast<std::uint16_t*>(out);
+        for (std::size_t i = begin; i < end; ++i) {
+          const glm::u16vec3 h = glm::packHalf(values[i]);
+          for (std::size_t c = 0; c < 3; ++c)
+            texels[i * channels + c] = h[int(c)];
+          if (channels == 4) texels[i * 4 + 3] = isValid(i) ? one : zero;
+        }
+        break;
+      }
     }
   });
-  return packed;
+}
+
+gl::Buffer GpuField::stage(const VectorField& field, Layout layout) {
+  const GLsizeiptr bytes = GLsizeiptr(field.pointCount() * texelBytes(layout));
+  gl::Buffer staging = gl::createBuffer();
+  glGetError();
+  glNamedBufferStorage(staging.id(), bytes, nullptr, GL_MAP_WRITE_BIT);
+  void* out = glGetError() == GL_NO_ERROR
+                  ? glMapNamedBufferRange(staging.id(), 0, bytes,
+                                          GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT)
+                  : nullptr;
+  if (!out) {
+    const glm::ivec3 d = field.dims();
+    throw Error(concat("the field's upload: no memory to stage a ", d.x, "x", d.y, "x", d.z,
+                       " field (", bytes, " bytes); lower field.resolution"));
+  }
+  writeTexels(field, layout, out);
+  glUnmapNamedBuffer(staging.id());
+  return staging;
 }
 
 bool GpuField::fitsBuffer(const VectorField& field) {
@@ -120,12 +151,11 @@ bool GpuField::fitsBuffer(const VectorField& field) {
 }
 
 void GpuField::uploadBuffer(const VectorField& field) {
-  const std::vector<glm::vec4> padded = withValidity(field);  // w: 1 valid, 0 not
-  const GLsizeiptr bytes = GLsizeiptr(padded.size() * sizeof(glm::vec4));
+  const GLsizeiptr bytes = GLsizeiptr(field.pointCount() * sizeof(glm::vec4));
   if (!buffer_ || dims_ != field.dims()) {
     buffer_ = gl::createBuffer();
     glGetError();
-    glNamedBufferStorage(buffer_.id(), bytes, nullptr, GL_DYNAMIC_STORAGE_BIT);
+    glNamedBufferStorage(buffer_.id(), bytes, nullptr, 0);
     if (glGetError() != GL_NO_ERROR) {
       buffer_ = {};
       const glm::ivec3 d = field.dims();
@@ -133,7 +163,9 @@ void GpuField::uploadBuffer(const VectorField& field) {
                          " field (", bytes, " bytes); lower field.resolution"));
     }
   }
-  glNamedBufferSubData(buffer_.id(), 0, bytes, padded.data());
+  // Staged, then copied by the GPU (see uploadTexture).
+  const gl::Buffer staging = stage(field, Layout::FloatRgba);
+  glCopyNamedBufferSubData(staging.id(), buffer_.id(), 0, 0, bytes);
 }
 
 void GpuField::show(std::shared_ptr<const VectorField> field) {

@@ -54,9 +54,14 @@ class GpuField {
   static bool fitsBuffer(const VectorField& field);
   void uploadTexture(const VectorField& field);
   void uploadBuffer(const VectorField& field);
-  static std::vector<glm::vec4> withValidity(const VectorField& field);
-  // A half-precision field's texels: RGB, or RGBA with the mask in alpha.
-  static std::vector<std::uint16_t> halfTexels(const VectorField& field);
+  // How the grid's points are laid out for the GPU: float or half, RGB, or
+  // RGBA with the validity mask in alpha (the buffer's vec4 is FloatRgba).
+  enum class Layout { FloatRgb, FloatRgba, HalfRgb, HalfRgba };
+  static std::size_t texelBytes(Layout layout);
+  static void writeTexels(const VectorField& field, Layout layout, void* out);
+  // A buffer holding the grid's texels, written over the cores through a
+  // mapping, for the GPU to copy from (the frame does not wait for a copy).
+  static gl::Buffer stage(const VectorField& field, Layout layout);
 
   Storage preferred_, storage_;
   gl::Texture texture_;
