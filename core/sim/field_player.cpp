@@ -12,8 +12,16 @@ FieldPlayer::FieldPlayer(FieldTimeline timeline, const FieldPlacement& placement
   time_ = timeline_.time(0);
   position_ = timeline_.at(time_, loop);
   timeline_.readAhead(position_, false, loop);
-  field_ = timeline_.wait(position_.first);
-  next_ = timeline_.wait(position_.second);
+  field_ = timeline_.wait(position_.first);  // without it there is nothing to show: throws
+  try {
+    next_ = timeline_.wait(position_.second);
+  } catch (const Error& e) {
+    // The second step does not read: the first alone, and playback stopped there.
+    error_ = e.what();
+    log::error("field: ", error_, "; playback stops at the first step and the run goes on");
+    next_ = field_;
+    position_.second = position_.first;
+  }
 }
 
 FieldPlayer::Frame FieldPlayer::current() const {

@@ -48,7 +48,8 @@ class FieldPlayer {
   };
   using WaitListener = std::function<void(std::uint32_t frame)>;
 
-  // Waits for the first pair (the start shows it). Throws Error when it cannot be read.
+  // Waits for the first pair (the start shows it). Throws Error when the
+  // first step cannot be read; a second that cannot stops playback at the first.
   FieldPlayer(FieldTimeline timeline, const FieldPlacement& placement, bool loop);
 
   // The pair to show at `frame`, then the clock moved on by simDt * speed.

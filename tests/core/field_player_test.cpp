@@ -152,6 +152,22 @@ TEST(FieldPlayer, AStepThatCannotBeReadStopsPlaybackAndTheRunGoesOn) {
   EXPECT_EQ(play(replay, 16, [](int) {}), shown);
 }
 
+TEST(FieldPlayer, ASecondStepThatCannotBeReadHoldsTheFirstAndAFirstStopsTheStart) {
+  auto steps = std::make_shared<ScriptedSteps>(3);
+  steps->broken.insert(1);
+  MainContext main(unlooped(), FieldUpdate{}, quarterSteps());
+  main.setFieldTimeline(FieldTimeline({0, 1, 2}, steps), FieldPlacement{});
+  const std::vector<Shown> shown = play(main, 8, [](int) {});
+  EXPECT_EQ(shown[0], (Shown{0, 0, 0.0f}));
+  for (int f = 1; f < 8; ++f)
+    EXPECT_EQ(shown[std::size_t(f)], (Shown{-1, -1, 0.0f})) << f;
+  EXPECT_NE(main.fieldStatus().error.find("step_1.vti"), std::string::npos);
+  auto first = std::make_shared<ScriptedSteps>(3);
+  first->broken.insert(0);
+  MainContext start(unlooped(), FieldUpdate{}, quarterSteps());
+  EXPECT_THROW(start.setFieldTimeline(FieldTimeline({0, 1, 2}, first), FieldPlacement{}), Error);
+}
+
 TEST(FieldPlayer, TheStatusSaysWhatPlaybackWaitsForAndWhatIsInMemory) {
   auto steps = std::make_shared<ScriptedSteps>(5);
   MainContext main(unlooped(), FieldUpdate{}, quarterSteps());
