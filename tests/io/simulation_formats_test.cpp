@@ -166,7 +166,8 @@ TEST(SimulationFormats, ExodusFilesThatClaimMoreThanTheyHoldAreRefused) {
                     {cut.string(), "the file ends inside", "NetCDF header"});
   LoadOptions small;
   small.memoryBudget = 1000;
-  test::expectError([&] { loadField(path, small); }, {path.string(), "memory budget (field.memory_budget) of 1000"});
+  test::expectError([&] { loadField(path, small); },
+                    {path.string(), "memory budget (field.memory_budget) of 1000"});
 }
 
 // An OpenFOAM case's cell values at the points: each mesh point takes the mean

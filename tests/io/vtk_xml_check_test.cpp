@@ -251,7 +251,8 @@ TEST(VtkXmlCheckHeaders, AnUncompressedByteCountBeyondThePayloadIsRefused) {
 
 TEST(VtkXmlCheckHeaders, ASmallBudgetRefusesAGoodFileSayingSo) {
   const auto path = write(test::scratch(), kEncodings[5]);
-  test::expectError([&] { checkVtkXml(path, 100); }, {"288 bytes", "memory budget (field.memory_budget) of 100"});
+  test::expectError([&] { checkVtkXml(path, 100); },
+                    {"288 bytes", "memory budget (field.memory_budget) of 100"});
 }
 
 TEST(VtkXmlCheckGrids, RectilinearAndStructuredGridsPassAndTheirCoordinatesAreChecked) {
