@@ -22,7 +22,7 @@ SeriesReader::SeriesReader(std::vector<Source> sources, LoadOptions options,
       options_(std::move(options)),
       first_(std::move(first)),
       capacity_(std::max<std::size_t>(capacity, 2)) {
-  if (sources_.empty() || !first_) throw Error("SeriesReader: a series needs its first step");
+  if (sources_.empty() || !first_) throw Error("field series: no first step to start from");
   held_[0] = first_;
   for (int t = 0; t < std::max(threads, 1); ++t)
     threads_.emplace_back([this] { run(); });
@@ -57,12 +57,15 @@ std::shared_ptr<const VectorField> SeriesReader::read(const Source& source,
 }
 
 void SeriesReader::want(const std::vector<std::size_t>& order) {
+  std::vector<std::size_t> wanted;
+  for (std::size_t i : order)
+    if (i < sources_.size() && !contains(wanted, i) && wanted.size() < capacity_)
+      wanted.push_back(i);
   {
     std::lock_guard lock(mutex_);
-    wanted_.clear();
-    for (std::size_t i : order)
-      if (i < sources_.size() && !contains(wanted_, i) && wanted_.size() < capacity_)
-        wanted_.push_back(i);
+    // Asked every frame; the steps change only as playback moves on.
+    if (wanted == wanted_) return;
+    wanted_ = std::move(wanted);
     // Drop what playback has left behind (a wall showing it keeps its own reference).
     for (auto it = held_.begin(); it != held_.end();)
       it = contains(wanted_, it->first) ? std::next(it) : held_.erase(it);
@@ -77,7 +80,8 @@ std::shared_ptr<const VectorField> SeriesReader::get(std::size_t i) {
 }
 
 std::shared_ptr<const VectorField> SeriesReader::wait(std::size_t i) {
-  if (i >= sources_.size()) throw Error(concat("SeriesReader: step ", i, " of ", sources_.size()));
+  if (i >= sources_.size())
+    throw Error(concat("field series: step ", i, " asked of ", sources_.size()));
   std::unique_lock lock(mutex_);
   if (!contains(wanted_, i)) {
     // Asked for out of order (a replay, the start): first in line.
@@ -87,7 +91,7 @@ std::shared_ptr<const VectorField> SeriesReader::wait(std::size_t i) {
   }
   changed_.wait(lock, [&] { return held_.count(i) || failed_.count(i) || stop_; });
   if (const auto f = failed_.find(i); f != failed_.end()) throw Error(f->second);
-  if (stop_) throw Error("SeriesReader: stopped");
+  if (stop_) throw Error("field series: reading stopped (the run ends)");
   return held_.at(i);
 }
 

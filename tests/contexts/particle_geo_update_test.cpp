@@ -302,6 +302,19 @@ TEST_P(ParticleBackendTest, GridsKeptAsTexturesMoveParticlesTheSame) {
   EXPECT_GT(a.peak, 4000u);
 }
 
+// Marks the points with x > 0.5 and z > 1 as without data (a corner of the box).
+void maskCorner(VectorField& field) {
+  std::vector<std::uint8_t> valid(field.pointCount(), 1);
+  const glm::ivec3 d = field.dims();
+  for (int k = 0; k < d.z; ++k)
+    for (int j = 0; j < d.y; ++j)
+      for (int i = 0; i < d.x; ++i) {
+        const glm::vec3 p = field.pointPosition(i, j, k);
+        if (p.x > 0.5f && p.z > 1.0f) valid[field.index(i, j, k)] = 0;
+      }
+  field.setValidity(valid);
+}
+
 // field.precision = "half": the grid on the GPU as 16-bit floats (a texture
 // either backend), the CPU twin sampling the same rounded values: the same
 // particles to rounding, with and without a validity mask, and blended in time.
@@ -310,17 +323,7 @@ TEST_P(ParticleBackendTest, AHalfPrecisionFieldMovesParticlesAsTheCpuTwin) {
     SCOPED_TRACE(masked ? "masked" : "unmasked");
     Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, BoundaryMode::Kill);
     auto half = std::make_shared<VectorField>(*s.field);
-    if (masked) {  // a corner of the box without data
-      std::vector<std::uint8_t> valid(half->pointCount(), 1);
-      const glm::ivec3 d = half->dims();
-      for (int k = 0; k < d.z; ++k)
-        for (int j = 0; j < d.y; ++j)
-          for (int i = 0; i < d.x; ++i) {
-            const glm::vec3 p = half->pointPosition(i, j, k);
-            if (p.x > 0.5f && p.z > 1.0f) valid[half->index(i, j, k)] = 0;
-          }
-      half->setValidity(valid);
-    }
+    if (masked) maskCorner(*half);
     half->roundToHalf();
     s.field = half;
     const Agreement a = compare(GetParam(), s, 60, 16384);
@@ -340,15 +343,7 @@ TEST_P(ParticleBackendTest, CellsOutsideTheDataAreOutsideTheFieldOnBothSides) {
                           texture ? ", texture" : ", buffer"));
       Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, mode);
       auto masked = std::make_shared<VectorField>(*s.field);
-      std::vector<std::uint8_t> valid(masked->pointCount(), 1);
-      const glm::ivec3 d = masked->dims();
-      for (int k = 0; k < d.z; ++k)
-        for (int j = 0; j < d.y; ++j)
-          for (int i = 0; i < d.x; ++i) {
-            const glm::vec3 p = masked->pointPosition(i, j, k);
-            if (p.x > 0.5f && p.z > 1.0f) valid[masked->index(i, j, k)] = 0;
-          }
-      masked->setValidity(valid);
+      maskCorner(*masked);
       s.field = masked;
       GpuTuning tuning;
       if (texture) tuning.fieldStorage = GpuTuning::FieldStorage::Texture;

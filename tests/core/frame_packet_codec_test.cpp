@@ -229,20 +229,6 @@ TEST(FramePacketCodec, FieldGridsRoundTripAndHashByContent) {
   EXPECT_NE(fieldHash(*grid(1.0001f)), fieldHash(*a));
 }
 
-TEST(FramePacketCodec, AHalfPrecisionGridTravelsAsHalvesExactly) {
-  VectorField a = *grid(1.37f);
-  const std::size_t floatBytes = encodeField(a).size();
-  a.roundToHalf();
-  const std::vector<std::byte> bytes = encodeField(a);
-  EXPECT_EQ(bytes.size(), floatBytes - 6 * a.pointCount() + 0);
-  const VectorField b = decodeField(bytes);
-  EXPECT_TRUE(b.halfPrecision());
-  ASSERT_EQ(b.pointCount(), a.pointCount());
-  EXPECT_EQ(std::memcmp(b.values().data(), a.values().data(), a.values().size_bytes()), 0);
-  EXPECT_EQ(fieldHash(b), fieldHash(a));
-  EXPECT_NE(fieldHash(a), fieldHash(*grid(1.37f)));
-}
-
 TEST(FramePacketCodec, AGridsScalarArraysTravelWithIt) {
   VectorField a = *grid(1);
   std::vector<float> t(a.pointCount()), p(a.pointCount());
@@ -278,6 +264,26 @@ void expectError(std::span<const std::byte> bytes, bool packet, const std::strin
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find(expected), std::string::npos) << e.what();
   }
+}
+
+TEST(FramePacketCodec, AHalfPrecisionGridTravelsAsHalvesExactly) {
+  VectorField a = *grid(1.37f);
+  const std::size_t floatBytes = encodeField(a).size();
+  a.roundToHalf();
+  const std::vector<std::byte> bytes = encodeField(a);
+  EXPECT_EQ(bytes.size(), floatBytes - 6 * a.pointCount() + 0);
+  const VectorField b = decodeField(bytes);
+  EXPECT_TRUE(b.halfPrecision());
+  ASSERT_EQ(b.pointCount(), a.pointCount());
+  EXPECT_EQ(std::memcmp(b.values().data(), a.values().data(), a.values().size_bytes()), 0);
+  EXPECT_EQ(fieldHash(b), fieldHash(a));
+  EXPECT_NE(fieldHash(a), fieldHash(*grid(1.37f)));
+  for (std::size_t n = 0; n < bytes.size(); ++n)  // every truncation refused
+    EXPECT_THROW(decodeField(std::span(bytes).first(n)), Error) << n << " bytes";
+  std::vector<std::byte> infinite = bytes;
+  infinite[43] = std::byte{0x00};  // the first vector's x: 0x7c00, a half infinity
+  infinite[44] = std::byte{0x7c};
+  expectError(infinite, false, "not finite");
 }
 
 TEST(FramePacketCodec, EveryTruncationIsAClearError) {

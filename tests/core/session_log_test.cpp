@@ -2,6 +2,8 @@
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -50,6 +52,10 @@ TEST(SessionLog, BadLinesNameTheirLine) {
   EXPECT_NE(errorOf("9 reset\n5 reset\n").find("s.log:2: frame 5 comes after frame 9"),
             std::string::npos);
   EXPECT_NE(errorOf("5 set sim.maximum lots\n").find("s.log:1"), std::string::npos);
+  EXPECT_NE(errorOf("5 field-wait 3\n").find("s.log:1: expected 'field-wait' alone"),
+            std::string::npos);
+  const SessionLog waits = parseSession("4 field-wait\n5 field-wait\n", "s.log");
+  EXPECT_EQ(waits.fieldWaits, (std::set<std::uint32_t>{4, 5}));
 }
 
 TEST(SessionLog, TrackingAndNavigationReadBackBitForBit) {
