@@ -1,6 +1,7 @@
 #include "core/io/exodus_reader.h"
 
 #include <algorithm>
+#include <map>
 #include <vector>
 
 #include <netcdf.h>
@@ -19,6 +20,33 @@
 
 namespace sandstorm {
 namespace {
+
+// Every kind of Exodus object with its count and its ids.
+struct ExodusObjects {
+  const char* count;
+  const char* ids;
+  const char* what;
+};
+constexpr ExodusObjects kObjects[] = {
+    {"num_el_blk", "eb_prop1", "element block"}, {"num_node_sets", "ns_prop1", "node set"},
+    {"num_side_sets", "ss_prop1", "side set"},   {"num_ed_blk", "ed_prop1", "edge block"},
+    {"num_fa_blk", "fa_prop1", "face block"},    {"num_elem_sets", "els_prop1", "element set"},
+    {"num_edge_sets", "es_prop1", "edge set"},   {"num_face_sets", "fs_prop1", "face set"},
+    {"num_node_maps", "nm_prop1", "node map"},   {"num_elem_maps", "em_prop1", "element map"},
+    {"num_edge_maps", "edm_prop1", "edge map"},  {"num_face_maps", "fam_prop1", "face map"}};
+constexpr std::uint64_t kMaxObjects = 100000;  // of one kind
+
+// A variable's values as integers, through the NetCDF library.
+std::vector<long long> integers(const NetcdfFile& f, const NetcdfHeader& h, const NetcdfVariable& v,
+                                const std::string& file) {
+  int var = -1;
+  if (nc_inq_varid(f.id(), v.name.c_str(), &var) != NC_NOERR)
+    throw Error(concat(file, ": the NetCDF library finds no '", v.name, "'"));
+  std::vector<long long> values(std::size_t(h.values(v)));
+  if (!values.empty() && nc_get_var_longlong(f.id(), var, values.data()) != NC_NOERR)
+    throw Error(concat(file, ": reading '", v.name, "' failed"));
+  return values;
+}
 
 // The Exodus II layout the reader walks: every object count with its ids,
 // every block with its sizes and connectivity, the coordinates, the result
@@ -46,15 +74,8 @@ void checkExodusLayout(const NetcdfHeader& h, const std::string& file) {
       fail(concat("variable '", name, "' is not shaped (", want, ")"));
     }
   };
-  static const std::pair<const char*, const char*> kObjects[] = {
-      {"num_el_blk", "eb_prop1"},     {"num_node_sets", "ns_prop1"},
-      {"num_side_sets", "ss_prop1"},  {"num_ed_blk", "ed_prop1"},
-      {"num_fa_blk", "fa_prop1"},     {"num_elem_sets", "els_prop1"},
-      {"num_edge_sets", "es_prop1"},  {"num_face_sets", "fs_prop1"},
-      {"num_node_maps", "nm_prop1"},  {"num_elem_maps", "em_prop1"},
-      {"num_edge_maps", "edm_prop1"}, {"num_face_maps", "fam_prop1"}};
-  for (const auto& [count, ids] : kObjects)
-    if (h.dimension(count)) expect(ids, {count});
+  for (const ExodusObjects& o : kObjects)
+    if (h.dimension(o.count)) expect(o.ids, {o.count});
   if (length("num_nodes") > 0) {
     if (h.variable("coord")) {
       expect("coord", {"num_dim", "num_nodes"});
@@ -64,8 +85,9 @@ void checkExodusLayout(const NetcdfHeader& h, const std::string& file) {
         expect(axes[a], {"num_nodes"});
     }
   }
+  for (const ExodusObjects& o : kObjects)
+    if (length(o.count) > kMaxObjects) fail(concat(length(o.count), " objects (", o.count, ")"));
   const std::uint64_t blocks = length("num_el_blk");
-  if (blocks > 100000) fail(concat(blocks, " element blocks"));
   for (std::uint64_t b = 1; b <= blocks; ++b) {
     const std::string in = concat("num_el_in_blk", b), per = concat("num_nod_per_el", b);
     if (!h.dimension(in)) fail(concat("no dimension '", in, "'"));
@@ -98,24 +120,34 @@ void checkExodusLayout(const NetcdfHeader& h, const std::string& file) {
   }
 }
 
+// The ids of each kind of object are distinct: VTK's reader maps objects by
+// id and reads past its own tables when two share one.
+void checkObjectIds(const NetcdfFile& f, const NetcdfHeader& h, const std::string& file) {
+  for (const ExodusObjects& o : kObjects) {
+    const NetcdfVariable* v = h.variable(o.ids);
+    if (!v) continue;
+    const std::vector<long long> ids = integers(f, h, *v, file);
+    std::map<long long, std::size_t> first;
+    for (std::size_t i = 0; i < ids.size(); ++i) {
+      const auto [at, added] = first.emplace(ids[i], i);
+      if (!added)
+        throw Error(concat(file, ": ", o.what, "s ", at->second + 1, " and ", i + 1,
+                           " share the id ", ids[i], " (", o.ids,
+                           "); Exodus II needs each one's id to be its own"));
+    }
+  }
+}
+
 // Every block's connectivity names nodes of the mesh: VTK's reader takes each
 // node number as an index into the coordinates unchecked.
-void checkConnectivity(const NetcdfHeader& h, const std::string& file) {
+void checkConnectivity(const NetcdfFile& f, const NetcdfHeader& h, const std::string& file) {
   const auto* nodes = h.dimension("num_nodes");
   const auto* blocks = h.dimension("num_el_blk");
   if (!nodes || !blocks || blocks->length == 0) return;
-  const NetcdfFile f(file);
-  const int id = f.id();
   for (std::uint64_t b = 1; b <= blocks->length; ++b) {
-    const std::string name = concat("connect", b);
-    const NetcdfVariable* v = h.variable(name);
+    const NetcdfVariable* v = h.variable(concat("connect", b));
     if (!v) continue;
-    int var = -1;
-    if (nc_inq_varid(id, name.c_str(), &var) != NC_NOERR)
-      throw Error(concat(file, ": the NetCDF library finds no '", name, "'"));
-    std::vector<long long> connectivity(std::size_t(h.values(*v)));
-    if (!connectivity.empty() && nc_get_var_longlong(id, var, connectivity.data()) != NC_NOERR)
-      throw Error(concat(file, ": reading '", name, "' failed"));
+    const std::vector<long long> connectivity = integers(f, h, *v, file);
     for (std::size_t i = 0; i < connectivity.size(); ++i)
       if (connectivity[i] < 1 || connectivity[i] > (long long)nodes->length)
         throw Error(concat(file, ": element block ", b, "'s connectivity names node ",
@@ -157,7 +189,11 @@ vtkSmartPointer<vtkDataObject> readExodus(const std::filesystem::path& path,
   const NetcdfHeader header = readNetcdfHeader(path);
   checkExodusHeader(header, file, options);
   checkExodusLayout(header, file);
-  checkConnectivity(header, file);
+  {
+    const NetcdfFile f(file);
+    checkObjectIds(f, header, file);
+    checkConnectivity(f, header, file);
+  }
   VtkMessageTrap trap(path);
   vtkNew<vtkExodusIIReader> reader;
   trap.watch(reader);

@@ -144,6 +144,10 @@ VectorField loadField(const std::filesystem::path& path, const LoadOptions& opti
   } catch (const std::bad_alloc&) {
     throw Error(concat(file, ": ran out of memory while loading; lower the resolution ",
                        "(field.resolution)"));
+  } catch (const std::exception& e) {
+    // A reading library's own exception (VTK's readers throw the standard
+    // library's on some malformed files): the file is refused, the run goes on.
+    throw Error(concat(file, ": the reader failed: ", e.what()));
   }
 }
 

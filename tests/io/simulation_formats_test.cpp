@@ -170,6 +170,21 @@ TEST(SimulationFormats, ExodusFilesThatClaimMoreThanTheyHoldAreRefused) {
                     {path.string(), "memory budget (field.memory_budget) of 1000"});
 }
 
+// Two element blocks with one id: VTK's reader read past its tables on such a
+// file (a segmentation fault, found by fuzz_field_e); it is refused first.
+TEST(SimulationFormats, ExodusBlocksSharingAnIdAreRefused) {
+  const auto path = test::scratch() / "shared_id.e";
+  writeExodus(path, 2);
+  int id = -1, var = -1;
+  ASSERT_EQ(nc_open(path.c_str(), NC_WRITE, &id), NC_NOERR);
+  ASSERT_EQ(nc_inq_varid(id, "eb_prop1", &var), NC_NOERR);
+  const int ids[] = {10, 10};
+  ASSERT_EQ(nc_put_var_int(id, var, ids), NC_NOERR);
+  ASSERT_EQ(nc_close(id), NC_NOERR);
+  test::expectError([&] { loadField(path); },
+                    {path.string(), "element blocks 1 and 2 share the id 10", "eb_prop1"});
+}
+
 // An OpenFOAM case's cell values at the points: each mesh point takes the mean
 // of the cells around it, exact for a linear flow where those cells lie
 // symmetrically about it (inside the box), within the flow's stretch (3)
