@@ -21,6 +21,7 @@
 #include "core/field/analytic_field_factory.h"
 #include "core/field/derived_scalars.h"
 #include "core/field/height_map_io.h"
+#include "core/io/field_format.h"
 #include "core/io/field_info.h"
 #include "core/io/field_loader.h"
 #include "core/io/field_writer.h"
@@ -34,6 +35,27 @@ struct Common {
   std::vector<int> dims;
   double budgetMiB = 2048.0;
 };
+
+// How a command that writes a field compresses a .vti.
+struct Output {
+  std::string compression = "zlib";
+  CLI::Option* option = nullptr;
+};
+
+void addOutput(CLI::App* cmd, Output& o) {
+  o.option = cmd->add_option("--compression", o.compression,
+                             "a .vti's compression: zlib (smallest), lz4 (faster to read), none "
+                             "(read at the disk's speed: a series to stream)")
+                 ->check(CLI::IsMember({"zlib", "lz4", "none"}));
+}
+
+void write(const std::string& out, const VectorField& f, const std::string& array,
+           const Output& o) {
+  if (o.option->count() > 0 && formatForExtension(out) != FieldFormat::VtkImageData)
+    throw Error(concat("--compression applies to .vti files; ", out,
+                       " is written as its format compresses"));
+  saveField(out, f, array, vtiCompressionNamed(o.compression, "--compression"));
+}
 
 void addCommon(CLI::App* cmd, Common& c, bool dimsRequired) {
   cmd->add_option("--array", c.array,
@@ -60,10 +82,10 @@ void info(const std::string& file, const Common& c) {
   std::cout << describeField(file, f, report);
 }
 
-void convert(const std::string& in, const std::string& out, const Common& c) {
+void convert(const std::string& in, const std::string& out, const Common& c, const Output& o) {
   LoadReport report;
   const VectorField f = loadField(in, optionsFrom(c), &report);
-  saveField(out, f, report.arrayName.empty() ? "velocity" : report.arrayName);
+  write(out, f, report.arrayName.empty() ? "velocity" : report.arrayName, o);
   const glm::ivec3 d = f.dims();
   std::cerr << "wrote " << out << " (" << d.x << "x" << d.y << "x" << d.z << ")\n";
 }
@@ -71,7 +93,7 @@ void convert(const std::string& in, const std::string& out, const Common& c) {
 // Adds derived quantities (core/field/derived_scalars.h) to a field's scalar
 // arrays and writes it with them (and those it had).
 void derive(const std::string& in, const std::string& out, const std::vector<std::string>& names,
-            const Common& c) {
+            const Common& c, const Output& o) {
   LoadReport report;
   VectorField f = loadField(in, optionsFrom(c), &report);
   for (const std::string& name : names) {
@@ -79,7 +101,7 @@ void derive(const std::string& in, const std::string& out, const std::vector<std
       throw Error(concat(in, ": already has an array '", name, "'; its arrays: ", f.scalarNames()));
     f.addScalars(name, derivedScalars(f, name).values);
   }
-  saveField(out, f, report.arrayName.empty() ? "velocity" : report.arrayName);
+  write(out, f, report.arrayName.empty() ? "velocity" : report.arrayName, o);
   std::cerr << "wrote " << out << " with arrays " << f.scalarNames() << "\n";
 }
 
@@ -134,11 +156,14 @@ int main(int argc, char** argv) {
   convertCmd->add_option("IN", in, "input file")->required();
   convertCmd->add_option("OUT", out, "output file (.vti or .vdb)")->required();
   addCommon(convertCmd, convertOpts, false);
+  Output convertOut, resampleOut, generateOut, deriveOut;
+  addOutput(convertCmd, convertOut);
 
   auto* resampleCmd = app.add_subcommand("resample", "resample a field onto a new grid");
   resampleCmd->add_option("IN", rin, "input file")->required();
   resampleCmd->add_option("OUT", rout, "output file (.vti or .vdb)")->required();
   addCommon(resampleCmd, resampleOpts, true);
+  addOutput(resampleCmd, resampleOut);
 
   std::vector<int> gdims;
   std::vector<double> gbounds;
@@ -154,6 +179,7 @@ int main(int argc, char** argv) {
       ->expected(6)
       ->required();
   generateCmd->add_option("--param", gparams, "a field parameter KEY=VALUE (repeatable)");
+  addOutput(generateCmd, generateOut);
   generateCmd->footer(fieldList());
 
   Common deriveOpts;
@@ -169,6 +195,7 @@ int main(int argc, char** argv) {
   deriveCmd->add_option("--quantity", dnames, "a quantity to add (repeatable): " + quantities)
       ->required();
   addCommon(deriveCmd, deriveOpts, false);
+  addOutput(deriveCmd, deriveOut);
 
   std::string tout;
   int tsize = 257;
@@ -189,9 +216,9 @@ int main(int argc, char** argv) {
 
   try {
     if (*infoCmd) info(infoFile, infoOpts);
-    if (*convertCmd) convert(in, out, convertOpts);
-    if (*resampleCmd) convert(rin, rout, resampleOpts);
-    if (*deriveCmd) derive(din, dout, dnames, deriveOpts);
+    if (*convertCmd) convert(in, out, convertOpts, convertOut);
+    if (*resampleCmd) convert(rin, rout, resampleOpts, resampleOut);
+    if (*deriveCmd) derive(din, dout, dnames, deriveOpts, deriveOut);
     if (*terrainCmd) {
       const HeightMap dunes = duneTerrain({tsize, tsize}, glm::vec2(float(textent)), tseed);
       writeHeightMapPgm(dunes, tout, 0.0f, 1.0f);
@@ -203,7 +230,7 @@ int main(int argc, char** argv) {
       const Box box{{float(gbounds[0]), float(gbounds[1]), float(gbounds[2])},
                     {float(gbounds[3]), float(gbounds[4]), float(gbounds[5])}};
       const VectorField grid = bake(*field, box, {gdims[0], gdims[1], gdims[2]});
-      saveField(gout, grid);
+      write(gout, grid, "velocity", generateOut);
       std::cerr << "wrote " << gout << " (" << name << ", " << gdims[0] << "x" << gdims[1] << "x"
                 << gdims[2] << ")\n";
     }

@@ -8,10 +8,10 @@
 namespace sandstorm {
 
 void saveField(const std::filesystem::path& path, const VectorField& field,
-               const std::string& arrayName) {
+               const std::string& arrayName, VtiCompression compression) {
   switch (formatForExtension(path)) {
     case FieldFormat::VtkImageData:
-      return writeVti(path, field, arrayName);
+      return writeVti(path, field, arrayName, compression);
     case FieldFormat::OpenVdb:
       return writeVdb(path, field, arrayName);
     default:

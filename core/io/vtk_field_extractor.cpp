@@ -1,12 +1,15 @@
 #include "core/io/vtk_field_extractor.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
 #include <vtkDataObject.h>
 #include <vtkDataSet.h>
+#include <vtkDoubleArray.h>
+#include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkMatrix3x3.h>
 #include <vtkPointData.h>
@@ -21,6 +24,7 @@
 #include "core/io/vtk_blocks.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
+#include "core/util/parallel_for.h"
 
 namespace sandstorm {
 namespace {
@@ -43,10 +47,40 @@ void listArrays(const std::vector<VtkBlock>& blocks, LoadReport& report) {
 }
 
 // Copies tuples into `out`, zeroing non-finite ones and those `mask` marks invalid.
+// Float and double arrays laid out as x y z x y z (what every reader makes of a
+// file's vectors) are copied from their memory over the cores; any other
+// array through VTK's generic accessors.
+template <class T>
+std::size_t copyContiguous(const T* in, const std::uint8_t* valid, std::vector<glm::vec3>& out) {
+  std::atomic<std::size_t> nonFinite{0};
+  forChunks(out.size(), [&](std::size_t begin, std::size_t end) {
+    std::size_t bad = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+      const glm::vec3 v{float(in[3 * i]), float(in[3 * i + 1]), float(in[3 * i + 2])};
+      const bool finite = std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+      const bool masked = valid && valid[i] == 0;
+      bad += finite || masked ? 0 : 1;
+      out[i] = finite && !masked ? v : glm::vec3(0.0f);
+    }
+    nonFinite += bad;
+  });
+  return nonFinite;
+}
+
 std::size_t copyVectors(vtkDataArray* array, vtkDataArray* mask, std::vector<glm::vec3>& out) {
-  std::size_t nonFinite = 0;
   const vtkIdType n = array->GetNumberOfTuples();
   out.resize(std::size_t(n));
+  const bool byteMask = mask && mask->GetNumberOfComponents() == 1 &&
+                        mask->GetDataTypeSize() == 1 && mask->HasStandardMemoryLayout();
+  if (array->GetNumberOfComponents() == 3 && (!mask || byteMask)) {
+    const auto* valid =
+        byteMask ? static_cast<const std::uint8_t*>(mask->GetVoidPointer(0)) : nullptr;
+    if (auto* f = vtkFloatArray::FastDownCast(array))
+      return copyContiguous(f->GetPointer(0), valid, out);
+    if (auto* d = vtkDoubleArray::FastDownCast(array))
+      return copyContiguous(d->GetPointer(0), valid, out);
+  }
+  std::size_t nonFinite = 0;
   double t[3];
   for (vtkIdType i = 0; i < n; ++i) {
     if (mask && mask->GetComponent(i, 0) == 0.0) {

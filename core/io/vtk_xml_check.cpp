@@ -33,6 +33,19 @@ class Scanner {
     ++position_;
     return static_cast<unsigned char>(buffer_[at_++]);
   }
+  // The bytes read ahead and not taken yet (reading more if none are), for
+  // taking many at once; consume(n) takes n of them.
+  std::size_t available() {
+    if (at_ == end_ && !fill()) return 0;
+    return end_ - at_;
+  }
+  const std::uint8_t* data() const {
+    return reinterpret_cast<const std::uint8_t*>(buffer_.data()) + at_;
+  }
+  void consume(std::size_t n) {
+    at_ += n;
+    position_ += n;
+  }
   std::uint64_t position() const { return position_; }
   void seek(std::uint64_t position) {
     in_.clear();
@@ -604,19 +617,34 @@ class Checker {
     endInline(a, c);
   }
 
+  // Decoded bytes go to the payload a batch at a time, each batch no more
+  // than it wants next, so no character is read beyond the one it ends with.
+  struct DecodedBatch {
+    std::array<std::uint8_t, 4096> bytes;
+    std::size_t size = 0;
+    bool full(const VtkXmlPayload& p) const {
+      return size + 3 > bytes.size() || size >= p.wanted();
+    }
+    void flush(VtkXmlPayload& p) {
+      p.push(bytes.data(), size);
+      size = 0;
+    }
+  };
+
   void readBase64(const Array& a, VtkXmlPayload& payload) {
     Base64Decoder decoder;
-    std::uint8_t bytes[3];
+    DecodedBatch batch;
     int c;
     while ((c = in_.get()) >= 0 && c != '<') {
       if (isSpace(c) || payload.complete()) continue;
-      const int n = decoder.add(c, bytes);
+      const int n = decoder.add(c, batch.bytes.data() + batch.size);
       if (n < 0)
         fail(concat(a.where, ": the inline binary data is not valid base64 (byte ", in_.position(),
                     ")"));
-      for (int i = 0; i < n; ++i)
-        payload.push(bytes[i]);
+      batch.size += std::size_t(n);
+      if (batch.full(payload)) batch.flush(payload);
     }
+    batch.flush(payload);
     endInline(a, c);
   }
 
@@ -661,18 +689,19 @@ class Checker {
     in_.seek(at);
     if (base64Appended_) {
       Base64Decoder decoder;
-      std::uint8_t bytes[3];
+      DecodedBatch batch;
       while (!payload.complete() && in_.position() < appendedEnd_) {
         const int c = in_.get();
         if (c < 0) break;
         if (isSpace(c)) continue;
-        const int n = decoder.add(c, bytes);
+        const int n = decoder.add(c, batch.bytes.data() + batch.size);
         if (n < 0)
           fail(concat(a.where, ": the appended base64 data is not valid base64 (byte ",
                       in_.position(), ")"));
-        for (int i = 0; i < n && !payload.complete(); ++i)
-          payload.push(bytes[i]);
+        batch.size += std::size_t(n);
+        if (batch.full(payload)) batch.flush(payload);
       }
+      batch.flush(payload);
     } else {
       while (!payload.complete() && in_.position() < appendedEnd_) {
         // Uncompressed data needs no look: skip over what the file holds of it.
@@ -682,9 +711,10 @@ class Checker {
           payload.skipped(n);
           continue;
         }
-        const int c = in_.get();
-        if (c < 0) break;
-        payload.push(std::uint8_t(c));
+        const std::size_t n =
+            std::size_t(std::min<std::uint64_t>(in_.available(), appendedEnd_ - in_.position()));
+        if (n == 0) break;
+        in_.consume(payload.push(in_.data(), n));
       }
     }
     payload.finish();

@@ -5,13 +5,16 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <cstring>
 
 #include "core/util/error.h"
+#include "core/util/parallel_for.h"
 
 namespace sandstorm {
 namespace {
 
 constexpr std::size_t kScratch = 64 * 1024;       // decompressed bytes looked at per step
+constexpr std::size_t kBatchBytes = 16 << 20;     // compressed bytes gathered, then decompressed
 constexpr std::uint64_t kLzmaMemory = 256 << 20;  // the decoder's dictionary, at most
 // The most output one input byte can give: zlib's deflate 1032:1, LZ4 255:1.
 constexpr std::uint64_t kZlibRatio = 1032, kLz4Ratio = 255;
@@ -52,32 +55,58 @@ std::uint64_t VtkXmlPayload::word(std::size_t index) const {
   return v;
 }
 
-bool VtkXmlPayload::push(std::uint8_t byte) {
-  switch (state_) {
-    case State::Header:
-      bytes_.push_back(byte);
-      if (--remaining_ == 0) headerComplete();
-      break;
-    case State::Sizes:
-      bytes_.push_back(byte);
-      if (bytes_.size() == std::size_t(format_.headerSize)) {
-        sizes_.push_back(word(0));
-        bytes_.clear();
-        if (sizes_.size() == blocks_) startBlock();
+std::size_t VtkXmlPayload::push(const std::uint8_t* data, std::size_t n) {
+  std::size_t taken = 0;
+  while (taken < n && state_ != State::Done) {
+    const std::uint8_t* at = data + taken;
+    const std::size_t left = n - taken;
+    switch (state_) {
+      case State::Header:
+        bytes_.push_back(*at);
+        ++taken;
+        if (--remaining_ == 0) headerComplete();
+        break;
+      case State::Sizes:
+        bytes_.push_back(*at);
+        ++taken;
+        if (bytes_.size() == std::size_t(format_.headerSize)) {
+          sizes_.push_back(word(0));
+          bytes_.clear();
+          if (sizes_.size() == blocks_) startBlock();
+        }
+        break;
+      case State::Data: {
+        const std::size_t k = std::size_t(std::min<std::uint64_t>(left, remaining_));
+        if (sink_) sink_->insert(sink_->end(), at, at + k);
+        taken += k;
+        remaining_ -= k;
+        if (remaining_ == 0) state_ = State::Done;
+        break;
       }
-      break;
-    case State::Data:
-      if (sink_) sink_->push_back(byte);
-      if (--remaining_ == 0) state_ = State::Done;
-      break;
-    case State::Block:
-      bytes_.push_back(byte);
-      if (--remaining_ == 0) endBlock();
-      break;
-    case State::Done:
-      break;
+      case State::Block: {
+        const std::size_t k = std::size_t(std::min<std::uint64_t>(left, remaining_));
+        batch_.insert(batch_.end(), at, at + k);
+        taken += k;
+        remaining_ -= k;
+        if (remaining_ == 0) endBlock();
+        break;
+      }
+      case State::Done:
+        break;
+    }
   }
-  return state_ == State::Done;
+  return taken;
+}
+
+std::uint64_t VtkXmlPayload::wanted() const {
+  switch (state_) {
+    case State::Sizes:
+      return std::uint64_t(format_.headerSize) - bytes_.size();
+    case State::Done:
+      return 0;
+    default:
+      return remaining_;
+  }
 }
 
 std::uint64_t VtkXmlPayload::skippable() const {
@@ -108,7 +137,7 @@ void VtkXmlPayload::finish() const {
                   " follow it"));
     case State::Block:
       fail(concat("truncated: compressed block ", block_ + 1, " of ", blocks_, " holds ",
-                  bytes_.size(), " of its ", sizes_[block_], " bytes"));
+                  sizes_[block_] - remaining_, " of its ", sizes_[block_], " bytes"));
   }
 }
 
@@ -155,7 +184,6 @@ std::uint64_t VtkXmlPayload::blockOutput(std::uint64_t b) const {
 
 void VtkXmlPayload::startBlock() {
   state_ = State::Block;
-  bytes_.clear();
   remaining_ = sizes_[block_];
   if (remaining_ == 0)
     fail(concat("compressed block ", block_ + 1, " of ", blocks_, " is empty; it should give ",
@@ -163,81 +191,113 @@ void VtkXmlPayload::startBlock() {
 }
 
 void VtkXmlPayload::endBlock() {
-  const std::uint64_t expected = blockOutput(block_);
-  const std::string which = concat("compressed block ", block_ + 1, " of ", blocks_);
-  const std::uint64_t in = bytes_.size();
+  const std::uint64_t size = sizes_[block_];
+  pending_.push_back({block_, batch_.size() - size, size});
+  const bool last = ++block_ == blocks_;
+  // A captured array is decompressed block by block, in order, into its sink.
+  if (last || sink_ || batch_.size() >= kBatchBytes) inflatePending();
+  if (last)
+    state_ = State::Done;
+  else
+    startBlock();
+}
+
+void VtkXmlPayload::inflatePending() {
+  std::vector<std::string> errors(pending_.size());
+  const auto body = [&](std::size_t begin, std::size_t end) {
+    std::vector<std::uint8_t> scratch;
+    for (std::size_t i = begin; i < end; ++i) {
+      const Pending& p = pending_[i];
+      try {
+        errors[i] = inflateBlock(p.block, batch_.data() + p.offset, p.size, scratch, sink_);
+      } catch (const std::exception& e) {  // out of memory on a worker thread
+        errors[i] = concat("compressed block ", p.block + 1, ": ", e.what());
+      }
+    }
+  };
+  if (sink_ || pending_.size() == 1)
+    body(0, pending_.size());
+  else
+    forChunks(pending_.size(), body, 1);
+  for (const std::string& e : errors)
+    if (!e.empty()) fail(e);
+  pending_.clear();
+  batch_.clear();
+}
+
+std::string VtkXmlPayload::inflateBlock(std::uint64_t b, const std::uint8_t* bytes,
+                                        std::uint64_t in, std::vector<std::uint8_t>& scratch,
+                                        std::vector<std::uint8_t>* sink) const {
+  const std::uint64_t expected = blockOutput(b);
+  const std::string which = concat("compressed block ", b + 1, " of ", blocks_);
   std::uint64_t out = 0;
   switch (format_.compressor) {
     case VtkCompressor::ZLib: {
       if (expected > in * kZlibRatio)
-        fail(concat(which, ": ", in, " zlib bytes cannot give ", expected));
+        return concat(which, ": ", in, " zlib bytes cannot give ", expected);
       z_stream z{};
-      if (inflateInit(&z) != Z_OK) fail("zlib cannot start");
-      scratch_.resize(kScratch);
-      z.next_in = bytes_.data();
+      if (inflateInit(&z) != Z_OK) return "zlib cannot start";
+      scratch.resize(kScratch);
+      z.next_in = const_cast<std::uint8_t*>(bytes);
       z.avail_in = uInt(in);
       int status = Z_OK;
       while (status == Z_OK && out <= expected) {
-        z.next_out = scratch_.data();
-        z.avail_out = uInt(scratch_.size());
+        z.next_out = scratch.data();
+        z.avail_out = uInt(scratch.size());
         status = inflate(&z, Z_NO_FLUSH);
-        if (sink_) sink_->insert(sink_->end(), scratch_.data(), z.next_out);
-        out += scratch_.size() - z.avail_out;
+        if (sink) sink->insert(sink->end(), scratch.data(), z.next_out);
+        out += scratch.size() - z.avail_out;
         if (status == Z_BUF_ERROR && z.avail_in == 0) break;  // the stream stops short
       }
       const std::string message = z.msg ? z.msg : "";
       inflateEnd(&z);
       if (status != Z_STREAM_END && out <= expected)
-        fail(concat(which, " is not a whole zlib stream",
-                    message.empty() ? std::string() : " (" + message + ")"));
+        return concat(which, " is not a whole zlib stream",
+                      message.empty() ? std::string() : " (" + message + ")");
       break;
     }
     case VtkCompressor::LZ4: {
       if (expected > in * kLz4Ratio + 64)
-        fail(concat(which, ": ", in, " LZ4 bytes cannot give ", expected));
+        return concat(which, ": ", in, " LZ4 bytes cannot give ", expected);
       if (in > 0x7fffffff || expected > 0x7fffffff)
-        fail(concat(which, ": an LZ4 block holds at most 2 GiB"));
-      scratch_.resize(std::size_t(expected));
+        return concat(which, ": an LZ4 block holds at most 2 GiB");
+      scratch.resize(std::size_t(expected));
       const int n =
-          LZ4_decompress_safe(reinterpret_cast<const char*>(bytes_.data()),
-                              reinterpret_cast<char*>(scratch_.data()), int(in), int(expected));
-      if (n < 0) fail(concat(which, " is not a valid LZ4 block"));
-      if (sink_) sink_->insert(sink_->end(), scratch_.data(), scratch_.data() + n);
+          LZ4_decompress_safe(reinterpret_cast<const char*>(bytes),
+                              reinterpret_cast<char*>(scratch.data()), int(in), int(expected));
+      if (n < 0) return concat(which, " is not a valid LZ4 block");
+      if (sink) sink->insert(sink->end(), scratch.data(), scratch.data() + n);
       out = std::uint64_t(n);
       break;
     }
     case VtkCompressor::LZMA: {
       lzma_stream z = LZMA_STREAM_INIT;
-      if (lzma_auto_decoder(&z, kLzmaMemory, 0) != LZMA_OK) fail("LZMA cannot start");
-      scratch_.resize(kScratch);
-      z.next_in = bytes_.data();
+      if (lzma_auto_decoder(&z, kLzmaMemory, 0) != LZMA_OK) return "LZMA cannot start";
+      scratch.resize(kScratch);
+      z.next_in = bytes;
       z.avail_in = std::size_t(in);
       lzma_ret status = LZMA_OK;
       while (status == LZMA_OK && out <= expected) {
-        z.next_out = scratch_.data();
-        z.avail_out = scratch_.size();
+        z.next_out = scratch.data();
+        z.avail_out = scratch.size();
         status = lzma_code(&z, z.avail_in == 0 ? LZMA_FINISH : LZMA_RUN);
-        if (sink_) sink_->insert(sink_->end(), scratch_.data(), z.next_out);
-        out += scratch_.size() - z.avail_out;
+        if (sink) sink->insert(sink->end(), scratch.data(), z.next_out);
+        out += scratch.size() - z.avail_out;
       }
       lzma_end(&z);
       if (status == LZMA_MEMLIMIT_ERROR)
-        fail(concat(which, " needs an LZMA dictionary above ", kLzmaMemory, " bytes"));
+        return concat(which, " needs an LZMA dictionary above ", kLzmaMemory, " bytes");
       if (status != LZMA_STREAM_END && out <= expected)
-        fail(concat(which, " is not a whole LZMA stream (liblzma error ", int(status), ")"));
+        return concat(which, " is not a whole LZMA stream (liblzma error ", int(status), ")");
       break;
     }
     case VtkCompressor::None:
       break;
   }
   if (out != expected)
-    fail(concat(which, " decompresses to ", out > expected ? "more than " : "", out,
-                " bytes; the header says ", expected));
-  bytes_.clear();
-  if (++block_ == blocks_)
-    state_ = State::Done;
-  else
-    startBlock();
+    return concat(which, " decompresses to ", out > expected ? "more than " : "", out,
+                  " bytes; the header says ", expected);
+  return {};
 }
 
 }  // namespace sandstorm

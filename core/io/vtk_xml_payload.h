@@ -13,7 +13,8 @@
 // file's compressor says) to exactly its size. Memory grows only with bytes
 // that are actually there: a block's compressed bytes are kept, the size table
 // as it arrives, and an LZ4 block's output only when its size is one its input
-// can produce.
+// can produce. Compressed blocks are gathered (up to kBatchBytes) and
+// decompressed over the cores; an error names the first bad block in order.
 // Errors throw Error starting with `where` (the file, the piece, the array).
 #pragma once
 
@@ -46,10 +47,19 @@ class VtkXmlPayload {
   VtkXmlPayload(const VtkXmlPayload&) = delete;
   VtkXmlPayload& operator=(const VtkXmlPayload&) = delete;
 
-  // Takes the next decoded byte; returns true once the payload is complete
-  // (bytes after that are not part of it).
-  bool push(std::uint8_t byte);
+  // Takes up to `n` decoded bytes and returns how many it took: all of them
+  // unless the payload completes first (bytes after that are not part of it).
+  std::size_t push(const std::uint8_t* data, std::size_t n);
+  // One byte; returns true once the payload is complete.
+  bool push(std::uint8_t byte) {
+    push(&byte, 1);
+    return complete();
+  }
   bool complete() const { return state_ == State::Done; }
+  // Bytes the payload takes before it next decides anything (the rest of a
+  // header word, of a block, of the data): a decoder that produces no more
+  // than this before pushing reads no further into the file than needed.
+  std::uint64_t wanted() const;
   // Uncompressed data bytes still to come that need no check: a reader of raw
   // bytes may skip them (then calls skipped()) instead of pushing each one.
   std::uint64_t skippable() const;
@@ -69,20 +79,29 @@ class VtkXmlPayload {
   void headerComplete();
   void startBlock();
   void endBlock();
+  void inflatePending();
   std::uint64_t blockOutput(std::uint64_t b) const;
+  // Decompresses one block, checking its size; returns an error, or nothing.
+  std::string inflateBlock(std::uint64_t b, const std::uint8_t* in, std::uint64_t size,
+                           std::vector<std::uint8_t>& scratch,
+                           std::vector<std::uint8_t>* sink) const;
 
   VtkPayloadFormat format_;
   std::string where_;
   std::optional<std::uint64_t> needed_;
   std::string needText_;
   State state_ = State::Header;
-  std::vector<std::uint8_t> bytes_;  // the header words, then one block's compressed bytes
-  std::uint64_t remaining_ = 0;      // bytes left in the current state
-  std::uint64_t declared_ = 0;       // uncompressed bytes the header declares
+  std::vector<std::uint8_t> bytes_;  // the header words being read
+  struct Pending {
+    std::uint64_t block, offset, size;  // in batch_
+  };
+  std::vector<std::uint8_t> batch_;  // compressed blocks not decompressed yet
+  std::vector<Pending> pending_;
+  std::uint64_t remaining_ = 0;  // bytes left in the current state
+  std::uint64_t declared_ = 0;   // uncompressed bytes the header declares
   std::uint64_t blocks_ = 0, blockSize_ = 0, lastSize_ = 0;
   std::vector<std::uint64_t> sizes_;
   std::uint64_t block_ = 0;
-  std::vector<std::uint8_t> scratch_;
   std::vector<std::uint8_t>* sink_ = nullptr;
 };
 

@@ -48,6 +48,14 @@ expect fail "not a number" -- generate wind "$tmp/x.vti" --dims 2 2 2 --bounds 0
 expect fail "dims" -- generate wind "$tmp/x.vti" --dims 0 2 2 --bounds 0 0 0 1 1 1
 expect fail "bounds" -- generate wind "$tmp/x.vti" --dims 2 2 2 --bounds 0 0 0 1 1
 expect fail "span|positive extent" -- generate wind "$tmp/x.vti" --dims 2 2 2 --bounds 0 0 0 1 0 1
+expect ok "wrote" -- convert "$data/tornado.vti" "$tmp/plain.vti" --compression none
+expect ok "dims: +40 x 40 x 24" -- info "$tmp/plain.vti"
+grep -q 'compressor=' "$tmp/plain.vti" && { echo "FAILED: --compression none wrote a compressor" >&2; failed=$((failed + 1)); }
+expect ok "wrote" -- generate tornado "$tmp/lz4.vti" --dims 8 8 8 --bounds -1 -1 0 1 1 2 --compression lz4
+grep -q 'vtkLZ4DataCompressor' "$tmp/lz4.vti" || { echo "FAILED: --compression lz4 wrote no LZ4" >&2; failed=$((failed + 1)); }
+expect ok "dims: +8 x 8 x 8" -- info "$tmp/lz4.vti"
+expect fail "--compression applies to .vti" -- convert "$data/tornado.vti" "$tmp/x.vdb" --compression lz4
+expect fail "gzip not in" -- convert "$data/tornado.vti" "$tmp/x.vti" --compression gzip
 expect fail "cannot write '.vtk'" -- convert "$data/tornado.vti" "$tmp/out.vtk"
 expect fail "--dims" -- resample "$data/tornado.vti" "$tmp/out.vti"
 expect fail "subcommand|required" --

@@ -17,6 +17,7 @@
 #include <vtkXMLRectilinearGridWriter.h>
 #include <vtkXMLStructuredGridWriter.h>
 
+#include <cstring>
 #include <regex>
 
 #include "core/io/field_loader.h"
@@ -339,9 +340,6 @@ TEST(VtkXmlCheckText, MalformedXmlIsRefused) {
   EXPECT_NE(errorOf("junk").find("not XML"), std::string::npos);
 }
 
-}  // namespace
-}  // namespace sandstorm
-
 namespace sandstorm {
 namespace {
 
@@ -384,6 +382,77 @@ TEST(VtkXmlCheckValues, ACorruptCompressedBlockIsRefused) {
     test::expectError([&] { checkVtkXml(path, kBudget); },
                       {path.string(), "DataArray 'velocity'", "compressed block 1 of 1"});
   }
+}
+
+}  // namespace
+}  // namespace sandstorm
+
+// Compressed blocks are checked in batches over the cores: of two bad blocks
+// the first is named, in the first batch or a later one, and a file of
+// several batches passes whole.
+
+// Appended raw zlib data of side^3 vectors that hardly compress (a hash of
+// the index), in blocks of `blockSize` bytes.
+std::filesystem::path incompressible(const std::string& name, int side, int blockSize) {
+  vtkNew<vtkImageData> img;
+  img->SetDimensions(side, side, side);
+  vtkNew<vtkFloatArray> v;
+  v->SetName("velocity");
+  v->SetNumberOfComponents(3);
+  v->SetNumberOfTuples(vtkIdType(side) * side * side);
+  std::uint32_t h = 2166136261u;
+  for (vtkIdType i = 0; i < v->GetNumberOfValues(); ++i) {
+    h = (h ^ std::uint32_t(i)) * 16777619u;
+    v->SetValue(i, float(h >> 8) * 0x1p-24f);
+  }
+  img->GetPointData()->SetVectors(v);
+  const auto path = test::scratch() / (name + ".vti");
+  vtkNew<vtkXMLImageDataWriter> w;
+  w->SetInputData(img);
+  w->SetFileName(path.c_str());
+  configure(w.Get(), kEncodings[6]);  // appended raw, zlib, UInt32
+  w->SetBlockSize(blockSize);
+  EXPECT_EQ(w->Write(), 1);
+  return path;
+}
+
+// Overwrites the middle of each of `damaged` (0-based) blocks.
+void damage(const std::filesystem::path& path, std::initializer_list<std::size_t> damaged) {
+  std::string text = test::readAll(path);
+  const std::size_t data = text.find('_', text.find("<AppendedData")) + 1;
+  auto word = [&](std::size_t at) {
+    std::uint32_t w;
+    std::memcpy(&w, text.data() + at, 4);
+    return std::size_t(w);
+  };
+  const std::size_t count = word(data);
+  std::vector<std::size_t> start(count + 1, data + 4 * (3 + count));
+  for (std::size_t b = 0; b < count; ++b)
+    start[b + 1] = start[b] + word(data + 4 * (3 + b));
+  for (std::size_t b : damaged) {
+    ASSERT_LT(b, count);
+    for (std::size_t i = start[b] + 2; i < start[b + 1] - 2; ++i)
+      text[i] = char(~text[i]);
+  }
+  test::writeText(path, text);
+}
+
+TEST(VtkXmlCheckBlocks, OfTwoBadBlocksTheFirstIsNamed) {
+  const auto path = incompressible("two_bad_blocks", 12, 256);  // 81 blocks, 20736 bytes
+  ASSERT_NO_THROW(checkVtkXml(path, kBudget));
+  damage(path, {2, 8});
+  test::expectError([&] { checkVtkXml(path, kBudget); },
+                    {path.string(), "DataArray 'velocity'", "compressed block 3 of 81"});
+}
+
+TEST(VtkXmlCheckBlocks, AFileOfSeveralBatchesPassesAndABadBlockInALaterOneIsNamed) {
+  // 24 MiB in 1 MiB blocks, compressed little: two batches of 16 MiB.
+  const auto path = incompressible("batches", 128, 1 << 20);
+  ASSERT_NO_THROW(checkVtkXml(path, kBudget));
+  EXPECT_GT(std::filesystem::file_size(path), std::uintmax_t{18} << 20);
+  damage(path, {22, 23});
+  test::expectError([&] { checkVtkXml(path, kBudget); },
+                    {path.string(), "compressed block 23 of 24"});
 }
 
 }  // namespace
