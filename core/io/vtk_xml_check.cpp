@@ -635,8 +635,14 @@ class Checker {
     Base64Decoder decoder;
     DecodedBatch batch;
     int c;
+    bool started = false;
     while ((c = in_.get()) >= 0 && c != '<') {
+      if (isSpace(c) && started) {
+        batch.flush(payload);
+        if (!payload.complete()) whitespaceInside(a);
+      }
       if (isSpace(c) || payload.complete()) continue;
+      started = true;
       const int n = decoder.add(c, batch.bytes.data() + batch.size);
       if (n < 0)
         fail(concat(a.where, ": the inline binary data is not valid base64 (byte ", in_.position(),
@@ -646,6 +652,13 @@ class Checker {
     }
     batch.flush(payload);
     endInline(a, c);
+  }
+
+  // VTK's reader decodes base64 four characters at a time, straight from the
+  // file: a space or line break inside an array's data breaks it halfway.
+  [[noreturn]] void whitespaceInside(const Array& a) {
+    fail(concat(a.where, ": whitespace inside the base64 data (byte ", in_.position(),
+                "); VTK's reader takes an array's base64 as one unbroken run"));
   }
 
   void endInline(const Array& a, int c) {
@@ -693,7 +706,11 @@ class Checker {
       while (!payload.complete() && in_.position() < appendedEnd_) {
         const int c = in_.get();
         if (c < 0) break;
-        if (isSpace(c)) continue;
+        if (isSpace(c)) {
+          batch.flush(payload);
+          if (!payload.complete()) whitespaceInside(a);
+          break;
+        }
         const int n = decoder.add(c, batch.bytes.data() + batch.size);
         if (n < 0)
           fail(concat(a.where, ": the appended base64 data is not valid base64 (byte ",
