@@ -101,12 +101,16 @@ FieldSource fileField(const std::filesystem::path& path, const FieldSpec& spec,
   }
   const std::size_t steps = index.times.size();
   const double start = index.times.front(), end = index.times.back();
-  auto reader =
-      std::make_shared<SeriesReader>(std::move(index.sources), index.stepOptions, index.first,
-                                     capacity, int(std::clamp<std::size_t>(capacity - 2, 1, 4)));
+  // A reader for each step read ahead, on at most half the cores: the walls'
+  // threads and the main context keep the rest.
+  const std::size_t cores = std::max(2u, std::thread::hardware_concurrency());
+  const int readers = int(std::clamp<std::size_t>(capacity - 2, 1, cores / 2));
+  auto reader = std::make_shared<SeriesReader>(std::move(index.sources), index.stepOptions,
+                                               index.first, capacity, readers);
   out.description = concat(path.string(), ": ", steps, " steps over ", end - start, " s ('",
                            report.arrayName, "'), streamed: at most ", capacity, " steps (",
-                           formatByteSize(double(capacity) * step), ") in memory");
+                           formatByteSize(double(capacity) * step), ") in memory, ", readers,
+                           readers == 1 ? " reader" : " readers");
   out.timeline = FieldTimeline(std::move(index.times), reader);
   out.series = reader;
   out.update = FieldUpdate{.field = index.first, .placement = spec.placement};
