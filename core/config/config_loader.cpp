@@ -60,8 +60,26 @@ class Reader {
 
   double number(const toml::value& v, const std::string& key) const {
     if (v.is_integer()) return double(v.as_integer());
-    if (v.is_floating()) return v.as_floating();
-    fail(v, key, "expected a number");
+    if (v.is_floating() && std::isfinite(v.as_floating())) return v.as_floating();
+    fail(v, key, v.is_floating() ? "expected a finite number" : "expected a number");
+  }
+
+  // A window's position or size in pixels: two numbers each within [min, max]
+  // (checked before they become integers).
+  glm::ivec2 pixels(const toml::value& table, const std::string& key, const std::string& path,
+                    glm::ivec2 fallback, int min, int max) const {
+    const toml::value* v = find(table, key);
+    if (!v) return fallback;
+    const std::string where = path + "." + key;
+    if (!v->is_array() || v->as_array().size() != 2) fail(*v, where, "expected 2 numbers [..]");
+    glm::ivec2 out;
+    for (int i = 0; i < 2; ++i) {
+      const double n = number(v->as_array()[std::size_t(i)], where);
+      if (n < min || n > max)
+        fail(*v, where, concat("expected ", min, "..", max, " pixels each way"));
+      out[i] = int(n);
+    }
+    return out;
   }
 
   float real(const toml::value& table, const std::string& key, const std::string& path,
@@ -585,10 +603,8 @@ WindowSpec readWindow(const Reader& r, const toml::value& window, const std::str
     r.fail(*r.find(window, "monitor"), wp + ".monitor",
            concat("monitor ", s.monitor, " does not exist; ", *monitors, " connected (0..",
                   *monitors - 1, ")"));
-  s.position = glm::ivec2(r.vec<2>(window, "position", wp, glm::vec2(s.position)));
-  s.size = glm::ivec2(r.vec<2>(window, "size", wp, glm::vec2(s.size)));
-  if (s.size.x < 16 || s.size.y < 16 || s.size.x > 16384 || s.size.y > 16384)
-    r.fail(window, wp + ".size", "expected 16..16384 pixels each way");
+  s.position = r.pixels(window, "position", wp, s.position, -65536, 65536);
+  s.size = r.pixels(window, "size", wp, s.size, 16, 16384);
   s.fullscreen = r.boolean(window, "fullscreen", wp, s.fullscreen);
   s.decorated = r.boolean(window, "decorated", wp, s.decorated);
   return s;
@@ -625,11 +641,7 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
   if (offscreen) {
     if (!offscreen->is_table()) r.fail(*offscreen, path + ".offscreen", "expected a table");
     r.checkKeys(*offscreen, path + ".offscreen", {"size"});
-    w.offscreenSize =
-        glm::ivec2(r.vec<2>(*offscreen, "size", path + ".offscreen", glm::vec2(w.offscreenSize)));
-    if (w.offscreenSize.x < 16 || w.offscreenSize.y < 16 || w.offscreenSize.x > 16384 ||
-        w.offscreenSize.y > 16384)
-      r.fail(*offscreen, path + ".offscreen.size", "expected 16..16384 pixels each way");
+    w.offscreenSize = r.pixels(*offscreen, "size", path + ".offscreen", w.offscreenSize, 16, 16384);
   }
   w.stereo = r.choice(t, "stereo", path, w.stereo,
                       {{"mono", StereoMode::Mono},

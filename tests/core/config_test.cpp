@@ -275,6 +275,26 @@ TEST(Config, CountsTheContextsARunDrawsWith) {
   EXPECT_EQ(contexts(wall(window) + wall(window) + wall(offscreen)), 3);
 }
 
+// Pixels are checked as numbers before they become integers (an infinite or
+// huge size was undefined behaviour: a fuzz_config find), and a number is finite.
+TEST(Config, WindowSizesBeyondTheirRangeOrInfiniteAreRefused) {
+  EXPECT_ERROR(kWall + "window = { size = [1280, 71e3020] }\n", "test.toml:7",
+               "wall[0].window.size", "expected");
+  EXPECT_ERROR(kWall + "window = { size = [1280, inf] }\n", "test.toml:7", "wall[0].window.size",
+               "finite");
+  EXPECT_ERROR(kWall + "window = { size = [1e20, 720] }\n", "test.toml:7", "wall[0].window.size",
+               "16..16384 pixels");
+  EXPECT_ERROR(kWall + "window = { position = [-1e12, 0] }\n", "test.toml:7",
+               "wall[0].window.position", "-65536..65536");
+  EXPECT_ERROR(kWall + "offscreen = { size = [nan, 64] }\n", "test.toml:7",
+               "wall[0].offscreen.size", "finite");
+  EXPECT_ERROR("[render]\nsize = inf\n" + kWall, "test.toml:2", "render.size", "finite");
+  const AppConfig ok = parseConfig(
+      kWall + "window = { size = [640.0, 480], position = [-20, 0] }\n", "test.toml", 2);
+  EXPECT_EQ(ok.walls.at(0).window->size, glm::ivec2(640, 480));
+  EXPECT_EQ(ok.walls.at(0).window->position, glm::ivec2(-20, 0));
+}
+
 TEST(Config, IntegersBeyond64BitsAreRefusedNotClamped) {
   const std::string big = "0b1" + std::string(64, '0');  // 2^64
   EXPECT_ERROR("[run]\nseed = " + big + "\n" + kWall, "test.toml:2", "does not fit in 64 bits");
