@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -64,6 +65,15 @@ class Reader {
     fail(v, key, v.is_floating() ? "expected a finite number" : "expected a number");
   }
 
+  // A number kept as a float: within float's range (a double beyond it has no
+  // float to become).
+  float single(const toml::value& v, const std::string& key) const {
+    const double n = number(v, key);
+    if (std::abs(n) > double(std::numeric_limits<float>::max()))
+      fail(v, key, "expected a number within +-3.4e38");
+    return float(n);
+  }
+
   // A window's position or size in pixels: two numbers each within [min, max]
   // (checked before they become integers).
   glm::ivec2 pixels(const toml::value& table, const std::string& key, const std::string& path,
@@ -85,7 +95,7 @@ class Reader {
   float real(const toml::value& table, const std::string& key, const std::string& path,
              float fallback) const {
     const toml::value* v = find(table, key);
-    return v ? float(number(*v, path + "." + key)) : fallback;
+    return v ? single(*v, path + "." + key) : fallback;
   }
 
   int integer(const toml::value& table, const std::string& key, const std::string& path,
@@ -121,7 +131,7 @@ class Reader {
       fail(v, key, concat("expected ", N, " numbers [..]"));
     glm::vec<N, float> out;
     for (int i = 0; i < N; ++i)
-      out[i] = float(number(v.as_array()[std::size_t(i)], key));
+      out[i] = single(v.as_array()[std::size_t(i)], key);
     return out;
   }
 
@@ -155,7 +165,7 @@ class Reader {
 AttributeValue attributeValue(const Reader& r, const toml::value& v, const std::string& key) {
   if (v.is_boolean()) return v.as_boolean();
   if (v.is_integer()) return int(std::clamp<std::int64_t>(v.as_integer(), -2000000000, 2000000000));
-  if (v.is_floating()) return float(v.as_floating());
+  if (v.is_floating()) return r.single(v, key);
   if (v.is_string()) return v.as_string().str;
   if (v.is_array()) return r.vec<3>(v, key);
   r.fail(v, key, "expected a number, a boolean, a string or [x, y, z]");
@@ -419,7 +429,7 @@ void readHead(const Reader& r, const toml::value& t, HeadSpec& h) {
     for (const toml::value& k : path->as_array()) {
       if (!k.is_table()) r.fail(k, "head.path", "expected {time = .., position = [x, y, z]}");
       r.checkKeys(k, "head.path[]", {"time", "position"});
-      HeadKeyframe key{float(r.number(r.require(k, "time", "head.path[]"), "head.path[].time")),
+      HeadKeyframe key{r.single(r.require(k, "time", "head.path[]"), "head.path[].time"),
                        r.vec<3>(r.require(k, "position", "head.path[]"), "head.path[].position")};
       if (key.time <= last) r.fail(k, "head.path[].time", "expected times that increase");
       last = key.time;
@@ -477,7 +487,7 @@ void readObstacles(const Reader& r, const toml::value& list, AppConfig& c) {
         r.checkKeys(k, name + ".path[]", {"time", "position"});
         const toml::value& time = r.require(k, "time", name + ".path[]");
         ObstacleKeyframe key{
-            float(r.number(time, name + ".path[].time")),
+            r.single(time, name + ".path[].time"),
             r.vec<3>(r.require(k, "position", name + ".path[]"), name + ".path[].position")};
         if (!(key.time > last)) r.fail(time, name + ".path[].time", "expected times that increase");
         if (!(std::abs(key.time) < 1e7f)) r.fail(time, name + ".path[].time", "expected seconds");

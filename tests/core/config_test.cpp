@@ -289,6 +289,10 @@ TEST(Config, WindowSizesBeyondTheirRangeOrInfiniteAreRefused) {
   EXPECT_ERROR(kWall + "offscreen = { size = [nan, 64] }\n", "test.toml:7",
                "wall[0].offscreen.size", "finite");
   EXPECT_ERROR("[render]\nsize = inf\n" + kWall, "test.toml:2", "render.size", "finite");
+  // A double beyond float's range has no float to become.
+  EXPECT_ERROR("[render]\nsize = 1e300\n" + kWall, "test.toml:2", "render.size", "3.4e38");
+  EXPECT_ERROR("[field]\nbounds_min = [0, -1e39, 0]\n" + kWall, "test.toml:2", "field.bounds_min",
+               "3.4e38");
   const AppConfig ok = parseConfig(
       kWall + "window = { size = [640.0, 480], position = [-20, 0] }\n", "test.toml", 2);
   EXPECT_EQ(ok.walls.at(0).window->size, glm::ivec2(640, 480));
