@@ -35,6 +35,7 @@ constexpr ExodusObjects kObjects[] = {
     {"num_node_maps", "nm_prop1", "node map"},   {"num_elem_maps", "em_prop1", "element map"},
     {"num_edge_maps", "edm_prop1", "edge map"},  {"num_face_maps", "fam_prop1", "face map"}};
 constexpr std::uint64_t kMaxObjects = 100000;  // of one kind
+constexpr double kMaxNameLength = 256;         // NetCDF's NC_MAX_NAME
 
 // A variable's values as integers, through the NetCDF library.
 std::vector<long long> integers(const NetcdfFile& f, const NetcdfHeader& h, const NetcdfVariable& v,
@@ -87,6 +88,13 @@ void checkExodusLayout(const NetcdfHeader& h, const std::string& file) {
   }
   for (const ExodusObjects& o : kObjects)
     if (length(o.count) > kMaxObjects) fail(concat(length(o.count), " objects (", o.count, ")"));
+  // The reader sizes its name buffers by this attribute, unchecked.
+  for (const NetcdfAttribute& a : h.attributes)
+    if (a.name == "maximum_name_length" &&
+        (a.values.size() != 1 || !(a.values[0] >= 0.0 && a.values[0] <= kMaxNameLength)))
+      fail(concat("maximum_name_length is ",
+                  a.values.empty() ? std::string("not a number") : concat(a.values[0]),
+                  "; Exodus II names hold at most ", kMaxNameLength, " characters"));
   const std::uint64_t blocks = length("num_el_blk");
   for (std::uint64_t b = 1; b <= blocks; ++b) {
     const std::string in = concat("num_el_in_blk", b), per = concat("num_nod_per_el", b);

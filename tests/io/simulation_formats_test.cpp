@@ -185,6 +185,21 @@ TEST(SimulationFormats, ExodusBlocksSharingAnIdAreRefused) {
                     {path.string(), "element blocks 1 and 2 share the id 10", "eb_prop1"});
 }
 
+// VTK's reader sizes its name buffers by the file's maximum_name_length (a
+// 5.5 GB allocation for one a fuzzer wrote): past NetCDF's 256 it is refused.
+TEST(SimulationFormats, AnExodusMaximumNameLengthBeyondNetcdfsIsRefused) {
+  const auto path = test::scratch() / "long_names.e";
+  writeExodus(path, 2);
+  int id = -1;
+  ASSERT_EQ(nc_open(path.c_str(), NC_WRITE, &id), NC_NOERR);
+  ASSERT_EQ(nc_redef(id), NC_NOERR);
+  const int huge = 687865888;
+  ASSERT_EQ(nc_put_att_int(id, NC_GLOBAL, "maximum_name_length", NC_INT, 1, &huge), NC_NOERR);
+  ASSERT_EQ(nc_close(id), NC_NOERR);
+  test::expectError([&] { loadField(path); },
+                    {path.string(), "maximum_name_length is", "at most 256 characters"});
+}
+
 // An OpenFOAM case's cell values at the points: each mesh point takes the mean
 // of the cells around it, exact for a linear flow where those cells lie
 // symmetrically about it (inside the box), within the flow's stretch (3)
