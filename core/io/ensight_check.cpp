@@ -367,6 +367,12 @@ EnSightCase parseEnSightCase(const fs::path& caseFile) {
     // VTK's reader reads lines into 256 bytes and never gets past a longer one.
     if (line.size() > kMaxLine)
       fail(concat("a line of ", line.size(), " characters; EnSight's are at most ", kMaxLine));
+    // A case file is text: VTK's reader stops a line at a zero byte and would
+    // take what is left for another format.
+    for (const char ch : line)
+      if (static_cast<unsigned char>(ch) < 0x20 && ch != '\t' && ch != '\r')
+        fail(concat("a control character (byte ", int(static_cast<unsigned char>(ch)),
+                    "); a case file is text"));
     line = trim(line.substr(0, line.find('#')));
     if (line.empty()) continue;
     const std::string low = lower(line);
@@ -402,7 +408,7 @@ EnSightCase parseEnSightCase(const fs::path& caseFile) {
                   "' in the GEOMETRY section; expected model (measured, match and boundary "
                   "geometry are not read)"));
     if (section == "format") {
-      if (key == "type") gold = lower(value).find("gold") != std::string::npos;
+      if (key == "type") gold = words(lower(value)) == std::vector<std::string>{"ensight", "gold"};
     } else if (section == "geometry") {
       if (key == "model") {
         std::vector<std::string> w = words(value);

@@ -366,6 +366,14 @@ TEST(SimulationFormats, EnSightGoldBinaryTransientCases) {
   test::writeText(path, "FORMAT\ntype: ensight gold\nXtype: foo\nGEOMETRY\nmodel: flow.geo\n");
   test::expectError([&] { loadField(path); },
                     {path.string() + ":3", "'xtype' in the FORMAT section; expected type"});
+  // A zero byte in the type line: VTK's reader read the case as EnSight 6 and
+  // crashed on the Gold files (a fuzz find); control characters are refused.
+  test::writeText(path,
+                  std::string("FORMAT\ntype: \x01\0 ensight gold\nGEOMETRY\nmodel: f.geo\n", 51));
+  test::expectError([&] { loadField(path); },
+                    {path.string() + ":2", "a control character (byte 1); a case file is text"});
+  test::writeText(path, "FORMAT\ntype: ensight gold extra\nGEOMETRY\nmodel: f.geo\n");
+  test::expectError([&] { loadField(path); }, {path.string(), "not an EnSight Gold case"});
 }
 
 // EnSight Gold ascii as its format guide lays it out: a value a line, an
