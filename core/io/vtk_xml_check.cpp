@@ -643,15 +643,21 @@ class Checker {
       }
       if (isSpace(c) || payload.complete()) continue;
       started = true;
-      const int n = decoder.add(c, batch.bytes.data() + batch.size);
-      if (n < 0)
-        fail(concat(a.where, ": the inline binary data is not valid base64 (byte ", in_.position(),
-                    ")"));
-      batch.size += std::size_t(n);
-      if (batch.full(payload)) batch.flush(payload);
+      decode(a, c, "inline binary", decoder, batch, payload);
     }
     batch.flush(payload);
     endInline(a, c);
+  }
+
+  // One base64 character into the batch; a full batch goes to the payload.
+  void decode(const Array& a, int c, const char* what, Base64Decoder& decoder, DecodedBatch& batch,
+              VtkXmlPayload& payload) {
+    const int n = decoder.add(c, batch.bytes.data() + batch.size);
+    if (n < 0)
+      fail(
+          concat(a.where, ": the ", what, " data is not valid base64 (byte ", in_.position(), ")"));
+    batch.size += std::size_t(n);
+    if (batch.full(payload)) batch.flush(payload);
   }
 
   // VTK's reader decodes base64 four characters at a time, straight from the
@@ -711,12 +717,7 @@ class Checker {
           if (!payload.complete()) whitespaceInside(a);
           break;
         }
-        const int n = decoder.add(c, batch.bytes.data() + batch.size);
-        if (n < 0)
-          fail(concat(a.where, ": the appended base64 data is not valid base64 (byte ",
-                      in_.position(), ")"));
-        batch.size += std::size_t(n);
-        if (batch.full(payload)) batch.flush(payload);
+        decode(a, c, "appended base64", decoder, batch, payload);
       }
       batch.flush(payload);
     } else {
