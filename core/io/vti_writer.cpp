@@ -8,6 +8,7 @@
 #include <vtkXMLImageDataWriter.h>
 
 #include "core/io/vtk_message_trap.h"
+#include "core/io/vtk_progress.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -79,7 +80,12 @@ void writeVti(const std::filesystem::path& path, const VectorField& field,
       writer->SetCompressorTypeToNone();
       break;
   }
+  // The writer reports its share done; the bytes are the arrays it writes.
+  VtkProgress progress(writer, "writing " + path.filename().string(),
+                       double(field.pointCount()) * (12.0 + (field.hasValidity() ? 1.0 : 0.0) +
+                                                     4.0 * field.scalars().size()));
   const int ok = writer->Write();
+  progress.finish();
   trap.throwIfFailed("writing VTK XML image data");
   if (!ok) throw Error(concat(path.string(), ": VTK could not write the file"));
 }

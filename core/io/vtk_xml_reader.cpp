@@ -23,7 +23,7 @@
 #include "core/field/vector_field.h"
 #include "core/io/vtk_cell_check.h"
 #include "core/io/vtk_message_trap.h"
-#include "core/io/vtk_read_progress.h"
+#include "core/io/vtk_progress.h"
 #include "core/io/vtk_xml_check.h"
 #include "core/util/error.h"
 
@@ -66,7 +66,7 @@ vtkSmartPointer<vtkDataSet> run(const std::filesystem::path& path, const LoadOpt
                        VectorField::kMaxPoints, " points)"));
   // The values' count against the extent was held by checkVtkXml (each payload
   // exactly what the piece's extent needs), so VTK reads each array once.
-  std::optional<VtkReadProgress> progress;
+  std::optional<VtkProgress> progress;
   if (options.showProgress) progress.emplace(reader, path);
   reader->Update();
   if (progress) progress->finish();

@@ -1,4 +1,4 @@
-#include "core/io/vtk_read_progress.h"
+#include "core/io/vtk_progress.h"
 
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
@@ -11,17 +11,26 @@
 
 namespace sandstorm {
 
-VtkReadProgress::VtkReadProgress(vtkAlgorithm* reader, const std::filesystem::path& file)
-    : reader_(reader) {
+namespace {
+
+double fileSize(const std::filesystem::path& file) {
   std::error_code ec;
   const auto size = std::filesystem::file_size(file, ec);
-  bytes_ = ec ? 0.0 : double(size);
-  meter_ = std::make_unique<ProgressMeter>("reading " + file.filename().string(),
-                                           std::uint64_t(bytes_), "bytes");
+  return ec ? 0.0 : double(size);
+}
+
+}  // namespace
+
+VtkProgress::VtkProgress(vtkAlgorithm* reader, const std::filesystem::path& file)
+    : VtkProgress(reader, "reading " + file.filename().string(), fileSize(file)) {}
+
+VtkProgress::VtkProgress(vtkAlgorithm* algorithm, const std::string& what, double bytes)
+    : algorithm_(algorithm), bytes_(bytes) {
+  meter_ = std::make_unique<ProgressMeter>(what, std::uint64_t(bytes_), "bytes");
   callback_ = vtkSmartPointer<vtkCallbackCommand>::New();
   callback_->SetClientData(this);
   callback_->SetCallback([](vtkObject*, unsigned long, void* self, void* data) {
-    auto* me = static_cast<VtkReadProgress*>(self);
+    auto* me = static_cast<VtkProgress*>(self);
     const double fraction = std::clamp(data ? *static_cast<double*>(data) : 0.0, 0.0, 1.0);
     const double done = fraction * me->bytes_;
     const auto step = std::uint64_t(std::max(done - me->reported_, 0.0));
@@ -29,14 +38,14 @@ VtkReadProgress::VtkReadProgress(vtkAlgorithm* reader, const std::filesystem::pa
     me->meter_->add(step);
     me->reported_ += double(step);
   });
-  tag_ = reader_->AddObserver(vtkCommand::ProgressEvent, callback_);
+  tag_ = algorithm_->AddObserver(vtkCommand::ProgressEvent, callback_);
 }
 
-VtkReadProgress::~VtkReadProgress() {
-  reader_->RemoveObserver(tag_);
+VtkProgress::~VtkProgress() {
+  algorithm_->RemoveObserver(tag_);
 }
 
-void VtkReadProgress::finish() {
+void VtkProgress::finish() {
   meter_->finish();
 }
 
