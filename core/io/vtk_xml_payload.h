@@ -50,11 +50,6 @@ class VtkXmlPayload {
   // Takes up to `n` decoded bytes and returns how many it took: all of them
   // unless the payload completes first (bytes after that are not part of it).
   std::size_t push(const std::uint8_t* data, std::size_t n);
-  // One byte; returns true once the payload is complete.
-  bool push(std::uint8_t byte) {
-    push(&byte, 1);
-    return complete();
-  }
   bool complete() const { return state_ == State::Done; }
   // Bytes the payload takes before it next decides anything (the rest of a
   // header word, of a block, of the data): a decoder that produces no more
