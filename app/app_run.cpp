@@ -671,6 +671,7 @@ std::vector<std::string> AppRun::probeLines(const ParticleState& state, const Fi
   if (!point) return {};
   PhysicsInputs in;
   in.field = field ? field->field.get() : nullptr;
+  in.sparse = field ? field->sparse.get() : nullptr;
   in.placement = field ? field->placement : FieldPlacement{};
   in.settings = state.sim;
   in.obstacles = collisionShapes(state, terrain_.get());

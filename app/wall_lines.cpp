@@ -9,6 +9,7 @@ std::vector<Streamline> wallStreamlines(const ParticleState& state,
                                         float fieldBlend, const HeightMap* terrain) {
   PhysicsInputs in;
   in.field = field ? field->field.get() : nullptr;
+  in.sparse = field ? field->sparse.get() : nullptr;
   in.nextField = field ? field->next.get() : nullptr;
   in.blend = fieldBlend;
   in.placement = field ? field->placement : FieldPlacement{};

@@ -4,7 +4,8 @@
 // (obstacles.glsl); the others ignore them, so a host with obstacles in the
 // block must use an OBSTACLES program, or an OBSTACLE_FLOW one (the flow
 // around them only) followed by obstacle_collide.comp (the compute backend). FIELD_EQUATION programs evaluate the analytic
-// field (field_equation.glsl) in place of the texture.
+// field (field_equation.glsl) in place of the texture, FIELD_SPARSE programs
+// sample a sparse grid (field_sparse.glsl).
 
 #include "field_equation.glsl"
 #include "field_expression.glsl"
@@ -44,6 +45,8 @@ vec3 trilinear(vec3 f, vec3 c000, vec3 c100, vec3 c010, vec3 c110, vec3 c001, ve
   precise vec3 c = c0 + (c1 - c0) * f.z;
   return c;
 }
+
+#include "field_sparse.glsl"
 
 #ifdef FIELD_BUFFER
 // The grid as GpuField's buffer holds it: eight vec4 loads (on an H200,
@@ -138,6 +141,8 @@ vec3 fieldAt(vec3 x) {
   vec3 s = expressionAt(local, sim.expression.x, gParticleVelocity, gParticleAge);
 #elif defined(FIELD_EQUATION)
   vec3 s = equationAt(local);  // the analytic field itself (field_equation.glsl), not its grid
+#elif defined(FIELD_SPARSE)
+  precise vec3 s = sparseSample(local);  // the sparse grid (field_sparse.glsl), not the overview
 #else
   precise vec3 s = fieldSample(false, local);
   if (sim.fieldBlend.y != 0.0) {

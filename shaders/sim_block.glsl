@@ -43,6 +43,8 @@ layout(std140, binding = 0) uniform SimBlock {
   vec4 expression;        // x: simulated seconds before this step (a field expression's t)
   ivec4 obstacleCount;    // x: obstacles below (collisionShapes)
   ObstacleBlock obstacles[kMaxObstacles];
+  vec4 sparseIndexMin;    // a sparse grid's index box, widened (field_sparse.glsl)
+  vec4 sparseIndexMax;
 } sim;
 
 // The field's grid (GpuField): FIELD_BUFFER programs (the compute backend)

@@ -32,6 +32,13 @@ void expand(std::string_view name, std::vector<std::string>& files, std::ostring
   while (std::getline(in, line)) {
     ++lineNo;
     const std::size_t at = line.find("#include");
+    if (at != std::string::npos && line.find_first_not_of(" \t") == at &&
+        line.find('<', at) != std::string::npos) {
+      // A C header a library's shared GLSL/C file includes on its C side only
+      // (PNanoVDB.h): inside an #if that GLSL never takes.
+      out << "// " << line << " (C only)\n";
+      continue;
+    }
     if (at != std::string::npos && line.find_first_not_of(" \t") == at) {
       const std::size_t open = line.find('"'), close = line.rfind('"');
       if (open == std::string::npos || close <= open)

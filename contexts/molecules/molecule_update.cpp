@@ -124,13 +124,10 @@ const gl::Program& MoleculeUpdate::variant(const std::string& file,
   return *p;
 }
 
-const gl::Program& MoleculeUpdate::updateProgram(const ParticleState& state, bool equation,
+const gl::Program& MoleculeUpdate::updateProgram(const ParticleState& state, FieldRead read,
                                                  bool obstacles, bool repulsion) {
   std::vector<std::string> defines = shapeConstants(state.molecules.complexity);
-  if (equation)
-    defines.push_back("FIELD_EQUATION");
-  else if (environment_.gridStorage() == GpuField::Storage::Buffer)
-    defines.push_back("FIELD_BUFFER");
+  if (const char* d = fieldReadDefine(read, environment_.gridStorage())) defines.push_back(d);
   if (obstacles) defines.push_back("OBSTACLES");
   if (repulsion) defines.push_back("REPULSION");
   if (state.field.mode == FieldMode::Expression) {
@@ -176,9 +173,9 @@ void MoleculeUpdate::step(const SimStep& step, const ParticleState& state) {
   glNamedBufferSubData(moleculeBlock_.id(), 0, sizeof(mb), &mb);
   glBindBufferBase(GL_UNIFORM_BUFFER, kSimBlock, simBlock_.id());
   glBindBufferBase(GL_UNIFORM_BUFFER, kMoleculeBlock, moleculeBlock_.id());
-  const bool equation = environment_.bind(state);
+  const FieldRead read = environment_.bind(state);
   const bool obstacles = block.obstacleCount.x > 0;
-  const gl::Program& update = updateProgram(state, equation, obstacles, repulsion);
+  const gl::Program& update = updateProgram(state, read, obstacles, repulsion);
   const GLuint vertices = GLuint(mb.drawing.z);
 
   const BufferSet& in = sets_[std::size_t(current_)];

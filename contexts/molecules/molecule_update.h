@@ -56,6 +56,9 @@ class MoleculeUpdate {
   void setEquation(std::shared_ptr<const FieldEquation> equation) {
     environment_.setEquation(std::move(equation));
   }
+  void setSparse(std::shared_ptr<const SparseField> sparse) {
+    environment_.setSparse(std::move(sparse));
+  }
   void setTerrain(std::shared_ptr<const HeightMap> terrain) {
     environment_.setTerrain(std::move(terrain));
   }
@@ -88,7 +91,7 @@ class MoleculeUpdate {
   };
 
   void allocate(std::size_t capacity, int members, bool keep);
-  const gl::Program& updateProgram(const ParticleState& state, bool equation, bool obstacles,
+  const gl::Program& updateProgram(const ParticleState& state, FieldRead read, bool obstacles,
                                    bool repulsion);
   const gl::Program& variant(const std::string& file, const std::vector<std::string>& defines);
 

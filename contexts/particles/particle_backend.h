@@ -16,6 +16,7 @@
 #include "core/field/field_equation.h"
 #include "core/field/field_placement.h"
 #include "core/field/height_map.h"
+#include "core/field/sparse_field.h"
 #include "core/field/vector_field.h"
 #include "core/sim/particle.h"
 #include "core/sim/particle_state.h"
@@ -33,6 +34,9 @@ class ParticleBackend {
   // An analytic field's equation: while state.field.mode is Equation, updates
   // evaluate it in place of the field's grid (whose bounds still apply). Null: none.
   virtual void setEquation(std::shared_ptr<const FieldEquation> equation) = 0;
+  // A sparse grid (FieldUpdate::sparse) read in place of the field's grid,
+  // whose bounds are its bounds. Null: none.
+  virtual void setSparse(std::shared_ptr<const SparseField> sparse) = 0;
   virtual void setTerrain(std::shared_ptr<const HeightMap> terrain) = 0;
   // The live flow solver's grid on this GPU (a storage buffer in GpuField's
   // layout, the field's dims and bounds) read in place of the field's; 0:

@@ -160,8 +160,10 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   fillSimBlock(inputs, block);
   glNamedBufferSubData(simBlock_.id(), 0, sizeof(block), &block);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, simBlock_.id());
-  const bool equation = environment_.bind(state);
-  const bool texture = environment_.gridStorage() == GpuField::Storage::Texture;
+  const FieldRead read = environment_.bind(state);
+  const char* readDefine = fieldReadDefine(read, environment_.gridStorage());
+  // The plain program reads the grid's buffer.
+  const bool plain = read == FieldRead::Grid && readDefine != nullptr;
   const bool obstacles = block.obstacleCount.x > 0;
   bool flow = false;  // some obstacle turns the flow
   for (int i = 0; i < block.obstacleCount.x; ++i)
@@ -169,10 +171,7 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   // The update's variant: how it reads the field, and the obstacles' code
   // only where there are obstacles (it costs registers even unused).
   std::vector<std::string> defines{itemsDefine(items_)};
-  if (equation)
-    defines.push_back("FIELD_EQUATION");
-  else if (!texture)
-    defines.push_back("FIELD_BUFFER");
+  if (readDefine) defines.push_back(readDefine);
   // The flow around the obstacles is the update's; putting particles out of
   // them is a pass of its own (obstacle_collide.comp), below, over the
   // records the update lists as not clear of an obstacle.
@@ -184,9 +183,9 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   const gl::Program* expression = nullptr;
   if (state.field.mode == FieldMode::Expression)
     expression = expressionPrograms_.get(state, defines, make);
-  const gl::Program& update = expression                            ? *expression
-                              : !equation && !texture && !obstacles ? updateProgram_
-                                                                    : variant(defines, make);
+  const gl::Program& update = expression            ? *expression
+                              : plain && !obstacles ? updateProgram_
+                                                    : variant(defines, make);
 
   if (state.render.trailLength > 0) {
     if (!trails_) trails_ = std::make_unique<ParticleTrails>();

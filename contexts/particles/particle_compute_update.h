@@ -55,6 +55,9 @@ class ParticleComputeUpdate final : public ParticleBackend {
   void setEquation(std::shared_ptr<const FieldEquation> equation) override {
     environment_.setEquation(std::move(equation));
   }
+  void setSparse(std::shared_ptr<const SparseField> sparse) override {
+    environment_.setSparse(std::move(sparse));
+  }
   void setTerrain(std::shared_ptr<const HeightMap> terrain) override;
   bool setFieldBuffer(std::uint32_t buffer) override {
     const bool can = environment_.gridStorage() == GpuField::Storage::Buffer;

@@ -30,20 +30,25 @@ void ParticleEnvironment::describe(SimBlockInputs& inputs) const {
   inputs.field = field_.get();
   // The live flow's grid has no next frame.
   inputs.nextField = fieldBuffer_ != 0 ? nullptr : nextField_.get();
+  inputs.sparse = fieldBuffer_ != 0 || !field_ ? nullptr : sparse_.holds().get();
   inputs.placement = placement_;
   inputs.terrain = terrain_.get();
 }
 
-bool ParticleEnvironment::bind(const ParticleState& state) const {
+FieldRead ParticleEnvironment::bind(const ParticleState& state) const {
+  if (terrain_) terrainTexture_.bind(1);
   if (fieldBuffer_ != 0 && field_ && gridStorage() == GpuField::Storage::Buffer) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 14, fieldBuffer_);
-    if (terrain_) terrainTexture_.bind(1);
-    return false;
+    return FieldRead::Grid;
   }
   if (field_) fieldGrid_.bind(GpuField::Slot::Current);
   if (nextField_) nextFieldGrid_.bind(GpuField::Slot::Next);
-  if (terrain_) terrainTexture_.bind(1);
-  return equation_.bindIfUsed(state);
+  if (equation_.bindIfUsed(state)) return FieldRead::Equation;
+  if (field_ && sparse_.holds()) {
+    sparse_.bind();
+    return FieldRead::Sparse;
+  }
+  return FieldRead::Grid;
 }
 
 }  // namespace sandstorm

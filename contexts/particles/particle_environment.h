@@ -1,16 +1,31 @@
 // ParticleEnvironment: what particles move through, on the GPU, for either
 // update backend: the field's grid (and a time-varying field's next frame),
-// its placement, its equation (field.mode = equation), and the terrain.
+// its placement, its equation (field.mode = equation), a sparse grid read in
+// place of the dense one, and the terrain.
 #pragma once
 
 #include <memory>
 
 #include "contexts/particles/field_equation_buffer.h"
 #include "contexts/particles/gpu_field.h"
+#include "contexts/particles/gpu_sparse_field.h"
 #include "contexts/particles/sim_block.h"
 #include "core/field/field_placement.h"
 
 namespace sandstorm {
+
+// How an update's program reads the field: the grid (a texture or, with
+// FIELD_BUFFER, a buffer), the equation (FIELD_EQUATION) or the sparse grid
+// (FIELD_SPARSE).
+enum class FieldRead { Grid, Equation, Sparse };
+
+// The define a program reading the field so needs: FIELD_EQUATION,
+// FIELD_SPARSE, FIELD_BUFFER (a grid kept as a buffer), or none (a texture).
+inline const char* fieldReadDefine(FieldRead read, GpuField::Storage storage) {
+  if (read == FieldRead::Equation) return "FIELD_EQUATION";
+  if (read == FieldRead::Sparse) return "FIELD_SPARSE";
+  return storage == GpuField::Storage::Buffer ? "FIELD_BUFFER" : nullptr;
+}
 
 class ParticleEnvironment {
  public:
@@ -27,6 +42,9 @@ class ParticleEnvironment {
   void setEquation(std::shared_ptr<const FieldEquation> equation) {
     equation_.set(std::move(equation));
   }
+  // A sparse grid (FieldUpdate::sparse) read in place of the field's grid,
+  // whose bounds are its bounds; null: the grid again.
+  void setSparse(std::shared_ptr<const SparseField> sparse) { sparse_.show(std::move(sparse)); }
   void setTerrain(std::shared_ptr<const HeightMap> terrain);
   // A storage buffer holding the field's grid in GpuField's layout (the live
   // flow solver's points, GpuFluidSolver), read in place of the uploaded
@@ -38,9 +56,10 @@ class ParticleEnvironment {
 
   // The environment's part of an update's inputs.
   void describe(SimBlockInputs& inputs) const;
-  // Binds the field's grids (GpuField::bind), the terrain (texture unit 1)
-  // and, when state.field.mode asks for it, the equation; returns whether it did.
-  bool bind(const ParticleState& state) const;
+  // Binds the field's grids (GpuField::bind) or its sparse grid, the terrain
+  // (texture unit 1) and, when state.field.mode asks for it, the equation;
+  // returns how the update's program must read the field.
+  FieldRead bind(const ParticleState& state) const;
 
   // How the field's grid is kept (both frames of a time-varying field share a
   // grid, so a storage).
@@ -55,6 +74,7 @@ class ParticleEnvironment {
   GpuField fieldGrid_, nextFieldGrid_;
   TerrainTexture terrainTexture_;
   FieldEquationBuffer equation_;
+  GpuSparseField sparse_;
   std::uint32_t fieldBuffer_ = 0;
 };
 

@@ -160,26 +160,27 @@ void ParticleGeoUpdate::step(const SimStep& step, const ParticleState& state) {
   const int slots = fillSimBlock(inputs, block);
   glNamedBufferSubData(simBlock_.id(), 0, sizeof(block), &block);
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, simBlock_.id());
-  const bool equation = environment_.bind(state);
+  const FieldRead read = environment_.bind(state);
   if (state.render.trailLength > 0) {
     if (!trails_) trails_ = std::make_unique<ParticleTrails>();
     trails_->prepare(capacity_, state.render.trailLength);
   } else {
     trails_.reset();
   }
-  // The update program: with the field's equation or not, capturing each
+  // The update program: reading the field's texture, equation or sparse
+  // grid, capturing each
   // survivor's source record for the trails or not, with the obstacles' code
   // only where there are obstacles (it costs registers even unused); made on
   // first use.
   const bool obstacles = block.obstacleCount.x > 0;
   std::unique_ptr<gl::Program>& variant =
-      updatePrograms_[(equation ? 1 : 0) + (trails_ ? 2 : 0) + (obstacles ? 4 : 0)];
+      updatePrograms_[std::size_t(read) + (trails_ ? 3 : 0) + (obstacles ? 6 : 0)];
   std::vector<std::string> defines;
   if (trails_) defines.push_back("TRAILS");
   if (obstacles) defines.push_back("OBSTACLES");
   if (!variant) {
     std::vector<std::string> all = defines;
-    if (equation) all.push_back("FIELD_EQUATION");
+    if (const char* d = fieldReadDefine(read, GpuField::Storage::Texture)) all.push_back(d);
     variant = std::make_unique<gl::Program>(
         makeProgram("particle_update.vert", "particle_update.geom", all));
   }

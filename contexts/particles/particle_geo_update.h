@@ -46,6 +46,9 @@ class ParticleGeoUpdate final : public ParticleBackend {
   void setEquation(std::shared_ptr<const FieldEquation> equation) override {
     environment_.setEquation(std::move(equation));
   }
+  void setSparse(std::shared_ptr<const SparseField> sparse) override {
+    environment_.setSparse(std::move(sparse));
+  }
   void setTerrain(std::shared_ptr<const HeightMap> terrain) override;
   void step(const SimStep& step, const ParticleState& state) override;
   void clear() override;
@@ -88,10 +91,10 @@ class ParticleGeoUpdate final : public ParticleBackend {
   gl::Renderbuffer dummyColor_;
   gl::Program emitProgram_;
   // The update: [field equation?  + 2 * trails?], each made on first use.
-  std::array<std::unique_ptr<gl::Program>, 8> updatePrograms_;  // equation, trails, obstacles
-  std::unique_ptr<gl::Program> emitObstacleProgram_;            // OBSTACLES, on first use
-  ExpressionPrograms expressionPrograms_;                       // field.mode = expression
-  std::unique_ptr<ParticleTrails> trails_;                      // while render.trail_length > 0
+  std::array<std::unique_ptr<gl::Program>, 12> updatePrograms_;  // FieldRead, trails, obstacles
+  std::unique_ptr<gl::Program> emitObstacleProgram_;             // OBSTACLES, on first use
+  ExpressionPrograms expressionPrograms_;                        // field.mode = expression
+  std::unique_ptr<ParticleTrails> trails_;                       // while render.trail_length > 0
 
   ParticleEnvironment environment_{GpuField::Storage::Texture};
 

@@ -71,6 +71,7 @@ void ParticleSystem::advance(const FramePacket& packet) {
     field_ = packet.fieldUpdate;
     update_->setField(field_->field, field_->placement, field_->next);
     update_->setEquation(field_->equation);
+    update_->setSparse(field_->sparse);
     log::debug("frame ", packet.frame, ": field uploaded in ", update_->lastFieldUploadMs(), " ms");
   }
   // The live flow on this GPU, before the particles move through it.
@@ -111,6 +112,7 @@ void ParticleSystem::advance(const FramePacket& packet) {
 void ParticleSystem::setMoleculeField() {
   molecules_->setField(field_->field, field_->placement, field_->next);
   molecules_->setEquation(field_->equation);
+  molecules_->setSparse(field_->sparse);
 }
 
 void ParticleSystem::render(const ViewTargets& targets, std::uint32_t destination,

@@ -26,6 +26,9 @@ class SharingBackend final : public ParticleBackend {
   void setEquation(std::shared_ptr<const FieldEquation> equation) override {
     inner_->setEquation(std::move(equation));
   }
+  void setSparse(std::shared_ptr<const SparseField> sparse) override {
+    inner_->setSparse(std::move(sparse));
+  }
   void setTerrain(std::shared_ptr<const HeightMap> terrain) override {
     inner_->setTerrain(std::move(terrain));
   }
@@ -56,6 +59,7 @@ class SharedParticles final : public ParticleBackend {
   void setField(std::shared_ptr<const VectorField>, const FieldPlacement&,
                 std::shared_ptr<const VectorField>) override {}
   void setEquation(std::shared_ptr<const FieldEquation>) override {}
+  void setSparse(std::shared_ptr<const SparseField>) override {}
   void setTerrain(std::shared_ptr<const HeightMap>) override {}
   void step(const SimStep& step,
             const ParticleState& state) override;  // acquires the owner's frame

@@ -16,6 +16,13 @@ int fillSimBlock(const SimBlockInputs& in, SimBlock& b) {
     b.domainMin = glm::vec4(domain.min, 0.0f);
     b.domainMax = glm::vec4(domain.max, 0.0f);
   }
+  if (in.field && in.sparse) {
+    // The same numbers as SparseField::sample() uses.
+    b.fieldMin = glm::vec4(in.sparse->origin(), 0.0f);
+    b.fieldIndexScale = glm::vec4(in.sparse->indexScale(), 0.0f);
+    b.sparseIndexMin = glm::vec4(glm::vec3(in.sparse->indexMin() - 2), 0.0f);
+    b.sparseIndexMax = glm::vec4(glm::vec3(in.sparse->indexMax() + 1), 0.0f);
+  }
   const bool masked =
       (in.field && in.field->hasValidity()) || (in.nextField && in.nextField->hasValidity());
   b.fieldBlend =

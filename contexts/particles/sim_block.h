@@ -10,6 +10,7 @@
 
 #include "core/field/field_placement.h"
 #include "core/field/height_map.h"
+#include "core/field/sparse_field.h"
 #include "core/field/vector_field.h"
 #include "core/obstacles/collision_shapes.h"
 #include "core/sim/particle_state.h"
@@ -52,12 +53,16 @@ struct alignas(16) SimBlock {
   glm::vec4 expression;      // x: simulated seconds before this step
   glm::ivec4 obstacleCount;  // x: how many of obstacles[] are in use
   ObstacleBlock obstacles[kMaxCollisionShapes];
+  // A sparse grid's index box widened to where every corner reads the
+  // background (FIELD_SPARSE programs; SparseField::sample).
+  glm::vec4 sparseIndexMin;
+  glm::vec4 sparseIndexMax;
 };
 
 static_assert(sizeof(EmitterBlock) == 80);
 static_assert(sizeof(ObstacleBlock) == 64);
 static_assert(sizeof(SimBlock) ==
-              16 * 16 + 80 * ParticleState::kMaxEmitters + 32 + 64 * kMaxCollisionShapes);
+              16 * 16 + 80 * ParticleState::kMaxEmitters + 32 + 64 * kMaxCollisionShapes + 32);
 
 // Newborn particles per emission slot (one geometry-shader invocation).
 inline constexpr int kEmissionSlotSize = 64;
@@ -65,6 +70,8 @@ inline constexpr int kEmissionSlotSize = 64;
 struct SimBlockInputs {
   const VectorField* field = nullptr;
   const VectorField* nextField = nullptr;
+  // A sparse grid read in place of `field` (whose bounds are its bounds).
+  const SparseField* sparse = nullptr;
   FieldPlacement placement;
   const HeightMap* terrain = nullptr;
   // The ground the helicopter's height is measured from, when `terrain` (what

@@ -8,9 +8,16 @@
 namespace sandstorm {
 namespace {
 
-void GLAPIENTRY onDebugMessage(GLenum, GLenum type, GLuint id, GLenum severity, GLsizei,
+void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum severity, GLsizei,
                                const GLchar* message, const void*) {
   if (severity == GL_DEBUG_SEVERITY_NOTIFICATION) return;
+  // A shader that fails to compile throws with its log (gl::Program); the
+  // compiler's warnings (a library's shared GLSL, PNanoVDB.h, has many) are
+  // for whoever debugs a shader.
+  if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) {
+    log::debug("GL (", id, "): ", message);
+    return;
+  }
   if (type == GL_DEBUG_TYPE_ERROR || severity == GL_DEBUG_SEVERITY_HIGH)
     log::error("GL (", id, "): ", message);
   else if (severity == GL_DEBUG_SEVERITY_MEDIUM)

@@ -40,6 +40,7 @@ void SliceRenderer::update(const ParticleState& state,
   PhysicsInputs in;
   in.field = field->field.get();
   in.nextField = field->next.get();
+  in.sparse = field->sparse.get();
   in.blend = blend;
   in.placement = field->placement;
   in.settings = state.sim;

@@ -67,4 +67,24 @@ FieldRange FieldRange::of(const VectorField& field, const glm::mat3& rotation,
   return r;
 }
 
+FieldRange FieldRange::of(const SparseField& field, const glm::mat3& rotation) {
+  FieldRange r;
+  r.minSpeed = std::numeric_limits<float>::max();
+  r.maxSpeed = 0.0f;
+  r.minVelocity = glm::vec3(std::numeric_limits<float>::max());
+  r.maxVelocity = glm::vec3(std::numeric_limits<float>::lowest());
+  bool any = false;
+  field.forEachActive([&](const glm::vec3& value, std::uint64_t) {
+    const glm::vec3 v = rotation * value;
+    if (!std::isfinite(v.x + v.y + v.z)) return;
+    const float speed = glm::length(v);
+    r.minSpeed = std::min(r.minSpeed, speed);
+    r.maxSpeed = std::max(r.maxSpeed, speed);
+    r.minVelocity = glm::min(r.minVelocity, v);
+    r.maxVelocity = glm::max(r.maxVelocity, v);
+    any = true;
+  });
+  return any ? r : FieldRange{};
+}
+
 }  // namespace sandstorm

@@ -9,6 +9,7 @@
 
 #include <glm/glm.hpp>
 
+#include "core/field/sparse_field.h"
 #include "core/field/vector_field.h"
 
 namespace sandstorm {
@@ -27,6 +28,8 @@ struct FieldRange {
   // (range 0..1).
   static FieldRange of(const VectorField& field, const glm::mat3& rotation = glm::mat3(1.0f),
                        const VectorField* colorGrid = nullptr);
+  // Over a sparse grid's active values (voxels and tiles).
+  static FieldRange of(const SparseField& field, const glm::mat3& rotation = glm::mat3(1.0f));
   bool operator==(const FieldRange&) const = default;
 };
 

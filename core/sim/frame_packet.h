@@ -13,6 +13,7 @@
 #include "core/field/field_equation.h"
 #include "core/field/field_placement.h"
 #include "core/field/field_range.h"
+#include "core/field/sparse_field.h"
 #include "core/field/vector_field.h"
 #include "core/sim/counter_rng.h"
 #include "core/sim/sim_step.h"
@@ -29,6 +30,10 @@ struct FieldUpdate {
   // An analytic field's equation (field.mode = equation evaluates it in place of
   // `field`, whose bounds still bound the particles), or null.
   std::shared_ptr<const FieldEquation> equation;
+  // A sparse grid (field.storage = sparse: core/field/sparse_field.h) read in
+  // place of `field`, which is its overview: a dense grid over the same
+  // bounds, for what needs one (bounds, colour grids). Null: `field` is the field.
+  std::shared_ptr<const SparseField> sparse;
   // `field`'s range of speed, velocity and the colour grid's values (the
   // colour scale's ends by default): computed once by the main context
   // (MainContext::setField and its timeline).

@@ -36,6 +36,13 @@ FieldUpdate withRange(FieldUpdate update, const ParticleState& state) {
     if (update.colorGrid) update.colorArray = *name;
   }
   update.range = FieldRange::of(*update.field, update.placement.rotation, update.colorGrid.get());
+  if (update.sparse) {
+    // The speeds the particles meet are the sparse grid's, not its overview's.
+    FieldRange r = FieldRange::of(*update.sparse, update.placement.rotation);
+    r.minScalar = update.range.minScalar;
+    r.maxScalar = update.range.maxScalar;
+    update.range = r;
+  }
   return update;
 }
 

@@ -106,6 +106,8 @@ glm::vec3 fieldAt(const glm::vec3& x, const PhysicsInputs& in, const glm::vec3& 
     glm::vec3 f;
     if (in.expression) {
       f = in.expression->evaluate(local, in.time, v, age);
+    } else if (in.sparse) {
+      f = in.sparse->sample(local);
     } else {
       f = in.field->sample(local);
       if (in.nextField) f = f + (in.nextField->sample(local) - f) * in.blend;

@@ -11,6 +11,7 @@
 #include "core/expr/field_expression.h"
 #include "core/field/field_placement.h"
 #include "core/field/height_map.h"
+#include "core/field/sparse_field.h"
 #include "core/field/vector_field.h"
 #include "core/obstacles/obstacle.h"
 #include "core/sim/counter_rng.h"
@@ -27,6 +28,9 @@ struct PhysicsInputs {
   // the field is field + (next - field) * blend.
   const VectorField* nextField = nullptr;
   float blend = 0.0f;
+  // A sparse grid sampled in place of `field` (whose bounds are its bounds
+  // and still bound the particles), or null.
+  const SparseField* sparse = nullptr;
   FieldPlacement placement;
   const HeightMap* terrain = nullptr;
   SimSettings settings;

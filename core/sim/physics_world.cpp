@@ -16,6 +16,7 @@ PhysicsInputs PhysicsWorld::inputs(const SimStep& step, const ParticleState& sta
   PhysicsInputs in;
   in.field = field_.get();
   in.nextField = next_.get();
+  in.sparse = field_ ? sparse_.get() : nullptr;
   in.blend = step.fieldBlend;
   in.placement = placement_;
   in.terrain = terrain_.get();

@@ -20,6 +20,8 @@ class PhysicsWorld {
  public:
   void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement = {},
                 std::shared_ptr<const VectorField> next = nullptr);
+  // A sparse grid sampled in place of the field (FieldUpdate::sparse); null: none.
+  void setSparse(std::shared_ptr<const SparseField> sparse) { sparse_ = std::move(sparse); }
   void setTerrain(std::shared_ptr<const HeightMap> terrain) { terrain_ = std::move(terrain); }
 
   // The inputs of one step; valid while this world and its field live.
@@ -27,6 +29,7 @@ class PhysicsWorld {
 
  private:
   std::shared_ptr<const VectorField> field_, next_;
+  std::shared_ptr<const SparseField> sparse_;
   FieldPlacement placement_;
   std::shared_ptr<const HeightMap> terrain_;
   std::shared_ptr<const FieldExpression> expression_;  // field.mode = expression's, compiled

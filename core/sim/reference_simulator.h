@@ -29,6 +29,8 @@ class ReferenceSimulator {
 
   void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement = {},
                 std::shared_ptr<const VectorField> next = nullptr);
+  // A sparse grid sampled in place of the field (whose bounds are its bounds).
+  void setSparse(std::shared_ptr<const SparseField> sparse) { world_.setSparse(std::move(sparse)); }
   void setTerrain(std::shared_ptr<const HeightMap> terrain);
   void step(const SimStep& step, const ParticleState& state);
   void clear();
