@@ -54,6 +54,13 @@ void FieldEditor::update(MainContext& main) {
   }
   if (!base_) {
     if (!current || !current->field) return;
+    if (current->sparse) {
+      log::warn(
+          "field editor: the field in use is a sparse grid; primitives are added to a dense "
+          "one (field.storage = \"dense\", or field = \"analytic\", name = \"still\")");
+      applied_ = active;  // said once per change
+      return;
+    }
     if (current->next) {
       log::warn(
           "field editor: the field in use changes with time; primitives are added to a "

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/io/field_format.h"
+#include "core/io/field_loader.h"
+#include "core/io/vdb_reader.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
 
@@ -98,6 +101,17 @@ Emitter seedingPlane(const VectorField& field, int maximum) {
   e.lifetimeVariance = 0.1f * e.lifetime;
   e.rate = float(maximum) / e.lifetime;  // the field holds `maximum` particles once filled
   return e;
+}
+
+VectorField fileSceneField(const std::filesystem::path& file, LoadOptions options) {
+  if (detectFieldFormat(file) == FieldFormat::OpenVdb) {
+    options.sparse = SparseChoice::Auto;
+    LoadReport report;
+    // As many points as the run's overview (scene_setup.cpp).
+    if (const auto sparse = readSparseVdb(file, options, report)) return sparse->overview(64);
+    options.sparse = SparseChoice::Never;
+  }
+  return loadField(file, options);
 }
 
 void openFileScene(AppConfig& config, const std::filesystem::path& file, const std::string& array,

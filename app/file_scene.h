@@ -13,6 +13,7 @@
 
 #include "core/config/app_config.h"
 #include "core/field/vector_field.h"
+#include "core/io/load_options.h"
 
 namespace sandstorm {
 
@@ -20,6 +21,11 @@ namespace sandstorm {
 // around `field`, loaded from `file`. `array`: the file's array or grid, as given.
 void openFileScene(AppConfig& config, const std::filesystem::path& file, const std::string& array,
                    const VectorField& field);
+
+// The field openFileScene frames, read from `file`: its grid, or, for an
+// OpenVDB grid that field.storage's default keeps sparse, a dense overview of
+// it (the run then loads the sparse grid itself).
+VectorField fileSceneField(const std::filesystem::path& file, LoadOptions options);
 
 // The emitter the file scene seeds with: exposed for tests.
 Emitter seedingPlane(const VectorField& field, int maximum);

@@ -211,7 +211,7 @@ int main(int argc, char** argv) {
           configOption->count() > 0 ? configPath : defaultConfig("desktop.toml").string());
       LoadOptions load;
       load.arrayName = arrayName;
-      openFileScene(config, fieldFile, arrayName, loadField(fieldFile, load));
+      openFileScene(config, fieldFile, arrayName, fileSceneField(fieldFile, load));
       App app(std::move(config), options);
       return app.run();
     }

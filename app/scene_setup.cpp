@@ -9,12 +9,16 @@
 #include "core/io/field_format.h"
 #include "core/io/field_loader.h"
 #include "core/io/series_index.h"
+#include "core/io/vdb_reader.h"
 #include "core/sim/main_context.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
 
 namespace sandstorm {
 namespace {
+
+// Points along an axis of a sparse grid's dense overview (FieldUpdate::sparse).
+constexpr int kSparseOverviewPoints = 64;
 
 // Config paths arrive resolved against their config file; menu choices against `baseDir`.
 std::filesystem::path resolve(const std::string& source, const std::filesystem::path& baseDir) {
@@ -117,6 +121,45 @@ FieldSource fileField(const std::filesystem::path& path, const FieldSpec& spec,
   return out;
 }
 
+// An OpenVDB grid kept sparse (field.storage), with a dense overview of it
+// for what needs a grid (bounds, colour grids); nullopt for other files, and
+// where field.storage = "auto" finds a dense grid as good.
+std::optional<FieldSource> sparseField(const std::filesystem::path& path, const FieldSpec& spec,
+                                       LoadOptions options) {
+  if (spec.storage == FieldSpec::Storage::Dense) return std::nullopt;
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec) || detectFieldFormat(path) != FieldFormat::OpenVdb) {
+    if (spec.storage == FieldSpec::Storage::Sparse)
+      throw Error(concat(path.string(),
+                         ": field.storage = \"sparse\" keeps OpenVDB (.vdb) grids sparse; this "
+                         "file is another format (field.storage = \"auto\" or \"dense\")"));
+    return std::nullopt;
+  }
+  if (spec.halfPrecision)
+    throw Error(concat(path.string(),
+                       ": field.precision = \"half\" is for dense grids; a sparse grid keeps "
+                       "floats (field.storage = \"dense\" for half precision)"));
+  options.sparse =
+      spec.storage == FieldSpec::Storage::Sparse ? SparseChoice::Always : SparseChoice::Auto;
+  LoadReport report;
+  std::optional<SparseField> sparse = readSparseVdb(path, options, report);
+  if (!sparse) return std::nullopt;
+  for (const std::string& note : report.notes)
+    log::info(path.string(), ": ", note);
+  FieldSource out;
+  auto shared = std::make_shared<const SparseField>(std::move(*sparse));
+  const glm::ivec3 top = shared->indexMax() - shared->indexMin() + 1;
+  out.description =
+      concat(path.string(), " (OpenVDB, '", report.arrayName,
+             "', sparse: ", shared->activeVoxelCount(), " active voxels of ", top.x, "x", top.y,
+             "x", top.z, ", ", formatByteSize(double(shared->byteSize())), ")");
+  out.update = FieldUpdate{
+      .field = std::make_shared<const VectorField>(shared->overview(kSparseOverviewPoints)),
+      .placement = spec.placement,
+      .sparse = shared};
+  return out;
+}
+
 }  // namespace
 
 FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDir) {
@@ -143,6 +186,8 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
     if (spec.watch || (std::filesystem::is_directory(path, ec) &&
                        detectFieldFormat(path) != FieldFormat::OpenFoam)) {
       out = watchedField(path, spec, options);
+    } else if (auto sparse = sparseField(path, spec, options)) {
+      out = std::move(*sparse);
     } else {
       out = fileField(path, spec, options);
     }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cstring>
 
 #include "core/color/color_grid.h"
 #include "core/sim/frame_packet_codec.h"
@@ -106,7 +107,7 @@ FrameBroadcaster::Message FrameBroadcaster::take(const std::string& what, bool p
     stats_.broadcastBytes += moved;
     stats_.broadcastSeconds += seconds;
     stats_.maxBroadcastSeconds = std::max(stats_.maxBroadcastSeconds, seconds);
-  } else if (m.kind == Kind::Grid) {
+  } else if (m.kind == Kind::Grid || m.kind == Kind::Sparse) {
     ++stats_.grids;
     stats_.gridBytes += moved;
     stats_.gridSeconds += seconds;
@@ -132,6 +133,17 @@ void FrameBroadcaster::send(const FramePacket& packet) {
     }
     const std::uint64_t used[2] = {refs.field, refs.next};
     store_.use(used, incoming);  // as every receiver will
+    if (const auto& sparse = packet.fieldUpdate->sparse) {
+      refs.sparse = sparseHash(*sparse);
+      if (refs.sparse != sparseHash_) {
+        ByteWriter w;
+        w.u64(refs.sparse);
+        w.raw(std::as_bytes(sparse->words()));
+        post(Kind::Sparse, w.bytes(), false);
+        sparseHash_ = refs.sparse;
+        sparse_ = sparse;
+      }
+    }
   }
   const std::vector<std::byte> bytes = encodePacket(packet, refs);
   post(Kind::Packet, bytes, true);
@@ -167,6 +179,22 @@ std::shared_ptr<const FramePacket> FrameBroadcaster::receive() {
                      " arrived (", encoded.size(), " bytes)");
           continue;
         }
+        case Kind::Sparse: {
+          ByteReader r(m.payload, "sparse field grid");
+          const std::uint64_t expected = r.u64("hash");
+          const std::span<const std::byte> bytes = r.raw(r.remaining(), "words");
+          const std::uint64_t got = fnv1a64(bytes);
+          if (got != expected || bytes.size() % 4 != 0)
+            throw Error(concat("a sparse field grid arrived damaged: hash ", std::hex, got,
+                               ", rank 0 sent ", expected));
+          std::vector<std::uint32_t> words(bytes.size() / 4);
+          std::memcpy(words.data(), bytes.data(), bytes.size());
+          sparse_ = std::make_shared<const SparseField>(std::move(words), "rank 0's sparse grid");
+          sparseHash_ = expected;
+          log::debug("rank ", mpi_.rank(), ": sparse field grid ", std::hex, expected, std::dec,
+                     " arrived (", bytes.size(), " bytes)");
+          continue;
+        }
         case Kind::Packet: {
           FieldRefs refs;
           auto packet = std::make_shared<FramePacket>(decodePacket(m.payload, &refs));
@@ -178,6 +206,12 @@ std::shared_ptr<const FramePacket> FrameBroadcaster::receive() {
                                .next = store_.find(refs.next),
                                .equation = packet->fieldUpdate->equation,
                                .range = packet->fieldUpdate->range};
+            if (refs.sparse != 0) {
+              if (refs.sparse != sparseHash_)
+                throw Error(concat("the packet of frame ", packet->frame, " names sparse grid ",
+                                   std::hex, refs.sparse, ", which did not arrive"));
+              update.sparse = sparse_;
+            }
             if (refs.colorGrid && update.field) {
               update.colorGrid = makeColorGrid(*update.field, *refs.colorGrid);
               if (update.next) update.nextColorGrid = makeColorGrid(*update.next, *refs.colorGrid);

@@ -7,7 +7,8 @@
 // broadcast; a longer payload (a field grid) follows in chunks of `chunkBytes`.
 // A grid travels once per change: rank 0 and every rank keep FieldStores that
 // agree, so a packet carries only the grids' hashes; every rank checks each
-// grid it receives against its hash.
+// grid it receives against its hash. A sparse grid (FieldUpdate::sparse)
+// travels as its NanoVDB words when it changes, checked the same way.
 #pragma once
 
 #include <cstddef>
@@ -58,7 +59,7 @@ class FrameBroadcaster {
   void corruptAt(int frame) { corruptFrame_ = frame; }
 
  private:
-  enum class Kind : std::uint8_t { Packet = 1, Grid = 2, Stop = 3, Hashes = 4 };
+  enum class Kind : std::uint8_t { Packet = 1, Grid = 2, Stop = 3, Hashes = 4, Sparse = 5 };
   struct Message {
     Kind kind;
     std::vector<std::byte> payload;
@@ -72,6 +73,10 @@ class FrameBroadcaster {
   std::size_t chunkBytes_;
   FieldStore store_;
   FieldStore::Grids incoming_;  // grids that arrived for the next packet
+  // The sparse grid (FieldUpdate::sparse) last sent or received, by its
+  // sparseHash: a steady grid travels once.
+  std::uint64_t sparseHash_ = 0;
+  std::shared_ptr<const SparseField> sparse_;
   std::uint32_t sequence_ = 0;
   std::uint32_t nextFrame_ = 0;  // for messages: the frame expected next
   Stats stats_;

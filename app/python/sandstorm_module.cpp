@@ -192,7 +192,7 @@ class Run {
       appConfig = loadConfig(config ? *config : defaultConfig("desktop.toml").string());
       LoadOptions load;
       if (array) load.arrayName = *array;
-      openFileScene(appConfig, path, array.value_or(""), loadField(path, load));
+      openFileScene(appConfig, path, array.value_or(""), fileSceneField(path, load));
     }
     run_ = std::make_unique<SteppedRun>(std::move(appConfig), std::move(options));
   }

@@ -142,6 +142,10 @@ struct FieldSpec {
   int readAhead = 2;
   // precision = "half": 16-bit floats on the GPU (VectorField::roundToHalf).
   bool halfPrecision = false;
+  // storage: how an OpenVDB grid is kept: "auto" sparse when its active
+  // voxels fill under half their box or a dense grid would not fit, "dense"
+  // densified over the box, "sparse" as NanoVDB (core/field/sparse_field.h).
+  enum class Storage { Auto, Dense, Sparse } storage = Storage::Auto;
 };
 
 // FieldSpec::memoryBudget, the automatic one worked out: half the host's

@@ -23,6 +23,15 @@
 
 namespace sandstorm {
 
+// Whether an OpenVDB grid is kept sparse (core/field/sparse_field.h) or
+// densified over its active voxels' box (field.storage).
+enum class SparseChoice {
+  Never,   // dense
+  Auto,    // sparse when its active voxels fill under half their box, or the
+           // dense grid would pass the memory budget, and it can be (below)
+  Always,  // sparse, or an error saying why it cannot be
+};
+
 struct LoadOptions {
   // The VTK array (point or cell data) or OpenVDB grid to load, or three
   // one-component arrays joined into a vector ("u,v,w"). Empty: the file's
@@ -45,6 +54,9 @@ struct LoadOptions {
   // field.precision = "half": the vectors rounded to 16-bit floats
   // (VectorField::roundToHalf), for a GPU that keeps them so.
   bool halfPrecision = false;
+  // A .vdb grid kept sparse (loadSparseField): an axis-aligned, not staggered
+  // grid at its own resolution, one time step.
+  SparseChoice sparse = SparseChoice::Never;
   // Long reads say how far they are in the log (bytes, rate, time left);
   // off for the steps a series reads in the background.
   bool showProgress = true;

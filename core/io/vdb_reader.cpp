@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <mutex>
 #include <optional>
 
@@ -9,6 +10,9 @@
 #include <openvdb/math/Maps.h>
 #include <openvdb/openvdb.h>
 #include <openvdb/tools/Interpolation.h>
+
+#include <nanovdb/NanoVDB.h>
+#include <nanovdb/util/OpenToNanoVDB.h>
 
 #include "core/io/vdb_file_check.h"
 #include "core/util/error.h"
@@ -253,7 +257,105 @@ void addScalarGrids(const std::filesystem::path& path, const std::vector<VdbGrid
   }
 }
 
+// Bytes NanoVDB takes for a Vec3f tree of these node counts (leaf, lower, upper).
+double nanoBytes(const std::vector<openvdb::Index32>& nodes, std::size_t rootTiles) {
+  using Leaf = nanovdb::NanoLeaf<nanovdb::Vec3f>;
+  using Lower = nanovdb::NanoLower<nanovdb::Vec3f>;
+  using Upper = nanovdb::NanoUpper<nanovdb::Vec3f>;
+  using Root = nanovdb::NanoRoot<nanovdb::Vec3f>;
+  return double(sizeof(nanovdb::GridData)) + double(sizeof(nanovdb::TreeData<3>)) +
+         double(Root::memUsage(std::uint32_t(rootTiles))) +
+         double(nodes[2]) * double(sizeof(typename Upper::DataType)) +
+         double(nodes[1]) * double(sizeof(typename Lower::DataType)) +
+         double(nodes[0]) * double(sizeof(typename Leaf::DataType));
+}
+
 }  // namespace
+
+std::optional<SparseField> readSparseVdb(const std::filesystem::path& path,
+                                         const LoadOptions& options, LoadReport& report) {
+  if (options.sparse == SparseChoice::Never) return std::nullopt;
+  initializeOpenVdb();
+  const std::string file = path.string();
+  const bool must = options.sparse == SparseChoice::Always;
+  const auto cannot = [&](const std::string& why) -> std::optional<SparseField> {
+    if (must)
+      throw Error(concat(file, ": cannot keep the grid sparse (field.storage = \"sparse\"): ", why,
+                         "; field.storage = \"dense\" densifies it"));
+    return std::nullopt;
+  };
+  if (options.resolution != glm::ivec3(0))
+    return cannot("field.resolution resamples it onto a dense grid");
+  const std::vector<VdbGridEntry> grids = checkVdbFile(path);
+  const std::string name = chooseGrid(grids, file, options);
+  for (std::size_t i = 0; i < grids.size(); ++i)
+    if (grids[i].name == name) checkVdbGrid(path, grids, i, options.memoryBudget);
+  const openvdb::GridBase::Ptr base = readGrid(file, name);
+  openvdb::Vec3SGrid::Ptr grid = openvdb::gridPtrCast<openvdb::Vec3SGrid>(base);
+  if (!grid) {
+    const openvdb::Vec3DGrid::Ptr d = openvdb::gridPtrCast<openvdb::Vec3DGrid>(base);
+    if (!d)
+      throw Error(concat(file, ": grid '", name, "' is a ", base ? base->type() : "null",
+                         " grid; expected a Vec3 grid (vec3s or vec3d)"));
+    // NanoVDB's reader on the GPU takes floats: the doubles rounded once.
+    const openvdb::Vec3d bg = d->background();
+    grid = openvdb::Vec3SGrid::create(openvdb::Vec3s(float(bg.x()), float(bg.y()), float(bg.z())));
+    auto out = grid->getAccessor();
+    for (auto it = d->tree().cbeginValueOn(); it; ++it) {
+      const openvdb::Vec3d v = *it;
+      const openvdb::Vec3s f(float(v.x()), float(v.y()), float(v.z()));
+      if (it.isVoxelValue())
+        out.setValueOn(it.getCoord(), f);
+      else
+        grid->tree().fill(it.getBoundingBox(), f, true);  // a tile stays a tile
+    }
+    grid->setTransform(d->transform().copy());
+    grid->setGridClass(d->getGridClass());
+    grid->setName(d->getName());
+  }
+  if (!axisAligned(grid->transform())) return cannot("its transform is rotated or not linear");
+  if (grid->getGridClass() == openvdb::GRID_STAGGERED)
+    return cannot("it is a staggered (MAC) grid, whose faces are averaged to centres densely");
+  const openvdb::CoordBBox bbox = grid->evalActiveVoxelBoundingBox();
+  if (bbox.empty()) throw Error(concat(file, ": grid '", name, "' has no active voxels"));
+  const double active = double(grid->activeVoxelCount());
+  const openvdb::Coord extent = bbox.dim();
+  const double box = double(extent.x()) * extent.y() * extent.z();
+  const double sparseBytes =
+      nanoBytes(grid->tree().nodeCount(), grid->tree().root().getTableSize());
+  if (sparseBytes > double(options.memoryBudget))
+    throw Error(concat(file, ": grid '", name, "' as a sparse grid (", active,
+                       " active voxels) takes ", sparseBytes,
+                       " bytes, beyond the memory budget (field.memory_budget) of ",
+                       options.memoryBudget, " bytes; raise field.memory_budget"));
+  if (!must && active >= 0.5 * box && 12.0 * box <= double(options.memoryBudget))
+    return std::nullopt;  // dense enough: a dense grid reads faster
+  report.arrayName = name;
+  report.sourceDims = glm::ivec3(extent.x(), extent.y(), extent.z());
+  for (const VdbGridEntry& g : grids)
+    report.available.push_back(concat(g.name, " (", valueType(g.type), " grid)"));
+  // NaN and Inf would travel into every sample near them: zero, as densifying does.
+  std::size_t nonFinite = 0;
+  for (auto it = grid->beginValueOn(); it; ++it) {
+    const openvdb::Vec3s v = *it;
+    if (!std::isfinite(v.x()) || !std::isfinite(v.y()) || !std::isfinite(v.z())) {
+      it.setValue(openvdb::Vec3s(0.0f));
+      ++nonFinite;
+    }
+  }
+  report.nonFinite += nonFinite;
+  if (nonFinite > 0)
+    log::warn(file, ": ", nonFinite, " vectors of grid '", name,
+              "' are NaN or Inf; replaced by zero");
+  const nanovdb::GridHandle<nanovdb::HostBuffer> handle = nanovdb::openToNanoVDB(*grid);
+  std::vector<std::uint32_t> words((handle.size() + 3) / 4, 0u);
+  std::memcpy(words.data(), handle.data(), handle.size());
+  report.notes.push_back(concat("kept sparse: ", active, " active voxels in a box of ", extent.x(),
+                                "x", extent.y(), "x", extent.z(), " (", 100.0 * active / box,
+                                "% filled), ", handle.size(), " bytes (a dense grid: ", 12.0 * box,
+                                ")"));
+  return SparseField(std::move(words), file);
+}
 
 void initializeOpenVdb() {
   static std::once_flag once;

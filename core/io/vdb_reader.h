@@ -20,6 +20,9 @@
 
 #include <filesystem>
 
+#include <optional>
+
+#include "core/field/sparse_field.h"
 #include "core/field/vector_field.h"
 #include "core/io/load_options.h"
 
@@ -27,6 +30,15 @@ namespace sandstorm {
 
 VectorField readVdb(const std::filesystem::path& path, const LoadOptions& options,
                     LoadReport& report);
+
+// The grid readVdb() would densify, kept sparse as NanoVDB converts it
+// (nanovdb::openToNanoVDB; a vec3d grid rounded to floats first), when
+// options.sparse asks for it and the grid can be (axis-aligned, not staggered,
+// options.resolution zero); nullopt when options.sparse is Auto and a dense
+// grid serves as well. Throws Error when Always cannot be met, or the sparse
+// grid would pass options.memoryBudget (checked before it is built).
+std::optional<SparseField> readSparseVdb(const std::filesystem::path& path,
+                                         const LoadOptions& options, LoadReport& report);
 
 // Calls openvdb::initialize() once (thread-safe). readVdb and writeVdb call it.
 void initializeOpenVdb();

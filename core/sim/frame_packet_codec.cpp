@@ -16,7 +16,7 @@ constexpr std::uint32_t kPacketMagic = 0x50465353;  // "SSFP"
 constexpr std::uint32_t kFieldMagic = 0x46565353;   // "SSVF"
 // 2: equation terms, lod scale; 3: tracking, wand ray; 4: grid validity;
 // 5: field range; 6: vorticity; 7: colour grids by name, grids' scalar arrays.
-constexpr std::uint16_t kVersion = 10;
+constexpr std::uint16_t kVersion = 11;
 constexpr std::uint32_t kMaxScalarArrays = 256;
 
 // Limits far above any real packet, so a corrupt count cannot make us allocate gigabytes.
@@ -257,6 +257,10 @@ std::uint64_t fieldHash(const VectorField& grid) {
   return fnv1a64(encodeField(grid));
 }
 
+std::uint64_t sparseHash(const SparseField& grid) {
+  return fnv1a64(std::as_bytes(grid.words()));
+}
+
 std::vector<std::byte> encodeField(const VectorField& grid) {
   ByteWriter w;
   w.u32(kFieldMagic);
@@ -381,6 +385,7 @@ std::vector<std::byte> encodePacket(const FramePacket& p, const FieldRefs& refs)
   if (p.fieldUpdate) {
     w.u64(refs.field);
     w.u64(refs.next);
+    w.u64(refs.sparse);
     placement(w, p.fieldUpdate->placement);
     const FieldRange& range = p.fieldUpdate->range;
     w.f32(range.minSpeed);
@@ -448,6 +453,7 @@ FramePacket decodePacket(std::span<const std::byte> bytes, FieldRefs* refs) {
   if (r.boolean("field update")) {
     found.field = r.u64("field hash");
     found.next = r.u64("next field hash");
+    found.sparse = r.u64("sparse field hash");
     FieldUpdate update{.placement = placement(r)};
     update.range.minSpeed = r.f32("field range min speed");
     update.range.maxSpeed = r.f32("field range max speed");

@@ -32,6 +32,7 @@ namespace sandstorm {
 struct FieldRefs {
   std::uint64_t field = 0;
   std::uint64_t next = 0;
+  std::uint64_t sparse = 0;  // sparseHash of FieldUpdate::sparse; 0: none
   // The update carries colour grids (when encoding, this or the update's own
   // grid says so), named as colorGridName does ("" vorticity, else a scalar
   // array): the receiver makes them again from the grids (makeColorGrid is
@@ -41,6 +42,9 @@ struct FieldRefs {
 
 // FNV-1a of the grid's encoding (bounds, dims, values): the grid's identity on the wire.
 std::uint64_t fieldHash(const VectorField& grid);
+// FNV-1a of a sparse grid's words: its identity on the wire (they travel as
+// they are; the receiver checks them as SparseField's constructor does).
+std::uint64_t sparseHash(const SparseField& grid);
 
 std::vector<std::byte> encodeField(const VectorField& grid);
 // Throws Error for a malformed or truncated grid; `name` goes into the message.
