@@ -13,6 +13,8 @@ SceneField::SceneField() : block_(gl::createBuffer()) {
 void SceneField::set(const ParticleState& state, const FieldUpdate& field, float blend, float dt,
                      const HeightMap* ground) {
   environment_.setField(field.field, field.placement, field.next);
+  environment_.setSparse(field.sparse);
+  sparse_ = field.field && field.sparse;
   SimBlockInputs inputs;
   environment_.describe(inputs);
   inputs.state = &state;

@@ -1,5 +1,6 @@
 // SceneField: the field as the scene's own passes read it (streamlines, the
-// slice): a copy of the grid on the GPU (a 3D texture, ParticleEnvironment)
+// slice): a copy of the grid on the GPU (a 3D texture, or a sparse grid's
+// words: ParticleEnvironment)
 // and a SimBlock describing it (placement, strength, blend, integrator), so
 // their shaders sample it with particle_physics.glsl's fieldAt(), the
 // particles' very function. Independent of the particle backend and of a
@@ -28,6 +29,8 @@ class SceneField {
   // The solids the last set() placed in the flow (collisionShapes).
   const std::vector<Obstacle>& obstacles() const { return obstacles_; }
   bool has() const { return has_; }
+  // Whether the field is a sparse grid its passes sample (SceneFieldProgram).
+  bool sparse() const { return sparse_; }
   // The field's colour grids (FieldUpdate::colorGrid), when it has them, on
   // texture units 5 (current) and 6 (next): shaders/render_block.glsl's colorGridAt().
   void bindColorGrid() const;
@@ -52,6 +55,7 @@ class SceneField {
   gl::Buffer block_;
   GpuField colorGrid_{GpuField::Storage::Texture}, nextColorGrid_{GpuField::Storage::Texture};
   bool has_ = false;
+  bool sparse_ = false;
 };
 
 }  // namespace sandstorm

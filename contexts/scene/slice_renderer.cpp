@@ -9,7 +9,7 @@ namespace sandstorm {
 
 SliceRenderer::SliceRenderer(SceneField& field)
     : field_(field),
-      program_(std::vector<std::string>{"slice.vert", "slice.frag"}, {"OBSTACLES"}),
+      program_({"slice.vert", "slice.frag"}, {"OBSTACLES"}),
       arrowProgram_(std::vector<std::string>{"slice_arrows.vert", "slice_arrows.frag"}),
       emptyVao_(gl::createVertexArray()),
       arrowVao_(gl::createVertexArray()) {}
@@ -66,13 +66,14 @@ void SliceRenderer::update(const ParticleState& state,
 void SliceRenderer::draw() const {
   if (polygon_.size() < 3 || !field_.has()) return;
   const SceneField::Binding binding(field_, state_);
-  program_.use();
+  const gl::Program& program = program_.get(field_);
+  program.use();
   glm::vec4 corners[6]{};
   for (std::size_t i = 0; i < polygon_.size() && i < 6; ++i)
     corners[i] = glm::vec4(polygon_[i], 1.0f);
-  glProgramUniform4fv(program_.id(), 0, 6, &corners[0].x);
+  glProgramUniform4fv(program.id(), 0, 6, &corners[0].x);
   const float opacity = state_.slice.opacity;
-  glProgramUniform1f(program_.id(), 6, opacity);
+  glProgramUniform1f(program.id(), 6, opacity);
   const bool blend = opacity < 1.0f;
   if (blend) {
     glEnable(GL_BLEND);

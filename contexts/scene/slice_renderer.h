@@ -13,6 +13,7 @@
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
 #include "contexts/scene/scene_field.h"
+#include "contexts/scene/scene_field_program.h"
 
 namespace sandstorm {
 
@@ -28,7 +29,8 @@ class SliceRenderer {
 
  private:
   SceneField& field_;
-  gl::Program program_, arrowProgram_;
+  SceneFieldProgram program_;
+  gl::Program arrowProgram_;
   gl::VertexArray emptyVao_, arrowVao_;
   gl::Buffer arrowLines_;
   std::size_t arrowCapacity_ = 0;  // points the buffer holds

@@ -8,7 +8,7 @@ namespace sandstorm {
 
 StreaklineRenderer::StreaklineRenderer(SceneField& field)
     : field_(field),
-      update_(std::vector<std::string>{"streak_update.comp"}, {"OBSTACLES"}),
+      update_({"streak_update.comp"}, {"OBSTACLES"}),
       draw_(std::vector<std::string>{"streakline.vert", "streakline.frag"}),
       emptyVao_(gl::createVertexArray()) {}
 
@@ -34,10 +34,11 @@ void StreaklineRenderer::update(const ParticleState& state, float dt, bool reset
     if (streaks(state.emitters[e])) releasing |= 1u << e;
   const SceneField::Binding binding(field_, state);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 11, ring_.id());
-  update_.use();
-  glProgramUniform1i(update_.id(), 0, length_);
-  glProgramUniform1i(update_.id(), 1, head_);
-  glProgramUniform1ui(update_.id(), 2, releasing);
+  const gl::Program& update = update_.get(field_);
+  update.use();
+  glProgramUniform1i(update.id(), 0, length_);
+  glProgramUniform1i(update.id(), 1, head_);
+  glProgramUniform1ui(update.id(), 2, releasing);
   glDispatchCompute(GLuint((ParticleState::kMaxEmitters * length_ + 63) / 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }

@@ -9,6 +9,7 @@
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
 #include "contexts/scene/scene_field.h"
+#include "contexts/scene/scene_field_program.h"
 #include "core/flow/streaklines.h"
 
 namespace sandstorm {
@@ -25,7 +26,8 @@ class StreaklineRenderer {
 
  private:
   SceneField& field_;
-  gl::Program update_, draw_;
+  SceneFieldProgram update_;
+  gl::Program draw_;
   gl::VertexArray emptyVao_;
   gl::Buffer ring_;
   int length_ = 0, head_ = 0;

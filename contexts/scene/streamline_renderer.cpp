@@ -28,7 +28,7 @@ bool StreamlineRenderer::Key::operator==(const Key& o) const {
 }
 
 StreamlineRenderer::StreamlineRenderer(SceneField& field)
-    : trace_(std::vector<std::string>{"streamline_trace.comp"}, {"OBSTACLES"}),
+    : trace_({"streamline_trace.comp"}, {"OBSTACLES"}),
       ribbons_(std::vector<std::string>{"streamline.vert", "streamline.geom", "streamline.frag"}),
       lines_(std::vector<std::string>{"streamline.vert", "streamline.frag"}, {"LINES"}),
       emptyVao_(gl::createVertexArray()),
@@ -66,14 +66,15 @@ void StreamlineRenderer::trace(const ParticleState& state) {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, seeds_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 4, points_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 5, counts_.id());
-  trace_.use();
-  glProgramUniform1ui(trace_.id(), 0, GLuint(lineCount_));
-  glProgramUniform1i(trace_.id(), 1, steps_);
-  glProgramUniform1f(trace_.id(), 2, state.streamlines.step);
-  glProgramUniform1i(trace_.id(), 3, int(state.streamlines.integrator));
-  glProgramUniform1f(trace_.id(), 4, state.streamlines.tolerance);
-  glProgramUniform1f(trace_.id(), 5, state.streamlines.length);
-  glProgramUniform1fv(trace_.id(), 6, GLsizei(kCashKarp.size()), kCashKarp.data());
+  const gl::Program& trace = trace_.get(field_);
+  trace.use();
+  glProgramUniform1ui(trace.id(), 0, GLuint(lineCount_));
+  glProgramUniform1i(trace.id(), 1, steps_);
+  glProgramUniform1f(trace.id(), 2, state.streamlines.step);
+  glProgramUniform1i(trace.id(), 3, int(state.streamlines.integrator));
+  glProgramUniform1f(trace.id(), 4, state.streamlines.tolerance);
+  glProgramUniform1f(trace.id(), 5, state.streamlines.length);
+  glProgramUniform1fv(trace.id(), 6, GLsizei(kCashKarp.size()), kCashKarp.data());
   glDispatchCompute(GLuint((lineCount_ + 63) / 64), 1, 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 }

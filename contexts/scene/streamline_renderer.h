@@ -15,6 +15,7 @@
 #include "contexts/gl/objects.h"
 #include "contexts/gl/program.h"
 #include "contexts/scene/scene_field.h"
+#include "contexts/scene/scene_field_program.h"
 #include "core/flow/streamline_tracer.h"
 #include "core/sim/frame_packet.h"
 
@@ -44,7 +45,8 @@ class StreamlineRenderer {
   };
   void trace(const ParticleState& state);
 
-  gl::Program trace_, ribbons_, lines_;
+  SceneFieldProgram trace_;
+  gl::Program ribbons_, lines_;
   gl::VertexArray emptyVao_;
   SceneField& field_;
   gl::Buffer seeds_, points_, counts_;
