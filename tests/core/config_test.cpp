@@ -210,6 +210,13 @@ TEST(Config, TheFieldsMemoryBudgetIsASizeOrAutomatic) {
       parseConfig("[field]\nprecision = \"half\"\n" + kWall, "test.toml").field.halfPrecision);
   EXPECT_ERROR("[field]\nprecision = \"double\"\n" + kWall, "test.toml:2", "field.precision",
                "float, half");
+  EXPECT_EQ(parseConfig(kWall, "test.toml").field.storage, FieldSpec::Storage::Auto);
+  EXPECT_EQ(parseConfig("[field]\nstorage = \"sparse\"\n" + kWall, "test.toml").field.storage,
+            FieldSpec::Storage::Sparse);
+  EXPECT_EQ(parseConfig("[field]\nstorage = \"dense\"\n" + kWall, "test.toml").field.storage,
+            FieldSpec::Storage::Dense);
+  EXPECT_ERROR("[field]\nstorage = \"nano\"\n" + kWall, "test.toml:2", "field.storage",
+               "auto, dense, sparse");
 }
 
 TEST(Config, ReadsAndChecksGpuTuning) {

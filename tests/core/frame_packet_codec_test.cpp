@@ -130,7 +130,8 @@ void expectSameEmitter(const Emitter& a, const Emitter& b) {
 TEST(FramePacketCodec, EveryMemberSurvivesARoundTrip) {
   const FramePacket p = fullPacket();
   FieldStore store;
-  const FieldRefs refs{store.identify(p.fieldUpdate->field), store.identify(p.fieldUpdate->next)};
+  const FieldRefs refs{store.identify(p.fieldUpdate->field), store.identify(p.fieldUpdate->next),
+                       0x5eed5a1234ull};
   FieldRefs got;
   const FramePacket q = decodePacket(encodePacket(p, refs), &got);
   EXPECT_EQ(q.frame, p.frame);
@@ -155,6 +156,7 @@ TEST(FramePacketCodec, EveryMemberSurvivesARoundTrip) {
   ASSERT_TRUE(q.fieldUpdate);
   EXPECT_EQ(got.field, refs.field);
   EXPECT_EQ(got.next, refs.next);
+  EXPECT_EQ(got.sparse, refs.sparse);  // a sparse grid's hash; its words travel apart
   EXPECT_NE(got.field, got.next);
   EXPECT_EQ(got.colorGrid, std::optional<std::string>("pressure"));  // the receiver makes it
   EXPECT_FALSE(q.fieldUpdate->field);                                // grids travel apart
@@ -307,7 +309,7 @@ TEST(FramePacketCodec, CorruptBuffersAreClearErrors) {
     return b;
   };
   expectError(with(0, 'X'), true, "not a frame packet");
-  expectError(with(4, 11), true, "version 11");
+  expectError(with(4, 12), true, "version 12");
   expectError(with(42, 7), true, "reset");  // the reset flag: 0 or 1
   expectError(with(46, 0xff), true,
               "change count");  // a huge count is refused before any allocation

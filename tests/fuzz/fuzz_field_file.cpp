@@ -5,6 +5,7 @@
 #include <string_view>
 
 #include "core/io/field_loader.h"
+#include "core/io/vdb_reader.h"
 #include "core/io/vtk_message_trap.h"
 #include "core/util/error.h"
 #include "tests/fuzz/fuzz_input.h"
@@ -32,6 +33,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     loadField(path, options);
   } catch (const Error&) {
+  }
+  // An OpenVDB grid kept sparse: NanoVDB's conversion and SparseField's check.
+  if (std::string_view(SANDSTORM_FUZZ_EXTENSION) == ".vdb") {
+    options.sparse = SparseChoice::Always;
+    LoadReport report;
+    try {
+      readSparseVdb(path, options, report);
+    } catch (const Error&) {
+    }
   }
   return 0;
 }

@@ -3,6 +3,8 @@
 // session log and packet codecs, the height-map writer), VTK's writers for
 // the VTK formats Sandstorm only reads, the bundled configurations and
 // sample data, and small hand-made engine files. Run by scripts/fuzz.
+#include <nanovdb/util/GridBuilder.h>
+
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkEnSightWriter.h>
@@ -385,6 +387,14 @@ int main(int argc, char** argv) {
   const std::vector<std::byte> field = encodeField(small);
   text(out / "fuzz_cluster_packet" / "field.bin",
        std::string(reinterpret_cast<const char*>(field.data()), field.size()));
+  // A sparse grid's words, as they travel to ranks (NanoVDB's own builder).
+  nanovdb::GridBuilder<nanovdb::Vec3f> builder(nanovdb::Vec3f(0.0f));
+  auto voxels = builder.getAccessor();
+  for (int i = 0; i < 10; ++i)
+    voxels.setValue(nanovdb::Coord(i, 2 * i, 700 - i), nanovdb::Vec3f(float(i), 1.0f, -2.0f));
+  const auto grid = builder.getHandle<>(0.5, nanovdb::Vec3d(1.0, 2.0, 3.0), "v");
+  text(out / "fuzz_cluster_packet" / "sparse.bin",
+       std::string(reinterpret_cast<const char*>(grid.data()), grid.size()));
   const TrackerScript walk = TrackerScript::builtIn();
   text(out / "fuzz_dtrack" / "frame.txt", writeDTrack(walk.at(2.0, 17)));
   text(out / "fuzz_dtrack" / "old.txt", writeDTrack(walk.at(3.0, 18), FlystickFormat::V1));
