@@ -11,6 +11,8 @@
 #include <set>
 #include <sstream>
 
+#include "core/field/vortex_field.h"
+#include "core/io/field_writer.h"
 #include "tests/app/run_process.h"
 
 namespace sandstorm {
@@ -245,6 +247,35 @@ TEST(Identity, TheFieldEditorsPrimitivesReachEveryWallAtTheSameFrame) {
   const auto plain = sameOnEveryWall(dir / "without.txt", 90);
   EXPECT_EQ(plain.at(20), floor[20]);  // the vortex takes effect from frame 21's field
   EXPECT_NE(plain.at(89), floor[89]);
+}
+
+// The tornado as an OpenVDB grid kept sparse (field.storage = "sparse": its
+// NanoVDB words on every GPU): the same particles on four walls on their
+// threads and on one wall alone in its process, every frame.
+TEST(Identity, ASparseGridMovesTheSameParticlesOnEveryWall) {
+  const auto dir = test::scratchDir("sparse-identity");
+  VortexParams vp;
+  vp.range = 5.0f;
+  vp.height = 9.0f;
+  saveField(dir / "tornado.vdb", bake(VortexField(vp), Box{{-6, -6, 0}, {6, 6, 10}}, {49, 49, 41}),
+            "velocity");
+  {
+    std::ofstream config(dir / "sparse.toml");
+    config << "include = \"" << SANDSTORM_SOURCE_DIR << "/tests/data/identity.toml\"\n"
+           << "[field]\nsource = \"tornado.vdb\"\nname = \"velocity\"\nstorage = \"sparse\"\n";
+  }
+  const std::string run = "--config " + (dir / "sparse.toml").string() + " --frames 90 --hash-log ";
+  const auto threads = runSandstorm(run + (dir / "threads.txt").string());
+  const auto alone = runSandstorm(run + (dir / "alone.txt").string() + " --walls floor");
+  for (const auto* r : {&threads, &alone})
+    ASSERT_EQ(r->exitCode, 0) << r->output;
+  EXPECT_NE(threads.output.find("sparse: "), std::string::npos) << threads.output;
+  auto floor = sameOnEveryWall(dir / "threads.txt", 90);
+  for (const HashLine& h : readHashes(dir / "alone.txt"))
+    EXPECT_EQ(h.hash, floor[h.frame]) << "frame " << h.frame;
+  const std::vector<HashLine> lines = readHashes(dir / "threads.txt");
+  ASSERT_FALSE(lines.empty());
+  EXPECT_GT(lines.back().count, 3000u);
 }
 
 // Molecules beside the particles, changed mid-run (a new shape, the push
