@@ -1,7 +1,10 @@
-// GpuSparseField: a SparseField's NanoVDB words in a shader storage buffer,
-// read by FIELD_SPARSE programs (shaders/field_sparse.glsl) at binding 14, the
-// binding a dense grid's buffer takes in the programs that read one. Needs its
-// GL context current for every call.
+// GpuSparseField: a SparseField's NanoVDB words in shader storage buffers,
+// read by FIELD_SPARSE programs (shaders/field_sparse.glsl) at bindings 14 and
+// 15 (the bindings a dense grid's buffers take in the programs that read
+// one): the words below 2 GiB in the first, the rest in the second, so a
+// sparse grid may take up to 4 GiB (NanoVDB's GLSL addresses bytes with 32
+// bits) where one buffer holds 2 GiB (NVIDIA). Needs its GL context current
+// for every call.
 #pragma once
 
 #include <memory>
@@ -14,15 +17,15 @@ namespace sandstorm {
 class GpuSparseField {
  public:
   // Uploads a grid it does not hold yet; null drops it. Throws Error naming
-  // the sizes when the grid passes the GPU's storage-buffer limit
-  // (GL_MAX_SHADER_STORAGE_BLOCK_SIZE) or its memory.
+  // the sizes when the grid passes what two storage buffers hold
+  // (GL_MAX_SHADER_STORAGE_BLOCK_SIZE each, 4 GiB in all) or the GPU's memory.
   void show(std::shared_ptr<const SparseField> field);
   const std::shared_ptr<const SparseField>& holds() const { return holds_; }
   void bind() const;
 
  private:
   std::shared_ptr<const SparseField> holds_;
-  gl::Buffer buffer_;
+  gl::Buffer low_, high_;
 };
 
 }  // namespace sandstorm
