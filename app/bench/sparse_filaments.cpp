@@ -6,9 +6,12 @@
 // tube's) and rises; outside the tubes the grid is its background, zero.
 //
 //   sandstorm-filaments OUT.vdb [--voxels 1e8] [--box 4096] [--radius 12]
-//                       [--bounds -6 -6 0 6 6 10]
+//                       [--bounds -6 -6 0 6 6 10] [--emitters FILE.toml RATE]
 //
-// Prints the tubes, the active voxels and the time taken.
+// --emitters writes a configuration's [[emitter]] tables: a disc at the foot
+// of each of the first 16 tubes, as wide as the tube, RATE particles a second
+// in all, so that particles rise through the active voxels rather than sit in
+// the background. Prints the tubes, the active voxels and the time taken.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -59,6 +62,8 @@ int main(int argc, char** argv) {
   const std::string out = argv[1];
   double voxels = 1e8, box = 4096, radius = 12;
   double bounds[6] = {-6, -6, 0, 6, 6, 10};
+  std::string emitters;
+  double rate = 0.0;
   for (int i = 2; i < argc; ++i) {
     const std::string a = argv[i];
     if (a == "--voxels")
@@ -67,7 +72,11 @@ int main(int argc, char** argv) {
       box = number(i, argc, argv, "--box", 8, 1 << 20);
     else if (a == "--radius")
       radius = number(i, argc, argv, "--radius", 1, 1000);
-    else if (a == "--bounds")
+    else if (a == "--emitters") {
+      if (++i >= argc) usage("--emitters needs a file and a rate");
+      emitters = argv[i];
+      rate = number(i, argc, argv, "--emitters RATE", 1, 1e9);
+    } else if (a == "--bounds")
       for (double& b : bounds)
         b = number(i, argc, argv, "--bounds", -1e6, 1e6);
     else
@@ -90,9 +99,19 @@ int main(int argc, char** argv) {
   const int tubes = std::max(1, int(std::ceil(voxels / perTube)));
   const double core = radius / 3.0;
   auto acc = grid->getAccessor();
+  std::FILE* emitterFile = emitters.empty() ? nullptr : std::fopen(emitters.c_str(), "w");
+  if (!emitters.empty() && !emitterFile) usage(("cannot write " + emitters).c_str());
+  const int feet = std::min(tubes, 16);
   for (int t = 0; t < tubes; ++t) {
     const int cx = r + int(hash01(2u * t) * (n - 2 * r - 1));
     const int cy = r + int(hash01(2u * t + 1) * (n - 2 * r - 1));
+    if (emitterFile && t < feet)
+      std::fprintf(emitterFile,
+                   "[[emitter]]\nshape = \"disc\"\nposition = [%.6f, %.6f, %.6f]\nradius = %.6f\n"
+                   "rate = %.1f\nlifetime = 5.0\nlifetime_variance = 1.0\nvelocity = [0.0, 0.0, "
+                   "0.5]\nspread = 0.2\n\n",
+                   bounds[0] + cx * voxel.x(), bounds[1] + cy * voxel.y(), bounds[2] + 0.05,
+                   0.8 * radius * std::min(voxel.x(), voxel.y()), rate / feet);
     const double spin = (t % 2 ? 1.0 : -1.0) * 4.0;  // m/s at the core's edge
     for (int k = 0; k < n; ++k)
       for (int j = -r; j <= r; ++j)
@@ -109,6 +128,7 @@ int main(int argc, char** argv) {
                          openvdb::Vec3s(float(ux), float(uy), float(up)));
         }
   }
+  if (emitterFile) std::fclose(emitterFile);
   openvdb::io::File file(out);
   file.setCompression(openvdb::io::COMPRESS_ACTIVE_MASK);  // no zip: reads at disk speed
   file.write({grid});
