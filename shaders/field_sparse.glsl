@@ -38,12 +38,6 @@ vec3 sparseValue(pnanovdb_buf_t buf, pnanovdb_address_t a) {
               pnanovdb_read_float(buf, pnanovdb_address_offset(a, 8u)));
 }
 
-// The accessor's cache of the nodes last walked, kept for the invocation's
-// every sample: an integrator's later stages, and the particles an
-// invocation takes after its first, mostly fall in the leaf already found.
-pnanovdb_readaccessor_t gSparseAccessor;
-bool gSparseAccessorReady = false;
-
 vec3 sparseSample(vec3 p) {
   precise vec3 u = clamp((p - sim.fieldMin.xyz) * sim.fieldIndexScale.xyz, sim.sparseIndexMin.xyz,
                          sim.sparseIndexMax.xyz);
@@ -51,13 +45,10 @@ vec3 sparseSample(vec3 p) {
   precise vec3 f = u - vec3(i0);
   pnanovdb_buf_t buf;
   buf.unused = 0u;
-  if (!gSparseAccessorReady) {
-    pnanovdb_grid_handle_t grid;
-    grid.address.byte_offset = 0u;
-    pnanovdb_readaccessor_init(gSparseAccessor,
-                               pnanovdb_tree_get_root(buf, pnanovdb_grid_get_tree(buf, grid)));
-    gSparseAccessorReady = true;
-  }
+  pnanovdb_grid_handle_t grid;
+  grid.address.byte_offset = 0u;
+  pnanovdb_readaccessor_t acc;
+  pnanovdb_readaccessor_init(acc, pnanovdb_tree_get_root(buf, pnanovdb_grid_get_tree(buf, grid)));
   // A cell within one leaf (two cells in three): its corners' values lie at
   // fixed strides from the first's (voxel n = 64 x + 8 y + z, 12 bytes each),
   // so only the first walks the tree. One walk in the loop's body keeps the
@@ -73,7 +64,7 @@ vec3 sparseSample(vec3 p) {
     } else {
       uint level = 0u;
       a = pnanovdb_readaccessor_get_value_address_and_level(
-          PNANOVDB_GRID_TYPE_VEC3F, buf, gSparseAccessor, i0 + ivec3(k & 1, (k >> 1) & 1, k >> 2), level);
+          PNANOVDB_GRID_TYPE_VEC3F, buf, acc, i0 + ivec3(k & 1, (k >> 1) & 1, k >> 2), level);
       if (k == 0) {
         first = a;
         oneLeaf = level == 0u && all(lessThan(i0 & 7, ivec3(7)));
