@@ -392,9 +392,9 @@ int main(int argc, char** argv) {
   auto voxels = builder.getAccessor();
   for (int i = 0; i < 10; ++i)
     voxels.setValue(nanovdb::Coord(i, 2 * i, 700 - i), nanovdb::Vec3f(float(i), 1.0f, -2.0f));
-  const auto grid = builder.getHandle<>(0.5, nanovdb::Vec3d(1.0, 2.0, 3.0), "v");
+  const auto sparse = builder.getHandle<>(0.5, nanovdb::Vec3d(1.0, 2.0, 3.0), "v");
   text(out / "fuzz_cluster_packet" / "sparse.bin",
-       std::string(reinterpret_cast<const char*>(grid.data()), grid.size()));
+       std::string(reinterpret_cast<const char*>(sparse.data()), sparse.size()));
   const TrackerScript walk = TrackerScript::builtIn();
   text(out / "fuzz_dtrack" / "frame.txt", writeDTrack(walk.at(2.0, 17)));
   text(out / "fuzz_dtrack" / "old.txt", writeDTrack(walk.at(3.0, 18), FlystickFormat::V1));
