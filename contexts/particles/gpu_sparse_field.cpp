@@ -48,8 +48,7 @@ void GpuSparseField::show(std::shared_ptr<const SparseField> field) {
                        "lower resolution (field.storage = \"dense\", field.resolution)"));
   const std::uint32_t* words = field->words().data();
   low_ = upload(words, std::min(bytes, kSplitBytes), bytes);
-  if (bytes > kSplitBytes)
-    high_ = upload(words + kSplitBytes / 4, bytes - kSplitBytes, bytes);
+  if (bytes > kSplitBytes) high_ = upload(words + kSplitBytes / 4, bytes - kSplitBytes, bytes);
   holds_ = std::move(field);
 }
 

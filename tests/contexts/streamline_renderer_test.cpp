@@ -148,8 +148,8 @@ TEST_F(StreamlineGpuTest, TheGpuTracesTheCpusStreamlinesThroughASparseGrid) {
   const std::vector<Streamline> coarse = traceStreamlines(state.streamlines, in);
   float apart = 0.0f;
   for (std::size_t l = 0; l < std::min(gpu.size(), coarse.size()); ++l)
-    apart = std::max(apart, glm::length(gpu[l].points.back().position -
-                                        coarse[l].points.back().position));
+    apart = std::max(apart,
+                     glm::length(gpu[l].points.back().position - coarse[l].points.back().position));
   EXPECT_GT(apart, 0.1f);
 }
 

@@ -72,7 +72,7 @@ TEST(VdbSparse, SamplesAsOpenVdbsBoxSamplerWithinFloatRounding) {
 
   auto acc = grid->getConstAccessor();
   openvdb::tools::GridSampler<decltype(acc), openvdb::tools::BoxSampler> box(acc,
-                                                                            grid->transform());
+                                                                             grid->transform());
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> near(-14.0, 14.0);
   double worst = 0.0;
