@@ -134,7 +134,8 @@ void FrameBroadcaster::send(const FramePacket& packet) {
     const std::uint64_t used[2] = {refs.field, refs.next};
     store_.use(used, incoming);  // as every receiver will
     if (const auto& sparse = packet.fieldUpdate->sparse) {
-      refs.sparse = sparseHash(*sparse);
+      // The grid sent last is known by its hash: gigabytes are not hashed again.
+      refs.sparse = sparse == sparse_ ? sparseHash_ : sparseHash(*sparse);
       if (refs.sparse != sparseHash_) {
         ByteWriter w;
         w.u64(refs.sparse);

@@ -270,6 +270,35 @@ double nanoBytes(const std::vector<openvdb::Index32>& nodes, std::size_t rootTil
          double(nodes[0]) * double(sizeof(typename Leaf::DataType));
 }
 
+// The grid's active voxel count and the voxels of their box, as the file's
+// metadata states them (OpenVDB writes file_voxel_count and file_bbox_min/max
+// by default), without reading its tree; nullopt where the file does not say.
+std::optional<std::pair<double, double>> statedCounts(const std::string& file,
+                                                      const std::string& name) {
+  try {
+    openvdb::io::File vdb(file);
+    vdb.open(false);
+    const openvdb::GridBase::Ptr meta = vdb.readGridMetadata(name);
+    vdb.close();
+    const auto count = meta->getMetadata<openvdb::Int64Metadata>("file_voxel_count");
+    const auto lo = meta->getMetadata<openvdb::Vec3IMetadata>("file_bbox_min");
+    const auto hi = meta->getMetadata<openvdb::Vec3IMetadata>("file_bbox_max");
+    if (!count || !lo || !hi) return std::nullopt;
+    double box = 1.0;
+    for (int a = 0; a < 3; ++a)
+      box *= std::max(0.0, double(hi->value()[a]) - double(lo->value()[a]) + 1.0);
+    return std::pair{double(count->value()), box};
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+// Whether a grid of these counts is better dense: it fills half its box or
+// more, and a dense copy fits the budget (a dense grid reads faster).
+bool denseEnough(double active, double box, const LoadOptions& options) {
+  return active >= 0.5 * box && 12.0 * box <= double(options.memoryBudget);
+}
+
 }  // namespace
 
 std::optional<SparseField> readSparseVdb(const std::filesystem::path& path,
@@ -288,6 +317,12 @@ std::optional<SparseField> readSparseVdb(const std::filesystem::path& path,
     return cannot("field.resolution resamples it onto a dense grid");
   const std::vector<VdbGridEntry> grids = checkVdbFile(path);
   const std::string name = chooseGrid(grids, file, options);
+  // "auto" decides from what the file states, where it does, before reading
+  // a grid the dense reader would read again.
+  if (!must)
+    if (const auto stated = statedCounts(file, name);
+        stated && denseEnough(stated->first, stated->second, options))
+      return std::nullopt;
   for (std::size_t i = 0; i < grids.size(); ++i)
     if (grids[i].name == name) checkVdbGrid(path, grids, i, options.memoryBudget);
   const openvdb::GridBase::Ptr base = readGrid(file, name);
@@ -328,8 +363,7 @@ std::optional<SparseField> readSparseVdb(const std::filesystem::path& path,
                        " active voxels) takes ", sparseBytes,
                        " bytes, beyond the memory budget (field.memory_budget) of ",
                        options.memoryBudget, " bytes; raise field.memory_budget"));
-  if (!must && active >= 0.5 * box && 12.0 * box <= double(options.memoryBudget))
-    return std::nullopt;  // dense enough: a dense grid reads faster
+  if (!must && denseEnough(active, box, options)) return std::nullopt;
   report.arrayName = name;
   report.sourceDims = glm::ivec3(extent.x(), extent.y(), extent.z());
   for (const VdbGridEntry& g : grids)
@@ -347,6 +381,8 @@ std::optional<SparseField> readSparseVdb(const std::filesystem::path& path,
   if (nonFinite > 0)
     log::warn(file, ": ", nonFinite, " vectors of grid '", name,
               "' are NaN or Inf; replaced by zero");
+  if (options.showProgress)
+    log::info(file, ": converting grid '", name, "' (", active, " active voxels) to NanoVDB");
   const nanovdb::GridHandle<nanovdb::HostBuffer> handle = nanovdb::openToNanoVDB(*grid);
   std::vector<std::uint32_t> words((handle.size() + 3) / 4, 0u);
   std::memcpy(words.data(), handle.data(), handle.size());

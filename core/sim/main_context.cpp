@@ -23,7 +23,10 @@ std::optional<std::string> wantedColorGrid(const ParticleState& state, const Fie
 // default ends), computed here once rather than on every wall, and, while
 // particles are coloured by one, its colour grid (a grid the size of the
 // field's: vorticity or a scalar array of the file).
-FieldUpdate withRange(FieldUpdate update, const ParticleState& state) {
+// `known`: a sparse grid's speed and velocity range, when computed already
+// for this very grid (only its colour grid changes).
+FieldUpdate withRange(FieldUpdate update, const ParticleState& state,
+                      const FieldRange* known = nullptr) {
   if (!update.field) return update;
   update.colorGrid.reset();
   update.nextColorGrid.reset();
@@ -38,7 +41,7 @@ FieldUpdate withRange(FieldUpdate update, const ParticleState& state) {
   update.range = FieldRange::of(*update.field, update.placement.rotation, update.colorGrid.get());
   if (update.sparse) {
     // The speeds the particles meet are the sparse grid's, not its overview's.
-    FieldRange r = FieldRange::of(*update.sparse, update.placement.rotation);
+    FieldRange r = known ? *known : FieldRange::of(*update.sparse, update.placement.rotation);
     r.minScalar = update.range.minScalar;
     r.maxScalar = update.range.maxScalar;
     update.range = r;
@@ -249,7 +252,7 @@ FramePacket MainContext::next() {
   }
   // Coloured by another grid now (or no longer): the field goes again with it.
   if (field_ && field_->field && carriedColorGrid(*field_) != wantedColorGrid(state_, *field_)) {
-    field_ = std::make_shared<const FieldUpdate>(withRange(*field_, state_));
+    field_ = std::make_shared<const FieldUpdate>(withRange(*field_, state_, &field_->range));
     fieldChanged_ = true;
   }
   // A field without the array asked for (a file switched, a config's choice):
