@@ -150,9 +150,19 @@ SparseField::SparseField(std::vector<std::uint32_t> words, const std::string& so
   forEachActive([&](const glm::vec3&, std::uint64_t count) { activeVoxels_ += count; });
   if (activeVoxels_ == 0 || glm::any(glm::greaterThan(indexMin_, indexMax_)))
     fail("it has no active voxels");
+  // Indices in float keep sample()'s arithmetic exact and within int's range.
+  constexpr int kMaxIndex = 1 << 24;
+  if (glm::any(glm::lessThan(indexMin_, glm::ivec3(-kMaxIndex))) ||
+      glm::any(glm::greaterThan(indexMax_, glm::ivec3(kMaxIndex))))
+    fail(concat("its active voxels reach index ", indexMin_.x, " ", indexMin_.y, " ", indexMin_.z,
+                " .. ", indexMax_.x, " ", indexMax_.y, " ", indexMax_.z, "; expected within +-",
+                kMaxIndex));
   // Where particles may go: the active voxels' centres.
   bounds_.min = origin_ + glm::vec3(indexMin_) * voxelSize_;
   bounds_.max = origin_ + glm::vec3(indexMax_) * voxelSize_;
+  if (!std::isfinite(bounds_.min.x + bounds_.min.y + bounds_.min.z + bounds_.max.x + bounds_.max.y +
+                     bounds_.max.z))
+    fail("its voxels' positions pass float's range");
 }
 
 glm::vec3 SparseField::voxel(const glm::ivec3& ijk) const {
@@ -177,7 +187,9 @@ glm::vec3 SparseField::sample(const glm::vec3& p) const {
   // Two voxels beyond the active box every corner reads the background, and
   // the index stays far from int's range.
   const glm::vec3 lo = glm::vec3(indexMin_ - 2), hi = glm::vec3(indexMax_ + 1);
-  const glm::vec3 u = glm::clamp((p - origin_) * indexScale_, lo, hi);
+  glm::vec3 u = glm::clamp((p - origin_) * indexScale_, lo, hi);
+  for (int a = 0; a < 3; ++a)
+    if (std::isnan(u[a])) u[a] = lo[a];  // no index for NaN: the background
   const glm::ivec3 i0 = glm::ivec3(glm::floor(u));
   const glm::vec3 f = u - glm::vec3(i0);
   const pnanovdb_buf_t buf = bufferOf(words_);

@@ -125,6 +125,11 @@ TEST(SparseField, BuffersThatAreNotASoundVec3GridAreRefusedWithWhy) {
   std::vector<std::uint32_t> scalar(handle.size() / 4);
   std::memcpy(scalar.data(), handle.data(), handle.size());
   EXPECT_NE(refusal(scalar).find("expected Vec3f"), std::string::npos) << refusal(scalar);
+  // Voxels past the index range sample()'s float arithmetic keeps exact.
+  const std::string far = refusal(test::buildSparseGrid([](const auto& set) {
+    set({1 << 25, 0, 0}, glm::vec3(1.0f));
+  }));
+  EXPECT_NE(far.find("expected within"), std::string::npos) << far;
   EXPECT_EQ(refusal(good), "");
 }
 
