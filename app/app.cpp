@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <utility>
 
 #include "app/app_run.h"
 #include "app/cluster/cluster_link.h"
@@ -37,8 +38,12 @@ void applySets(AppConfig& config, const std::vector<std::string>& sets) {
   }
 }
 
-App::App(AppConfig config, AppOptions options, ClusterLink* cluster)
-    : config_(std::move(config)), options_(std::move(options)), cluster_(cluster) {
+App::App(AppConfig config, AppOptions options, ClusterLink* cluster,
+         std::optional<FieldSource> field)
+    : config_(std::move(config)),
+      options_(std::move(options)),
+      cluster_(cluster),
+      field_(std::move(field)) {
   // A movie of its own size is a render job: its walls are drawn offscreen.
   const bool movieSize = options_.movie && options_.movie->size;
   headless_ = options_.headless || movieSize || !haveDisplay();
@@ -96,7 +101,8 @@ App::App(AppConfig config, AppOptions options, ClusterLink* cluster)
 int App::run() {
   if (cluster_) cluster_->localize(config_, options_);  // this rank's walls and outputs
   keepSoftwareRasterizingInDrawingThreads(config_.glContexts());
-  return AppRun(config_, options_, headless_, cluster_).execute();
+  return AppRun(config_, options_, headless_, cluster_, std::exchange(field_, std::nullopt))
+      .execute();
 }
 
 }  // namespace sandstorm

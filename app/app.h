@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "app/scene_setup.h"
 #include "core/config/app_config.h"
 #include "core/movie/movie_spec.h"
 
@@ -46,7 +47,9 @@ void applySets(AppConfig& config, const std::vector<std::string>& sets);
 class App {
  public:
   // `cluster`: cluster mode (app/cluster/), this rank's link to the others; null: one process.
-  App(AppConfig config, AppOptions options, ClusterLink* cluster = nullptr);
+  // `field`: the configuration's [field], already read (fileSceneField); empty: the run reads it.
+  App(AppConfig config, AppOptions options, ClusterLink* cluster = nullptr,
+      std::optional<FieldSource> field = std::nullopt);
   // Runs until the frame count is reached, a window closes or Ctrl-C. Returns
   // the process exit code (0, or 1 when a wall failed).
   int run();
@@ -59,6 +62,7 @@ class App {
   AppOptions options_;
   ClusterLink* cluster_ = nullptr;
   bool headless_ = false;
+  std::optional<FieldSource> field_;  // moves into the run
 };
 
 }  // namespace sandstorm

@@ -64,7 +64,7 @@ MainContext::Options mainOptions(const RunSpec& run) {
 }  // namespace
 
 AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless,
-               ClusterLink* cluster)
+               ClusterLink* cluster, std::optional<FieldSource> field)
     : config_(config),
       options_(options),
       headless_(headless),
@@ -76,8 +76,9 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
       statsWarmup_(statsWarmup(config.run)),
       // In cluster mode only rank 0 makes the field (unless every rank reads it): it travels in
       // packets.
-      field_(!cluster || cluster->makesField() ? makeField(config.field, configDir_)
-                                               : FieldSource{}),
+      field_(field                               ? std::move(*field)
+             : !cluster || cluster->makesField() ? makeField(config.field, configDir_)
+                                                 : FieldSource{}),
       terrain_(makeTerrain(config.scene, configDir_)),
       main_(config.particles, field_.update, mainOptions(config.run)),
       helicopter_(terrain_),

@@ -45,7 +45,9 @@ class ClusterLink;
 class AppRun {
  public:
   // The configuration as App prepared it (cluster mode: already localized to this rank).
-  AppRun(const AppConfig& config, const AppOptions& options, bool headless, ClusterLink* cluster);
+  // `field`: the configuration's [field], already read; empty: read here.
+  AppRun(const AppConfig& config, const AppOptions& options, bool headless, ClusterLink* cluster,
+         std::optional<FieldSource> field = std::nullopt);
   // The whole run: start(), frames until the end (or Ctrl-C), stop(). Returns the exit code.
   int execute();
 

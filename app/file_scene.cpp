@@ -3,9 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/io/field_format.h"
-#include "core/io/field_loader.h"
-#include "core/io/vdb_reader.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
 
@@ -103,22 +100,20 @@ Emitter seedingPlane(const VectorField& field, int maximum) {
   return e;
 }
 
-VectorField fileSceneField(const std::filesystem::path& file, LoadOptions options) {
-  if (detectFieldFormat(file) == FieldFormat::OpenVdb) {
-    options.sparse = SparseChoice::Auto;
-    LoadReport report;
-    // As many points as the run's overview (scene_setup.cpp).
-    if (const auto sparse = readSparseVdb(file, options, report)) return sparse->overview(64);
-    options.sparse = SparseChoice::Never;
-  }
-  return loadField(file, options);
+FieldSource fileSceneField(AppConfig& config, const std::filesystem::path& file,
+                           const std::string& array) {
+  FieldSpec spec;
+  spec.source = std::filesystem::absolute(file).string();
+  spec.name = array;
+  spec.memoryBudget = config.field.memoryBudget;
+  spec.halfPrecision = config.field.halfPrecision;
+  spec.storage = config.field.storage;
+  spec.readAhead = config.field.readAhead;
+  config.field = spec;
+  return makeField(config.field, config.folder);
 }
 
-void openFileScene(AppConfig& config, const std::filesystem::path& file, const std::string& array,
-                   const VectorField& field) {
-  config.field = FieldSpec{};
-  config.field.source = std::filesystem::absolute(file).string();
-  config.field.name = array;
+void openFileScene(AppConfig& config, const std::filesystem::path& file, const VectorField& field) {
   config.scene = SceneSpec{};
   const Box box = field.bounds();
   const glm::vec3 size = box.max - box.min, centre = 0.5f * (box.min + box.max);

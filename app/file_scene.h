@@ -11,21 +11,24 @@
 #include <filesystem>
 #include <string>
 
+#include "app/scene_setup.h"
 #include "core/config/app_config.h"
 #include "core/field/vector_field.h"
-#include "core/io/load_options.h"
 
 namespace sandstorm {
 
 // Rewrites `config` (the desktop scene, or the configuration the user gave)
-// around `field`, loaded from `file`. `array`: the file's array or grid, as given.
-void openFileScene(AppConfig& config, const std::filesystem::path& file, const std::string& array,
-                   const VectorField& field);
+// around `field`, read from `file` (fileSceneField).
+void openFileScene(AppConfig& config, const std::filesystem::path& file, const VectorField& field);
 
-// The field openFileScene frames, read from `file`: its grid, or, for an
-// OpenVDB grid that field.storage's default keeps sparse, a dense overview of
-// it (the run then loads the sparse grid itself).
-VectorField fileSceneField(const std::filesystem::path& file, LoadOptions options);
+// Points `config`'s [field] at `file` (its array or grid `array`; the
+// configuration's field.memory_budget, precision, storage and read_ahead
+// kept) and reads it as the run reads its [field]: a grid, a series streamed,
+// an OpenVDB grid kept sparse. The file is read once: openFileScene frames
+// `update.field` (a sparse grid's overview, a series' first step) and the run
+// starts from the returned source (App's `field`).
+FieldSource fileSceneField(AppConfig& config, const std::filesystem::path& file,
+                           const std::string& array);
 
 // The emitter the file scene seeds with: exposed for tests.
 Emitter seedingPlane(const VectorField& field, int maximum);

@@ -209,10 +209,9 @@ int main(int argc, char** argv) {
       // The desktop scene unless a configuration was named.
       AppConfig config = loadConfig(
           configOption->count() > 0 ? configPath : defaultConfig("desktop.toml").string());
-      LoadOptions load;
-      load.arrayName = arrayName;
-      openFileScene(config, fieldFile, arrayName, fileSceneField(fieldFile, load));
-      App app(std::move(config), options);
+      FieldSource field = fileSceneField(config, fieldFile, arrayName);
+      openFileScene(config, fieldFile, *field.update.field);
+      App app(std::move(config), options, nullptr, std::move(field));
       return app.run();
     }
     if (!arrayName.empty())

@@ -9,12 +9,12 @@
 
 namespace sandstorm {
 
-SteppedRun::SteppedRun(AppConfig config, AppOptions options) {
+SteppedRun::SteppedRun(AppConfig config, AppOptions options, std::optional<FieldSource> field) {
   options.headless = true;
   if (!options.frames) options.frames = 0;  // as many as the caller steps
   app_ = std::make_unique<App>(std::move(config), std::move(options));
   keepSoftwareRasterizingInDrawingThreads(app_->config().glContexts());
-  run_ = std::make_unique<AppRun>(app_->config(), app_->options(), true, nullptr);
+  run_ = std::make_unique<AppRun>(app_->config(), app_->options(), true, nullptr, std::move(field));
   pending_.resize(app_->config().walls.size());
   captures_.resize(app_->config().walls.size());
   run_->setFrameObserver([this](std::size_t wall, WallRenderer& w, const FramePacket& packet) {

@@ -36,7 +36,8 @@ struct WallCapture {
 class SteppedRun {
  public:
   // Opens the walls. Throws Error (the configuration's, a wall's).
-  SteppedRun(AppConfig config, AppOptions options);
+  // `field`: the configuration's [field], already read (fileSceneField); empty: read here.
+  SteppedRun(AppConfig config, AppOptions options, std::optional<FieldSource> field = std::nullopt);
   ~SteppedRun();
   SteppedRun(const SteppedRun&) = delete;
   SteppedRun& operator=(const SteppedRun&) = delete;

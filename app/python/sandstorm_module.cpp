@@ -184,17 +184,17 @@ class Run {
     }
     py::gil_scoped_release release;
     AppConfig appConfig;
+    std::optional<FieldSource> field;
     if (path.ends_with(".toml")) {
       if (array)
         throw Error("array= names an array of a field file; " + path + " is a configuration");
       appConfig = loadConfig(path);
     } else {  // a field file, opened as `sandstorm FILE` opens it
       appConfig = loadConfig(config ? *config : defaultConfig("desktop.toml").string());
-      LoadOptions load;
-      if (array) load.arrayName = *array;
-      openFileScene(appConfig, path, array.value_or(""), fileSceneField(path, load));
+      field = fileSceneField(appConfig, path, array.value_or(""));
+      openFileScene(appConfig, path, *field->update.field);
     }
-    run_ = std::make_unique<SteppedRun>(std::move(appConfig), std::move(options));
+    run_ = std::make_unique<SteppedRun>(std::move(appConfig), std::move(options), std::move(field));
   }
 
   SteppedRun& run() {

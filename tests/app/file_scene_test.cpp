@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <sstream>
 
 #include "app/file_scene.h"
 #include "core/field/analytic_field.h"
@@ -79,7 +80,7 @@ TEST(FileScene, TheRakeTheSliceAndTheProbeArePlacedInTheField) {
   const VectorField f =
       bake(Uniform({1.0f, 0.0f, 0.0f}), Box{{100, 50, 10}, {108, 54, 12}}, {9, 5, 3});
   AppConfig config;
-  openFileScene(config, "far.vti", "", f);
+  openFileScene(config, "far.vti", f);
   const ParticleState& s = config.particles;
   EXPECT_EQ(s.streamlines.shape, RakeShape::Line);
   EXPECT_EQ(s.streamlines.from, glm::vec3(100, 50, 10));
@@ -100,7 +101,7 @@ TEST(FileScene, AFieldKilometresWideKeepsDepthPrecisionAndItsGround) {
       bake(Uniform({10.0f, 0.0f, 0.0f}), Box{{0, 0, 0}, {22000, 18000, 2500}}, {12, 10, 6});
   AppConfig config;
   config.walls.push_back(WallSpec{.name = "desktop", .camera = CameraSpec{}});
-  openFileScene(config, "atmos.vti", "", f);
+  openFileScene(config, "atmos.vti", f);
   const glm::vec3 eye = config.walls[0].camera->position, target = config.walls[0].camera->target;
   EXPECT_NEAR(config.run.nearPlane, 0.01f * glm::length(eye - target), 1.0f);
   EXPECT_GT(config.run.farPlane / config.run.nearPlane, 100.0f);
@@ -120,7 +121,7 @@ TEST(FileScene, AFieldAMillimetreLongGetsItsScale) {
   const VectorField f =
       bake(Uniform({1e-3f, 0.0f, 0.0f}), Box{{0, 0, 0}, {1e-3f, 5e-4f, 5e-4f}}, {21, 11, 11});
   AppConfig config;
-  openFileScene(config, "micro.vti", "", f);
+  openFileScene(config, "micro.vti", f);
   const ParticleState& s = config.particles;
   const float diagonal = glm::length(glm::vec3(1e-3f, 5e-4f, 5e-4f));
   EXPECT_NEAR(s.render.size, 0.004f * diagonal, 1e-9f);
@@ -165,6 +166,22 @@ TEST(FileScene, AFileOpensFromItsOwnFolder) {
                                     "--set sim.maximum=1000 2>&1");
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_TRUE(std::filesystem::exists(dir / "desktop.png"));
+}
+
+// The file is read once: the scene is framed from the very field the run
+// starts with (a 512^3 file read twice took twice the time to open).
+TEST(FileScene, TheFileIsReadOnce) {
+  const auto dir = test::scratchDir("file-scene-once");
+  twoArrays(dir);
+  const auto run = test::runCommand("cd '" + dir.string() + "' && '" + SANDSTORM_BINARY +
+                                    "' two.vti --array wind --frames 1 --screenshot . "
+                                    "--log-level debug --set sim.maximum=1000 2>&1");
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  int reads = 0;
+  std::istringstream lines(run.output);
+  for (std::string line; std::getline(lines, line);)
+    reads += line.find("loaded ") != std::string::npos && line.find("two.vti") != std::string::npos;
+  EXPECT_EQ(reads, 1) << run.output;
 }
 
 TEST(FileScene, AFileThatIsNotThereOrNotAFieldIsAClearError) {
