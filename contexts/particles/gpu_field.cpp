@@ -5,6 +5,7 @@
 #include <glm/gtc/packing.hpp>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdlib>
 #include <cstring>
@@ -67,15 +68,14 @@ void GpuField::uploadTexture(const VectorField& field) {
     glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
   half_ = half;
-  // Through a staging buffer the GPU copies from: the frame does not wait
-  // for the driver to take a copy of a grid hundreds of megabytes large.
   const Layout layout = half ? (masked ? Layout::HalfRgba : Layout::HalfRgb)
                              : (masked ? Layout::FloatRgba : Layout::FloatRgb);
-  const gl::Buffer staging = stage(field, layout);
-  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, staging.id());
   glPixelStorei(GL_UNPACK_ALIGNMENT, half ? 2 : 4);
-  glTextureSubImage3D(texture_.id(), 0, 0, 0, 0, d.x, d.y, d.z, masked ? GL_RGBA : GL_RGB,
-                      half ? GL_HALF_FLOAT : GL_FLOAT, nullptr);
+  stageSlabs(field, layout, [&](const gl::Buffer& staging, int firstLayer, int layers) {
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, staging.id());
+    glTextureSubImage3D(texture_.id(), 0, 0, 0, firstLayer, d.x, d.y, layers,
+                        masked ? GL_RGBA : GL_RGB, half ? GL_HALF_FLOAT : GL_FLOAT, nullptr);
+  });
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
 }
@@ -94,9 +94,11 @@ std::size_t GpuField::texelBytes(Layout layout) {
   return 16;
 }
 
-void GpuField::writeTexels(const VectorField& field, Layout layout, void* out) {
-  const std::span<const glm::vec3> values = field.values();
-  const std::span<const std::uint8_t> valid = field.validity();
+void GpuField::writeTexels(const VectorField& field, Layout layout, std::size_t first,
+                           std::size_t count, void* out) {
+  const std::span<const glm::vec3> values = field.values().subspan(first, count);
+  const std::span<const std::uint8_t> valid =
+      field.hasValidity() ? field.validity().subspan(first, count) : field.validity();
   const auto isValid = [&](std::size_t i) { return valid.empty() || valid[i] != 0; };
   const std::uint16_t one = glm::packHalf1x16(1.0f), zero = glm::packHalf1x16(0.0f);
   forChunks(values.size(), [&](std::size_t begin, std::size_t end) {
@@ -125,23 +127,38 @@ void GpuField::writeTexels(const VectorField& field, Layout layout, void* out) {
   });
 }
 
-gl::Buffer GpuField::stage(const VectorField& field, Layout layout) {
-  const GLsizeiptr bytes = GLsizeiptr(field.pointCount() * texelBytes(layout));
-  gl::Buffer staging = gl::createBuffer();
-  glGetError();
-  glNamedBufferStorage(staging.id(), bytes, nullptr, GL_MAP_WRITE_BIT);
-  void* out = glGetError() == GL_NO_ERROR
-                  ? glMapNamedBufferRange(staging.id(), 0, bytes,
-                                          GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT)
-                  : nullptr;
-  if (!out) {
-    const glm::ivec3 d = field.dims();
-    throw Error(concat("the field's upload: no memory to stage a ", d.x, "x", d.y, "x", d.z,
-                       " field (", bytes, " bytes); lower field.resolution"));
+void GpuField::stageSlabs(const VectorField& field, Layout layout,
+                          const std::function<void(const gl::Buffer&, int, int)>& copy) {
+  const glm::ivec3 d = field.dims();
+  const std::size_t layerPoints = std::size_t(d.x) * std::size_t(d.y);
+  const std::size_t layerBytes = layerPoints * texelBytes(layout);
+  const int slabLayers = int(std::clamp<std::size_t>(kSlabBytes / layerBytes, 1, std::size_t(d.z)));
+  const GLsizeiptr slabBytes = GLsizeiptr(std::size_t(slabLayers) * layerBytes);
+  // Two slabs: the cores fill one while the GPU copies the other. Mapping a
+  // slab again waits for the GPU's copy out of it (no unsynchronized map).
+  std::array<gl::Buffer, 2> ring;
+  for (gl::Buffer& b : ring) {
+    b = gl::createBuffer();
+    glGetError();
+    glNamedBufferStorage(b.id(), slabBytes, nullptr, GL_MAP_WRITE_BIT);
+    if (glGetError() != GL_NO_ERROR)
+      throw Error(concat("the field's upload: no memory to stage a ", d.x, "x", d.y, "x", d.z,
+                         " field (slabs of ", slabBytes, " bytes); lower field.resolution"));
+    if (slabLayers >= d.z) break;  // one slab holds the grid
   }
-  writeTexels(field, layout, out);
-  glUnmapNamedBuffer(staging.id());
-  return staging;
+  for (int z = 0, slab = 0; z < d.z; z += slabLayers, slab ^= 1) {
+    const int layers = std::min(slabLayers, d.z - z);
+    const gl::Buffer& staging = ring[std::size_t(slab)];
+    const GLsizeiptr bytes = GLsizeiptr(std::size_t(layers) * layerBytes);
+    void* out = glMapNamedBufferRange(staging.id(), 0, bytes, GL_MAP_WRITE_BIT);
+    if (!out)
+      throw Error(concat("the field's upload: no memory to stage a ", d.x, "x", d.y, "x", d.z,
+                         " field (slabs of ", slabBytes, " bytes); lower field.resolution"));
+    writeTexels(field, layout, std::size_t(z) * layerPoints, std::size_t(layers) * layerPoints,
+                out);
+    glUnmapNamedBuffer(staging.id());
+    copy(staging, z, layers);
+  }
 }
 
 bool GpuField::fitsBuffer(const VectorField& field) {
@@ -164,8 +181,13 @@ void GpuField::uploadBuffer(const VectorField& field) {
     }
   }
   // Staged, then copied by the GPU (see uploadTexture).
-  const gl::Buffer staging = stage(field, Layout::FloatRgba);
-  glCopyNamedBufferSubData(staging.id(), buffer_.id(), 0, 0, bytes);
+  const std::size_t layerBytes =
+      std::size_t(field.dims().x) * std::size_t(field.dims().y) * sizeof(glm::vec4);
+  stageSlabs(field, Layout::FloatRgba, [&](const gl::Buffer& staging, int firstLayer, int layers) {
+    glCopyNamedBufferSubData(staging.id(), buffer_.id(), 0,
+                             GLintptr(std::size_t(firstLayer) * layerBytes),
+                             GLsizeiptr(std::size_t(layers) * layerBytes));
+  });
 }
 
 void GpuField::show(std::shared_ptr<const VectorField> field) {

@@ -17,6 +17,7 @@
 //     "texture" makes every grid take that fallback (tests, comparisons).
 #pragma once
 
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -58,10 +59,18 @@ class GpuField {
   // RGBA with the validity mask in alpha (the buffer's vec4 is FloatRgba).
   enum class Layout { FloatRgb, FloatRgba, HalfRgb, HalfRgba };
   static std::size_t texelBytes(Layout layout);
-  static void writeTexels(const VectorField& field, Layout layout, void* out);
-  // A buffer holding the grid's texels, written over the cores through a
-  // mapping, for the GPU to copy from (the frame does not wait for a copy).
-  static gl::Buffer stage(const VectorField& field, Layout layout);
+  // Points [first, first + count) of the grid as texels at `out`.
+  static void writeTexels(const VectorField& field, Layout layout, std::size_t first,
+                          std::size_t count, void* out);
+  // The grid through staging buffers the GPU copies from (so the frame does
+  // not wait for the driver to take a copy of hundreds of megabytes), a slab
+  // of whole z layers at a time, each written over the cores through a
+  // mapping and handed to `copy` (buffer, first layer, layers). Two slabs of
+  // about kSlabBytes: staging takes tens of megabytes of host memory, not a
+  // second copy of the grid.
+  static void stageSlabs(const VectorField& field, Layout layout,
+                         const std::function<void(const gl::Buffer&, int, int)>& copy);
+  static constexpr std::size_t kSlabBytes = std::size_t{32} << 20;
 
   Storage preferred_, storage_;
   gl::Texture texture_;

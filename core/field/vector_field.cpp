@@ -33,13 +33,13 @@ void validate(const Box& bounds, const glm::ivec3& dims) {
 }  // namespace
 
 VectorField::VectorField(const Box& bounds, const glm::ivec3& dims)
-    : VectorField(bounds, dims, {}) {}
+    : VectorField(bounds, dims, VectorValues()) {}
 
-VectorField::VectorField(const Box& bounds, const glm::ivec3& dims, std::vector<glm::vec3> values)
+VectorField::VectorField(const Box& bounds, const glm::ivec3& dims, VectorValues values)
     : bounds_(bounds), dims_(dims), values_(std::move(values)) {
   validate(bounds, dims);
   const std::size_t count = std::size_t(dims.x) * dims.y * dims.z;
-  if (values_.empty()) values_.assign(count, glm::vec3(0.0f));
+  if (values_.empty()) values_ = std::vector<glm::vec3>(count, glm::vec3(0.0f));
   if (values_.size() != count)
     throw Error(concat("VectorField: ", values_.size(), " values for ", count, " grid points"));
   for (int a = 0; a < 3; ++a)
@@ -54,7 +54,7 @@ void VectorField::roundToHalf() {
                            values_[i][c], ", beyond the ", kHalfMax,
                            " that 16-bit floats hold; keep field.precision = \"float\" or scale "
                            "the field's units"));
-  for (glm::vec3& v : values_)
+  for (glm::vec3& v : values_.span())
     v = glm::unpackHalf(glm::packHalf(v));
   half_ = true;
 }
@@ -160,7 +160,7 @@ bool VectorField::cellValid(const glm::vec3& p) const {
 
 float VectorField::maxMagnitude() const {
   float m = 0.0f;
-  for (const glm::vec3& v : values_)
+  for (const glm::vec3& v : values_.span())
     m = std::max(m, glm::length(v));
   return m;
 }

@@ -19,11 +19,13 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
 
 #include "core/field/box.h"
+#include "core/field/vector_values.h"
 
 namespace sandstorm {
 
@@ -37,9 +39,12 @@ class VectorField {
   VectorField() = default;
   // Throws Error when dims are not positive, the point count exceeds kMaxPoints,
   // the bounds are empty along an axis with more than one point, or the value
-  // count differs from the point count.
+  // count differs from the point count. `values` may be a std::vector or a
+  // reading library's memory adopted (VectorValues::adopt).
   VectorField(const Box& bounds, const glm::ivec3& dims);
-  VectorField(const Box& bounds, const glm::ivec3& dims, std::vector<glm::vec3> values);
+  VectorField(const Box& bounds, const glm::ivec3& dims, VectorValues values);
+  VectorField(const Box& bounds, const glm::ivec3& dims, std::vector<glm::vec3> values)
+      : VectorField(bounds, dims, VectorValues(std::move(values))) {}
 
   const Box& bounds() const { return bounds_; }
   const glm::ivec3& dims() const { return dims_; }
@@ -53,8 +58,10 @@ class VectorField {
   }
   const glm::vec3& at(int i, int j, int k) const { return values_[index(i, j, k)]; }
   glm::vec3& at(int i, int j, int k) { return values_[index(i, j, k)]; }
-  std::span<const glm::vec3> values() const { return values_; }
-  std::span<glm::vec3> values() { return values_; }
+  std::span<const glm::vec3> values() const { return values_.span(); }
+  std::span<glm::vec3> values() { return values_.span(); }
+  // Whether the vectors are the reading library's memory, held rather than copied.
+  bool adoptedValues() const { return values_.adopted(); }
 
   // World position of grid point (i, j, k).
   glm::vec3 pointPosition(int i, int j, int k) const;
@@ -116,7 +123,7 @@ class VectorField {
   Box bounds_;
   glm::ivec3 dims_{0};
   glm::vec3 indexScale_{0.0f};
-  std::vector<glm::vec3> values_;
+  VectorValues values_;
   std::vector<std::uint8_t> valid_;
   std::vector<Scalars> scalars_;
   bool half_ = false;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <optional>
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -97,6 +98,38 @@ std::size_t copyVectors(vtkDataArray* array, vtkDataArray* mask, std::vector<glm
     }
   }
   return nonFinite;
+}
+
+// A float array of x y z tuples (what VTK's readers make of a .vti's
+// vectors) is kept as the grid's values instead of copied, so that a grid is
+// held once: its non-finite tuples and those `mask` marks invalid are zeroed
+// in place. nullopt for any other array (then copied: copyVectors).
+std::optional<VectorValues> adoptVectors(vtkDataArray* array, vtkDataArray* mask,
+                                         std::size_t& nonFinite) {
+  auto* f = vtkFloatArray::FastDownCast(array);
+  const bool byteMask = mask && mask->GetNumberOfComponents() == 1 &&
+                        mask->GetDataTypeSize() == 1 && mask->HasStandardMemoryLayout();
+  if (!f || f->GetNumberOfComponents() != 3 || (mask && !byteMask)) return std::nullopt;
+  const std::size_t n = std::size_t(f->GetNumberOfTuples());
+  auto* values = reinterpret_cast<glm::vec3*>(f->GetPointer(0));
+  const auto* valid =
+      byteMask ? static_cast<const std::uint8_t*>(mask->GetVoidPointer(0)) : nullptr;
+  std::atomic<std::size_t> bad{0};
+  forChunks(n, [&](std::size_t begin, std::size_t end) {
+    std::size_t local = 0;
+    for (std::size_t i = begin; i < end; ++i) {
+      const glm::vec3 v = values[i];
+      const bool finite = std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+      const bool masked = valid && valid[i] == 0;
+      local += finite || masked ? 0 : 1;
+      if (!finite || masked) values[i] = glm::vec3(0.0f);
+    }
+    bad += local;
+  });
+  nonFinite = bad;
+  // The array lives on in the grid; VTK counts its references atomically.
+  auto owner = std::make_shared<vtkSmartPointer<vtkFloatArray>>(f);
+  return VectorValues::adopt(values, n, std::move(owner));
 }
 
 // VTK's validity mask (vtkResampleToImage's output, or a file that carries
@@ -217,9 +250,15 @@ VectorField copyImage(vtkImageData* image, const std::string& name,
                        " vectors for ", image->GetNumberOfPoints(), " grid points"));
   vtkDataArray* mask = image->GetPointData()->GetArray(kValidMaskName);
   if (mask && mask->GetNumberOfTuples() != image->GetNumberOfPoints()) mask = nullptr;
-  std::vector<glm::vec3> values;
-  reportNonFinite(copyVectors(array, mask, values), path, name, report);
-  VectorField field(bounds, dims, std::move(values));
+  std::size_t nonFinite = 0;
+  std::optional<VectorValues> values = adoptVectors(array, mask, nonFinite);
+  if (!values) {
+    std::vector<glm::vec3> copied;
+    nonFinite = copyVectors(array, mask, copied);
+    values = VectorValues(std::move(copied));
+  }
+  reportNonFinite(nonFinite, path, name, report);
+  VectorField field(bounds, dims, std::move(*values));
   field.setValidity(validityOf(mask));
   copyScalars(image->GetPointData(), mask, image->GetNumberOfPoints(), path, field, report);
   noteOutside(field, path, report);

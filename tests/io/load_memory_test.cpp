@@ -1,0 +1,83 @@
+// A grid read from a file is held once: loading it raises this process's
+// resident memory by about the grid's size, not twice it (VTK's array and a
+// copy, as it did: 1.67x measured before). Measured as the peak resident set
+// (VmHWM, reset first through /proc/self/clear_refs) over the resident set
+// before the load.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <string>
+
+#include "core/io/field_loader.h"
+#include "core/io/vti_writer.h"
+#include "tests/io/io_test_util.h"
+
+namespace sandstorm {
+namespace {
+
+namespace fs = std::filesystem;
+
+// A line of /proc/self/status ("VmRSS", "VmHWM") in KiB.
+std::optional<long> statusKiB(const std::string& key) {
+  std::ifstream in("/proc/self/status");
+  for (std::string line; std::getline(in, line);)
+    if (line.starts_with(key + ":")) return std::stol(line.substr(key.size() + 1));
+  return std::nullopt;
+}
+
+// Sets the peak resident set to the current one; false where Linux does not allow it.
+bool resetPeak() {
+  std::ofstream out("/proc/self/clear_refs");
+  out << "5";
+  out.flush();
+  return bool(out);
+}
+
+VectorField swirl(int side) {
+  VectorField f(Box{{-1, -1, -1}, {1, 1, 1}}, glm::ivec3(side));
+  for (int k = 0; k < side; ++k)
+    for (int j = 0; j < side; ++j)
+      for (int i = 0; i < side; ++i) {
+        const glm::vec3 p = f.pointPosition(i, j, k);
+        f.at(i, j, k) = {-p.y, p.x, std::sin(3.0f * p.z)};
+      }
+  return f;
+}
+
+// AddressSanitizer keeps freed memory in quarantine: not the memory users see.
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kSanitized = true;
+#elif defined(__has_feature)
+constexpr bool kSanitized = __has_feature(address_sanitizer);
+#else
+constexpr bool kSanitized = false;
+#endif
+
+TEST(LoadMemory, AGridIsHeldOnceNotCopied) {
+  if (kSanitized) GTEST_SKIP() << "a sanitized build measures the sanitizer's memory";
+  const fs::path dir = test::scratch();
+  constexpr int kSide = 192;  // 85 MB of vectors
+  const glm::vec3 probe = swirl(kSide).at(5, 7, 11);
+  for (const VtiCompression c : {VtiCompression::None, VtiCompression::ZLib}) {
+    writeVti(dir / "big.vti", swirl(kSide), "velocity", c);
+    if (!resetPeak()) GTEST_SKIP() << "/proc/self/clear_refs cannot be written here";
+    const std::optional<long> before = statusKiB("VmRSS");
+    LoadOptions options;
+    const VectorField read = loadField(dir / "big.vti", options);
+    const std::optional<long> peak = statusKiB("VmHWM");
+    ASSERT_TRUE(before && peak);
+    const double gridKiB = double(read.pointCount()) * 12.0 / 1024.0;
+    // The grid, and a fifth of it for what reading it takes besides.
+    EXPECT_LT(double(*peak - *before), 1.2 * gridKiB)
+        << (c == VtiCompression::None ? "uncompressed" : "zlib") << ": peak " << *peak
+        << " KiB over " << *before << " KiB before the load; the grid is " << gridKiB << " KiB";
+    // The reader keeps VTK's array as the grid's values.
+    EXPECT_TRUE(read.adoptedValues());
+    EXPECT_EQ(read.at(5, 7, 11), probe);
+  }
+}
+
+}  // namespace
+}  // namespace sandstorm
