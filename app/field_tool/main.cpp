@@ -17,6 +17,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "core/config/app_config.h"
 #include "core/field/analytic_field.h"
 #include "core/field/analytic_field_factory.h"
 #include "core/field/derived_scalars.h"
@@ -33,7 +34,7 @@ namespace {
 struct Common {
   std::string array;
   std::vector<int> dims;
-  double budgetMiB = 2048.0;
+  double budgetMiB = 0.0;  // 0: the application's automatic field.memory_budget
 };
 
 // How a command that writes a field compresses a .vti.
@@ -64,7 +65,9 @@ void addCommon(CLI::App* cmd, Common& c, bool dimsRequired) {
                    ->expected(3)
                    ->check(CLI::PositiveNumber);
   if (dimsRequired) dims->required();
-  cmd->add_option("--memory-budget", c.budgetMiB, "largest dense grid accepted, MiB")
+  cmd->add_option("--memory-budget", c.budgetMiB,
+                  "largest dense grid accepted, MiB (default: half this machine's memory, as "
+                  "field.memory_budget = \"auto\")")
       ->check(CLI::PositiveNumber);
 }
 
@@ -72,7 +75,8 @@ LoadOptions optionsFrom(const Common& c) {
   LoadOptions o;
   o.arrayName = c.array;
   if (c.dims.size() == 3) o.resolution = {c.dims[0], c.dims[1], c.dims[2]};
-  o.memoryBudget = std::size_t(c.budgetMiB * 1024.0 * 1024.0);
+  o.memoryBudget = c.budgetMiB > 0.0 ? std::size_t(c.budgetMiB * 1024.0 * 1024.0)
+                                     : std::size_t(fieldMemoryBudget(FieldSpec{}));
   return o;
 }
 

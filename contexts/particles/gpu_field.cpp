@@ -36,7 +36,6 @@ void GpuField::upload(const VectorField& field) {
   else
     uploadBuffer(field);
   dims_ = field.dims();
-  masked_ = field.hasValidity();
   lastUploadMs_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -49,49 +48,36 @@ void GpuField::uploadTexture(const VectorField& field) {
     throw Error(concat("the field's upload: a ", d.x, "x", d.y, "x", d.z,
                        " field exceeds this GPU's 3D ", "texture limit of ", maxSize,
                        " per axis; lower field.resolution"));
-  // RGB32F (texelFetch reads alpha 1: every point valid), or RGBA32F with the
-  // validity mask in alpha when the field has one.
-  const bool masked = field.hasValidity(), half = field.halfPrecision();
-  if (!texture_ || dims_ != d || masked_ != masked || half_ != half) {
+  // RGBA32F (or RGBA16F), the validity mask in alpha (1 at every point of a
+  // field without one). Not RGB: NVIDIA's driver converts three-channel
+  // texels on the CPU, and took 3.5x as long to upload a 384^3 grid as
+  // four-channel ones (docs/PERFORMANCE.md); it pads them to four on the GPU anyway.
+  const bool half = field.halfPrecision();
+  if (!texture_ || dims_ != d || half_ != half) {
     texture_ = gl::createTexture(GL_TEXTURE_3D);
     glGetError();
-    const GLenum format =
-        half ? (masked ? GL_RGBA16F : GL_RGB16F) : (masked ? GL_RGBA32F : GL_RGB32F);
-    glTextureStorage3D(texture_.id(), 1, format, d.x, d.y, d.z);
+    glTextureStorage3D(texture_.id(), 1, half ? GL_RGBA16F : GL_RGBA32F, d.x, d.y, d.z);
     if (glGetError() != GL_NO_ERROR) {
       texture_ = {};
       throw Error(concat("the field's upload: no GPU memory for a ", d.x, "x", d.y, "x", d.z,
-                         " field (", double(d.x) * d.y * d.z * (masked ? 16.0 : 12.0),
+                         " field (", double(d.x) * d.y * d.z * (half ? 8.0 : 16.0),
                          " bytes); lower field.resolution"));
     }
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
   half_ = half;
-  const Layout layout = half ? (masked ? Layout::HalfRgba : Layout::HalfRgb)
-                             : (masked ? Layout::FloatRgba : Layout::FloatRgb);
-  glPixelStorei(GL_UNPACK_ALIGNMENT, half ? 2 : 4);
-  stageSlabs(field, layout, [&](const gl::Buffer& staging, int firstLayer, int layers) {
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, staging.id());
-    glTextureSubImage3D(texture_.id(), 0, 0, 0, firstLayer, d.x, d.y, layers,
-                        masked ? GL_RGBA : GL_RGB, half ? GL_HALF_FLOAT : GL_FLOAT, nullptr);
-  });
-  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+  stageSlabs(field, half ? Layout::HalfRgba : Layout::FloatRgba,
+             [&](const gl::Buffer& staging, int firstLayer, int layers) {
+               glBindBuffer(GL_PIXEL_UNPACK_BUFFER, staging.id());
+               glTextureSubImage3D(texture_.id(), 0, 0, 0, firstLayer, d.x, d.y, layers, GL_RGBA,
+                                   half ? GL_HALF_FLOAT : GL_FLOAT, nullptr);
+             });
   glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
 }
 
 std::size_t GpuField::texelBytes(Layout layout) {
-  switch (layout) {
-    case Layout::FloatRgb:
-      return 12;
-    case Layout::FloatRgba:
-      return 16;
-    case Layout::HalfRgb:
-      return 6;
-    case Layout::HalfRgba:
-      return 8;
-  }
-  return 16;
+  return layout == Layout::HalfRgba ? 8 : 16;
 }
 
 void GpuField::writeTexels(const VectorField& field, Layout layout, std::size_t first,
@@ -102,28 +88,14 @@ void GpuField::writeTexels(const VectorField& field, Layout layout, std::size_t 
   const auto isValid = [&](std::size_t i) { return valid.empty() || valid[i] != 0; };
   const std::uint16_t one = glm::packHalf1x16(1.0f), zero = glm::packHalf1x16(0.0f);
   forChunks(values.size(), [&](std::size_t begin, std::size_t end) {
-    switch (layout) {
-      case Layout::FloatRgb:
-        std::memcpy(static_cast<glm::vec3*>(out) + begin, values.data() + begin,
-                    (end - begin) * sizeof(glm::vec3));
-        break;
-      case Layout::FloatRgba:  // w: 1 valid, 0 not
-        for (std::size_t i = begin; i < end; ++i)
-          static_cast<glm::vec4*>(out)[i] = glm::vec4(values[i], isValid(i) ? 1.0f : 0.0f);
-        break;
-      case Layout::HalfRgb:
-      case Layout::HalfRgba: {
-        const std::size_t channels = layout == Layout::HalfRgba ? 4 : 3;
-        auto* texels = static_cast<std::uint16_t*>(out);
-        for (std::size_t i = begin; i < end; ++i) {
-          const glm::u16vec3 h = glm::packHalf(values[i]);
-          for (std::size_t c = 0; c < 3; ++c)
-            texels[i * channels + c] = h[int(c)];
-          if (channels == 4) texels[i * 4 + 3] = isValid(i) ? one : zero;
-        }
-        break;
-      }
+    if (layout == Layout::FloatRgba) {  // w: 1 valid, 0 not
+      for (std::size_t i = begin; i < end; ++i)
+        static_cast<glm::vec4*>(out)[i] = glm::vec4(values[i], isValid(i) ? 1.0f : 0.0f);
+      return;
     }
+    auto* texels = static_cast<glm::u16vec4*>(out);
+    for (std::size_t i = begin; i < end; ++i)
+      texels[i] = glm::u16vec4(glm::packHalf(values[i]), isValid(i) ? one : zero);
   });
 }
 
