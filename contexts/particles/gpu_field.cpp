@@ -36,6 +36,7 @@ void GpuField::upload(const VectorField& field) {
   else
     uploadBuffer(field);
   dims_ = field.dims();
+  masked_ = field.hasValidity();
   lastUploadMs_ =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -48,36 +49,49 @@ void GpuField::uploadTexture(const VectorField& field) {
     throw Error(concat("the field's upload: a ", d.x, "x", d.y, "x", d.z,
                        " field exceeds this GPU's 3D ", "texture limit of ", maxSize,
                        " per axis; lower field.resolution"));
-  // RGBA32F (or RGBA16F), the validity mask in alpha (1 at every point of a
-  // field without one). Not RGB: NVIDIA's driver converts three-channel
-  // texels on the CPU, and took 3.5x as long to upload a 384^3 grid as
-  // four-channel ones (docs/PERFORMANCE.md); it pads them to four on the GPU anyway.
-  const bool half = field.halfPrecision();
-  if (!texture_ || dims_ != d || half_ != half) {
+  // RGB32F (texelFetch reads alpha 1: every point valid), or RGBA32F with the
+  // validity mask in alpha when the field has one.
+  const bool masked = field.hasValidity(), half = field.halfPrecision();
+  if (!texture_ || dims_ != d || masked_ != masked || half_ != half) {
     texture_ = gl::createTexture(GL_TEXTURE_3D);
     glGetError();
-    glTextureStorage3D(texture_.id(), 1, half ? GL_RGBA16F : GL_RGBA32F, d.x, d.y, d.z);
+    const GLenum format =
+        half ? (masked ? GL_RGBA16F : GL_RGB16F) : (masked ? GL_RGBA32F : GL_RGB32F);
+    glTextureStorage3D(texture_.id(), 1, format, d.x, d.y, d.z);
     if (glGetError() != GL_NO_ERROR) {
       texture_ = {};
       throw Error(concat("the field's upload: no GPU memory for a ", d.x, "x", d.y, "x", d.z,
-                         " field (", double(d.x) * d.y * d.z * (half ? 8.0 : 16.0),
+                         " field (", double(d.x) * d.y * d.z * (masked ? 16.0 : 12.0),
                          " bytes); lower field.resolution"));
     }
     glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
   half_ = half;
-  stageSlabs(field, half ? Layout::HalfRgba : Layout::FloatRgba,
-             [&](const gl::Buffer& staging, int firstLayer, int layers) {
-               glBindBuffer(GL_PIXEL_UNPACK_BUFFER, staging.id());
-               glTextureSubImage3D(texture_.id(), 0, 0, 0, firstLayer, d.x, d.y, layers, GL_RGBA,
-                                   half ? GL_HALF_FLOAT : GL_FLOAT, nullptr);
-             });
+  const Layout layout = half ? (masked ? Layout::HalfRgba : Layout::HalfRgb)
+                             : (masked ? Layout::FloatRgba : Layout::FloatRgb);
+  glPixelStorei(GL_UNPACK_ALIGNMENT, half ? 2 : 4);
+  stageSlabs(field, layout, [&](const gl::Buffer& staging, int firstLayer, int layers) {
+    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, staging.id());
+    glTextureSubImage3D(texture_.id(), 0, 0, 0, firstLayer, d.x, d.y, layers,
+                        masked ? GL_RGBA : GL_RGB, half ? GL_HALF_FLOAT : GL_FLOAT, nullptr);
+  });
+  glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
 }
 
 std::size_t GpuField::texelBytes(Layout layout) {
-  return layout == Layout::HalfRgba ? 8 : 16;
+  switch (layout) {
+    case Layout::FloatRgb:
+      return 12;
+    case Layout::FloatRgba:
+      return 16;
+    case Layout::HalfRgb:
+      return 6;
+    case Layout::HalfRgba:
+      return 8;
+  }
+  return 16;
 }
 
 void GpuField::writeTexels(const VectorField& field, Layout layout, std::size_t first,
@@ -88,14 +102,28 @@ void GpuField::writeTexels(const VectorField& field, Layout layout, std::size_t 
   const auto isValid = [&](std::size_t i) { return valid.empty() || valid[i] != 0; };
   const std::uint16_t one = glm::packHalf1x16(1.0f), zero = glm::packHalf1x16(0.0f);
   forChunks(values.size(), [&](std::size_t begin, std::size_t end) {
-    if (layout == Layout::FloatRgba) {  // w: 1 valid, 0 not
-      for (std::size_t i = begin; i < end; ++i)
-        static_cast<glm::vec4*>(out)[i] = glm::vec4(values[i], isValid(i) ? 1.0f : 0.0f);
-      return;
+    switch (layout) {
+      case Layout::FloatRgb:
+        std::memcpy(static_cast<glm::vec3*>(out) + begin, values.data() + begin,
+                    (end - begin) * sizeof(glm::vec3));
+        break;
+      case Layout::FloatRgba:  // w: 1 valid, 0 not
+        for (std::size_t i = begin; i < end; ++i)
+          static_cast<glm::vec4*>(out)[i] = glm::vec4(values[i], isValid(i) ? 1.0f : 0.0f);
+        break;
+      case Layout::HalfRgb:
+      case Layout::HalfRgba: {
+        const std::size_t channels = layout == Layout::HalfRgba ? 4 : 3;
+        auto* texels = static_cast<std::uint16_t*>(out);
+        for (std::size_t i = begin; i < end; ++i) {
+          const glm::u16vec3 h = glm::packHalf(values[i]);
+          for (std::size_t c = 0; c < 3; ++c)
+            texels[i * channels + c] = h[int(c)];
+          if (channels == 4) texels[i * 4 + 3] = isValid(i) ? one : zero;
+        }
+        break;
+      }
     }
-    auto* texels = static_cast<glm::u16vec4*>(out);
-    for (std::size_t i = begin; i < end; ++i)
-      texels[i] = glm::u16vec4(glm::packHalf(values[i]), isValid(i) ? one : zero);
   });
 }
 
@@ -107,7 +135,8 @@ void GpuField::stageSlabs(const VectorField& field, Layout layout,
   const int slabLayers = int(std::clamp<std::size_t>(kSlabBytes / layerBytes, 1, std::size_t(d.z)));
   const GLsizeiptr slabBytes = GLsizeiptr(std::size_t(slabLayers) * layerBytes);
   // Two slabs: the cores fill one while the GPU copies the other. Mapping a
-  // slab again waits for the GPU's copy out of it (no unsynchronized map).
+  // slab again waits for the GPU's copy out of it (no unsynchronized map);
+  // invalidated, its old contents need not be kept.
   std::array<gl::Buffer, 2> ring;
   for (gl::Buffer& b : ring) {
     b = gl::createBuffer();
@@ -122,7 +151,8 @@ void GpuField::stageSlabs(const VectorField& field, Layout layout,
     const int layers = std::min(slabLayers, d.z - z);
     const gl::Buffer& staging = ring[std::size_t(slab)];
     const GLsizeiptr bytes = GLsizeiptr(std::size_t(layers) * layerBytes);
-    void* out = glMapNamedBufferRange(staging.id(), 0, bytes, GL_MAP_WRITE_BIT);
+    void* out = glMapNamedBufferRange(staging.id(), 0, bytes,
+                                      GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
     if (!out)
       throw Error(concat("the field's upload: no memory to stage a ", d.x, "x", d.y, "x", d.z,
                          " field (slabs of ", slabBytes, " bytes); lower field.resolution"));

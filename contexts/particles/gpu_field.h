@@ -2,10 +2,10 @@
 // TerrainTexture: a HeightMap as an R32F 2D texture. Shaders read both
 // without the sampler's filter and interpolate themselves
 // (shaders/particle_physics.glsl), so the GPU agrees with the CPU bit for bit.
-//   Texture: an RGBA32F 3D texture read with texelFetch (thesis 5.2); the
-//     transform-feedback backend's. Alpha holds the validity mask
-//     (VectorField::setValidity; 1 everywhere for a field without one). A
-//     field rounded to half precision (field.precision = "half") is
+//   Texture: an RGB32F 3D texture read with texelFetch (thesis 5.2); the
+//     transform-feedback backend's. A field with a validity mask
+//     (VectorField::setValidity) is RGBA32F, the mask in alpha. A field
+//     rounded to half precision (field.precision = "half") is RGB16F or
 //     RGBA16F, always a texture: texelFetch returns the very values the CPU
 //     twin samples, in half the memory.
 //   Buffer: a shader storage buffer of vec4 (xyz, w: 1 valid, 0 not), x fastest; what
@@ -55,9 +55,9 @@ class GpuField {
   static bool fitsBuffer(const VectorField& field);
   void uploadTexture(const VectorField& field);
   void uploadBuffer(const VectorField& field);
-  // How the grid's points are laid out for the GPU: float or half RGBA, the
-  // validity mask in alpha (the buffer's vec4 is FloatRgba).
-  enum class Layout { FloatRgba, HalfRgba };
+  // How the grid's points are laid out for the GPU: float or half, RGB, or
+  // RGBA with the validity mask in alpha (the buffer's vec4 is FloatRgba).
+  enum class Layout { FloatRgb, FloatRgba, HalfRgb, HalfRgba };
   static std::size_t texelBytes(Layout layout);
   // Points [first, first + count) of the grid as texels at `out`.
   static void writeTexels(const VectorField& field, Layout layout, std::size_t first,
@@ -78,6 +78,7 @@ class GpuField {
   std::shared_ptr<const VectorField> holds_;
   glm::ivec3 dims_{0};
   bool half_ = false;
+  bool masked_ = false;
   double lastUploadMs_ = 0.0;
 };
 
