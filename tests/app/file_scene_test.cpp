@@ -8,6 +8,7 @@
 
 #include "app/file_scene.h"
 #include "core/field/analytic_field.h"
+#include "core/io/vti_writer.h"
 #include "core/sim/attribute_table.h"
 #include "tests/app/run_process.h"
 #include "tests/io/openfoam_case.h"
@@ -182,6 +183,27 @@ TEST(FileScene, TheFileIsReadOnce) {
   for (std::string line; std::getline(lines, line);)
     reads += line.find("loaded ") != std::string::npos && line.find("two.vti") != std::string::npos;
   EXPECT_EQ(reads, 1) << run.output;
+}
+
+// A configuration given with the file keeps its [field] size settings: its
+// memory budget holds for the file as for its own source.
+TEST(FileScene, TheConfigurationsMemoryBudgetHoldsForTheFile) {
+  const auto dir = test::scratchDir("file-scene-budget");
+  writeVti(dir / "wind.vti",
+           VectorField(Box{{0, 0, 0}, {1, 1, 1}}, glm::ivec3(64),
+                       std::vector<glm::vec3>(64 * 64 * 64, glm::vec3(1.0f, 0.0f, 0.0f))),
+           "velocity", VtiCompression::None);  // 3 MiB of vectors
+  std::ofstream(dir / "small.toml")
+      << "include = \"" << SANDSTORM_SOURCE_DIR
+      << "/config/desktop.toml\"\n[field]\nmemory_budget = \"1 MiB\"\n";
+  const auto r = test::runSandstorm("'" + (dir / "wind.vti").string() + "' --config '" +
+                                    (dir / "small.toml").string() + "' --frames 1");
+  EXPECT_EQ(r.exitCode, 1) << r.output;
+  EXPECT_NE(r.output.find("field.memory_budget"), std::string::npos) << r.output;
+  const auto fits =
+      test::runSandstorm("'" + (dir / "wind.vti").string() +
+                         "' --frames 1 --set sim.maximum=1000 --screenshot '" + dir.string() + "'");
+  EXPECT_EQ(fits.exitCode, 0) << fits.output;
 }
 
 TEST(FileScene, AFileThatIsNotThereOrNotAFieldIsAClearError) {
