@@ -47,14 +47,21 @@ void listArrays(const std::vector<VtkBlock>& blocks, LoadReport& report) {
   }
 }
 
-// Copies tuples into `out`, zeroing non-finite ones and those `mask` marks invalid.
-// Float and double arrays laid out as x y z x y z (what every reader makes of a
-// file's vectors) are copied from their memory over the cores; any other
-// array through VTK's generic accessors.
+// A validity mask as one byte a point (as VTK's readers and
+// vtkResampleToImage make it), or nullptr for none or one laid out otherwise.
+const std::uint8_t* byteMaskOf(vtkDataArray* mask) {
+  const bool bytes = mask && mask->GetNumberOfComponents() == 1 && mask->GetDataTypeSize() == 1 &&
+                     mask->HasStandardMemoryLayout();
+  return bytes ? static_cast<const std::uint8_t*>(mask->GetVoidPointer(0)) : nullptr;
+}
+
+// Copies `n` x y z tuples into `out` over the cores, zeroing non-finite ones
+// and those `valid` marks invalid; returns how many were non-finite. `out`
+// may be `in` itself (floats zeroed in place).
 template <class T>
-std::size_t copyContiguous(const T* in, const std::uint8_t* valid, std::vector<glm::vec3>& out) {
+std::size_t copyContiguous(const T* in, const std::uint8_t* valid, glm::vec3* out, std::size_t n) {
   std::atomic<std::size_t> nonFinite{0};
-  forChunks(out.size(), [&](std::size_t begin, std::size_t end) {
+  forChunks(n, [&](std::size_t begin, std::size_t end) {
     std::size_t bad = 0;
     for (std::size_t i = begin; i < end; ++i) {
       const glm::vec3 v{float(in[3 * i]), float(in[3 * i + 1]), float(in[3 * i + 2])};
@@ -68,18 +75,19 @@ std::size_t copyContiguous(const T* in, const std::uint8_t* valid, std::vector<g
   return nonFinite;
 }
 
+// Copies an array's tuples into `out`, zeroing non-finite ones and those
+// `mask` marks invalid. Float and double arrays laid out as x y z x y z (what
+// every reader makes of a file's vectors) are copied from their memory over
+// the cores; any other array through VTK's generic accessors.
 std::size_t copyVectors(vtkDataArray* array, vtkDataArray* mask, std::vector<glm::vec3>& out) {
   const vtkIdType n = array->GetNumberOfTuples();
   out.resize(std::size_t(n));
-  const bool byteMask = mask && mask->GetNumberOfComponents() == 1 &&
-                        mask->GetDataTypeSize() == 1 && mask->HasStandardMemoryLayout();
-  if (array->GetNumberOfComponents() == 3 && (!mask || byteMask)) {
-    const auto* valid =
-        byteMask ? static_cast<const std::uint8_t*>(mask->GetVoidPointer(0)) : nullptr;
+  const std::uint8_t* valid = byteMaskOf(mask);
+  if (array->GetNumberOfComponents() == 3 && (!mask || valid)) {
     if (auto* f = vtkFloatArray::FastDownCast(array))
-      return copyContiguous(f->GetPointer(0), valid, out);
+      return copyContiguous(f->GetPointer(0), valid, out.data(), out.size());
     if (auto* d = vtkDoubleArray::FastDownCast(array))
-      return copyContiguous(d->GetPointer(0), valid, out);
+      return copyContiguous(d->GetPointer(0), valid, out.data(), out.size());
   }
   std::size_t nonFinite = 0;
   double t[3];
@@ -107,26 +115,11 @@ std::size_t copyVectors(vtkDataArray* array, vtkDataArray* mask, std::vector<glm
 std::optional<VectorValues> adoptVectors(vtkDataArray* array, vtkDataArray* mask,
                                          std::size_t& nonFinite) {
   auto* f = vtkFloatArray::FastDownCast(array);
-  const bool byteMask = mask && mask->GetNumberOfComponents() == 1 &&
-                        mask->GetDataTypeSize() == 1 && mask->HasStandardMemoryLayout();
-  if (!f || f->GetNumberOfComponents() != 3 || (mask && !byteMask)) return std::nullopt;
+  const std::uint8_t* valid = byteMaskOf(mask);
+  if (!f || f->GetNumberOfComponents() != 3 || (mask && !valid)) return std::nullopt;
   const std::size_t n = std::size_t(f->GetNumberOfTuples());
   auto* values = reinterpret_cast<glm::vec3*>(f->GetPointer(0));
-  const auto* valid =
-      byteMask ? static_cast<const std::uint8_t*>(mask->GetVoidPointer(0)) : nullptr;
-  std::atomic<std::size_t> bad{0};
-  forChunks(n, [&](std::size_t begin, std::size_t end) {
-    std::size_t local = 0;
-    for (std::size_t i = begin; i < end; ++i) {
-      const glm::vec3 v = values[i];
-      const bool finite = std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-      const bool masked = valid && valid[i] == 0;
-      local += finite || masked ? 0 : 1;
-      if (!finite || masked) values[i] = glm::vec3(0.0f);
-    }
-    bad += local;
-  });
-  nonFinite = bad;
+  nonFinite = copyContiguous(f->GetPointer(0), valid, values, n);
   // The array lives on in the grid; VTK counts its references atomically.
   auto owner = std::make_shared<vtkSmartPointer<vtkFloatArray>>(f);
   return VectorValues::adopt(values, n, std::move(owner));

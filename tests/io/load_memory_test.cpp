@@ -1,6 +1,6 @@
 // A grid read from a file is held once: loading it raises this process's
 // resident memory by about the grid's size, not twice it (VTK's array and a
-// copy, as it did: 1.67x measured before). Measured as the peak resident set
+// copy, as it did: 2.0x measured before). Measured as the peak resident set
 // (VmHWM, reset first through /proc/self/clear_refs) over the resident set
 // before the load.
 #include <gtest/gtest.h>
