@@ -6,7 +6,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
@@ -20,7 +19,12 @@
 namespace sandstorm {
 
 void GpuField::upload(const VectorField& field) {
-  const auto start = std::chrono::steady_clock::now();
+  prepare(field);
+  stageSlabs(field);
+}
+
+std::size_t GpuField::prepare(const VectorField& field) {
+  holds_ = nullptr;
   // A half-precision grid is a 16-bit float texture (the buffer holds floats).
   const Storage storage =
       preferred_ == Storage::Buffer && !field.halfPrecision() && fitsBuffer(field)
@@ -31,17 +35,20 @@ void GpuField::upload(const VectorField& field) {
     buffer_ = {};
     storage_ = storage;
   }
-  if (storage_ == Storage::Texture)
-    uploadTexture(field);
-  else
-    uploadBuffer(field);
+  const bool masked = field.hasValidity(), half = field.halfPrecision();
+  // The buffer's vec4 carries the mask (w: 1 valid, 0 not) whether or not there is one.
+  const Layout layout = storage_ == Storage::Buffer ? Layout::FloatRgba
+                        : half                      ? (masked ? Layout::HalfRgba : Layout::HalfRgb)
+                               : (masked ? Layout::FloatRgba : Layout::FloatRgb);
+  const bool same = dims_ == field.dims() && layout_ == layout;
+  if (storage_ == Storage::Texture && !(texture_ && same)) allocateTexture(field);
+  if (storage_ == Storage::Buffer && !(buffer_ && same)) allocateBuffer(field);
   dims_ = field.dims();
-  masked_ = field.hasValidity();
-  lastUploadMs_ =
-      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  layout_ = layout;
+  return layerBytes();
 }
 
-void GpuField::uploadTexture(const VectorField& field) {
+void GpuField::allocateTexture(const VectorField& field) {
   GLint maxSize = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &maxSize);
   const glm::ivec3 d = field.dims();
@@ -52,30 +59,52 @@ void GpuField::uploadTexture(const VectorField& field) {
   // RGB32F (texelFetch reads alpha 1: every point valid), or RGBA32F with the
   // validity mask in alpha when the field has one.
   const bool masked = field.hasValidity(), half = field.halfPrecision();
-  if (!texture_ || dims_ != d || masked_ != masked || half_ != half) {
-    texture_ = gl::createTexture(GL_TEXTURE_3D);
-    glGetError();
-    const GLenum format =
-        half ? (masked ? GL_RGBA16F : GL_RGB16F) : (masked ? GL_RGBA32F : GL_RGB32F);
-    glTextureStorage3D(texture_.id(), 1, format, d.x, d.y, d.z);
-    if (glGetError() != GL_NO_ERROR) {
-      texture_ = {};
-      throw Error(concat("the field's upload: no GPU memory for a ", d.x, "x", d.y, "x", d.z,
-                         " field (", double(d.x) * d.y * d.z * (masked ? 16.0 : 12.0),
-                         " bytes); lower field.resolution"));
-    }
-    glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  texture_ = gl::createTexture(GL_TEXTURE_3D);
+  glGetError();
+  const GLenum format =
+      half ? (masked ? GL_RGBA16F : GL_RGB16F) : (masked ? GL_RGBA32F : GL_RGB32F);
+  glTextureStorage3D(texture_.id(), 1, format, d.x, d.y, d.z);
+  if (glGetError() != GL_NO_ERROR) {
+    texture_ = {};
+    dims_ = glm::ivec3(0);
+    throw Error(concat("the field's upload: no GPU memory for a ", d.x, "x", d.y, "x", d.z,
+                       " field (",
+                       double(d.x) * d.y * d.z * (masked ? 16.0 : 12.0) / (half ? 2 : 1),
+                       " bytes); lower field.resolution"));
   }
-  half_ = half;
-  const Layout layout = half ? (masked ? Layout::HalfRgba : Layout::HalfRgb)
-                             : (masked ? Layout::FloatRgba : Layout::FloatRgb);
+  glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+}
+
+void GpuField::allocateBuffer(const VectorField& field) {
+  const GLsizeiptr bytes = GLsizeiptr(field.pointCount() * sizeof(glm::vec4));
+  buffer_ = gl::createBuffer();
+  glGetError();
+  glNamedBufferStorage(buffer_.id(), bytes, nullptr, 0);
+  if (glGetError() != GL_NO_ERROR) {
+    buffer_ = {};
+    dims_ = glm::ivec3(0);
+    const glm::ivec3 d = field.dims();
+    throw Error(concat("the field's upload: no GPU memory for a ", d.x, "x", d.y, "x", d.z,
+                       " field (", bytes, " bytes); lower field.resolution"));
+  }
+}
+
+void GpuField::copyLayers(const gl::Buffer& staging, std::size_t offset, int firstLayer,
+                          int layers) {
+  if (storage_ == Storage::Buffer) {
+    glCopyNamedBufferSubData(staging.id(), buffer_.id(), GLintptr(offset),
+                             GLintptr(std::size_t(firstLayer) * layerBytes()),
+                             GLsizeiptr(std::size_t(layers) * layerBytes()));
+    return;
+  }
+  const bool masked = layout_ == Layout::FloatRgba || layout_ == Layout::HalfRgba;
+  const bool half = layout_ == Layout::HalfRgb || layout_ == Layout::HalfRgba;
+  glBindBuffer(GL_PIXEL_UNPACK_BUFFER, staging.id());
   glPixelStorei(GL_UNPACK_ALIGNMENT, half ? 2 : 4);
-  stageSlabs(field, layout, [&](const gl::Buffer& staging, int firstLayer, int layers) {
-    glBindBuffer(GL_PIXEL_UNPACK_BUFFER, staging.id());
-    glTextureSubImage3D(texture_.id(), 0, 0, 0, firstLayer, d.x, d.y, layers,
-                        masked ? GL_RGBA : GL_RGB, half ? GL_HALF_FLOAT : GL_FLOAT, nullptr);
-  });
+  glTextureSubImage3D(texture_.id(), 0, 0, 0, firstLayer, dims_.x, dims_.y, layers,
+                      masked ? GL_RGBA : GL_RGB, half ? GL_HALF_FLOAT : GL_FLOAT,
+                      reinterpret_cast<const void*>(offset));
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
 }
@@ -94,8 +123,11 @@ std::size_t GpuField::texelBytes(Layout layout) {
   return 16;
 }
 
-void GpuField::writeTexels(const VectorField& field, Layout layout, std::size_t first,
-                           std::size_t count, void* out) {
+void GpuField::writeLayers(const VectorField& field, int firstLayer, int layers, void* out) const {
+  const std::size_t layerPoints = std::size_t(dims_.x) * std::size_t(dims_.y);
+  const std::size_t first = std::size_t(firstLayer) * layerPoints;
+  const std::size_t count = std::size_t(layers) * layerPoints;
+  const Layout layout = layout_;
   const std::span<const glm::vec3> values = field.values().subspan(first, count);
   const std::span<const std::uint8_t> valid =
       field.hasValidity() ? field.validity().subspan(first, count) : field.validity();
@@ -127,13 +159,11 @@ void GpuField::writeTexels(const VectorField& field, Layout layout, std::size_t 
   });
 }
 
-void GpuField::stageSlabs(const VectorField& field, Layout layout,
-                          const std::function<void(const gl::Buffer&, int, int)>& copy) {
-  const glm::ivec3 d = field.dims();
-  const std::size_t layerPoints = std::size_t(d.x) * std::size_t(d.y);
-  const std::size_t layerBytes = layerPoints * texelBytes(layout);
-  const int slabLayers = int(std::clamp<std::size_t>(kSlabBytes / layerBytes, 1, std::size_t(d.z)));
-  const GLsizeiptr slabBytes = GLsizeiptr(std::size_t(slabLayers) * layerBytes);
+void GpuField::stageSlabs(const VectorField& field) {
+  const glm::ivec3 d = dims_;
+  const int slabLayers =
+      int(std::clamp<std::size_t>(kSlabBytes / layerBytes(), 1, std::size_t(d.z)));
+  const GLsizeiptr slabBytes = GLsizeiptr(std::size_t(slabLayers) * layerBytes());
   // Two slabs: the cores fill one while the GPU copies the other. Mapping a
   // slab again waits for the GPU's copy out of it (no unsynchronized map);
   // invalidated, its old contents need not be kept.
@@ -150,16 +180,15 @@ void GpuField::stageSlabs(const VectorField& field, Layout layout,
   for (int z = 0, slab = 0; z < d.z; z += slabLayers, slab ^= 1) {
     const int layers = std::min(slabLayers, d.z - z);
     const gl::Buffer& staging = ring[std::size_t(slab)];
-    const GLsizeiptr bytes = GLsizeiptr(std::size_t(layers) * layerBytes);
+    const GLsizeiptr bytes = GLsizeiptr(std::size_t(layers) * layerBytes());
     void* out = glMapNamedBufferRange(staging.id(), 0, bytes,
                                       GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT);
     if (!out)
       throw Error(concat("the field's upload: no memory to stage a ", d.x, "x", d.y, "x", d.z,
                          " field (slabs of ", slabBytes, " bytes); lower field.resolution"));
-    writeTexels(field, layout, std::size_t(z) * layerPoints, std::size_t(layers) * layerPoints,
-                out);
+    writeLayers(field, z, layers, out);
     glUnmapNamedBuffer(staging.id());
-    copy(staging, z, layers);
+    copyLayers(staging, 0, z, layers);
   }
 }
 
@@ -167,29 +196,6 @@ bool GpuField::fitsBuffer(const VectorField& field) {
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
   return GLint64(field.values().size() * sizeof(glm::vec4)) <= maxBlock;
-}
-
-void GpuField::uploadBuffer(const VectorField& field) {
-  const GLsizeiptr bytes = GLsizeiptr(field.pointCount() * sizeof(glm::vec4));
-  if (!buffer_ || dims_ != field.dims()) {
-    buffer_ = gl::createBuffer();
-    glGetError();
-    glNamedBufferStorage(buffer_.id(), bytes, nullptr, 0);
-    if (glGetError() != GL_NO_ERROR) {
-      buffer_ = {};
-      const glm::ivec3 d = field.dims();
-      throw Error(concat("the field's upload: no GPU memory for a ", d.x, "x", d.y, "x", d.z,
-                         " field (", bytes, " bytes); lower field.resolution"));
-    }
-  }
-  // Staged, then copied by the GPU (see uploadTexture).
-  const std::size_t layerBytes =
-      std::size_t(field.dims().x) * std::size_t(field.dims().y) * sizeof(glm::vec4);
-  stageSlabs(field, Layout::FloatRgba, [&](const gl::Buffer& staging, int firstLayer, int layers) {
-    glCopyNamedBufferSubData(staging.id(), buffer_.id(), 0,
-                             GLintptr(std::size_t(firstLayer) * layerBytes),
-                             GLsizeiptr(std::size_t(layers) * layerBytes));
-  });
 }
 
 void GpuField::show(std::shared_ptr<const VectorField> field) {

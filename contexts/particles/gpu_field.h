@@ -17,7 +17,6 @@
 //     "texture" makes every grid take that fallback (tests, comparisons).
 #pragma once
 
-#include <functional>
 #include <memory>
 #include <vector>
 
@@ -49,27 +48,35 @@ class GpuField {
   void bind(Slot slot) const;
   // A texture-stored grid on any texture unit (the vorticity grids: units 5 and 6).
   void bindTexture(int unit) const;
-  double lastUploadMs() const { return lastUploadMs_; }
+
+  // An upload in parts (GridPrefetch), what upload() does in one go:
+  // prepare() makes the texture or buffer ready for `field` (forgetting what
+  // this held) and returns the bytes a z layer of its texels takes;
+  // writeLayers() writes layers of them anywhere, from any thread (no GL);
+  // copyLayers() copies layers from a buffer holding them, at `offset`;
+  // hold() marks the field held once every layer is copied.
+  std::size_t prepare(const VectorField& field);
+  void writeLayers(const VectorField& field, int firstLayer, int layers, void* out) const;
+  void copyLayers(const gl::Buffer& staging, std::size_t offset, int firstLayer, int layers);
+  void hold(std::shared_ptr<const VectorField> field) { holds_ = std::move(field); }
 
  private:
   static bool fitsBuffer(const VectorField& field);
-  void uploadTexture(const VectorField& field);
-  void uploadBuffer(const VectorField& field);
+  void allocateTexture(const VectorField& field);
+  void allocateBuffer(const VectorField& field);
   // How the grid's points are laid out for the GPU: float or half, RGB, or
   // RGBA with the validity mask in alpha (the buffer's vec4 is FloatRgba).
   enum class Layout { FloatRgb, FloatRgba, HalfRgb, HalfRgba };
   static std::size_t texelBytes(Layout layout);
-  // Points [first, first + count) of the grid as texels at `out`.
-  static void writeTexels(const VectorField& field, Layout layout, std::size_t first,
-                          std::size_t count, void* out);
+  std::size_t layerBytes() const {
+    return std::size_t(dims_.x) * std::size_t(dims_.y) * texelBytes(layout_);
+  }
   // The grid through staging buffers the GPU copies from (so the frame does
   // not wait for the driver to take a copy of hundreds of megabytes), a slab
   // of whole z layers at a time, each written over the cores through a
-  // mapping and handed to `copy` (buffer, first layer, layers). Two slabs of
-  // about kSlabBytes: staging takes tens of megabytes of host memory, not a
-  // second copy of the grid.
-  static void stageSlabs(const VectorField& field, Layout layout,
-                         const std::function<void(const gl::Buffer&, int, int)>& copy);
+  // mapping and copied (copyLayers). Two slabs of about kSlabBytes: staging
+  // takes tens of megabytes of host memory, not a second copy of the grid.
+  void stageSlabs(const VectorField& field);
   static constexpr std::size_t kSlabBytes = std::size_t{32} << 20;
 
   Storage preferred_, storage_;
@@ -77,9 +84,7 @@ class GpuField {
   gl::Buffer buffer_;
   std::shared_ptr<const VectorField> holds_;
   glm::ivec3 dims_{0};
-  bool half_ = false;
-  bool masked_ = false;
-  double lastUploadMs_ = 0.0;
+  Layout layout_ = Layout::FloatRgba;
 };
 
 class TerrainTexture {

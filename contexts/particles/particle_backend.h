@@ -31,6 +31,10 @@ class ParticleBackend {
   // `next`: a time-varying field's next frame (same grid), blended by SimStep::fieldBlend.
   virtual void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
                         std::shared_ptr<const VectorField> next = nullptr) = 0;
+  // Once a frame, after any setField: the frame a time-varying field is
+  // likely to need next (FramePacket::upcomingField; null: none), uploaded
+  // ahead of need where the backend can. A hint: particles never depend on it.
+  virtual void prefetchField(std::shared_ptr<const VectorField>) {}
   // An analytic field's equation: while state.field.mode is Equation, updates
   // evaluate it in place of the field's grid (whose bounds still apply). Null: none.
   virtual void setEquation(std::shared_ptr<const FieldEquation> equation) = 0;

@@ -2,6 +2,8 @@
 
 #include <epoxy/gl.h>
 
+#include <chrono>
+
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -13,9 +15,19 @@ void ParticleEnvironment::setField(std::shared_ptr<const VectorField> field,
       (field->dims() != next->dims() || field->bounds().min != next->bounds().min ||
        field->bounds().max != next->bounds().max))
     throw Error("a time-varying field's frames must share one grid");
-  if (field && field == nextFieldGrid_.holds()) std::swap(fieldGrid_, nextFieldGrid_);
+  const auto start = std::chrono::steady_clock::now();
+  // Each frame from the grid that has it: the pair's two swap places (a
+  // step forwards or backwards), or the prefetch hands over its grid.
+  if (field && fieldGrid_.holds() != field && nextFieldGrid_.holds() == field)
+    std::swap(fieldGrid_, nextFieldGrid_);
+  else if (next && next != field && nextFieldGrid_.holds() != next && fieldGrid_.holds() == next)
+    std::swap(fieldGrid_, nextFieldGrid_);
+  if (field && fieldGrid_.holds() != field) prefetch_.takeInto(fieldGrid_, field);
+  if (next && nextFieldGrid_.holds() != next) prefetch_.takeInto(nextFieldGrid_, next);
   fieldGrid_.show(field);
   nextFieldGrid_.show(next);
+  lastUploadMs_ =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   field_ = std::move(field);
   nextField_ = std::move(next);
   placement_ = placement;

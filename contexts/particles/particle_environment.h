@@ -1,6 +1,7 @@
 // ParticleEnvironment: what particles move through, on the GPU, for either
 // update backend: the field's grid (and a time-varying field's next frame),
-// its placement, its equation (field.mode = equation), a sparse grid read in
+// its placement, the frame after those uploaded ahead of need
+// (GridPrefetch), its equation (field.mode = equation), a sparse grid read in
 // place of the dense one, and the terrain.
 #pragma once
 
@@ -9,6 +10,7 @@
 #include "contexts/particles/field_equation_buffer.h"
 #include "contexts/particles/gpu_field.h"
 #include "contexts/particles/gpu_sparse_field.h"
+#include "contexts/particles/grid_prefetch.h"
 #include "contexts/particles/sim_block.h"
 #include "core/field/field_placement.h"
 
@@ -33,12 +35,18 @@ class ParticleEnvironment {
   // backend's shaders read it as gridStorage() says (FIELD_BUFFER in
   // shaders/particle_physics.glsl).
   explicit ParticleEnvironment(GpuField::Storage storage)
-      : fieldGrid_(storage), nextFieldGrid_(storage) {}
+      : fieldGrid_(storage), nextFieldGrid_(storage), prefetch_(storage) {}
 
   // Throws Error when `next` has another grid than `field`. A frame already on
-  // the GPU is not uploaded again (a sequence steps A,B -> B,C).
+  // the GPU is not uploaded again (a sequence steps A,B -> B,C, or backwards
+  // B,C -> A,B), nor one uploaded ahead of need (prefetch()).
   void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
                 std::shared_ptr<const VectorField> next);
+  // Once a frame, after setField: the frame a time-varying field is likely to
+  // need next (FramePacket::upcomingField; null: none), uploaded ahead of need.
+  void prefetch(std::shared_ptr<const VectorField> upcoming) {
+    prefetch_.advance(std::move(upcoming));
+  }
   void setEquation(std::shared_ptr<const FieldEquation> equation) {
     equation_.set(std::move(equation));
   }
@@ -65,13 +73,16 @@ class ParticleEnvironment {
   // grid, so a storage).
   GpuField::Storage gridStorage() const { return fieldGrid_.storage(); }
 
-  double lastUploadMs() const { return fieldGrid_.lastUploadMs() + nextFieldGrid_.lastUploadMs(); }
+  // What the last setField took: uploads, or finishing a frame on its way.
+  double lastUploadMs() const { return lastUploadMs_; }
 
  private:
   std::shared_ptr<const VectorField> field_, nextField_;
   FieldPlacement placement_;
   std::shared_ptr<const HeightMap> terrain_;
   GpuField fieldGrid_, nextFieldGrid_;
+  GridPrefetch prefetch_;
+  double lastUploadMs_ = 0.0;
   TerrainTexture terrainTexture_;
   FieldEquationBuffer equation_;
   GpuSparseField sparse_;

@@ -43,6 +43,9 @@ class ParticleGeoUpdate final : public ParticleBackend {
 
   void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
                 std::shared_ptr<const VectorField> next = nullptr) override;
+  void prefetchField(std::shared_ptr<const VectorField> upcoming) override {
+    environment_.prefetch(std::move(upcoming));
+  }
   void setEquation(std::shared_ptr<const FieldEquation> equation) override {
     environment_.setEquation(std::move(equation));
   }

@@ -74,6 +74,7 @@ void ParticleSystem::advance(const FramePacket& packet) {
     update_->setSparse(field_->sparse);
     log::debug("frame ", packet.frame, ": field uploaded in ", update_->lastFieldUploadMs(), " ms");
   }
+  update_->prefetchField(packet.upcomingField);
   // The live flow on this GPU, before the particles move through it.
   if (update_->simulates()) {
     const std::uint32_t flow =

@@ -23,6 +23,9 @@ class SharingBackend final : public ParticleBackend {
                 std::shared_ptr<const VectorField> next) override {
     inner_->setField(std::move(field), placement, std::move(next));
   }
+  void prefetchField(std::shared_ptr<const VectorField> upcoming) override {
+    inner_->prefetchField(std::move(upcoming));
+  }
   void setEquation(std::shared_ptr<const FieldEquation> equation) override {
     inner_->setEquation(std::move(equation));
   }

@@ -28,6 +28,21 @@ FieldPlayer::Frame FieldPlayer::current() const {
   return Frame{false, field_, next_, position_.weight};
 }
 
+std::shared_ptr<const VectorField> FieldPlayer::upcoming() const {
+  const std::size_t n = timeline_.size(), first = position_.first, second = position_.second;
+  if (!error_.empty() || first >= n || second >= n) return nullptr;
+  std::size_t i = 0;
+  if (backwards_) {
+    if (first == 0 && !loop_) return nullptr;
+    i = first == 0 ? n - 1 : first - 1;
+  } else {
+    if (second + 1 == n && !loop_) return nullptr;
+    i = (second + 1) % n;
+  }
+  if (i == first || i == second) return nullptr;  // already in use (a short series)
+  return timeline_.frame(i);
+}
+
 void FieldPlayer::append(double time, std::shared_ptr<const VectorField> frame) {
   timeline_.append(time, std::move(frame));
   // The pair in use may now blend towards the new frame: look again at the next packet.
@@ -66,6 +81,8 @@ bool FieldPlayer::fetch(std::uint32_t frame, const FieldTimeline::Position& at, 
 
 FieldPlayer::Frame FieldPlayer::advance(std::uint32_t frame, const FieldPlayback& playback,
                                         double simDt) {
+  backwards_ = playback.speed < 0.0f;
+  loop_ = playback.loop;
   if (playback.follow) time_ = timeline_.time(timeline_.size() - 1);
   const FieldTimeline::Position at = timeline_.at(time_, playback.loop);
   timeline_.readAhead(at, playback.speed < 0.0f, playback.loop);

@@ -56,6 +56,10 @@ class FieldPlayer {
   Frame advance(std::uint32_t frame, const FieldPlayback& playback, double simDt);
   // The pair in use now.
   Frame current() const;
+  // The frame after the pair in use in playback order (as the last advance
+  // went: forwards or backwards, looping or not), if it is in memory; null
+  // otherwise. What walls may upload ahead of need (FramePacket::upcomingField).
+  std::shared_ptr<const VectorField> upcoming() const;
 
   void append(double time, std::shared_ptr<const VectorField> frame);
   const FieldPlacement& placement() const { return placement_; }
@@ -73,6 +77,7 @@ class FieldPlayer {
   FieldTimeline timeline_;
   FieldPlacement placement_;
   double time_ = 0.0;
+  bool backwards_ = false, loop_ = false;  // as the last advance played
   FieldTimeline::Position position_;
   std::shared_ptr<const VectorField> field_, next_;
   WaitListener listener_;

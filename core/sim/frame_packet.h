@@ -61,6 +61,11 @@ struct FramePacket {
   TrackingSample tracking;  // the tracked head and wand (room); inactive without a tracker
   WandRay wand;             // the wand's ray and what it meets, drawn by every wall
   float fieldBlend = 0.0f;  // weight towards fieldUpdate's `next` frame (time-varying fields)
+  // A time-varying field's frame after the pair in use, in playback order,
+  // when it is in memory already: walls upload it ahead of need. A hint:
+  // nothing a wall computes depends on it, and it does not travel to
+  // cluster ranks (FramePacketCodec), which upload each frame as it comes.
+  std::shared_ptr<const VectorField> upcomingField;
   float lodScale =
       1.0f;  // the level of detail's emission scale, already in `emission` (for display)
 

@@ -1,0 +1,119 @@
+#include "contexts/particles/grid_prefetch.h"
+
+#include <epoxy/gl.h>
+
+#include <algorithm>
+#include <chrono>
+#include <exception>
+#include <limits>
+
+#include "core/util/error.h"
+#include "core/util/log.h"
+
+namespace sandstorm {
+
+GridPrefetch::~GridPrefetch() {
+  if (writing_.valid()) writing_.wait();  // the worker writes into staging_'s mapping
+}
+
+void GridPrefetch::advance(std::shared_ptr<const VectorField> wanted) {
+  if (failed_) return;
+  try {
+    if (writing_.valid() && writing_.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
+      written();
+    if (frame_ && !writing_.valid() && copiedLayers_ < layers_) copy(copyBytesPerFrame_);
+    // Another frame wanted: the worker is not stopped midway, and the staging
+    // buffer is rewritten only once the GPU has copied out of it.
+    if (wanted && wanted != frame_ && !writing_.valid() && stagingFree()) start(std::move(wanted));
+  } catch (const std::exception& e) {
+    fail(e.what());
+  }
+}
+
+bool GridPrefetch::takeInto(GpuField& target, const std::shared_ptr<const VectorField>& field) {
+  if (failed_ || !field || field != frame_) return false;
+  try {
+    if (writing_.valid()) written();
+    copy(std::numeric_limits<std::size_t>::max());
+  } catch (const std::exception& e) {
+    fail(e.what());
+    return false;
+  }
+  std::swap(target, grid_);
+  // What target held is whole on the GPU: given back if it is wanted again
+  // (playback turned round).
+  frame_ = grid_.holds();
+  layers_ = copiedLayers_ = 0;
+  return true;
+}
+
+void GridPrefetch::start(std::shared_ptr<const VectorField> field) {
+  frame_ = nullptr;
+  layers_ = copiedLayers_ = 0;
+  layerBytes_ = grid_.prepare(*field);  // GL: on this thread, before the worker starts
+  const std::size_t bytes = layerBytes_ * std::size_t(field->dims().z);
+  if (bytes != stagingBytes_) {
+    staging_ = {};  // deleting a buffer unmaps it
+    mapped_ = nullptr;
+    stagingBytes_ = 0;
+    staging_ = gl::createBuffer();
+    glGetError();
+    // In host memory (CLIENT_STORAGE), mapped for good: the worker writes
+    // there, and the GPU copies from it (FLUSH_EXPLICIT: written() says when).
+    glNamedBufferStorage(staging_.id(), GLsizeiptr(bytes), nullptr,
+                         GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_CLIENT_STORAGE_BIT);
+    if (glGetError() == GL_NO_ERROR)
+      mapped_ = glMapNamedBufferRange(
+          staging_.id(), 0, GLsizeiptr(bytes),
+          GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_FLUSH_EXPLICIT_BIT);
+    if (!mapped_) {
+      staging_ = {};
+      throw Error(concat("no memory to stage a frame of ", bytes, " bytes"));
+    }
+    stagingBytes_ = bytes;
+  }
+  frame_ = field;
+  layers_ = field->dims().z;
+  // The worker only reads the frame and grid_'s layout, and writes the
+  // mapping; takeInto() and the destructor wait for it before either changes.
+  writing_ = std::async(std::launch::async, [this, field = std::move(field)] {
+    grid_.writeLayers(*field, 0, layers_, mapped_);
+  });
+}
+
+void GridPrefetch::written() {
+  writing_.get();  // rethrows what the worker threw
+  glFlushMappedNamedBufferRange(staging_.id(), 0, GLsizeiptr(stagingBytes_));
+}
+
+void GridPrefetch::copy(std::size_t bytes) {
+  if (copiedLayers_ >= layers_) return;
+  const int layers =
+      int(std::clamp<std::size_t>(bytes / layerBytes_, 1, std::size_t(layers_ - copiedLayers_)));
+  grid_.copyLayers(staging_, std::size_t(copiedLayers_) * layerBytes_, copiedLayers_, layers);
+  copiedLayers_ += layers;
+  copied_ = gl::createFence();
+  glFlush();  // so that the fence signals without waiting for the frame's end
+  if (copiedLayers_ == layers_) grid_.hold(frame_);
+}
+
+bool GridPrefetch::stagingFree() const {
+  if (!copied_) return true;
+  const GLenum state = glClientWaitSync(reinterpret_cast<GLsync>(copied_.handle()), 0, 0);
+  return state == GL_ALREADY_SIGNALED || state == GL_CONDITION_SATISFIED;
+}
+
+void GridPrefetch::fail(const std::string& what) {
+  log::warn("field: uploading the next step ahead of need stopped (", what,
+            "); each step is uploaded when it comes into use, as with field.read_ahead = 0");
+  if (writing_.valid()) writing_.wait();
+  failed_ = true;
+  frame_ = nullptr;
+  grid_.hold(nullptr);
+  layers_ = copiedLayers_ = 0;
+  staging_ = {};
+  mapped_ = nullptr;
+  stagingBytes_ = 0;
+}
+
+}  // namespace sandstorm

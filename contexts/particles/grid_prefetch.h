@@ -1,0 +1,78 @@
+// GridPrefetch: a time-varying field's coming frame uploaded ahead of need
+// (FramePacket::upcomingField), so that the frame a new step comes into use
+// pays a swap of grids, not an upload of hundreds of megabytes.
+//
+// A worker thread writes the frame's texels into a staging buffer that stays
+// mapped (no GL call off the walls' thread); once it is done, each frame the
+// walls' thread copies at most kCopyBytesPerFrame of them into a GpuField of
+// this one's own. ParticleEnvironment takes that grid when the frame becomes
+// current or next. Memory beyond the two frames being blended: one frame's
+// texels of host staging and one grid on the GPU.
+//
+// A hint only: a frame wanted before it is all on the GPU is finished on the
+// spot (takeInto()), so what the particles see never depends on the timing.
+#pragma once
+
+#include <cstddef>
+#include <future>
+#include <memory>
+#include <string>
+
+#include "contexts/gl/objects.h"
+#include "contexts/particles/gpu_field.h"
+#include "core/field/vector_field.h"
+
+namespace sandstorm {
+
+class GridPrefetch {
+ public:
+  // `copyBytesPerFrame`: what advance() copies to the GPU at most (a layer
+  // at least).
+  explicit GridPrefetch(GpuField::Storage preferred,
+                        std::size_t copyBytesPerFrame = kCopyBytesPerFrame)
+      : grid_(preferred), copyBytesPerFrame_(copyBytesPerFrame) {}
+  ~GridPrefetch();
+  GridPrefetch(const GridPrefetch&) = delete;
+  GridPrefetch& operator=(const GridPrefetch&) = delete;
+
+  // Once a frame, with the frame wanted next (null: none): moves the copy on,
+  // and starts on `wanted` once the staging buffer is free. Errors (no
+  // memory for the staging or the grid) are logged once and end prefetching:
+  // frames are then uploaded when they come into use, as without it.
+  void advance(std::shared_ptr<const VectorField> wanted);
+  // When `field` is the frame this prepares: finishes it now (waits for the
+  // worker, copies what is left), swaps its grid with `target` (which then
+  // holds `field`; this keeps what it got back, and takes it back if it is
+  // wanted again) and returns true. False, changing nothing, otherwise.
+  bool takeInto(GpuField& target, const std::shared_ptr<const VectorField>& field);
+
+  // The frame whose every layer is on the GPU, ready to take; null while none is.
+  const std::shared_ptr<const VectorField>& ready() const { return grid_.holds(); }
+
+  // Bytes copied to the GPU in one frame at most, by default (a 256^3 frame
+  // of vec4 is 268 MB).
+  static constexpr std::size_t kCopyBytesPerFrame = std::size_t{96} << 20;
+
+ private:
+  void start(std::shared_ptr<const VectorField> field);
+  // Copies up to `bytes` of the written layers (all with SIZE_MAX).
+  void copy(std::size_t bytes);
+  // Makes the written texels visible to the GPU's copies.
+  void written();
+  bool stagingFree() const;
+  void fail(const std::string& what);
+
+  GpuField grid_;
+  std::size_t copyBytesPerFrame_;
+  gl::Buffer staging_;
+  void* mapped_ = nullptr;
+  std::size_t stagingBytes_ = 0;
+  gl::Sync copied_;                           // the last copy out of the staging buffer
+  std::shared_ptr<const VectorField> frame_;  // being prepared or held by grid_
+  std::future<void> writing_;
+  std::size_t layerBytes_ = 0;
+  int layers_ = 0, copiedLayers_ = 0;
+  bool failed_ = false;
+};
+
+}  // namespace sandstorm

@@ -1,0 +1,140 @@
+// GridPrefetch: a time-varying field's coming frame uploaded ahead of need.
+// What it hands over must hold the frame's values exactly (read back from the
+// GPU and compared with the field), whether it was copied over several frames
+// or finished on the spot; a frame it does not prepare is never handed over.
+// That particles moved through a series with it match the CPU twin is
+// ParticleBackendTest.TimeVaryingFieldsBlendTheSameOnBothSides.
+#include "contexts/particles/grid_prefetch.h"
+
+#include <epoxy/gl.h>
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
+#include <vector>
+
+#include "tests/contexts/gl_test.h"
+
+namespace sandstorm {
+namespace {
+
+class GridPrefetchTest : public GlTest, public ::testing::WithParamInterface<GpuField::Storage> {};
+
+std::shared_ptr<const VectorField> frame(float seed, bool masked = false) {
+  auto f = std::make_shared<VectorField>(Box{{0, 0, 0}, {1, 2, 3}}, glm::ivec3(7, 5, 9));
+  for (std::size_t i = 0; i < f->pointCount(); ++i)
+    f->values()[i] = glm::vec3(seed + 0.25f * float(i), -float(i % 7), seed * float(i % 3));
+  if (masked) {
+    std::vector<std::uint8_t> valid(f->pointCount(), 1);
+    valid[11] = 0;
+    f->setValidity(valid);
+  }
+  return f;
+}
+
+// The grid's points as the GPU holds them (xyz, and the mask in w).
+std::vector<glm::vec4> readBack(const GpuField& grid, std::size_t points) {
+  std::vector<glm::vec4> out(points);
+  if (grid.storage() == GpuField::Storage::Buffer) {
+    grid.bind(GpuField::Slot::Current);
+    GLint buffer = 0;
+    glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 14, &buffer);
+    glGetNamedBufferSubData(GLuint(buffer), 0, GLsizeiptr(points * sizeof(glm::vec4)), out.data());
+  } else {
+    grid.bindTexture(3);
+    glActiveTexture(GL_TEXTURE3);
+    GLint texture = 0;
+    glGetIntegerv(GL_TEXTURE_BINDING_3D, &texture);
+    glGetTextureImage(GLuint(texture), 0, GL_RGBA, GL_FLOAT, GLsizei(points * sizeof(glm::vec4)),
+                      out.data());
+    glActiveTexture(GL_TEXTURE0);
+  }
+  return out;
+}
+
+void expectHolds(const GpuField& grid, const VectorField& f) {
+  const std::vector<glm::vec4> texels = readBack(grid, f.pointCount());
+  for (std::size_t i = 0; i < f.pointCount(); ++i) {
+    ASSERT_EQ(glm::vec3(texels[i]), f.values()[i]) << "point " << i;
+    ASSERT_EQ(texels[i].w, f.hasValidity() && f.validity()[i] == 0 ? 0.0f : 1.0f) << "point " << i;
+  }
+}
+
+// advance(wanted) once a frame until the frame is ready; the frames it took.
+int advanceUntilReady(GridPrefetch& prefetch, const std::shared_ptr<const VectorField>& wanted) {
+  for (int frames = 1; frames <= 2000; ++frames) {
+    prefetch.advance(wanted);
+    if (prefetch.ready() == wanted) return frames;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  return -1;
+}
+
+TEST_P(GridPrefetchTest, AComingFrameIsCopiedOverSeveralFramesAndHandedOverWhole) {
+  for (const bool masked : {false, true}) {
+    SCOPED_TRACE(masked ? "masked" : "unmasked");
+    const std::shared_ptr<const VectorField> f = frame(1.5f, masked);
+    // Two z layers a frame at most: the nine layers take five frames' copies.
+    const std::size_t layerBytes = 7 * 5 * sizeof(glm::vec4);
+    GridPrefetch prefetch(GetParam(), 2 * layerBytes);
+    const int frames = advanceUntilReady(prefetch, f);
+    ASSERT_GT(frames, 0) << "never ready";
+    EXPECT_GE(frames, 5);
+    GpuField target(GetParam());
+    target.upload(*frame(-3.0f));
+    ASSERT_TRUE(prefetch.takeInto(target, f));
+    EXPECT_EQ(target.holds(), f);
+    expectHolds(target, *f);
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  }
+}
+
+TEST_P(GridPrefetchTest, AFrameWantedBeforeItIsOnTheGpuIsFinishedOnTheSpot) {
+  const std::shared_ptr<const VectorField> f = frame(2.0f);
+  GridPrefetch prefetch(GetParam(), 1);  // a layer a frame
+  prefetch.advance(f);                   // the worker starts writing
+  EXPECT_EQ(prefetch.ready(), nullptr);
+  GpuField target(GetParam());
+  ASSERT_TRUE(prefetch.takeInto(target, f));
+  expectHolds(target, *f);
+}
+
+TEST_P(GridPrefetchTest, OnlyTheFrameItPreparesIsHandedOver) {
+  const std::shared_ptr<const VectorField> f = frame(1.0f), g = frame(4.0f), h = frame(1.0f);
+  GridPrefetch prefetch(GetParam());
+  GpuField target(GetParam());
+  EXPECT_FALSE(prefetch.takeInto(target, f));  // nothing prepared yet
+  ASSERT_GT(advanceUntilReady(prefetch, f), 0);
+  // Another frame, even one of equal values, is not this one.
+  EXPECT_FALSE(prefetch.takeInto(target, h));
+  EXPECT_EQ(target.holds(), nullptr);
+  // Wanting another frame prepares it in place of the first, in the same staging.
+  ASSERT_GT(advanceUntilReady(prefetch, g), 0);
+  EXPECT_FALSE(prefetch.takeInto(target, f));
+  ASSERT_TRUE(prefetch.takeInto(target, g));
+  expectHolds(target, *g);
+}
+
+TEST_P(GridPrefetchTest, TheGridGivenBackIsHandedOverAgainWhenWanted) {
+  // Playback turned round: the frame the target held before is wanted again.
+  const std::shared_ptr<const VectorField> f = frame(1.0f), g = frame(4.0f);
+  GridPrefetch prefetch(GetParam());
+  GpuField target(GetParam());
+  target.show(f);
+  ASSERT_GT(advanceUntilReady(prefetch, g), 0);
+  ASSERT_TRUE(prefetch.takeInto(target, g));
+  EXPECT_EQ(prefetch.ready(), f);
+  GpuField other(GetParam());
+  ASSERT_TRUE(prefetch.takeInto(other, f));
+  expectHolds(other, *f);
+  expectHolds(target, *g);
+}
+
+INSTANTIATE_TEST_SUITE_P(Storages, GridPrefetchTest,
+                         ::testing::Values(GpuField::Storage::Buffer, GpuField::Storage::Texture),
+                         [](const auto& info) {
+                           return info.param == GpuField::Storage::Buffer ? "Buffer" : "Texture";
+                         });
+
+}  // namespace
+}  // namespace sandstorm
