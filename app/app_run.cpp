@@ -53,11 +53,12 @@ std::uint32_t statsWarmup(const RunSpec& run) {
   return std::uint32_t(run.frames / 2);
 }
 
-MainContext::Options mainOptions(const RunSpec& run) {
+MainContext::Options mainOptions(const AppConfig& config) {
   MainContext::Options o;
-  o.seed = run.seed;
-  o.fixedDt = run.fixedDt;
-  o.capacityLimit = run.capacityLimit;
+  o.seed = config.run.seed;
+  o.fixedDt = config.run.fixedDt;
+  o.capacityLimit = config.run.capacityLimit;
+  o.uploadAhead = config.field.uploadAhead;
   return o;
 }
 
@@ -80,7 +81,7 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
              : !cluster || cluster->makesField() ? makeField(config.field, configDir_)
                                                  : FieldSource{}),
       terrain_(makeTerrain(config.scene, configDir_)),
-      main_(config.particles, field_.update, mainOptions(config.run)),
+      main_(config.particles, field_.update, mainOptions(config)),
       helicopter_(terrain_),
       fluid_(terrain_),
       editor_(config.field),
@@ -842,8 +843,8 @@ int AppRun::finish() {
     // The count is read back late, so that the frame loop never waits for it.
     log::info("  wall '", w->name(), "': ", s.liveParticles,
               " live particles a frame or two before its last (", s.frame, "); last frame ",
-              s.frameMs, " ms; ", s.fieldUploads, " field upload(s), the last ", s.fieldUploadMs,
-              " ms; ", s.glErrors, " GL error(s)",
+              s.frameMs, " ms; ", s.fieldUploads, " field upload(s) taking ", s.fieldUploadTotalMs,
+              " ms in all, the last ", s.fieldUploadMs, " ms; ", s.glErrors, " GL error(s)",
               w->error() ? " FAILED: " + *w->error() : std::string());
   }
   if (tracking_) {

@@ -88,6 +88,7 @@ void RenderWall::record(const FramePacket& packet, const Drawn& drawn, double in
   }
   if (packet.fieldUpdate) {
     stats_.fieldUploadMs = renderer_->particles().update().lastFieldUploadMs();
+    stats_.fieldUploadTotalMs += stats_.fieldUploadMs;
     ++stats_.fieldUploads;
   }
   stats_.frame = packet.frame;

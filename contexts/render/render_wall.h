@@ -27,8 +27,9 @@ struct WallStats {
   std::size_t capacity = 0;
   // GPU time per stage, all views of a frame (a few frames old); render: the particles.
   double updateMs = 0.0, sceneMs = 0.0, renderMs = 0.0, postMs = 0.0;
-  double fieldUploadMs = 0.0;  // CPU time of the last field upload to this wall's GPU
-  int fieldUploads = 0;        // how many field grids this wall has received
+  double fieldUploadMs = 0.0;       // CPU time of the last field upload to this wall's GPU
+  double fieldUploadTotalMs = 0.0;  // the same, summed over every upload
+  int fieldUploads = 0;             // how many field grids this wall has received
   std::uint64_t glErrors = 0;  // GL errors raised by this wall's frames (glGetError once a frame)
   // The newest measurement of its particles (probe count, colour range), if asked for.
   std::optional<ParticleMeasurement> measure;

@@ -140,6 +140,10 @@ struct FieldSpec {
   std::uint64_t memoryBudget = 0;
   // Steps of a series read ahead of playback, beyond the two being blended.
   int readAhead = 2;
+  // The step after the pair in use uploaded to each GPU ahead of need
+  // (contexts/particles/grid_prefetch.h): a third grid on the GPU and a
+  // step's texels of host memory, for a step that costs its frame no upload.
+  bool uploadAhead = true;
   // precision = "half": 16-bit floats on the GPU (VectorField::roundToHalf).
   bool halfPrecision = false;
   // storage: how an OpenVDB grid is kept: "auto" sparse when its active

@@ -305,7 +305,7 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
       {"source",     "name",      "dims",          "resolution", "bounds_min",   "bounds_max",
        "params",     "offset",    "scale",         "yaw_deg",    "rotation_deg", "mode",
        "expression", "watch",     "step_interval", "wait_s",     "settle_s",     "memory_budget",
-       "read_ahead", "precision", "storage"});
+       "read_ahead", "upload_ahead", "precision", "storage"});
   f.source = r.string(t, "source", "field", f.source);
   if (f.source != "analytic") f.source = relativeTo(r, f.source);
   // A file's array or grid is chosen by name; without one, the file's only (or active) vector one.
@@ -386,6 +386,7 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
     }
   }
   f.readAhead = r.integer(t, "read_ahead", "field", f.readAhead, 0, 64);
+  f.uploadAhead = r.boolean(t, "upload_ahead", "field", f.uploadAhead);
   f.halfPrecision =
       r.choice<bool>(t, "precision", "field", f.halfPrecision, {{"float", false}, {"half", true}});
   f.storage = r.choice<FieldSpec::Storage>(t, "storage", "field", f.storage,

@@ -249,7 +249,7 @@ FramePacket MainContext::next() {
       fieldChanged_ = true;
     }
     packet.fieldBlend = now.weight;
-    packet.upcomingField = player_->upcoming();
+    if (options_.uploadAhead) packet.upcomingField = player_->upcoming();
   }
   // Coloured by another grid now (or no longer): the field goes again with it.
   if (field_ && field_->field && carriedColorGrid(*field_) != wantedColorGrid(state_, *field_)) {

@@ -36,7 +36,8 @@ class MainContext {
     float fixedDt = 0.0f;  // > 0: every frame advances this much; 0: measure the clock
     float maxDt = 0.1f;    // a measured frame longer than this (a stall) counts as this
     std::size_t capacityLimit =
-        1u << 26;  // sim.maximum beyond this is capped (the buffers can grow no further)
+        1u << 26;             // sim.maximum beyond this is capped (the buffers can grow no further)
+    bool uploadAhead = true;  // packets name a series' coming step (FramePacket::upcomingField)
   };
 
   // Called for every change with the frame it takes effect (the session recorder).

@@ -205,6 +205,11 @@ TEST(Config, TheFieldsMemoryBudgetIsASizeOrAutomatic) {
                  "field.memory_budget", "16 GiB");
   EXPECT_EQ(parseConfig("[field]\nread_ahead = 6\n" + kWall, "test.toml").field.readAhead, 6);
   EXPECT_ERROR("[field]\nread_ahead = -1\n" + kWall, "test.toml:2", "field.read_ahead", "0..64");
+  EXPECT_TRUE(parseConfig(kWall, "test.toml").field.uploadAhead);
+  EXPECT_FALSE(
+      parseConfig("[field]\nupload_ahead = false\n" + kWall, "test.toml").field.uploadAhead);
+  EXPECT_ERROR("[field]\nupload_ahead = 2\n" + kWall, "test.toml:2", "field.upload_ahead",
+               "true or false");
   EXPECT_FALSE(parseConfig(kWall, "test.toml").field.halfPrecision);
   EXPECT_TRUE(
       parseConfig("[field]\nprecision = \"half\"\n" + kWall, "test.toml").field.halfPrecision);

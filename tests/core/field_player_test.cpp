@@ -181,5 +181,46 @@ TEST(FieldPlayer, TheStatusSaysWhatPlaybackWaitsForAndWhatIsInMemory) {
   EXPECT_DOUBLE_EQ(status.time, 1.0);  // stood still at the step it waits for
 }
 
+TEST(FieldPlayer, PacketsNameTheStepAfterThePairInTheDirectionOfPlayOnceItIsInMemory) {
+  // What walls upload ahead of need (FramePacket::upcomingField): the step
+  // after the pair forwards, before it backwards, around a loop; none while
+  // it is not read, at the end of an unlooped series, or when asked not to.
+  const auto upcoming = [](MainContext& main, int frames) {
+    std::vector<int> out;
+    for (int f = 0; f < frames; ++f) {
+      const FramePacket p = main.next();
+      out.push_back(p.upcomingField ? int(p.upcomingField->values()[0].x) : -1);
+    }
+    return out;
+  };
+  const auto play = [&](bool loop, float speed, const std::set<std::size_t>& arrived,
+                        bool uploadAhead = true) {
+    auto steps = std::make_shared<ScriptedSteps>(4);
+    ParticleState s;
+    s.field.loop = loop;
+    s.field.speed = speed;
+    MainContext::Options o = quarterSteps();
+    o.uploadAhead = uploadAhead;
+    MainContext main(s, FieldUpdate{}, o);
+    steps->arrived = arrived;
+    main.setFieldTimeline(FieldTimeline({0, 1, 2, 3}, steps), FieldPlacement{});
+    return upcoming(main, 16);
+  };
+  const std::set<std::size_t> all{0, 1, 2, 3};
+  // Forwards, four frames a step: pairs (0,1) (1,2) (2,3), then held at the end.
+  EXPECT_EQ(play(false, 1.0f, all),
+            (std::vector<int>{2, 2, 2, 2, 3, 3, 3, 3, -1, -1, -1, -1, -1, -1, -1, -1}));
+  // Looping: (2,3) is followed by (3,0), then (0,1).
+  EXPECT_EQ(play(true, 1.0f, all),
+            (std::vector<int>{2, 2, 2, 2, 3, 3, 3, 3, 0, 0, 0, 0, 1, 1, 1, 1}));
+  // Backwards around the loop from t = 0: (0,1) at the start, then (3,0),
+  // (2,3), (1,2), (0,1).
+  EXPECT_EQ(play(true, -1.0f, all),
+            (std::vector<int>{3, 2, 2, 2, 2, 1, 1, 1, 1, 0, 0, 0, 0, 3, 3, 3}));
+  // Step 2 never read: nothing to upload ahead while the pair (0,1) plays.
+  EXPECT_EQ(play(false, 1.0f, {0, 1, 3})[0], -1);
+  EXPECT_EQ(play(true, 1.0f, all, false), std::vector<int>(16, -1));
+}
+
 }  // namespace
 }  // namespace sandstorm
