@@ -123,7 +123,8 @@ std::size_t GpuField::texelBytes(Layout layout) {
   return 16;
 }
 
-void GpuField::writeLayers(const VectorField& field, int firstLayer, int layers, void* out) const {
+void GpuField::writeLayers(const VectorField& field, int firstLayer, int layers, void* out,
+                           unsigned threads) const {
   const std::size_t layerPoints = std::size_t(dims_.x) * std::size_t(dims_.y);
   const std::size_t first = std::size_t(firstLayer) * layerPoints;
   const std::size_t count = std::size_t(layers) * layerPoints;
@@ -133,7 +134,7 @@ void GpuField::writeLayers(const VectorField& field, int firstLayer, int layers,
       field.hasValidity() ? field.validity().subspan(first, count) : field.validity();
   const auto isValid = [&](std::size_t i) { return valid.empty() || valid[i] != 0; };
   const std::uint16_t one = glm::packHalf1x16(1.0f), zero = glm::packHalf1x16(0.0f);
-  forChunks(values.size(), [&](std::size_t begin, std::size_t end) {
+  const auto write = [&](std::size_t begin, std::size_t end) {
     switch (layout) {
       case Layout::FloatRgb:
         std::memcpy(static_cast<glm::vec3*>(out) + begin, values.data() + begin,
@@ -156,7 +157,10 @@ void GpuField::writeLayers(const VectorField& field, int firstLayer, int layers,
         break;
       }
     }
-  });
+  };
+  forChunks(count, write,
+            threads == 0 ? std::size_t{1} << 16
+                         : std::max<std::size_t>(1, (count + threads - 1) / threads));
 }
 
 void GpuField::stageSlabs(const VectorField& field) {

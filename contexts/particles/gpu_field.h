@@ -52,11 +52,13 @@ class GpuField {
   // An upload in parts (GridPrefetch), what upload() does in one go:
   // prepare() makes the texture or buffer ready for `field` (forgetting what
   // this held) and returns the bytes a z layer of its texels takes;
-  // writeLayers() writes layers of them anywhere, from any thread (no GL);
+  // writeLayers() writes layers of them anywhere, from any thread (no GL),
+  // over at most `threads` threads (0: the machine's cores);
   // copyLayers() copies layers from a buffer holding them, at `offset`;
   // hold() marks the field held once every layer is copied.
   std::size_t prepare(const VectorField& field);
-  void writeLayers(const VectorField& field, int firstLayer, int layers, void* out) const;
+  void writeLayers(const VectorField& field, int firstLayer, int layers, void* out,
+                   unsigned threads = 0) const;
   void copyLayers(const gl::Buffer& staging, std::size_t offset, int firstLayer, int layers);
   void hold(std::shared_ptr<const VectorField> field) { holds_ = std::move(field); }
 

@@ -32,6 +32,9 @@ void GridPrefetch::advance(std::shared_ptr<const VectorField> wanted) {
 
 bool GridPrefetch::takeInto(GpuField& target, const std::shared_ptr<const VectorField>& field) {
   if (failed_ || !field || field != frame_) return false;
+  const auto start = std::chrono::steady_clock::now();
+  const bool wasWriting = writing_.valid();
+  const int left = layers_ - copiedLayers_;
   try {
     if (writing_.valid()) written();
     copy(std::numeric_limits<std::size_t>::max());
@@ -39,6 +42,13 @@ bool GridPrefetch::takeInto(GpuField& target, const std::shared_ptr<const Vector
     fail(e.what());
     return false;
   }
+  if (layers_ > 0)
+    log::debug(
+        "field: a step uploaded ahead of need taken; its texels written in ", writeMs_, " ms",
+        wasWriting ? " (still being written: waited for)" : "", ", ", left, " of ", layers_,
+        " layers left to copy; took ",
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(),
+        " ms");
   std::swap(target, grid_);
   // What target held is whole on the GPU: given back if it is wanted again
   // (playback turned round).
@@ -77,7 +87,10 @@ void GridPrefetch::start(std::shared_ptr<const VectorField> field) {
   // The worker only reads the frame and grid_'s layout, and writes the
   // mapping; takeInto() and the destructor wait for it before either changes.
   writing_ = std::async(std::launch::async, [this, field = std::move(field)] {
-    grid_.writeLayers(*field, 0, layers_, mapped_);
+    const auto begin = std::chrono::steady_clock::now();
+    grid_.writeLayers(*field, 0, layers_, mapped_, kWriterThreads);
+    writeMs_ =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
   });
 }
 
