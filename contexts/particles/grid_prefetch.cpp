@@ -60,6 +60,12 @@ bool GridPrefetch::takeInto(GpuField& target, const std::shared_ptr<const Vector
 void GridPrefetch::start(std::shared_ptr<const VectorField> field) {
   frame_ = nullptr;
   layers_ = copiedLayers_ = 0;
+  // Checked before anything is allocated: a vec4 a point at most (8 bytes in half).
+  const double most = double(field->pointCount()) * (field->halfPrecision() ? 8.0 : 16.0);
+  if (most > double(maxStagingBytes_))
+    throw Error(concat("a step of ", field->pointCount(), " points would stage up to ", most,
+                       " bytes of host memory on each GPU, beyond the ", maxStagingBytes_,
+                       " it may"));
   layerBytes_ = grid_.prepare(*field);  // GL: on this thread, before the worker starts
   const std::size_t bytes = layerBytes_ * std::size_t(field->dims().z);
   if (bytes != stagingBytes_) {
@@ -118,7 +124,7 @@ bool GridPrefetch::stagingFree() const {
 
 void GridPrefetch::fail(const std::string& what) {
   log::warn("field: uploading the next step ahead of need stopped (", what,
-            "); each step is uploaded when it comes into use, as with field.read_ahead = 0");
+            "); each step is uploaded when it comes into use, as with field.upload_ahead = false");
   if (writing_.valid()) writing_.wait();
   failed_ = true;
   frame_ = nullptr;

@@ -27,10 +27,15 @@ namespace sandstorm {
 class GridPrefetch {
  public:
   // `copyBytesPerFrame`: what advance() copies to the GPU at most (a layer
-  // at least).
+  // at least); `maxStagingBytes`: the largest frame it stages (a larger one
+  // ends prefetching, said once: its staging would pin that much host memory
+  // on every GPU, beside the steps the series holds).
   explicit GridPrefetch(GpuField::Storage preferred,
-                        std::size_t copyBytesPerFrame = kCopyBytesPerFrame)
-      : grid_(preferred), copyBytesPerFrame_(copyBytesPerFrame) {}
+                        std::size_t copyBytesPerFrame = kCopyBytesPerFrame,
+                        std::size_t maxStagingBytes = kMaxStagingBytes)
+      : grid_(preferred),
+        copyBytesPerFrame_(copyBytesPerFrame),
+        maxStagingBytes_(maxStagingBytes) {}
   ~GridPrefetch();
   GridPrefetch(const GridPrefetch&) = delete;
   GridPrefetch& operator=(const GridPrefetch&) = delete;
@@ -55,6 +60,8 @@ class GridPrefetch {
   // Bytes copied to the GPU in one frame at most, by default (a 256^3 frame
   // of vec4 is 268 MB).
   static constexpr std::size_t kCopyBytesPerFrame = std::size_t{96} << 20;
+  // The largest frame staged, by default: a 512^3 frame as a texture (1.6 GB).
+  static constexpr std::size_t kMaxStagingBytes = std::size_t{2} << 30;
 
  private:
   void start(std::shared_ptr<const VectorField> field);
@@ -66,7 +73,7 @@ class GridPrefetch {
   void fail(const std::string& what);
 
   GpuField grid_;
-  std::size_t copyBytesPerFrame_;
+  std::size_t copyBytesPerFrame_, maxStagingBytes_;
   gl::Buffer staging_;
   void* mapped_ = nullptr;
   std::size_t stagingBytes_ = 0;

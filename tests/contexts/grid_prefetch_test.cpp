@@ -130,6 +130,22 @@ TEST_P(GridPrefetchTest, TheGridGivenBackIsHandedOverAgainWhenWanted) {
   expectHolds(target, *g);
 }
 
+TEST_P(GridPrefetchTest, AFrameBeyondTheStagingLimitIsNotStagedAndPrefetchingEnds) {
+  const std::shared_ptr<const VectorField> f = frame(1.0f);  // 315 points: 5040 bytes as vec4
+  GridPrefetch prefetch(GetParam(), GridPrefetch::kCopyBytesPerFrame, 5000);
+  for (int i = 0; i < 5; ++i)
+    prefetch.advance(f);
+  EXPECT_EQ(prefetch.ready(), nullptr);
+  GpuField target(GetParam());
+  EXPECT_FALSE(prefetch.takeInto(target, f));
+  // It stays off: a smaller frame is not staged either (the series' frames share one grid).
+  auto small = std::make_shared<VectorField>(Box{{0, 0, 0}, {1, 1, 1}}, glm::ivec3(2));
+  prefetch.advance(small);
+  prefetch.advance(small);
+  EXPECT_EQ(prefetch.ready(), nullptr);
+  EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+}
+
 INSTANTIATE_TEST_SUITE_P(Storages, GridPrefetchTest,
                          ::testing::Values(GpuField::Storage::Buffer, GpuField::Storage::Texture),
                          [](const auto& info) {
