@@ -38,6 +38,11 @@ void applySets(AppConfig& config, const std::vector<std::string>& sets) {
   }
 }
 
+bool opensWindows(const AppConfig& config, const AppOptions& options) {
+  const bool movieSize = options.movie && options.movie->size;
+  return config.anyWindow() && !options.headless && !movieSize && haveDisplay();
+}
+
 App::App(AppConfig config, AppOptions options, ClusterLink* cluster,
          std::optional<FieldSource> field)
     : config_(std::move(config)),

@@ -44,6 +44,11 @@ struct AppOptions {
 // Applies --set overrides to the configuration's particle state. Throws Error.
 void applySets(AppConfig& config, const std::vector<std::string>& sets);
 
+// Whether a run of `config` with `options` opens windows: it has a window,
+// there is a display, and neither --headless nor a movie of its own size
+// draws offscreen.
+bool opensWindows(const AppConfig& config, const AppOptions& options);
+
 class App {
  public:
   // `cluster`: cluster mode (app/cluster/), this rank's link to the others; null: one process.

@@ -5,6 +5,7 @@
 #include "app/cluster/cluster_link.h"
 #include "app/default_config.h"
 #include "app/file_scene.h"
+#include "app/load_with_window.h"
 #include "core/io/field_loader.h"
 #ifdef SANDSTORM_MPI
 #include "app/cluster/cluster_main.h"
@@ -209,14 +210,21 @@ int main(int argc, char** argv) {
       // The desktop scene unless a configuration was named.
       AppConfig config = loadConfig(
           configOption->count() > 0 ? configPath : defaultConfig("desktop.toml").string());
-      FieldSource field = fileSceneField(config, fieldFile, arrayName);
+      FieldSource field =
+          loadWithWindow([&] { return fileSceneField(config, fieldFile, arrayName); },
+                         opensWindows(config, options));
       openFileScene(config, fieldFile, *field.update.field);
       App app(std::move(config), options, nullptr, std::move(field));
       return app.run();
     }
     if (!arrayName.empty())
       throw Error("--array " + arrayName + ": names an array of a field file; give the file too");
-    App app(loadConfig(configPath), options);
+    AppConfig config = loadConfig(configPath);
+    // A field read from a file is read here, where a window can show its progress.
+    std::optional<FieldSource> field;
+    if (config.field.source != "analytic" && opensWindows(config, options))
+      field = loadWithWindow([&] { return makeField(config.field, config.folder); }, true);
+    App app(std::move(config), options, nullptr, std::move(field));
     return app.run();
   } catch (const Error& e) {
     log::error(e.what());

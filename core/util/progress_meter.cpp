@@ -24,7 +24,26 @@ ProgressMeter::ProgressMeter(std::string what, std::uint64_t total, std::string 
       unit_(std::move(unit)),
       total_(total),
       start_(Clock::now()),
-      nextReportNs_(1'000'000'000) {}
+      nextReportNs_(1'000'000'000) {
+  ProgressBoard::instance().add(this);
+}
+
+ProgressMeter::~ProgressMeter() {
+  ProgressBoard::instance().remove(this);
+}
+
+ProgressSnapshot ProgressMeter::snapshot() const {
+  ProgressSnapshot s;
+  s.what = what_;
+  s.unit = unit_;
+  s.done = done_.load(std::memory_order_relaxed);
+  s.total = total_;
+  s.seconds = std::chrono::duration<double>(Clock::now() - start_).count();
+  s.rate = s.seconds > 0.0 ? double(s.done) / s.seconds : 0.0;
+  s.secondsLeft =
+      s.rate > 0.0 && total_ > 0 ? double(total_ - std::min(s.done, total_)) / s.rate : 0.0;
+  return s;
+}
 
 void ProgressMeter::add(std::uint64_t done) {
   const std::uint64_t now = done_.fetch_add(done, std::memory_order_relaxed) + done;

@@ -4,7 +4,8 @@
 //   [sandstorm info] resampling wind.vtu: 41% (572000 of 1400000 cells), 1.2e6 cells/s, 0.7 s left
 // Work that ends within its first second says nothing. add() may be called
 // from any thread; a line is written at most once a second, by whichever
-// thread finds the second over.
+// thread finds the second over. While it lives it is on the ProgressBoard,
+// where a window may show it too.
 #pragma once
 
 #include <atomic>
@@ -13,6 +14,8 @@
 #include <mutex>
 #include <string>
 
+#include "core/util/progress_board.h"
+
 namespace sandstorm {
 
 class ProgressMeter {
@@ -20,12 +23,15 @@ class ProgressMeter {
   // `what`: "resampling wind.vtu"; `unit`: what is counted, plural ("cells");
   // `total` 0: open-ended (no share or time left is said).
   ProgressMeter(std::string what, std::uint64_t total, std::string unit);
+  ~ProgressMeter();
   ProgressMeter(const ProgressMeter&) = delete;
   ProgressMeter& operator=(const ProgressMeter&) = delete;
 
   void add(std::uint64_t done);
   // Logs the total time when the work took long enough to have said anything.
   void finish();
+  // What is done now, the rate and the time left (ProgressBoard).
+  ProgressSnapshot snapshot() const;
 
  private:
   using Clock = std::chrono::steady_clock;

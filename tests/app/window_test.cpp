@@ -3,10 +3,12 @@
 // and closing a window or Ctrl-C stops everything cleanly with status 0.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <map>
 #include <set>
 #include <sstream>
 
+#include "core/io/vti_writer.h"
 #include "tests/app/run_process.h"
 
 namespace sandstorm {
@@ -33,6 +35,35 @@ std::vector<Line> hashes(const std::filesystem::path& path) {
     out.push_back(l);
   }
   return out;
+}
+
+// A file that takes a while to read shows its progress in a window before
+// the walls open (the bar and, in the title, the log's line); without
+// windows it is read as before.
+TEST(Windows, AFileTakingAWhileToReadShowsItsProgressInAWindowFirst) {
+  if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
+  const auto dir = test::scratchDir("loading-window");
+  // 256^3 points of a field zlib compresses poorly: about 1.5 s to read here.
+  const int n = 256;
+  std::vector<glm::vec3> values(std::size_t(n) * n * n);
+  for (std::size_t i = 0; i < values.size(); ++i)
+    values[i] = glm::vec3(std::sin(0.37f * float(i % 977)), std::cos(0.011f * float(i % 6151)),
+                          0.001f * float(i % 4093));
+  writeVti(dir / "big.vti",
+           VectorField(Box{{0, 0, 0}, {4, 4, 4}}, glm::ivec3(n), std::move(values)));
+  const std::string args = "'" + (dir / "big.vti").string() +
+                           "' --frames 2 --set sim.maximum=1000 --screenshot '" + dir.string() +
+                           "'";
+  const auto shown = runUnderXvfb(args);
+  ASSERT_EQ(shown.exitCode, 0) << shown.output;
+  const std::size_t loading = shown.output.find("loading: the progress shows in a window too");
+  const std::size_t walls = shown.output.find("GLFW window 'Sandstorm: desktop'");
+  ASSERT_NE(loading, std::string::npos) << shown.output;
+  ASSERT_NE(walls, std::string::npos) << shown.output;
+  EXPECT_LT(loading, walls);
+  const auto headless = runSandstorm(args + " --headless");
+  ASSERT_EQ(headless.exitCode, 0) << headless.output;
+  EXPECT_EQ(headless.output.find("loading: the progress"), std::string::npos) << headless.output;
 }
 
 TEST(Windows, ASliderInTheMenuChangesEveryWallAtTheSameFrame) {

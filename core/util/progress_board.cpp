@@ -1,0 +1,65 @@
+#include "core/util/progress_board.h"
+
+#include <algorithm>
+#include <cstdio>
+
+#include "core/util/progress_meter.h"
+
+namespace sandstorm {
+namespace {
+
+// Bytes in the units a person reads them in; other units as counts.
+std::string amount(double v, const std::string& unit) {
+  char text[48];
+  if (unit == "bytes") {
+    const char* names[] = {"bytes", "KB", "MB", "GB", "TB"};
+    int i = 0;
+    while (v >= 1000.0 && i < 4)
+      v /= 1000.0, ++i;
+    std::snprintf(text, sizeof text, i == 0 ? "%.0f %s" : "%.1f %s", v, names[i]);
+  } else {
+    std::snprintf(text, sizeof text, v >= 1e5 ? "%.3g %s" : "%.0f %s", v, unit.c_str());
+  }
+  return text;
+}
+
+}  // namespace
+
+double ProgressSnapshot::fraction() const {
+  return total == 0 ? 0.0 : std::min(1.0, double(done) / double(total));
+}
+
+std::string ProgressSnapshot::text() const {
+  char tail[96];
+  if (total == 0) {
+    std::snprintf(tail, sizeof tail, "%s/s", amount(rate, unit).c_str());
+    return what + ": " + amount(double(done), unit) + ", " + tail;
+  }
+  std::snprintf(tail, sizeof tail, "%d%% (%s of %s), %s/s, %.1f s left", int(100.0 * fraction()),
+                amount(double(done), unit).c_str(), amount(double(total), unit).c_str(),
+                amount(rate, unit).c_str(), secondsLeft);
+  return what + ": " + tail;
+}
+
+ProgressBoard& ProgressBoard::instance() {
+  static ProgressBoard board;
+  return board;
+}
+
+std::optional<ProgressSnapshot> ProgressBoard::snapshot() const {
+  std::lock_guard lock(mutex_);
+  if (meters_.empty()) return std::nullopt;
+  return meters_.back()->snapshot();
+}
+
+void ProgressBoard::add(const ProgressMeter* meter) {
+  std::lock_guard lock(mutex_);
+  meters_.push_back(meter);
+}
+
+void ProgressBoard::remove(const ProgressMeter* meter) {
+  std::lock_guard lock(mutex_);
+  meters_.erase(std::remove(meters_.begin(), meters_.end(), meter), meters_.end());
+}
+
+}  // namespace sandstorm
