@@ -5,13 +5,6 @@
 // fieldIndexScale 1 / voxel size, sparseIndexMin/Max the active voxels' index
 // box widened to where every corner reads the background.
 //
-// Ahead of the grid's words lies a table of its lower nodes over the index
-// box (SparseField::regionTable, GpuSparseField): words 0-2 its origin and
-// 3-5 its dims in regions of 128^3 voxels (dims 0: no table), word 6 the
-// grid's byte offset, the entries from word 8 (16 MiB at most: always in the
-// first buffer). Each corner walks from its region's lower node, skipping the
-// root's search and the upper node, or reads the region's tile at once.
-//
 // The words lie in two storage buffers (GpuSparseField): those below
 // kSparseSplitWords at binding 14, the rest at 15 (the same buffer when the
 // grid is smaller), so a grid may pass one buffer's limit (2 GiB on NVIDIA)
@@ -45,29 +38,6 @@ vec3 sparseValue(pnanovdb_buf_t buf, pnanovdb_address_t a) {
               pnanovdb_read_float(buf, pnanovdb_address_offset(a, 8u)));
 }
 
-// The address of voxel ijk's value and the level it was found at (0: a
-// leaf), through the region table where it covers ijk, else from the root.
-pnanovdb_address_t sparseValueAddress(pnanovdb_buf_t buf, inout pnanovdb_readaccessor_t acc,
-                                      ivec3 ijk, inout uint level) {
-  const ivec3 dims = ivec3(sparseLow[3], sparseLow[4], sparseLow[5]);
-  const ivec3 r = (ijk >> 7) - ivec3(sparseLow[0], sparseLow[1], sparseLow[2]);
-  if (all(greaterThanEqual(r, ivec3(0))) && all(lessThan(r, dims))) {
-    const uint entry = sparseLow[8u + uint((r.z * dims.y + r.y) * dims.x + r.x)];
-    if ((entry & 1u) != 0u) {  // no lower node: the region's tile (or the background)
-      level = 2u;
-      pnanovdb_address_t a;
-      a.byte_offset = entry - 1u;
-      return a;
-    }
-    pnanovdb_lower_handle_t lower;
-    lower.address.byte_offset = entry;
-    return pnanovdb_lower_get_value_address_and_level(PNANOVDB_GRID_TYPE_VEC3F, buf, lower, ijk,
-                                                      level);
-  }
-  return pnanovdb_readaccessor_get_value_address_and_level(PNANOVDB_GRID_TYPE_VEC3F, buf, acc, ijk,
-                                                           level);
-}
-
 vec3 sparseSample(vec3 p) {
   precise vec3 u = clamp((p - sim.fieldMin.xyz) * sim.fieldIndexScale.xyz, sim.sparseIndexMin.xyz,
                          sim.sparseIndexMax.xyz);
@@ -76,7 +46,7 @@ vec3 sparseSample(vec3 p) {
   pnanovdb_buf_t buf;
   buf.unused = 0u;
   pnanovdb_grid_handle_t grid;
-  grid.address.byte_offset = sparseLow[6];
+  grid.address.byte_offset = 0u;
   pnanovdb_readaccessor_t acc;
   pnanovdb_readaccessor_init(acc, pnanovdb_tree_get_root(buf, pnanovdb_grid_get_tree(buf, grid)));
   // A cell within one leaf (two cells in three): its corners' values lie at
@@ -93,7 +63,8 @@ vec3 sparseSample(vec3 p) {
                                   uint(768 * (k & 1) + 96 * ((k >> 1) & 1) + 12 * (k >> 2)));
     } else {
       uint level = 0u;
-      a = sparseValueAddress(buf, acc, i0 + ivec3(k & 1, (k >> 1) & 1, k >> 2), level);
+      a = pnanovdb_readaccessor_get_value_address_and_level(
+          PNANOVDB_GRID_TYPE_VEC3F, buf, acc, i0 + ivec3(k & 1, (k >> 1) & 1, k >> 2), level);
       if (k == 0) {
         first = a;
         oneLeaf = level == 0u && all(lessThan(i0 & 7, ivec3(7)));

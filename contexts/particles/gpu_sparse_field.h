@@ -3,11 +3,7 @@
 // 15 (the bindings a dense grid's buffers take in the programs that read
 // one): the words below 2 GiB in the first, the rest in the second, so a
 // sparse grid may take up to 4 GiB (NanoVDB's GLSL addresses bytes with 32
-// bits) where one buffer holds 2 GiB (NVIDIA). Ahead of the grid's words
-// goes a table of its lower nodes (SparseField::regionTable, up to 2^22
-// entries), so that a sample's walk starts there and not at the root (the
-// grid then lies at the table's end, an offset the shader reads in word 6).
-// Needs its GL context current
+// bits) where one buffer holds 2 GiB (NVIDIA). Needs its GL context current
 // for every call.
 #pragma once
 

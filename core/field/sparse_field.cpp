@@ -181,33 +181,6 @@ bool SparseField::active(const glm::ivec3& ijk) const {
   return pnanovdb_readaccessor_is_active(kType, buf, &acc, &c);
 }
 
-SparseField::RegionTable SparseField::regionTable(std::size_t maxEntries) const {
-  RegionTable table;
-  // Sampling reads corners from indexMin - 2 to indexMax + 2 (sample()).
-  const glm::ivec3 lo = (indexMin_ - 2) >> 7, hi = (indexMax_ + 2) >> 7;
-  const glm::ivec3 dims = hi - lo + 1;
-  if (double(dims.x) * dims.y * dims.z > double(maxEntries)) return table;
-  table.origin = lo;
-  table.dims = dims;
-  table.entries.resize(std::size_t(dims.x) * std::size_t(dims.y) * std::size_t(dims.z));
-  const pnanovdb_buf_t buf = bufferOf(words_);
-  std::size_t i = 0;
-  for (int z = 0; z < dims.z; ++z)
-    for (int y = 0; y < dims.y; ++y)
-      for (int x = 0; x < dims.x; ++x, ++i) {
-        pnanovdb_readaccessor_t acc;
-        pnanovdb_readaccessor_init(&acc, rootOf(buf));
-        const pnanovdb_coord_t at = {(lo.x + x) * 128, (lo.y + y) * 128, (lo.z + z) * 128};
-        pnanovdb_uint32_t level = 0;
-        const pnanovdb_address_t value =
-            pnanovdb_readaccessor_get_value_address_and_level(kType, buf, &acc, &at, &level);
-        // Levels 0 and 1 were found in (or below) the lower node the walk cached.
-        table.entries[i] = level <= 1u ? std::uint32_t(acc.lower.address.byte_offset)
-                                       : std::uint32_t(value.byte_offset) + 1u;
-      }
-  return table;
-}
-
 // The twin of sparseSample() in shaders/field_sparse.glsl: the same
 // operations in the same order (the build has -ffp-contract=off).
 glm::vec3 SparseField::sample(const glm::vec3& p) const {

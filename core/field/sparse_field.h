@@ -58,19 +58,6 @@ class SparseField {
   void forEachActive(
       const std::function<void(const glm::vec3& value, std::uint64_t count)>& visit) const;
 
-  // Where the lower nodes (128^3 voxels each) lie, as a dense table over the
-  // regions of 128^3 that sampling may touch (the active index box and two
-  // voxels around it), x fastest from `origin` (in regions): an entry is the
-  // byte address of the region's lower node, or where it has none, the
-  // address of the value the whole region reads (an upper node's or root's
-  // tile, or the background) plus 1. A GPU walks from it instead of from the
-  // root (shaders/field_sparse.glsl). Empty (dims 0) past `maxEntries`.
-  struct RegionTable {
-    glm::ivec3 origin{0}, dims{0};
-    std::vector<std::uint32_t> entries;
-  };
-  RegionTable regionTable(std::size_t maxEntries) const;
-
   // The field sampled onto a dense grid over bounds() with at most `maxAxis`
   // points along an axis (fewer where the active box has fewer voxels): what
   // needs a dense grid (bounds, previews, the field tool) without the full one.

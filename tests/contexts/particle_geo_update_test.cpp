@@ -359,39 +359,6 @@ TEST_P(ParticleBackendTest, ASparseGridMovesParticlesAsTheCpuTwin) {
   EXPECT_TRUE(differ);
 }
 
-// The same tornado with one more voxel 40 000 voxels away: its box is too
-// large for the table of lower nodes (GpuSparseField), so the GPU walks each
-// corner from the root, and still moves particles as the CPU twin.
-TEST_P(ParticleBackendTest, ASparseGridTooWideForItsRegionTableMovesParticlesAsTheCpuTwin) {
-  Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, BoundaryMode::Kill);
-  VortexParams vp;
-  vp.range = 3.0f;
-  vp.height = 5.0f;
-  const VortexField vortex(vp);
-  const glm::vec3 origin(-3.0f, -3.0f, 0.0f);
-  auto sparse = std::make_shared<SparseField>(test::buildSparseGrid(
-                                                  [&](const auto& set) {
-                                                    for (int k = 0; k <= 20; ++k)
-                                                      for (int j = 0; j <= 30; ++j)
-                                                        for (int i = 0; i <= 30; ++i) {
-                                                          const glm::vec3 p =
-                                                              origin + 0.2f * glm::vec3(i, j, k);
-                                                          if (glm::length(glm::vec2(p)) < 2.2f)
-                                                            set({i, j, k}, vortex.evaluate(p));
-                                                        }
-                                                    set({40000, 40000, 40000}, glm::vec3(1.0f));
-                                                  },
-                                                  0.2, glm::dvec3(origin)),
-                                              "wide.nvdb");
-  ASSERT_TRUE(sparse->regionTable(std::size_t{1} << 22).entries.empty());
-  s.sparse = sparse;
-  s.field = std::make_shared<VectorField>(sparse->overview(4));
-  const Agreement a = compare(GetParam(), s, 60, 16384);
-  EXPECT_EQ(a.frames, 60u);
-  EXPECT_LT(a.maxError, 1e-4f);
-  EXPECT_GT(a.peak, 2000u);
-}
-
 // Marks the points with x > 0.5 and z > 1 as without data (a corner of the box).
 void maskCorner(VectorField& field) {
   std::vector<std::uint8_t> valid(field.pointCount(), 1);

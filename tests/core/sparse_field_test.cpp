@@ -2,8 +2,6 @@
 
 #include <gtest/gtest.h>
 
-#include <cstring>
-
 #include "core/util/error.h"
 #include "tests/core/sparse_grid_builder.h"
 
@@ -80,52 +78,6 @@ TEST(SparseField, AFewVoxelsInAHugeBoxTakeTheMemoryOfTheirNodes) {
   EXPECT_EQ(f.indexMax(), glm::ivec3(4000));
   EXPECT_LT(f.byteSize(), std::size_t(2) << 20);
   EXPECT_EQ(f.sample(glm::vec3(4000.0f)), glm::vec3(2.0f));
-}
-
-// The table a GPU walks from: a lower node's address for each 128^3 region
-// holding active voxels, the background's address (+1) for every other, over
-// the regions sampling may touch; none past the entries allowed.
-TEST(SparseField, TheRegionTableFindsEachRegionsLowerNodeOrTheValueItReads) {
-  const glm::vec3 background(0.5f, -1.0f, 2.0f);
-  const SparseField f(test::buildSparseGrid(
-                          [](const auto& set) {
-                            set({0, 0, 0}, glm::vec3(1.0f));
-                            set({4000, 4000, 4000}, glm::vec3(2.0f));
-                          },
-                          1.0, glm::dvec3(0.0), background),
-                      "two");
-  const SparseField::RegionTable t = f.regionTable(std::size_t{1} << 22);
-  // Corners reach two voxels around the active ones: regions -1 .. 31.
-  EXPECT_EQ(t.origin, glm::ivec3(-1));
-  EXPECT_EQ(t.dims, glm::ivec3(33));
-  ASSERT_EQ(t.entries.size(), 33u * 33u * 33u);
-  const auto at = [&](glm::ivec3 r) {
-    r -= t.origin;
-    return t.entries[std::size_t((r.z * t.dims.y + r.y) * t.dims.x + r.x)];
-  };
-  std::size_t lower = 0;
-  for (std::size_t i = 0; i < t.entries.size(); ++i) {
-    const std::uint32_t e = t.entries[i];
-    ASSERT_LT(e, f.byteSize());
-    if ((e & 1u) == 0u) {
-      ++lower;
-      EXPECT_EQ(e % 32u, 0u) << "a node's address is 32-byte aligned";
-      continue;
-    }
-    // Elsewhere the region reads one value: the background.
-    const std::uint32_t word = (e - 1u) / 4u;
-    glm::vec3 v;
-    std::memcpy(&v, f.words().data() + word, sizeof v);
-    ASSERT_EQ(v, background) << "entry " << i;
-  }
-  EXPECT_EQ(lower, 2u);
-  EXPECT_EQ(at(glm::ivec3(0)) & 1u, 0u);
-  EXPECT_EQ(at(glm::ivec3(31)) & 1u, 0u);
-  EXPECT_EQ(at(glm::ivec3(5, 0, 0)) & 1u, 1u);
-  // Past the entries allowed: no table (the GPU walks from the root).
-  const SparseField::RegionTable none = f.regionTable(33u * 33u * 33u - 1u);
-  EXPECT_EQ(none.dims, glm::ivec3(0));
-  EXPECT_TRUE(none.entries.empty());
 }
 
 TEST(SparseField, TheOverviewSamplesTheFieldOnADenseGridOverItsBounds) {
