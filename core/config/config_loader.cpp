@@ -302,10 +302,10 @@ std::string relativeTo(const Reader& r, const std::string& path) {
 void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   r.checkKeys(
       t, "field",
-      {"source",     "name",      "dims",          "resolution", "bounds_min",   "bounds_max",
-       "params",     "offset",    "scale",         "yaw_deg",    "rotation_deg", "mode",
-       "expression", "watch",     "step_interval", "wait_s",     "settle_s",     "memory_budget",
-       "read_ahead", "upload_ahead", "precision", "storage"});
+      {"source",     "name",         "dims",          "resolution", "bounds_min",   "bounds_max",
+       "params",     "offset",       "scale",         "yaw_deg",    "rotation_deg", "mode",
+       "expression", "watch",        "step_interval", "wait_s",     "settle_s",     "memory_budget",
+       "read_ahead", "upload_ahead", "precision",     "storage"});
   f.source = r.string(t, "source", "field", f.source);
   if (f.source != "analytic") f.source = relativeTo(r, f.source);
   // A file's array or grid is chosen by name; without one, the file's only (or active) vector one.
