@@ -5,7 +5,7 @@
 // would take long to build. Made, drawn and closed on the main thread (GLFW's rule).
 #pragma once
 
-#include <memory>
+#include <optional>
 
 #include "contexts/platform/glfw_window.h"
 #include "core/util/progress_board.h"

@@ -8,8 +8,9 @@
 namespace sandstorm {
 namespace {
 
-// Bytes in the units a person reads them in; other units as counts.
-std::string amount(double v, const std::string& unit) {
+// Bytes in the units a person reads them in ("572.0 MB"); other units as
+// counts, without the unit ("572000"; a rate in two figures: "1.2e+06").
+std::string amount(double v, const std::string& unit, bool rate = false) {
   char text[48];
   if (unit == "bytes") {
     const char* names[] = {"bytes", "KB", "MB", "GB", "TB"};
@@ -18,9 +19,14 @@ std::string amount(double v, const std::string& unit) {
       v /= 1000.0, ++i;
     std::snprintf(text, sizeof text, i == 0 ? "%.0f %s" : "%.1f %s", v, names[i]);
   } else {
-    std::snprintf(text, sizeof text, v >= 1e5 ? "%.3g %s" : "%.0f %s", v, unit.c_str());
+    std::snprintf(text, sizeof text, rate && v >= 1e5 ? "%.2g" : "%.0f", v);
   }
   return text;
+}
+
+// A count in its unit: "572.0 MB", "572000 cells".
+std::string counted(double v, const std::string& unit, bool rate = false) {
+  return unit == "bytes" ? amount(v, unit) : amount(v, unit, rate) + " " + unit;
 }
 
 }  // namespace
@@ -30,14 +36,12 @@ double ProgressSnapshot::fraction() const {
 }
 
 std::string ProgressSnapshot::text() const {
-  char tail[96];
-  if (total == 0) {
-    std::snprintf(tail, sizeof tail, "%s/s", amount(rate, unit).c_str());
-    return what + ": " + amount(double(done), unit) + ", " + tail;
-  }
-  std::snprintf(tail, sizeof tail, "%d%% (%s of %s), %s/s, %.1f s left", int(100.0 * fraction()),
-                amount(double(done), unit).c_str(), amount(double(total), unit).c_str(),
-                amount(rate, unit).c_str(), secondsLeft);
+  const std::string perSecond = counted(rate, unit, true) + "/s";
+  if (total == 0) return what + ": " + counted(double(done), unit) + ", " + perSecond;
+  char tail[160];
+  std::snprintf(tail, sizeof tail, "%d%% (%s of %s), %s, %.1f s left", int(100.0 * fraction()),
+                amount(double(done), unit).c_str(), counted(double(total), unit).c_str(),
+                perSecond.c_str(), secondsLeft);
   return what + ": " + tail;
 }
 

@@ -11,12 +11,6 @@ std::int64_t nanoseconds(std::chrono::steady_clock::duration d) {
   return std::chrono::duration_cast<std::chrono::nanoseconds>(d).count();
 }
 
-std::string shortNumber(double v) {
-  char text[32];
-  std::snprintf(text, sizeof text, v >= 1e5 ? "%.2g" : "%.0f", v);
-  return text;
-}
-
 }  // namespace
 
 ProgressMeter::ProgressMeter(std::string what, std::uint64_t total, std::string unit)
@@ -46,28 +40,17 @@ ProgressSnapshot ProgressMeter::snapshot() const {
 }
 
 void ProgressMeter::add(std::uint64_t done) {
-  const std::uint64_t now = done_.fetch_add(done, std::memory_order_relaxed) + done;
+  done_.fetch_add(done, std::memory_order_relaxed);
   const Clock::time_point t = Clock::now();
   if (nanoseconds(t - start_) < nextReportNs_.load(std::memory_order_relaxed)) return;
   std::unique_lock lock(mutex_, std::try_to_lock);
   if (!lock.owns_lock()) return;
-  report(now, t);
+  report(t);
 }
 
-void ProgressMeter::report(std::uint64_t done, Clock::time_point now) {
-  const double seconds = std::chrono::duration<double>(now - start_).count();
+void ProgressMeter::report(Clock::time_point now) {
   nextReportNs_.store(nanoseconds(now - start_) + 1'000'000'000, std::memory_order_relaxed);
-  const double rate = seconds > 0.0 ? double(done) / seconds : 0.0;
-  const double left = rate > 0.0 ? double(total_ - std::min(done, total_)) / rate : 0.0;
-  char tail[64];
-  std::snprintf(tail, sizeof tail, "%.1f s left", left);
-  if (total_ == 0) {  // open-ended: what is done and how fast
-    log::info(what_, ": ", done, " ", unit_, ", ", shortNumber(rate), " ", unit_, "/s");
-    said_ = true;
-    return;
-  }
-  log::info(what_, ": ", total_ ? int(100.0 * double(done) / double(total_)) : 100, "% (", done,
-            " of ", total_, " ", unit_, "), ", shortNumber(rate), " ", unit_, "/s, ", tail);
+  log::info(snapshot().text());
   said_ = true;
 }
 

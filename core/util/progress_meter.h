@@ -1,7 +1,9 @@
 // ProgressMeter: what a long piece of work (loading, resampling) has done,
 // logged at info level to stderr as it goes: the amount done of the total,
 // the rate and the time left, e.g.
-//   [sandstorm info] resampling wind.vtu: 41% (572000 of 1400000 cells), 1.2e6 cells/s, 0.7 s left
+//   [sandstorm info] resampling wind.vtu: 41% (572000 of 1400000 cells), 1.2e+06 cells/s, 0.7 s
+//   left [sandstorm info] reading wind.vti: 56% (49.3 MB of 86.5 MB), 49.0 MB/s, 0.8 s left
+// (ProgressSnapshot::text()).
 // Work that ends within its first second says nothing. add() may be called
 // from any thread; a line is written at most once a second, by whichever
 // thread finds the second over. While it lives it is on the ProgressBoard,
@@ -35,7 +37,7 @@ class ProgressMeter {
 
  private:
   using Clock = std::chrono::steady_clock;
-  void report(std::uint64_t done, Clock::time_point now);
+  void report(Clock::time_point now);
 
   std::string what_, unit_;
   std::uint64_t total_;

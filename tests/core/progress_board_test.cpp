@@ -31,6 +31,7 @@ TEST(ProgressBoard, ShowsTheNewestLiveMeterAndNothingOnceItEnds) {
       EXPECT_EQ(s->what, "resampling wind.vtu");
       EXPECT_EQ(s->fraction(), 0.0);
       EXPECT_EQ(s->secondsLeft, 0.0);
+      EXPECT_EQ(s->text().rfind("resampling wind.vtu: 1200 cells, ", 0), 0u) << s->text();
     }
     s = board.snapshot();  // back to the one still under way
     ASSERT_TRUE(s.has_value());
