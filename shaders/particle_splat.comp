@@ -15,6 +15,9 @@ layout(std430, binding = 5) readonly buffer Dispatch {
   uint count;
 } args;
 layout(std430, binding = 6) restrict buffer SplatAccumulation { uint accum[]; };
+#ifdef MOTION_FILTER
+layout(std430, binding = 16) restrict buffer SplatMotion { int motionSums[]; };
+#endif
 
 #include "splat_add.glsl"
 

@@ -17,6 +17,15 @@ layout(rgba16f, binding = 0) writeonly uniform image2D uColor;
 layout(rgba16f, binding = 1) writeonly uniform image2D uNormal;
 layout(r16f, binding = 2) writeonly uniform image2D uLight;
 layout(location = 0) uniform ivec2 uSize;
+#ifdef MOTION_FILTER
+// The motion sums (splat_common.glsl), and their means written for the
+// filter (the motion and its doubled-angle axis, view pixels over the
+// shutter; zero where nothing moves).
+layout(std430, binding = 16) restrict buffer SplatMotion { ivec4 motionSums[]; };
+layout(rgba16f, binding = 3) writeonly uniform image2D uMotion;
+vec4 motion = vec4(0.0);
+float motionWeight = 0.0;  // channel 2's sum: the splats' weight (not the trails')
+#endif
 
 // Adds `weight` times a pixel's sums (its two uvec4).
 void addSums(uvec4 first, uvec4 second, float weight, inout float sums[kSplatChannels]) {
@@ -29,6 +38,10 @@ void addSums(uvec4 first, uvec4 second, float weight, inout float sums[kSplatCha
 }
 void addSums(uint index, float weight, inout float sums[kSplatChannels]) {
   addSums(accum[index * 2u], accum[index * 2u + 1u], weight, sums);
+#ifdef MOTION_FILTER
+  motion += weight * vec4(motionSums[index]);
+  motionWeight += weight * float(accum[index * 2u].z);
+#endif
 }
 
 // Adds the trails' two sums at view pixel p (splat_common.glsl): their
@@ -81,6 +94,13 @@ void main() {
   uvec4 first = accum[index * 2u], second = accum[index * 2u + 1u];
   if (first.z != 0u || second.z != 0u) {
     addSums(first, second, 1.0, sums);
+#ifdef MOTION_FILTER
+    if (first.z != 0u) {
+      motion = vec4(motionSums[index]);
+      motionWeight = float(first.z);
+      motionSums[index] = ivec4(0);
+    }
+#endif
     if (second.z != 0u) addTrails(p, second.zw, sums);
     accum[index * 2u] = uvec4(0u);
     accum[index * 2u + 1u] = uvec4(0u);
@@ -92,4 +112,8 @@ void main() {
   imageStore(uColor, p, color);
   imageStore(uNormal, p, normal);
   imageStore(uLight, p, vec4(light));
+#ifdef MOTION_FILTER
+  // The mean over the splats' weights here (trails are not blurred).
+  imageStore(uMotion, p, motionWeight > 0.0 ? motion / (motionWeight * (kSplatMotionScale / kSplatScale)) : vec4(0.0));
+#endif
 }

@@ -1,7 +1,8 @@
 // Adds splat s's footprint over the pixels lo..hi (inclusive, in its level's
 // pixels) to its level's sums with global atomics. Needs splat_footprint.glsl
 // and the sums declared as `accum` (kSplatStride uints a pixel, each level's
-// rows of its width, one level after another: splat_common.glsl), and marks
+// rows of its width, one level after another: splat_common.glsl), with
+// MOTION_FILTER the motion sums as `motionSums`, and marks
 // a coarser level's tiles it adds to (splat_occupied.glsl).
 #include "splat_occupied.glsl"
 
@@ -16,6 +17,11 @@ void addSplat(Splat s, ivec2 lo, ivec2 hi) {
       if (!splatAt(s, ivec2(x, y), v)) continue;
       uint base = (offset + uint(y) * width + uint(x)) * kSplatStride;
       for (uint c = 0u; c < kSplatChannels; ++c) atomicAdd(accum[base + c], v[c]);
+#ifdef MOTION_FILTER
+      ivec4 m = splatMotionAt(s, v[2]);
+      uint at = (offset + uint(y) * width + uint(x)) * kSplatMotionSums;
+      for (uint c = 0u; c < kSplatMotionSums; ++c) atomicAdd(motionSums[at + c], m[c]);
+#endif
     }
   }
 }

@@ -32,6 +32,9 @@ layout(std430, binding = 5) readonly buffer Dispatch {
 } args;
 layout(std430, binding = 7) restrict buffer TileCounts { uint tileCount[]; };
 layout(std430, binding = 6) restrict buffer SplatAccumulation { uint accum[]; };
+#ifdef MOTION_FILTER
+layout(std430, binding = 16) restrict buffer SplatMotion { int motionSums[]; };
+#endif
 layout(std430, binding = 8) writeonly restrict buffer TileLists { uvec4 tileList[]; };  // splat records
 layout(std430, binding = 9) readonly restrict buffer TileStarts { uint tileStart[]; };
 layout(std430, binding = 10) restrict buffer GroupBase { uint groupBase[]; };  // [group][tile]
@@ -58,8 +61,11 @@ void main() {
     vec4 pl = positionLife[i];
     uvec3 where;
     Splat s;
-#ifdef MOTION_BLUR
+#if defined(MOTION_BLUR)
     vec3 velocity = velocityKind[i].xyz;
+#elif defined(MOTION_FILTER)
+    // The filter's splats are still: the motion only rides in the record.
+    vec3 velocity = uScatter ? velocityKind[i].xyz : vec3(0.0);
 #else
     const vec3 velocity = vec3(0.0);
 #endif

@@ -23,6 +23,20 @@ const uint kSplatChannels = 6u;
 const uint kSplatTrailChannel = 6u;
 const uint kSplatTrailChannels = 2u;
 const float kSplatScale = 4096.0;
+// Motion blur by a filter (MOTION_FILTER: render.shutter with render.blur =
+// filter): each pixel also sums its splats' motion m over the shutter (view
+// pixels), weighted by their optical depth, as four signed sums in a buffer
+// of its own (kSplatMotionSums ints a pixel, every level's after the finer
+// ones', as the sums): the motion (mx, my) and its axis with the angle
+// doubled, (mx^2 - my^2, 2 mx my) / |m|, which paths along a line add up
+// whichever way they run (the front and the back of a vortex cross a pixel
+// in opposite directions: their motions cancel, their axes do not). Fixed
+// point: kSplatMotionScale steps per pixel and unit of weight, channel 2's
+// integer over 16, so 25 000 opaque splats moving 48 pixels fit in an int.
+// The resolve writes the means (over channel 2's sum), which
+// particle_motion_filter.comp blurs the particle buffers along.
+const uint kSplatMotionSums = 4u;
+const float kSplatMotionScale = kSplatScale / 16.0;
 // The tiled pass: tiles of kSplatTile x kSplatTile pixels, at most
 // kSplatMaxTiles a view (a 4K view has 8160; a histogram of them fits in a
 // workgroup's shared memory); each tile's list is cut into chunks (of 8192

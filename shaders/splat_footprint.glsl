@@ -29,6 +29,9 @@ struct Splat {
   float color;    // the colour map's coordinate
   float light;    // the share of the light reaching it through the dust
   vec2 motion;    // motion blur: where the centre was when the shutter opened, negated (radii)
+#ifdef MOTION_FILTER
+  vec2 flow;      // the same in view pixels, for the filter (the splat itself is not smeared)
+#endif
   ivec2 lo, hi;   // the pixels it may cover (inclusive, inside the view)
   int level;      // the grid it is drawn on (splat_common.glsl): pixel, radius,
                   // motion, lo and hi are in that level's pixels
@@ -79,7 +82,7 @@ bool splatCentre(vec3 center, vec3 velocity, out uvec3 where) {
   if (any(lessThan(fixedPixel, vec2(0.0))) || any(greaterThan(fixedPixel, vec2(65535.0)))) return false;
   // Motion blur: the centre's pixel when the shutter opened, on the same side of the eye.
   vec2 motion = vec2(0.0);
-#ifdef MOTION_BLUR
+#if defined(MOTION_BLUR) || defined(MOTION_FILTER)
   if (look.params.w > 0.0) {
     vec4 before = view.viewProjection * vec4(center - velocity * look.params.w, 1.0);
     if (before.w > 1e-4) motion = pixel - (before.xy / before.w * 0.5 + 0.5) * view.viewport.zw;
@@ -126,6 +129,9 @@ bool splatBounds(uvec3 where, int level, out Splat s) {
 #endif
   vec2 size = vec2(splatLevelSize(ivec2(view.viewport.zw), level));
   s.radius = min(splatViewRadius(s.distance) * scale, vec2(kMaxRadius));
+#ifdef MOTION_FILTER
+  s.flow = unpackHalf2x16(where.z);
+#endif
   vec2 least = min(s.pixel, s.pixel - motion) - s.radius, greatest = max(s.pixel, s.pixel - motion) + s.radius;
   if (greatest.x < 0.0 || greatest.y < 0.0 || least.x > size.x || least.y > size.y) return false;
   s.invRadius = 1.0 / s.radius;
@@ -251,6 +257,16 @@ bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
   v[5] = uint(nn.z);
   return true;
 }
+
+#ifdef MOTION_FILTER
+// What a splat adds to a pixel's motion sums (splat_common.glsl), from what
+// it adds to channel 2 there.
+ivec4 splatMotionAt(Splat s, uint depth) {
+  float len = length(s.flow);
+  vec2 axis = len > 0.0 ? vec2(s.flow.x * s.flow.x - s.flow.y * s.flow.y, 2.0 * s.flow.x * s.flow.y) / len : vec2(0.0);
+  return ivec4(round(float(depth) * (kSplatMotionScale / kSplatScale) * vec4(s.flow, axis)));
+}
+#endif
 
 // The particle buffers' values from a pixel's sums (as floats, the normal's
 // signed, every level's added): alpha is "over"'s, 1 - prod(1 - alpha_i);

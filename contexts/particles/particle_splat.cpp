@@ -60,6 +60,7 @@ enum Binding : GLuint {
   kTrailDispatch = 13,
   kOccupied = 14,
   kTrailRing = 15,
+  kMotionSums = 16,
   kTrailStaged = 17
 };
 
@@ -111,14 +112,15 @@ namespace {
 std::vector<std::string> lookDefines(SplatLook look) {
   std::vector<std::string> defines;
   if (look.shadows) defines.push_back("SHADOWS");
-  if (look.motionBlur) defines.push_back("MOTION_BLUR");
+  if (look.blur == SplatLook::Blur::Smear) defines.push_back("MOTION_BLUR");
+  if (look.blur == SplatLook::Blur::Filter) defines.push_back("MOTION_FILTER");
   return defines;
 }
 
 }  // namespace
 
 const ParticleSplat::Programs& ParticleSplat::programs(SplatLook look) const {
-  std::unique_ptr<Programs>& p = variants_[look.shadows][look.motionBlur];
+  std::unique_ptr<Programs>& p = variants_[look.shadows][int(look.blur)];
   if (!p) {
     const std::vector<std::string> d = lookDefines(look);
     p = std::make_unique<Programs>(Programs{gl::Program({"particle_splat.comp"}, d),
@@ -126,7 +128,14 @@ const ParticleSplat::Programs& ParticleSplat::programs(SplatLook look) const {
                                             std::nullopt, std::nullopt});
     if (tiled_) {
       p->bin.emplace(std::vector<std::string>{"splat_bin.comp"}, d);
-      p->tile.emplace(std::vector<std::string>{"splat_tile.comp"}, d);
+      std::vector<std::string> tileDefines = d;
+      // The filter's motion sums take a tile's shared sums from 24 to 40 KiB:
+      // where the GPU has less (llvmpipe: 32), the tile is summed in two bands.
+      GLint shared = 0;
+      glGetIntegerv(GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, &shared);
+      if (look.blur == SplatLook::Blur::Filter && shared < 40 * 1024)
+        tileDefines.push_back("TILE_BAND_ROWS 16");
+      p->tile.emplace(std::vector<std::string>{"splat_tile.comp"}, tileDefines);
     }
   }
   return *p;
@@ -147,6 +156,7 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   glBindImageTexture(2, targets.particleLight(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
 
   const glm::ivec2 size = targets.size();
+  const bool filter = look.blur == SplatLook::Blur::Filter;
   // Levels where asked for; where their tiles overflow the histogram (views
   // of more than about 6 megapixels) the tiled pass draws every splat at
   // full resolution, as it did before levels, rather than falling back to
@@ -155,6 +165,7 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   const bool tiled = tiled_ && levelTiles(size, 1) <= kMaxTiles;
   if (tiled && levelTiles(size, levels) > kMaxTiles) levels = 1;
   bindSums(levelPixels(size, levels));
+  if (filter) bindMotionSums(levelPixels(size, levels));
   // The coarser levels' tiles that get splats (splat_occupied.glsl).
   const std::size_t occupancy = levels > 1 ? levelTiles(size, levels) : 0;
   if (occupancy > occupancy_) {
@@ -177,17 +188,27 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   if (trails) addTrailSums(records, particles.capacity(), size, tiled);
   // Both variants leave the sums in the buffer; the resolve turns them into
   // the particle images and zeroes the full-resolution ones for the next view.
+  // With the filter, into its own images, which it then blurs into the view's.
+  if (filter) {
+    if (!filter_) filter_ = std::make_unique<ParticleMotionFilter>();
+    filter_->bindResolveImages(size);
+  }
   p.resolve.use();
   glProgramUniform2i(p.resolve.id(), 0, size.x, size.y);
   glDispatchCompute(GLuint((size.x + 15) / 16), GLuint((size.y + 15) / 16), 1);
+  if (filter) {
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    filter_->apply(targets);
+  }
   // ParticlePost reads the images as textures.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                   GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   // The coarser levels' sums, which many pixels read, are zeroed after the
-  // resolve where marked, and so are the marks.
+  // resolve where marked, and so are the marks (and the motion sums).
   if (levels > 1) {
-    clear_.use();
-    glProgramUniform1i(clear_.id(), kLevelsUniform, levels);
+    const gl::Program& clear = filter ? clearMotion() : clear_;
+    clear.use();
+    glProgramUniform1i(clear.id(), kLevelsUniform, levels);
     glDispatchCompute(GLuint(occupancy - levelTiles(size, 1)), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
@@ -204,6 +225,22 @@ void ParticleSplat::bindSums(std::size_t pixels) const {
     pixels_ = pixels;
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAccumulation, accumulation_.id());
+}
+
+void ParticleSplat::bindMotionSums(std::size_t pixels) const {
+  if (pixels > motionPixels_) {
+    motion_ = allocate(pixels * 16, "motion blur's sums");
+    zero(motion_);
+    motionPixels_ = pixels;
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMotionSums, motion_.id());
+}
+
+const gl::Program& ParticleSplat::clearMotion() const {
+  if (!clearMotion_)
+    clearMotion_ = std::make_unique<gl::Program>(std::vector<std::string>{"splat_clear.comp"},
+                                                 std::vector<std::string>{"MOTION_FILTER"});
+  return *clearMotion_;
 }
 
 void ParticleSplat::prepare(const ParticleBackend::Records& records) const {

@@ -30,6 +30,10 @@
 // keeps its centre in 1/8 pixel from -64, so views are at most 8127 pixels
 // wide (an 8K wall's 7680 fit).
 //
+// Motion blur either smears each splat along its path (render.blur = smear)
+// or draws it still and blurs the particle buffers along each pixel's mean
+// motion (filter: ParticleMotionFilter).
+//
 // Shadows (the light in channel 0, the sums weighed by -ln(1 - alpha):
 // splat_common.glsl) and motion blur (smeared footprints) cost the splat
 // passes registers and work even when unused (1.4x on an H100), so each is
@@ -50,6 +54,7 @@
 #include "contexts/gl/program.h"
 #include "contexts/gl/timestamp_spans.h"
 #include "contexts/particles/particle_backend.h"
+#include "contexts/particles/particle_motion_filter.h"
 #include "core/config/gpu_tuning.h"
 #include "core/util/faster_choice.h"
 
@@ -58,10 +63,13 @@ namespace sandstorm {
 class ViewTargets;
 
 // What splats show beyond the particles' colour (render.shadows,
-// render.shutter > 0), and whether large ones go to coarser levels
-// (render.splat_detail > 0).
+// render.shutter > 0 by render.blur's smear or filter), and whether large
+// ones go to coarser levels (render.splat_detail > 0).
 struct SplatLook {
-  bool shadows = false, motionBlur = false, levels = false;
+  enum class Blur { None, Smear, Filter };
+  bool shadows = false;
+  Blur blur = Blur::None;
+  bool levels = false;
 };
 
 class ParticleSplat {
@@ -88,6 +96,9 @@ class ParticleSplat {
   static bool hasTrails(const ParticleBackend::Records& records);
   // The sums of `pixels` pixels, bound; the dispatch sizes from the live count.
   void bindSums(std::size_t pixels) const;
+  // Motion blur's filter: its sums (four ints a pixel), bound; the levels' clear.
+  void bindMotionSums(std::size_t pixels) const;
+  const gl::Program& clearMotion() const;
   void prepare(const ParticleBackend::Records& records) const;
   // The tiled variant's bins and lists, bound.
   void bindTiles(std::size_t tileCount, std::size_t listCapacity) const;
@@ -123,7 +134,13 @@ class ParticleSplat {
   gl::Program prepare_;
   gl::Program clear_;                // levels: zeroes the marked tiles' sums and the marks
   std::optional<gl::Program> scan_;  // tiled
-  mutable std::unique_ptr<Programs> variants_[2][2];  // [shadows][motion blur]
+  mutable std::unique_ptr<Programs> variants_[2][3];  // [shadows][SplatLook::Blur]
+  // Motion blur by the filter, made on first use: the levels' clear that
+  // zeroes the motion sums too, the sums, the filter.
+  mutable std::unique_ptr<gl::Program> clearMotion_;
+  mutable gl::Buffer motion_;
+  mutable std::size_t motionPixels_ = 0;
+  mutable std::unique_ptr<ParticleMotionFilter> filter_;
   gl::Buffer dispatch_, chunkDispatch_;
   mutable gl::Buffer accumulation_;  // the sums
   mutable std::size_t pixels_ = 0;

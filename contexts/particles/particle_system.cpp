@@ -136,12 +136,16 @@ bool ParticleSystem::splats(const View* view, glm::ivec2 size) const {
 }
 
 void ParticleSystem::renderParticles(const ViewTargets& targets, const View* view) const {
-  if (splats(view, targets.size()))
+  if (splats(view, targets.size())) {
+    const RenderSettings& r = state_.render;
+    using Blur = SplatLook::Blur;
     splat_.draw(*update_, targets, render_.sprite(),
-                {.shadows = state_.render.shadows,
-                 .motionBlur = state_.render.shutter > 0.0f,
-                 .levels = state_.render.splatDetail > 0.0f});
-  else
+                {.shadows = r.shadows,
+                 .blur = r.shutter <= 0.0f             ? Blur::None
+                         : r.blur == BlurMethod::Smear ? Blur::Smear
+                                                       : Blur::Filter,
+                 .levels = r.splatDetail > 0.0f});
+  } else
     render_.draw(*update_, targets, state_.render.mode, state_.render.order);
   if (const MoleculeHandles m = molecules()) {
     if (!moleculeRenderer_) moleculeRenderer_ = std::make_unique<MoleculeRenderer>();

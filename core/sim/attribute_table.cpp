@@ -234,6 +234,11 @@ std::vector<AttributeInfo> makeEntries() {
                     "Motion blur: each particle is smeared along the path it travelled during "
                     "this shutter time (0: off; splats smear at most 48 pixels)",
                     RENDER(shutter)));
+  v.push_back(enumEntry("render.blur", {"filter", "smear"},
+                        "Splats' motion blur: the particle images blurred along each pixel's "
+                        "motion (fast), or each splat smeared along its own path (exact where "
+                        "paths cross, slower by the pixels the smears cover)",
+                        RENDER(blur)));
   v.push_back(entry("render.softness", T::Float, 0, 10, "m",
                     "Particles fade out within this distance in front of scene geometry",
                     RENDER(softness)));

@@ -75,6 +75,10 @@ enum class RenderMode : int { Points = 0, Billboards = 1, Splat = 2, Auto = 3 };
 // the GPU (GpuRadixSort), so nearer dust covers farther dust as it should.
 // Splats average the particles in a pixel and need no order.
 enum class RenderOrder : int { Unsorted = 0, Sorted = 1 };
+// How splats show motion blur (render.blur): the particle buffers blurred
+// along each pixel's motion (ParticleMotionFilter), or each splat smeared
+// along its own path (exact, and slower by the pixels its smear covers).
+enum class BlurMethod : int { Filter = 0, Smear = 1 };
 
 struct RenderSettings {
   RenderMode mode = RenderMode::Billboards;
@@ -95,10 +99,11 @@ struct RenderSettings {
   int shadowResolution = 256;  // the map's largest side, texels
   float scattering = 0.0f;     // 1/m: the air's haze, lit through the dust's shadow (0: none)
   float shutter = 0.0f;        // s: motion blur over this much of the particles' path (0: off)
-  float softness = 0.3f;       // m: particles fade out this close to scene geometry
-  float splatPixels = 64.0f;   // Auto mode: splat particles up to this projected diameter
-  float splatDetail = 4.0f;    // px: splats twice this wide go to coarser grids (0: never)
-  bool fieldBox = true;        // outline the field's bounds
+  BlurMethod blur = BlurMethod::Filter;  // splats' motion blur
+  float softness = 0.3f;                 // m: particles fade out this close to scene geometry
+  float splatPixels = 64.0f;             // Auto mode: splat particles up to this projected diameter
+  float splatDetail = 4.0f;  // px: splats twice this wide go to coarser grids (0: never)
+  bool fieldBox = true;      // outline the field's bounds
   // Colour by a quantity (core/color): which, through which map, over which range.
   ColorQuantity colorBy = ColorQuantity::Age;
   std::string colorArray;  // ColorQuantity::Array: the field's scalar array ("": its first)

@@ -441,7 +441,11 @@ TEST_F(RenderTest, MotionBlurSmearsAParticleOverItsPathInTheShutterTime) {
         bake(Uniform(speed * direction), Box{{-5, -5, 0}, {5, 5, 5}}, {2, 2, 2}));
     const glm::vec3 at(0.0f, 0.0f, 2.0f);
     const glm::vec2 path = projectExactly(at) - projectExactly(at - direction);
-    for (const RenderMode mode : {RenderMode::Billboards, RenderMode::Splat}) {
+    // Billboards smear; splats smear, or blur their images along their motion (the filter).
+    for (const auto& [mode, blur] : {std::pair{RenderMode::Billboards, BlurMethod::Smear},
+                                     std::pair{RenderMode::Splat, BlurMethod::Smear},
+                                     std::pair{RenderMode::Splat, BlurMethod::Filter}}) {
+      SCOPED_TRACE(blur == BlurMethod::Filter ? "filter" : "smear");
       // Opacity from the green channel: the particle's is 0.1, the sky's near 0.8.
       const Image empty = render(onePerFrame({}, 0.8f), 1, field);
       struct Moments {
@@ -454,6 +458,7 @@ TEST_F(RenderTest, MotionBlurSmearsAParticleOverItsPathInTheShutterTime) {
         s.render.mode = mode;
         s.render.size = 0.6f;
         s.render.shutter = shutterTime;
+        s.render.blur = blur;
         const Image image = render(s, 1, field);
         Moments m;
         glm::dvec2 sum(0.0), squares(0.0);
@@ -472,11 +477,12 @@ TEST_F(RenderTest, MotionBlurSmearsAParticleOverItsPathInTheShutterTime) {
       };
       const Moments still = moments(0.0f), blurred = moments(shutter);
       std::printf(
-          "mode %d, path (%.1f, %.1f) px: opacity %.2f -> %.2f, centre moved (%.2f, %.2f) px, "
-          "variance up (%.2f, %.2f) px^2 (expected (%.2f, %.2f))\n",
-          int(mode), path.x, path.y, still.mass, blurred.mass, blurred.mean.x - still.mean.x,
-          blurred.mean.y - still.mean.y, blurred.variance.x - still.variance.x,
-          blurred.variance.y - still.variance.y, path.x * path.x / 12.0, path.y * path.y / 12.0);
+          "mode %d, blur %d, path (%.1f, %.1f) px: opacity %.2f -> %.2f, centre moved (%.2f, "
+          "%.2f) px, variance up (%.2f, %.2f) px^2 (expected (%.2f, %.2f))\n",
+          int(mode), int(blur), path.x, path.y, still.mass, blurred.mass,
+          blurred.mean.x - still.mean.x, blurred.mean.y - still.mean.y,
+          blurred.variance.x - still.variance.x, blurred.variance.y - still.variance.y,
+          path.x * path.x / 12.0, path.y * path.y / 12.0);
       EXPECT_NEAR(blurred.mass, still.mass, 0.05 * still.mass);
       for (int axis = 0; axis < 2; ++axis) {
         const double expected = double(path[axis]) * path[axis] / 12.0;

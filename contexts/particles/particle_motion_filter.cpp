@@ -1,0 +1,74 @@
+#include "contexts/particles/particle_motion_filter.h"
+
+#include <epoxy/gl.h>
+
+#include "contexts/render/view_targets.h"
+#include "core/util/error.h"
+
+namespace sandstorm {
+namespace {
+
+constexpr int kMotionTile = 48;  // particle_motion_tiles.comp
+
+gl::Texture texture2D(GLenum format, glm::ivec2 size, GLenum filter) {
+  gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
+  glTextureStorage2D(t.id(), 1, format, size.x, size.y);
+  glTextureParameteri(t.id(), GL_TEXTURE_MIN_FILTER, GLint(filter));
+  glTextureParameteri(t.id(), GL_TEXTURE_MAG_FILTER, GLint(filter));
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(t.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return t;
+}
+
+}  // namespace
+
+ParticleMotionFilter::ParticleMotionFilter()
+    : tiles_({"particle_motion_tiles.comp"}), filter_({"particle_motion_filter.comp"}) {}
+
+void ParticleMotionFilter::resize(glm::ivec2 size) const {
+  if (size == size_) return;
+  glGetError();
+  // The filter samples the buffers between pixels (linear); the motion exactly.
+  color_ = texture2D(GL_RGBA16F, size, GL_LINEAR);
+  normal_ = texture2D(GL_RGBA16F, size, GL_LINEAR);
+  light_ = texture2D(GL_R16F, size, GL_LINEAR);
+  motion_ = texture2D(GL_RGBA16F, size, GL_NEAREST);
+  tileMotion_ = texture2D(GL_RG16F, (size + kMotionTile - 1) / kMotionTile, GL_NEAREST);
+  if (glGetError() == GL_OUT_OF_MEMORY)
+    throw Error(concat("the GPU is out of memory for motion blur's images of ", size.x, "x", size.y,
+                       " pixels; set render.shutter = 0 or choose a smaller wall"));
+  size_ = size;
+}
+
+void ParticleMotionFilter::bindResolveImages(glm::ivec2 size) const {
+  resize(size);
+  glBindImageTexture(0, color_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glBindImageTexture(1, normal_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glBindImageTexture(2, light_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
+  glBindImageTexture(3, motion_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+}
+
+void ParticleMotionFilter::apply(const ViewTargets& targets) const {
+  const glm::ivec2 size = targets.size();
+  if (size != size_) throw Error("ParticleMotionFilter: apply() for another size than resolved");
+  const glm::ivec2 tiles = (size + kMotionTile - 1) / kMotionTile;
+  glBindTextureUnit(3, motion_.id());
+  glBindImageTexture(4, tileMotion_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
+  tiles_.use();
+  glProgramUniform2i(tiles_.id(), 0, size.x, size.y);
+  glDispatchCompute(GLuint(tiles.x), GLuint(tiles.y), 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+
+  glBindTextureUnit(0, color_.id());
+  glBindTextureUnit(1, normal_.id());
+  glBindTextureUnit(2, light_.id());
+  glBindTextureUnit(4, tileMotion_.id());
+  glBindImageTexture(0, targets.particleColor(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glBindImageTexture(1, targets.particleNormal(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  glBindImageTexture(2, targets.particleLight(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
+  filter_.use();
+  glProgramUniform2i(filter_.id(), 0, size.x, size.y);
+  glDispatchCompute(GLuint((size.x + 15) / 16), GLuint((size.y + 15) / 16), 1);
+}
+
+}  // namespace sandstorm

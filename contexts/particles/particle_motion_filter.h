@@ -1,0 +1,41 @@
+// ParticleMotionFilter: motion blur for splats (render.shutter with
+// render.blur = filter) as a gather over the particle buffers rather than a
+// smear of every splat: the splats are drawn still, each pixel also keeps its
+// splats' mean motion over the shutter, and a filter blurs the premultiplied
+// buffers along it (shaders/particle_motion_filter.comp says how). Its cost
+// is a pass over the view's pixels, not the extra pixels each smear covers
+// (with 10^7 particles a smear covered several times its still footprint).
+//
+// ParticleSplat's resolve writes into the filter's own buffers
+// (bindResolveImages), then apply() blurs them into the view's particle
+// buffers. Needs the GL context current.
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "contexts/gl/objects.h"
+#include "contexts/gl/program.h"
+
+namespace sandstorm {
+
+class ViewTargets;
+
+class ParticleMotionFilter {
+ public:
+  ParticleMotionFilter();
+  // Binds image units 0-3 to the unblurred colour, normal, light and the
+  // means of the motion sums (RGBA16F: splat_common.glsl), sized to the view,
+  // for the resolve to write.
+  void bindResolveImages(glm::ivec2 size) const;
+  // Blurs them into the view's particle buffers.
+  void apply(const ViewTargets& targets) const;
+
+ private:
+  void resize(glm::ivec2 size) const;
+
+  gl::Program tiles_, filter_;
+  mutable glm::ivec2 size_{0};
+  mutable gl::Texture color_, normal_, light_, motion_, tileMotion_;
+};
+
+}  // namespace sandstorm

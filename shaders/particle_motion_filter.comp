@@ -1,0 +1,102 @@
+#version 450 core
+// ParticleMotionFilter, step 2: motion blur (render.shutter, render.blur =
+// filter) as a gather over the splats' particle buffers. A splat that moved
+// by m pixels over the shutter covers, averaged over that time, its still
+// footprint swept back along m, with 1/|m| of its weight a pixel of path. So
+// a pixel p receives from the pixels q = p + u a ahead of it along an axis a
+// whose motion along a (speed s) reaches back to p (s > u), with weight
+// du / s, and from the pixels behind it that move the other way: the box
+// shutter's smear of a layer moving with the pixels, conserving opacity.
+// The buffers hold premultiplied values, so averaging them averages what
+// covers p over the shutter time.
+//
+// A pixel's splats may move different ways (a vortex's front and back cross
+// it in opposite directions): the resolve gives each pixel its mean motion
+// and the mean of its axis with the angle doubled (splat_common.glsl), and
+// the filter takes a pixel's splats as moving along that axis at that speed,
+// the share (1 + mean / speed) / 2 of them forwards and the rest backwards.
+// One direction moves as it should; opposite ones each smear both ways, as
+// long in all. The axis is the pixel's own where it moves, else the longest
+// of the 3x3 tiles around (particle_motion_tiles.comp), which reaches any
+// pixel a smear may cover; samples moving across the axis are not gathered
+// (the approximation of a reconstruction filter (McGuire et al. 2012)).
+layout(local_size_x = 16, local_size_y = 16) in;
+layout(binding = 0) uniform sampler2D uColorIn;  // the resolve's, unblurred (linear filtering)
+layout(binding = 1) uniform sampler2D uNormalIn;
+layout(binding = 2) uniform sampler2D uLightIn;
+layout(binding = 3) uniform sampler2D uMotion;  // the motion's and its axis's means (view pixels)
+layout(binding = 4) uniform sampler2D uTiles;   // the longest axis a tile
+layout(rgba16f, binding = 0) writeonly uniform image2D uColor;
+layout(rgba16f, binding = 1) writeonly uniform image2D uNormal;
+layout(r16f, binding = 2) writeonly uniform image2D uLight;
+layout(location = 0) uniform ivec2 uSize;
+
+const int kMotionTile = 48;
+// Samples a side: at most 1.5 pixels apart over a 48-pixel smear.
+const int kMaxTaps = 32;
+// Pixels: nothing around moving this far, the pixel is kept as it is.
+const float kStill = 0.5;
+
+// The unit direction of an axis given with its angle doubled.
+vec2 axisDirection(vec2 doubled) {
+  vec2 v = vec2(length(doubled) + doubled.x, doubled.y);
+  return dot(v, v) > 1e-12 ? normalize(v) : vec2(0.0, 1.0);
+}
+
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (p.x >= uSize.x || p.y >= uSize.y) return;
+  vec2 own = texelFetch(uMotion, p, 0).zw;
+  ivec2 tile = p / kMotionTile, tiles = textureSize(uTiles, 0);
+  vec2 near = vec2(0.0);
+  for (int y = -1; y <= 1; ++y)
+    for (int x = -1; x <= 1; ++x) {
+      vec2 m = texelFetch(uTiles, clamp(tile + ivec2(x, y), ivec2(0), tiles - 1), 0).xy;
+      if (dot(m, m) > dot(near, near)) near = m;
+    }
+  float ownLength = length(own), reach = max(length(near), ownLength);
+  vec4 color = texelFetch(uColorIn, p, 0), normal = texelFetch(uNormalIn, p, 0);
+  float light = texelFetch(uLightIn, p, 0).r;
+  if (reach >= kStill) {
+    vec2 a = axisDirection(ownLength >= kStill ? own : near);
+    // The pixel's own content covers it for the time it takes to leave: half
+    // a pixel at its speed along the axis.
+    float self = min(1.0, 0.5 / max(ownLength * abs(dot(axisDirection(own), a)), 1e-6));
+    color *= self;
+    normal *= self;
+    light *= self;
+    // Samples beyond the pixel's half width, each standing for du pixels of
+    // path, out to the longest reach around.
+    int taps = clamp(int(ceil(reach / 1.5)), 1, kMaxTaps);
+    float du = reach / float(taps);
+    vec2 invSize = 1.0 / vec2(uSize);
+    for (int side = 0; side < 2; ++side) {
+      vec2 d = side == 0 ? a : -a;
+      for (int k = 0; k < taps; ++k) {
+        float u = 0.5 + (float(k) + 0.5) * du;
+        vec2 q = vec2(p) + 0.5 + u * d;  // window coordinates of the sample
+        if (any(lessThan(q, vec2(0.0))) || any(greaterThanEqual(q, vec2(uSize)))) break;
+        vec4 m = texelFetch(uMotion, ivec2(q), 0);
+        float s = length(m.zw) * abs(dot(axisDirection(m.zw), a));  // its speed along the axis
+        // The time its path [u - s, u] spends over this pixel [-0.5, 0.5].
+        float covers = clamp(s + 0.5 - u, 0.0, 1.0);
+        if (covers <= 0.0) continue;
+        float towards = clamp(0.5 + 0.5 * dot(m.xy, d) / s, 0.0, 1.0);  // the share moving along d
+        float w = towards * du * covers / s;
+        vec2 at = q * invSize;
+        color += w * textureLod(uColorIn, at, 0.0);
+        normal += w * textureLod(uNormalIn, at, 0.0);
+        light += w * textureLod(uLightIn, at, 0.0).r;
+      }
+    }
+  }
+  // Smears overlapping a pixel add their opacities, which "over" would
+  // saturate: keep the mean's colour and cap its opacity at 1.
+  float over = max(color.a, 1.0);
+  color /= over;
+  normal /= over;
+  light /= over;
+  imageStore(uColor, p, color);
+  imageStore(uNormal, p, normal);
+  imageStore(uLight, p, vec4(light));
+}
