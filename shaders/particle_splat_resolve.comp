@@ -18,15 +18,30 @@ layout(rgba16f, binding = 1) writeonly uniform image2D uNormal;
 layout(r16f, binding = 2) writeonly uniform image2D uLight;
 layout(location = 0) uniform ivec2 uSize;
 #ifdef MOTION_FILTER
-// The motion sums (splat_common.glsl), and their means written for the
-// filter (the motion and its doubled-angle axis, view pixels over the
-// shutter; zero where nothing moves).
-layout(std430, binding = 16) restrict buffer SplatMotion { ivec4 motionSums[]; };
+// The motion blocks' sums (splat_common.glsl, two ivec4 a block), and their
+// means at each pixel written for the filter: the motion and its
+// doubled-angle axis, view pixels over the shutter (zero where nothing moves).
+layout(std430, binding = 16) readonly restrict buffer SplatMotion { ivec4 motionSums[]; };
 layout(rgba16f, binding = 3) writeonly uniform image2D uMotion;
-vec4 motion = vec4(0.0);
-float motionWeight = 0.0;  // channel 2's sum: the splats' weight (not the trails')
-#endif
 
+// Adds a level's blocks' sums at view pixel p, interpolated bilinearly
+// between the blocks' centres (clamped at the level's edges).
+void addMotion(int level, ivec2 p, inout vec4 motion, inout float weight) {
+  ivec2 blocks = splatMotionBlocks(uSize, level);
+  vec2 at = (vec2(p) + 0.5) / float(kSplatMotionBlock << level) - 0.5;
+  ivec2 i0 = ivec2(floor(at));
+  vec2 f = at - vec2(i0);
+  uint offset = splatMotionBlockOffset(uSize, level);
+  for (int dy = 0; dy <= 1; ++dy)
+    for (int dx = 0; dx <= 1; ++dx) {
+      float w = (dx == 0 ? 1.0 - f.x : f.x) * (dy == 0 ? 1.0 - f.y : f.y);
+      ivec2 q = clamp(i0 + ivec2(dx, dy), ivec2(0), blocks - 1);
+      uint b = offset + uint(q.y) * uint(blocks.x) + uint(q.x);
+      motion += w * vec4(motionSums[b * 2u]);
+      weight += w * float(motionSums[b * 2u + 1u].x);
+    }
+}
+#endif
 // Adds `weight` times a pixel's sums (its two uvec4).
 void addSums(uvec4 first, uvec4 second, float weight, inout float sums[kSplatChannels]) {
   sums[0] += weight * float(first.x);
@@ -38,10 +53,6 @@ void addSums(uvec4 first, uvec4 second, float weight, inout float sums[kSplatCha
 }
 void addSums(uint index, float weight, inout float sums[kSplatChannels]) {
   addSums(accum[index * 2u], accum[index * 2u + 1u], weight, sums);
-#ifdef MOTION_FILTER
-  motion += weight * vec4(motionSums[index]);
-  motionWeight += weight * float(accum[index * 2u].z);
-#endif
 }
 
 // Adds the trails' two sums at view pixel p (splat_common.glsl): their
@@ -94,13 +105,6 @@ void main() {
   uvec4 first = accum[index * 2u], second = accum[index * 2u + 1u];
   if (first.z != 0u || second.z != 0u) {
     addSums(first, second, 1.0, sums);
-#ifdef MOTION_FILTER
-    if (first.z != 0u) {
-      motion = vec4(motionSums[index]);
-      motionWeight = float(first.z);
-      motionSums[index] = ivec4(0);
-    }
-#endif
     if (second.z != 0u) addTrails(p, second.zw, sums);
     accum[index * 2u] = uvec4(0u);
     accum[index * 2u + 1u] = uvec4(0u);
@@ -113,7 +117,9 @@ void main() {
   imageStore(uNormal, p, normal);
   imageStore(uLight, p, vec4(light));
 #ifdef MOTION_FILTER
-  // The mean over the splats' weights here (trails are not blurred).
-  imageStore(uMotion, p, motionWeight > 0.0 ? motion / (motionWeight * (kSplatMotionScale / kSplatScale)) : vec4(0.0));
+  vec4 motion = vec4(0.0);
+  float weight = 0.0;
+  for (int level = 0; level < uSplatLevels; ++level) addMotion(level, p, motion, weight);
+  imageStore(uMotion, p, weight > 0.0 ? motion / weight : vec4(0.0));
 #endif
 }

@@ -2,7 +2,7 @@
 // ParticleSplat, after the resolve where the view used coarser levels
 // (render.splat_detail): one workgroup a tile of those levels zeroes the sums
 // of a marked tile and its mark (splat_occupied.glsl) for the next view; an
-// unmarked tile has nothing to zero; with MOTION_FILTER the motion sums too. (A buffer clear of the levels' sums, 22 MB
+// unmarked tile has nothing to zero. (A buffer clear of the levels' sums, 22 MB
 // for a 1920x1080 view, took 0.7 ms a view on an H100.)
 #include "view_block.glsl"
 #include "splat_common.glsl"
@@ -11,9 +11,6 @@
 layout(local_size_x = 256) in;
 layout(std430, binding = 6) writeonly restrict buffer SplatAccumulation { uvec4 accum[]; };
 layout(location = 15) uniform int uSplatLevels;  // as splat_footprint.glsl's
-#ifdef MOTION_FILTER
-layout(std430, binding = 16) writeonly restrict buffer SplatMotion { uvec4 motionSums[]; };
-#endif
 
 shared bool sMarked;
 
@@ -35,9 +32,6 @@ void main() {
     uint index = offset + uint(p.y) * uint(levelSize.x) + uint(p.x);
     accum[index * 2u] = uvec4(0u);
     accum[index * 2u + 1u] = uvec4(0u);
-#ifdef MOTION_FILTER
-    motionSums[index] = uvec4(0u);
-#endif
   }
   if (gl_LocalInvocationIndex == 0u) occupied[t] = 0u;
 }

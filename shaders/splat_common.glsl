@@ -24,19 +24,22 @@ const uint kSplatTrailChannel = 6u;
 const uint kSplatTrailChannels = 2u;
 const float kSplatScale = 4096.0;
 // Motion blur by a filter (MOTION_FILTER: render.shutter with render.blur =
-// filter): each pixel also sums its splats' motion m over the shutter (view
-// pixels), weighted by their optical depth, as four signed sums in a buffer
-// of its own (kSplatMotionSums ints a pixel, every level's after the finer
-// ones', as the sums): the motion (mx, my) and its axis with the angle
-// doubled, (mx^2 - my^2, 2 mx my) / |m|, which paths along a line add up
-// whichever way they run (the front and the back of a vortex cross a pixel
-// in opposite directions: their motions cancel, their axes do not). Fixed
-// point: kSplatMotionScale steps per pixel and unit of weight, channel 2's
-// integer over 16, so 25 000 opaque splats moving 48 pixels fit in an int.
-// The resolve writes the means (over channel 2's sum), which
-// particle_motion_filter.comp blurs the particle buffers along.
-const uint kSplatMotionSums = 4u;
-const float kSplatMotionScale = kSplatScale / 16.0;
+// filter): each splat also adds its motion m over the shutter (view pixels)
+// to the 4x4-pixel block of its level's grid its centre lies in (within the
+// 32-pixel tile it is drawn in, the nearest such block), weighted by what it
+// added to channel 2 there: five signed sums a block (two ivec4, the second's
+// last three unused; every level's blocks after the finer ones'): the
+// weight w, w m and w times m's axis with the angle doubled, (mx^2 - my^2,
+// 2 mx my) / |m|, which paths along one line add up whichever way they run (a
+// vortex's front and back cross a pixel in opposite directions: their
+// motions cancel, their axes do not). Once a splat, not once a pixel: motion
+// changes slowly across the image. Fixed point: w is channel 2's integers
+// over kSplatMotionDivisor. The resolve interpolates the blocks' sums
+// bilinearly and writes their means, which particle_motion_filter.comp
+// blurs the particle buffers along.
+const int kSplatMotionBlock = 4;
+const float kSplatMotionDivisor = 64.0;
+
 // The tiled pass: tiles of kSplatTile x kSplatTile pixels, at most
 // kSplatMaxTiles a view (a 4K view has 8160; a histogram of them fits in a
 // workgroup's shared memory); each tile's list is cut into chunks (of 8192
@@ -75,6 +78,20 @@ uint splatTileOffset(ivec2 size, int level) {
   for (int l = 0; l < level; ++l) {
     ivec2 t = splatLevelTiles(size, l);
     offset += uint(t.x) * uint(t.y);
+  }
+  return offset;
+}
+
+ivec2 splatMotionBlocks(ivec2 size, int level) {
+  return (splatLevelSize(size, level) + kSplatMotionBlock - 1) / kSplatMotionBlock;
+}
+
+// The first of a level's blocks; splatMotionBlockOffset(size, levels) is their number.
+uint splatMotionBlockOffset(ivec2 size, int level) {
+  uint offset = 0u;
+  for (int l = 0; l < level; ++l) {
+    ivec2 b = splatMotionBlocks(size, l);
+    offset += uint(b.x) * uint(b.y);
   }
   return offset;
 }

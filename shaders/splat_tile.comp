@@ -28,22 +28,16 @@ layout(std430, binding = 12) readonly buffer ChunkDispatch {
 layout(location = 1) uniform uint uChunk;  // entries a chunk
 layout(location = 2) uniform uint uListCapacity;
 #ifdef MOTION_FILTER
-layout(std430, binding = 16) restrict buffer SplatMotion { int motionSums[]; };
+layout(std430, binding = 16) restrict buffer SplatMotion { int motionSums[]; };  // 8 a block
 #endif
 
 #include "splat_occupied.glsl"
 
-// Rows of the tile summed at once: all 32, or (TILE_BAND_ROWS, where the
-// motion filter's sums would pass the GPU's shared memory: 40 KiB against
-// llvmpipe's 32) bands of them, each going through the chunk's records.
-#ifndef TILE_BAND_ROWS
-#define TILE_BAND_ROWS 32
-#endif
-const int kBandRows = TILE_BAND_ROWS;
-const uint kBandPixels = uint(kSplatTile * kBandRows);
-shared uint sSums[kSplatChannels][kBandPixels];
+const uint kTilePixels = uint(kSplatTile * kSplatTile);
+shared uint sSums[kSplatChannels][kTilePixels];
 #ifdef MOTION_FILTER
-shared int sMotion[kSplatMotionSums][kBandPixels];
+const int kTileBlocks = kSplatTile / kSplatMotionBlock;  // a side
+shared int sMotion[5][kTileBlocks * kTileBlocks];
 #endif
 
 void main() {
@@ -63,66 +57,84 @@ void main() {
   bool alone = chunkStart[t + 1u] - chunkStart[t] == 1u && tileStart[t + 1u] <= uListCapacity;
 
   uint lid = gl_LocalInvocationIndex;
+  for (uint px = lid; px < kTilePixels; px += kGroup)
+    for (uint c = 0u; c < kSplatChannels; ++c) sSums[c][px] = 0u;
+#ifdef MOTION_FILTER
+  if (lid < uint(kTileBlocks * kTileBlocks))
+    for (int c = 0; c < 5; ++c) sMotion[c][lid] = 0;
+#endif
+  barrier();
   // The tile's level, and where it lies on that level's grid.
   int level = 0;
   while (level + 1 < uSplatLevels && t >= splatTileOffset(size, level + 1)) ++level;
   uint local = t - splatTileOffset(size, level), across = uint(splatLevelTiles(size, level).x);
-  ivec2 tileOrigin = ivec2(int(local % across), int(local / across)) * kSplatTile;
+  ivec2 origin = ivec2(int(local % across), int(local / across)) * kSplatTile;
+  for (uint k = begin + lid; k < end; k += kGroup) {
+    Splat s;
+    if (!unpackSplat(tileList[k], level, s)) continue;
+    ivec2 a = max(s.lo, origin), b = min(s.hi, origin + kSplatTile - 1);
+#ifdef MOTION_FILTER
+    uint drawn = 0u;  // what it adds to channel 2 in this tile
+#endif
+    for (int y = a.y; y <= b.y; ++y) {
+      ivec2 row = splatRow(s, y);
+      for (int x = max(a.x, row.x); x <= min(b.x, row.y); ++x) {
+        uint v[kSplatChannels];
+        if (!splatAt(s, ivec2(x, y), v)) continue;
+        uint px = uint((y - origin.y) * kSplatTile + (x - origin.x));
+        for (uint c = 0u; c < kSplatChannels; ++c) atomicAdd(sSums[c][px], v[c]);
+#ifdef MOTION_FILTER
+        drawn += v[2];
+#endif
+      }
+    }
+#ifdef MOTION_FILTER
+    if (drawn > 0u) {
+      ivec4 m;
+      int w;
+      splatMotionSums(s, drawn, m, w);
+      ivec2 first, last;
+      splatMotionBlockRange(a - origin, b - origin, first, last);
+      for (int by = first.y; by <= last.y; ++by)
+        for (int bx = first.x; bx <= last.x; ++bx) {
+          int at = by * kTileBlocks + bx;
+          for (int c = 0; c < 4; ++c) atomicAdd(sMotion[c][at], m[c]);
+          atomicAdd(sMotion[4][at], w);
+        }
+    }
+#endif
+  }
+  barrier();
   if (lid == 0u && level > 0 && end > begin) occupied[t] = 1u;
   uvec2 levelSize = uvec2(splatLevelSize(size, level));
   uint offset = splatLevelOffset(size, level);
-  for (int band = 0; band < kSplatTile; band += kBandRows) {
-    ivec2 origin = tileOrigin + ivec2(0, band);
-    for (uint px = lid; px < kBandPixels; px += kGroup) {
-      for (uint c = 0u; c < kSplatChannels; ++c) sSums[c][px] = 0u;
-#ifdef MOTION_FILTER
-      for (uint c = 0u; c < kSplatMotionSums; ++c) sMotion[c][px] = 0;
-#endif
+  for (uint px = lid; px < kTilePixels; px += kGroup) {
+    uvec2 p = uvec2(origin) + uvec2(px % uint(kSplatTile), px / uint(kSplatTile));
+    if (p.x >= levelSize.x || p.y >= levelSize.y) continue;
+    uint base = (offset + p.y * levelSize.x + p.x) * kSplatStride;
+    for (uint c = 0u; c < kSplatChannels; ++c) {
+      uint v = sSums[c][px];
+      if (v == 0u) continue;
+      if (alone)
+        accum[base + c] = v;
+      else
+        atomicAdd(accum[base + c], v);
     }
-    barrier();
-    for (uint k = begin + lid; k < end; k += kGroup) {
-      Splat s;
-      if (!unpackSplat(tileList[k], level, s)) continue;
-      ivec2 a = max(s.lo, origin), b = min(s.hi, origin + ivec2(kSplatTile, kBandRows) - 1);
-      for (int y = a.y; y <= b.y; ++y) {
-        ivec2 row = splatRow(s, y);
-        for (int x = max(a.x, row.x); x <= min(b.x, row.y); ++x) {
-          uint v[kSplatChannels];
-          if (!splatAt(s, ivec2(x, y), v)) continue;
-          uint px = uint((y - origin.y) * kSplatTile + (x - origin.x));
-          for (uint c = 0u; c < kSplatChannels; ++c) atomicAdd(sSums[c][px], v[c]);
-#ifdef MOTION_FILTER
-          ivec4 m = splatMotionAt(s, v[2]);
-          for (uint c = 0u; c < kSplatMotionSums; ++c) atomicAdd(sMotion[c][px], m[c]);
-#endif
-        }
-      }
-    }
-    barrier();
-    for (uint px = lid; px < kBandPixels; px += kGroup) {
-      uvec2 p = uvec2(origin) + uvec2(px % uint(kSplatTile), px / uint(kSplatTile));
-      if (p.x >= levelSize.x || p.y >= levelSize.y) continue;
-      uint base = (offset + p.y * levelSize.x + p.x) * kSplatStride;
-      for (uint c = 0u; c < kSplatChannels; ++c) {
-        uint v = sSums[c][px];
-        if (v == 0u) continue;
-        if (alone)
-          accum[base + c] = v;
-        else
-          atomicAdd(accum[base + c], v);
-      }
-#ifdef MOTION_FILTER
-      uint at = (offset + p.y * levelSize.x + p.x) * kSplatMotionSums;
-      for (uint c = 0u; c < kSplatMotionSums; ++c) {
-        int v = sMotion[c][px];
-        if (v == 0) continue;
-        if (alone)
-          motionSums[at + c] = v;
-        else
-          atomicAdd(motionSums[at + c], v);
-      }
-#endif
-    }
-    barrier();  // before the next band zeroes the sums
   }
+#ifdef MOTION_FILTER
+  // The tile's blocks' motion sums.
+  if (lid < uint(kTileBlocks * kTileBlocks)) {
+    ivec2 block = origin / kSplatMotionBlock + ivec2(int(lid) % kTileBlocks, int(lid) / kTileBlocks);
+    ivec2 blocks = splatMotionBlocks(size, level);
+    if (block.x < blocks.x && block.y < blocks.y && sMotion[4][lid] != 0) {
+      uint at = (splatMotionBlockOffset(size, level) + uint(block.y * blocks.x + block.x)) * 8u;
+      for (int c = 0; c < 5; ++c) {
+        if (alone)
+          motionSums[at + uint(c)] = sMotion[c][lid];
+        else
+          atomicAdd(motionSums[at + uint(c)], sMotion[c][lid]);
+      }
+    }
+  }
+#endif
 }

@@ -21,6 +21,8 @@ constexpr std::size_t kMaxBinGroups = 1024;  // kSplatMaxBinGroups
 constexpr std::size_t kRecordBytes = 16;     // a splat record (splat_footprint.glsl)
 constexpr int kLevels = 4;                   // kSplatLevels
 constexpr GLint kLevelsUniform = 15;         // uSplatLevels (splat_footprint.glsl)
+constexpr int kMotionBlock = 4;              // kSplatMotionBlock (splat_common.glsl)
+constexpr std::size_t kMotionBlockBytes = 32;  // two ivec4 a block
 
 // The levels' grids, as splat_common.glsl lays them out: each level's pixels
 // and tiles follow the finer levels'.
@@ -34,6 +36,15 @@ std::size_t levelPixels(glm::ivec2 size, int levels) {
     pixels += std::size_t(s.x) * std::size_t(s.y);
   }
   return pixels;
+}
+// The motion filter's blocks over every level's grid (splat_common.glsl).
+std::size_t motionBlocks(glm::ivec2 size, int levels) {
+  std::size_t blocks = 0;
+  for (int l = 0; l < levels; ++l) {
+    const glm::ivec2 b = (levelSize(size, l) + kMotionBlock - 1) / kMotionBlock;
+    blocks += std::size_t(b.x) * std::size_t(b.y);
+  }
+  return blocks;
 }
 std::size_t levelTiles(glm::ivec2 size, int levels) {
   std::size_t tiles = 0;
@@ -128,14 +139,7 @@ const ParticleSplat::Programs& ParticleSplat::programs(SplatLook look) const {
                                             std::nullopt, std::nullopt});
     if (tiled_) {
       p->bin.emplace(std::vector<std::string>{"splat_bin.comp"}, d);
-      std::vector<std::string> tileDefines = d;
-      // The filter's motion sums take a tile's shared sums from 24 to 40 KiB:
-      // where the GPU has less (llvmpipe: 32), the tile is summed in two bands.
-      GLint shared = 0;
-      glGetIntegerv(GL_MAX_COMPUTE_SHARED_MEMORY_SIZE, &shared);
-      if (look.blur == SplatLook::Blur::Filter && shared < 40 * 1024)
-        tileDefines.push_back("TILE_BAND_ROWS 16");
-      p->tile.emplace(std::vector<std::string>{"splat_tile.comp"}, tileDefines);
+      p->tile.emplace(std::vector<std::string>{"splat_tile.comp"}, d);
     }
   }
   return *p;
@@ -165,7 +169,7 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   const bool tiled = tiled_ && levelTiles(size, 1) <= kMaxTiles;
   if (tiled && levelTiles(size, levels) > kMaxTiles) levels = 1;
   bindSums(levelPixels(size, levels));
-  if (filter) bindMotionSums(levelPixels(size, levels));
+  if (filter) bindMotionSums(motionBlocks(size, levels));
   // The coarser levels' tiles that get splats (splat_occupied.glsl).
   const std::size_t occupancy = levels > 1 ? levelTiles(size, levels) : 0;
   if (occupancy > occupancy_) {
@@ -197,18 +201,23 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   glProgramUniform2i(p.resolve.id(), 0, size.x, size.y);
   glDispatchCompute(GLuint((size.x + 15) / 16), GLuint((size.y + 15) / 16), 1);
   if (filter) {
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
+                    GL_BUFFER_UPDATE_BARRIER_BIT);
+    // The motion blocks, a 16th of the pixels, are zeroed for the next view at once.
+    const GLuint value = 0;
+    glClearNamedBufferSubData(motion_.id(), GL_R32UI, 0,
+                              GLsizeiptr(motionBlocks(size, levels) * kMotionBlockBytes),
+                              GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
     filter_->apply(targets);
   }
   // ParticlePost reads the images as textures.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
                   GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   // The coarser levels' sums, which many pixels read, are zeroed after the
-  // resolve where marked, and so are the marks (and the motion sums).
+  // resolve where marked, and so are the marks.
   if (levels > 1) {
-    const gl::Program& clear = filter ? clearMotion() : clear_;
-    clear.use();
-    glProgramUniform1i(clear.id(), kLevelsUniform, levels);
+    clear_.use();
+    glProgramUniform1i(clear_.id(), kLevelsUniform, levels);
     glDispatchCompute(GLuint(occupancy - levelTiles(size, 1)), 1, 1);
     glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   }
@@ -227,20 +236,13 @@ void ParticleSplat::bindSums(std::size_t pixels) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAccumulation, accumulation_.id());
 }
 
-void ParticleSplat::bindMotionSums(std::size_t pixels) const {
-  if (pixels > motionPixels_) {
-    motion_ = allocate(pixels * 16, "motion blur's sums");
+void ParticleSplat::bindMotionSums(std::size_t blocks) const {
+  if (blocks > motionBlocks_) {
+    motion_ = allocate(blocks * kMotionBlockBytes, "motion blur's sums");
     zero(motion_);
-    motionPixels_ = pixels;
+    motionBlocks_ = blocks;
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMotionSums, motion_.id());
-}
-
-const gl::Program& ParticleSplat::clearMotion() const {
-  if (!clearMotion_)
-    clearMotion_ = std::make_unique<gl::Program>(std::vector<std::string>{"splat_clear.comp"},
-                                                 std::vector<std::string>{"MOTION_FILTER"});
-  return *clearMotion_;
 }
 
 void ParticleSplat::prepare(const ParticleBackend::Records& records) const {

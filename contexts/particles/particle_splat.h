@@ -96,9 +96,8 @@ class ParticleSplat {
   static bool hasTrails(const ParticleBackend::Records& records);
   // The sums of `pixels` pixels, bound; the dispatch sizes from the live count.
   void bindSums(std::size_t pixels) const;
-  // Motion blur's filter: its sums (four ints a pixel), bound; the levels' clear.
-  void bindMotionSums(std::size_t pixels) const;
-  const gl::Program& clearMotion() const;
+  // Motion blur's filter: the sums of `blocks` blocks (splat_common.glsl), bound.
+  void bindMotionSums(std::size_t blocks) const;
   void prepare(const ParticleBackend::Records& records) const;
   // The tiled variant's bins and lists, bound.
   void bindTiles(std::size_t tileCount, std::size_t listCapacity) const;
@@ -135,11 +134,9 @@ class ParticleSplat {
   gl::Program clear_;                // levels: zeroes the marked tiles' sums and the marks
   std::optional<gl::Program> scan_;  // tiled
   mutable std::unique_ptr<Programs> variants_[2][3];  // [shadows][SplatLook::Blur]
-  // Motion blur by the filter, made on first use: the levels' clear that
-  // zeroes the motion sums too, the sums, the filter.
-  mutable std::unique_ptr<gl::Program> clearMotion_;
+  // Motion blur by the filter, made on first use: the blocks' sums, the filter.
   mutable gl::Buffer motion_;
-  mutable std::size_t motionPixels_ = 0;
+  mutable std::size_t motionBlocks_ = 0;
   mutable std::unique_ptr<ParticleMotionFilter> filter_;
   gl::Buffer dispatch_, chunkDispatch_;
   mutable gl::Buffer accumulation_;  // the sums
