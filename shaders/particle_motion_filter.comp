@@ -17,23 +17,24 @@
 // the share (1 + mean / speed) / 2 of them forwards and the rest backwards.
 // One direction moves as it should; opposite ones each smear both ways, as
 // long in all. The axis is the pixel's own where it moves, else the longest
-// of the 3x3 tiles around (particle_motion_tiles.comp), which reaches any
-// pixel a smear may cover; samples moving across the axis are not gathered
-// (the approximation of a reconstruction filter (McGuire et al. 2012)).
+// of the tiles around whose motion reaches it (particle_motion_tiles.comp,
+// particle_motion_reach.comp); samples moving across the axis are not
+// gathered (the approximation of a reconstruction filter (McGuire et al.
+// 2012)).
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(binding = 0) uniform sampler2D uColorIn;  // the resolve's, unblurred (linear filtering)
 layout(binding = 1) uniform sampler2D uNormalIn;
 layout(binding = 2) uniform sampler2D uLightIn;
 layout(binding = 3) uniform sampler2D uMotion;  // the motion's and its axis's means (view pixels)
-layout(binding = 4) uniform sampler2D uTiles;   // the longest axis a tile
+layout(binding = 5) uniform sampler2D uReach;   // the longest axis reaching a tile
 layout(rgba16f, binding = 0) writeonly uniform image2D uColor;
 layout(rgba16f, binding = 1) writeonly uniform image2D uNormal;
 layout(r16f, binding = 2) writeonly uniform image2D uLight;
 layout(location = 0) uniform ivec2 uSize;
 
-const int kMotionTile = 48;
-// Samples a side: at most 1.5 pixels apart over a 48-pixel smear.
-const int kMaxTaps = 32;
+const int kMotionTile = 16;
+// Samples a side: at most 2 pixels apart over a 48-pixel smear.
+const int kMaxTaps = 24;
 // Pixels: nothing around moving this far, the pixel is kept as it is.
 const float kStill = 0.5;
 
@@ -47,16 +48,12 @@ void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (p.x >= uSize.x || p.y >= uSize.y) return;
   vec2 own = texelFetch(uMotion, p, 0).zw;
-  ivec2 tile = p / kMotionTile, tiles = textureSize(uTiles, 0);
-  vec2 near = vec2(0.0);
-  for (int y = -1; y <= 1; ++y)
-    for (int x = -1; x <= 1; ++x) {
-      vec2 m = texelFetch(uTiles, clamp(tile + ivec2(x, y), ivec2(0), tiles - 1), 0).xy;
-      if (dot(m, m) > dot(near, near)) near = m;
-    }
+  vec2 near = texelFetch(uReach, p / kMotionTile, 0).xy;
   float ownLength = length(own), reach = max(length(near), ownLength);
   vec4 color = texelFetch(uColorIn, p, 0), normal = texelFetch(uNormalIn, p, 0);
+#ifdef SHADOWS
   float light = texelFetch(uLightIn, p, 0).r;
+#endif
   if (reach >= kStill) {
     vec2 a = axisDirection(ownLength >= kStill ? own : near);
     // The pixel's own content covers it for the time it takes to leave: half
@@ -64,10 +61,12 @@ void main() {
     float self = min(1.0, 0.5 / max(ownLength * abs(dot(axisDirection(own), a)), 1e-6));
     color *= self;
     normal *= self;
+#ifdef SHADOWS
     light *= self;
+#endif
     // Samples beyond the pixel's half width, each standing for du pixels of
     // path, out to the longest reach around.
-    int taps = clamp(int(ceil(reach / 1.5)), 1, kMaxTaps);
+    int taps = clamp(int(ceil(reach / 2.0)), 1, kMaxTaps);
     float du = reach / float(taps);
     vec2 invSize = 1.0 / vec2(uSize);
     for (int side = 0; side < 2; ++side) {
@@ -86,7 +85,9 @@ void main() {
         vec2 at = q * invSize;
         color += w * textureLod(uColorIn, at, 0.0);
         normal += w * textureLod(uNormalIn, at, 0.0);
+#ifdef SHADOWS
         light += w * textureLod(uLightIn, at, 0.0).r;
+#endif
       }
     }
   }
@@ -95,7 +96,11 @@ void main() {
   float over = max(color.a, 1.0);
   color /= over;
   normal /= over;
+#ifdef SHADOWS
   light /= over;
+#else
+  float light = color.a;  // without shadows the light buffer is the opacity (splat_footprint.glsl)
+#endif
   imageStore(uColor, p, color);
   imageStore(uNormal, p, normal);
   imageStore(uLight, p, vec4(light));

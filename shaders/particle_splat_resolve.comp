@@ -31,6 +31,15 @@ void addMotion(int level, ivec2 p, inout vec4 motion, inout float weight) {
   vec2 at = (vec2(p) + 0.5) / float(kSplatMotionBlock << level) - 0.5;
   ivec2 i0 = ivec2(floor(at));
   vec2 f = at - vec2(i0);
+  if (level > 0) {  // blocks outside marked tiles hold nothing (splat_occupied.glsl)
+    ivec2 t0 = clamp(i0, ivec2(0), blocks - 1) / (kSplatTile / kSplatMotionBlock);
+    ivec2 t1 = clamp(i0 + 1, ivec2(0), blocks - 1) / (kSplatTile / kSplatMotionBlock);
+    uint first = splatTileOffset(uSize, level), across = uint(splatLevelTiles(uSize, level).x);
+    bool marked = false;
+    for (int ty = t0.y; ty <= t1.y; ++ty)
+      for (int tx = t0.x; tx <= t1.x; ++tx) marked = marked || occupied[first + uint(ty) * across + uint(tx)] != 0u;
+    if (!marked) return;
+  }
   uint offset = splatMotionBlockOffset(uSize, level);
   for (int dy = 0; dy <= 1; ++dy)
     for (int dx = 0; dx <= 1; ++dx) {

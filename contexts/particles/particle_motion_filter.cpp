@@ -8,7 +8,7 @@
 namespace sandstorm {
 namespace {
 
-constexpr int kMotionTile = 48;  // particle_motion_tiles.comp
+constexpr int kMotionTile = 16;  // particle_motion_tiles.comp
 
 gl::Texture texture2D(GLenum format, glm::ivec2 size, GLenum filter) {
   gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
@@ -23,7 +23,10 @@ gl::Texture texture2D(GLenum format, glm::ivec2 size, GLenum filter) {
 }  // namespace
 
 ParticleMotionFilter::ParticleMotionFilter()
-    : tiles_({"particle_motion_tiles.comp"}), filter_({"particle_motion_filter.comp"}) {}
+    : tiles_({"particle_motion_tiles.comp"}),
+      reach_({"particle_motion_reach.comp"}),
+      filter_({"particle_motion_filter.comp"}),
+      shadowedFilter_({"particle_motion_filter.comp"}, {"SHADOWS"}) {}
 
 void ParticleMotionFilter::resize(glm::ivec2 size) const {
   if (size == size_) return;
@@ -34,6 +37,7 @@ void ParticleMotionFilter::resize(glm::ivec2 size) const {
   light_ = texture2D(GL_R16F, size, GL_LINEAR);
   motion_ = texture2D(GL_RGBA16F, size, GL_NEAREST);
   tileMotion_ = texture2D(GL_RG16F, (size + kMotionTile - 1) / kMotionTile, GL_NEAREST);
+  reachTexture_ = texture2D(GL_RG16F, (size + kMotionTile - 1) / kMotionTile, GL_NEAREST);
   if (glGetError() == GL_OUT_OF_MEMORY)
     throw Error(concat("the GPU is out of memory for motion blur's images of ", size.x, "x", size.y,
                        " pixels; set render.shutter = 0 or choose a smaller wall"));
@@ -48,7 +52,7 @@ void ParticleMotionFilter::bindResolveImages(glm::ivec2 size) const {
   glBindImageTexture(3, motion_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
 }
 
-void ParticleMotionFilter::apply(const ViewTargets& targets) const {
+void ParticleMotionFilter::apply(const ViewTargets& targets, bool shadows) const {
   const glm::ivec2 size = targets.size();
   if (size != size_) throw Error("ParticleMotionFilter: apply() for another size than resolved");
   const glm::ivec2 tiles = (size + kMotionTile - 1) / kMotionTile;
@@ -59,15 +63,22 @@ void ParticleMotionFilter::apply(const ViewTargets& targets) const {
   glDispatchCompute(GLuint(tiles.x), GLuint(tiles.y), 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
+  glBindTextureUnit(4, tileMotion_.id());
+  glBindImageTexture(5, reachTexture_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
+  reach_.use();
+  glDispatchCompute(GLuint((tiles.x + 7) / 8), GLuint((tiles.y + 7) / 8), 1);
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
+
+  const gl::Program& filter = shadows ? shadowedFilter_ : filter_;
   glBindTextureUnit(0, color_.id());
   glBindTextureUnit(1, normal_.id());
   glBindTextureUnit(2, light_.id());
-  glBindTextureUnit(4, tileMotion_.id());
+  glBindTextureUnit(5, reachTexture_.id());
   glBindImageTexture(0, targets.particleColor(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glBindImageTexture(1, targets.particleNormal(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glBindImageTexture(2, targets.particleLight(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-  filter_.use();
-  glProgramUniform2i(filter_.id(), 0, size.x, size.y);
+  filter.use();
+  glProgramUniform2i(filter.id(), 0, size.x, size.y);
   glDispatchCompute(GLuint((size.x + 15) / 16), GLuint((size.y + 15) / 16), 1);
 }
 

@@ -27,15 +27,18 @@ class ParticleMotionFilter {
   // means of the motion sums (RGBA16F: splat_common.glsl), sized to the view,
   // for the resolve to write.
   void bindResolveImages(glm::ivec2 size) const;
-  // Blurs them into the view's particle buffers.
-  void apply(const ViewTargets& targets) const;
+  // Blurs them into the view's particle buffers; `shadows`: the light buffer
+  // is its own (render.shadows), else the opacity.
+  void apply(const ViewTargets& targets, bool shadows) const;
 
  private:
   void resize(glm::ivec2 size) const;
 
-  gl::Program tiles_, filter_;
+  gl::Program tiles_, reach_, filter_, shadowedFilter_;
   mutable glm::ivec2 size_{0};
-  mutable gl::Texture color_, normal_, light_, motion_, tileMotion_;
+  // The resolve's images; each 16-pixel tile's longest motion axis, and the
+  // longest reaching it from the tiles around.
+  mutable gl::Texture color_, normal_, light_, motion_, tileMotion_, reachTexture_;
 };
 
 }  // namespace sandstorm

@@ -14,14 +14,14 @@
 namespace sandstorm {
 namespace {
 
-constexpr std::size_t kChannels = 8;         // kSplatStride of splat_common.glsl
-constexpr int kTile = 32;                    // kSplatTile
-constexpr std::size_t kMaxTiles = 8192;      // kSplatMaxTiles
-constexpr std::size_t kMaxBinGroups = 1024;  // kSplatMaxBinGroups
-constexpr std::size_t kRecordBytes = 16;     // a splat record (splat_footprint.glsl)
-constexpr int kLevels = 4;                   // kSplatLevels
-constexpr GLint kLevelsUniform = 15;         // uSplatLevels (splat_footprint.glsl)
-constexpr int kMotionBlock = 4;              // kSplatMotionBlock (splat_common.glsl)
+constexpr std::size_t kChannels = 8;           // kSplatStride of splat_common.glsl
+constexpr int kTile = 32;                      // kSplatTile
+constexpr std::size_t kMaxTiles = 8192;        // kSplatMaxTiles
+constexpr std::size_t kMaxBinGroups = 1024;    // kSplatMaxBinGroups
+constexpr std::size_t kRecordBytes = 16;       // a splat record (splat_footprint.glsl)
+constexpr int kLevels = 4;                     // kSplatLevels
+constexpr GLint kLevelsUniform = 15;           // uSplatLevels (splat_footprint.glsl)
+constexpr int kMotionBlock = 4;                // kSplatMotionBlock (splat_common.glsl)
 constexpr std::size_t kMotionBlockBytes = 32;  // two ivec4 a block
 
 // The levels' grids, as splat_common.glsl lays them out: each level's pixels
@@ -208,7 +208,7 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
     glClearNamedBufferSubData(motion_.id(), GL_R32UI, 0,
                               GLsizeiptr(motionBlocks(size, levels) * kMotionBlockBytes),
                               GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
-    filter_->apply(targets);
+    filter_->apply(targets, look.shadows);
   }
   // ParticlePost reads the images as textures.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
