@@ -11,9 +11,10 @@
 // covers p over the shutter time.
 //
 // A pixel's splats may move different ways (a vortex's front and back cross
-// it in opposite directions): the resolve gives each pixel its mean motion
-// and the mean of its axis with the angle doubled (splat_common.glsl), and
-// the filter takes a pixel's splats as moving along that axis at that speed,
+// it in opposite directions): the motion field (particle_motion_field.comp,
+// interpolated between 8-pixel cells) gives each pixel its splats' mean
+// motion and the mean of its axis with the angle doubled (splat_common.glsl),
+// and the filter takes a pixel's splats as moving along that axis at that speed,
 // the share (1 + mean / speed) / 2 of them forwards and the rest backwards.
 // One direction moves as it should; opposite ones each smear both ways, as
 // long in all. The axis is the pixel's own where it moves, else the longest
@@ -25,14 +26,14 @@ layout(local_size_x = 16, local_size_y = 16) in;
 layout(binding = 0) uniform sampler2D uColorIn;  // the resolve's, unblurred (linear filtering)
 layout(binding = 1) uniform sampler2D uNormalIn;
 layout(binding = 2) uniform sampler2D uLightIn;
-layout(binding = 3) uniform sampler2D uMotion;  // the motion's and its axis's means (view pixels)
+layout(binding = 3) uniform sampler2D uCells;   // the motion's and its axis's means, 8-pixel cells (linear)
 layout(binding = 5) uniform sampler2D uReach;   // the longest axis reaching a tile
 layout(rgba16f, binding = 0) writeonly uniform image2D uColor;
 layout(rgba16f, binding = 1) writeonly uniform image2D uNormal;
 layout(r16f, binding = 2) writeonly uniform image2D uLight;
 layout(location = 0) uniform ivec2 uSize;
 
-const int kMotionTile = 16;
+const int kMotionTile = 16, kCell = 8;
 // Samples a side: at most 2 pixels apart over a 48-pixel smear.
 const int kMaxTaps = 24;
 // Pixels: nothing around moving this far, the pixel is kept as it is.
@@ -47,7 +48,8 @@ vec2 axisDirection(vec2 doubled) {
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (p.x >= uSize.x || p.y >= uSize.y) return;
-  vec2 own = texelFetch(uMotion, p, 0).zw;
+  vec2 toCells = 1.0 / (float(kCell) * vec2(textureSize(uCells, 0)));
+  vec2 own = textureLod(uCells, (vec2(p) + 0.5) * toCells, 0.0).zw;
   vec2 near = texelFetch(uReach, p / kMotionTile, 0).xy;
   float ownLength = length(own), reach = max(length(near), ownLength);
   vec4 color = texelFetch(uColorIn, p, 0), normal = texelFetch(uNormalIn, p, 0);
@@ -75,7 +77,7 @@ void main() {
         float u = 0.5 + (float(k) + 0.5) * du;
         vec2 q = vec2(p) + 0.5 + u * d;  // window coordinates of the sample
         if (any(lessThan(q, vec2(0.0))) || any(greaterThanEqual(q, vec2(uSize)))) break;
-        vec4 m = texelFetch(uMotion, ivec2(q), 0);
+        vec4 m = textureLod(uCells, q * toCells, 0.0);
         float s = length(m.zw) * abs(dot(axisDirection(m.zw), a));  // its speed along the axis
         // The time its path [u - s, u] spends over this pixel [-0.5, 0.5].
         float covers = clamp(s + 0.5 - u, 0.0, 1.0);

@@ -25,5 +25,5 @@ void main() {
   uint i = (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * 256u + gl_LocalInvocationIndex;
   if (i >= args.count) return;
   Splat s;
-  if (makeSplat(positionLife[i], velocityKind[i], s)) addSplat(s, s.lo, s.hi);
+  if (makeSplat(positionLife[i], velocityKind[i], s)) addSplat(s, s.lo, s.hi, 0);
 }

@@ -17,40 +17,7 @@ layout(rgba16f, binding = 0) writeonly uniform image2D uColor;
 layout(rgba16f, binding = 1) writeonly uniform image2D uNormal;
 layout(r16f, binding = 2) writeonly uniform image2D uLight;
 layout(location = 0) uniform ivec2 uSize;
-#ifdef MOTION_FILTER
-// The motion blocks' sums (splat_common.glsl, two ivec4 a block), and their
-// means at each pixel written for the filter: the motion and its
-// doubled-angle axis, view pixels over the shutter (zero where nothing moves).
-layout(std430, binding = 16) readonly restrict buffer SplatMotion { ivec4 motionSums[]; };
-layout(rgba16f, binding = 3) writeonly uniform image2D uMotion;
 
-// Adds a level's blocks' sums at view pixel p, interpolated bilinearly
-// between the blocks' centres (clamped at the level's edges).
-void addMotion(int level, ivec2 p, inout vec4 motion, inout float weight) {
-  ivec2 blocks = splatMotionBlocks(uSize, level);
-  vec2 at = (vec2(p) + 0.5) / float(kSplatMotionBlock << level) - 0.5;
-  ivec2 i0 = ivec2(floor(at));
-  vec2 f = at - vec2(i0);
-  if (level > 0) {  // blocks outside marked tiles hold nothing (splat_occupied.glsl)
-    ivec2 t0 = clamp(i0, ivec2(0), blocks - 1) / (kSplatTile / kSplatMotionBlock);
-    ivec2 t1 = clamp(i0 + 1, ivec2(0), blocks - 1) / (kSplatTile / kSplatMotionBlock);
-    uint first = splatTileOffset(uSize, level), across = uint(splatLevelTiles(uSize, level).x);
-    bool marked = false;
-    for (int ty = t0.y; ty <= t1.y; ++ty)
-      for (int tx = t0.x; tx <= t1.x; ++tx) marked = marked || occupied[first + uint(ty) * across + uint(tx)] != 0u;
-    if (!marked) return;
-  }
-  uint offset = splatMotionBlockOffset(uSize, level);
-  for (int dy = 0; dy <= 1; ++dy)
-    for (int dx = 0; dx <= 1; ++dx) {
-      float w = (dx == 0 ? 1.0 - f.x : f.x) * (dy == 0 ? 1.0 - f.y : f.y);
-      ivec2 q = clamp(i0 + ivec2(dx, dy), ivec2(0), blocks - 1);
-      uint b = offset + uint(q.y) * uint(blocks.x) + uint(q.x);
-      motion += w * vec4(motionSums[b * 2u]);
-      weight += w * float(motionSums[b * 2u + 1u].x);
-    }
-}
-#endif
 // Adds `weight` times a pixel's sums (its two uvec4).
 void addSums(uvec4 first, uvec4 second, float weight, inout float sums[kSplatChannels]) {
   sums[0] += weight * float(first.x);
@@ -125,10 +92,4 @@ void main() {
   imageStore(uColor, p, color);
   imageStore(uNormal, p, normal);
   imageStore(uLight, p, vec4(light));
-#ifdef MOTION_FILTER
-  vec4 motion = vec4(0.0);
-  float weight = 0.0;
-  for (int level = 0; level < uSplatLevels; ++level) addMotion(level, p, motion, weight);
-  imageStore(uMotion, p, weight > 0.0 ? motion / weight : vec4(0.0));
-#endif
 }

@@ -85,7 +85,8 @@ void main() {
         } else {
           ivec2 origin = ivec2(tx, ty) * kSplatTile;
           unpackSplat(record, level, s);
-          addSplat(s, max(s.lo, origin), min(s.hi, origin + kSplatTile - 1));
+          addSplat(s, max(s.lo, origin), min(s.hi, origin + kSplatTile - 1),
+                   splatMotionShift(tileStart[tile + 1u] - tileStart[tile]));
         }
       }
   }

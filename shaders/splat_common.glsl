@@ -25,20 +25,19 @@ const uint kSplatTrailChannels = 2u;
 const float kSplatScale = 4096.0;
 // Motion blur by a filter (MOTION_FILTER: render.shutter with render.blur =
 // filter): each splat also adds its motion m over the shutter (view pixels)
-// to the 4x4-pixel block of its level's grid its centre lies in (within the
-// 32-pixel tile it is drawn in, the nearest such block), weighted by what it
-// added to channel 2 there: five signed sums a block (two ivec4, the second's
-// last three unused; every level's blocks after the finer ones'): the
-// weight w, w m and w times m's axis with the angle doubled, (mx^2 - my^2,
-// 2 mx my) / |m|, which paths along one line add up whichever way they run (a
-// vortex's front and back cross a pixel in opposite directions: their
-// motions cancel, their axes do not). Once a splat, not once a pixel: motion
-// changes slowly across the image. Fixed point: w is channel 2's integers
-// over kSplatMotionDivisor. The resolve interpolates the blocks' sums
-// bilinearly and writes their means, which particle_motion_filter.comp
-// blurs the particle buffers along.
-const int kSplatMotionBlock = 4;
-const float kSplatMotionDivisor = 64.0;
+// to every tile of its level's grid it is listed in (the tiled pass's
+// 32-pixel tiles), as five integer sums a tile (kSplatMotionStride ints,
+// indexed like the tiles: splatTileOffset): its weight w (its opacity in
+// 16ths), w m and w times m's axis with the angle doubled, (mx^2 - my^2,
+// 2 mx my) / |m|, in half pixels. Axes along one line add up whichever way
+// the paths run (a vortex's front and back cross a pixel in opposite
+// directions: their motions cancel, their axes do not). Once a splat and
+// tile, not once a pixel: motion changes slowly across the image, and a
+// sum a pixel cost the splat pass half its time again. Integers, so the sum
+// does not depend on the order splats come in; a tile of more than 2^20
+// splats adds them shifted right (splatMotionShift) to stay within an int.
+// ParticleMotionFilter interpolates the tiles' means between their centres.
+const uint kSplatMotionStride = 8u;
 
 // The tiled pass: tiles of kSplatTile x kSplatTile pixels, at most
 // kSplatMaxTiles a view (a 4K view has 8160; a histogram of them fits in a
@@ -82,16 +81,9 @@ uint splatTileOffset(ivec2 size, int level) {
   return offset;
 }
 
-ivec2 splatMotionBlocks(ivec2 size, int level) {
-  return (splatLevelSize(size, level) + kSplatMotionBlock - 1) / kSplatMotionBlock;
-}
-
-// The first of a level's blocks; splatMotionBlockOffset(size, levels) is their number.
-uint splatMotionBlockOffset(ivec2 size, int level) {
-  uint offset = 0u;
-  for (int l = 0; l < level; ++l) {
-    ivec2 b = splatMotionBlocks(size, l);
-    offset += uint(b.x) * uint(b.y);
-  }
-  return offset;
+// The right shift of a tile's motion integers for a tile of `splats` records.
+int splatMotionShift(uint splats) {
+  int shift = 0;
+  while (shift < 20 && (splats >> uint(shift)) > (1u << 20)) ++shift;
+  return shift;
 }

@@ -259,21 +259,14 @@ bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
 }
 
 #ifdef MOTION_FILTER
-// What a splat adds to each of its blocks' motion sums (splat_common.glsl),
-// from what it added to channel 2 in a tile: w m and w times m's
-// doubled-angle axis, and w.
-void splatMotionSums(Splat s, uint drawn, out ivec4 motion, out int weight) {
-  float w = float(drawn) / kSplatMotionDivisor, len = length(s.flow);
+// What a splat adds to a tile's motion sums (splat_common.glsl): w m and
+// w times m's doubled-angle axis (half pixels), and w, shifted right by `shift`.
+void splatMotionSums(Splat s, int shift, out ivec4 motion, out int weight) {
+  float len = length(s.flow);
   vec2 axis = len > 0.0 ? vec2(s.flow.x * s.flow.x - s.flow.y * s.flow.y, 2.0 * s.flow.x * s.flow.y) / len : vec2(0.0);
-  motion = ivec4(round(w * vec4(s.flow, axis)));
-  weight = int(round(w));
-}
-
-// The blocks (of its level's grid) a splat's motion goes to when drawn over
-// the pixels a..b of a tile: those they touch.
-void splatMotionBlockRange(ivec2 a, ivec2 b, out ivec2 first, out ivec2 last) {
-  first = a / kSplatMotionBlock;
-  last = b / kSplatMotionBlock;
+  int w = int(round(s.opacity * 16.0));
+  motion = ivec4(round(2.0 * vec4(s.flow, axis))) * w >> shift;
+  weight = w >> shift;
 }
 #endif
 

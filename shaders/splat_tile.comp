@@ -28,17 +28,13 @@ layout(std430, binding = 12) readonly buffer ChunkDispatch {
 layout(location = 1) uniform uint uChunk;  // entries a chunk
 layout(location = 2) uniform uint uListCapacity;
 #ifdef MOTION_FILTER
-layout(std430, binding = 16) restrict buffer SplatMotion { int motionSums[]; };  // 8 a block
+layout(std430, binding = 16) restrict buffer SplatMotion { int motionSums[]; };  // a tile's: splat_common.glsl
 #endif
 
 #include "splat_occupied.glsl"
 
 const uint kTilePixels = uint(kSplatTile * kSplatTile);
 shared uint sSums[kSplatChannels][kTilePixels];
-#ifdef MOTION_FILTER
-const int kTileBlocks = kSplatTile / kSplatMotionBlock;  // a side
-shared int sMotion[5][kTileBlocks * kTileBlocks];
-#endif
 
 void main() {
   uint chunk = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
@@ -59,10 +55,6 @@ void main() {
   uint lid = gl_LocalInvocationIndex;
   for (uint px = lid; px < kTilePixels; px += kGroup)
     for (uint c = 0u; c < kSplatChannels; ++c) sSums[c][px] = 0u;
-#ifdef MOTION_FILTER
-  if (lid < uint(kTileBlocks * kTileBlocks))
-    for (int c = 0; c < 5; ++c) sMotion[c][lid] = 0;
-#endif
   barrier();
   // The tile's level, and where it lies on that level's grid.
   int level = 0;
@@ -73,9 +65,6 @@ void main() {
     Splat s;
     if (!unpackSplat(tileList[k], level, s)) continue;
     ivec2 a = max(s.lo, origin), b = min(s.hi, origin + kSplatTile - 1);
-#ifdef MOTION_FILTER
-    uint drawn = 0u;  // what it adds to channel 2 in this tile
-#endif
     for (int y = a.y; y <= b.y; ++y) {
       ivec2 row = splatRow(s, y);
       for (int x = max(a.x, row.x); x <= min(b.x, row.y); ++x) {
@@ -83,26 +72,8 @@ void main() {
         if (!splatAt(s, ivec2(x, y), v)) continue;
         uint px = uint((y - origin.y) * kSplatTile + (x - origin.x));
         for (uint c = 0u; c < kSplatChannels; ++c) atomicAdd(sSums[c][px], v[c]);
-#ifdef MOTION_FILTER
-        drawn += v[2];
-#endif
       }
     }
-#ifdef MOTION_FILTER
-    if (drawn > 0u) {
-      ivec4 m;
-      int w;
-      splatMotionSums(s, drawn, m, w);
-      ivec2 first, last;
-      splatMotionBlockRange(a - origin, b - origin, first, last);
-      for (int by = first.y; by <= last.y; ++by)
-        for (int bx = first.x; bx <= last.x; ++bx) {
-          int at = by * kTileBlocks + bx;
-          for (int c = 0; c < 4; ++c) atomicAdd(sMotion[c][at], m[c]);
-          atomicAdd(sMotion[4][at], w);
-        }
-    }
-#endif
   }
   barrier();
   if (lid == 0u && level > 0 && end > begin) occupied[t] = 1u;
@@ -122,19 +93,35 @@ void main() {
     }
   }
 #ifdef MOTION_FILTER
-  // The tile's blocks' motion sums.
-  if (lid < uint(kTileBlocks * kTileBlocks)) {
-    ivec2 block = origin / kSplatMotionBlock + ivec2(int(lid) % kTileBlocks, int(lid) / kTileBlocks);
-    ivec2 blocks = splatMotionBlocks(size, level);
-    if (block.x < blocks.x && block.y < blocks.y && sMotion[4][lid] != 0) {
-      uint at = (splatMotionBlockOffset(size, level) + uint(block.y * blocks.x + block.x)) * 8u;
-      for (int c = 0; c < 5; ++c) {
-        if (alone)
-          motionSums[at + uint(c)] = sMotion[c][lid];
-        else
-          atomicAdd(motionSums[at + uint(c)], sMotion[c][lid]);
-      }
-    }
+  // The chunk's splats' motion (splat_common.glsl), after the pixels so
+  // their loop keeps its registers: integer sums over the workgroup in five
+  // of the sums' shared words, then added to the tile's.
+  barrier();
+  if (lid < 5u) sSums[0][lid] = 0u;
+  barrier();
+  int shift = splatMotionShift(tileStart[t + 1u] - tileStart[t]);
+  ivec4 motion = ivec4(0);
+  int weight = 0;
+  for (uint k = begin + lid; k < end; k += kGroup) {
+    Splat s;
+    if (!unpackSplat(tileList[k], level, s)) continue;
+    ivec4 m;
+    int w;
+    splatMotionSums(s, shift, m, w);
+    motion += m;
+    weight += w;
+  }
+  if (weight != 0) {
+    for (int c = 0; c < 4; ++c) atomicAdd(sSums[0][c], uint(motion[c]));
+    atomicAdd(sSums[0][4], uint(weight));
+  }
+  barrier();
+  if (lid < 5u && sSums[0][4] != 0u) {
+    uint at = t * kSplatMotionStride + lid;
+    if (alone)
+      motionSums[at] = int(sSums[0][lid]);
+    else
+      atomicAdd(motionSums[at], int(sSums[0][lid]));
   }
 #endif
 }

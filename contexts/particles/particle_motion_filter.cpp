@@ -8,7 +8,9 @@
 namespace sandstorm {
 namespace {
 
-constexpr int kMotionTile = 16;  // particle_motion_tiles.comp
+constexpr int kCell = 8;         // particle_motion_field.comp
+constexpr int kMotionTile = 16;  // particle_motion_reach.comp
+constexpr int kLevelsUniform = 15;
 
 gl::Texture texture2D(GLenum format, glm::ivec2 size, GLenum filter) {
   gl::Texture t = gl::createTexture(GL_TEXTURE_2D);
@@ -23,7 +25,7 @@ gl::Texture texture2D(GLenum format, glm::ivec2 size, GLenum filter) {
 }  // namespace
 
 ParticleMotionFilter::ParticleMotionFilter()
-    : tiles_({"particle_motion_tiles.comp"}),
+    : field_({"particle_motion_field.comp"}),
       reach_({"particle_motion_reach.comp"}),
       filter_({"particle_motion_filter.comp"}),
       shadowedFilter_({"particle_motion_filter.comp"}, {"SHADOWS"}) {}
@@ -31,12 +33,11 @@ ParticleMotionFilter::ParticleMotionFilter()
 void ParticleMotionFilter::resize(glm::ivec2 size) const {
   if (size == size_) return;
   glGetError();
-  // The filter samples the buffers between pixels (linear); the motion exactly.
+  // The filter samples the buffers and the motion field between their texels.
   color_ = texture2D(GL_RGBA16F, size, GL_LINEAR);
   normal_ = texture2D(GL_RGBA16F, size, GL_LINEAR);
   light_ = texture2D(GL_R16F, size, GL_LINEAR);
-  motion_ = texture2D(GL_RGBA16F, size, GL_NEAREST);
-  tileMotion_ = texture2D(GL_RG16F, (size + kMotionTile - 1) / kMotionTile, GL_NEAREST);
+  cells_ = texture2D(GL_RGBA16F, (size + kCell - 1) / kCell, GL_LINEAR);
   reachTexture_ = texture2D(GL_RG16F, (size + kMotionTile - 1) / kMotionTile, GL_NEAREST);
   if (glGetError() == GL_OUT_OF_MEMORY)
     throw Error(concat("the GPU is out of memory for motion blur's images of ", size.x, "x", size.y,
@@ -49,23 +50,24 @@ void ParticleMotionFilter::bindResolveImages(glm::ivec2 size) const {
   glBindImageTexture(0, color_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glBindImageTexture(1, normal_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
   glBindImageTexture(2, light_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R16F);
-  glBindImageTexture(3, motion_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
 }
 
-void ParticleMotionFilter::apply(const ViewTargets& targets, bool shadows) const {
+void ParticleMotionFilter::apply(const ViewTargets& targets, int levels, bool shadows) const {
   const glm::ivec2 size = targets.size();
   if (size != size_) throw Error("ParticleMotionFilter: apply() for another size than resolved");
-  const glm::ivec2 tiles = (size + kMotionTile - 1) / kMotionTile;
-  glBindTextureUnit(3, motion_.id());
-  glBindImageTexture(4, tileMotion_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
-  tiles_.use();
-  glProgramUniform2i(tiles_.id(), 0, size.x, size.y);
-  glDispatchCompute(GLuint(tiles.x), GLuint(tiles.y), 1);
+  const glm::ivec2 cells = (size + kCell - 1) / kCell,
+                   tiles = (size + kMotionTile - 1) / kMotionTile;
+  glBindImageTexture(3, cells_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+  field_.use();
+  glProgramUniform2i(field_.id(), 0, size.x, size.y);
+  glProgramUniform1i(field_.id(), kLevelsUniform, levels);
+  glDispatchCompute(GLuint((cells.x + 7) / 8), GLuint((cells.y + 7) / 8), 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 
-  glBindTextureUnit(4, tileMotion_.id());
+  glBindTextureUnit(3, cells_.id());
   glBindImageTexture(5, reachTexture_.id(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RG16F);
   reach_.use();
+  glProgramUniform2i(reach_.id(), 0, size.x, size.y);
   glDispatchCompute(GLuint((tiles.x + 7) / 8), GLuint((tiles.y + 7) / 8), 1);
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT);
 

@@ -23,22 +23,23 @@ class ViewTargets;
 class ParticleMotionFilter {
  public:
   ParticleMotionFilter();
-  // Binds image units 0-3 to the unblurred colour, normal, light and the
-  // means of the motion sums (RGBA16F: splat_common.glsl), sized to the view,
-  // for the resolve to write.
+  // Binds image units 0-2 to the unblurred colour, normal and light, sized
+  // to the view, for the resolve to write.
   void bindResolveImages(glm::ivec2 size) const;
-  // Blurs them into the view's particle buffers; `shadows`: the light buffer
+  // Blurs them into the view's particle buffers along the motion the splat
+  // passes summed a tile (splat_common.glsl; the sums bound at binding 16,
+  // the view block at 1) over `levels` levels. `shadows`: the light buffer
   // is its own (render.shadows), else the opacity.
-  void apply(const ViewTargets& targets, bool shadows) const;
+  void apply(const ViewTargets& targets, int levels, bool shadows) const;
 
  private:
   void resize(glm::ivec2 size) const;
 
-  gl::Program tiles_, reach_, filter_, shadowedFilter_;
+  gl::Program field_, reach_, filter_, shadowedFilter_;
   mutable glm::ivec2 size_{0};
-  // The resolve's images; each 16-pixel tile's longest motion axis, and the
-  // longest reaching it from the tiles around.
-  mutable gl::Texture color_, normal_, light_, motion_, tileMotion_, reachTexture_;
+  // The resolve's images; the motion field's means a cell of 8x8 pixels;
+  // each 16-pixel tile's longest motion axis reaching it.
+  mutable gl::Texture color_, normal_, light_, cells_, reachTexture_;
 };
 
 }  // namespace sandstorm

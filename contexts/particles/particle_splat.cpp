@@ -14,15 +14,14 @@
 namespace sandstorm {
 namespace {
 
-constexpr std::size_t kChannels = 8;           // kSplatStride of splat_common.glsl
-constexpr int kTile = 32;                      // kSplatTile
-constexpr std::size_t kMaxTiles = 8192;        // kSplatMaxTiles
-constexpr std::size_t kMaxBinGroups = 1024;    // kSplatMaxBinGroups
-constexpr std::size_t kRecordBytes = 16;       // a splat record (splat_footprint.glsl)
-constexpr int kLevels = 4;                     // kSplatLevels
-constexpr GLint kLevelsUniform = 15;           // uSplatLevels (splat_footprint.glsl)
-constexpr int kMotionBlock = 4;                // kSplatMotionBlock (splat_common.glsl)
-constexpr std::size_t kMotionBlockBytes = 32;  // two ivec4 a block
+constexpr std::size_t kChannels = 8;          // kSplatStride of splat_common.glsl
+constexpr int kTile = 32;                     // kSplatTile
+constexpr std::size_t kMaxTiles = 8192;       // kSplatMaxTiles
+constexpr std::size_t kMaxBinGroups = 1024;   // kSplatMaxBinGroups
+constexpr std::size_t kRecordBytes = 16;      // a splat record (splat_footprint.glsl)
+constexpr int kLevels = 4;                    // kSplatLevels
+constexpr GLint kLevelsUniform = 15;          // uSplatLevels (splat_footprint.glsl)
+constexpr std::size_t kMotionTileBytes = 32;  // kSplatMotionStride ints (splat_common.glsl)
 
 // The levels' grids, as splat_common.glsl lays them out: each level's pixels
 // and tiles follow the finer levels'.
@@ -36,15 +35,6 @@ std::size_t levelPixels(glm::ivec2 size, int levels) {
     pixels += std::size_t(s.x) * std::size_t(s.y);
   }
   return pixels;
-}
-// The motion filter's blocks over every level's grid (splat_common.glsl).
-std::size_t motionBlocks(glm::ivec2 size, int levels) {
-  std::size_t blocks = 0;
-  for (int l = 0; l < levels; ++l) {
-    const glm::ivec2 b = (levelSize(size, l) + kMotionBlock - 1) / kMotionBlock;
-    blocks += std::size_t(b.x) * std::size_t(b.y);
-  }
-  return blocks;
 }
 std::size_t levelTiles(glm::ivec2 size, int levels) {
   std::size_t tiles = 0;
@@ -169,7 +159,7 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   const bool tiled = tiled_ && levelTiles(size, 1) <= kMaxTiles;
   if (tiled && levelTiles(size, levels) > kMaxTiles) levels = 1;
   bindSums(levelPixels(size, levels));
-  if (filter) bindMotionSums(motionBlocks(size, levels));
+  if (filter) bindMotionSums(levelTiles(size, levels));
   // The coarser levels' tiles that get splats (splat_occupied.glsl).
   const std::size_t occupancy = levels > 1 ? levelTiles(size, levels) : 0;
   if (occupancy > occupancy_) {
@@ -201,14 +191,14 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   glProgramUniform2i(p.resolve.id(), 0, size.x, size.y);
   glDispatchCompute(GLuint((size.x + 15) / 16), GLuint((size.y + 15) / 16), 1);
   if (filter) {
-    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT |
-                    GL_BUFFER_UPDATE_BARRIER_BIT);
-    // The motion blocks, a 16th of the pixels, are zeroed for the next view at once.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    filter_->apply(targets, levels, look.shadows);
+    // The tiles' motion sums, a few bytes a tile, are zeroed for the next view at once.
+    glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_BUFFER_UPDATE_BARRIER_BIT);
     const GLuint value = 0;
     glClearNamedBufferSubData(motion_.id(), GL_R32UI, 0,
-                              GLsizeiptr(motionBlocks(size, levels) * kMotionBlockBytes),
+                              GLsizeiptr(levelTiles(size, levels) * kMotionTileBytes),
                               GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
-    filter_->apply(targets, look.shadows);
   }
   // ParticlePost reads the images as textures.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
@@ -236,11 +226,11 @@ void ParticleSplat::bindSums(std::size_t pixels) const {
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kAccumulation, accumulation_.id());
 }
 
-void ParticleSplat::bindMotionSums(std::size_t blocks) const {
-  if (blocks > motionBlocks_) {
-    motion_ = allocate(blocks * kMotionBlockBytes, "motion blur's sums");
+void ParticleSplat::bindMotionSums(std::size_t tiles) const {
+  if (tiles > motionTiles_) {
+    motion_ = allocate(tiles * kMotionTileBytes, "motion blur's sums");
     zero(motion_);
-    motionBlocks_ = blocks;
+    motionTiles_ = tiles;
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMotionSums, motion_.id());
 }

@@ -96,8 +96,8 @@ class ParticleSplat {
   static bool hasTrails(const ParticleBackend::Records& records);
   // The sums of `pixels` pixels, bound; the dispatch sizes from the live count.
   void bindSums(std::size_t pixels) const;
-  // Motion blur's filter: the sums of `blocks` blocks (splat_common.glsl), bound.
-  void bindMotionSums(std::size_t blocks) const;
+  // Motion blur's filter: the motion sums of `tiles` tiles (splat_common.glsl), bound.
+  void bindMotionSums(std::size_t tiles) const;
   void prepare(const ParticleBackend::Records& records) const;
   // The tiled variant's bins and lists, bound.
   void bindTiles(std::size_t tileCount, std::size_t listCapacity) const;
@@ -134,9 +134,9 @@ class ParticleSplat {
   gl::Program clear_;                // levels: zeroes the marked tiles' sums and the marks
   std::optional<gl::Program> scan_;  // tiled
   mutable std::unique_ptr<Programs> variants_[2][3];  // [shadows][SplatLook::Blur]
-  // Motion blur by the filter, made on first use: the blocks' sums, the filter.
+  // Motion blur by the filter, made on first use: the tiles' motion sums, the filter.
   mutable gl::Buffer motion_;
-  mutable std::size_t motionBlocks_ = 0;
+  mutable std::size_t motionTiles_ = 0;
   mutable std::unique_ptr<ParticleMotionFilter> filter_;
   gl::Buffer dispatch_, chunkDispatch_;
   mutable gl::Buffer accumulation_;  // the sums
