@@ -53,6 +53,7 @@ void main() {
   vec2 near = texelFetch(uReach, p / kMotionTile, 0).xy;
   float ownLength = length(own), reach = max(length(near), ownLength);
   vec4 color = texelFetch(uColorIn, p, 0), normal = texelFetch(uNormalIn, p, 0);
+  float total = 1.0;  // the weights: 1 where the motion is uniform
 #ifdef SHADOWS
   float light = texelFetch(uLightIn, p, 0).r;
 #endif
@@ -63,6 +64,7 @@ void main() {
     float self = min(1.0, 0.5 / max(ownLength * abs(dot(axisDirection(own), a)), 1e-6));
     color *= self;
     normal *= self;
+    total = self;
 #ifdef SHADOWS
     light *= self;
 #endif
@@ -84,6 +86,7 @@ void main() {
         if (covers <= 0.0) continue;
         float towards = clamp(0.5 + 0.5 * dot(m.xy, d) / s, 0.0, 1.0);  // the share moving along d
         float w = towards * du * covers / s;
+        total += w;
         vec2 at = q * invSize;
         color += w * textureLod(uColorIn, at, 0.0);
         normal += w * textureLod(uNormalIn, at, 0.0);
@@ -93,9 +96,13 @@ void main() {
       }
     }
   }
-  // Smears overlapping a pixel add their opacities, which "over" would
-  // saturate: keep the mean's colour and cap its opacity at 1.
-  float over = max(color.a, 1.0);
+  // Where the motion varies, the weights need not add up to 1. Less: the
+  // pixel's content left and what the model says came in did not (paths
+  // diverging, crossing the axis, or leaving the view): the mean of what was
+  // gathered stands for the rest, rather than a hole the sky shows through.
+  // More: smears overlap, adding opacities "over" would saturate: keep the
+  // mean's colour and cap its opacity at 1.
+  float over = total < 1.0 ? total : max(color.a, 1.0);
   color /= over;
   normal /= over;
 #ifdef SHADOWS
