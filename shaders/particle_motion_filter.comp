@@ -45,6 +45,18 @@ vec2 axisDirection(vec2 doubled) {
   return dot(v, v) > 1e-12 ? normalize(v) : vec2(0.0, 1.0);
 }
 
+// The integral from the pixel's edge (0.5) to x of the share of the shutter
+// a path [x' - s, x'] spends over the pixel [-0.5, 0.5]: min(s + 0.5 - x', 1),
+// down to 0 at x' = s + 0.5.
+float coverTime(float x, float s) {
+  float full = s - 0.5, end = s + 0.5;
+  float hi = clamp(x, 0.5, end);
+  float whole = max(min(hi, full) - 0.5, 0.0);  // where the whole shutter is spent over it
+  float lo = max(0.5, full);
+  float slope = hi > lo ? end * (hi - lo) - 0.5 * (hi * hi - lo * lo) : 0.0;
+  return whole + slope;
+}
+
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (p.x >= uSize.x || p.y >= uSize.y) return;
@@ -81,11 +93,12 @@ void main() {
         if (any(lessThan(q, vec2(0.0))) || any(greaterThanEqual(q, vec2(uSize)))) break;
         vec4 m = textureLod(uCells, q * toCells, 0.0);
         float s = length(m.zw) * abs(dot(axisDirection(m.zw), a));  // its speed along the axis
-        // The time its path [u - s, u] spends over this pixel [-0.5, 0.5].
-        float covers = clamp(s + 0.5 - u, 0.0, 1.0);
+        // The time the paths [x - s, x] of its stretch x in [u - du/2, u + du/2]
+        // spend over this pixel [-0.5, 0.5], integrated exactly.
+        float covers = coverTime(u + 0.5 * du, s) - coverTime(u - 0.5 * du, s);
         if (covers <= 0.0) continue;
         float towards = clamp(0.5 + 0.5 * dot(m.xy, d) / s, 0.0, 1.0);  // the share moving along d
-        float w = towards * du * covers / s;
+        float w = towards * covers / s;
         total += w;
         vec2 at = q * invSize;
         color += w * textureLod(uColorIn, at, 0.0);
