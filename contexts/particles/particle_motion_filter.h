@@ -1,8 +1,10 @@
 // ParticleMotionFilter: motion blur for splats (render.shutter with
 // render.blur = filter) as a gather over the particle buffers rather than a
-// smear of every splat: the splats are drawn still, each pixel also keeps its
-// splats' mean motion over the shutter, and a filter blurs the premultiplied
-// buffers along it (shaders/particle_motion_filter.comp says how). Its cost
+// smear of every splat: the splats are drawn still, the splat passes sum
+// their motion over the shutter a tile (splat_common.glsl), and three passes
+// turn those sums into a motion field of 8-pixel cells, find how far motion
+// reaches each 16-pixel tile, and blur the premultiplied buffers along each
+// pixel's motion (shaders/particle_motion_filter.comp says how). Its cost
 // is a pass over the view's pixels, not the extra pixels each smear covers
 // (with 10^7 particles a smear covered several times its still footprint).
 //

@@ -31,8 +31,8 @@
 // wide (an 8K wall's 7680 fit).
 //
 // Motion blur either smears each splat along its path (render.blur = smear)
-// or draws it still and blurs the particle buffers along each pixel's mean
-// motion (filter: ParticleMotionFilter).
+// or draws it still, sums the splats' motion a tile, and blurs the particle
+// buffers along it (filter: ParticleMotionFilter).
 //
 // Shadows (the light in channel 0, the sums weighed by -ln(1 - alpha):
 // splat_common.glsl) and motion blur (smeared footprints) cost the splat
