@@ -1,11 +1,13 @@
 #version 450 core
-// ParticleMotionFilter, step 2: motion blur (render.shutter, render.blur =
+// ParticleMotionFilter, step 3: motion blur (render.shutter, render.blur =
 // filter) as a gather over the splats' particle buffers. A splat that moved
 // by m pixels over the shutter covers, averaged over that time, its still
 // footprint swept back along m, with 1/|m| of its weight a pixel of path. So
 // a pixel p receives from the pixels q = p + u a ahead of it along an axis a
-// whose motion along a (speed s) reaches back to p (s > u), with weight
-// du / s, and from the pixels behind it that move the other way: the box
+// whose motion along a (speed s) reaches back to p, with the share of the
+// shutter their paths spend over p (1/s a pixel of path, integrated over
+// each tap's stretch), and from the pixels behind it that move the other
+// way; p's own content stays for the half pixel it takes to leave: the box
 // shutter's smear of a layer moving with the pixels, conserving opacity.
 // The buffers hold premultiplied values, so averaging them averages what
 // covers p over the shutter time.
@@ -18,10 +20,10 @@
 // the share (1 + mean / speed) / 2 of them forwards and the rest backwards.
 // One direction moves as it should; opposite ones each smear both ways, as
 // long in all. The axis is the pixel's own where it moves, else the longest
-// of the tiles around whose motion reaches it (particle_motion_tiles.comp,
-// particle_motion_reach.comp); samples moving across the axis are not
-// gathered (the approximation of a reconstruction filter (McGuire et al.
-// 2012)).
+// motion that reaches its 16-pixel tile (particle_motion_reach.comp);
+// samples moving across the axis are not gathered (the approximation of a
+// reconstruction filter (McGuire et al. 2012)). Where the weights fall short
+// of 1 the pixel keeps the mean of what it gathered (below).
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(binding = 0) uniform sampler2D uColorIn;  // the resolve's, unblurred (linear filtering)
 layout(binding = 1) uniform sampler2D uNormalIn;
