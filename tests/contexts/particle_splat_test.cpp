@@ -290,9 +290,10 @@ TEST_P(ParticleSplatTest, TiledAndAtomicTrailsAddTheSameSumsSoDrawTheSameImage) 
 // a wind (paths side by side, about 13 pixels long), and turning about the
 // z axis (paths every way, crossing where the near and the far side of the
 // cloud overlap; each pixel takes one axis, so crossing paths are gathered
-// in part: the filter's approximation). The stated tolerance: in the wind
-// the filter is within 1/255 of the smear on average, a quarter of the
-// still image's difference; turning, closer than 0.75 of the still image's.
+// in part: the filter's approximation), and in the wind with render.shadows
+// (the light buffer blurred as well). The stated tolerance: in the wind the
+// filter is within 1/255 of the smear on average, a quarter of the still
+// image's difference; turning, closer than 0.75 of the still image's.
 TEST_P(ParticleSplatTest, MotionBlurByTheFilterLooksLikeEachSplatSmeared) {
   struct Wind final : AnalyticField {  // 0.75 m in the 0.25 s shutter
     glm::vec3 evaluate(const glm::vec3&) const override { return {3.0f, 0.0f, 0.3f}; }
@@ -300,8 +301,10 @@ TEST_P(ParticleSplatTest, MotionBlurByTheFilterLooksLikeEachSplatSmeared) {
   struct Spin final : AnalyticField {  // 2 rad/s: 0.8 m in the shutter at 1.6 m
     glm::vec3 evaluate(const glm::vec3& p) const override { return {-2 * p.y, 2 * p.x, 0.3f}; }
   };
-  for (const bool turning : {false, true}) {
-    SCOPED_TRACE(turning ? "turning" : "in a wind");
+  // In a wind again with render.shadows: the light buffer is blurred too.
+  for (const auto& [turning, shadows] :
+       {std::pair{false, false}, std::pair{true, false}, std::pair{false, true}}) {
+    SCOPED_TRACE(turning ? "turning" : shadows ? "in a wind, shadowed" : "in a wind");
     auto field = std::make_shared<VectorField>(
         turning ? bake(Spin(), Box{{-5, -5, -5}, {5, 5, 5}}, {6, 6, 3})
                 : bake(Wind(), Box{{-5, -5, -5}, {5, 5, 5}}, {2, 2, 2}));
@@ -309,6 +312,7 @@ TEST_P(ParticleSplatTest, MotionBlurByTheFilterLooksLikeEachSplatSmeared) {
     state.sim.maximum = 1500;
     state.emitters[0].rate = 1000.0f / 0.25f;
     state.emitters[0].lifetime = 10.0f;
+    if (shadows) state = shaded(state);
     const Image still = render(state, GetParam(), 3, {}, field);
     ParticleState none = state;
     none.emitters[0].rate = 0.0f;
@@ -324,10 +328,17 @@ TEST_P(ParticleSplatTest, MotionBlurByTheFilterLooksLikeEachSplatSmeared) {
     std::printf(
         "%s, %s: filter against smear: mean %.2f/255, %.2f%% of pixels off by > 16, largest %d; "
         "still against smear: mean %.2f, %.2f%%; the smears cover %.1f%% of the image\n",
-        GetParam(), turning ? "turning" : "wind", fromSmear.mean, 100 * fromSmear.over16,
-        fromSmear.largest, stillFromSmear.mean, 100 * stillFromSmear.over16, 100 * covered);
+        GetParam(),
+        turning   ? "turning"
+        : shadows ? "wind, shadowed"
+                  : "wind",
+        fromSmear.mean, 100 * fromSmear.over16, fromSmear.largest, stillFromSmear.mean,
+        100 * stillFromSmear.over16, 100 * covered);
     if (const char* dir = std::getenv("SANDSTORM_TEST_IMAGES")) {
-      const std::string tag = std::string(turning ? "turning-" : "wind-") + GetParam();
+      const std::string tag = std::string(turning   ? "turning-"
+                                          : shadows ? "shadowed-"
+                                                    : "wind-") +
+                              GetParam();
       writePng(still, std::string(dir) + "/blur-still-" + tag + ".png");
       writePng(smear, std::string(dir) + "/blur-smear-" + tag + ".png");
       writePng(filter, std::string(dir) + "/blur-filter-" + tag + ".png");
