@@ -442,9 +442,12 @@ TEST_F(RenderTest, MotionBlurSmearsAParticleOverItsPathInTheShutterTime) {
     const glm::vec3 at(0.0f, 0.0f, 2.0f);
     const glm::vec2 path = projectExactly(at) - projectExactly(at - direction);
     // Billboards smear; splats smear, or blur their images along their motion (the filter).
-    for (const auto& [mode, blur] : {std::pair{RenderMode::Billboards, BlurMethod::Smear},
-                                     std::pair{RenderMode::Splat, BlurMethod::Smear},
-                                     std::pair{RenderMode::Splat, BlurMethod::Filter}}) {
+    for (const auto& look : {std::pair{RenderMode::Billboards, BlurMethod::Smear},
+                             std::pair{RenderMode::Splat, BlurMethod::Smear},
+                             std::pair{RenderMode::Splat, BlurMethod::Filter}}) {
+      // Named copies: a lambda below uses them (it may not capture structured bindings).
+      const RenderMode mode = look.first;
+      const BlurMethod blur = look.second;
       SCOPED_TRACE(blur == BlurMethod::Filter ? "filter" : "smear");
       // Opacity from the green channel: the particle's is 0.1, the sky's near 0.8.
       const Image empty = render(onePerFrame({}, 0.8f), 1, field);
