@@ -114,6 +114,7 @@ int main(int argc, char** argv) {
   cli.add_option("--debug-die-at-frame", clusterOptions.dieAtFrame)->group("");
   cli.add_option("--debug-hang-at-frame", clusterOptions.hangAtFrame)->group("");
   cli.add_option("--debug-corrupt-at-frame", clusterOptions.corruptAtFrame)->group("");
+  cli.add_flag("--debug-blind-to-steps", clusterOptions.blindToSteps)->group("");
   cli.add_option("--log-level", logLevel, "error, warn, info or debug")
       ->check(CLI::IsMember({"error", "warn", "info", "debug"}));
   try {

@@ -26,12 +26,13 @@ struct FieldSource;
 
 // Cluster mode's command-line options.
 struct ClusterOptions {
-  bool stats = false;       // --cluster-stats: per-frame bytes and times at the end
-  int debugRank = -1;       // the rank that misbehaves on purpose (-1: the last)
-  int dieAtFrame = -1;      // --debug-die-at-frame: that rank kills itself (SIGKILL) there
-  int hangAtFrame = -1;     // --debug-hang-at-frame: that rank stops (SIGSTOP) there
-  int corruptAtFrame = -1;  // --debug-corrupt-at-frame: rank 0 damages that packet in flight
-  int benchFrames = 0;      // --cluster-bench: this many frames of packets and barriers, no walls
+  bool stats = false;         // --cluster-stats: per-frame bytes and times at the end
+  int debugRank = -1;         // the rank that misbehaves on purpose (-1: the last)
+  int dieAtFrame = -1;        // --debug-die-at-frame: that rank kills itself (SIGKILL) there
+  int hangAtFrame = -1;       // --debug-hang-at-frame: that rank stops (SIGSTOP) there
+  int corruptAtFrame = -1;    // --debug-corrupt-at-frame: rank 0 damages that packet in flight
+  bool blindToSteps = false;  // --debug-blind-to-steps: that rank cannot see a series' files
+  int benchFrames = 0;        // --cluster-bench: this many frames of packets and barriers, no walls
 };
 
 class ClusterLink {

@@ -49,7 +49,7 @@ std::string configFingerprint(const AppConfig& c, const AppOptions& o) {
   l.vec("navigation.offset", c.navigation.offset);
   l.add("navigation", c.navigation.yawDegrees, c.navigation.scale);
   l.add("cluster", c.cluster.roundRobin, c.cluster.timeoutSeconds, c.cluster.startupTimeoutSeconds,
-        c.cluster.readField, c.cluster.chunkKiB, c.cluster.fieldCache);
+        c.cluster.readField, c.cluster.readSteps, c.cluster.chunkKiB, c.cluster.fieldCache);
   // The particle state, every attribute, as the table prints it.
   std::istringstream attributes(AttributeTable::instance().describe(c.particles));
   for (std::string line; std::getline(attributes, line);)

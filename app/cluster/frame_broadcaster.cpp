@@ -1,8 +1,11 @@
 #include "app/cluster/frame_broadcaster.h"
 
 #include <algorithm>
+#include <chrono>
 #include <climits>
 #include <cstring>
+#include <thread>
+#include <tuple>
 
 #include "core/color/color_grid.h"
 #include "core/sim/frame_packet_codec.h"
@@ -20,6 +23,22 @@ constexpr std::uint32_t kSlotMagic = 0x4d535353;  // "SSSM"
 constexpr std::size_t kHeaderBytes = 28;
 constexpr std::size_t kInline = FrameBroadcaster::kSlotBytes - kHeaderBytes;
 
+// A series step's key in the FieldStores: its index and file, as every rank
+// names it, so that no rank hashes the step's bytes. Never 0 (no grid).
+std::uint64_t stepKey(std::uint32_t step, const FileIdentity& file) {
+  ByteWriter w;
+  w.u32(0x53544550);  // "STEP": apart from content hashes
+  w.u32(step);
+  w.boolean(file.present);
+  w.u64(file.size);
+  w.u64(std::uint64_t(file.modified));
+  return fnv1a64(w.bytes()) | 1u;
+}
+
+std::string stepName(std::uint32_t step, const FieldSteps& steps) {
+  return concat("step ", step, " (", steps.name(step), ")");
+}
+
 }  // namespace
 
 FrameBroadcaster::FrameBroadcaster(MpiSession& mpi, std::size_t chunkBytes, std::size_t fieldCache)
@@ -27,13 +46,21 @@ FrameBroadcaster::FrameBroadcaster(MpiSession& mpi, std::size_t chunkBytes, std:
       chunkBytes_(std::clamp<std::size_t>(chunkBytes, 1024, INT_MAX)),
       store_(fieldCache) {}
 
-void FrameBroadcaster::post(Kind kind, std::span<const std::byte> payload, bool perFrame) {
+void FrameBroadcaster::readSeries(std::shared_ptr<FieldSteps> steps, MPI_Comm blind) {
+  series_ = true;
+  steps_ = std::move(steps);
+  blind_ = blind;
+}
+
+void FrameBroadcaster::post(Kind kind, std::span<const std::byte> payload, bool perFrame,
+                            MPI_Comm comm) {
+  std::uint32_t& sequence = comm == MPI_COMM_WORLD ? sequence_ : blindSequence_;
   ByteWriter slot;
   slot.u32(kSlotMagic);
   slot.u8(std::uint8_t(kind));
   slot.u8(0);
   slot.u16(0);
-  slot.u32(sequence_++);
+  slot.u32(sequence++);
   slot.u64(payload.size());
   slot.u64(fnv1a64(payload));
   const std::size_t inlined = std::min(payload.size(), kInline);
@@ -48,13 +75,12 @@ void FrameBroadcaster::post(Kind kind, std::span<const std::byte> payload, bool 
   double seconds = 0.0;
   std::uint64_t moved = kSlotBytes;
   MPI_Request request;
-  MPI_Ibcast(bytes.data(), int(kSlotBytes), MPI_BYTE, 0, MPI_COMM_WORLD, &request);
+  MPI_Ibcast(bytes.data(), int(kSlotBytes), MPI_BYTE, 0, comm, &request);
   seconds += mpi_.wait(request, what);
   for (std::size_t at = inlined; at < payload.size(); at += chunkBytes_) {
     const std::size_t n = std::min(chunkBytes_, payload.size() - at);
     // MPI reads the root's buffer only; the cast is MPI's C signature.
-    MPI_Ibcast(const_cast<std::byte*>(payload.data() + at), int(n), MPI_BYTE, 0, MPI_COMM_WORLD,
-               &request);
+    MPI_Ibcast(const_cast<std::byte*>(payload.data() + at), int(n), MPI_BYTE, 0, comm, &request);
     seconds += mpi_.wait(request, what);
     moved += n;
   }
@@ -69,21 +95,23 @@ void FrameBroadcaster::post(Kind kind, std::span<const std::byte> payload, bool 
   }
 }
 
-FrameBroadcaster::Message FrameBroadcaster::take(const std::string& what, bool perFrame) {
+FrameBroadcaster::Message FrameBroadcaster::take(const std::string& what, bool perFrame,
+                                                 MPI_Comm comm) {
+  std::uint32_t& expected = comm == MPI_COMM_WORLD ? sequence_ : blindSequence_;
   std::vector<std::byte> slot(kSlotBytes);
   MPI_Request request;
-  MPI_Ibcast(slot.data(), int(kSlotBytes), MPI_BYTE, 0, MPI_COMM_WORLD, &request);
+  MPI_Ibcast(slot.data(), int(kSlotBytes), MPI_BYTE, 0, comm, &request);
   double seconds = mpi_.wait(request, what);
   ByteReader header(slot, concat("rank ", mpi_.rank(), ": message from rank 0"));
   if (header.u32("magic") != kSlotMagic) header.fail("magic", "not a Sandstorm cluster message");
   const std::uint8_t kind = header.u8("kind");
-  if (kind < 1 || kind > 4) header.fail("kind", concat("unknown message kind ", int(kind)));
+  if (kind < 1 || kind > 5) header.fail("kind", concat("unknown message kind ", int(kind)));
   header.raw(3, "spare");
   const std::uint32_t sequence = header.u32("sequence");
-  if (sequence != sequence_)
+  if (sequence != expected)
     header.fail("sequence",
-                concat("message ", sequence, " arrived where ", sequence_, " was expected"));
-  ++sequence_;
+                concat("message ", sequence, " arrived where ", expected, " was expected"));
+  ++expected;
   const std::uint64_t length = header.u64("length");
   if (length > (std::uint64_t{1} << 36))
     header.fail("length", concat(length, " bytes is beyond any packet or grid"));
@@ -94,7 +122,7 @@ FrameBroadcaster::Message FrameBroadcaster::take(const std::string& what, bool p
   std::uint64_t moved = kSlotBytes;
   for (std::size_t at = inlined; at < m.payload.size(); at += chunkBytes_) {
     const std::size_t n = std::min(chunkBytes_, m.payload.size() - at);
-    MPI_Ibcast(m.payload.data() + at, int(n), MPI_BYTE, 0, MPI_COMM_WORLD, &request);
+    MPI_Ibcast(m.payload.data() + at, int(n), MPI_BYTE, 0, comm, &request);
     seconds += mpi_.wait(request, what);
     moved += n;
   }
@@ -117,19 +145,29 @@ FrameBroadcaster::Message FrameBroadcaster::take(const std::string& what, bool p
 
 void FrameBroadcaster::send(const FramePacket& packet) {
   FieldRefs refs;
+  // Series steps for the ranks that cannot see the files: sent after the packet.
+  std::vector<std::pair<std::uint64_t, std::shared_ptr<const VectorField>>> afterPacket;
   if (packet.fieldUpdate) {
-    refs.field = store_.identify(packet.fieldUpdate->field);
-    refs.next = store_.identify(packet.fieldUpdate->next);
+    const std::optional<FieldSeriesRef>& series = packet.fieldUpdate->series;
+    const bool bySteps = series_ && series.has_value();
+    refs.field = bySteps ? stepKey(series->first, series->firstFile)
+                         : store_.identify(packet.fieldUpdate->field);
+    refs.next = bySteps ? stepKey(series->second, series->secondFile)
+                        : store_.identify(packet.fieldUpdate->next);
     FieldStore::Grids incoming;
     for (const auto& [hash, grid] : {std::pair{refs.field, packet.fieldUpdate->field},
                                      std::pair{refs.next, packet.fieldUpdate->next}}) {
       if (hash == 0 || store_.contains(hash) || incoming.count(hash)) continue;
+      incoming[hash] = grid;
+      if (bySteps) {
+        if (blind_ != MPI_COMM_NULL) afterPacket.emplace_back(hash, grid);
+        continue;
+      }
       // The hash leads, so a receiver can check the grid that follows.
       ByteWriter w;
       w.u64(hash);
       w.raw(encodeField(*grid));
       post(Kind::Grid, w.bytes(), false);
-      incoming[hash] = grid;
     }
     const std::uint64_t used[2] = {refs.field, refs.next};
     store_.use(used, incoming);  // as every receiver will
@@ -148,10 +186,58 @@ void FrameBroadcaster::send(const FramePacket& packet) {
   }
   const std::vector<std::byte> bytes = encodePacket(packet, refs);
   post(Kind::Packet, bytes, true);
+  for (const auto& [key, grid] : afterPacket) {
+    ByteWriter w;
+    w.u64(key);
+    w.raw(encodeField(*grid));
+    post(Kind::Grid, w.bytes(), false, blind_);
+  }
   ++stats_.packets;
   stats_.packetBytes += bytes.size();
   stats_.maxPacketBytes = std::max<std::uint64_t>(stats_.maxPacketBytes, bytes.size());
   nextFrame_ = packet.frame + 1;
+}
+
+std::shared_ptr<const VectorField> FrameBroadcaster::seriesStep(std::uint32_t frame,
+                                                                std::uint32_t step,
+                                                                const FileIdentity& file,
+                                                                std::uint64_t key) {
+  if (!steps_) {
+    // This rank cannot see the files: rank 0 sends the step after the packet.
+    Message m = take(concat("step ", step, " of the series for frame ", frame, " from rank 0"),
+                     false, blind_);
+    ByteReader r(m.payload, "series step");  // take() checked the payload's checksum
+    if (m.kind != Kind::Grid || r.u64("key") != key)
+      throw Error(concat("rank ", mpi_.rank(), ": another message arrived where step ", step,
+                         " of the series was expected"));
+    return std::make_shared<const VectorField>(
+        decodeField(r.raw(r.remaining(), "grid"), concat("series step ", step)));
+  }
+  const FileIdentity mine = steps_->identity(step);
+  if (mine != file)
+    throw Error(concat("rank ", mpi_.rank(), " (", mpi_.host(), "): ", stepName(step, *steps_),
+                       " is ", mine.text(), " here but was ", file.text(),
+                       " when rank 0 opened it; every rank must see the same files "
+                       "(cluster.steps = \"broadcast\" sends them from rank 0)"));
+  // Read by this rank's reader threads, which were asked for it (want); a
+  // disk that stalls beyond cluster.timeout_s stops every rank, as a rank
+  // that stops drawing does.
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  for (;;) {
+    if (auto grid = steps_->get(step)) {
+      ++stats_.stepsRead;
+      stats_.stepSeconds += std::chrono::duration<double>(Clock::now() - start).count();
+      return grid;
+    }
+    if (const std::string failure = steps_->failure(step); !failure.empty())
+      throw Error(concat("rank ", mpi_.rank(), " (", mpi_.host(), ") could not read ",
+                         stepName(step, *steps_), ", which rank 0 read: ", failure));
+    if (std::chrono::duration<double>(Clock::now() - start).count() > mpi_.timeout())
+      throw Error(concat("rank ", mpi_.rank(), " (", mpi_.host(), "): ", stepName(step, *steps_),
+                         " was not read within ", mpi_.timeout(), " s (cluster.timeout_s)"));
+    std::this_thread::sleep_for(std::chrono::microseconds(200));
+  }
 }
 
 void FrameBroadcaster::sendStop() {
@@ -200,11 +286,25 @@ std::shared_ptr<const FramePacket> FrameBroadcaster::receive() {
           FieldRefs refs;
           auto packet = std::make_shared<FramePacket>(decodePacket(m.payload, &refs));
           if (packet->fieldUpdate) {
+            if (const std::optional<FieldSeriesRef>& s = packet->fieldUpdate->series;
+                series_ && s) {
+              // Read ahead as rank 0's playback does, then take the pair.
+              if (steps_)
+                steps_->want(FieldTimeline::aheadOrder(s->steps, steps_->capacity(),
+                                                       {s->first, s->second, 0.0f}, s->backwards,
+                                                       s->loop));
+              for (const auto& [key, step, file] :
+                   {std::tuple{refs.field, s->first, s->firstFile},
+                    std::tuple{refs.next, s->second, s->secondFile}})
+                if (key != 0 && !store_.contains(key) && !incoming_.count(key))
+                  incoming_[key] = seriesStep(packet->frame, step, file, key);
+            }
             const std::uint64_t used[2] = {refs.field, refs.next};
             store_.use(used, incoming_);
             FieldUpdate update{.field = store_.find(refs.field),
                                .placement = packet->fieldUpdate->placement,
                                .next = store_.find(refs.next),
+                               .series = packet->fieldUpdate->series,
                                .equation = packet->fieldUpdate->equation,
                                .range = packet->fieldUpdate->range};
             if (refs.sparse != 0) {

@@ -9,6 +9,14 @@
 // agree, so a packet carries only the grids' hashes; every rank checks each
 // grid it receives against its hash. A sparse grid (FieldUpdate::sparse)
 // travels as its NanoVDB words when it changes, checked the same way.
+//
+// A streamed series (readSeries, cluster.steps = "read"): a grid that a packet
+// names by its series step (FieldUpdate::series) is not sent. A rank that sees
+// the series' files takes the step from its own reader, after checking that
+// the file is the one rank 0 opened (size and modification time), and reads
+// ahead as rank 0's playback does; a rank that cannot see them receives the
+// grid after the packet, over a communicator of rank 0 and such ranks only.
+// Stores are keyed by step and file then, so nobody hashes a step's bytes.
 #pragma once
 
 #include <cstddef>
@@ -19,6 +27,7 @@
 #include <vector>
 
 #include "app/cluster/mpi_session.h"
+#include "core/field/field_timeline.h"
 #include "core/sim/field_store.h"
 #include "core/sim/frame_packet.h"
 
@@ -38,6 +47,8 @@ class FrameBroadcaster {
     std::uint64_t grids = 0;  // field grids sent or received
     std::uint64_t gridBytes = 0;
     double gridSeconds = 0.0;
+    std::uint64_t stepsRead = 0;  // series steps this rank took from its own reader
+    double stepSeconds = 0.0;     // waiting for them
   };
 
   FrameBroadcaster(MpiSession& mpi, std::size_t chunkBytes, std::size_t fieldCache);
@@ -54,6 +65,13 @@ class FrameBroadcaster {
   // travel; otherwise rank 0 sends its own. Returns whether they agreed.
   bool pinLocal(const std::vector<std::shared_ptr<const VectorField>>& grids);
 
+  // Every rank, before the first frame, when rank 0's field is a streamed
+  // series and cluster.steps = "read". `steps`: this rank's own reader of the
+  // series (null on rank 0 and on ranks that cannot see its files). `blind`:
+  // rank 0 and the ranks that cannot see them (MPI_COMM_NULL when there are
+  // none, and on the other ranks).
+  void readSeries(std::shared_ptr<FieldSteps> steps, MPI_Comm blind);
+
   const Stats& stats() const { return stats_; }
   // Fault injection for the tests: rank 0 damages the packet of `frame` after checksumming it.
   void corruptAt(int frame) { corruptFrame_ = frame; }
@@ -65,8 +83,12 @@ class FrameBroadcaster {
     std::vector<std::byte> payload;
   };
 
-  void post(Kind kind, std::span<const std::byte> payload, bool perFrame);
-  Message take(const std::string& what, bool perFrame);
+  void post(Kind kind, std::span<const std::byte> payload, bool perFrame,
+            MPI_Comm comm = MPI_COMM_WORLD);
+  Message take(const std::string& what, bool perFrame, MPI_Comm comm = MPI_COMM_WORLD);
+  // A series step's grid on a receiving rank: from its own reader, or from rank 0 over blind_.
+  std::shared_ptr<const VectorField> seriesStep(std::uint32_t frame, std::uint32_t step,
+                                                const FileIdentity& file, std::uint64_t key);
   int corruptFrame_ = -1;
 
   MpiSession& mpi_;
@@ -78,7 +100,11 @@ class FrameBroadcaster {
   std::uint64_t sparseHash_ = 0;
   std::shared_ptr<const SparseField> sparse_;
   std::uint32_t sequence_ = 0;
-  std::uint32_t nextFrame_ = 0;  // for messages: the frame expected next
+  bool series_ = false;                // readSeries was called
+  std::shared_ptr<FieldSteps> steps_;  // this rank's own reader of the series
+  MPI_Comm blind_ = MPI_COMM_NULL;
+  std::uint32_t blindSequence_ = 0;  // messages on blind_
+  std::uint32_t nextFrame_ = 0;      // for messages: the frame expected next
   Stats stats_;
 };
 

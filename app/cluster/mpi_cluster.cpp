@@ -160,6 +160,9 @@ bool MpiCluster::start(const AppConfig* config, const std::string& fingerprint,
   }
 
   readField_ = config->cluster.readField;
+  readSteps_ = config->cluster.readSteps;
+  fieldSpec_ = config->field;
+  configFolder_ = config->folder;
   frameTimeout_ = config->cluster.timeoutSeconds;
   startupTimeout_ = config->cluster.startupTimeoutSeconds;
   broadcaster_ = std::make_unique<FrameBroadcaster>(
@@ -247,6 +250,17 @@ void MpiCluster::shareField(const FieldSource& field) {
     double seconds;
     ~FrameTimeout() { mpi.setTimeout(seconds); }
   } frameTimeout{mpi_, frameTimeout_};
+  if (readSteps_) {
+    // Whether rank 0's field is a streamed series: every rank takes part in sharing it.
+    int series = root() && field.timeline && field.timeline->streamed() ? 1 : 0;
+    MPI_Request request;
+    MPI_Ibcast(&series, 1, MPI_INT, 0, MPI_COMM_WORLD, &request);
+    mpi_.wait(request, "rank 0 to say what its field is");
+    if (series) {
+      shareSeries(field);
+      return;
+    }
+  }
   if (!readField_) return;
   std::vector<std::shared_ptr<const VectorField>> grids;
   if (field.timeline) {
@@ -258,6 +272,89 @@ void MpiCluster::shareField(const FieldSource& field) {
   if (broadcaster_->pinLocal(grids) && root())
     log::info("cluster: every rank read the same field (", grids.size(),
               " grid(s)); no grid travels");
+}
+
+void MpiCluster::shareSeries(const FieldSource& field) {
+  std::shared_ptr<FieldSteps> steps = field.timeline ? field.timeline->steps() : nullptr;
+  std::string blind;  // why this rank cannot read the steps itself
+  if (!root() && options_.blindToSteps && rank() == options_.debugRank) {
+    steps.reset();
+    blind = "--debug-blind-to-steps";
+  } else if (!root() && !steps) {
+    try {
+      const FieldSource own = makeField(fieldSpec_, configFolder_);
+      steps = own.timeline ? own.timeline->steps() : nullptr;
+      if (!steps) blind = "the field source reads as one grid here, not as a series";
+    } catch (const Error& e) {
+      blind = e.what();
+    }
+  }
+  // Rank 0's files as it opened them: every reading rank must see the same.
+  ByteWriter w;
+  if (root()) {
+    const std::uint32_t count = std::uint32_t(field.timeline->size());
+    w.u32(count);
+    for (std::uint32_t i = 0; i < count; ++i) {
+      const FileIdentity f = steps->identity(i);
+      w.boolean(f.present);
+      w.u64(f.size);
+      w.u64(std::uint64_t(f.modified));
+    }
+  }
+  std::vector<std::byte> files = w.take();
+  std::uint64_t length = files.size();
+  MPI_Request request;
+  MPI_Ibcast(&length, 1, MPI_UINT64_T, 0, MPI_COMM_WORLD, &request);
+  mpi_.wait(request, "rank 0's list of the series' files");
+  files.resize(std::size_t(length));
+  MPI_Ibcast(files.data(), int(length), MPI_BYTE, 0, MPI_COMM_WORLD, &request);
+  mpi_.wait(request, "rank 0's list of the series' files");
+  if (!root() && blind.empty()) {
+    try {
+      ByteReader r(files, "rank 0's list of the series' files");
+      const std::uint32_t count = r.u32("count");
+      for (std::uint32_t i = 0; i < count && blind.empty(); ++i) {
+        FileIdentity theirs;
+        theirs.present = r.boolean("present");
+        theirs.size = r.u64("size");
+        theirs.modified = std::int64_t(r.u64("time"));
+        const FileIdentity mine = steps->identity(i);
+        if (mine != theirs)
+          blind = concat("step ", i, "'s file ", steps->name(i), " is ", mine.text(), " here and ",
+                         theirs.text(), " on rank 0");
+      }
+      if (blind.empty()) {
+        r.finish();
+        if (steps->identity(count).present)
+          blind = concat("its series has more steps than rank 0's ", count);
+      }
+    } catch (const Error& e) {
+      blind = e.what();
+    }
+  }
+  if (!blind.empty()) {
+    steps.reset();
+    log::warn("rank ", rank(), " (", mpi_.host(), ") cannot read the series' steps itself: ", blind,
+              "; rank 0 sends them over MPI (slower: every rank that reads them from a shared "
+              "file system spares the network)");
+  }
+  // Every rank's verdict, so that all agree who gets the steps over MPI.
+  const int mine = blind.empty() ? 0 : 1;
+  std::vector<int> verdicts(std::size_t(mpi_.size()), 0);
+  MPI_Iallgather(&mine, 1, MPI_INT, verdicts.data(), 1, MPI_INT, MPI_COMM_WORLD, &request);
+  mpi_.wait(request, "every rank to open the series");
+  std::string readers = "0", blindRanks;
+  for (int r = 1; r < mpi_.size(); ++r) {
+    std::string& list = verdicts[std::size_t(r)] ? blindRanks : readers;
+    list += concat(list.empty() ? "" : ", ", r);
+  }
+  MPI_Comm blindComm = MPI_COMM_NULL;
+  if (!blindRanks.empty())
+    MPI_Comm_split(MPI_COMM_WORLD, root() || mine ? 0 : MPI_UNDEFINED, rank(), &blindComm);
+  if (root())
+    log::info("cluster: the series' steps are read from disk by rank(s) ", readers,
+              blindRanks.empty() ? "" : "; rank 0 sends them over MPI to rank(s) " + blindRanks);
+  broadcaster_->readSeries(root() ? nullptr : steps, blindComm);
 }
 
 void MpiCluster::fail(const std::string& error) {
@@ -356,7 +453,8 @@ void MpiCluster::finish() {
             " B/frame broadcast; broadcast ", ms(s.broadcastSeconds / packets), "/frame (max ",
             ms(s.maxBroadcastSeconds), "); swap barrier ", ms(swapSeconds_ / swaps), "/frame (max ",
             ms(maxSwapSeconds_), "); waiting for own walls ", ms(drawWaitSeconds_ / swaps),
-            "/frame; field grids: ", s.grids, " (", s.gridBytes, " B, ", ms(s.gridSeconds), ")");
+            "/frame; field grids: ", s.grids, " (", s.gridBytes, " B, ", ms(s.gridSeconds),
+            "); series steps read here: ", s.stepsRead, " (waited ", ms(s.stepSeconds), ")");
 }
 
 }  // namespace sandstorm

@@ -10,6 +10,7 @@
 // thread; every wait is bounded (MpiSession::wait).
 #pragma once
 
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -51,12 +52,18 @@ class MpiCluster final : public ClusterLink {
  private:
   // Every rank's record; returns them all (the same on every rank).
   std::vector<std::string> gather(const std::string& record, const std::string& what);
+  // cluster.steps = "read" with a streamed series on rank 0: which ranks read
+  // its steps themselves; the others get them over MPI (FrameBroadcaster::readSeries).
+  void shareSeries(const FieldSource& field);
   void misbehave(std::uint32_t frame);
 
   MpiSession& mpi_;
   ClusterOptions options_;
   std::vector<int> owner_;  // per configured wall: the rank that drives it
   bool readField_ = false;
+  bool readSteps_ = true;
+  FieldSpec fieldSpec_;  // to open the series on ranks that did not load the field
+  std::filesystem::path configFolder_;
   double frameTimeout_ = 10.0;     // cluster.timeout_s, from the first frame on
   double startupTimeout_ = 120.0;  // cluster.startup_timeout_s, until frame 0 was drawn everywhere
   bool ready_ = false;

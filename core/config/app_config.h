@@ -199,8 +199,11 @@ struct ClusterSpec {
   float startupTimeoutSeconds =
       120.0f;              // the same before the first frame (loading fields, opening windows)
   bool readField = false;  // field = "read": every rank loads the field itself (checked by hash)
-  int chunkKiB = 4096;     // field grids travel in chunks of this size
-  int fieldCache = 4;      // grids each rank keeps (a time-varying field's frames)
+  // steps = "read": every rank reads a streamed series' steps itself (from a
+  // shared file system); "broadcast": rank 0 sends them.
+  bool readSteps = true;
+  int chunkKiB = 4096;  // field grids travel in chunks of this size
+  int fieldCache = 4;   // grids each rank keeps (a time-varying field's frames)
   bool roundRobin =
       false;  // walls = "round-robin": wall i on rank i % ranks, whatever rank/host say
   // [cluster] ranks = {front = 1}, hosts = {front = "node-a"}: placement of

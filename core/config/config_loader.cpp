@@ -685,8 +685,8 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
 
 void readCluster(const Reader& r, const toml::value& t, ClusterSpec& c) {
   r.checkKeys(t, "cluster",
-              {"timeout_s", "startup_timeout_s", "field", "chunk_kib", "field_cache", "walls",
-               "ranks", "hosts"});
+              {"timeout_s", "startup_timeout_s", "field", "steps", "chunk_kib", "field_cache",
+               "walls", "ranks", "hosts"});
   c.timeoutSeconds = r.real(t, "timeout_s", "cluster", c.timeoutSeconds);
   if (!(c.timeoutSeconds >= 0.1f && c.timeoutSeconds <= 3600.0f))
     r.fail(*r.find(t, "timeout_s"), "cluster.timeout_s", "expected 0.1..3600 s");
@@ -695,6 +695,8 @@ void readCluster(const Reader& r, const toml::value& t, ClusterSpec& c) {
     r.fail(*r.find(t, "startup_timeout_s"), "cluster.startup_timeout_s", "expected 1..86400 s");
   c.readField =
       r.choice<bool>(t, "field", "cluster", c.readField, {{"broadcast", false}, {"read", true}});
+  c.readSteps =
+      r.choice<bool>(t, "steps", "cluster", c.readSteps, {{"broadcast", false}, {"read", true}});
   c.chunkKiB = r.integer(t, "chunk_kib", "cluster", c.chunkKiB, 1, 1 << 20);
   c.fieldCache = r.integer(t, "field_cache", "cluster", c.fieldCache, 2, 4096);
   c.roundRobin = r.choice<bool>(t, "walls", "cluster", c.roundRobin,

@@ -91,7 +91,12 @@ FieldTimeline::Position FieldTimeline::at(double t, bool loop) const {
 
 void FieldTimeline::readAhead(const Position& at, bool backwards, bool loop) const {
   if (!steps_) return;
-  const std::size_t n = times_.size(), count = std::min(steps_->capacity(), n);
+  steps_->want(aheadOrder(times_.size(), steps_->capacity(), at, backwards, loop));
+}
+
+std::vector<std::size_t> FieldTimeline::aheadOrder(std::size_t n, std::size_t count,
+                                                   const Position& at, bool backwards, bool loop) {
+  count = std::min(count, n);
   std::vector<std::size_t> order;
   const auto add = [&](std::size_t i) {
     if (std::find(order.begin(), order.end(), i) == order.end()) order.push_back(i);
@@ -111,7 +116,7 @@ void FieldTimeline::readAhead(const Position& at, bool backwards, bool loop) con
     add(i);
   }
   order.resize(std::min(order.size(), count));
-  steps_->want(order);
+  return order;
 }
 
 }  // namespace sandstorm

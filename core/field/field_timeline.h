@@ -13,11 +13,13 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "core/field/vector_field.h"
+#include "core/util/file_identity.h"
 
 namespace sandstorm {
 
@@ -40,6 +42,22 @@ class FieldSteps {
   virtual std::size_t capacity() const = 0;
   // The steps in memory now, ascending (for the menu's loaded range).
   virtual std::vector<std::size_t> resident() const = 0;
+  // Step i's file as it was when the series was opened (cluster ranks that
+  // read the steps themselves check it against rank 0's); not `present` when
+  // the steps have no files.
+  virtual FileIdentity identity(std::size_t) const { return {}; }
+};
+
+// The pair a streamed timeline's playback is at, named so that another
+// process holding the same series (a cluster rank) can take the same steps
+// from its own reader and read ahead as playback does.
+struct FieldSeriesRef {
+  std::uint32_t steps = 0;               // in the series
+  std::uint32_t first = 0, second = 0;   // the pair: the update's `field` and `next`
+  FileIdentity firstFile, secondFile;    // their files as rank 0 opened them
+  bool backwards = false, loop = false;  // how playback reads ahead from the pair
+
+  bool operator==(const FieldSeriesRef&) const = default;
 };
 
 class FieldTimeline {
@@ -78,6 +96,9 @@ class FieldTimeline {
   // going forwards or (with a negative speed) backwards: the pair in use,
   // then the frames after it, wrapping with `loop`, as many as the steps keep.
   void readAhead(const Position& at, bool backwards, bool loop) const;
+  // The frames readAhead asks for, of `n`, at most `count`.
+  static std::vector<std::size_t> aheadOrder(std::size_t n, std::size_t count, const Position& at,
+                                             bool backwards, bool loop);
 
  private:
   std::vector<double> times_;

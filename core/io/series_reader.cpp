@@ -24,6 +24,8 @@ SeriesReader::SeriesReader(std::vector<Source> sources, LoadOptions options,
       capacity_(std::max<std::size_t>(capacity, 2)) {
   if (sources_.empty() || !first_) throw Error("field series: no first step to start from");
   held_[0] = first_;
+  for (const Source& s : sources_)
+    identities_.push_back(FileIdentity::of(s.file));
   for (int t = 0; t < std::max(threads, 1); ++t)
     threads_.emplace_back([this] { run(); });
 }
@@ -71,6 +73,10 @@ void SeriesReader::want(const std::vector<std::size_t>& order) {
       it = contains(wanted_, it->first) ? std::next(it) : held_.erase(it);
   }
   changed_.notify_all();
+}
+
+FileIdentity SeriesReader::identity(std::size_t i) const {
+  return i < identities_.size() ? identities_[i] : FileIdentity{};
 }
 
 std::shared_ptr<const VectorField> SeriesReader::get(std::size_t i) {

@@ -54,6 +54,7 @@ class SeriesReader final : public FieldSteps {
   std::string name(std::size_t i) const override;
   std::size_t capacity() const override { return capacity_; }
   std::vector<std::size_t> resident() const override;
+  FileIdentity identity(std::size_t i) const override;
 
   Stats stats() const;
   std::size_t size() const { return sources_.size(); }
@@ -69,6 +70,7 @@ class SeriesReader final : public FieldSteps {
   bool nextToRead(std::size_t& step) const;
 
   const std::vector<Source> sources_;
+  std::vector<FileIdentity> identities_;  // each source's file when the series was opened
   const LoadOptions options_;
   const std::shared_ptr<const VectorField> first_;
   const std::size_t capacity_;

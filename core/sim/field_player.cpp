@@ -10,6 +10,7 @@ namespace sandstorm {
 FieldPlayer::FieldPlayer(FieldTimeline timeline, const FieldPlacement& placement, bool loop)
     : timeline_(std::move(timeline)), placement_(placement) {
   time_ = timeline_.time(0);
+  loop_ = loop;
   position_ = timeline_.at(time_, loop);
   timeline_.readAhead(position_, false, loop);
   field_ = timeline_.wait(position_.first);  // without it there is nothing to show: throws
@@ -41,6 +42,18 @@ std::shared_ptr<const VectorField> FieldPlayer::upcoming() const {
   }
   if (i == first || i == second) return nullptr;  // already in use (a short series)
   return timeline_.frame(i);
+}
+
+std::optional<FieldSeriesRef> FieldPlayer::seriesRef() const {
+  const FieldSteps* steps = timeline_.steps().get();
+  if (!steps) return std::nullopt;
+  return FieldSeriesRef{.steps = std::uint32_t(timeline_.size()),
+                        .first = std::uint32_t(position_.first),
+                        .second = std::uint32_t(position_.second),
+                        .firstFile = steps->identity(position_.first),
+                        .secondFile = steps->identity(position_.second),
+                        .backwards = backwards_,
+                        .loop = loop_};
 }
 
 void FieldPlayer::append(double time, std::shared_ptr<const VectorField> frame) {

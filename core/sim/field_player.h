@@ -60,6 +60,9 @@ class FieldPlayer {
   // went: forwards or backwards, looping or not), if it is in memory; null
   // otherwise. What walls may upload ahead of need (FramePacket::upcomingField).
   std::shared_ptr<const VectorField> upcoming() const;
+  // A streamed timeline's pair in use, named by step and file, and how
+  // playback reads ahead (FieldUpdate::series); nullopt for frames in memory.
+  std::optional<FieldSeriesRef> seriesRef() const;
 
   void append(double time, std::shared_ptr<const VectorField> frame);
   const FieldPlacement& placement() const { return placement_; }

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include "core/field/field_equation.h"
 #include "core/field/field_placement.h"
 #include "core/field/field_range.h"
+#include "core/field/field_timeline.h"
 #include "core/field/sparse_field.h"
 #include "core/field/vector_field.h"
 #include "core/sim/counter_rng.h"
@@ -27,6 +29,9 @@ struct FieldUpdate {
   std::shared_ptr<const VectorField> field;  // the new grid (shared, never copied per wall)
   FieldPlacement placement;
   std::shared_ptr<const VectorField> next;  // a time-varying field's next frame, or null
+  // A streamed series: which steps `field` and `next` are (cluster ranks that
+  // read the series themselves take them from their own reader).
+  std::optional<FieldSeriesRef> series;
   // An analytic field's equation (field.mode = equation evaluates it in place of
   // `field`, whose bounds still bound the particles), or null.
   std::shared_ptr<const FieldEquation> equation;

@@ -16,7 +16,7 @@ constexpr std::uint32_t kPacketMagic = 0x50465353;  // "SSFP"
 constexpr std::uint32_t kFieldMagic = 0x46565353;   // "SSVF"
 // 2: equation terms, lod scale; 3: tracking, wand ray; 4: grid validity;
 // 5: field range; 6: vorticity; 7: colour grids by name, grids' scalar arrays.
-constexpr std::uint16_t kVersion = 11;
+constexpr std::uint16_t kVersion = 12;
 constexpr std::uint32_t kMaxScalarArrays = 256;
 
 // Limits far above any real packet, so a corrupt count cannot make us allocate gigabytes.
@@ -413,6 +413,21 @@ std::vector<std::byte> encodePacket(const FramePacket& p, const FieldRefs& refs)
           for (int c = 0; c < 4; ++c)
             w.f32(v[c]);
       }
+    // A streamed series' pair by step and file, for ranks that read the steps themselves.
+    const std::optional<FieldSeriesRef>& series = p.fieldUpdate->series;
+    w.boolean(series.has_value());
+    if (series) {
+      w.u32(series->steps);
+      w.u32(series->first);
+      w.u32(series->second);
+      for (const FileIdentity& f : {series->firstFile, series->secondFile}) {
+        w.boolean(f.present);
+        w.u64(f.size);
+        w.u64(std::uint64_t(f.modified));
+      }
+      w.boolean(series->backwards);
+      w.boolean(series->loop);
+    }
   }
   vec3(w, p.viewer.head.position);
   vec3(w, p.viewer.head.right);
@@ -483,6 +498,23 @@ FramePacket decodePacket(std::span<const std::byte> bytes, FieldRefs* refs) {
         equation->terms.push_back(t);
       }
       update.equation = std::move(equation);
+    }
+    if (r.boolean("field series")) {
+      FieldSeriesRef series;
+      series.steps = r.u32("field series steps");
+      series.first = r.u32("field series first step");
+      series.second = r.u32("field series second step");
+      if (series.first >= series.steps || series.second >= series.steps)
+        r.fail("field series step", concat("steps ", series.first, " and ", series.second,
+                                           " of a series of ", series.steps));
+      for (FileIdentity* f : {&series.firstFile, &series.secondFile}) {
+        f->present = r.boolean("field series file present");
+        f->size = r.u64("field series file size");
+        f->modified = std::int64_t(r.u64("field series file time"));
+      }
+      series.backwards = r.boolean("field series backwards");
+      series.loop = r.boolean("field series loop");
+      update.series = series;
     }
     p.fieldUpdate = std::make_shared<const FieldUpdate>(std::move(update));
   }

@@ -127,8 +127,12 @@ void MainContext::setFieldTimeline(FieldTimeline timeline, const FieldPlacement&
   if (waitListener_) player_->setWaitListener(waitListener_);
   if (replayWaits_) player_->replayWaits(*replayWaits_);
   const FieldPlayer::Frame now = player_->current();
-  field_ = std::make_shared<const FieldUpdate>(
-      withRange(FieldUpdate{.field = now.field, .placement = placement, .next = now.next}, state_));
+  field_ =
+      std::make_shared<const FieldUpdate>(withRange(FieldUpdate{.field = now.field,
+                                                                .placement = placement,
+                                                                .next = now.next,
+                                                                .series = player_->seriesRef()},
+                                                    state_));
   fieldChanged_ = true;
 }
 
@@ -243,10 +247,20 @@ FramePacket MainContext::next() {
     // The field's clock runs on simulated time, at the playback speed (FieldPlayer).
     const FieldPlayer::Frame now = player_->advance(frame_, state_.field, double(packet.simDt));
     if (now.changed) {
-      field_ = std::make_shared<const FieldUpdate>(withRange(
-          FieldUpdate{.field = now.field, .placement = player_->placement(), .next = now.next},
-          state_));
+      field_ = std::make_shared<const FieldUpdate>(
+          withRange(FieldUpdate{.field = now.field,
+                                .placement = player_->placement(),
+                                .next = now.next,
+                                .series = player_->seriesRef()},
+                    state_));
       fieldChanged_ = true;
+    }
+    // The pair named as playback reads ahead now (the first pair was named
+    // before the first frame set the direction of play).
+    if (fieldChanged_ && field_ && field_->series && field_->series != player_->seriesRef()) {
+      FieldUpdate named = *field_;
+      named.series = player_->seriesRef();
+      field_ = std::make_shared<const FieldUpdate>(std::move(named));
     }
     packet.fieldBlend = now.weight;
     if (options_.uploadAhead) packet.upcomingField = player_->upcoming();

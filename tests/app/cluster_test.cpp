@@ -163,6 +163,35 @@ TEST(Cluster, ATimeVaryingFieldSendsEachGridOnce) {
       << output;  // one slot per frame, grids apart
 }
 
+// cluster.steps = "read" (the default): every rank reads the series' steps
+// from the (here: the same) disk itself, checked by file against rank 0's,
+// and no grid crosses.
+TEST(Cluster, EveryRankReadsTheSeriesStepsItselfAndNoGridCrosses) {
+  const std::string output =
+      expectSameHashes("tests/data/series-read-cluster.toml", "", 120, "cluster-series-read");
+  EXPECT_EQ(count(output, "field grids: 0 ("), 3) << output;
+  EXPECT_EQ(count(output, "series steps read here: 4 ("), 2) << output;  // ranks 1 and 2
+  EXPECT_TRUE(has(output, "the series' steps are read from disk by rank(s) 0, 1, 2")) << output;
+}
+
+// A rank that cannot see the series' files (here it is told to behave so)
+// gets its steps from rank 0 over MPI, says so once, and draws the same.
+TEST(Cluster, ARankThatCannotSeeTheSeriesGetsItsStepsOverMpi) {
+  const std::string output = expectSameHashes(
+      "tests/data/series-read-cluster.toml", "--debug-blind-to-steps", 120, "cluster-series-blind");
+  EXPECT_EQ(count(output, "cannot read the series' steps itself"), 1) << output;
+  EXPECT_TRUE(has(output, "rank 0 sends them over MPI to rank(s) 2")) << output;
+  // Rank 1 reads all four steps; rank 2 receives them.
+  for (const auto& [rank, grids] :
+       {std::pair{1, "field grids: 0 ("}, std::pair{2, "field grids: 4 ("}}) {
+    const std::string line = "cluster stats, rank " + std::to_string(rank) + " of 3";
+    const std::size_t at = output.find(line);
+    ASSERT_NE(at, std::string::npos) << output;
+    const std::string stats = output.substr(at, output.find('\n', at) - at);
+    EXPECT_TRUE(has(stats, grids)) << stats;
+  }
+}
+
 TEST(Cluster, AHalfPrecisionSeriesTravelsAsHalvesAndDrawsTheSameEverywhere) {
   const std::string output =
       expectSameHashes("tests/data/series-half-cluster.toml", "", 60, "cluster-series-half");

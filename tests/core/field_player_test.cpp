@@ -42,6 +42,9 @@ class ScriptedSteps final : public FieldSteps {
   std::string name(std::size_t i) const override { return "step_" + std::to_string(i) + ".vti"; }
   std::size_t capacity() const override { return 4; }
   std::vector<std::size_t> resident() const override { return {arrived.begin(), arrived.end()}; }
+  FileIdentity identity(std::size_t i) const override {
+    return {true, 1000 + i, std::int64_t(i) * 7};
+  }
 
   std::vector<std::shared_ptr<const VectorField>> frames;
   std::set<std::size_t> arrived, waited, broken;
@@ -220,6 +223,48 @@ TEST(FieldPlayer, PacketsNameTheStepAfterThePairInTheDirectionOfPlayOnceItIsInMe
   // Step 2 never read: nothing to upload ahead while the pair (0,1) plays.
   EXPECT_EQ(play(false, 1.0f, {0, 1, 3})[0], -1);
   EXPECT_EQ(play(true, 1.0f, all, false), std::vector<int>(16, -1));
+}
+
+TEST(FieldPlayer, PacketsNameThePairByStepAndFileAndHowToReadAhead) {
+  // What a cluster rank reading the series itself goes by (FieldUpdate::series):
+  // the pair's steps are those the packet's grids are, their files are the
+  // reader's, and reading ahead from the packet asks for what rank 0 asked.
+  for (const float speed : {1.0f, -1.0f}) {
+    SCOPED_TRACE(speed);
+    auto steps = std::make_shared<ScriptedSteps>(5);
+    steps->arrived = {0, 1, 2, 3, 4};
+    ParticleState s;
+    s.field.loop = true;
+    s.field.speed = speed;
+    MainContext main(s, FieldUpdate{}, quarterSteps());
+    main.setFieldTimeline(FieldTimeline({0, 1, 2, 3, 4}, steps), FieldPlacement{});
+    int updates = 0;
+    for (int f = 0; f < 24; ++f) {
+      const FramePacket p = main.next();
+      if (!p.fieldUpdate) continue;
+      ++updates;
+      ASSERT_TRUE(p.fieldUpdate->series);
+      const FieldSeriesRef& r = *p.fieldUpdate->series;
+      EXPECT_EQ(r.steps, 5u);
+      EXPECT_EQ(int(r.first), int(p.fieldUpdate->field->values()[0].x));
+      EXPECT_EQ(int(r.second), int(p.fieldUpdate->next->values()[0].x));
+      EXPECT_EQ(r.firstFile, steps->identity(r.first));
+      EXPECT_EQ(r.secondFile, steps->identity(r.second));
+      EXPECT_EQ(r.backwards, speed < 0.0f);
+      EXPECT_TRUE(r.loop);
+      EXPECT_EQ(FieldTimeline::aheadOrder(r.steps, steps->capacity(), {r.first, r.second, 0.0f},
+                                          r.backwards, r.loop),
+                steps->wanted);
+    }
+    EXPECT_GE(updates, 5);  // the first pair, then a new one every four frames
+  }
+  // Frames held in memory are named by their grids only.
+  MainContext held(ParticleState{}, FieldUpdate{}, quarterSteps());
+  auto frame = std::make_shared<VectorField>(Box{{0, 0, 0}, {1, 1, 1}}, glm::ivec3(2));
+  held.setFieldTimeline(FieldTimeline({0, 1}, {frame, frame}), FieldPlacement{});
+  const FramePacket p = held.next();
+  ASSERT_TRUE(p.fieldUpdate);
+  EXPECT_FALSE(p.fieldUpdate->series);
 }
 
 }  // namespace

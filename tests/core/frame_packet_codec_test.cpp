@@ -71,6 +71,13 @@ FramePacket fullPacket() {
                                 .scale = 0.35f,
                                 .rotation = glm::mat3(0, 1, 0, -1, 0, 0, 0, 0, 1)},
                   .next = grid(2),
+                  .series = FieldSeriesRef{.steps = 1000,
+                                           .first = 998,
+                                           .second = 0,
+                                           .firstFile = {true, 1600000084ull, -1234567890123ll},
+                                           .secondFile = {},
+                                           .backwards = false,
+                                           .loop = true},
                   .range = {.minSpeed = 0.25f,
                             .maxSpeed = 9.5f,
                             .minVelocity = {-1, -2, -3},
@@ -164,6 +171,7 @@ TEST(FramePacketCodec, EveryMemberSurvivesARoundTrip) {
   EXPECT_EQ(q.fieldUpdate->placement.scale, p.fieldUpdate->placement.scale);
   EXPECT_EQ(q.fieldUpdate->placement.rotation, p.fieldUpdate->placement.rotation);
   EXPECT_EQ(q.fieldUpdate->range, p.fieldUpdate->range);
+  EXPECT_EQ(q.fieldUpdate->series, p.fieldUpdate->series);  // steps and files, by name
   EXPECT_EQ(q.viewer.head.position, p.viewer.head.position);
   EXPECT_EQ(q.viewer.head.right, p.viewer.head.right);
   EXPECT_EQ(q.viewer.head.eyeSeparation, p.viewer.head.eyeSeparation);
@@ -192,6 +200,7 @@ TEST(FramePacketCodec, APacketsSizeDoesNotDependOnTheFieldOrTheParticles) {
   const std::size_t small = encodePacket(p).size();
   p.fieldUpdate =
       std::make_shared<const FieldUpdate>(FieldUpdate{.field = grid(1, {64, 64, 64}),
+                                                      .series = p.fieldUpdate->series,
                                                       .colorGrid = grid(3, {64, 64, 64}),
                                                       .colorArray = "pressure"});
   EXPECT_EQ(encodePacket(p).size(), small);
@@ -301,6 +310,14 @@ TEST(FramePacketCodec, EveryTruncationIsAClearError) {
   expectError(std::span(field).first(field.size() - 1), false, "bytes of vectors");
 }
 
+TEST(FramePacketCodec, ASeriesStepBeyondTheSeriesIsRefused) {
+  FramePacket p = fullPacket();
+  FieldUpdate update = *p.fieldUpdate;
+  update.series->second = 1000;  // of steps 0..999
+  p.fieldUpdate = std::make_shared<const FieldUpdate>(update);
+  expectError(encodePacket(p), true, "steps 998 and 1000 of a series of 1000");
+}
+
 TEST(FramePacketCodec, CorruptBuffersAreClearErrors) {
   const std::vector<std::byte> good = encodePacket(fullPacket());
   auto with = [&](std::size_t at, std::uint8_t value) {
@@ -309,7 +326,7 @@ TEST(FramePacketCodec, CorruptBuffersAreClearErrors) {
     return b;
   };
   expectError(with(0, 'X'), true, "not a frame packet");
-  expectError(with(4, 12), true, "version 12");
+  expectError(with(4, 13), true, "version 13");
   expectError(with(42, 7), true, "reset");  // the reset flag: 0 or 1
   expectError(with(46, 0xff), true,
               "change count");  // a huge count is refused before any allocation
