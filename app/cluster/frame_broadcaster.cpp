@@ -46,10 +46,12 @@ FrameBroadcaster::FrameBroadcaster(MpiSession& mpi, std::size_t chunkBytes, std:
       chunkBytes_(std::clamp<std::size_t>(chunkBytes, 1024, INT_MAX)),
       store_(fieldCache) {}
 
-void FrameBroadcaster::readSeries(std::shared_ptr<FieldSteps> steps, MPI_Comm blind) {
+void FrameBroadcaster::readSeries(std::shared_ptr<FieldSteps> steps, MPI_Comm blind,
+                                  bool uploadAhead) {
   series_ = true;
   steps_ = std::move(steps);
   blind_ = blind;
+  uploadAhead_ = uploadAhead;
 }
 
 void FrameBroadcaster::post(Kind kind, std::span<const std::byte> payload, bool perFrame,
@@ -298,6 +300,9 @@ std::shared_ptr<const FramePacket> FrameBroadcaster::receive() {
                     std::tuple{refs.next, s->second, s->secondFile}})
                 if (key != 0 && !store_.contains(key) && !incoming_.count(key))
                   incoming_[key] = seriesStep(packet->frame, step, file, key);
+              playing_ = s;
+            } else {
+              playing_.reset();
             }
             const std::uint64_t used[2] = {refs.field, refs.next};
             store_.use(used, incoming_);
@@ -321,6 +326,13 @@ std::shared_ptr<const FramePacket> FrameBroadcaster::receive() {
             packet->fieldUpdate = std::make_shared<const FieldUpdate>(std::move(update));
           }
           incoming_.clear();
+          // The step after the pair, if this rank's reader has it: its walls
+          // upload it ahead of need (a hint, as on rank 0; it does not travel).
+          if (steps_ && uploadAhead_ && playing_)
+            if (const auto i = FieldTimeline::upcomingIndex(
+                    playing_->steps, {playing_->first, playing_->second, 0.0f}, playing_->backwards,
+                    playing_->loop))
+              packet->upcomingField = steps_->get(*i);
           if (packet->frame != nextFrame_)
             throw Error(concat("the packet of frame ", packet->frame, " arrived where frame ",
                                nextFrame_, " was expected"));

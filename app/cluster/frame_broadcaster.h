@@ -22,6 +22,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -70,7 +71,9 @@ class FrameBroadcaster {
   // series (null on rank 0 and on ranks that cannot see its files). `blind`:
   // rank 0 and the ranks that cannot see them (MPI_COMM_NULL when there are
   // none, and on the other ranks).
-  void readSeries(std::shared_ptr<FieldSteps> steps, MPI_Comm blind);
+  // `uploadAhead` (field.upload_ahead): packets to this rank's walls carry the
+  // step after the pair from its own reader, as rank 0's own walls get it.
+  void readSeries(std::shared_ptr<FieldSteps> steps, MPI_Comm blind, bool uploadAhead);
 
   const Stats& stats() const { return stats_; }
   // Fault injection for the tests: rank 0 damages the packet of `frame` after checksumming it.
@@ -102,6 +105,8 @@ class FrameBroadcaster {
   std::uint32_t sequence_ = 0;
   bool series_ = false;                // readSeries was called
   std::shared_ptr<FieldSteps> steps_;  // this rank's own reader of the series
+  bool uploadAhead_ = false;
+  std::optional<FieldSeriesRef> playing_;  // the pair the last series packet named
   MPI_Comm blind_ = MPI_COMM_NULL;
   std::uint32_t blindSequence_ = 0;  // messages on blind_
   std::uint32_t nextFrame_ = 0;      // for messages: the frame expected next

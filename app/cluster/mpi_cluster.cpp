@@ -354,7 +354,7 @@ void MpiCluster::shareSeries(const FieldSource& field) {
   if (root())
     log::info("cluster: the series' steps are read from disk by rank(s) ", readers,
               blindRanks.empty() ? "" : "; rank 0 sends them over MPI to rank(s) " + blindRanks);
-  broadcaster_->readSeries(root() ? nullptr : steps, blindComm);
+  broadcaster_->readSeries(root() ? nullptr : steps, blindComm, fieldSpec_.uploadAhead);
 }
 
 void MpiCluster::fail(const std::string& error) {

@@ -94,6 +94,21 @@ void FieldTimeline::readAhead(const Position& at, bool backwards, bool loop) con
   steps_->want(aheadOrder(times_.size(), steps_->capacity(), at, backwards, loop));
 }
 
+std::optional<std::size_t> FieldTimeline::upcomingIndex(std::size_t n, const Position& at,
+                                                        bool backwards, bool loop) {
+  if (at.first >= n || at.second >= n) return std::nullopt;
+  std::size_t i = 0;
+  if (backwards) {
+    if (at.first == 0 && !loop) return std::nullopt;
+    i = at.first == 0 ? n - 1 : at.first - 1;
+  } else {
+    if (at.second + 1 == n && !loop) return std::nullopt;
+    i = (at.second + 1) % n;
+  }
+  if (i == at.first || i == at.second) return std::nullopt;  // already in use (a short series)
+  return i;
+}
+
 std::vector<std::size_t> FieldTimeline::aheadOrder(std::size_t n, std::size_t count,
                                                    const Position& at, bool backwards, bool loop) {
   count = std::min(count, n);

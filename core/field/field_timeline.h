@@ -15,6 +15,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -96,6 +97,10 @@ class FieldTimeline {
   // going forwards or (with a negative speed) backwards: the pair in use,
   // then the frames after it, wrapping with `loop`, as many as the steps keep.
   void readAhead(const Position& at, bool backwards, bool loop) const;
+  // The frame after the pair `at` of `n` in the direction of play, if there
+  // is one other than the pair (what walls may upload ahead of need).
+  static std::optional<std::size_t> upcomingIndex(std::size_t n, const Position& at, bool backwards,
+                                                  bool loop);
   // The frames readAhead asks for, of `n`, at most `count`.
   static std::vector<std::size_t> aheadOrder(std::size_t n, std::size_t count, const Position& at,
                                              bool backwards, bool loop);

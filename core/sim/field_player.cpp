@@ -30,18 +30,10 @@ FieldPlayer::Frame FieldPlayer::current() const {
 }
 
 std::shared_ptr<const VectorField> FieldPlayer::upcoming() const {
-  const std::size_t n = timeline_.size(), first = position_.first, second = position_.second;
-  if (!error_.empty() || first >= n || second >= n) return nullptr;
-  std::size_t i = 0;
-  if (backwards_) {
-    if (first == 0 && !loop_) return nullptr;
-    i = first == 0 ? n - 1 : first - 1;
-  } else {
-    if (second + 1 == n && !loop_) return nullptr;
-    i = (second + 1) % n;
-  }
-  if (i == first || i == second) return nullptr;  // already in use (a short series)
-  return timeline_.frame(i);
+  if (!error_.empty()) return nullptr;
+  const std::optional<std::size_t> i =
+      FieldTimeline::upcomingIndex(timeline_.size(), position_, backwards_, loop_);
+  return i ? timeline_.frame(*i) : nullptr;
 }
 
 std::optional<FieldSeriesRef> FieldPlayer::seriesRef() const {
