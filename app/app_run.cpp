@@ -619,7 +619,7 @@ void AppRun::appendFieldStep(double time, const std::string& file,
                              std::shared_ptr<const VectorField> field, std::uint32_t completeAt) {
   const std::uint32_t frame = main_.nextFrame();
   try {
-    main_.appendFieldFrame(time, std::move(field));
+    main_.appendFieldFrame(time, std::move(field), file);
   } catch (const Error& e) {
     log::warn("field stream: the step at t = ", time, " s (", file, ") was skipped: ", e.what(),
               "; the last good field stays");

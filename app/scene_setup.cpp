@@ -26,6 +26,46 @@ std::filesystem::path resolve(const std::string& source, const std::filesystem::
   return p.is_absolute() || std::filesystem::exists(p) ? p : baseDir / p;
 }
 
+// Bytes a step of `field`'s grid takes in memory (vectors, mask, scalar arrays).
+double stepBytes(const VectorField& field) {
+  double bytes = 12.0 * double(field.pointCount()) + double(field.validity().size());
+  for (const VectorField::Scalars& s : field.scalars())
+    bytes += 4.0 * double(s.values.size());
+  return bytes;
+}
+
+// How many steps of `first`'s grid playback may hold (the two being blended
+// and those read ahead, within field.memory_budget), and how many threads
+// read them: one for each step read ahead, on at most half the cores (the
+// walls' threads and the main context keep the rest).
+struct StreamPlan {
+  std::size_t capacity = 2;
+  int readers = 1;
+};
+
+StreamPlan streamPlan(const std::filesystem::path& path, const VectorField& first,
+                      const FieldSpec& spec, const LoadOptions& options) {
+  const double step = stepBytes(first), budget = double(options.memoryBudget);
+  const std::size_t fit = std::size_t(budget / step);
+  if (fit < 2)
+    throw Error(concat(path.string(), ": a step of the series takes ", formatByteSize(step),
+                       " and playback holds two at once, beyond field.memory_budget (",
+                       formatByteSize(budget),
+                       "); raise field.memory_budget or lower "
+                       "field.resolution"));
+  StreamPlan plan;
+  plan.capacity = 2 + std::size_t(spec.readAhead);
+  if (plan.capacity > fit) {
+    log::warn(path.string(), ": field.read_ahead = ", spec.readAhead, " needs ", plan.capacity,
+              " steps of ", formatByteSize(step), " in memory, beyond field.memory_budget (",
+              formatByteSize(budget), "); reading ", fit - 2, " ahead");
+    plan.capacity = fit;
+  }
+  const std::size_t cores = std::max(2u, std::thread::hardware_concurrency());
+  plan.readers = int(std::clamp<std::size_t>(plan.capacity - 2, 1, cores / 2));
+  return plan;
+}
+
 // A source a running simulation writes: its first step, waited for (up to
 // wait_s), as a timeline of one frame, and the scanner to watch for more.
 FieldSource watchedField(const std::filesystem::path& path, const FieldSpec& spec,
@@ -37,16 +77,28 @@ FieldSource watchedField(const std::filesystem::path& path, const FieldSpec& spe
   bool said = false;
   for (;;) {
     std::vector<std::string> messages;
-    for (const FieldStreamScanner::Step& step : scanner->poll(messages)) {
+    const std::vector<FieldStreamScanner::Step> found = scanner->poll(messages);
+    for (auto it = found.begin(); it != found.end(); ++it) {
+      const FieldStreamScanner::Step& step = *it;
       try {
         FieldSource out;
         auto field = std::make_shared<const VectorField>(loadField(step.file, options));
-        out.timeline = FieldTimeline({step.time}, {field});
+        // Streamed, as a series is: the steps the simulation writes join it
+        // and are held only while playback wants them (memory stays flat).
+        const StreamPlan plan = streamPlan(path, *field, spec, options);
+        auto reader =
+            std::make_shared<SeriesReader>(std::vector<SeriesReader::Source>{{step.file, 0}},
+                                           options, field, plan.capacity, plan.readers);
+        out.timeline = FieldTimeline({step.time}, reader);
+        out.series = reader;
         out.update = FieldUpdate{.field = field, .placement = spec.placement};
         out.stream = scanner;
         out.streamOptions = options;
-        out.description = concat(path.string(), " (watched; its first step ",
-                                 step.file.filename().string(), " at t = ", step.time, " s)");
+        // The steps found with it (the simulation ran before the start) join next.
+        scanner->putBack({std::next(it), found.end()});
+        out.description =
+            concat(path.string(), " (watched; its first step ", step.file.filename().string(),
+                   " at t = ", step.time, " s; at most ", plan.capacity, " steps in memory)");
         return out;
       } catch (const Error& e) {
         log::warn("field stream: the step ", step.file.string(), " was skipped: ", e.what());
@@ -61,14 +113,6 @@ FieldSource watchedField(const std::filesystem::path& path, const FieldSpec& spe
     said = true;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }
-}
-
-// Bytes a step of `field`'s grid takes in memory (vectors, mask, scalar arrays).
-double stepBytes(const VectorField& field) {
-  double bytes = 12.0 * double(field.pointCount()) + double(field.validity().size());
-  for (const VectorField::Scalars& s : field.scalars())
-    bytes += 4.0 * double(s.values.size());
-  return bytes;
 }
 
 // A file: one field, or a series (a .pvd, or the steps an Exodus, EnSight,
@@ -87,28 +131,11 @@ FieldSource fileField(const std::filesystem::path& path, const FieldSpec& spec,
     out.update = FieldUpdate{.field = index.first, .placement = spec.placement};
     return out;
   }
-  // The two steps being blended, and those read ahead, within the budget.
-  const double step = stepBytes(*index.first), budget = double(options.memoryBudget);
-  const std::size_t fit = std::size_t(budget / step);
-  if (fit < 2)
-    throw Error(concat(path.string(), ": a step of the series takes ", formatByteSize(step),
-                       " and playback holds two at once, beyond field.memory_budget (",
-                       formatByteSize(budget),
-                       "); raise field.memory_budget or lower "
-                       "field.resolution"));
-  std::size_t capacity = 2 + std::size_t(spec.readAhead);
-  if (capacity > fit) {
-    log::warn(path.string(), ": field.read_ahead = ", spec.readAhead, " needs ", capacity,
-              " steps of ", formatByteSize(step), " in memory, beyond field.memory_budget (",
-              formatByteSize(budget), "); reading ", fit - 2, " ahead");
-    capacity = fit;
-  }
-  const std::size_t steps = index.times.size();
+  const StreamPlan plan = streamPlan(path, *index.first, spec, options);
+  const std::size_t capacity = plan.capacity, steps = index.times.size();
+  const int readers = plan.readers;
+  const double step = stepBytes(*index.first);
   const double start = index.times.front(), end = index.times.back();
-  // A reader for each step read ahead, on at most half the cores: the walls'
-  // threads and the main context keep the rest.
-  const std::size_t cores = std::max(2u, std::thread::hardware_concurrency());
-  const int readers = int(std::clamp<std::size_t>(capacity - 2, 1, cores / 2));
   auto reader = std::make_shared<SeriesReader>(std::move(index.sources), index.stepOptions,
                                                index.first, capacity, readers);
   out.description = concat(path.string(), ": ", steps, " steps over ", end - start, " s ('",

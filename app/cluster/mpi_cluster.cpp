@@ -252,7 +252,8 @@ void MpiCluster::shareField(const FieldSource& field) {
   } frameTimeout{mpi_, frameTimeout_};
   if (readSteps_) {
     // Whether rank 0's field is a streamed series: every rank takes part in sharing it.
-    int series = root() && field.timeline && field.timeline->streamed() ? 1 : 0;
+    // (A watched folder grows on rank 0 alone: its steps travel as before.)
+    int series = root() && field.timeline && field.timeline->streamed() && !field.stream ? 1 : 0;
     MPI_Request request;
     MPI_Ibcast(&series, 1, MPI_INT, 0, MPI_COMM_WORLD, &request);
     mpi_.wait(request, "rank 0 to say what its field is");

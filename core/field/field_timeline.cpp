@@ -51,12 +51,22 @@ std::shared_ptr<const VectorField> FieldTimeline::wait(std::size_t i) const {
   return steps_ ? steps_->wait(i) : frames_[i];
 }
 
-void FieldTimeline::append(double time, std::shared_ptr<const VectorField> frame) {
-  if (steps_) throw Error("FieldTimeline: a streamed series takes no appended frames");
+void FieldSteps::append(const std::filesystem::path&, std::shared_ptr<const VectorField>) {
+  throw Error("FieldTimeline: this series takes no appended steps");
+}
+
+void FieldTimeline::append(double time, std::shared_ptr<const VectorField> frame,
+                           const std::filesystem::path& file) {
   if (!frame) throw Error("FieldTimeline: a missing frame");
   if (!(time > times_.back()))
     throw Error(concat("FieldTimeline: a frame at ", time, " s does not follow the last one's ",
                        times_.back(), " s"));
+  if (steps_) {
+    if (file.empty()) throw Error("FieldTimeline: a streamed series' new step needs its file");
+    steps_->append(file, std::move(frame));  // checks the grid
+    times_.push_back(time);
+    return;
+  }
   const VectorField& first = *frames_[0];
   if (frame->dims() != first.dims() || frame->bounds().min != first.bounds().min ||
       frame->bounds().max != first.bounds().max)

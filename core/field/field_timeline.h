@@ -14,6 +14,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -47,6 +48,11 @@ class FieldSteps {
   // read the steps themselves check it against rank 0's); not `present` when
   // the steps have no files.
   virtual FileIdentity identity(std::size_t) const { return {}; }
+  // A new last step (a watched folder's, FieldStream), read already from
+  // `file`: held while wanted, read again from the file when wanted later.
+  // Throws Error, changing nothing, when the steps take no new ones or the
+  // frame is on another grid.
+  virtual void append(const std::filesystem::path& file, std::shared_ptr<const VectorField> frame);
 };
 
 // The pair a streamed timeline's playback is at, named so that another
@@ -80,8 +86,11 @@ class FieldTimeline {
 
   // A new last frame (a simulation's next step, FieldStream): throws Error,
   // changing nothing, unless it follows the last frame's time and shares its
-  // grid, or the frames are streamed.
-  void append(double time, std::shared_ptr<const VectorField> frame);
+  // grid. A streamed timeline hands it to its steps with its `file`, which
+  // keep it only while playback wants it, so memory stays flat however many
+  // steps the simulation writes.
+  void append(double time, std::shared_ptr<const VectorField> frame,
+              const std::filesystem::path& file = {});
 
   std::size_t size() const { return times_.size(); }
   double time(std::size_t i) const { return times_[i]; }

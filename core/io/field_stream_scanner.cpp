@@ -76,7 +76,15 @@ bool FieldStreamScanner::settled(const fs::path& file) {
 }
 
 std::vector<FieldStreamScanner::Step> FieldStreamScanner::poll(std::vector<std::string>& messages) {
-  return folder_ ? pollFolder(messages) : pollPvd(messages);
+  std::vector<Step> out = std::move(back_);
+  back_.clear();
+  for (Step& s : folder_ ? pollFolder(messages) : pollPvd(messages))
+    out.push_back(std::move(s));
+  return out;
+}
+
+void FieldStreamScanner::putBack(std::vector<Step> steps) {
+  back_.insert(back_.begin(), steps.begin(), steps.end());
 }
 
 std::vector<FieldStreamScanner::Step> FieldStreamScanner::pollFolder(

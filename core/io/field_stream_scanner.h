@@ -44,6 +44,10 @@ class FieldStreamScanner {
   // One look: the steps that became complete since the last one, in order.
   // `messages` gets a line for each step skipped.
   std::vector<Step> poll(std::vector<std::string>& messages);
+  // Steps a poll reported that the caller did not take (the start takes the
+  // first complete step; those found with it follow): the next poll reports
+  // them first.
+  void putBack(std::vector<Step> steps);
 
  private:
   struct Seen {
@@ -68,6 +72,7 @@ class FieldStreamScanner {
   std::optional<double> newestTime_;                 // a .pvd's newest step
   int folderSteps_ = 0;
   std::map<std::filesystem::path, int> missing_;  // .pvd entries without their file yet
+  std::vector<Step> back_;                        // put back, for the next poll
 };
 
 }  // namespace sandstorm

@@ -59,12 +59,12 @@ std::shared_ptr<const VectorField> SeriesReader::read(const Source& source,
 }
 
 void SeriesReader::want(const std::vector<std::size_t>& order) {
-  std::vector<std::size_t> wanted;
-  for (std::size_t i : order)
-    if (i < sources_.size() && !contains(wanted, i) && wanted.size() < capacity_)
-      wanted.push_back(i);
   {
     std::lock_guard lock(mutex_);
+    std::vector<std::size_t> wanted;
+    for (std::size_t i : order)
+      if (i < sources_.size() && !contains(wanted, i) && wanted.size() < capacity_)
+        wanted.push_back(i);
     // Asked every frame; the steps change only as playback moves on.
     if (wanted == wanted_) return;
     wanted_ = std::move(wanted);
@@ -76,6 +76,7 @@ void SeriesReader::want(const std::vector<std::size_t>& order) {
 }
 
 FileIdentity SeriesReader::identity(std::size_t i) const {
+  std::lock_guard lock(mutex_);
   return i < identities_.size() ? identities_[i] : FileIdentity{};
 }
 
@@ -85,10 +86,39 @@ std::shared_ptr<const VectorField> SeriesReader::get(std::size_t i) {
   return it == held_.end() ? nullptr : it->second;
 }
 
+std::size_t SeriesReader::size() const {
+  std::lock_guard lock(mutex_);
+  return sources_.size();
+}
+
+void SeriesReader::append(const std::filesystem::path& file,
+                          std::shared_ptr<const VectorField> frame) {
+  if (!frame) throw Error("field series: a missing step");
+  if (frame->dims() != first_->dims() || frame->bounds().min != first_->bounds().min ||
+      frame->bounds().max != first_->bounds().max)
+    throw Error(concat(file.string(), ": a ", frame->dims().x, "x", frame->dims().y, "x",
+                       frame->dims().z, " grid over other bounds than the series' first step's ",
+                       first_->dims().x, "x", first_->dims().y, "x", first_->dims().z,
+                       "; expected every step on the same grid"));
+  const FileIdentity identity = FileIdentity::of(file);
+  {
+    std::lock_guard lock(mutex_);
+    const std::size_t step = sources_.size();
+    sources_.push_back({file, 0});
+    identities_.push_back(identity);
+    held_[step] = std::move(frame);
+    // Held until playback says what it wants; beyond capacity, the steps it
+    // does not want go first, the oldest first, so memory stays flat.
+    for (auto it = held_.begin(); held_.size() > capacity_ && it != held_.end();)
+      it = it->first != step && !contains(wanted_, it->first) ? held_.erase(it) : std::next(it);
+  }
+  changed_.notify_all();
+}
+
 std::shared_ptr<const VectorField> SeriesReader::wait(std::size_t i) {
+  std::unique_lock lock(mutex_);
   if (i >= sources_.size())
     throw Error(concat("field series: step ", i, " asked of ", sources_.size()));
-  std::unique_lock lock(mutex_);
   if (!contains(wanted_, i)) {
     // Asked for out of order (a replay, the start): first in line.
     wanted_.insert(wanted_.begin(), i);
@@ -108,6 +138,7 @@ std::string SeriesReader::failure(std::size_t i) const {
 }
 
 std::string SeriesReader::name(std::size_t i) const {
+  std::lock_guard lock(mutex_);
   if (i >= sources_.size()) return {};
   const Source& s = sources_[i];
   // Steps of one file (Exodus, EnSight, ...) are told apart by their index.
@@ -144,12 +175,13 @@ void SeriesReader::run() {
     changed_.wait(lock, [&] { return stop_ || nextToRead(step); });
     if (stop_) return;
     reading_.push_back(step);
+    const Source source = sources_[step];
     lock.unlock();
     const auto start = std::chrono::steady_clock::now();
     std::shared_ptr<const VectorField> field;
     std::string error;
     try {
-      field = read(sources_[step], options_, first_.get());
+      field = read(source, options_, first_.get());
     } catch (const Error& e) {
       error = e.what();
     } catch (const std::bad_alloc&) {

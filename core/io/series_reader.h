@@ -7,6 +7,9 @@
 // yet in memory; a step no longer wanted is dropped (freed once no wall shows
 // it), so at most `capacity` steps are in memory however long the series.
 //
+// A watched folder's series grows (append): a step the simulation wrote is
+// held while playback wants it and read again from its file when wanted later.
+//
 // Every step must have the first step's dims and bounds: one that does not,
 // or does not read (missing, truncated, malformed), fails with its file named
 // and is not tried again. Counts bytes and time spent reading, for the log's
@@ -55,9 +58,10 @@ class SeriesReader final : public FieldSteps {
   std::size_t capacity() const override { return capacity_; }
   std::vector<std::size_t> resident() const override;
   FileIdentity identity(std::size_t i) const override;
+  void append(const std::filesystem::path& file, std::shared_ptr<const VectorField> frame) override;
 
   Stats stats() const;
-  std::size_t size() const { return sources_.size(); }
+  std::size_t size() const;
 
   // Reads one step and checks its grid against `grid` (or nothing when null).
   // Throws Error naming the file.
@@ -69,7 +73,8 @@ class SeriesReader final : public FieldSteps {
   // The first wanted step neither in memory, being read nor failed; false if none.
   bool nextToRead(std::size_t& step) const;
 
-  const std::vector<Source> sources_;
+  // Guarded by mutex_ (a watched folder's series grows while readers read).
+  std::vector<Source> sources_;
   std::vector<FileIdentity> identities_;  // each source's file when the series was opened
   const LoadOptions options_;
   const std::shared_ptr<const VectorField> first_;

@@ -48,8 +48,9 @@ std::optional<FieldSeriesRef> FieldPlayer::seriesRef() const {
                         .loop = loop_};
 }
 
-void FieldPlayer::append(double time, std::shared_ptr<const VectorField> frame) {
-  timeline_.append(time, std::move(frame));
+void FieldPlayer::append(double time, std::shared_ptr<const VectorField> frame,
+                         const std::filesystem::path& file) {
+  timeline_.append(time, std::move(frame), file);
   // The pair in use may now blend towards the new frame: look again at the next packet.
   position_ = {timeline_.size(), timeline_.size(), position_.weight};
 }

@@ -64,7 +64,8 @@ class FieldPlayer {
   // playback reads ahead (FieldUpdate::series); nullopt for frames in memory.
   std::optional<FieldSeriesRef> seriesRef() const;
 
-  void append(double time, std::shared_ptr<const VectorField> frame);
+  void append(double time, std::shared_ptr<const VectorField> frame,
+              const std::filesystem::path& file = {});
   const FieldPlacement& placement() const { return placement_; }
   std::size_t size() const { return timeline_.size(); }
   FieldPlaybackStatus status() const;

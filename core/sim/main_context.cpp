@@ -136,10 +136,11 @@ void MainContext::setFieldTimeline(FieldTimeline timeline, const FieldPlacement&
   fieldChanged_ = true;
 }
 
-void MainContext::appendFieldFrame(double time, std::shared_ptr<const VectorField> frame) {
+void MainContext::appendFieldFrame(double time, std::shared_ptr<const VectorField> frame,
+                                   const std::filesystem::path& file) {
   std::lock_guard lock(mutex_);
   if (!player_) throw Error("appendFieldFrame: the field is not time-varying");
-  player_->append(time, std::move(frame));
+  player_->append(time, std::move(frame), file);
 }
 
 std::size_t MainContext::fieldFrames() const {

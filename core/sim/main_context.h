@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <filesystem>
 #include <functional>
 #include <map>
 #include <memory>
@@ -61,7 +62,9 @@ class MainContext {
   // wrote, FieldStream); with field.follow the field jumps to it at the next
   // packet. Throws Error, changing nothing, when there is no timeline or the
   // frame does not fit it (FieldTimeline::append).
-  void appendFieldFrame(double time, std::shared_ptr<const VectorField> frame);
+  // `file`: where the frame was read from (a streamed timeline reads it again when wanted).
+  void appendFieldFrame(double time, std::shared_ptr<const VectorField> frame,
+                        const std::filesystem::path& file = {});
   // The time-varying field's frames (1 for a still field) and the newest's time.
   std::size_t fieldFrames() const;
   // Where a time-varying field's playback stands (for the menu).

@@ -1,6 +1,7 @@
 // A series streamed from disk in the application: a long series plays in the
 // memory of a few steps (the run's peak resident memory against the same
-// run over a series a tenth as long), a recorded run replays to the same
+// run over a series a tenth as long), and so does a watched folder a
+// simulation keeps filling, a recorded run replays to the same
 // particles, a step that cannot be read stops playback and the run goes on,
 // and a budget that cannot hold two steps is refused naming the settings.
 #include <gtest/gtest.h>
@@ -132,6 +133,52 @@ TEST(SeriesStream, ALongSeriesPlaysInTheMemoryOfAFewSteps) {
       << many.result.output;
   // Held at once, the long series' 60 steps would take 180 MiB more than the
   // short one's six; streamed, both hold three at most.
+  const long extraKiB = many.peakKiB - few.peakKiB;
+  EXPECT_LT(extraKiB, 40 * 1024) << "peak " << many.peakKiB << " KiB against " << few.peakKiB;
+}
+
+// The run of writeRun on a watched folder (a running simulation's steps,
+// field.source a folder) instead of the .pvd, following the newest step.
+fs::path writeWatched(const fs::path& dir, int steps) {
+  const fs::path run = writeRun(dir, steps);
+  fs::create_directories(dir / "steps");
+  for (int k = 0; k < steps; ++k)
+    fs::rename(dir / stepName(k), dir / "steps" / stepName(k));
+  std::string text = test::readBytes(run);
+  for (const auto& [from, to] :
+       {std::pair<std::string, std::string>{"source = \"series.pvd\"",
+                                            "source = \"steps\"\nstep_interval = 0.05"},
+        {"loop = false", "follow = true"}}) {
+    const std::size_t at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at != std::string::npos) text.replace(at, from.size(), to);
+  }
+  std::ofstream(run) << text;
+  return run;
+}
+
+int joinedSteps(const std::string& output) {
+  int n = 0;
+  for (std::size_t at = output.find(") joins the field at frame "); at != std::string::npos;
+       at = output.find(") joins the field at frame ", at + 1))
+    ++n;
+  return n;
+}
+
+TEST(SeriesStream, AWatchedFolderKeepsTheMemoryOfAFewStepsHoweverManyJoin) {
+  const fs::path shortDir = test::scratchDir("watched-short"),
+                 longDir = test::scratchDir("watched-long");
+  const fs::path shortRun = writeWatched(shortDir, 6), longRun = writeWatched(longDir, 60);
+  const Measured few = runMeasured("--config '" + shortRun.string() + "' --frames 240");
+  const Measured many = runMeasured("--config '" + longRun.string() + "' --frames 240");
+  ASSERT_EQ(few.result.exitCode, 0) << few.result.output;
+  ASSERT_EQ(many.result.exitCode, 0) << many.result.output;
+  // Every step the simulation wrote joined the field (the first one started it).
+  EXPECT_EQ(joinedSteps(few.result.output), 5) << few.result.output;
+  EXPECT_EQ(joinedSteps(many.result.output), 59) << many.result.output;
+  EXPECT_NE(many.result.output.find("at most 3 steps in memory"), std::string::npos)
+      << many.result.output;
+  // Held, the 60 steps would take 162 MiB more than six; streamed, three at most.
   const long extraKiB = many.peakKiB - few.peakKiB;
   EXPECT_LT(extraKiB, 40 * 1024) << "peak " << many.peakKiB << " KiB against " << few.peakKiB;
 }

@@ -101,6 +101,39 @@ TEST(SeriesReader, ReadsTheWantedStepsAndHoldsNoMoreThanItsCapacity) {
   EXPECT_EQ(reader->stats().stepsRead, 11u + 4u);  // every step once, then 2..5 again
 }
 
+// A watched folder's series grows: a new step is held while wanted, no more
+// than the capacity stay, and a step let go is read again from its file.
+TEST(SeriesReader, AppendedStepsAreHeldWhileWantedAndReadAgainFromTheirFiles) {
+  const auto dir = test::scratch();
+  SeriesIndex index = indexSeries(writeSeries(dir, 1, 1), {});
+  auto reader = readerFor(index, 3, 1);
+  FieldTimeline timeline({0.0}, reader);
+  for (int n = 1; n < 8; ++n) {
+    writeVti(dir / stepName(n), stepField(n));
+    auto step = std::make_shared<const VectorField>(stepField(n));
+    timeline.append(0.1 * n, step, dir / stepName(n));
+    EXPECT_EQ(timeline.frame(std::size_t(n)), step);  // the very grid, not read again
+    EXPECT_LE(reader->resident().size(), 3u) << "after step " << n;
+    EXPECT_EQ(reader->identity(std::size_t(n)), FileIdentity::of(dir / stepName(n)));
+  }
+  EXPECT_EQ(timeline.size(), 8u);
+  EXPECT_EQ(reader->stats().stepsRead, 0u);
+  // Step 2 was let go: wanted again, it is read from its file.
+  timeline.readAhead({2, 3, 0.0f}, false, false);
+  expectStep(*timeline.wait(2), 2);
+  EXPECT_GE(reader->stats().stepsRead, 1u);
+  // A step on another grid is refused, and the series stays as it was.
+  writeVti(dir / "other.vti", stepField(8, {5, 3, 2}));
+  test::expectError(
+      [&] {
+        timeline.append(0.8, std::make_shared<const VectorField>(stepField(8, {5, 3, 2})),
+                        dir / "other.vti");
+      },
+      {"other.vti", "5x3x2", "4x3x2"});
+  EXPECT_EQ(timeline.size(), 8u);
+  EXPECT_EQ(reader->size(), 8u);
+}
+
 TEST(SeriesReader, ReadsBackwardsAndAroundALoop) {
   const auto dir = test::scratch();
   SeriesIndex index = indexSeries(writeSeries(dir, 6, 6), {});
