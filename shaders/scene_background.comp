@@ -17,6 +17,7 @@ layout(r32f, binding = 1) writeonly uniform image2D uDepth;
 layout(location = 0) uniform vec4 uGroundBounds;  // xy: least x, y; zw: greatest
 layout(location = 1) uniform float uGroundHeight;
 layout(location = 2) uniform bool uFlatGround;     // false: no ground here (a height map's is raster)
+layout(location = 3) uniform bool uItems;          // false: no raster items were drawn (depth 1)
 
 // The point where the eye's ray through window position `pixel` meets the
 // ground plane, and its window depth; false where it does not (looking away,
@@ -39,7 +40,7 @@ bool groundAt(vec2 pixel, out vec3 point, out float depth) {
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (p.x >= int(view.viewport.z) || p.y >= int(view.viewport.w)) return;
-  float items = texelFetch(uItemsDepth, p, 0).r;
+  float items = uItems ? texelFetch(uItemsDepth, p, 0).r : 1.0;
   vec2 centre = vec2(p) + 0.5;
   vec3 point;
   float ground;

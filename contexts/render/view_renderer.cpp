@@ -47,11 +47,6 @@ void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, 
   scene_.bindColorGrid();     // texture units 5 and 6, for colouring by vorticity or an array
   particles.shadow().bind();  // uniform binding 4, texture unit 7: the dust's shadow
 
-  glBindFramebuffer(GL_FRAMEBUFFER, targets_.sceneFramebuffer());
-  glViewport(0, 0, size.x, size.y);
-  glDepthMask(GL_TRUE);
-  const float depth = 1.0f;
-  glClearNamedFramebufferfv(targets_.sceneFramebuffer(), GL_DEPTH, 0, &depth);
   if (field && field->field && particles.state().render.fieldBox)
     scene_.setFieldBox(field->field->bounds(), field->placement);
   else
@@ -59,11 +54,23 @@ void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, 
   scene_.setHelicopter(particles.state().helicopter, HelicopterModel{}.rotorRadius);
   scene_.setObstacles(particles.state().obstacles);
   scene_.setPrimitives(particles.state().primitives);
-  scene_.drawOpaque();
-  background_.draw(targets_, scene_.flatGround());
-  // Translucent items blend over the background and are hidden behind it.
-  glBindTextureUnit(kSceneDepthUnit, targets_.sceneDepth());
-  scene_.drawTranslucent();
+  // Raster items (a height map's terrain, props, lines, the wand) first, into
+  // the items' depth buffer; with none, the background alone draws the scene.
+  const bool raster = scene_.rasterItems();
+  glViewport(0, 0, size.x, size.y);
+  if (raster) {
+    glBindFramebuffer(GL_FRAMEBUFFER, targets_.sceneFramebuffer());
+    glDepthMask(GL_TRUE);
+    const float depth = 1.0f;
+    glClearNamedFramebufferfv(targets_.sceneFramebuffer(), GL_DEPTH, 0, &depth);
+    scene_.drawOpaque();
+  }
+  background_.draw(targets_, scene_.flatGround(), raster);
+  if (raster) {
+    // Translucent items blend over the background and are hidden behind it.
+    glBindTextureUnit(kSceneDepthUnit, targets_.sceneDepth());
+    scene_.drawTranslucent();
+  }
   particles.drawTrails(&view, targets_);
 }
 

@@ -8,13 +8,14 @@ namespace sandstorm {
 
 SceneBackground::SceneBackground() : program_(std::vector<std::string>{"scene_background.comp"}) {}
 
-void SceneBackground::draw(const ViewTargets& targets,
-                           const std::optional<FlatGround>& ground) const {
+void SceneBackground::draw(const ViewTargets& targets, const std::optional<FlatGround>& ground,
+                           bool items) const {
   program_.use();
   const FlatGround g = ground.value_or(FlatGround{});
   glProgramUniform4f(program_.id(), 0, g.min.x, g.min.y, g.max.x, g.max.y);
   glProgramUniform1f(program_.id(), 1, g.height);
   glProgramUniform1i(program_.id(), 2, ground ? GL_TRUE : GL_FALSE);
+  glProgramUniform1i(program_.id(), 3, items ? GL_TRUE : GL_FALSE);
   glBindTextureUnit(3, targets.itemsDepth());
   glBindImageTexture(0, targets.sceneColor(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
   glBindImageTexture(1, targets.sceneDepth(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);

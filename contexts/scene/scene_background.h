@@ -32,8 +32,9 @@ class SceneBackground {
   // Fills the pixels of `targets`' scene colour that no raster item covers
   // nearer than the ground (or at all, for the sky), and writes its scene
   // depth. `ground`: the scene's ground where flat (none: a height map's,
-  // drawn by raster, or no ground).
-  void draw(const ViewTargets& targets, const std::optional<FlatGround>& ground) const;
+  // drawn by raster, or no ground). `items`: whether raster items were drawn
+  // into the targets' items depth (else it is not read: nothing lies in front).
+  void draw(const ViewTargets& targets, const std::optional<FlatGround>& ground, bool items) const;
 
  private:
   gl::Program program_;

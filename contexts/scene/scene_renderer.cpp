@@ -1,5 +1,7 @@
 #include "contexts/scene/scene_renderer.h"
 
+#include <algorithm>
+
 #include <epoxy/gl.h>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -184,6 +186,16 @@ void SceneRenderer::updateFlow(const ParticleState& state, std::shared_ptr<const
   streamlines_.update(state, field, blend);
   slice_.update(state, field, blend);
   streaklines_.update(state, dt, reset);
+}
+
+bool SceneRenderer::rasterItems() const {
+  const bool terrain = !flatGround_ && terrainIndexCount_ > 0;
+  const bool obstacles = std::any_of(obstacles_.begin(), obstacles_.end(),
+                                     [](const Obstacle& o) { return o.enabled; });
+  const bool primitives = std::any_of(primitives_.begin(), primitives_.end(),
+                                      [](const FieldPrimitive& p) { return p.active(); });
+  return terrain || helicopter_.enabled || obstacles || primitives || box_ || probe_ ||
+         wand_.visible() || streamlines_.visible() || streaklines_.visible() || slice_.visible();
 }
 
 void SceneRenderer::drawOpaque() const {

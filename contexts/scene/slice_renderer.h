@@ -26,6 +26,8 @@ class SliceRenderer {
               float blend);
   // Into the bound framebuffer, with the view and render blocks bound.
   void draw() const;
+  // Whether draw() draws anything (SceneRenderer::rasterItems).
+  bool visible() const { return polygon_.size() >= 3 && field_.has(); }
 
  private:
   SceneField& field_;

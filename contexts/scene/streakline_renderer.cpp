@@ -44,7 +44,7 @@ void StreaklineRenderer::update(const ParticleState& state, float dt, bool reset
 }
 
 void StreaklineRenderer::draw() const {
-  if (!enabled_ || length_ < 2) return;
+  if (!visible()) return;
   draw_.use();
   glProgramUniform1i(draw_.id(), 0, length_);
   glProgramUniform1i(draw_.id(), 1, head_);

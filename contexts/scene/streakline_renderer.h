@@ -21,6 +21,8 @@ class StreaklineRenderer {
   // Once a frame, after `field` has this frame's field and step (dt > 0).
   void update(const ParticleState& state, float dt, bool reset);
   void draw() const;
+  // Whether draw() draws anything (SceneRenderer::rasterItems).
+  bool visible() const { return enabled_ && length_ >= 2; }
   // Emitter e's points, newest first, the valid ones (tests).
   std::vector<StreakPoint> readBack(int emitter) const;
 

@@ -80,7 +80,7 @@ void StreamlineRenderer::trace(const ParticleState& state) {
 }
 
 void StreamlineRenderer::draw() const {
-  if (!enabled_ || lineCount_ == 0 || steps_ == 0) return;
+  if (!visible()) return;
   const gl::Program& program = width_ > 0.0f ? ribbons_ : lines_;
   program.use();
   glProgramUniform1i(program.id(), 0, steps_);

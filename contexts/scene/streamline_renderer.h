@@ -29,6 +29,8 @@ class StreamlineRenderer {
   void update(const ParticleState& state, std::shared_ptr<const FieldUpdate> field, float blend);
   // Into the bound framebuffer, with the view and render blocks bound.
   void draw() const;
+  // Whether draw() draws anything (SceneRenderer::rasterItems).
+  bool visible() const { return enabled_ && lineCount_ > 0 && steps_ > 0; }
   // The lines last traced, read back (tests); empty while streamlines are off.
   std::vector<Streamline> readBack() const;
 

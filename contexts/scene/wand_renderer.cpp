@@ -43,7 +43,7 @@ void WandRenderer::box(const glm::mat4& roomModel, const glm::vec3& color) const
 }
 
 void WandRenderer::draw() const {
-  if (!ray_.visible) return;
+  if (!visible()) return;
   mesh_.use();
   box(beam(ray_.origin, ray_.end, kBeamWidth), {1.0f, 0.85f, 0.2f});
   const glm::mat4 worldToRoom = navigation_.worldToRoom();

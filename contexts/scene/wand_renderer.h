@@ -27,6 +27,8 @@ class WandRenderer {
   // `handles`: what the wand can grab (core/tracking/wand_handles.h), world.
   void set(const WandRay& ray, const Navigation& navigation, std::vector<glm::vec3> handles);
   void draw() const;
+  // Whether draw() draws anything (SceneRenderer::rasterItems).
+  bool visible() const { return ray_.visible; }
 
  private:
   void box(const glm::mat4& model, const glm::vec3& color) const;
