@@ -18,6 +18,12 @@ layout(location = 0) uniform vec4 uGroundBounds;  // xy: least x, y; zw: greates
 layout(location = 1) uniform float uGroundHeight;
 layout(location = 2) uniform bool uFlatGround;     // false: no ground here (a height map's is raster)
 layout(location = 3) uniform bool uItems;          // false: no raster items were drawn (depth 1)
+// Lines (the field's box): window x, y (pixels) and depth of each end.
+const int kMaxLines = 12;
+layout(location = 4) uniform int uLineCount;
+layout(location = 5) uniform vec3 uLineColor;
+layout(location = 6) uniform vec3 uLineA[kMaxLines];
+layout(location = 18) uniform vec3 uLineB[kMaxLines];
 
 // The point where the eye's ray through window position `pixel` meets the
 // ground plane, and its window depth; false where it does not (looking away,
@@ -37,11 +43,38 @@ bool groundAt(vec2 pixel, out vec3 point, out float depth) {
   return depth >= 0.0 && depth <= 1.0;
 }
 
+// The window depth of the nearest line covering the pixel centred at `c`, as
+// GL rasterises a one-pixel line (the pixel of each column a mostly
+// horizontal line crosses, of each row for a mostly vertical one); 2 where
+// no line covers it.
+float lineDepth(vec2 c) {
+  float nearest = 2.0;
+  for (int i = 0; i < uLineCount; ++i) {
+    vec3 a = uLineA[i], b = uLineB[i];
+    vec2 d = b.xy - a.xy;
+    bool xMajor = abs(d.x) >= abs(d.y);
+    float major = xMajor ? d.x : d.y;
+    if (abs(major) < 1e-6) continue;
+    float t = ((xMajor ? c.x : c.y) - (xMajor ? a.x : a.y)) / major;
+    if (t < 0.0 || t >= 1.0) continue;
+    vec2 on = a.xy + t * d;
+    float off = xMajor ? c.y - on.y : c.x - on.x;
+    if (off <= -0.5 || off > 0.5) continue;
+    nearest = min(nearest, mix(a.z, b.z, t));
+  }
+  return nearest;
+}
+
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (p.x >= int(view.viewport.z) || p.y >= int(view.viewport.w)) return;
   float items = uItems ? texelFetch(uItemsDepth, p, 0).r : 1.0;
   vec2 centre = vec2(p) + 0.5;
+  // A line in front of every raster item is drawn as one of them would be.
+  float line = uLineCount > 0 ? lineDepth(centre) : 2.0;
+  bool lineInFront = line < items;
+  items = min(items, line);
+  if (lineInFront) imageStore(uColor, p, vec4(uLineColor, 1.0));
   vec3 point;
   float ground;
   if (uFlatGround && groundAt(centre, point, ground)) {

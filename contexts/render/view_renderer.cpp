@@ -4,6 +4,7 @@
 
 #include "contexts/particles/particle_system.h"
 #include "contexts/render/frame_blocks.h"
+#include "core/cave/window_segments.h"
 
 namespace sandstorm {
 namespace {
@@ -65,7 +66,10 @@ void ViewRenderer::drawScene(const ParticleSystem& particles, const View& view, 
     glClearNamedFramebufferfv(targets_.sceneFramebuffer(), GL_DEPTH, 0, &depth);
     scene_.drawOpaque();
   }
-  background_.draw(targets_, scene_.flatGround(), raster);
+  // The field's box: lines drawn by the background's compute pass.
+  const std::vector<WindowSegment> box =
+      windowSegments(view.projection * view.view, glm::vec2(size), scene_.fieldBoxEdges());
+  background_.draw(targets_, scene_.flatGround(), raster, box, SceneRenderer::kFieldBoxColor);
   if (raster) {
     // Translucent items blend over the background and are hidden behind it.
     glBindTextureUnit(kSceneDepthUnit, targets_.sceneDepth());

@@ -10,10 +10,12 @@
 #pragma once
 
 #include <optional>
+#include <span>
 
 #include <glm/glm.hpp>
 
 #include "contexts/gl/program.h"
+#include "core/cave/window_segments.h"
 
 namespace sandstorm {
 
@@ -34,7 +36,14 @@ class SceneBackground {
   // depth. `ground`: the scene's ground where flat (none: a height map's,
   // drawn by raster, or no ground). `items`: whether raster items were drawn
   // into the targets' items depth (else it is not read: nothing lies in front).
-  void draw(const ViewTargets& targets, const std::optional<FlatGround>& ground, bool items) const;
+  // `lines` (at most kMaxLines, the field box's edges in window space): opaque
+  // one-pixel lines of `lineColor`, drawn as GL rasterises lines (a pixel a
+  // column for a mostly horizontal line, a row for a mostly vertical one),
+  // depth-tested against the items and the ground.
+  void draw(const ViewTargets& targets, const std::optional<FlatGround>& ground, bool items,
+            std::span<const WindowSegment> lines = {}, glm::vec3 lineColor = glm::vec3(0.0f)) const;
+
+  static constexpr int kMaxLines = 12;
 
  private:
   gl::Program program_;

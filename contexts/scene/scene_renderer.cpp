@@ -8,36 +8,15 @@
 #include <glm/gtc/type_ptr.hpp>
 #include <vector>
 
+#include "core/cave/window_segments.h"
 #include "core/obstacles/helicopter_shape.h"
 
 namespace sandstorm {
 
 SceneRenderer::SceneRenderer()
     : terrain_(std::vector<std::string>{"terrain.vert", "terrain.frag"}),
-      lines_(std::vector<std::string>{"lines.vert", "lines.frag"}),
       mesh_(std::vector<std::string>{"mesh.vert", "mesh.frag"}) {
   setTerrain(std::make_shared<HeightMap>(HeightMap::flat(0.0f)));
-
-  // The unit cube's 12 edges; the model matrix stretches it onto the field's box.
-  std::vector<glm::vec3> edges;
-  for (int axis = 0; axis < 3; ++axis)
-    for (int a = 0; a < 2; ++a)
-      for (int b = 0; b < 2; ++b) {
-        glm::vec3 p(0.0f);
-        p[(axis + 1) % 3] = float(a);
-        p[(axis + 2) % 3] = float(b);
-        edges.push_back(p);
-        p[axis] = 1.0f;
-        edges.push_back(p);
-      }
-  boxVertices_ = gl::createBuffer();
-  glNamedBufferStorage(boxVertices_.id(), GLsizeiptr(edges.size() * sizeof(glm::vec3)),
-                       edges.data(), 0);
-  boxVao_ = gl::createVertexArray();
-  glEnableVertexArrayAttrib(boxVao_.id(), 0);
-  glVertexArrayAttribFormat(boxVao_.id(), 0, 3, GL_FLOAT, GL_FALSE, 0);
-  glVertexArrayAttribBinding(boxVao_.id(), 0, 0);
-  glVertexArrayVertexBuffer(boxVao_.id(), 0, boxVertices_.id(), 0, sizeof(glm::vec3));
 }
 
 void SceneRenderer::setHelicopter(const HelicopterSettings& helicopter, float rotorRadius) {
@@ -177,6 +156,14 @@ void SceneRenderer::setFieldBox(std::optional<Box> bounds, const FieldPlacement&
   placement_ = placement;
 }
 
+std::vector<std::array<glm::vec3, 2>> SceneRenderer::fieldBoxEdges() const {
+  if (!box_) return {};
+  const glm::mat4 model = placement_.matrix() * glm::translate(glm::mat4(1.0f), box_->min) *
+                          glm::scale(glm::mat4(1.0f), box_->extent());
+  const auto edges = boxEdges(model);
+  return {edges.begin(), edges.end()};
+}
+
 void SceneRenderer::updateFlow(const ParticleState& state, std::shared_ptr<const FieldUpdate> field,
                                float blend, float dt, bool reset) {
   if ((state.streamlines.enabled || state.slice.enabled || state.render.streaklines ||
@@ -194,8 +181,8 @@ bool SceneRenderer::rasterItems() const {
                                      [](const Obstacle& o) { return o.enabled; });
   const bool primitives = std::any_of(primitives_.begin(), primitives_.end(),
                                       [](const FieldPrimitive& p) { return p.active(); });
-  return terrain || helicopter_.enabled || obstacles || primitives || box_ || probe_ ||
-         wand_.visible() || streamlines_.visible() || streaklines_.visible() || slice_.visible();
+  return terrain || helicopter_.enabled || obstacles || primitives || probe_ || wand_.visible() ||
+         streamlines_.visible() || streaklines_.visible() || slice_.visible();
 }
 
 void SceneRenderer::drawOpaque() const {
@@ -223,17 +210,6 @@ void SceneRenderer::drawOpaque() const {
   }
 
   drawPrimitives();
-
-  if (box_) {
-    glm::mat4 model = placement_.matrix();
-    model = model * glm::translate(glm::mat4(1.0f), box_->min) *
-            glm::scale(glm::mat4(1.0f), box_->extent());
-    lines_.use();
-    glProgramUniformMatrix4fv(lines_.id(), 0, 1, GL_FALSE, glm::value_ptr(model));
-    glProgramUniform4f(lines_.id(), 1, 0.25f, 0.25f, 0.3f, 1.0f);
-    glBindVertexArray(boxVao_.id());
-    glDrawArrays(GL_LINES, 0, 24);
-  }
 
   wand_.draw();
   if (probe_) {

@@ -5,6 +5,7 @@
 // already bound (bindings 1 and 2).
 #pragma once
 
+#include <array>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -32,8 +33,12 @@ class SceneRenderer {
   SceneRenderer();
 
   void setTerrain(std::shared_ptr<const HeightMap> terrain);
-  // The box drawn around the field; nothing is drawn without one.
+  // The box drawn around the field; nothing is drawn without one. Its edges
+  // are drawn by SceneBackground's compute pass (fieldBoxEdges), not raster.
   void setFieldBox(std::optional<Box> bounds, const FieldPlacement& placement);
+  // The field box's twelve edges in world space (none without a box), and their colour.
+  std::vector<std::array<glm::vec3, 2>> fieldBoxEdges() const;
+  static constexpr glm::vec3 kFieldBoxColor{0.25f, 0.25f, 0.3f};
   // A simple helicopter proxy (fuselage, tail boom, rotor) at the hub the settings give.
   void setHelicopter(const HelicopterSettings& helicopter, float rotorRadius);
   // The obstacles (the enabled ones are drawn, solid green as in the Mali sample).
@@ -77,9 +82,9 @@ class SceneRenderer {
   void drawProp(const Mesh& mesh, const glm::vec3& center, const glm::vec3& size,
                 const glm::vec4& color) const;
 
-  gl::Program terrain_, lines_, mesh_;
-  gl::VertexArray terrainVao_, boxVao_;
-  gl::Buffer terrainVertices_, terrainIndices_, boxVertices_;
+  gl::Program terrain_, mesh_;
+  gl::VertexArray terrainVao_;
+  gl::Buffer terrainVertices_, terrainIndices_;
   UnitCube cube_;
   UnitMesh sphere_ = UnitMesh::sphere(), cylinder_ = UnitMesh::cylinder();
   std::vector<Obstacle> obstacles_;

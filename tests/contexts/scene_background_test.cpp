@@ -7,10 +7,15 @@
 // must hide their lower halves: the particles by the scene depth the pass
 // writes, the obstacle by the depth compare) and, with billboards, trails
 // (translucent, drawn after the pass, hidden behind the ground by hand).
+// The field's box is drawn by the pass too: its lines lie on the box's edges
+// as glm::project puts them, and the ground hides the part below it.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+
+#include <glm/gtc/matrix_transform.hpp>
 
 #include <epoxy/gl.h>
 
@@ -19,6 +24,7 @@
 #include "contexts/render/view_renderer.h"
 #include "contexts/render/wall_renderer.h"
 #include "core/cave/view.h"
+#include "core/cave/window_segments.h"
 #include "core/sim/main_context.h"
 #include "tests/contexts/gl_test.h"
 
@@ -169,6 +175,95 @@ TEST_F(SceneBackgroundTest, TheComputeCompositeMatchesTheRasterOne) {
   // The left half keeps the clear colour; the right half holds the view.
   EXPECT_EQ(a.rgba[0], 128);
   EXPECT_GT(changed, kSize.x * kSize.y);
+}
+
+// The field's box: one-pixel lines of the box colour on the edges'
+// projections; the part below the ground (z < 0) hidden by it.
+TEST_F(SceneBackgroundTest, TheFieldsBoxLiesOnItsProjectedEdgesAndTheGroundHidesWhatIsBelow) {
+  const Box bounds{{-1.5f, -1.0f, -0.8f}, {1.5f, 1.0f, 1.6f}};
+  ParticleState s;
+  s.emitters[0].rate = 0.0f;  // no particles: the scene alone
+  s.render.fieldBox = true;
+  MainContext::Options options;
+  options.fixedDt = 0.25f;
+  auto field = std::make_shared<VectorField>(bounds, glm::ivec3(2));
+  MainContext main(s, FieldUpdate{.field = field}, options);
+  WallSpec wall;
+  wall.name = "box";
+  const glm::vec3 eye(2.5f, -6.0f, 2.4f), target(0.0f, 0.0f, 0.3f);
+  wall.camera = CameraSpec{eye, target, 50.0f};
+  wall.offscreenSize = kSize;
+  WallRenderer renderer(WallRendererSetup{
+      .wall = wall, .initial = s, .capacity = 4096, .nearPlane = 0.1f, .farPlane = 200.0f});
+  renderer.frame(main.next(), {0, 0});
+  const Image image = renderer.capture();
+
+  const View v = perspectiveView(eye, target, {0, 0, 1}, glm::radians(50.0f),
+                                 float(kSize.x) / float(kSize.y), 0.1f, 200.0f);
+  const glm::vec4 viewport(0, 0, kSize.x, kSize.y);
+  const auto isLine = [&](int x, int y) {
+    if (x < 0 || y < 0 || x >= kSize.x || y >= kSize.y) return false;
+    const glm::u8vec4 c = image.at(x, y);
+    return std::abs(int(c.x) - 64) <= 2 && std::abs(int(c.y) - 64) <= 2 &&
+           std::abs(int(c.z) - 77) <= 2;
+  };
+  // Whether a line pixel lies within one pixel of window position w (y up).
+  const auto lineNear = [&](glm::vec3 w) {
+    const int x = int(std::floor(w.x)), y = kSize.y - 1 - int(std::floor(w.y));
+    for (int dy = -1; dy <= 1; ++dy)
+      for (int dx = -1; dx <= 1; ++dx)
+        if (isLine(x + dx, y + dy)) return true;
+    return false;
+  };
+  const glm::mat4 model = glm::scale(glm::translate(glm::mat4(1.0f), bounds.min), bounds.extent());
+  // Where the edges above the ground project (densely), to leave out the
+  // points below it that project next to them.
+  std::vector<glm::vec2> visible;
+  for (const auto& [a, b] : boxEdges(model))
+    for (int i = 0; i <= 400; ++i)
+      if (const glm::vec3 p = glm::mix(a, b, float(i) / 400.0f); p.z >= 0.0f)
+        visible.emplace_back(glm::project(p, v.view, v.projection, viewport));
+  const auto nextToVisible = [&](glm::vec2 w) {
+    return std::any_of(visible.begin(), visible.end(),
+                       [&](glm::vec2 q) { return glm::length(q - w) < 3.0f; });
+  };
+  int above = 0, shown = 0, below = 0, hidden = 0;
+  for (const auto& [a, b] : boxEdges(model))
+    for (int i = 1; i < 40; ++i) {
+      const glm::vec3 p = glm::mix(a, b, float(i) / 40.0f);
+      const glm::vec3 w = glm::project(p, v.view, v.projection, viewport);
+      if (w.x < 2 || w.y < 2 || w.x > kSize.x - 2 || w.y > kSize.y - 2) continue;
+      if (p.z > 0.05f) {
+        ++above;
+        if (lineNear(w)) ++shown;
+      } else if (p.z < -0.05f && !nextToVisible(w)) {
+        ++below;
+        if (!lineNear(w)) ++hidden;
+      }
+    }
+  std::printf("%d of %d points above the ground on a line, %d of %d below hidden\n", shown, above,
+              hidden, below);
+  EXPECT_GT(above, 150);
+  EXPECT_EQ(shown, above);
+  EXPECT_GT(below, 20);
+  EXPECT_EQ(hidden, below);
+  // No line colour more than two pixels from every edge's projection.
+  int stray = 0;
+  for (int y = 0; y < kSize.y; ++y)
+    for (int x = 0; x < kSize.x; ++x) {
+      if (!isLine(x, y)) continue;
+      const glm::vec2 c(float(x) + 0.5f, float(kSize.y - y) - 0.5f);
+      bool near = false;
+      for (const auto& [a, b] : boxEdges(model)) {
+        const glm::vec2 pa(glm::project(a, v.view, v.projection, viewport)),
+            pb(glm::project(b, v.view, v.projection, viewport));
+        const glm::vec2 d = pb - pa;
+        const float t = glm::clamp(glm::dot(c - pa, d) / glm::dot(d, d), 0.0f, 1.0f);
+        near = near || glm::length(c - (pa + t * d)) <= 2.0f;
+      }
+      if (!near) ++stray;
+    }
+  EXPECT_EQ(stray, 0);
 }
 
 }  // namespace
