@@ -38,6 +38,7 @@ TEST(ClusterConfig, DefaultsAndWallKeys) {
   const AppConfig c = parseConfig(kWalls, "test.toml");
   EXPECT_FLOAT_EQ(c.cluster.timeoutSeconds, 10.0f);
   EXPECT_FALSE(c.cluster.readField);
+  EXPECT_TRUE(c.cluster.readSteps);  // every rank reads a series' steps itself
   EXPECT_EQ(c.walls[0].rank, 0);
   EXPECT_EQ(c.walls[1].rank, 2);
   EXPECT_EQ(c.walls[1].host, "node-b");
@@ -50,6 +51,7 @@ TEST(ClusterConfig, PlacementsApplyToWallsFromAnyFile) {
 timeout_s = 2.5
 startup_timeout_s = 30
 field = "read"
+steps = "broadcast"
 chunk_kib = 64
 field_cache = 8
 walls = "round-robin"
@@ -60,6 +62,7 @@ hosts = { front = "node-a" }
   EXPECT_FLOAT_EQ(c.cluster.timeoutSeconds, 2.5f);
   EXPECT_FLOAT_EQ(c.cluster.startupTimeoutSeconds, 30.0f);
   EXPECT_TRUE(c.cluster.readField);
+  EXPECT_FALSE(c.cluster.readSteps);
   EXPECT_EQ(c.cluster.chunkKiB, 64);
   EXPECT_EQ(c.cluster.fieldCache, 8);
   EXPECT_TRUE(c.cluster.roundRobin);
@@ -76,6 +79,7 @@ TEST(ClusterConfig, BadValuesNameTheirLineAndKey) {
        {Case{"[cluster]\ntimeout_s = 0\n",
              {"test.toml:2", "cluster.timeout_s: expected 0.1..3600"}},
         Case{"[cluster]\nfield = \"mail\"\n", {"test.toml:2", "broadcast, read"}},
+        Case{"[cluster]\nsteps = \"copy\"\n", {"test.toml:2", "cluster.steps"}},
         Case{"[cluster]\nranks = { front = -1 }\n", {"test.toml:2", "cluster.ranks.front"}},
         Case{"[cluster]\nranks = { back = 1 }\n",
              {"test.toml:2", "no wall named 'back'; the walls are front, left"}},
