@@ -107,6 +107,7 @@ FieldSource fileSceneField(AppConfig& config, const std::filesystem::path& file,
   spec.name = array;
   spec.memoryBudget = config.field.memoryBudget;
   spec.halfPrecision = config.field.halfPrecision;
+  spec.autoPrecision = config.field.autoPrecision;
   spec.storage = config.field.storage;
   spec.readAhead = config.field.readAhead;
   config.field = spec;

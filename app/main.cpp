@@ -6,6 +6,7 @@
 #include "app/default_config.h"
 #include "app/file_scene.h"
 #include "app/load_with_window.h"
+#include "contexts/platform/gpu_memory.h"
 #include "core/io/field_loader.h"
 #ifdef SANDSTORM_MPI
 #include "app/cluster/cluster_main.h"
@@ -115,6 +116,9 @@ int main(int argc, char** argv) {
   cli.add_option("--debug-hang-at-frame", clusterOptions.hangAtFrame)->group("");
   cli.add_option("--debug-corrupt-at-frame", clusterOptions.corruptAtFrame)->group("");
   cli.add_flag("--debug-blind-to-steps", clusterOptions.blindToSteps)->group("");
+  // Answers the GPU memory question (field.precision = "auto") with this many bytes.
+  std::uint64_t pretendedGpuMemory = 0;
+  cli.add_option("--debug-gpu-memory", pretendedGpuMemory)->group("");
   cli.add_option("--log-level", logLevel, "error, warn, info or debug")
       ->check(CLI::IsMember({"error", "warn", "info", "debug"}));
   try {
@@ -123,6 +127,7 @@ int main(int argc, char** argv) {
     return cli.exit(e);
   }
   if (configOption->count() == 0) configPath = defaultConfig("downdraft.toml").string();
+  if (pretendedGpuMemory > 0) pretendGpuMemory(pretendedGpuMemory);
   if (!logLevel.empty()) {
     log::Level level;
     log::parseLevel(logLevel, level);

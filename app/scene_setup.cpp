@@ -4,10 +4,12 @@
 #include <chrono>
 #include <thread>
 
+#include "contexts/platform/gpu_memory.h"
 #include "core/field/analytic_field_factory.h"
 #include "core/field/height_map_io.h"
 #include "core/io/field_format.h"
 #include "core/io/field_loader.h"
+#include "core/io/precision_choice.h"
 #include "core/io/series_index.h"
 #include "core/io/vdb_reader.h"
 #include "core/sim/main_context.h"
@@ -66,6 +68,17 @@ StreamPlan streamPlan(const std::filesystem::path& path, const VectorField& firs
   return plan;
 }
 
+// field.precision = "auto": the room for a field's grids on the GPU, three
+// quarters of the smallest GPU's memory (the rest: particles, the views'
+// targets, the driver). The GPUs are asked only for a field whose floats
+// would take 64 MiB or more there.
+std::optional<double> gpuRoomForFields(double floatBytes) {
+  if (floatBytes < double(std::uint64_t{64} << 20)) return std::nullopt;
+  const std::optional<std::uint64_t> memory = smallestGpuMemory();
+  if (!memory) return std::nullopt;
+  return 0.75 * double(*memory);
+}
+
 // A source a running simulation writes: its first step, waited for (up to
 // wait_s), as a timeline of one frame, and the scanner to watch for more.
 FieldSource watchedField(const std::filesystem::path& path, const FieldSpec& spec,
@@ -82,18 +95,25 @@ FieldSource watchedField(const std::filesystem::path& path, const FieldSpec& spe
       const FieldStreamScanner::Step& step = *it;
       try {
         FieldSource out;
-        auto field = std::make_shared<const VectorField>(loadField(step.file, options));
+        LoadReport report;
+        VectorField loaded = loadField(step.file, options, &report);
+        // The pair and the step uploaded ahead: three grids on the GPU.
+        LoadOptions stepOptions = options;
+        if (chooseHalf(loaded, 3, options, report)) stepOptions.halfPrecision = true;
+        for (const std::string& note : report.notes)
+          log::info(path.string(), ": ", note);
+        auto field = std::make_shared<const VectorField>(std::move(loaded));
         // Streamed, as a series is: the steps the simulation writes join it
         // and are held only while playback wants them (memory stays flat).
         const StreamPlan plan = streamPlan(path, *field, spec, options);
         auto reader =
             std::make_shared<SeriesReader>(std::vector<SeriesReader::Source>{{step.file, 0}},
-                                           options, field, plan.capacity, plan.readers);
+                                           stepOptions, field, plan.capacity, plan.readers);
         out.timeline = FieldTimeline({step.time}, reader);
         out.series = reader;
         out.update = FieldUpdate{.field = field, .placement = spec.placement};
         out.stream = scanner;
-        out.streamOptions = options;
+        out.streamOptions = stepOptions;
         // The steps found with it (the simulation ran before the start) join next.
         scanner->putBack({std::next(it), found.end()});
         out.description =
@@ -208,6 +228,7 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
     options.resolution = spec.resolution;
     options.memoryBudget = std::size_t(fieldMemoryBudget(spec));
     options.halfPrecision = spec.halfPrecision;
+    if (spec.autoPrecision) options.gpuRoom = gpuRoomForFields;
     std::error_code ec;
     // A folder is watched for steps, unless it is an OpenFOAM case.
     if (spec.watch || (std::filesystem::is_directory(path, ec) &&

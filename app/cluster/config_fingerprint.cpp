@@ -30,6 +30,7 @@ std::string configFingerprint(const AppConfig& c, const AppOptions& o) {
   l.add("run", c.run.seed, c.run.capacity, c.run.capacityLimit, c.run.fixedDt, c.run.frames,
         c.run.backend, c.run.nearPlane, c.run.farPlane);
   l.add("field.source", c.field.source, c.field.name);
+  l.add("field.precision", c.field.halfPrecision, c.field.autoPrecision);
   l.add("field.grid", c.field.dims.x, c.field.dims.y, c.field.dims.z, c.field.resolution.x,
         c.field.resolution.y, c.field.resolution.z);
   l.vec("field.bounds_min", c.field.bounds.min);

@@ -146,6 +146,9 @@ struct FieldSpec {
   bool uploadAhead = true;
   // precision = "half": 16-bit floats on the GPU (VectorField::roundToHalf).
   bool halfPrecision = false;
+  // precision = "auto" (the default): floats, unless the field's grids would
+  // not fit on the GPU as floats; then halves (core/io/precision_choice.h).
+  bool autoPrecision = true;
   // storage: how an OpenVDB grid is kept: "auto" sparse when its active
   // voxels fill under half their box or a dense grid would not fit, "dense"
   // densified over the box, "sparse" as NanoVDB (core/field/sparse_field.h).

@@ -387,8 +387,13 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   }
   f.readAhead = r.integer(t, "read_ahead", "field", f.readAhead, 0, 64);
   f.uploadAhead = r.boolean(t, "upload_ahead", "field", f.uploadAhead);
-  f.halfPrecision =
-      r.choice<bool>(t, "precision", "field", f.halfPrecision, {{"float", false}, {"half", true}});
+  const int precision = r.choice<int>(t, "precision", "field",
+                                      f.halfPrecision   ? 2
+                                      : f.autoPrecision ? 0
+                                                        : 1,
+                                      {{"auto", 0}, {"float", 1}, {"half", 2}});
+  f.halfPrecision = precision == 2;
+  f.autoPrecision = precision == 0;
   f.storage = r.choice<FieldSpec::Storage>(t, "storage", "field", f.storage,
                                            {{"auto", FieldSpec::Storage::Auto},
                                             {"dense", FieldSpec::Storage::Dense},

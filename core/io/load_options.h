@@ -14,6 +14,8 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -54,6 +56,11 @@ struct LoadOptions {
   // field.precision = "half": the vectors rounded to 16-bit floats
   // (VectorField::roundToHalf), for a GPU that keeps them so.
   bool halfPrecision = false;
+  // field.precision = "auto": given the bytes a field's grids would take on a
+  // GPU as floats, the room there is for them (the app asks the GPUs only for
+  // large fields); a grid that would pass it is kept as halves
+  // (core/io/precision_choice.h). Unset, or no answer: floats unless halfPrecision.
+  std::function<std::optional<double>(double floatBytes)> gpuRoom;
   // A .vdb grid kept sparse (loadSparseField): an axis-aligned, not staggered
   // grid at its own resolution, one time step.
   SparseChoice sparse = SparseChoice::Never;

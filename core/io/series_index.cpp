@@ -2,6 +2,7 @@
 
 #include "core/io/field_format.h"
 #include "core/io/field_loader.h"
+#include "core/io/precision_choice.h"
 #include "core/io/pvd_file.h"
 #include "core/util/error.h"
 
@@ -20,12 +21,18 @@ SeriesIndex indexSeries(const std::filesystem::path& path, const LoadOptions& op
       index.sources.push_back({f.file, 0});
     }
     first = LoadReport{};
-    index.first =
-        std::make_shared<const VectorField>(loadField(index.sources.front().file, options, &first));
+    VectorField field = loadField(index.sources.front().file, options, &first);
+    // The pair and the step uploaded ahead: three grids on the GPU.
+    if (chooseHalf(field, index.times.size() > 1 ? 3 : 1, options, first))
+      index.stepOptions.halfPrecision = true;
+    index.first = std::make_shared<const VectorField>(std::move(field));
     first.times = index.times;
     return index;
   }
-  index.first = std::make_shared<const VectorField>(loadField(path, options, &first));
+  VectorField field = loadField(path, options, &first);
+  if (chooseHalf(field, first.times.size() > 1 ? 3 : 1, options, first))
+    index.stepOptions.halfPrecision = true;
+  index.first = std::make_shared<const VectorField>(std::move(field));
   if (first.times.size() <= 1) {
     index.times = {first.times.empty() ? 0.0 : first.times.front()};
     index.sources = {{path, 0}};

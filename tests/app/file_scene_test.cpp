@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "app/file_scene.h"
+#include "core/config/byte_size.h"
 #include "core/field/analytic_field.h"
 #include "core/io/vti_writer.h"
 #include "core/sim/attribute_table.h"
@@ -204,6 +205,36 @@ TEST(FileScene, TheConfigurationsMemoryBudgetHoldsForTheFile) {
       test::runSandstorm("'" + (dir / "wind.vti").string() +
                          "' --frames 1 --set sim.maximum=1000 --screenshot '" + dir.string() + "'");
   EXPECT_EQ(fits.exitCode, 0) << fits.output;
+}
+
+// field.precision = "auto" (the default): a field whose floats would not
+// fit the GPU's room for fields (here a GPU of 100 MB, as the hidden
+// --debug-gpu-memory makes the driver's answer: room 75 MB, against the 85 MB
+// a 192^3 grid takes) opens as halves and says so; on a larger GPU, or with
+// field.precision = "float", it stays floats.
+TEST(FileScene, AFieldTooLargeForTheGpuAsFloatsOpensAsHalves) {
+  const auto dir = test::scratchDir("file-scene-precision");
+  const int n = 192;
+  writeVti(dir / "wind.vti",
+           VectorField(Box{{0, 0, 0}, {1, 1, 1}}, glm::ivec3(n),
+                       std::vector<glm::vec3>(std::size_t(n) * n * n, glm::vec3(0.1f, 0.0f, 0.0f))),
+           "velocity", VtiCompression::None);
+  const std::string file = "'" + (dir / "wind.vti").string() + "' --frames 1 --set sim.maximum=100";
+  const std::string chosen = "field.precision = \"auto\": 16-bit floats chosen";
+  const auto small = test::runSandstorm(file + " --debug-gpu-memory 100000000");
+  EXPECT_EQ(small.exitCode, 0) << small.output;
+  EXPECT_NE(small.output.find(chosen), std::string::npos) << small.output;
+  // The floats' bytes, as the message gives them.
+  EXPECT_NE(small.output.find(formatByteSize(12.0 * n * n * n)), std::string::npos) << small.output;
+  const auto large = test::runSandstorm(file + " --debug-gpu-memory 1000000000");
+  EXPECT_EQ(large.exitCode, 0) << large.output;
+  EXPECT_EQ(large.output.find(chosen), std::string::npos) << large.output;
+  std::ofstream(dir / "float.toml") << "include = \"" << SANDSTORM_SOURCE_DIR
+                                    << "/config/desktop.toml\"\n[field]\nprecision = \"float\"\n";
+  const auto floats = test::runSandstorm(file + " --debug-gpu-memory 100000000 --config '" +
+                                         (dir / "float.toml").string() + "'");
+  EXPECT_EQ(floats.exitCode, 0) << floats.output;
+  EXPECT_EQ(floats.output.find(chosen), std::string::npos) << floats.output;
 }
 
 TEST(FileScene, AFileThatIsNotThereOrNotAFieldIsAClearError) {
