@@ -277,6 +277,8 @@ void MpiCluster::shareField(const FieldSource& field) {
 
 void MpiCluster::shareSeries(const FieldSource& field) {
   std::shared_ptr<FieldSteps> steps = field.timeline ? field.timeline->steps() : nullptr;
+  // Whether the steps are read as halves (field.precision = "auto" asks this rank's GPUs).
+  bool half = field.update.field && field.update.field->halfPrecision();
   std::string blind;  // why this rank cannot read the steps itself
   if (!root() && options_.blindToSteps && rank() == options_.debugRank) {
     steps.reset();
@@ -285,6 +287,7 @@ void MpiCluster::shareSeries(const FieldSource& field) {
     try {
       const FieldSource own = makeField(fieldSpec_, configFolder_);
       steps = own.timeline ? own.timeline->steps() : nullptr;
+      half = own.update.field && own.update.field->halfPrecision();
       if (!steps) blind = "the field source reads as one grid here, not as a series";
     } catch (const Error& e) {
       blind = e.what();
@@ -293,6 +296,7 @@ void MpiCluster::shareSeries(const FieldSource& field) {
   // Rank 0's files as it opened them: every reading rank must see the same.
   ByteWriter w;
   if (root()) {
+    w.boolean(half);
     const std::uint32_t count = std::uint32_t(field.timeline->size());
     w.u32(count);
     for (std::uint32_t i = 0; i < count; ++i) {
@@ -313,6 +317,12 @@ void MpiCluster::shareSeries(const FieldSource& field) {
   if (!root() && blind.empty()) {
     try {
       ByteReader r(files, "rank 0's list of the series' files");
+      const bool theirHalf = r.boolean("precision");
+      if (theirHalf != half)
+        blind = concat("its steps read as ", half ? "16-bit floats" : "floats", " here and as ",
+                       theirHalf ? "16-bit floats" : "floats",
+                       " on rank 0 (field.precision = \"auto\" asks each machine's GPUs; "
+                       "\"float\" or \"half\" makes them agree)");
       const std::uint32_t count = r.u32("count");
       for (std::uint32_t i = 0; i < count && blind.empty(); ++i) {
         FileIdentity theirs;
