@@ -2,6 +2,8 @@
 
 #include <epoxy/gl.h>
 
+#include "contexts/platform/gpu_memory.h"
+
 namespace sandstorm::bench {
 
 std::string glRenderer() {
@@ -13,10 +15,9 @@ std::string glRenderer() {
 }
 
 std::optional<std::size_t> gpuMemoryBytes() {
-  if (!epoxy_has_gl_extension("GL_NVX_gpu_memory_info")) return std::nullopt;
-  GLint kib = 0;
-  glGetIntegerv(GL_GPU_MEMORY_INFO_DEDICATED_VIDMEM_NVX, &kib);
-  return std::size_t(kib) * 1024;
+  const std::optional<std::uint64_t> bytes = currentGpuMemory();
+  if (!bytes) return std::nullopt;
+  return std::size_t(*bytes);
 }
 
 void finishGpu() {

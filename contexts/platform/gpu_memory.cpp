@@ -20,12 +20,7 @@ std::optional<std::uint64_t> ask() {
     for (int device = 0; device < EglContext::deviceCount(); ++device) {
       EglContext context(EglContext::Options{.device = device});
       context.makeCurrent();
-      std::optional<std::uint64_t> bytes;
-      if (epoxy_has_gl_extension("GL_NVX_gpu_memory_info")) {
-        GLint kib = 0;
-        glGetIntegerv(GL_GPU_MEMORY_INFO_DEDICATED_VIDMEM_NVX, &kib);
-        if (kib > 0) bytes = std::uint64_t(kib) * 1024;
-      }
+      const std::optional<std::uint64_t> bytes = currentGpuMemory();
       context.releaseCurrent();
       if (!bytes) return std::nullopt;  // a GPU that does not tell: no answer
       smallest = smallest ? std::min(*smallest, *bytes) : *bytes;
@@ -38,6 +33,14 @@ std::optional<std::uint64_t> ask() {
 }
 
 }  // namespace
+
+std::optional<std::uint64_t> currentGpuMemory() {
+  if (!epoxy_has_gl_extension("GL_NVX_gpu_memory_info")) return std::nullopt;
+  GLint kib = 0;
+  glGetIntegerv(GL_GPU_MEMORY_INFO_DEDICATED_VIDMEM_NVX, &kib);
+  if (kib <= 0) return std::nullopt;
+  return std::uint64_t(kib) * 1024;
+}
 
 std::optional<std::uint64_t> smallestGpuMemory() {
   std::lock_guard lock(mutex);

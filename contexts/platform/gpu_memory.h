@@ -11,6 +11,9 @@
 
 namespace sandstorm {
 
+// The current context's GPU's dedicated memory, in bytes (NVX_gpu_memory_info).
+std::optional<std::uint64_t> currentGpuMemory();
+
 // The smallest dedicated memory among the GPUs, in bytes.
 std::optional<std::uint64_t> smallestGpuMemory();
 
