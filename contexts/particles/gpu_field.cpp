@@ -2,8 +2,6 @@
 
 #include <epoxy/gl.h>
 
-#include <glm/gtc/packing.hpp>
-
 #include <algorithm>
 #include <array>
 #include <cstdlib>
@@ -14,6 +12,7 @@
 #include <vector>
 
 #include "core/util/error.h"
+#include "core/util/half_float.h"
 #include "core/util/parallel_for.h"
 
 namespace sandstorm {
@@ -133,7 +132,7 @@ void GpuField::writeLayers(const VectorField& field, int firstLayer, int layers,
   const std::span<const std::uint8_t> valid =
       field.hasValidity() ? field.validity().subspan(first, count) : field.validity();
   const auto isValid = [&](std::size_t i) { return valid.empty() || valid[i] != 0; };
-  const std::uint16_t one = glm::packHalf1x16(1.0f), zero = glm::packHalf1x16(0.0f);
+  const std::uint16_t one = halfBits(1.0f), zero = halfBits(0.0f);
   const auto write = [&](std::size_t begin, std::size_t end) {
     switch (layout) {
       case Layout::FloatRgb:
@@ -149,9 +148,8 @@ void GpuField::writeLayers(const VectorField& field, int firstLayer, int layers,
         const std::size_t channels = layout == Layout::HalfRgba ? 4 : 3;
         auto* texels = static_cast<std::uint16_t*>(out);
         for (std::size_t i = begin; i < end; ++i) {
-          const glm::u16vec3 h = glm::packHalf(values[i]);
           for (std::size_t c = 0; c < 3; ++c)
-            texels[i * channels + c] = h[int(c)];
+            texels[i * channels + c] = halfBits(values[i][int(c)]);
           if (channels == 4) texels[i * 4 + 3] = isValid(i) ? one : zero;
         }
         break;

@@ -1,11 +1,13 @@
 #include "core/field/vector_field.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
-
-#include <glm/gtc/packing.hpp>
+#include <mutex>
 
 #include "core/util/error.h"
+#include "core/util/half_float.h"
+#include "core/util/parallel_for.h"
 
 namespace sandstorm {
 namespace {
@@ -47,16 +49,42 @@ VectorField::VectorField(const Box& bounds, const glm::ivec3& dims, VectorValues
 }
 
 void VectorField::roundToHalf() {
-  for (std::size_t i = 0; i < values_.size(); ++i)
-    for (int c = 0; c < 3; ++c)
-      if (!(std::abs(values_[i][c]) <= kHalfMax))
-        throw Error(concat("field.precision = \"half\": point ", i, " has the component ",
-                           values_[i][c], ", beyond the ", kHalfMax,
-                           " that 16-bit floats hold; keep field.precision = \"float\" or scale "
-                           "the field's units"));
-  for (glm::vec3& v : values_.span())
-    v = glm::unpackHalf(glm::packHalf(v));
+  // Checked over the cores before anything changes, then rounded over them:
+  // a series rounds a 256^3 step (50 million components) on each reader.
+  const std::span<glm::vec3> values = values_.span();
+  std::atomic<std::size_t> firstBad{values.size()};
+  forChunks(values.size(), [&](std::size_t begin, std::size_t end) {
+    for (std::size_t i = begin; i < end; ++i)
+      if (!(std::abs(values[i].x) <= kHalfMax && std::abs(values[i].y) <= kHalfMax &&
+            std::abs(values[i].z) <= kHalfMax)) {
+        for (std::size_t seen = firstBad; i < seen && !firstBad.compare_exchange_weak(seen, i);)
+          ;
+        return;
+      }
+  });
+  if (const std::size_t i = firstBad; i < values.size()) {
+    int c = 0;
+    while (std::abs(values[i][c]) <= kHalfMax)
+      ++c;
+    throw Error(concat("field.precision = \"half\": point ", i, " has the component ", values[i][c],
+                       ", beyond the ", kHalfMax,
+                       " that 16-bit floats hold; keep field.precision = \"float\" or scale "
+                       "the field's units"));
+  }
+  // The range of the rounded values is found in the same pass.
+  std::mutex mutex;
+  ValueRange range;
+  forChunks(values.size(), [&](std::size_t begin, std::size_t end) {
+    ValueRange part;
+    for (std::size_t i = begin; i < end; ++i) {
+      values[i] = {nearestHalf(values[i].x), nearestHalf(values[i].y), nearestHalf(values[i].z)};
+      if (valid_.empty() || valid_[i] != 0) part.add(values[i]);
+    }
+    std::lock_guard lock(mutex);
+    range.merge(part);
+  });
   half_ = true;
+  range_ = range;
 }
 
 glm::vec3 VectorField::pointPosition(int i, int j, int k) const {
@@ -112,6 +140,7 @@ void VectorField::setValidity(std::vector<std::uint8_t> valid) {
   if (!valid.empty() && valid.size() != values_.size())
     throw Error(concat("VectorField: a validity mask of ", valid.size(), " points for ",
                        values_.size(), " grid points"));
+  range_.reset();
   for (std::uint8_t& v : valid)
     v = v != 0;
   const bool all = std::all_of(valid.begin(), valid.end(), [](std::uint8_t v) { return v != 0; });

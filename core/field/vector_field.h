@@ -16,6 +16,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -25,6 +26,7 @@
 #include <glm/glm.hpp>
 
 #include "core/field/box.h"
+#include "core/field/value_range.h"
 #include "core/field/vector_values.h"
 
 namespace sandstorm {
@@ -57,9 +59,15 @@ class VectorField {
                (static_cast<std::size_t>(j) + static_cast<std::size_t>(dims_.y) * k);
   }
   const glm::vec3& at(int i, int j, int k) const { return values_[index(i, j, k)]; }
-  glm::vec3& at(int i, int j, int k) { return values_[index(i, j, k)]; }
+  glm::vec3& at(int i, int j, int k) {
+    range_.reset();
+    return values_[index(i, j, k)];
+  }
   std::span<const glm::vec3> values() const { return values_.span(); }
-  std::span<glm::vec3> values() { return values_.span(); }
+  std::span<glm::vec3> values() {
+    range_.reset();
+    return values_.span();
+  }
   // Whether the vectors are the reading library's memory, held rather than copied.
   bool adoptedValues() const { return values_.adopted(); }
 
@@ -89,15 +97,23 @@ class VectorField {
   bool cellValid(const glm::vec3& p) const;
 
   // field.precision = "half": every vector component rounded to the nearest
-  // 16-bit float (IEEE binary16, ties away from zero), so that the GPU keeps the grid
-  // as 16-bit floats (half the memory and bandwidth) and reads back exactly
-  // these values, which the CPU twin samples too. The error is at most 2^-11
-  // of a component (2^-25 absolute below 2^-14): within 1e-3 of the field's
-  // largest speed. Throws Error, changing nothing, when a component is beyond
-  // what half holds (65504). Call after the values are final.
+  // 16-bit float (IEEE binary16, ties to even: core/util/half_float.h), so that the GPU keeps the
+  // grid as 16-bit floats (half the memory and bandwidth) and reads back exactly these values,
+  // which the CPU twin samples too. The error is at most 2^-11 of a component (2^-25 absolute below
+  // 2^-14): within 1e-3 of the field's largest speed. Throws Error, changing nothing, when a
+  // component is beyond what half holds (65504). Call after the values are final.
   void roundToHalf();
   bool halfPrecision() const { return half_; }
   static constexpr float kHalfMax = 65504.0f;
+
+  // The speed and velocity range over the valid points, in the grid's own
+  // axes (FieldRange::of starts from it), when remembered by whoever last
+  // passed over every value anyway: a file's reader checking each vector
+  // (after setValidity), roundToHalf. A series' 200 MB step is then not read
+  // once more on the main thread. Changing values or validity forgets it;
+  // rememberRange must be given the range of the values as they are.
+  const std::optional<ValueRange>& rememberedRange() const { return range_; }
+  void rememberRange(const ValueRange& range) { range_ = range; }
 
   // The largest vector length, for colour scales and summaries.
   float maxMagnitude() const;
@@ -127,6 +143,7 @@ class VectorField {
   std::vector<std::uint8_t> valid_;
   std::vector<Scalars> scalars_;
   bool half_ = false;
+  std::optional<ValueRange> range_;
 };
 
 }  // namespace sandstorm

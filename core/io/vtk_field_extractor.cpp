@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <mutex>
 #include <optional>
 
 #include <vtkCellData.h>
@@ -56,23 +57,36 @@ const std::uint8_t* byteMaskOf(vtkDataArray* mask) {
 }
 
 // Copies `n` x y z tuples into `out` over the cores, zeroing non-finite ones
-// and those `valid` marks invalid; returns how many were non-finite. `out`
-// may be `in` itself (floats zeroed in place).
+// and those `valid` marks invalid; counts the non-finite ones and gathers the
+// range of the valid ones as copied (VectorField::rememberRange). `out` may be
+// `in` itself (floats zeroed in place).
+struct Copied {
+  std::size_t nonFinite = 0;
+  ValueRange range;
+};
 template <class T>
-std::size_t copyContiguous(const T* in, const std::uint8_t* valid, glm::vec3* out, std::size_t n) {
-  std::atomic<std::size_t> nonFinite{0};
+Copied copyContiguous(const T* in, const std::uint8_t* valid, glm::vec3* out, std::size_t n) {
+  const bool inPlace = static_cast<const void*>(in) == static_cast<const void*>(out);
+  std::mutex mutex;
+  Copied all;
   forChunks(n, [&](std::size_t begin, std::size_t end) {
-    std::size_t bad = 0;
+    Copied part;
     for (std::size_t i = begin; i < end; ++i) {
       const glm::vec3 v{float(in[3 * i]), float(in[3 * i + 1]), float(in[3 * i + 2])};
       const bool finite = std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
       const bool masked = valid && valid[i] == 0;
-      bad += finite || masked ? 0 : 1;
-      out[i] = finite && !masked ? v : glm::vec3(0.0f);
+      part.nonFinite += finite || masked ? 0 : 1;
+      const glm::vec3 kept = finite && !masked ? v : glm::vec3(0.0f);
+      if (!masked) part.range.add(kept);
+      // In place, a kept vector is not written back: a series' step is
+      // 200 MB, and rewriting it all would double this pass's memory traffic.
+      if (!inPlace || !finite || masked) out[i] = kept;
     }
-    nonFinite += bad;
+    std::lock_guard lock(mutex);
+    all.nonFinite += part.nonFinite;
+    all.range.merge(part.range);
   });
-  return nonFinite;
+  return all;
 }
 
 // Copies an array's tuples into `out`, zeroing non-finite ones and those
@@ -85,9 +99,9 @@ std::size_t copyVectors(vtkDataArray* array, vtkDataArray* mask, std::vector<glm
   const std::uint8_t* valid = byteMaskOf(mask);
   if (array->GetNumberOfComponents() == 3 && (!mask || valid)) {
     if (auto* f = vtkFloatArray::FastDownCast(array))
-      return copyContiguous(f->GetPointer(0), valid, out.data(), out.size());
+      return copyContiguous(f->GetPointer(0), valid, out.data(), out.size()).nonFinite;
     if (auto* d = vtkDoubleArray::FastDownCast(array))
-      return copyContiguous(d->GetPointer(0), valid, out.data(), out.size());
+      return copyContiguous(d->GetPointer(0), valid, out.data(), out.size()).nonFinite;
   }
   std::size_t nonFinite = 0;
   double t[3];
@@ -113,13 +127,15 @@ std::size_t copyVectors(vtkDataArray* array, vtkDataArray* mask, std::vector<glm
 // held once: its non-finite tuples and those `mask` marks invalid are zeroed
 // in place. nullopt for any other array (then copied: copyVectors).
 std::optional<VectorValues> adoptVectors(vtkDataArray* array, vtkDataArray* mask,
-                                         std::size_t& nonFinite) {
+                                         std::size_t& nonFinite, ValueRange& range) {
   auto* f = vtkFloatArray::FastDownCast(array);
   const std::uint8_t* valid = byteMaskOf(mask);
   if (!f || f->GetNumberOfComponents() != 3 || (mask && !valid)) return std::nullopt;
   const std::size_t n = std::size_t(f->GetNumberOfTuples());
   auto* values = reinterpret_cast<glm::vec3*>(f->GetPointer(0));
-  nonFinite = copyContiguous(f->GetPointer(0), valid, values, n);
+  const Copied copied = copyContiguous(f->GetPointer(0), valid, values, n);
+  nonFinite = copied.nonFinite;
+  range = copied.range;
   // The array lives on in the grid; VTK counts its references atomically.
   auto owner = std::make_shared<vtkSmartPointer<vtkFloatArray>>(f);
   return VectorValues::adopt(values, n, std::move(owner));
@@ -244,8 +260,10 @@ VectorField copyImage(vtkImageData* image, const std::string& name,
   vtkDataArray* mask = image->GetPointData()->GetArray(kValidMaskName);
   if (mask && mask->GetNumberOfTuples() != image->GetNumberOfPoints()) mask = nullptr;
   std::size_t nonFinite = 0;
-  std::optional<VectorValues> values = adoptVectors(array, mask, nonFinite);
+  std::optional<ValueRange> range{ValueRange{}};
+  std::optional<VectorValues> values = adoptVectors(array, mask, nonFinite, *range);
   if (!values) {
+    range.reset();
     std::vector<glm::vec3> copied;
     nonFinite = copyVectors(array, mask, copied);
     values = VectorValues(std::move(copied));
@@ -253,6 +271,7 @@ VectorField copyImage(vtkImageData* image, const std::string& name,
   reportNonFinite(nonFinite, path, name, report);
   VectorField field(bounds, dims, std::move(*values));
   field.setValidity(validityOf(mask));
+  if (range) field.rememberRange(*range);  // found in the check, over the same valid points
   copyScalars(image->GetPointData(), mask, image->GetNumberOfPoints(), path, field, report);
   noteOutside(field, path, report);
   return field;

@@ -1,12 +1,11 @@
 #include "core/sim/frame_packet_codec.h"
 
-#include <glm/gtc/packing.hpp>
-
 #include <optional>
 #include <string>
 
 #include "core/util/byte_reader.h"
 #include "core/util/byte_writer.h"
+#include "core/util/half_float.h"
 #include "core/util/hash.h"
 
 namespace sandstorm {
@@ -276,8 +275,7 @@ std::vector<std::byte> encodeField(const VectorField& grid) {
   w.boolean(grid.halfPrecision());
   if (grid.halfPrecision()) {
     for (const glm::vec3& v : values) {
-      const glm::u16vec3 h = glm::packHalf(v);
-      w.u16(h.x), w.u16(h.y), w.u16(h.z);
+      w.u16(halfBits(v.x)), w.u16(halfBits(v.y)), w.u16(halfBits(v.z));
     }
   } else {
     w.f32s(std::span<const float>(&values.data()->x, values.size() * 3));
@@ -321,10 +319,8 @@ VectorField decodeField(std::span<const std::byte> bytes, std::string_view name)
   std::vector<glm::vec3> values(points);
   if (half) {
     for (glm::vec3& v : values) {
-      glm::u16vec3 h;
       for (int c = 0; c < 3; ++c)
-        h[c] = r.u16("values");
-      v = glm::unpackHalf(h);
+        v[c] = halfToFloat(r.u16("values"));
       if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
         r.fail("values", "a half-precision vector that is not finite");
     }

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <iomanip>
 
+#include "core/field/field_range.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -26,16 +27,16 @@ VectorField linearField() {
   return f;
 }
 
-// IEEE binary16 by hand: the nearest half to x (ties away from zero, as
-// glm::packHalf rounds), from its definition (11 significant bits; below
-// 2^-14 a fixed step of 2^-24).
-float nearestHalf(float x) {
+// IEEE binary16 by hand: the nearest half to x (ties to even, as GPUs and
+// F16C round), from its definition (11 significant bits; below 2^-14 a fixed
+// step of 2^-24).
+float halfByDefinition(float x) {
   const double a = std::abs(double(x));
   if (a == 0.0) return x;
   const int exponent = std::max(int(std::floor(std::log2(a))), -14);
   const double step = std::ldexp(1.0, exponent - 10);
   const double q = a / step, low = std::floor(q);
-  const double n = q - low >= 0.5 ? low + 1 : low;
+  const double n = q - low > 0.5 || (q - low == 0.5 && std::fmod(low, 2.0) == 1.0) ? low + 1 : low;
   return float(std::copysign(n * step, double(x)));
 }
 
@@ -49,16 +50,26 @@ TEST(VectorField, HalfPrecisionRoundsToTheNearestHalfWithinAThousandthOfTheFaste
   for (glm::vec3& v : f.values())
     v = glm::vec3(next() - 0.5f, next() * 1e-6f, 40.0f * next() - 20.0f) * 1.7f;
   f.values()[3] = glm::vec3(1.0f, 0.5f, -2048.0f);  // exactly representable: kept
+  // Ties: halfway between 1 and 1 + 2^-10 (to 1), between 1 + 2^-10 and
+  // 1 + 2^-9 (to 1 + 2^-9), and between the two smallest subnormals' steps.
+  f.values()[4] = glm::vec3(1.0f + 0x1p-11f, 1.0f + 3 * 0x1p-11f, -3 * 0x1p-25f);
   const VectorField before = f;
   EXPECT_FALSE(f.halfPrecision());
   f.roundToHalf();
   EXPECT_TRUE(f.halfPrecision());
+  // The range of the rounded values is found while rounding, and is theirs.
+  ASSERT_TRUE(f.rememberedRange());
+  const FieldRange remembered = FieldRange::of(f);
+  VectorField fresh = f;
+  fresh.values();  // a change may follow: forgotten, found again from the values
+  EXPECT_FALSE(fresh.rememberedRange());
+  EXPECT_EQ(remembered, FieldRange::of(fresh));
   const float fastest = before.maxMagnitude();
   float worst = 0.0f;
   std::size_t changed = 0;
   for (std::size_t i = 0; i < f.pointCount(); ++i) {
     for (int c = 0; c < 3; ++c)
-      ASSERT_EQ(f.values()[i][c], nearestHalf(before.values()[i][c]))
+      ASSERT_EQ(f.values()[i][c], halfByDefinition(before.values()[i][c]))
           << i << "," << c << ": " << std::setprecision(12) << before.values()[i][c];
     worst = std::max(worst, glm::length(f.values()[i] - before.values()[i]));
     changed += f.values()[i] != before.values()[i];
@@ -66,6 +77,8 @@ TEST(VectorField, HalfPrecisionRoundsToTheNearestHalfWithinAThousandthOfTheFaste
   EXPECT_LE(worst, 1e-3f * fastest);
   EXPECT_GT(changed, f.pointCount() / 2);
   EXPECT_EQ(f.values()[3], glm::vec3(1.0f, 0.5f, -2048.0f));
+  EXPECT_EQ(f.values()[4], glm::vec3(1.0f, 1.0f + 0x1p-9f, -2 * 0x1p-24f));
+
   // Beyond what half holds: refused, nothing changed.
   VectorField big(Box{{0, 0, 0}, {1, 1, 1}}, {2, 2, 2});
   big.values()[5] = glm::vec3(0.1f, -70000.0f, 0.0f);
