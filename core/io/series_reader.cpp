@@ -5,6 +5,7 @@
 
 #include "core/io/field_loader.h"
 #include "core/util/error.h"
+#include "core/util/parallel_for.h"
 
 namespace sandstorm {
 namespace {
@@ -26,8 +27,10 @@ SeriesReader::SeriesReader(std::vector<Source> sources, LoadOptions options,
   held_[0] = first_;
   for (const Source& s : sources_)
     identities_.push_back(FileIdentity::of(s.file));
-  for (int t = 0; t < std::max(threads, 1); ++t)
-    threads_.emplace_back([this] { run(); });
+  const unsigned readers = unsigned(std::max(threads, 1));
+  const unsigned share = std::max(1u, std::thread::hardware_concurrency() / readers);
+  for (unsigned t = 0; t < readers; ++t)
+    threads_.emplace_back([this, share] { run(share); });
 }
 
 SeriesReader::~SeriesReader() {
@@ -168,7 +171,10 @@ bool SeriesReader::nextToRead(std::size_t& step) const {
   return false;
 }
 
-void SeriesReader::run() {
+void SeriesReader::run(unsigned cores) {
+  // Each reader reads a step of its own: its passes over the step (the
+  // check of each vector, rounding to halves) share the cores with the others.
+  const ChunkThreadLimit limit(cores);
   std::unique_lock lock(mutex_);
   for (;;) {
     std::size_t step = 0;

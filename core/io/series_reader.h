@@ -69,7 +69,8 @@ class SeriesReader final : public FieldSteps {
                                                  const VectorField* grid);
 
  private:
-  void run();
+  // A reader thread's loop; `cores`: the threads each of its passes over a step may use.
+  void run(unsigned cores);
   // The first wanted step neither in memory, being read nor failed; false if none.
   bool nextToRead(std::size_t& step) const;
 

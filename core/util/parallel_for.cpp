@@ -11,7 +11,15 @@ void chunk(std::size_t count, unsigned parts, unsigned index, std::size_t& begin
   end = count * (index + 1) / parts;
 }
 
+thread_local unsigned chunkThreadLimit = 0;  // 0: none
+
 }  // namespace
+
+ChunkThreadLimit::ChunkThreadLimit(unsigned threads) : previous_(chunkThreadLimit) {
+  chunkThreadLimit = std::max(threads, 1u);
+}
+
+ChunkThreadLimit::~ChunkThreadLimit() { chunkThreadLimit = previous_; }
 
 ParallelFor::ParallelFor(unsigned threads) {
   if (threads == 0) threads = std::clamp(std::thread::hardware_concurrency(), 1u, 16u);
@@ -71,8 +79,9 @@ void ParallelFor::run(std::size_t count,
 void forChunks(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body,
                std::size_t grain) {
   const std::size_t cores = std::max(1u, std::thread::hardware_concurrency());
-  const std::size_t threads =
-      std::clamp<std::size_t>(std::min(cores, count / std::max<std::size_t>(grain, 1)), 1, 16);
+  const std::size_t limit = chunkThreadLimit == 0 ? 16 : chunkThreadLimit;
+  const std::size_t threads = std::clamp<std::size_t>(
+      std::min({cores, count / std::max<std::size_t>(grain, 1), limit}), 1, 16);
   std::vector<std::jthread> workers;
   for (std::size_t t = 1; t < threads; ++t)
     workers.emplace_back(body, count * t / threads, count * (t + 1) / threads);

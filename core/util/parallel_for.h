@@ -22,6 +22,23 @@ namespace sandstorm {
 void forChunks(std::size_t count, const std::function<void(std::size_t, std::size_t)>& body,
                std::size_t grain = std::size_t{1} << 16);
 
+// While one lives, forChunks called on its thread uses at most `threads`
+// threads (this one included; at least 1). For a thread that is one of
+// several doing such passes at once, each over its own data (a series'
+// readers, a step each): it takes its share of the cores, so that the
+// walls' threads and the uploads are not crowded out by readers that each
+// start one thread per core. Nests; the previous limit returns with it.
+class ChunkThreadLimit {
+ public:
+  explicit ChunkThreadLimit(unsigned threads);
+  ~ChunkThreadLimit();
+  ChunkThreadLimit(const ChunkThreadLimit&) = delete;
+  ChunkThreadLimit& operator=(const ChunkThreadLimit&) = delete;
+
+ private:
+  unsigned previous_;
+};
+
 class ParallelFor {
  public:
   // `threads` 0: the machine's hardware threads (at most 16).

@@ -2,7 +2,9 @@
 // whatever the count against the grain (none, fewer than a grain, many).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
+#include <thread>
 #include <vector>
 
 #include "core/util/parallel_for.h"
@@ -25,6 +27,46 @@ TEST(ForChunks, VisitsEveryIndexOnce) {
       ASSERT_EQ(seen[i].load(), 1) << "index " << i << " of " << count;
     EXPECT_GE(chunks.load(), 1);
   }
+}
+
+}  // namespace
+}  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+// Chunks a large range splits into on this thread.
+int chunksOf(std::size_t count) {
+  std::atomic<int> chunks{0};
+  std::atomic<std::size_t> visited{0};
+  forChunks(count, [&](std::size_t begin, std::size_t end) {
+    ++chunks;
+    visited += end - begin;
+  });
+  EXPECT_EQ(visited.load(), count);
+  return chunks;
+}
+
+TEST(ForChunks, AThreadLimitCapsTheChunksOnItsThreadAndEndsWithIt) {
+  const std::size_t count = std::size_t{1} << 22;  // 64 grains
+  const int unlimited = chunksOf(count);
+  EXPECT_GE(unlimited, 1);
+  {
+    const ChunkThreadLimit two(2);
+    EXPECT_EQ(chunksOf(count), std::min(unlimited, 2));
+    {
+      const ChunkThreadLimit one(1);
+      EXPECT_EQ(chunksOf(count), 1);
+      // Another thread is not limited by this one's limit.
+      int elsewhere = 0;
+      std::thread([&] { elsewhere = chunksOf(count); }).join();
+      EXPECT_EQ(elsewhere, unlimited);
+    }
+    EXPECT_EQ(chunksOf(count), std::min(unlimited, 2));
+    const ChunkThreadLimit none(0);  // at least one
+    EXPECT_EQ(chunksOf(count), 1);
+  }
+  EXPECT_EQ(chunksOf(count), unlimited);
 }
 
 }  // namespace
