@@ -218,6 +218,15 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
     if (spec.halfPrecision) field->roundToHalf();
     out.description = concat("analytic '", spec.name, "' baked to ", spec.dims.x, "x", spec.dims.y,
                              "x", spec.dims.z);
+    if (spec.autoPrecision) {
+      // As a file's grid: halves when its floats would not fit the GPU.
+      LoadOptions options;
+      options.gpuRoom = gpuRoomForFields;
+      LoadReport report;
+      chooseHalf(*field, 1, options, report);
+      for (const std::string& note : report.notes)
+        log::info("field: ", out.description, ": ", note);
+    }
     out.update = FieldUpdate{.field = std::move(field), .placement = spec.placement};
     if (auto equation = fieldEquation(*analytic))
       out.update.equation = std::make_shared<FieldEquation>(*equation);

@@ -115,7 +115,8 @@ class VectorField {
   const std::optional<ValueRange>& rememberedRange() const { return range_; }
   void rememberRange(const ValueRange& range) { range_ = range; }
 
-  // The largest vector length, for colour scales and summaries.
+  // The largest vector length over every point, for colour scales and
+  // summaries (the remembered range's when every point is valid).
   float maxMagnitude() const;
 
   // Scalar arrays the file carried with the vectors (temperature, pressure),

@@ -19,7 +19,9 @@ ChunkThreadLimit::ChunkThreadLimit(unsigned threads) : previous_(chunkThreadLimi
   chunkThreadLimit = std::max(threads, 1u);
 }
 
-ChunkThreadLimit::~ChunkThreadLimit() { chunkThreadLimit = previous_; }
+ChunkThreadLimit::~ChunkThreadLimit() {
+  chunkThreadLimit = previous_;
+}
 
 ParallelFor::ParallelFor(unsigned threads) {
   if (threads == 0) threads = std::clamp(std::thread::hardware_concurrency(), 1u, 16u);

@@ -237,6 +237,25 @@ TEST(FileScene, AFieldTooLargeForTheGpuAsFloatsOpensAsHalves) {
   EXPECT_EQ(floats.output.find(chosen), std::string::npos) << floats.output;
 }
 
+TEST(FileScene, AnAnalyticFieldBakedTooLargeForTheGpuAsFloatsIsBakedAsHalves) {
+  const auto dir = test::scratchDir("file-scene-analytic-precision");
+  // The desktop scene's tornado baked at 192^3 points: 81 MiB of floats,
+  // enough to ask the GPU.
+  std::ofstream(dir / "baked.toml") << "include = \"" << SANDSTORM_SOURCE_DIR
+                                    << "/config/desktop.toml\"\n[field]\ndims = [192, 192, 192]\n";
+  const std::string run =
+      "--config '" + (dir / "baked.toml").string() + "' --frames 1 --set sim.maximum=100";
+  const std::string chosen = "field.precision = \"auto\": 16-bit floats chosen";
+  const auto small = test::runSandstorm(run + " --debug-gpu-memory 100000000");
+  EXPECT_EQ(small.exitCode, 0) << small.output;
+  EXPECT_NE(small.output.find("analytic 'tornado' baked to 192x192x192: " + chosen),
+            std::string::npos)
+      << small.output;
+  const auto large = test::runSandstorm(run + " --debug-gpu-memory 1000000000");
+  EXPECT_EQ(large.exitCode, 0) << large.output;
+  EXPECT_EQ(large.output.find(chosen), std::string::npos) << large.output;
+}
+
 TEST(FileScene, AFileThatIsNotThereOrNotAFieldIsAClearError) {
   const auto missing = test::runSandstorm("/nonexistent/wind.vti --frames 1");
   EXPECT_NE(missing.exitCode, 0);

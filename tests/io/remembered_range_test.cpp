@@ -70,6 +70,12 @@ TEST(RememberedRange, TheReadersRangeIsTheValuesOwn) {
       ASSERT_TRUE(f.rememberedRange());
       const FieldRange r = FieldRange::of(f);
       EXPECT_EQ(r, foundAgain(f));
+      // The fastest vector, over every point (masked ones are zeroed), alike.
+      VectorField forgotten = f;
+      forgotten.values();
+      EXPECT_FALSE(forgotten.rememberedRange());
+      EXPECT_EQ(f.maxMagnitude(), forgotten.maxMagnitude());
+      EXPECT_EQ(f.maxMagnitude(), r.maxSpeed);
       // The non-finite vectors are zeroed, so the slowest speed is 0; the
       // fastest are the corners (+-2.5, 1.21, -3), or (+-2.5, 1.21, -2) when masked.
       EXPECT_EQ(r.minSpeed, 0.0f);
