@@ -8,6 +8,20 @@
 #include "core/util/parallel_for.h"
 
 namespace sandstorm {
+namespace {
+
+// The speed and velocity ends of `all` (the defaults when it holds nothing).
+FieldRange ends(const ValueRange& all) {
+  FieldRange r;
+  if (!all.any) return r;
+  r.minSpeed = all.minSpeed();
+  r.maxSpeed = all.maxSpeed();
+  r.minVelocity = all.minVelocity;
+  r.maxVelocity = all.maxVelocity;
+  return r;
+}
+
+}  // namespace
 
 FieldRange FieldRange::of(const VectorField& field, const glm::mat3& rotation,
                           const VectorField* colorGrid) {
@@ -29,11 +43,7 @@ FieldRange FieldRange::of(const VectorField& field, const glm::mat3& rotation,
     });
   }
   if (!all.any) return FieldRange{};
-  FieldRange r;
-  r.minSpeed = all.minSpeed();
-  r.maxSpeed = all.maxSpeed();
-  r.minVelocity = all.minVelocity;
-  r.maxVelocity = all.maxVelocity;
+  FieldRange r = ends(all);
   if (colorGrid && colorGrid->pointCount() == values.size()) {
     float lo = std::numeric_limits<float>::max(), hi = std::numeric_limits<float>::lowest();
     const auto w = colorGrid->values();
@@ -56,13 +66,7 @@ FieldRange FieldRange::of(const SparseField& field, const glm::mat3& rotation) {
     const glm::vec3 v = rotation * value;
     if (std::isfinite(v.x + v.y + v.z)) all.add(v);
   });
-  if (!all.any) return FieldRange{};
-  FieldRange r;
-  r.minSpeed = all.minSpeed();
-  r.maxSpeed = all.maxSpeed();
-  r.minVelocity = all.minVelocity;
-  r.maxVelocity = all.maxVelocity;
-  return r;
+  return ends(all);
 }
 
 }  // namespace sandstorm
