@@ -1,7 +1,6 @@
 #include "core/field/vector_field.h"
 
 #include <algorithm>
-#include <atomic>
 #include <cmath>
 #include <mutex>
 
@@ -52,13 +51,14 @@ void VectorField::roundToHalf() {
   // Checked over the cores before anything changes, then rounded over them:
   // a series rounds a 256^3 step (50 million components) on each reader.
   const std::span<glm::vec3> values = values_.span();
-  std::atomic<std::size_t> firstBad{values.size()};
+  std::mutex mutex;
+  std::size_t firstBad = values.size();  // the message names the first such point
   forChunks(values.size(), [&](std::size_t begin, std::size_t end) {
     for (std::size_t i = begin; i < end; ++i)
       if (!(std::abs(values[i].x) <= kHalfMax && std::abs(values[i].y) <= kHalfMax &&
             std::abs(values[i].z) <= kHalfMax)) {
-        for (std::size_t seen = firstBad; i < seen && !firstBad.compare_exchange_weak(seen, i);)
-          ;
+        std::lock_guard lock(mutex);
+        firstBad = std::min(firstBad, i);
         return;
       }
   });
@@ -72,7 +72,6 @@ void VectorField::roundToHalf() {
                        "the field's units"));
   }
   // The range of the rounded values is found in the same pass.
-  std::mutex mutex;
   ValueRange range;
   forChunks(values.size(), [&](std::size_t begin, std::size_t end) {
     ValueRange part;
@@ -193,16 +192,16 @@ float VectorField::maxMagnitude() const {
   // and a 1024^3 grid is 10^9 vectors.
   if (range_ && valid_.empty()) return range_->any ? range_->maxSpeed() : 0.0f;
   const std::span<const glm::vec3> values = values_.span();
-  std::atomic<float> fastest{0.0f};
+  std::mutex mutex;
+  float fastest2 = 0.0f;  // squared: the square root commutes with max
   forChunks(values.size(), [&](std::size_t begin, std::size_t end) {
     float m2 = 0.0f;
     for (std::size_t i = begin; i < end; ++i)
       m2 = std::max(m2, glm::dot(values[i], values[i]));
-    const float m = std::sqrt(m2);
-    for (float seen = fastest; m > seen && !fastest.compare_exchange_weak(seen, m);)
-      ;
+    std::lock_guard lock(mutex);
+    fastest2 = std::max(fastest2, m2);
   });
-  return fastest;
+  return std::sqrt(fastest2);
 }
 
 }  // namespace sandstorm
