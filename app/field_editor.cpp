@@ -72,8 +72,16 @@ void FieldEditor::update(MainContext& main) {
   }
   const auto start = std::chrono::steady_clock::now();
   const FieldPlacement& placement = base_->placement;
-  lastField_ =
-      std::make_shared<const VectorField>(composeField(*base_->field, placement, active, &pool_));
+  VectorField composed = composeField(*base_->field, placement, active, &pool_);
+  // A half-precision field stays one (field.precision), unless the
+  // primitives take a component beyond what halves hold.
+  if (base_->field->halfPrecision()) try {
+      composed.roundToHalf();
+    } catch (const Error& e) {
+      log::warn("field editor: ", e.what(),
+                "; the field with its primitives stays in 32-bit floats");
+    }
+  lastField_ = std::make_shared<const VectorField>(std::move(composed));
   main.setField(FieldUpdate{.field = lastField_, .placement = placement});
   applied_ = active;
   const double ms =

@@ -49,21 +49,22 @@ vec3 trilinear(vec3 f, vec3 c000, vec3 c100, vec3 c010, vec3 c110, vec3 c001, ve
 #include "field_sparse.glsl"
 
 #ifdef FIELD_BUFFER
-// The grid as GpuField's buffer holds it: eight vec4 loads (on an H200,
-// faster than eight texelFetch of an RGB32F texture).
+// The grid as GpuField's buffer holds it: eight loads of a point (on an
+// H200, faster than eight texelFetch of an RGB32F texture).
 vec3 fieldSample(bool next, vec3 p) {
   Cell c = fieldCell(p);
   ivec3 stride = ivec3(1, sim.fieldDims.x, sim.fieldDims.x * sim.fieldDims.y);
   int b = c.i0.x + c.i0.y * stride.y + c.i0.z * stride.z;
   ivec3 d = (c.i1 - c.i0) * stride;
   if (next)
-    return trilinear(c.f, fieldGridNext[b].xyz, fieldGridNext[b + d.x].xyz, fieldGridNext[b + d.y].xyz,
-                     fieldGridNext[b + d.x + d.y].xyz, fieldGridNext[b + d.z].xyz,
-                     fieldGridNext[b + d.x + d.z].xyz, fieldGridNext[b + d.y + d.z].xyz,
-                     fieldGridNext[b + d.x + d.y + d.z].xyz);
-  return trilinear(c.f, fieldGrid[b].xyz, fieldGrid[b + d.x].xyz, fieldGrid[b + d.y].xyz,
-                   fieldGrid[b + d.x + d.y].xyz, fieldGrid[b + d.z].xyz, fieldGrid[b + d.x + d.z].xyz,
-                   fieldGrid[b + d.y + d.z].xyz, fieldGrid[b + d.x + d.y + d.z].xyz);
+    return trilinear(c.f, gridPointNext(b).xyz, gridPointNext(b + d.x).xyz,
+                     gridPointNext(b + d.y).xyz, gridPointNext(b + d.x + d.y).xyz,
+                     gridPointNext(b + d.z).xyz, gridPointNext(b + d.x + d.z).xyz,
+                     gridPointNext(b + d.y + d.z).xyz, gridPointNext(b + d.x + d.y + d.z).xyz);
+  return trilinear(c.f, gridPoint(b).xyz, gridPoint(b + d.x).xyz, gridPoint(b + d.y).xyz,
+                   gridPoint(b + d.x + d.y).xyz, gridPoint(b + d.z).xyz,
+                   gridPoint(b + d.x + d.z).xyz, gridPoint(b + d.y + d.z).xyz,
+                   gridPoint(b + d.x + d.y + d.z).xyz);
 }
 #else
 vec3 gridSample(sampler3D field, Cell c) {
@@ -96,7 +97,7 @@ bool cellValid(bool next, vec3 p) {
   float w = 1.0;
   for (int k = 0; k < 8; ++k) {
     int at = b + ((k & 1) != 0 ? d.x : 0) + ((k & 2) != 0 ? d.y : 0) + ((k & 4) != 0 ? d.z : 0);
-    w = min(w, next ? fieldGridNext[at].w : fieldGrid[at].w);
+    w = min(w, next ? gridPointNext(at).w : gridPoint(at).w);
   }
   return w > 0.5;
 #else

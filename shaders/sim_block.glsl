@@ -47,12 +47,30 @@ layout(std140, binding = 0) uniform SimBlock {
   vec4 sparseIndexMax;
 } sim;
 
-// The field's grid (GpuField): FIELD_BUFFER programs (the compute backend)
-// read it from storage buffers, the others from textures.
-#ifdef FIELD_BUFFER
-layout(std430, binding = 14) readonly restrict buffer FieldGrid { vec4 fieldGrid[]; };  // xyz, w: valid; x fastest
+// The field's grid (GpuField), x fastest: FIELD_BUFFER programs (the compute
+// backend) read it from storage buffers of vec4 (xyz, w: valid),
+// FIELD_BUFFER_HALF ones from buffers of four halves a point (the same
+// four, unpacked: exact), the others from textures. gridPoint(i) and
+// gridPointNext(i): point i of the current and the next frame.
+#ifdef FIELD_BUFFER_HALF
+#define FIELD_BUFFER
+layout(std430, binding = 14) readonly restrict buffer FieldGrid { uvec2 fieldGrid[]; };  // x, y | z, valid
+layout(std430, binding = 15) readonly restrict buffer FieldGridNext { uvec2 fieldGridNext[]; };
+vec4 gridPoint(int i) {
+  uvec2 h = fieldGrid[i];
+  return vec4(unpackHalf2x16(h.x), unpackHalf2x16(h.y));
+}
+vec4 gridPointNext(int i) {
+  uvec2 h = fieldGridNext[i];
+  return vec4(unpackHalf2x16(h.x), unpackHalf2x16(h.y));
+}
+#elif defined(FIELD_BUFFER)
+layout(std430, binding = 14) readonly restrict buffer FieldGrid { vec4 fieldGrid[]; };
 layout(std430, binding = 15) readonly restrict buffer FieldGridNext { vec4 fieldGridNext[]; };
-#else
+vec4 gridPoint(int i) { return fieldGrid[i]; }
+vec4 gridPointNext(int i) { return fieldGridNext[i]; }
+#endif
+#ifndef FIELD_BUFFER
 layout(binding = 0) uniform sampler3D uField;      // RGB32F (RGBA32F: alpha valid), texelFetch only
 layout(binding = 2) uniform sampler3D uFieldNext;  // a time-varying field's next frame
 #endif

@@ -64,7 +64,7 @@ class MoleculeUpdate {
   }
   // As ParticleBackend::setFieldBuffer.
   bool setFieldBuffer(std::uint32_t buffer) {
-    const bool can = environment_.gridStorage() == GpuField::Storage::Buffer;
+    const bool can = environment_.readsBuffers();
     environment_.setFieldBuffer(can ? buffer : 0);
     return can || buffer == 0;
   }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
@@ -17,6 +18,10 @@
 
 namespace sandstorm {
 
+// HalfRgba points are written as one 64-bit word: x in its low 16 bits,
+// first in memory, as the GPU reads them.
+static_assert(std::endian::native == std::endian::little);
+
 void GpuField::upload(const VectorField& field) {
   prepare(field);
   stageSlabs(field);
@@ -24,24 +29,23 @@ void GpuField::upload(const VectorField& field) {
 
 std::size_t GpuField::prepare(const VectorField& field) {
   holds_ = nullptr;
-  // A half-precision grid is a 16-bit float texture (the buffer holds floats).
-  const Storage storage =
-      preferred_ == Storage::Buffer && !field.halfPrecision() && fitsBuffer(field)
-          ? Storage::Buffer
-          : Storage::Texture;
+  const bool masked = field.hasValidity(), half = field.halfPrecision();
+  const Storage storage = preferred_ == Storage::Texture || !fitsBuffer(field) ? Storage::Texture
+                          : half                                               ? Storage::HalfBuffer
+                                                                               : Storage::Buffer;
   if (storage != storage_) {
     texture_ = {};
     buffer_ = {};
     storage_ = storage;
   }
-  const bool masked = field.hasValidity(), half = field.halfPrecision();
-  // The buffer's vec4 carries the mask (w: 1 valid, 0 not) whether or not there is one.
-  const Layout layout = storage_ == Storage::Buffer ? Layout::FloatRgba
-                        : half                      ? (masked ? Layout::HalfRgba : Layout::HalfRgb)
+  // A buffer's point carries the mask (w: 1 valid, 0 not) whether or not there is one.
+  const Layout layout = storage_ == Storage::Buffer       ? Layout::FloatRgba
+                        : storage_ == Storage::HalfBuffer ? Layout::HalfRgba
+                        : half ? (masked ? Layout::HalfRgba : Layout::HalfRgb)
                                : (masked ? Layout::FloatRgba : Layout::FloatRgb);
   const bool same = dims_ == field.dims() && layout_ == layout;
   if (storage_ == Storage::Texture && !(texture_ && same)) allocateTexture(field);
-  if (storage_ == Storage::Buffer && !(buffer_ && same)) allocateBuffer(field);
+  if (storage_ != Storage::Texture && !(buffer_ && same)) allocateBuffer(field, texelBytes(layout));
   dims_ = field.dims();
   layout_ = layout;
   return layerBytes();
@@ -75,8 +79,8 @@ void GpuField::allocateTexture(const VectorField& field) {
   glTextureParameteri(texture_.id(), GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 }
 
-void GpuField::allocateBuffer(const VectorField& field) {
-  const GLsizeiptr bytes = GLsizeiptr(field.pointCount() * sizeof(glm::vec4));
+void GpuField::allocateBuffer(const VectorField& field, std::size_t pointBytes) {
+  const GLsizeiptr bytes = GLsizeiptr(field.pointCount() * pointBytes);
   buffer_ = gl::createBuffer();
   glGetError();
   glNamedBufferStorage(buffer_.id(), bytes, nullptr, 0);
@@ -91,7 +95,7 @@ void GpuField::allocateBuffer(const VectorField& field) {
 
 void GpuField::copyLayers(const gl::Buffer& staging, std::size_t offset, int firstLayer,
                           int layers) {
-  if (storage_ == Storage::Buffer) {
+  if (storage_ != Storage::Texture) {
     glCopyNamedBufferSubData(staging.id(), buffer_.id(), GLintptr(offset),
                              GLintptr(std::size_t(firstLayer) * layerBytes()),
                              GLsizeiptr(std::size_t(layers) * layerBytes()));
@@ -132,7 +136,10 @@ void GpuField::writeLayers(const VectorField& field, int firstLayer, int layers,
   const std::span<const std::uint8_t> valid =
       field.hasValidity() ? field.validity().subspan(first, count) : field.validity();
   const auto isValid = [&](std::size_t i) { return valid.empty() || valid[i] != 0; };
-  const std::uint16_t one = halfBits(1.0f), zero = halfBits(0.0f);
+  // The grid's values are halves already (VectorField::roundToHalf): their
+  // bits, a point's four written at once (the mapping may be write-combined
+  // memory, where stores of two bytes are slow).
+  const float* components = &values.data()->x;
   const auto write = [&](std::size_t begin, std::size_t end) {
     switch (layout) {
       case Layout::FloatRgb:
@@ -143,15 +150,20 @@ void GpuField::writeLayers(const VectorField& field, int firstLayer, int layers,
         for (std::size_t i = begin; i < end; ++i)
           static_cast<glm::vec4*>(out)[i] = glm::vec4(values[i], isValid(i) ? 1.0f : 0.0f);
         break;
-      case Layout::HalfRgb:
-      case Layout::HalfRgba: {
-        const std::size_t channels = layout == Layout::HalfRgba ? 4 : 3;
+      case Layout::HalfRgb: {
         auto* texels = static_cast<std::uint16_t*>(out);
-        for (std::size_t i = begin; i < end; ++i) {
-          for (std::size_t c = 0; c < 3; ++c)
-            texels[i * channels + c] = halfBits(values[i][int(c)]);
-          if (channels == 4) texels[i * 4 + 3] = isValid(i) ? one : zero;
-        }
+        for (std::size_t i = 3 * begin; i < 3 * end; ++i)
+          texels[i] = exactHalfBits(components[i]);
+        break;
+      }
+      case Layout::HalfRgba: {  // w: 1 valid, 0 not
+        auto* points = static_cast<std::uint64_t*>(out);
+        const std::uint64_t one = std::uint64_t(halfBits(1.0f)) << 48;
+        for (std::size_t i = begin; i < end; ++i)
+          points[i] = std::uint64_t(exactHalfBits(components[3 * i])) |
+                      std::uint64_t(exactHalfBits(components[3 * i + 1])) << 16 |
+                      std::uint64_t(exactHalfBits(components[3 * i + 2])) << 32 |
+                      (isValid(i) ? one : 0);
         break;
       }
     }
@@ -197,7 +209,9 @@ void GpuField::stageSlabs(const VectorField& field) {
 bool GpuField::fitsBuffer(const VectorField& field) {
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
-  return GLint64(field.values().size() * sizeof(glm::vec4)) <= maxBlock;
+  const std::size_t pointBytes =
+      texelBytes(field.halfPrecision() ? Layout::HalfRgba : Layout::FloatRgba);
+  return GLint64(field.values().size() * pointBytes) <= maxBlock;
 }
 
 void GpuField::show(std::shared_ptr<const VectorField> field) {

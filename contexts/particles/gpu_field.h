@@ -1,4 +1,4 @@
-// GpuField: a VectorField's grid on the GPU, in one of two storages, and
+// GpuField: a VectorField's grid on the GPU, in one of three storages, and
 // TerrainTexture: a HeightMap as an R32F 2D texture. Shaders read both
 // without the sampler's filter and interpolate themselves
 // (shaders/particle_physics.glsl), so the GPU agrees with the CPU bit for bit.
@@ -6,15 +6,20 @@
 //     transform-feedback backend's. A field with a validity mask
 //     (VectorField::setValidity) is RGBA32F, the mask in alpha. A field
 //     rounded to half precision (field.precision = "half") is RGB16F or
-//     RGBA16F, always a texture: texelFetch returns the very values the CPU
-//     twin samples, in half the memory.
+//     RGBA16F: texelFetch returns the very values the CPU twin samples, in
+//     half the memory.
 //   Buffer: a shader storage buffer of vec4 (xyz, w: 1 valid, 0 not), x fastest; what
 //     the compute backend prefers: on an H200 its eight loads a sample made
 //     the update 12% (RK2) to 23% (RK4) faster than eight texelFetch
-//     (docs/PERFORMANCE.md). A grid larger than the GPU's storage-buffer
-//     limit (GL_MAX_SHADER_STORAGE_BLOCK_SIZE: 128 MiB on llvmpipe) is kept
-//     as a texture instead; storage() says which. [gpu] field_storage =
-//     "texture" makes every grid take that fallback (tests, comparisons).
+//     (docs/PERFORMANCE.md).
+//   HalfBuffer: the same for a half-precision grid, four halves a point
+//     (x, y, z, w: 1 valid, 0 not; the RGBA16F texel's bytes), read as a
+//     uvec2 and unpacked (FIELD_BUFFER_HALF). A series' step goes to it with
+//     a copy between buffers, where a 16-bit texture's upload converts.
+//   A grid larger than the GPU's storage-buffer limit
+//   (GL_MAX_SHADER_STORAGE_BLOCK_SIZE: 128 MiB on llvmpipe) is kept as a
+//   texture instead; storage() says which. [gpu] field_storage = "texture"
+//   makes every grid take that fallback (tests, comparisons).
 #pragma once
 
 #include <memory>
@@ -28,7 +33,8 @@ namespace sandstorm {
 
 class GpuField {
  public:
-  enum class Storage { Texture, Buffer };
+  // Preferred: Texture or Buffer (a half-precision grid then takes HalfBuffer).
+  enum class Storage { Texture, Buffer, HalfBuffer };
   // Where a field is bound: the current frame or a time-varying field's next.
   enum class Slot { Current, Next };
 
@@ -43,7 +49,7 @@ class GpuField {
   const std::shared_ptr<const VectorField>& holds() const { return holds_; }
   // How the field last uploaded is kept.
   Storage storage() const { return storage_; }
-  // Texture: units 0 (current) and 2 (next); buffer: storage-buffer bindings
+  // Texture: units 0 (current) and 2 (next); buffers: storage-buffer bindings
   // 14 and 15 (shaders/sim_block.glsl).
   void bind(Slot slot) const;
   // A texture-stored grid on any texture unit (the vorticity grids: units 5 and 6).
@@ -65,9 +71,10 @@ class GpuField {
  private:
   static bool fitsBuffer(const VectorField& field);
   void allocateTexture(const VectorField& field);
-  void allocateBuffer(const VectorField& field);
+  void allocateBuffer(const VectorField& field, std::size_t pointBytes);
   // How the grid's points are laid out for the GPU: float or half, RGB, or
-  // RGBA with the validity mask in alpha (the buffer's vec4 is FloatRgba).
+  // RGBA with the validity mask in alpha (the buffers' points are FloatRgba
+  // and HalfRgba).
   enum class Layout { FloatRgb, FloatRgba, HalfRgb, HalfRgba };
   static std::size_t texelBytes(Layout layout);
   std::size_t layerBytes() const {

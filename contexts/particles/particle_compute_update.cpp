@@ -162,8 +162,9 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   glBindBufferBase(GL_UNIFORM_BUFFER, 0, simBlock_.id());
   const FieldRead read = environment_.bind(state);
   const char* readDefine = fieldReadDefine(read, environment_.gridStorage());
-  // The plain program reads the grid's buffer.
-  const bool plain = read == FieldRead::Grid && readDefine != nullptr;
+  // The plain program reads the grid's buffer of vec4.
+  const bool plain =
+      read == FieldRead::Grid && environment_.gridStorage() == GpuField::Storage::Buffer;
   const bool obstacles = block.obstacleCount.x > 0;
   bool flow = false;  // some obstacle turns the flow
   for (int i = 0; i < block.obstacleCount.x; ++i)

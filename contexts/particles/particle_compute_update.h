@@ -63,7 +63,7 @@ class ParticleComputeUpdate final : public ParticleBackend {
   }
   void setTerrain(std::shared_ptr<const HeightMap> terrain) override;
   bool setFieldBuffer(std::uint32_t buffer) override {
-    const bool can = environment_.gridStorage() == GpuField::Storage::Buffer;
+    const bool can = environment_.readsBuffers();
     environment_.setFieldBuffer(can ? buffer : 0);
     return can || buffer == 0;
   }

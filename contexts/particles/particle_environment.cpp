@@ -49,7 +49,7 @@ void ParticleEnvironment::describe(SimBlockInputs& inputs) const {
 
 FieldRead ParticleEnvironment::bind(const ParticleState& state) const {
   if (terrain_) terrainTexture_.bind(1);
-  if (fieldBuffer_ != 0 && field_ && gridStorage() == GpuField::Storage::Buffer) {
+  if (fieldBuffer_ != 0 && field_ && readsBuffers()) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 14, fieldBuffer_);
     return FieldRead::Grid;
   }

@@ -17,15 +17,17 @@
 namespace sandstorm {
 
 // How an update's program reads the field: the grid (a texture or, with
-// FIELD_BUFFER, a buffer), the equation (FIELD_EQUATION) or the sparse grid
-// (FIELD_SPARSE).
+// FIELD_BUFFER or FIELD_BUFFER_HALF, a buffer), the equation
+// (FIELD_EQUATION) or the sparse grid (FIELD_SPARSE).
 enum class FieldRead { Grid, Equation, Sparse };
 
 // The define a program reading the field so needs: FIELD_EQUATION,
-// FIELD_SPARSE, FIELD_BUFFER (a grid kept as a buffer), or none (a texture).
+// FIELD_SPARSE, FIELD_BUFFER (a grid kept as a buffer of vec4),
+// FIELD_BUFFER_HALF (of halves), or none (a texture).
 inline const char* fieldReadDefine(FieldRead read, GpuField::Storage storage) {
   if (read == FieldRead::Equation) return "FIELD_EQUATION";
   if (read == FieldRead::Sparse) return "FIELD_SPARSE";
+  if (storage == GpuField::Storage::HalfBuffer) return "FIELD_BUFFER_HALF";
   return storage == GpuField::Storage::Buffer ? "FIELD_BUFFER" : nullptr;
 }
 
@@ -54,12 +56,15 @@ class ParticleEnvironment {
   // whose bounds are its bounds; null: the grid again.
   void setSparse(std::shared_ptr<const SparseField> sparse) { sparse_.show(std::move(sparse)); }
   void setTerrain(std::shared_ptr<const HeightMap> terrain);
-  // A storage buffer holding the field's grid in GpuField's layout (the live
-  // flow solver's points, GpuFluidSolver), read in place of the uploaded
-  // field's (whose dims and bounds it shares); 0: the uploaded field again.
-  // Only where the grid is kept as a buffer (gridStorage()); no next frame,
-  // no equation while it is set.
+  // A storage buffer holding the field's grid in GpuField's Buffer layout
+  // (vec4: the live flow solver's points, GpuFluidSolver), read in place of
+  // the uploaded field's (whose dims and bounds it shares); 0: the uploaded
+  // field again. Only where the grid is kept in a buffer (readsBuffers());
+  // no next frame, no equation while it is set.
   void setFieldBuffer(std::uint32_t buffer) { fieldBuffer_ = buffer; }
+  // Whether the programs read the grid from storage buffers, so that a
+  // buffer given to setFieldBuffer can take its place.
+  bool readsBuffers() const { return fieldGrid_.storage() != GpuField::Storage::Texture; }
   std::uint32_t fieldBuffer() const { return fieldBuffer_; }
 
   // The environment's part of an update's inputs.
@@ -69,9 +74,11 @@ class ParticleEnvironment {
   // returns how the update's program must read the field.
   FieldRead bind(const ParticleState& state) const;
 
-  // How the field's grid is kept (both frames of a time-varying field share a
-  // grid, so a storage).
-  GpuField::Storage gridStorage() const { return fieldGrid_.storage(); }
+  // How the field's grid is read (both frames of a time-varying field share a
+  // grid, so a storage): a buffer given to setFieldBuffer holds vec4s.
+  GpuField::Storage gridStorage() const {
+    return fieldBuffer_ != 0 && readsBuffers() ? GpuField::Storage::Buffer : fieldGrid_.storage();
+  }
 
   // What the last setField took: uploads, or finishing a frame on its way.
   double lastUploadMs() const { return lastUploadMs_; }

@@ -16,6 +16,7 @@ VectorField composeField(const VectorField& base, const FieldPlacement& placemen
   VectorField out = base;
   if (parts.empty()) return out;
   const glm::ivec3 dims = base.dims();
+  const std::span<glm::vec3> values = out.values();  // once: the threads only write
   const std::size_t layers = std::size_t(dims.y) * std::size_t(dims.z);
   const auto body = [&](std::size_t begin, std::size_t end) {
     for (std::size_t layer = begin; layer < end; ++layer) {
@@ -25,7 +26,7 @@ VectorField composeField(const VectorField& base, const FieldPlacement& placemen
         glm::vec3 sum(0.0f);
         for (const auto& part : parts)
           sum += part->evaluate(room);
-        out.at(i, j, k) += placement.vectorToLocal(sum);
+        values[out.index(i, j, k)] += placement.vectorToLocal(sum);
       }
     }
   };

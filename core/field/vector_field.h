@@ -59,13 +59,17 @@ class VectorField {
                (static_cast<std::size_t>(j) + static_cast<std::size_t>(dims_.y) * k);
   }
   const glm::vec3& at(int i, int j, int k) const { return values_[index(i, j, k)]; }
+  // Access to change the values forgets their remembered range and that
+  // they are halves (roundToHalf again after changing them).
   glm::vec3& at(int i, int j, int k) {
     range_.reset();
+    half_ = false;
     return values_[index(i, j, k)];
   }
   std::span<const glm::vec3> values() const { return values_.span(); }
   std::span<glm::vec3> values() {
     range_.reset();
+    half_ = false;
     return values_.span();
   }
   // Whether the vectors are the reading library's memory, held rather than copied.

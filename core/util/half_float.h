@@ -9,6 +9,7 @@
 // no loop, where glm::packHalf takes several branches per component.
 #pragma once
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 
@@ -43,6 +44,21 @@ inline std::uint16_t halfBits(float x) {
   if (magnitude < 0x38800000u)  // a subnormal half (or zero): a multiple of 2^-24
     return std::uint16_t(sign | std::uint32_t(std::bit_cast<float>(magnitude) * 16777216.0f));
   return std::uint16_t(sign | ((magnitude - 0x38000000u) >> 13));
+}
+
+// The bits of x, which must already be a finite half (a value nearestHalf
+// returned; VectorField::roundToHalf's grids): no rounding and no branch,
+// so that an upload's loop over millions of them vectorizes.
+inline std::uint16_t exactHalfBits(float x) {
+  const std::uint32_t bits = std::bit_cast<std::uint32_t>(x);
+  const std::uint32_t sign = (bits >> 16) & 0x8000u;
+  const std::uint32_t magnitude = bits & 0x7fffffffu;
+  const std::uint32_t normal = (magnitude - 0x38000000u) >> 13;
+  // Below 2^-14 a multiple of 2^-24; the min keeps the product in range
+  // for the values that take the other side.
+  const std::uint32_t subnormal = std::uint32_t(
+      std::int32_t(std::min(std::bit_cast<float>(magnitude), 6.103515625e-05f) * 16777216.0f));
+  return std::uint16_t(sign | (magnitude < 0x38800000u ? subnormal : normal));
 }
 
 // The float a half's bits stand for (every half is a float exactly).

@@ -13,6 +13,7 @@
 #include "core/editor/field_composer.h"
 #include "core/field/analytic_field_factory.h"
 #include "core/io/field_loader.h"
+#include "core/util/half_float.h"
 #include "tests/app/run_process.h"
 
 namespace sandstorm {
@@ -21,6 +22,37 @@ namespace {
 std::shared_ptr<const VectorField> wind(glm::vec3 v) {
   return std::make_shared<const VectorField>(Box{{-2, -2, 0}, {2, 2, 2}}, glm::ivec3(9, 9, 5),
                                              std::vector<glm::vec3>(9 * 9 * 5, v));
+}
+
+// field.precision = "half": the field with its primitives is halves again
+// (the walls keep 16-bit grids, and the CPU twin samples what they hold),
+// each component the half nearest the composed float.
+TEST(FieldEditorDriver, AHalfPrecisionFieldStaysHalvesWithItsPrimitives) {
+  MainContext::Options options;
+  options.fixedDt = 0.05f;
+  auto half = std::make_shared<VectorField>(*wind({1.1f, 0.3f, 0.0f}));
+  half->roundToHalf();
+  const std::shared_ptr<const VectorField> start = half;
+  MainContext main(ParticleState{}, FieldUpdate{.field = start}, options);
+  FieldEditor editor(FieldSpec{});
+  editor.update(main);
+  main.next();
+  main.set("primitive.0.kind", std::string("vortex"));
+  main.set("primitive.0.position", glm::vec3(0.3f, 0.1f, 1.0f));
+  main.next();
+  editor.update(main);
+  const FramePacket p = main.next();
+  ASSERT_TRUE(p.fieldUpdate);
+  const VectorField& edited = *p.fieldUpdate->field;
+  EXPECT_TRUE(edited.halfPrecision());
+  const VectorField composed = composeField(*start, FieldPlacement{}, main.state().primitives);
+  int changed = 0;
+  for (std::size_t i = 0; i < composed.pointCount(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      ASSERT_EQ(edited.values()[i][c], nearestHalf(composed.values()[i][c])) << i;
+      changed += composed.values()[i][c] != start->values()[i][c];
+    }
+  EXPECT_GT(changed, 100);  // the vortex turns the flow
 }
 
 TEST(FieldEditorDriver, APrimitiveReachesTheWallsInTheNextPacketAndLeavesNoTrace) {

@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "contexts/particles/gpu_field.h"
+#include "core/util/half_float.h"
 #include "tests/contexts/gl_test.h"
 
 namespace sandstorm {
@@ -41,19 +42,25 @@ TEST_F(GpuFieldTest, AGridBeyondTheStorageBufferLimitIsKeptAsATexture) {
   EXPECT_EQ(field.storage(), GpuField::Storage::Buffer);
 }
 
+VectorField halfGrid(bool masked) {
+  VectorField f = grid({6, 5, 4});
+  for (std::size_t i = 0; i < f.pointCount(); ++i)
+    f.values()[i] = glm::vec3(0.013f * float(i), -1.7f + float(i % 5), 1000.0f / float(i + 3));
+  f.values()[3] = glm::vec3(-0.0f, 3e-6f, -6.0e-8f);  // zero and subnormal halves
+  if (masked) {
+    std::vector<std::uint8_t> valid(f.pointCount(), 1);
+    valid[7] = 0;
+    f.setValidity(valid);
+  }
+  f.roundToHalf();
+  return f;
+}
+
 TEST_F(GpuFieldTest, AHalfPrecisionGridIsASixteenBitTextureHoldingItsValuesExactly) {
   for (const bool masked : {false, true}) {
     SCOPED_TRACE(masked ? "masked" : "unmasked");
-    VectorField f = grid({6, 5, 4});
-    for (std::size_t i = 0; i < f.pointCount(); ++i)
-      f.values()[i] = glm::vec3(0.013f * float(i), -1.7f + float(i % 5), 1000.0f / float(i + 3));
-    if (masked) {
-      std::vector<std::uint8_t> valid(f.pointCount(), 1);
-      valid[7] = 0;
-      f.setValidity(valid);
-    }
-    f.roundToHalf();
-    GpuField field(GpuField::Storage::Buffer);  // a buffer holds floats: a texture it is
+    const VectorField f = halfGrid(masked);
+    GpuField field(GpuField::Storage::Texture);
     field.upload(f);
     ASSERT_EQ(field.storage(), GpuField::Storage::Texture);
     GLint texture = 0;
@@ -70,6 +77,37 @@ TEST_F(GpuFieldTest, AHalfPrecisionGridIsASixteenBitTextureHoldingItsValuesExact
       ASSERT_EQ(glm::vec3(texels[i]), f.values()[i]) << "point " << i;
       EXPECT_EQ(texels[i].w, masked && i == 7 ? 0.0f : 1.0f);
     }
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+  }
+}
+
+// The compute backend's half grid: a storage buffer of four halves a point
+// (x, y, z, then 1 valid or 0 not), each the bits of the CPU's value.
+TEST_F(GpuFieldTest, AHalfPrecisionGridInABufferHoldsFourHalvesAPoint) {
+  for (const bool masked : {false, true}) {
+    SCOPED_TRACE(masked ? "masked" : "unmasked");
+    const VectorField f = halfGrid(masked);
+    GpuField field(GpuField::Storage::Buffer);
+    field.upload(f);
+    ASSERT_EQ(field.storage(), GpuField::Storage::HalfBuffer);
+    field.bind(GpuField::Slot::Next);
+    GLint buffer = 0;
+    glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 15, &buffer);
+    GLint64 size = 0;
+    glGetNamedBufferParameteri64v(GLuint(buffer), GL_BUFFER_SIZE, &size);
+    ASSERT_EQ(size, GLint64(f.pointCount() * 8));
+    std::vector<std::uint16_t> halves(f.pointCount() * 4);
+    glGetNamedBufferSubData(GLuint(buffer), 0, GLsizeiptr(size), halves.data());
+    for (std::size_t i = 0; i < f.pointCount(); ++i) {
+      for (int c = 0; c < 3; ++c)
+        ASSERT_EQ(halfToFloat(halves[i * 4 + std::size_t(c)]), f.values()[i][c])
+            << "point " << i << ", component " << c;
+      EXPECT_EQ(halfToFloat(halves[i * 4 + 3]), masked && i == 7 ? 0.0f : 1.0f);
+    }
+    EXPECT_TRUE(std::signbit(halfToFloat(halves[3 * 4])));  // -0 stays -0
+    // Floats again: a buffer of vec4.
+    field.upload(grid({6, 5, 4}));
+    EXPECT_EQ(field.storage(), GpuField::Storage::Buffer);
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
   }
 }

@@ -372,22 +372,26 @@ void maskCorner(VectorField& field) {
   field.setValidity(valid);
 }
 
-// field.precision = "half": the grid on the GPU as 16-bit floats (a texture
-// either backend), the CPU twin sampling the same rounded values: the same
-// particles to rounding, with and without a validity mask, and blended in time.
+// field.precision = "half": the grid on the GPU as 16-bit floats (the
+// compute backend's buffer of halves, or a texture), the CPU twin sampling
+// the same rounded values: the same particles to rounding, with and without
+// a validity mask.
 TEST_P(ParticleBackendTest, AHalfPrecisionFieldMovesParticlesAsTheCpuTwin) {
-  for (const bool masked : {false, true}) {
-    SCOPED_TRACE(masked ? "masked" : "unmasked");
-    Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, BoundaryMode::Kill);
-    auto half = std::make_shared<VectorField>(*s.field);
-    if (masked) maskCorner(*half);
-    half->roundToHalf();
-    s.field = half;
-    const Agreement a = compare(GetParam(), s, 60, 16384);
-    EXPECT_EQ(a.frames, 60u);
-    EXPECT_LT(a.maxError, 1e-4f);
-    EXPECT_GT(a.peak, 2000u);
-  }
+  for (const bool masked : {false, true})
+    for (const bool texture : {false, true}) {
+      SCOPED_TRACE(concat(masked ? "masked" : "unmasked", texture ? ", texture" : ", buffer"));
+      Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, BoundaryMode::Kill);
+      auto half = std::make_shared<VectorField>(*s.field);
+      if (masked) maskCorner(*half);
+      half->roundToHalf();
+      s.field = half;
+      GpuTuning tuning;
+      if (texture) tuning.fieldStorage = GpuTuning::FieldStorage::Texture;
+      const Agreement a = compare(GetParam(), s, 60, 16384, tuning);
+      EXPECT_EQ(a.frames, 60u);
+      EXPECT_LT(a.maxError, 1e-4f);
+      EXPECT_GT(a.peak, 2000u);
+    }
 }
 
 // A field with a validity mask (points a resampled file had no data for):

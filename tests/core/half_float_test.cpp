@@ -28,6 +28,7 @@ TEST(HalfFloat, EveryFiniteHalfConvertsBothWaysExactly) {
     ASSERT_EQ(double(value), halfValue(std::uint16_t(h))) << std::hex << h;
     ASSERT_EQ(std::signbit(value), (h & 0x8000) != 0) << std::hex << h;
     ASSERT_EQ(halfBits(value), h) << std::hex << h;
+    ASSERT_EQ(exactHalfBits(value), h) << std::hex << h;
     ASSERT_EQ(std::bit_cast<std::uint32_t>(nearestHalf(value)),
               std::bit_cast<std::uint32_t>(value));
     ++checked;
