@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/util/error.h"
+#include "core/util/half_arrays.h"
 #include "core/util/half_float.h"
 #include "core/util/parallel_for.h"
 
@@ -137,8 +138,8 @@ void GpuField::writeLayers(const VectorField& field, int firstLayer, int layers,
       field.hasValidity() ? field.validity().subspan(first, count) : field.validity();
   const auto isValid = [&](std::size_t i) { return valid.empty() || valid[i] != 0; };
   // The grid's values are halves already (VectorField::roundToHalf): their
-  // bits, a point's four written at once (the mapping may be write-combined
-  // memory, where stores of two bytes are slow).
+  // bits, eight or four at a time (core/util/half_arrays.h), a point's four
+  // stored at once (the mapping may be write-combined memory).
   const float* components = &values.data()->x;
   const auto write = [&](std::size_t begin, std::size_t end) {
     switch (layout) {
@@ -150,22 +151,14 @@ void GpuField::writeLayers(const VectorField& field, int firstLayer, int layers,
         for (std::size_t i = begin; i < end; ++i)
           static_cast<glm::vec4*>(out)[i] = glm::vec4(values[i], isValid(i) ? 1.0f : 0.0f);
         break;
-      case Layout::HalfRgb: {
-        auto* texels = static_cast<std::uint16_t*>(out);
-        for (std::size_t i = 3 * begin; i < 3 * end; ++i)
-          texels[i] = exactHalfBits(components[i]);
+      case Layout::HalfRgb:
+        halvesToBits(components + 3 * begin, 3 * (end - begin),
+                     static_cast<std::uint16_t*>(out) + 3 * begin);
         break;
-      }
-      case Layout::HalfRgba: {  // w: 1 valid, 0 not
-        auto* points = static_cast<std::uint64_t*>(out);
-        const std::uint64_t one = std::uint64_t(halfBits(1.0f)) << 48;
-        for (std::size_t i = begin; i < end; ++i)
-          points[i] = std::uint64_t(exactHalfBits(components[3 * i])) |
-                      std::uint64_t(exactHalfBits(components[3 * i + 1])) << 16 |
-                      std::uint64_t(exactHalfBits(components[3 * i + 2])) << 32 |
-                      (isValid(i) ? one : 0);
+      case Layout::HalfRgba:  // w: 1 valid, 0 not
+        packHalfPoints(components + 3 * begin, valid.empty() ? nullptr : valid.data() + begin,
+                       end - begin, static_cast<std::uint64_t*>(out) + begin);
         break;
-      }
     }
   };
   forChunks(count, write,

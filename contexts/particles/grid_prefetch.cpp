@@ -24,7 +24,7 @@ void GridPrefetch::advance(std::shared_ptr<const VectorField> wanted) {
     if (frame_ && !writing_.valid() && copiedLayers_ < layers_) copy(copyBytesPerFrame_);
     // Another frame wanted: the worker is not stopped midway, and the staging
     // buffer is rewritten only once the GPU has copied out of it.
-    if (wanted && wanted != frame_ && !writing_.valid() && stagingFree()) start(std::move(wanted));
+    if (wanted && wanted != frame_ && !writing_.valid()) start(std::move(wanted));
   } catch (const std::exception& e) {
     fail(e.what());
   }
@@ -58,43 +58,49 @@ bool GridPrefetch::takeInto(GpuField& target, const std::shared_ptr<const Vector
 }
 
 void GridPrefetch::start(std::shared_ptr<const VectorField> field) {
-  frame_ = nullptr;
-  layers_ = copiedLayers_ = 0;
   // Checked before anything is allocated: a vec4 a point at most (8 bytes in half).
   const double most = double(field->pointCount()) * (field->halfPrecision() ? 8.0 : 16.0);
   if (most > double(maxStagingBytes_))
     throw Error(concat("a step of ", field->pointCount(), " points would stage up to ", most,
                        " bytes of host memory on each GPU, beyond the ", maxStagingBytes_,
                        " it may"));
+  // Two staging buffers where both fit within the limit, else one.
+  const bool two = 2.0 * most <= double(maxStagingBytes_);
+  if (!two) staging_[1] = Staging{};
+  // Rewritten only once the GPU has copied out of it: until then, wait.
+  const int slot = freeStaging(two);
+  if (slot < 0) return;
+  frame_ = nullptr;
+  layers_ = copiedLayers_ = 0;
   layerBytes_ = grid_.prepare(*field);  // GL: on this thread, before the worker starts
   const std::size_t bytes = layerBytes_ * std::size_t(field->dims().z);
-  if (bytes != stagingBytes_) {
-    staging_ = {};  // deleting a buffer unmaps it
-    mapped_ = nullptr;
-    stagingBytes_ = 0;
-    staging_ = gl::createBuffer();
+  Staging& staging = staging_[std::size_t(slot)];
+  if (bytes != staging.bytes) {
+    staging = Staging{};  // deleting a buffer unmaps it
+    staging.buffer = gl::createBuffer();
     glGetError();
     // In host memory (CLIENT_STORAGE), mapped for good: the worker writes
     // there, and the GPU copies from it (FLUSH_EXPLICIT: written() says when).
-    glNamedBufferStorage(staging_.id(), GLsizeiptr(bytes), nullptr,
+    glNamedBufferStorage(staging.buffer.id(), GLsizeiptr(bytes), nullptr,
                          GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_CLIENT_STORAGE_BIT);
     if (glGetError() == GL_NO_ERROR)
-      mapped_ = glMapNamedBufferRange(
-          staging_.id(), 0, GLsizeiptr(bytes),
+      staging.mapped = glMapNamedBufferRange(
+          staging.buffer.id(), 0, GLsizeiptr(bytes),
           GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_FLUSH_EXPLICIT_BIT);
-    if (!mapped_) {
-      staging_ = {};
+    if (!staging.mapped) {
+      staging = Staging{};
       throw Error(concat("no memory to stage a frame of ", bytes, " bytes"));
     }
-    stagingBytes_ = bytes;
+    staging.bytes = bytes;
   }
+  using_ = slot;
   frame_ = field;
   layers_ = field->dims().z;
   // The worker only reads the frame and grid_'s layout, and writes the
   // mapping; takeInto() and the destructor wait for it before either changes.
-  writing_ = std::async(std::launch::async, [this, field = std::move(field)] {
+  writing_ = std::async(std::launch::async, [this, out = staging.mapped, field = std::move(field)] {
     const auto begin = std::chrono::steady_clock::now();
-    grid_.writeLayers(*field, 0, layers_, mapped_, kWriterThreads);
+    grid_.writeLayers(*field, 0, layers_, out, kWriterThreads);
     writeMs_ =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
   });
@@ -102,24 +108,34 @@ void GridPrefetch::start(std::shared_ptr<const VectorField> field) {
 
 void GridPrefetch::written() {
   writing_.get();  // rethrows what the worker threw
-  glFlushMappedNamedBufferRange(staging_.id(), 0, GLsizeiptr(stagingBytes_));
+  const Staging& staging = staging_[std::size_t(using_)];
+  glFlushMappedNamedBufferRange(staging.buffer.id(), 0, GLsizeiptr(staging.bytes));
 }
 
 void GridPrefetch::copy(std::size_t bytes) {
   if (copiedLayers_ >= layers_) return;
   const int layers =
       int(std::clamp<std::size_t>(bytes / layerBytes_, 1, std::size_t(layers_ - copiedLayers_)));
-  grid_.copyLayers(staging_, std::size_t(copiedLayers_) * layerBytes_, copiedLayers_, layers);
+  Staging& staging = staging_[std::size_t(using_)];
+  grid_.copyLayers(staging.buffer, std::size_t(copiedLayers_) * layerBytes_, copiedLayers_, layers);
   copiedLayers_ += layers;
-  copied_ = gl::createFence();
+  staging.copied = gl::createFence();
   glFlush();  // so that the fence signals without waiting for the frame's end
   if (copiedLayers_ == layers_) grid_.hold(frame_);
 }
 
-bool GridPrefetch::stagingFree() const {
-  if (!copied_) return true;
-  const GLenum state = glClientWaitSync(reinterpret_cast<GLsync>(copied_.handle()), 0, 0);
-  return state == GL_ALREADY_SIGNALED || state == GL_CONDITION_SATISFIED;
+int GridPrefetch::freeStaging(bool two) const {
+  const auto free = [this](int slot) {
+    const Staging& s = staging_[std::size_t(slot)];
+    if (!s.copied) return true;
+    const GLenum state = glClientWaitSync(reinterpret_cast<GLsync>(s.copied.handle()), 0, 0);
+    return state == GL_ALREADY_SIGNALED || state == GL_CONDITION_SATISFIED;
+  };
+  if (!two) return free(0) ? 0 : -1;
+  // The other one first: the last one may still be being copied out of.
+  const int other = 1 - using_;
+  if (free(other)) return other;
+  return free(using_) ? using_ : -1;
 }
 
 void GridPrefetch::fail(const std::string& what) {
@@ -131,8 +147,6 @@ void GridPrefetch::fail(const std::string& what) {
   grid_.hold(nullptr);
   layers_ = copiedLayers_ = 0;
   staging_ = {};
-  mapped_ = nullptr;
-  stagingBytes_ = 0;
 }
 
 }  // namespace sandstorm

@@ -6,13 +6,18 @@
 // mapped (no GL call off the walls' thread); once it is done, each frame the
 // walls' thread copies at most kCopyBytesPerFrame of them into a GpuField of
 // this one's own. ParticleEnvironment takes that grid when the frame becomes
-// current or next. Memory beyond the two frames being blended: one frame's
-// texels of host staging and one grid on the GPU.
+// current or next. There are two staging buffers, used in turn: the frame
+// after starts being written the moment one is taken, while the GPU still
+// copies out of the other (a series' step every other frame leaves the
+// worker two frames, not one). Memory beyond the two frames being blended:
+// two frames' texels of host staging (one for a frame beyond half of
+// maxStagingBytes) and one grid on the GPU.
 //
 // A hint only: a frame wanted before it is all on the GPU is finished on the
 // spot (takeInto()), so what the particles see never depends on the timing.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <future>
 #include <memory>
@@ -29,7 +34,8 @@ class GridPrefetch {
   // `copyBytesPerFrame`: what advance() copies to the GPU at most (a layer
   // at least); `maxStagingBytes`: the largest frame it stages (a larger one
   // ends prefetching, said once: its staging would pin that much host memory
-  // on every GPU, beside the steps the series holds).
+  // on every GPU, beside the steps the series holds; two staging buffers
+  // only where both fit within it).
   explicit GridPrefetch(GpuField::Storage preferred,
                         std::size_t copyBytesPerFrame = kCopyBytesPerFrame,
                         std::size_t maxStagingBytes = kMaxStagingBytes)
@@ -55,7 +61,7 @@ class GridPrefetch {
   const std::shared_ptr<const VectorField>& ready() const { return grid_.holds(); }
 
   // Threads the worker writes over: a few, so that the walls' thread and
-  // the series' readers keep their cores (a 256^3 frame: about 20 ms on 16).
+  // the series' readers keep their cores.
   static constexpr unsigned kWriterThreads = 4;
   // Bytes copied to the GPU in one frame at most, by default (a 256^3 frame
   // of vec4 is 268 MB).
@@ -69,15 +75,23 @@ class GridPrefetch {
   void copy(std::size_t bytes);
   // Makes the written texels visible to the GPU's copies.
   void written();
-  bool stagingFree() const;
+  // A staging buffer the GPU no longer copies out of (of two, the one not
+  // used last first; of one, the first); -1: none.
+  int freeStaging(bool two) const;
   void fail(const std::string& what);
+
+  // Host memory the GPU copies from, mapped for good.
+  struct Staging {
+    gl::Buffer buffer;
+    void* mapped = nullptr;
+    std::size_t bytes = 0;
+    gl::Sync copied;  // the last copy out of it
+  };
 
   GpuField grid_;
   std::size_t copyBytesPerFrame_, maxStagingBytes_;
-  gl::Buffer staging_;
-  void* mapped_ = nullptr;
-  std::size_t stagingBytes_ = 0;
-  gl::Sync copied_;                           // the last copy out of the staging buffer
+  std::array<Staging, 2> staging_;
+  int using_ = 0;                             // the staging frame_ is written to and copied from
   std::shared_ptr<const VectorField> frame_;  // being prepared or held by grid_
   std::future<void> writing_;
   std::size_t layerBytes_ = 0;

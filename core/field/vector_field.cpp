@@ -5,7 +5,7 @@
 #include <mutex>
 
 #include "core/util/error.h"
-#include "core/util/half_float.h"
+#include "core/util/half_arrays.h"
 #include "core/util/parallel_for.h"
 
 namespace sandstorm {
@@ -71,14 +71,13 @@ void VectorField::roundToHalf() {
                        " that 16-bit floats hold; keep field.precision = \"float\" or scale "
                        "the field's units"));
   }
-  // The range of the rounded values is found in the same pass.
+  // The range of the rounded values is found while the chunk is at hand.
   ValueRange range;
   forChunks(values.size(), [&](std::size_t begin, std::size_t end) {
+    roundToHalves(&values[begin].x, 3 * (end - begin));
     ValueRange part;
-    for (std::size_t i = begin; i < end; ++i) {
-      values[i] = {nearestHalf(values[i].x), nearestHalf(values[i].y), nearestHalf(values[i].z)};
+    for (std::size_t i = begin; i < end; ++i)
       if (valid_.empty() || valid_[i] != 0) part.add(values[i]);
-    }
     std::lock_guard lock(mutex);
     range.merge(part);
   });

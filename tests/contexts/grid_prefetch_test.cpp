@@ -13,6 +13,8 @@
 #include <thread>
 #include <vector>
 
+#include "core/util/error.h"
+#include "core/util/half_float.h"
 #include "tests/contexts/gl_test.h"
 
 namespace sandstorm {
@@ -20,7 +22,7 @@ namespace {
 
 class GridPrefetchTest : public GlTest, public ::testing::WithParamInterface<GpuField::Storage> {};
 
-std::shared_ptr<const VectorField> frame(float seed, bool masked = false) {
+std::shared_ptr<const VectorField> frame(float seed, bool masked = false, bool half = false) {
   auto f = std::make_shared<VectorField>(Box{{0, 0, 0}, {1, 2, 3}}, glm::ivec3(7, 5, 9));
   for (std::size_t i = 0; i < f->pointCount(); ++i)
     f->values()[i] = glm::vec3(seed + 0.25f * float(i), -float(i % 7), seed * float(i % 3));
@@ -29,13 +31,23 @@ std::shared_ptr<const VectorField> frame(float seed, bool masked = false) {
     valid[11] = 0;
     f->setValidity(valid);
   }
+  if (half) f->roundToHalf();
   return f;
 }
 
 // The grid's points as the GPU holds them (xyz, and the mask in w).
 std::vector<glm::vec4> readBack(const GpuField& grid, std::size_t points) {
   std::vector<glm::vec4> out(points);
-  if (grid.storage() == GpuField::Storage::Buffer) {
+  if (grid.storage() == GpuField::Storage::HalfBuffer) {  // four halves a point
+    grid.bind(GpuField::Slot::Current);
+    GLint buffer = 0;
+    glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 14, &buffer);
+    std::vector<std::uint16_t> halves(points * 4);
+    glGetNamedBufferSubData(GLuint(buffer), 0, GLsizeiptr(points * 8), halves.data());
+    for (std::size_t i = 0; i < points; ++i)
+      for (int c = 0; c < 4; ++c)
+        out[i][c] = halfToFloat(halves[i * 4 + std::size_t(c)]);
+  } else if (grid.storage() == GpuField::Storage::Buffer) {
     grid.bind(GpuField::Slot::Current);
     GLint buffer = 0;
     glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 14, &buffer);
@@ -71,20 +83,49 @@ int advanceUntilReady(GridPrefetch& prefetch, const std::shared_ptr<const Vector
 }
 
 TEST_P(GridPrefetchTest, AComingFrameIsCopiedOverSeveralFramesAndHandedOverWhole) {
-  for (const bool masked : {false, true}) {
-    SCOPED_TRACE(masked ? "masked" : "unmasked");
-    const std::shared_ptr<const VectorField> f = frame(1.5f, masked);
-    // Two z layers a frame at most: the nine layers take five frames' copies.
-    const std::size_t layerBytes = 7 * 5 * sizeof(glm::vec4);
-    GridPrefetch prefetch(GetParam(), 2 * layerBytes);
-    const int frames = advanceUntilReady(prefetch, f);
-    ASSERT_GT(frames, 0) << "never ready";
-    EXPECT_GE(frames, 5);
+  for (const bool half : {false, true})
+    for (const bool masked : {false, true}) {
+      SCOPED_TRACE(concat(masked ? "masked" : "unmasked", half ? ", half" : ""));
+      const std::shared_ptr<const VectorField> f = frame(1.5f, masked, half);
+      // Two z layers a frame at most: the nine layers take five frames' copies.
+      const std::size_t texel = GetParam() == GpuField::Storage::Buffer ? (half ? 8 : 16)
+                                : half                                  ? (masked ? 8 : 6)
+                                                                        : (masked ? 16 : 12);
+      const std::size_t layerBytes = 7 * 5 * texel;
+      GridPrefetch prefetch(GetParam(), 2 * layerBytes);
+      const int frames = advanceUntilReady(prefetch, f);
+      ASSERT_GT(frames, 0) << "never ready";
+      EXPECT_GE(frames, 5);
+      GpuField target(GetParam());
+      target.upload(*frame(-3.0f));
+      ASSERT_TRUE(prefetch.takeInto(target, f));
+      EXPECT_EQ(target.holds(), f);
+      EXPECT_EQ(target.storage(), GetParam() == GpuField::Storage::Buffer && half
+                                      ? GpuField::Storage::HalfBuffer
+                                      : GetParam());
+      expectHolds(target, *f);
+      EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    }
+}
+
+// A series: each frame taken while the next is wanted, so the two staging
+// buffers take turns; every frame handed over holds its own values.
+TEST_P(GridPrefetchTest, FramesOneAfterAnotherAreEachHandedOverWithTheirOwnValues) {
+  for (const bool half : {false, true}) {
+    SCOPED_TRACE(half ? "half" : "float");
+    std::vector<std::shared_ptr<const VectorField>> frames;
+    for (int i = 0; i < 6; ++i)
+      frames.push_back(frame(float(i) + 0.5f, i % 2 == 1, half));
+    GridPrefetch prefetch(GetParam(), 1);  // a layer a frame: some are finished on the spot
     GpuField target(GetParam());
-    target.upload(*frame(-3.0f));
-    ASSERT_TRUE(prefetch.takeInto(target, f));
-    EXPECT_EQ(target.holds(), f);
-    expectHolds(target, *f);
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+      prefetch.advance(frames[i]);
+      prefetch.advance(frames[i]);
+      ASSERT_TRUE(prefetch.takeInto(target, frames[i])) << "frame " << i;
+      // The next is wanted at once: it starts in the other staging buffer.
+      if (i + 1 < frames.size()) prefetch.advance(frames[i + 1]);
+      expectHolds(target, *frames[i]);
+    }
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
   }
 }

@@ -372,47 +372,48 @@ void maskCorner(VectorField& field) {
   field.setValidity(valid);
 }
 
+// The scenario's particles on the GPU against the CPU twin for 60 frames,
+// the grid kept in the backend's buffer and as a texture.
+void expectAgreementEitherStorage(const std::string& backend, const Scenario& s) {
+  for (const bool texture : {false, true}) {
+    SCOPED_TRACE(texture ? "texture" : "buffer");
+    GpuTuning tuning;
+    if (texture) tuning.fieldStorage = GpuTuning::FieldStorage::Texture;
+    const Agreement a = compare(backend, s, 60, 16384, tuning);
+    EXPECT_EQ(a.frames, 60u);
+    EXPECT_LT(a.maxError, 1e-4f);
+    EXPECT_GT(a.peak, 2000u);
+  }
+}
+
 // field.precision = "half": the grid on the GPU as 16-bit floats (the
 // compute backend's buffer of halves, or a texture), the CPU twin sampling
 // the same rounded values: the same particles to rounding, with and without
 // a validity mask.
 TEST_P(ParticleBackendTest, AHalfPrecisionFieldMovesParticlesAsTheCpuTwin) {
-  for (const bool masked : {false, true})
-    for (const bool texture : {false, true}) {
-      SCOPED_TRACE(concat(masked ? "masked" : "unmasked", texture ? ", texture" : ", buffer"));
-      Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, BoundaryMode::Kill);
-      auto half = std::make_shared<VectorField>(*s.field);
-      if (masked) maskCorner(*half);
-      half->roundToHalf();
-      s.field = half;
-      GpuTuning tuning;
-      if (texture) tuning.fieldStorage = GpuTuning::FieldStorage::Texture;
-      const Agreement a = compare(GetParam(), s, 60, 16384, tuning);
-      EXPECT_EQ(a.frames, 60u);
-      EXPECT_LT(a.maxError, 1e-4f);
-      EXPECT_GT(a.peak, 2000u);
-    }
+  for (const bool masked : {false, true}) {
+    SCOPED_TRACE(masked ? "masked" : "unmasked");
+    Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, BoundaryMode::Kill);
+    auto half = std::make_shared<VectorField>(*s.field);
+    if (masked) maskCorner(*half);
+    half->roundToHalf();
+    s.field = half;
+    expectAgreementEitherStorage(GetParam(), s);
+  }
 }
 
 // A field with a validity mask (points a resampled file had no data for):
 // the same particles die (kill) or stop (clamp) on the GPU as on the CPU,
 // whether the grid is a storage buffer (w) or a texture (alpha).
 TEST_P(ParticleBackendTest, CellsOutsideTheDataAreOutsideTheFieldOnBothSides) {
-  for (const BoundaryMode mode : {BoundaryMode::Kill, BoundaryMode::Clamp})
-    for (const bool texture : {false, true}) {
-      SCOPED_TRACE(concat(mode == BoundaryMode::Kill ? "kill" : "clamp",
-                          texture ? ", texture" : ", buffer"));
-      Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, mode);
-      auto masked = std::make_shared<VectorField>(*s.field);
-      maskCorner(*masked);
-      s.field = masked;
-      GpuTuning tuning;
-      if (texture) tuning.fieldStorage = GpuTuning::FieldStorage::Texture;
-      const Agreement a = compare(GetParam(), s, 60, 16384, tuning);
-      EXPECT_EQ(a.frames, 60u);
-      EXPECT_LT(a.maxError, 1e-4f);
-      EXPECT_GT(a.peak, 2000u);
-    }
+  for (const BoundaryMode mode : {BoundaryMode::Kill, BoundaryMode::Clamp}) {
+    SCOPED_TRACE(mode == BoundaryMode::Kill ? "kill" : "clamp");
+    Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, mode);
+    auto masked = std::make_shared<VectorField>(*s.field);
+    maskCorner(*masked);
+    s.field = masked;
+    expectAgreementEitherStorage(GetParam(), s);
+  }
 }
 
 TEST_P(ParticleBackendTest, MaximumCapsTheLiveCountAndCapacityTheBuffer) {
