@@ -5,6 +5,7 @@
 #include "core/util/half_float.h"
 
 #if defined(__x86_64__) || defined(__i386__)
+#include <cpuid.h>
 #include <immintrin.h>
 #define SANDSTORM_F16C 1
 #endif
@@ -29,8 +30,18 @@ std::uint64_t packScalar(const float* xyz, bool valid) {
 }
 
 #ifdef SANDSTORM_F16C
+// F16C's instructions, and AVX's registers with the system saving them
+// (XCR0's SSE and AVX bits): CPUID asked directly, as GCC's and Clang's
+// __builtin_cpu_supports do not both know "f16c".
 bool hasF16c() {
-  static const bool has = __builtin_cpu_supports("f16c") && __builtin_cpu_supports("avx");
+  static const bool has = [] {
+    unsigned eax = 0, ebx = 0, ecx = 0, edx = 0;
+    if (!__get_cpuid(1, &eax, &ebx, &ecx, &edx)) return false;
+    if ((ecx & bit_OSXSAVE) == 0 || (ecx & bit_AVX) == 0 || (ecx & bit_F16C) == 0) return false;
+    unsigned low = 0, high = 0;
+    __asm__("xgetbv" : "=a"(low), "=d"(high) : "c"(0));
+    return (low & 6u) == 6u;
+  }();
   return has;
 }
 
