@@ -108,7 +108,7 @@ namespace {
 // name) each stop the run with an error naming the path; the paths that can
 // be tried first are tried before anything runs.
 TEST(CommandLine, OutputsThatCannotBeWrittenAreClearErrors) {
-  const auto dir = test::scratchDir("outputs");
+  const auto dir = test::scratchDir("unwritable-outputs");
   std::filesystem::create_directories(dir / "shots");
   std::filesystem::create_symlink("/dev/full", dir / "full.vtp");
   std::filesystem::create_symlink("/dev/full", dir / "full.session");
