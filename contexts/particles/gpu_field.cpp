@@ -14,7 +14,6 @@
 
 #include "core/util/error.h"
 #include "core/util/half_arrays.h"
-#include "core/util/half_float.h"
 #include "core/util/parallel_for.h"
 
 namespace sandstorm {

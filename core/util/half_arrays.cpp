@@ -1,7 +1,5 @@
 #include "core/util/half_arrays.h"
 
-#include <cstring>
-
 #include "core/util/half_float.h"
 
 #if defined(__x86_64__) || defined(__i386__)
