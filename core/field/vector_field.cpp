@@ -66,10 +66,7 @@ void VectorField::roundToHalf() {
     int c = 0;
     while (std::abs(values[i][c]) <= kHalfMax)
       ++c;
-    throw Error(concat("field.precision = \"half\": point ", i, " has the component ", values[i][c],
-                       ", beyond the ", kHalfMax,
-                       " that 16-bit floats hold; keep field.precision = \"float\" or scale "
-                       "the field's units"));
+    throw beyondHalf(i, values[i][c]);
   }
   // The range of the rounded values is found while the chunk is at hand.
   ValueRange range;
@@ -83,6 +80,13 @@ void VectorField::roundToHalf() {
   });
   half_ = true;
   range_ = range;
+}
+
+Error VectorField::beyondHalf(std::size_t point, float value) {
+  return Error(concat("field.precision = \"half\": point ", point, " has the component ", value,
+                      ", beyond the ", kHalfMax,
+                      " that 16-bit floats hold; keep field.precision = \"float\" or scale "
+                      "the field's units"));
 }
 
 glm::vec3 VectorField::pointPosition(int i, int j, int k) const {

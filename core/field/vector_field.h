@@ -28,6 +28,7 @@
 #include "core/field/box.h"
 #include "core/field/value_range.h"
 #include "core/field/vector_values.h"
+#include "core/util/error.h"
 
 namespace sandstorm {
 
@@ -109,6 +110,12 @@ class VectorField {
   void roundToHalf();
   bool halfPrecision() const { return half_; }
   static constexpr float kHalfMax = 65504.0f;
+  // For a reader that rounded every component with roundToHalves as it
+  // checked them (one pass over a series' step instead of three): marks the
+  // values halves without reading them again.
+  void markRoundedToHalf() { half_ = true; }
+  // The error roundToHalf throws for component `value` of point `point`.
+  static Error beyondHalf(std::size_t point, float value);
 
   // The speed and velocity range over the valid points, in the grid's own
   // axes (FieldRange::of starts from it), when remembered by whoever last

@@ -133,7 +133,8 @@ VectorField loadField(const std::filesystem::path& path, const LoadOptions& opti
   try {
     VectorField field = dispatch(path, format, options, r);
     if (r.format.empty()) r.format = describe(format);
-    if (options.halfPrecision) field.roundToHalf();
+    // A .vti's floats are rounded as they are checked (vtk_field_extractor).
+    if (options.halfPrecision && !field.halfPrecision()) field.roundToHalf();
     log::debug("loaded ", file, " (", r.format, "): ", field.dims().x, "x", field.dims().y, "x",
                field.dims().z, " points");
     return field;

@@ -2,9 +2,13 @@
 
 #include <algorithm>
 #include <atomic>
+#include <bit>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <mutex>
 #include <optional>
+#include <type_traits>
 
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -25,6 +29,7 @@
 #include "core/io/vector_array_choice.h"
 #include "core/io/vtk_blocks.h"
 #include "core/util/error.h"
+#include "core/util/half_arrays.h"
 #include "core/util/log.h"
 #include "core/util/parallel_for.h"
 
@@ -59,32 +64,85 @@ const std::uint8_t* byteMaskOf(vtkDataArray* mask) {
 // Copies `n` x y z tuples into `out` over the cores, zeroing non-finite ones
 // and those `valid` marks invalid; counts the non-finite ones and gathers the
 // range of the valid ones as copied (VectorField::rememberRange). `out` may be
-// `in` itself (floats zeroed in place).
+// `in` itself (floats zeroed in place). With `half`, every component is also
+// rounded to the nearest half (field.precision = "half") in the same pass, a
+// block at a time while it is in the cache, and the range is the rounded
+// values'; a component beyond what a half holds stops its chunk and is
+// reported (beyond: the first such point), and `out` is then left partly
+// rounded, for a caller that drops it.
 struct Copied {
   std::size_t nonFinite = 0;
   ValueRange range;
+  std::size_t beyond = SIZE_MAX;
+  float beyondValue = 0.0f;
 };
+// Whether each of n floats is finite with |value| at most `limit` (its bits
+// with the sign cleared compare as the magnitudes do, NaN and Inf above every
+// finite float): a branch-free pass the compiler vectorizes.
+bool allWithin(const float* values, std::size_t n, float limit) {
+  const std::uint32_t limitBits = std::bit_cast<std::uint32_t>(limit);
+  std::uint32_t largest = 0;
+  for (std::size_t k = 0; k < n; ++k)
+    largest = std::max(largest, std::bit_cast<std::uint32_t>(values[k]) & 0x7fffffffu);
+  return largest <= limitBits;
+}
+
 template <class T>
-Copied copyContiguous(const T* in, const std::uint8_t* valid, glm::vec3* out, std::size_t n) {
+Copied copyContiguous(const T* in, const std::uint8_t* valid, glm::vec3* out, std::size_t n,
+                      bool half = false) {
   const bool inPlace = static_cast<const void*>(in) == static_cast<const void*>(out);
+  constexpr std::size_t kBlock = 2048;  // points: 24 KiB, a rounded block stays in L1/L2
   std::mutex mutex;
   Copied all;
   forChunks(n, [&](std::size_t begin, std::size_t end) {
     Copied part;
-    for (std::size_t i = begin; i < end; ++i) {
-      const glm::vec3 v{float(in[3 * i]), float(in[3 * i + 1]), float(in[3 * i + 2])};
-      const bool finite = std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
-      const bool masked = valid && valid[i] == 0;
-      part.nonFinite += finite || masked ? 0 : 1;
-      const glm::vec3 kept = finite && !masked ? v : glm::vec3(0.0f);
-      if (!masked) part.range.add(kept);
-      // In place, a kept vector is not written back: a series' step is
-      // 200 MB, and rewriting it all would double this pass's memory traffic.
-      if (!inPlace || !finite || masked) out[i] = kept;
+    for (std::size_t block = begin; block < end && part.beyond == SIZE_MAX; block += kBlock) {
+      const std::size_t blockEnd = std::min(end, block + kBlock);
+      // The usual block, floats in place with no mask and nothing to zero
+      // or refuse: checked in one vectorized pass, nothing written back but
+      // the rounding.
+      if constexpr (std::is_same_v<T, float>) {
+        const float limit = half ? VectorField::kHalfMax : std::numeric_limits<float>::max();
+        if (inPlace && !valid && allWithin(&out[block].x, 3 * (blockEnd - block), limit)) {
+          if (half) roundToHalves(&out[block].x, 3 * (blockEnd - block));
+          for (std::size_t i = block; i < blockEnd; ++i)
+            part.range.add(out[i]);
+          continue;
+        }
+      }
+      for (std::size_t i = block; i < blockEnd; ++i) {
+        const glm::vec3 v{float(in[3 * i]), float(in[3 * i + 1]), float(in[3 * i + 2])};
+        const bool finite = std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+        const bool masked = valid && valid[i] == 0;
+        part.nonFinite += finite || masked ? 0 : 1;
+        const glm::vec3 kept = finite && !masked ? v : glm::vec3(0.0f);
+        if (half) {
+          for (int c = 0; c < 3; ++c)
+            if (std::abs(kept[c]) > VectorField::kHalfMax && part.beyond == SIZE_MAX) {
+              part.beyond = i;
+              part.beyondValue = kept[c];
+            }
+          out[i] = kept;
+        } else {
+          if (!masked) part.range.add(kept);
+          // In place, a kept vector is not written back: a series' step is
+          // 200 MB, and rewriting it all would double this pass's memory traffic.
+          if (!inPlace || !finite || masked) out[i] = kept;
+        }
+      }
+      if (half && part.beyond == SIZE_MAX) {
+        roundToHalves(&out[block].x, 3 * (blockEnd - block));
+        for (std::size_t i = block; i < blockEnd; ++i)
+          if (!valid || valid[i] != 0) part.range.add(out[i]);
+      }
     }
     std::lock_guard lock(mutex);
     all.nonFinite += part.nonFinite;
     all.range.merge(part.range);
+    if (part.beyond < all.beyond) {
+      all.beyond = part.beyond;
+      all.beyondValue = part.beyondValue;
+    }
   });
   return all;
 }
@@ -126,14 +184,17 @@ std::size_t copyVectors(vtkDataArray* array, vtkDataArray* mask, std::vector<glm
 // vectors) is kept as the grid's values instead of copied, so that a grid is
 // held once: its non-finite tuples and those `mask` marks invalid are zeroed
 // in place. nullopt for any other array (then copied: copyVectors).
-std::optional<VectorValues> adoptVectors(vtkDataArray* array, vtkDataArray* mask,
+// With `half`, the values are rounded to halves in the same pass (Error for
+// a component beyond what a half holds).
+std::optional<VectorValues> adoptVectors(vtkDataArray* array, vtkDataArray* mask, bool half,
                                          std::size_t& nonFinite, ValueRange& range) {
   auto* f = vtkFloatArray::FastDownCast(array);
   const std::uint8_t* valid = byteMaskOf(mask);
   if (!f || f->GetNumberOfComponents() != 3 || (mask && !valid)) return std::nullopt;
   const std::size_t n = std::size_t(f->GetNumberOfTuples());
   auto* values = reinterpret_cast<glm::vec3*>(f->GetPointer(0));
-  const Copied copied = copyContiguous(f->GetPointer(0), valid, values, n);
+  const Copied copied = copyContiguous(f->GetPointer(0), valid, values, n, half);
+  if (copied.beyond != SIZE_MAX) throw VectorField::beyondHalf(copied.beyond, copied.beyondValue);
   nonFinite = copied.nonFinite;
   range = copied.range;
   // The array lives on in the grid; VTK counts its references atomically.
@@ -229,8 +290,10 @@ void reportNonFinite(std::size_t count, const std::filesystem::path& path, const
               "' are NaN or Inf; replaced by zero");
 }
 
+// With `half` (field.precision = "half"), a float array is rounded to halves
+// as it is checked: the field comes back marked half.
 VectorField copyImage(vtkImageData* image, const std::string& name,
-                      const std::filesystem::path& path, LoadReport& report) {
+                      const std::filesystem::path& path, bool half, LoadReport& report) {
   const std::string file = path.string();
   int extent[6];
   image->GetExtent(extent);
@@ -261,7 +324,8 @@ VectorField copyImage(vtkImageData* image, const std::string& name,
   if (mask && mask->GetNumberOfTuples() != image->GetNumberOfPoints()) mask = nullptr;
   std::size_t nonFinite = 0;
   std::optional<ValueRange> range{ValueRange{}};
-  std::optional<VectorValues> values = adoptVectors(array, mask, nonFinite, *range);
+  std::optional<VectorValues> values = adoptVectors(array, mask, half, nonFinite, *range);
+  const bool rounded = half && values;
   if (!values) {
     range.reset();
     std::vector<glm::vec3> copied;
@@ -272,6 +336,7 @@ VectorField copyImage(vtkImageData* image, const std::string& name,
   VectorField field(bounds, dims, std::move(*values));
   field.setValidity(validityOf(mask));
   if (range) field.rememberRange(*range);  // found in the check, over the same valid points
+  if (rounded) field.markRoundedToHalf();
   copyScalars(image->GetPointData(), mask, image->GetNumberOfPoints(), path, field, report);
   noteOutside(field, path, report);
   return field;
@@ -334,7 +399,7 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
   const bool structured = single && report.sourceDims != glm::ivec3(0);
   const bool keep = options.resolution == glm::ivec3(0) || options.resolution == report.sourceDims;
   if (auto* image = vtkImageData::SafeDownCast(used.front().data); single && image && keep)
-    return copyImage(image, choice.name, path, report);
+    return copyImage(image, choice.name, path, options.halfPrecision, report);
 
   // The scalar arrays every block carries travel with the vectors.
   std::vector<std::string> scalars;
