@@ -1,11 +1,13 @@
 #include "core/sim/frame_packet_codec.h"
 
+#include <algorithm>
+#include <array>
 #include <optional>
 #include <string>
 
 #include "core/util/byte_reader.h"
 #include "core/util/byte_writer.h"
-#include "core/util/half_float.h"
+#include "core/util/half_arrays.h"
 #include "core/util/hash.h"
 
 namespace sandstorm {
@@ -17,6 +19,8 @@ constexpr std::uint32_t kFieldMagic = 0x46565353;   // "SSVF"
 // 5: field range; 6: vorticity; 7: colour grids by name, grids' scalar arrays.
 constexpr std::uint16_t kVersion = 12;
 constexpr std::uint32_t kMaxScalarArrays = 256;
+// Components a half grid is converted by at a time (on the stack: 8 KiB).
+constexpr std::size_t kHalfBlock = 4096;
 
 // Limits far above any real packet, so a corrupt count cannot make us allocate gigabytes.
 constexpr std::uint32_t kMaxChanges = 4096;
@@ -274,8 +278,13 @@ std::vector<std::byte> encodeField(const VectorField& grid) {
   // A half-precision grid travels as its 16-bit floats: half the bytes, exactly.
   w.boolean(grid.halfPrecision());
   if (grid.halfPrecision()) {
-    for (const glm::vec3& v : values) {
-      w.u16(halfBits(v.x)), w.u16(halfBits(v.y)), w.u16(halfBits(v.z));
+    // Converted a block at a time (core/util/half_arrays.h), not one by one.
+    const float* components = &values.data()->x;
+    std::array<std::uint16_t, kHalfBlock> bits;
+    for (std::size_t i = 0; i < 3 * values.size(); i += kHalfBlock) {
+      const std::size_t n = std::min(kHalfBlock, 3 * values.size() - i);
+      halvesToBits(components + i, n, bits.data());
+      w.u16s(std::span<const std::uint16_t>(bits.data(), n));
     }
   } else {
     w.f32s(std::span<const float>(&values.data()->x, values.size() * 3));
@@ -318,11 +327,16 @@ VectorField decodeField(std::span<const std::byte> bytes, std::string_view name)
                             "x", dims.y, "x", dims.z, ", got ", r.remaining()));
   std::vector<glm::vec3> values(points);
   if (half) {
-    for (glm::vec3& v : values) {
-      for (int c = 0; c < 3; ++c)
-        v[c] = halfToFloat(r.u16("values"));
-      if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z))
-        r.fail("values", "a half-precision vector that is not finite");
+    float* components = &values.data()->x;
+    std::array<std::uint16_t, kHalfBlock> bits;
+    for (std::size_t i = 0; i < 3 * values.size(); i += kHalfBlock) {
+      const std::size_t n = std::min(kHalfBlock, 3 * values.size() - i);
+      r.u16s(std::span<std::uint16_t>(bits.data(), n), "values");
+      for (std::size_t k = 0; k < n; ++k)
+        if ((bits[k] & 0x7c00u) == 0x7c00u)  // the largest exponent: infinity or NaN
+          r.fail("values",
+                 concat("component ", i + k, ": a half-precision vector that is not finite"));
+      bitsToFloats(bits.data(), n, components + i);
     }
   } else {
     r.f32s(std::span<float>(&values.data()->x, values.size() * 3), "values");
@@ -352,7 +366,7 @@ VectorField decodeField(std::span<const std::byte> bytes, std::string_view name)
   r.finish();
   try {
     VectorField field(bounds, dims, std::move(values));
-    if (half) field.roundToHalf();  // exact already: marks it half
+    if (half) field.markRoundedToHalf();  // halves by construction, each finite
     field.setValidity(std::move(valid));
     for (VectorField::Scalars& a : scalars)
       field.addScalars(std::move(a.name), std::move(a.values));

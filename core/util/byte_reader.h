@@ -56,6 +56,17 @@ class ByteReader {
     }
   }
 
+  void u16s(std::span<std::uint16_t> out, std::string_view what) {
+    const std::span<const std::byte> b = raw(out.size() * sizeof(std::uint16_t), what);
+    if constexpr (std::endian::native == std::endian::little) {
+      std::memcpy(out.data(), b.data(), b.size());
+    } else {
+      ByteReader inner(b, name_);
+      for (std::uint16_t& v : out)
+        v = inner.u16(what);
+    }
+  }
+
   std::size_t offset() const { return offset_; }
   std::size_t remaining() const { return bytes_.size() - offset_; }
   // Throws unless every byte was read: trailing bytes mean a mismatched format.

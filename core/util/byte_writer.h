@@ -40,6 +40,16 @@ class ByteWriter {
     }
   }
 
+  // 16-bit words in bulk (half-precision grids), as f32s.
+  void u16s(std::span<const std::uint16_t> values) {
+    if constexpr (std::endian::native == std::endian::little) {
+      raw(std::as_bytes(values));
+    } else {
+      for (const std::uint16_t v : values)
+        u16(v);
+    }
+  }
+
   std::size_t size() const { return bytes_.size(); }
   const std::vector<std::byte>& bytes() const { return bytes_; }
   std::vector<std::byte> take() { return std::move(bytes_); }

@@ -21,6 +21,11 @@ void bitsScalar(const float* values, std::size_t n, std::uint16_t* out) {
     out[i] = exactHalfBits(values[i]);
 }
 
+void floatsScalar(const std::uint16_t* bits, std::size_t n, float* out) {
+  for (std::size_t i = 0; i < n; ++i)
+    out[i] = halfToFloat(bits[i]);
+}
+
 std::uint64_t packScalar(const float* xyz, bool valid) {
   static const std::uint64_t one = std::uint64_t(halfBits(1.0f)) << 48;
   return std::uint64_t(exactHalfBits(xyz[0])) | std::uint64_t(exactHalfBits(xyz[1])) << 16 |
@@ -61,6 +66,15 @@ __attribute__((target("avx,f16c"))) void bitsF16c(const float* values, std::size
   bitsScalar(values + i, n - i, out + i);
 }
 
+__attribute__((target("avx,f16c"))) void floatsF16c(const std::uint16_t* bits, std::size_t n,
+                                                    float* out) {
+  std::size_t i = 0;
+  for (; i + 8 <= n; i += 8)
+    _mm256_storeu_ps(out + i,
+                     _mm256_cvtph_ps(_mm_loadu_si128(reinterpret_cast<const __m128i*>(bits + i))));
+  floatsScalar(bits + i, n - i, out + i);
+}
+
 __attribute__((target("avx,f16c,sse4.1"))) void packF16c(const float* xyz,
                                                          const std::uint8_t* valid,
                                                          std::size_t points, std::uint64_t* out) {
@@ -92,6 +106,13 @@ void halvesToBits(const float* values, std::size_t n, std::uint16_t* out) {
   if (hasF16c()) return bitsF16c(values, n, out);
 #endif
   bitsScalar(values, n, out);
+}
+
+void bitsToFloats(const std::uint16_t* bits, std::size_t n, float* out) {
+#ifdef SANDSTORM_F16C
+  if (hasF16c()) return floatsF16c(bits, n, out);
+#endif
+  floatsScalar(bits, n, out);
 }
 
 void packHalfPoints(const float* xyz, const std::uint8_t* valid, std::size_t points,

@@ -20,6 +20,9 @@ void roundToHalves(float* values, std::size_t n);
 // n floats that are halves already (roundToHalves' results) as their bits.
 void halvesToBits(const float* values, std::size_t n, std::uint16_t* out);
 
+// n halves' bits as the floats they stand for (exactly, as halfToFloat).
+void bitsToFloats(const std::uint16_t* bits, std::size_t n, float* out);
+
 // Points of three floats that are halves already (x, y, z, x fastest) as
 // four halves each, one 64-bit word a point: x, y, z from the lowest bits
 // up, then 1 where valid[i] is not 0 (or valid is null) and 0 where it is:

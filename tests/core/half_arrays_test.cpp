@@ -54,6 +54,24 @@ TEST(HalfArrays, EveryHalfGivesItsOwnBits) {
     ASSERT_EQ(bits[i], exactHalfBits(halves[i])) << "half " << i << ": " << halves[i];
 }
 
+TEST(HalfArrays, EveryHalfsBitsGiveTheFloatHalfToFloatGives) {
+  // All 65536 patterns, infinities and NaNs included, and a tail of seven.
+  std::vector<std::uint16_t> bits(65536 + 7);
+  for (std::size_t i = 0; i < bits.size(); ++i)
+    bits[i] = std::uint16_t(i);
+  std::vector<float> floats(bits.size() + 1, 12345.0f);
+  bitsToFloats(bits.data(), bits.size(), floats.data());
+  for (std::size_t i = 0; i < bits.size(); ++i) {
+    const float expected = halfToFloat(bits[i]);
+    if (std::isnan(expected))
+      ASSERT_TRUE(std::isnan(floats[i])) << "bits " << bits[i];
+    else
+      ASSERT_EQ(std::bit_cast<std::uint32_t>(floats[i]), std::bit_cast<std::uint32_t>(expected))
+          << "bits " << bits[i];
+  }
+  EXPECT_EQ(floats.back(), 12345.0f);  // nothing written beyond them
+}
+
 TEST(HalfArrays, PointsPackAsFourHalvesWithTheMaskLast) {
   const std::vector<float> halves = everyHalf();
   const std::size_t points = halves.size() / 3;  // 21162 points
