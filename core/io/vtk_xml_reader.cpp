@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "core/field/vector_field.h"
+#include "core/io/huge_page_image_reader.h"
 #include "core/io/vtk_cell_check.h"
 #include "core/io/vtk_message_trap.h"
 #include "core/io/vtk_progress.h"
@@ -106,7 +107,7 @@ vtkSmartPointer<vtkDataSet> readVtkXml(const std::filesystem::path& path, FieldF
                                        const LoadOptions& options) {
   switch (format) {
     case FieldFormat::VtkImageData:
-      return run<vtkXMLImageDataReader>(path, options, "VTK XML image data");
+      return run<HugePageImageReader>(path, options, "VTK XML image data");
     case FieldFormat::VtkRectilinearGrid:
       return run<vtkXMLRectilinearGridReader>(path, options, "VTK XML rectilinear grid");
     case FieldFormat::VtkStructuredGrid:
