@@ -97,9 +97,8 @@ FieldSource watchedField(const std::filesystem::path& path, const FieldSpec& spe
         FieldSource out;
         LoadReport report;
         VectorField loaded = loadField(step.file, options, &report);
-        // The pair and the step uploaded ahead: three grids on the GPU.
         LoadOptions stepOptions = options;
-        if (chooseHalf(loaded, 3, options, report)) stepOptions.halfPrecision = true;
+        if (chooseHalf(loaded, kSeriesGrids, options, report)) stepOptions.halfPrecision = true;
         for (const std::string& note : report.notes)
           log::info(path.string(), ": ", note);
         auto field = std::make_shared<const VectorField>(std::move(loaded));

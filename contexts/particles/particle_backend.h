@@ -47,6 +47,12 @@ class ParticleBackend {
   // the field again. False where this backend cannot read one (the field's
   // grid kept as a texture: transform feedback, or too large a grid).
   virtual bool setFieldBuffer(std::uint32_t) { return false; }
+  // Whether step() blends a time-varying field's pair point by point into
+  // one grid before sampling it (ParticleComputeUpdate, where the grids are
+  // buffers: FieldPairBlend) rather than sampling both and blending the
+  // samples; the CPU twin must do the same (PhysicsInputs::pointwiseBlend).
+  // Asked after setField.
+  virtual bool blendsPairPointwise(const ParticleState&) const { return false; }
   virtual void step(const SimStep& step, const ParticleState& state) = 0;
   virtual void clear() = 0;
   // Grows the buffers, keeping every live particle in place. Waits for the GPU.

@@ -148,6 +148,8 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   const std::size_t count2 = updates_ >= 2 ? counts_.after(updates_ - 2) : 0;
   lateCount_ = count2;
   const std::size_t limit = std::min(std::size_t(std::max(state.sim.maximum, 0)), capacity_);
+  // A time-varying field's pair blended into one grid first (FieldPairBlend).
+  environment_.blendPair(state, step.fieldBlend);
   SimBlockInputs inputs;
   environment_.describe(inputs);
   inputs.state = &state;

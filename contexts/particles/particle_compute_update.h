@@ -81,6 +81,9 @@ class ParticleComputeUpdate final : public ParticleBackend {
   std::vector<std::vector<glm::vec3>> readBackTrails() const;
   double lastFieldUploadMs() const override { return environment_.lastUploadMs(); }
   const char* name() const override { return "compute"; }
+  bool blendsPairPointwise(const ParticleState& state) const override {
+    return environment_.blendsPair(state);
+  }
 
  private:
   struct BufferSet {

@@ -38,10 +38,27 @@ void ParticleEnvironment::setTerrain(std::shared_ptr<const HeightMap> terrain) {
   if (terrain_) terrainTexture_.upload(*terrain_);
 }
 
+bool ParticleEnvironment::blendsPair(const ParticleState& state) const {
+  return field_ && nextField_ && fieldBuffer_ == 0 && !sparse_.holds() &&
+         !(state.field.mode == FieldMode::Equation && equation_.equation()) &&
+         state.field.mode != FieldMode::Expression &&
+         fieldGrid_.storage() != GpuField::Storage::Texture &&
+         nextFieldGrid_.storage() == fieldGrid_.storage() && fieldGrid_.holds() == field_ &&
+         nextFieldGrid_.holds() == nextField_;
+}
+
+bool ParticleEnvironment::blendPair(const ParticleState& state, float weight) {
+  blended_ = blendsPair(state);
+  if (blended_) pairBlend_.blend(fieldGrid_, nextFieldGrid_, weight);
+  return blended_;
+}
+
 void ParticleEnvironment::describe(SimBlockInputs& inputs) const {
   inputs.field = field_.get();
-  // The live flow's grid has no next frame.
-  inputs.nextField = fieldBuffer_ != 0 ? nullptr : nextField_.get();
+  // The live flow's grid has no next frame; a blended pair is one grid
+  // whose validity is both frames' (blendedNext: their masks count).
+  inputs.nextField = fieldBuffer_ != 0 || blended_ ? nullptr : nextField_.get();
+  inputs.blendedNext = blended_ ? nextField_.get() : nullptr;
   inputs.sparse = fieldBuffer_ != 0 || !field_ ? nullptr : sparse_.holds().get();
   inputs.placement = placement_;
   inputs.terrain = terrain_.get();
@@ -51,6 +68,10 @@ FieldRead ParticleEnvironment::bind(const ParticleState& state) const {
   if (terrain_) terrainTexture_.bind(1);
   if (fieldBuffer_ != 0 && field_ && readsBuffers()) {
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 14, fieldBuffer_);
+    return FieldRead::Grid;
+  }
+  if (blended_) {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 14, pairBlend_.buffer());
     return FieldRead::Grid;
   }
   if (field_) fieldGrid_.bind(GpuField::Slot::Current);

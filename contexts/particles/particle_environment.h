@@ -8,6 +8,7 @@
 #include <memory>
 
 #include "contexts/particles/field_equation_buffer.h"
+#include "contexts/particles/field_pair_blend.h"
 #include "contexts/particles/gpu_field.h"
 #include "contexts/particles/gpu_sparse_field.h"
 #include "contexts/particles/grid_prefetch.h"
@@ -67,6 +68,17 @@ class ParticleEnvironment {
   bool readsBuffers() const { return fieldGrid_.storage() != GpuField::Storage::Texture; }
   std::uint32_t fieldBuffer() const { return fieldBuffer_; }
 
+  // Before describe() and bind(), for an update that samples a time-varying
+  // field's grids: blends the pair into one grid (FieldPairBlend) where both
+  // are kept in buffers and the update reads the grid, so that describe()
+  // and bind() give the blend as the field, with no next frame. False, and
+  // the pair as before, otherwise (no next frame, textures, the equation, a
+  // sparse grid, the live flow's buffer). `weight`: SimStep::fieldBlend.
+  bool blendPair(const ParticleState& state, float weight);
+  // Whether blendPair would blend now (the CPU twin then samples the blend:
+  // PhysicsInputs::pointwiseBlend).
+  bool blendsPair(const ParticleState& state) const;
+
   // The environment's part of an update's inputs.
   void describe(SimBlockInputs& inputs) const;
   // Binds the field's grids (GpuField::bind) or its sparse grid, the terrain
@@ -94,6 +106,8 @@ class ParticleEnvironment {
   FieldEquationBuffer equation_;
   GpuSparseField sparse_;
   std::uint32_t fieldBuffer_ = 0;
+  FieldPairBlend pairBlend_;
+  bool blended_ = false;  // the last blendPair blended
 };
 
 }  // namespace sandstorm

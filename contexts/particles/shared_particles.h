@@ -48,6 +48,9 @@ class SharingBackend final : public ParticleBackend {
   std::vector<Particle> readBack() const override { return inner_->readBack(); }
   double lastFieldUploadMs() const override { return inner_->lastFieldUploadMs(); }
   const char* name() const override { return inner_->name(); }
+  bool blendsPairPointwise(const ParticleState& state) const override {
+    return inner_->blendsPairPointwise(state);
+  }
 
  private:
   std::unique_ptr<ParticleBackend> inner_;

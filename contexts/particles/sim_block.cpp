@@ -23,8 +23,9 @@ int fillSimBlock(const SimBlockInputs& in, SimBlock& b) {
     b.sparseIndexMin = glm::vec4(glm::vec3(in.sparse->indexMin() - 2), 0.0f);
     b.sparseIndexMax = glm::vec4(glm::vec3(in.sparse->indexMax() + 1), 0.0f);
   }
-  const bool masked =
-      (in.field && in.field->hasValidity()) || (in.nextField && in.nextField->hasValidity());
+  const bool masked = (in.field && in.field->hasValidity()) ||
+                      (in.nextField && in.nextField->hasValidity()) ||
+                      (in.blendedNext && in.blendedNext->hasValidity());
   b.fieldBlend =
       glm::vec4(in.step.fieldBlend, in.nextField ? 1.0f : 0.0f, masked ? 1.0f : 0.0f, 0.0f);
   b.placementOffset = glm::vec4(in.placement.offset, in.placement.scale);

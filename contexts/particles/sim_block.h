@@ -70,6 +70,9 @@ inline constexpr int kEmissionSlotSize = 64;
 struct SimBlockInputs {
   const VectorField* field = nullptr;
   const VectorField* nextField = nullptr;
+  // A next frame already blended into the grid the program reads
+  // (FieldPairBlend): no blend in the shader, but its validity mask counts.
+  const VectorField* blendedNext = nullptr;
   // A sparse grid read in place of `field` (whose bounds are its bounds).
   const SparseField* sparse = nullptr;
   FieldPlacement placement;

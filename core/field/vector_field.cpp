@@ -6,6 +6,7 @@
 
 #include "core/util/error.h"
 #include "core/util/half_arrays.h"
+#include "core/util/half_float.h"
 #include "core/util/parallel_for.h"
 
 namespace sandstorm {
@@ -100,18 +101,24 @@ glm::vec3 VectorField::spacing() const {
   return s;
 }
 
-glm::vec3 VectorField::sample(const glm::vec3& p) const {
-  // Mirrors fieldSample() in shaders/field_sample.glsl operation by operation.
-  const glm::vec3 last = glm::vec3(dims_ - 1);
-  const glm::vec3 u = glm::clamp((p - bounds_.min) * indexScale_, glm::vec3(0.0f), last);
-  const glm::ivec3 i0 = glm::min(glm::ivec3(glm::floor(u)), glm::max(dims_ - 2, glm::ivec3(0)));
-  const glm::ivec3 i1 = glm::min(i0 + 1, dims_ - 1);
+namespace {
+
+// Trilinear interpolation of the cell around p of a grid with `dims`, its
+// corners given by corner(i, j, k): fieldSample() in
+// shaders/particle_physics.glsl, operation by operation.
+template <class Corner>
+glm::vec3 interpolate(const glm::vec3& p, const glm::vec3& boundsMin, const glm::vec3& indexScale,
+                      const glm::ivec3& dims, const Corner& corner) {
+  const glm::vec3 last = glm::vec3(dims - 1);
+  const glm::vec3 u = glm::clamp((p - boundsMin) * indexScale, glm::vec3(0.0f), last);
+  const glm::ivec3 i0 = glm::min(glm::ivec3(glm::floor(u)), glm::max(dims - 2, glm::ivec3(0)));
+  const glm::ivec3 i1 = glm::min(i0 + 1, dims - 1);
   const glm::vec3 f = u - glm::vec3(i0);
 
-  const glm::vec3 c000 = at(i0.x, i0.y, i0.z), c100 = at(i1.x, i0.y, i0.z);
-  const glm::vec3 c010 = at(i0.x, i1.y, i0.z), c110 = at(i1.x, i1.y, i0.z);
-  const glm::vec3 c001 = at(i0.x, i0.y, i1.z), c101 = at(i1.x, i0.y, i1.z);
-  const glm::vec3 c011 = at(i0.x, i1.y, i1.z), c111 = at(i1.x, i1.y, i1.z);
+  const glm::vec3 c000 = corner(i0.x, i0.y, i0.z), c100 = corner(i1.x, i0.y, i0.z);
+  const glm::vec3 c010 = corner(i0.x, i1.y, i0.z), c110 = corner(i1.x, i1.y, i0.z);
+  const glm::vec3 c001 = corner(i0.x, i0.y, i1.z), c101 = corner(i1.x, i0.y, i1.z);
+  const glm::vec3 c011 = corner(i0.x, i1.y, i1.z), c111 = corner(i1.x, i1.y, i1.z);
 
   const glm::vec3 c00 = c000 + (c100 - c000) * f.x;
   const glm::vec3 c10 = c010 + (c110 - c010) * f.x;
@@ -120,6 +127,27 @@ glm::vec3 VectorField::sample(const glm::vec3& p) const {
   const glm::vec3 c0 = c00 + (c10 - c00) * f.y;
   const glm::vec3 c1 = c01 + (c11 - c01) * f.y;
   return c0 + (c1 - c0) * f.z;
+}
+
+}  // namespace
+
+glm::vec3 VectorField::sample(const glm::vec3& p) const {
+  return interpolate(p, bounds_.min, indexScale_, dims_,
+                     [this](int i, int j, int k) { return at(i, j, k); });
+}
+
+glm::vec3 VectorField::sampleBlended(const VectorField& next, float weight,
+                                     const glm::vec3& p) const {
+  // Each corner as shaders/field_blend.comp writes it.
+  const bool halves = half_ && next.half_;
+  return interpolate(p, bounds_.min, indexScale_, dims_, [&](int i, int j, int k) {
+    const glm::vec3 a = at(i, j, k);
+    glm::vec3 c = a + (next.at(i, j, k) - a) * weight;
+    if (halves)
+      for (int n = 0; n < 3; ++n)
+        c[n] = nearestHalf(c[n]);
+    return c;
+  });
 }
 
 float VectorField::sampleScalars(const Scalars& scalars, const glm::vec3& p) const {

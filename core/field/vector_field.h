@@ -85,6 +85,12 @@ class VectorField {
   glm::vec3 indexScale() const { return indexScale_; }
 
   glm::vec3 sample(const glm::vec3& p) const;
+  // A time-varying field's pair blended point by point and then sampled, as
+  // the compute update samples the grid FieldPairBlend makes of it: each
+  // corner of the cell is at + (next.at - at) * weight, rounded to the
+  // nearest half when both grids are halves, then interpolated as sample()
+  // does. `next` shares this grid's dims and bounds.
+  glm::vec3 sampleBlended(const VectorField& next, float weight, const glm::vec3& p) const;
 
   // Points the grid has no data for (a curvilinear or unstructured file
   // resampled onto this box leaves points outside the file's cells): one byte

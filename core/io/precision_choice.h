@@ -3,7 +3,7 @@
 // floats (VectorField::roundToHalf: half the memory and bandwidth, each
 // component within 2^-11 of itself), chosen here and said in the load
 // report. The rule: the grids a GPU holds at once (one for a steady field;
-// three for a series: the pair being blended and the step uploaded ahead) at
+// kSeriesGrids for a series) at
 // 12 bytes a point, 16 with a validity mask, as GpuField keeps a large grid,
 // against LoadOptions::gpuRoom (the app's share of the smallest GPU).
 #pragma once
@@ -22,5 +22,10 @@ double floatGpuBytes(const VectorField& field, int grids);
 // says why in report.notes. A field with a component beyond what halves hold
 // stays float (noted too). Returns whether it rounded.
 bool chooseHalf(VectorField& field, int grids, const LoadOptions& options, LoadReport& report);
+
+// The grids of a series (or a watched folder) a GPU holds at once: the pair
+// being blended, the grid the compute backend blends them into
+// (FieldPairBlend), and the step uploaded ahead.
+constexpr int kSeriesGrids = 4;
 
 }  // namespace sandstorm

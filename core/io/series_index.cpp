@@ -22,15 +22,14 @@ SeriesIndex indexSeries(const std::filesystem::path& path, const LoadOptions& op
     }
     first = LoadReport{};
     VectorField field = loadField(index.sources.front().file, options, &first);
-    // The pair and the step uploaded ahead: three grids on the GPU.
-    if (chooseHalf(field, index.times.size() > 1 ? 3 : 1, options, first))
+    if (chooseHalf(field, index.times.size() > 1 ? kSeriesGrids : 1, options, first))
       index.stepOptions.halfPrecision = true;
     index.first = std::make_shared<const VectorField>(std::move(field));
     first.times = index.times;
     return index;
   }
   VectorField field = loadField(path, options, &first);
-  if (chooseHalf(field, first.times.size() > 1 ? 3 : 1, options, first))
+  if (chooseHalf(field, first.times.size() > 1 ? kSeriesGrids : 1, options, first))
     index.stepOptions.halfPrecision = true;
   index.first = std::make_shared<const VectorField>(std::move(field));
   if (first.times.size() <= 1) {

@@ -108,6 +108,8 @@ glm::vec3 fieldAt(const glm::vec3& x, const PhysicsInputs& in, const glm::vec3& 
       f = in.expression->evaluate(local, in.time, v, age);
     } else if (in.sparse) {
       f = in.sparse->sample(local);
+    } else if (in.nextField && in.pointwiseBlend) {
+      f = in.field->sampleBlended(*in.nextField, in.blend, local);
     } else {
       f = in.field->sample(local);
       if (in.nextField) f = f + (in.nextField->sample(local) - f) * in.blend;

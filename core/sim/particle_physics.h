@@ -28,6 +28,11 @@ struct PhysicsInputs {
   // the field is field + (next - field) * blend.
   const VectorField* nextField = nullptr;
   float blend = 0.0f;
+  // How the pair is blended: sampled each and the samples blended, or
+  // (pointwiseBlend) blended point by point into one grid that is sampled
+  // (VectorField::sampleBlended), as the compute backend does
+  // (ParticleBackend::blendsPairPointwise).
+  bool pointwiseBlend = false;
   // A sparse grid sampled in place of `field` (whose bounds are its bounds
   // and still bound the particles), or null.
   const SparseField* sparse = nullptr;

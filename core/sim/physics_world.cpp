@@ -18,6 +18,7 @@ PhysicsInputs PhysicsWorld::inputs(const SimStep& step, const ParticleState& sta
   in.nextField = next_.get();
   in.sparse = field_ ? sparse_.get() : nullptr;
   in.blend = step.fieldBlend;
+  in.pointwiseBlend = pointwiseBlend_;
   in.placement = placement_;
   in.terrain = terrain_.get();
   in.settings = state.sim;

@@ -23,6 +23,8 @@ class PhysicsWorld {
   // A sparse grid sampled in place of the field (FieldUpdate::sparse); null: none.
   void setSparse(std::shared_ptr<const SparseField> sparse) { sparse_ = std::move(sparse); }
   void setTerrain(std::shared_ptr<const HeightMap> terrain) { terrain_ = std::move(terrain); }
+  // How a time-varying field's pair is blended (PhysicsInputs::pointwiseBlend).
+  void setPointwiseBlend(bool pointwise) { pointwiseBlend_ = pointwise; }
 
   // The inputs of one step; valid while this world and its field live.
   PhysicsInputs inputs(const SimStep& step, const ParticleState& state);
@@ -32,7 +34,8 @@ class PhysicsWorld {
   std::shared_ptr<const SparseField> sparse_;
   FieldPlacement placement_;
   std::shared_ptr<const HeightMap> terrain_;
-  std::shared_ptr<const FieldExpression> expression_;  // field.mode = expression's, compiled
+  std::shared_ptr<const FieldExpression> expression_;
+  bool pointwiseBlend_ = false;  // field.mode = expression's, compiled
 };
 
 }  // namespace sandstorm

@@ -32,6 +32,9 @@ class ReferenceSimulator {
   // A sparse grid sampled in place of the field (whose bounds are its bounds).
   void setSparse(std::shared_ptr<const SparseField> sparse) { world_.setSparse(std::move(sparse)); }
   void setTerrain(std::shared_ptr<const HeightMap> terrain);
+  // How a time-varying field's pair is blended: as the GPU backend it is
+  // compared with does (ParticleBackend::blendsPairPointwise).
+  void setPointwiseBlend(bool pointwise) { world_.setPointwiseBlend(pointwise); }
   void step(const SimStep& step, const ParticleState& state);
   void clear();
 

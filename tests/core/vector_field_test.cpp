@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <iomanip>
+#include <utility>
 
 #include "core/field/field_range.h"
 #include "core/util/error.h"
@@ -85,6 +87,54 @@ TEST(VectorField, HalfPrecisionRoundsToTheNearestHalfWithinAThousandthOfTheFaste
   EXPECT_THROW(big.roundToHalf(), Error);
   EXPECT_FALSE(big.halfPrecision());
   EXPECT_EQ(big.values()[5].x, 0.1f);
+}
+
+// A pair blended point by point and sampled (sampleBlended, the compute
+// update's FieldPairBlend) is the grid of the blended points, built here from
+// the definition (each component a + (b - a) * w, the nearest half of it
+// for halves), sampled: bit for bit, at points all over the cells.
+TEST(VectorField, ABlendedPairSamplesAsTheGridOfItsBlendedPoints) {
+  const Box box{{-1, 0, 2}, {3, 2, 4}};
+  const glm::ivec3 dims{5, 3, 9};
+  VectorField a(box, dims), b(box, dims);
+  std::uint32_t state = 777;
+  const auto next = [&] {
+    state = state * 1664525u + 1013904223u;
+    return float(state >> 8) / float(1u << 24) - 0.5f;
+  };
+  for (glm::vec3& v : a.values())
+    v = glm::vec3(next(), next() * 3e-5f, 700.0f * next());
+  for (glm::vec3& v : b.values())
+    v = glm::vec3(next(), next() * 3e-5f, 700.0f * next());
+  for (const bool halves : {false, true}) {
+    SCOPED_TRACE(halves ? "halves" : "floats");
+    if (halves) a.roundToHalf(), b.roundToHalf();
+    // Read only from here: writing access forgets that the values are halves.
+    const VectorField& ca = a;
+    const VectorField& cb = b;
+    ASSERT_EQ(ca.halfPrecision(), halves);
+    for (const float w : {0.0f, 0.3f, 0.71f, 1.0f}) {
+      VectorField blended(box, dims);
+      for (std::size_t i = 0; i < blended.values().size(); ++i)
+        for (int c = 0; c < 3; ++c) {
+          const float x = ca.values()[i][c] + (cb.values()[i][c] - ca.values()[i][c]) * w;
+          blended.values()[i][c] = halves ? halfByDefinition(x) : x;
+        }
+      for (int n = 0; n < 500; ++n) {
+        const glm::vec3 p(1.0f + 2.2f * next(), 1.0f + 2.2f * next(), 3.0f + 2.2f * next());
+        const glm::vec3 got = ca.sampleBlended(cb, w, p), want = std::as_const(blended).sample(p);
+        for (int c = 0; c < 3; ++c)
+          ASSERT_EQ(std::bit_cast<std::uint32_t>(got[c]), std::bit_cast<std::uint32_t>(want[c]))
+              << "w " << w << " point " << n << " component " << c;
+      }
+    }
+  }
+  // Halves blended are rounded: the samples differ from blending the samples.
+  const glm::vec3 p(0.37f, 1.21f, 3.3f);
+  const VectorField& ca = a;
+  const VectorField& cb = b;
+  ASSERT_TRUE(ca.halfPrecision());
+  EXPECT_NE(ca.sampleBlended(cb, 0.3f, p), ca.sample(p) + (cb.sample(p) - ca.sample(p)) * 0.3f);
 }
 
 TEST(VectorField, PointPositionsSpanTheBounds) {
