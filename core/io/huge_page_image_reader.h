@@ -1,5 +1,6 @@
 // HugePageImageReader: VTK's .vti reader, with each large point array it is
-// about to fill marked for transparent huge pages (madvise MADV_HUGEPAGE)
+// about to fill (32 MiB or more: memory of its own) marked for transparent
+// huge pages (madvise MADV_HUGEPAGE)
 // before its first byte is written.
 //
 // A series' 256^3 step is a 200 MB array that VTK allocates and fills anew

@@ -121,9 +121,10 @@ int stepsRead(const std::string& output) {
 
 // Runs the six-step and the sixty-step configuration for `frames` frames:
 // both must end well, every step after the first counted by `counted` (5
-// and 59), and the long run's peak resident memory within 40 MiB of the
+// and 59), and the long run's peak resident memory within 80 MiB of the
 // short one's (held at once, its 54 more steps of 3 MiB would take 162 MiB
-// more). `capacity`: what the long run says of the steps it keeps.
+// more; NVIDIA's driver alone made the long run 34-41 MiB larger on an H200:
+// docs/PERFORMANCE.md, "The pair blended once a frame"). `capacity`: what the long run says of the steps it keeps.
 void expectFlatMemory(const fs::path& shortRun, const fs::path& longRun, int frames,
                       const std::function<int(const std::string&)>& counted,
                       const std::string& capacity) {
@@ -136,7 +137,7 @@ void expectFlatMemory(const fs::path& shortRun, const fs::path& longRun, int fra
   EXPECT_EQ(counted(many.result.output), 59) << many.result.output;
   EXPECT_NE(many.result.output.find(capacity), std::string::npos) << many.result.output;
   const long extraKiB = many.peakKiB - few.peakKiB;
-  EXPECT_LT(extraKiB, 40 * 1024) << "peak " << many.peakKiB << " KiB against " << few.peakKiB;
+  EXPECT_LT(extraKiB, 80 * 1024) << "peak " << many.peakKiB << " KiB against " << few.peakKiB;
 }
 
 TEST(SeriesStream, ALongSeriesPlaysInTheMemoryOfAFewSteps) {

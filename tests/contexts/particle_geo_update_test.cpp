@@ -278,19 +278,26 @@ TEST_P(ParticleBackendTest, FieldExpressionsMoveParticlesTheSameOnBothSides) {
   }
 }
 
-TEST_P(ParticleBackendTest, TimeVaryingFieldsBlendTheSameOnBothSides) {
-  // Three frames of a vortex that turns one way, then the other: the walls
-  // blend frames themselves, and must match the CPU doing the same.
-  Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, BoundaryMode::Clamp);
+// Three frames of a vortex that turns one way, then the other (in halves:
+// a series read with field.precision = "half").
+std::vector<std::shared_ptr<const VectorField>> turningVortex(bool halves) {
   std::vector<std::shared_ptr<const VectorField>> frames;
   for (float spin : {6.0f, -4.0f, 8.0f}) {
     VortexParams vp;
     vp.range = 3.0f;
     vp.spin = spin;
-    frames.push_back(std::make_shared<VectorField>(
-        bake(VortexField(vp), Box{{-3, -3, 0}, {3, 3, 4}}, {20, 20, 12})));
+    VectorField f = bake(VortexField(vp), Box{{-3, -3, 0}, {3, 3, 4}}, {20, 20, 12});
+    if (halves) f.roundToHalf();
+    frames.push_back(std::make_shared<VectorField>(std::move(f)));
   }
-  s.timeline = FieldTimeline({0.0, 0.5, 1.2}, frames);
+  return frames;
+}
+
+TEST_P(ParticleBackendTest, TimeVaryingFieldsBlendTheSameOnBothSides) {
+  // Three frames of a vortex that turns one way, then the other: the walls
+  // blend frames themselves, and must match the CPU doing the same.
+  Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, BoundaryMode::Clamp);
+  s.timeline = FieldTimeline({0.0, 0.5, 1.2}, turningVortex(false));
   s.state.field.loop = true;
   // Forwards and backwards: each frame is uploaded ahead of need in the
   // order it comes (FramePacket::upcomingField) and swapped in.
@@ -312,15 +319,7 @@ TEST_P(ParticleBackendTest, HalfTimeVaryingFieldsBlendTheSameOnBothSides) {
   // (FieldPairBlend), and the CPU twin samples that grid; transform feedback
   // samples both frames. Either way the same as the CPU.
   Scenario s = tornado(MotionModel::Drag, Integrator::RK2, BoundaryMode::Kill);
-  std::vector<std::shared_ptr<const VectorField>> frames;
-  for (float spin : {6.0f, -4.0f, 8.0f}) {
-    VortexParams vp;
-    vp.range = 3.0f;
-    vp.spin = spin;
-    VectorField f = bake(VortexField(vp), Box{{-3, -3, 0}, {3, 3, 4}}, {20, 20, 12});
-    f.roundToHalf();
-    frames.push_back(std::make_shared<VectorField>(std::move(f)));
-  }
+  const std::vector<std::shared_ptr<const VectorField>> frames = turningVortex(true);
   s.timeline = FieldTimeline({0.0, 0.5, 1.2}, frames);
   s.state.field.loop = true;
   s.state.field.speed = 1.5f;

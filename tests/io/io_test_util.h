@@ -10,6 +10,9 @@
 #include <initializer_list>
 #include <string>
 
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkXMLImageDataWriter.h>
 #include <glm/glm.hpp>
 
 #include "core/io/vtk_message_trap.h"
@@ -35,6 +38,19 @@ inline std::filesystem::path scratch() {
   std::filesystem::create_directories(dir);
   VtkMessageTrap::installOutputWindow();  // keeps VTK's own console output quiet
   return dir;
+}
+
+// `image` as a .vti of raw appended data, uncompressed (a series' step as
+// sandstorm-field convert --compression none writes it). Returns `path`.
+inline std::filesystem::path writeRawVti(vtkImageData* image, const std::filesystem::path& path) {
+  vtkNew<vtkXMLImageDataWriter> w;
+  w->SetInputData(image);
+  w->SetFileName(path.c_str());
+  w->SetDataModeToAppended();
+  w->EncodeAppendedDataOff();
+  w->SetCompressorTypeToNone();
+  w->Write();
+  return path;
 }
 
 inline void writeText(const std::filesystem::path& p, const std::string& text) {

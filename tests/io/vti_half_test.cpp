@@ -50,14 +50,7 @@ std::filesystem::path writeImage(const std::filesystem::path& path, bool masked,
       }
   image->GetPointData()->SetVectors(v);
   if (masked) image->GetPointData()->AddArray(valid);
-  vtkNew<vtkXMLImageDataWriter> w;
-  w->SetInputData(image);
-  w->SetFileName(path.c_str());
-  w->SetDataModeToAppended();
-  w->EncodeAppendedDataOff();
-  w->SetCompressorTypeToNone();
-  w->Write();
-  return path;
+  return test::writeRawVti(image, path);
 }
 
 TEST(VtiHalf, RoundingWhileReadingEqualsRoundingAfter) {
