@@ -32,6 +32,13 @@ class FieldPairBlend {
   std::uint32_t buffer() const { return grid_.id(); }
   // Forgets the blend (the pair changed), keeping the buffer.
   void forget() { first_.reset(), second_.reset(); }
+  // Gives the grid's GPU memory back and lets go of the pair (no pair to
+  // blend any more: a steady field, or the pair sampled otherwise).
+  void release() {
+    forget();
+    grid_.reset();
+    bytes_ = 0;
+  }
 
  private:
   gl::Buffer grid_;

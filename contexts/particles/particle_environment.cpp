@@ -49,7 +49,10 @@ bool ParticleEnvironment::blendsPair(const ParticleState& state) const {
 
 bool ParticleEnvironment::blendPair(const ParticleState& state, float weight) {
   blended_ = blendsPair(state);
-  if (blended_) pairBlend_.blend(fieldGrid_, nextFieldGrid_, weight);
+  if (blended_)
+    pairBlend_.blend(fieldGrid_, nextFieldGrid_, weight);
+  else
+    pairBlend_.release();  // neither its GPU memory nor the pair's steps held for nothing
   return blended_;
 }
 
