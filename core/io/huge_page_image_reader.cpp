@@ -16,8 +16,8 @@ constexpr std::uintptr_t kHugePage = std::uintptr_t{2} << 20;
 // Only arrays the C library maps on their own: from 32 MiB up glibc's malloc
 // always does (its mmap threshold rises with freed blocks up to 32 MiB), so
 // the advice ends with the array. Advice on a smaller one could fall on
-// the heap, which outlives it: a watched folder's 3 MiB steps then left the
-// heap in huge pages, 10 MiB more resident than before.
+// the heap, which outlives it, and leave memory the array no longer uses in
+// huge pages.
 constexpr std::uintptr_t kSmallestAdvised = std::uintptr_t{32} << 20;
 
 // The whole 2 MiB pages inside the array's memory, advised; smaller arrays

@@ -1,7 +1,6 @@
 // HugePageImageReader: VTK's .vti reader, with each large point array it is
 // about to fill (32 MiB or more: memory of its own) marked for transparent
-// huge pages (madvise MADV_HUGEPAGE)
-// before its first byte is written.
+// huge pages (madvise MADV_HUGEPAGE) before its first byte is written.
 //
 // A series' 256^3 step is a 200 MB array that VTK allocates and fills anew
 // for every step. In 4 KiB pages the kernel takes 49 000 page faults to map

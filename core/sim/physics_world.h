@@ -34,8 +34,8 @@ class PhysicsWorld {
   std::shared_ptr<const SparseField> sparse_;
   FieldPlacement placement_;
   std::shared_ptr<const HeightMap> terrain_;
-  std::shared_ptr<const FieldExpression> expression_;
-  bool pointwiseBlend_ = false;  // field.mode = expression's, compiled
+  std::shared_ptr<const FieldExpression> expression_;  // field.mode = expression's, compiled
+  bool pointwiseBlend_ = false;
 };
 
 }  // namespace sandstorm

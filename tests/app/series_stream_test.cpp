@@ -124,7 +124,8 @@ int stepsRead(const std::string& output) {
 // and 59), and the long run's peak resident memory within 80 MiB of the
 // short one's (held at once, its 54 more steps of 3 MiB would take 162 MiB
 // more; NVIDIA's driver alone made the long run 34-41 MiB larger on an H200:
-// docs/PERFORMANCE.md, "The pair blended once a frame"). `capacity`: what the long run says of the steps it keeps.
+// docs/PERFORMANCE.md, "The pair blended once a frame"). `capacity`: what
+// the long run says of the steps it keeps.
 void expectFlatMemory(const fs::path& shortRun, const fs::path& longRun, int frames,
                       const std::function<int(const std::string&)>& counted,
                       const std::string& capacity) {
