@@ -712,6 +712,10 @@ void AppRun::reportProgress(Clock::time_point now) {
             "'", tracking_ && tracking_->status().lost ? "; tracking lost" : "");
 }
 
+void AppRun::meterPlayback(Clock::time_point now) {
+  if (field_.series) playback_.frame(std::uint32_t(frames_), main_.fieldStatus(), now);
+}
+
 bool AppRun::advance() {
   if (interrupted || (lastFrame_ >= 0 && frames_ > lastFrame_)) return false;
   if (frames_ == 0) log::info("the walls are ready: frames begin");
@@ -745,6 +749,7 @@ bool AppRun::advance() {
   editor_.update(main_);
   fluid_.update(main_, *lastPacket_);
   if (!options_.replay) obstaclePaths_.update(main_, *lastPacket_);
+  meterPlayback(Clock::now());
   ++frames_;
   reportProgress(now);
   pacer_.wait();
@@ -791,6 +796,7 @@ void AppRun::runCluster() {
       editor_.update(main_);
       fluid_.update(main_, *packet);
       if (!options_.replay) obstaclePaths_.update(main_, *packet);
+      meterPlayback(Clock::now());
     } else {
       cluster_->sendStop();
     }
@@ -869,6 +875,7 @@ int AppRun::finish() {
     measured.push_back(summarize(w->name(), w->renderer(), w->samples(), w->measuredFrames(),
                                  w->stats().liveParticles));
   RunStats stats = summarize(statsWarmup_, std::move(measured));
+  stats.playback = playback_.stats();
   if (tracking_) {
     const TrackerStats t = tracking_->status().stats;
     stats.tracking = TrackingRunStats{t.received, t.dropped, t.foreign};

@@ -26,6 +26,7 @@
 #include "app/movie_recorder.h"
 #include "app/obstacle_drag.h"
 #include "app/obstacle_driver.h"
+#include "app/playback_meter.h"
 #include "app/scene_setup.h"
 #include "app/tracking/tracking_input.h"
 #include "contexts/platform/glfw_window.h"
@@ -99,6 +100,8 @@ class AppRun {
                        std::shared_ptr<const VectorField> field, std::uint32_t completeAt);
   glm::vec3 fieldCentre(const WorldRay& ray) const;
   void reportProgress(Clock::time_point now);
+  // After frame frames_'s packet: the series' playback measured.
+  void meterPlayback(Clock::time_point now);
   int finish();
 
   const AppConfig& config_;
@@ -119,6 +122,7 @@ class AppRun {
   std::size_t replayNavigationAt_ = 0, replayFieldAt_ = 0;
   std::size_t replayStepAt_ = 0;
   std::unique_ptr<FieldStream> fieldStream_;  // a watched field (rank 0, not replaying)
+  PlaybackMeter playback_{statsWarmup_};      // a series' steps a second (rank 0)
   void loadField(const std::string& choice);
   std::unique_ptr<TrackingInput> tracking_;  // null: no tracker (or not the main context's rank)
   HelicopterController helicopter_;

@@ -79,6 +79,10 @@ void logRunStats(const RunStats& r) {
               w.updateMs, " + scene ", w.sceneMs, " + particles ", w.particlesMs, " + post ",
               w.postMs, "; thread ", w.cpuMs, " ms; waits: swap ", w.barrierWaitMs, " ms, packet ",
               w.packetWaitMs, " ms; ", w.live, " particles");
+  if (const auto& p = r.playback)
+    log::info("  field series over the measured frames: ", p->stepsPlayed, " step(s) played in ",
+              p->seconds, " s: ", p->stepsPerSecond(), " steps a second; playback waited ",
+              p->framesWaited, " of ", p->frames, " frame(s)");
 }
 
 void writeRunStats(const RunStats& r, const std::filesystem::path& path) {
@@ -101,6 +105,12 @@ void writeRunStats(const RunStats& r, const std::filesystem::path& path) {
     j << ",\n  \"tracking\": {\"received\": " << r.tracking->received
       << ", \"dropped\": " << r.tracking->dropped << ", \"foreign\": " << r.tracking->foreign
       << "}";
+  if (r.playback)
+    j << ",\n  \"series\": {\"frames\": " << r.playback->frames
+      << ", \"steps_played\": " << r.playback->stepsPlayed
+      << ", \"seconds\": " << r.playback->seconds
+      << ", \"steps_per_s\": " << r.playback->stepsPerSecond()
+      << ", \"frames_waited\": " << r.playback->framesWaited << "}";
   j << "\n}\n";
   const std::string text = j.str();
   writeFile(path, text, "--stats");

@@ -3,7 +3,8 @@
 // 95th-percentile frame time, and per wall the median GPU time of each stage
 // (update, scene, particles, post; every view of the frame together), the
 // median wait at the swap barrier and for the main context's packet, the
-// live particles at the end and the renderer the wall drew with. Printed at
+// live particles at the end and the renderer the wall drew with; for a
+// series streamed from disk, the steps it played a second of wall time. Printed at
 // the end of every run; --stats FILE writes it as JSON.
 #pragma once
 
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "app/playback_meter.h"
 #include "contexts/render/render_wall.h"
 
 namespace sandstorm {
@@ -41,6 +43,7 @@ struct RunStats {
   double frameMs = 0.0, frameP95Ms = 0.0, fps = 0.0;
   std::vector<WallRunStats> walls;
   std::optional<TrackingRunStats> tracking;
+  std::optional<PlaybackRunStats> playback;  // a series streamed from disk
 };
 
 // `samples`: every measured frame, or a uniform sample of them in a long run

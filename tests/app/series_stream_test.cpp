@@ -225,6 +225,40 @@ TEST(SeriesStream, AStepThatCannotBeReadStopsPlaybackAndTheRunGoesOn) {
   EXPECT_NE(r.output.find("stats: 60 frames"), std::string::npos) << r.output;
 }
 
+// The statistics say how fast the series played over the measured frames: a
+// step every three frames, so 60 frames after the warm-up pass 20 steps less
+// the frames that waited for one (each costs a step a third of its frames).
+TEST(SeriesStream, TheStatisticsSayTheStepsPlayedASecondOverTheMeasuredFrames) {
+  const fs::path dir = test::scratchDir("series-rate");
+  const fs::path run = writeRun(dir, 60);
+  std::string config = test::readBytes(run);
+  config.replace(config.find("max_fps = 120"), 13, "max_fps = 120\nstats_warmup = 30");
+  std::ofstream(run) << config;
+  const fs::path json = dir / "stats.json";
+  const test::ProcessResult r = test::runSandstorm("--config '" + run.string() +
+                                                   "' --frames 90 --stats '" + json.string() + "'");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  const std::string text = test::readBytes(json);
+  std::smatch m;
+  ASSERT_TRUE(std::regex_search(
+      text, m,
+      std::regex("\"series\": \\{\"frames\": (\\d+), \"steps_played\": (\\d+), \"seconds\": "
+                 "([-0-9.e+]+), \"steps_per_s\": ([-0-9.e+]+), \"frames_waited\": (\\d+)\\}")))
+      << text;
+  const int frames = std::stoi(m[1]), played = std::stoi(m[2]), waited = std::stoi(m[5]);
+  const double seconds = std::stod(m[3]), rate = std::stod(m[4]);
+  EXPECT_EQ(frames, 60);
+  // Frames 30 to 89: 59 intervals at a step every three frames, but for the waits.
+  EXPECT_LE(played, 20);
+  EXPECT_GE(played, (59 - waited) / 3 - 1) << waited << " frames waited";
+  EXPECT_GT(seconds, 0.0);
+  EXPECT_NEAR(rate, played / seconds, 1e-3 * rate + 1e-9);
+  EXPECT_NE(r.output.find("field series over the measured frames: " + std::to_string(played) +
+                          " step(s) played in "),
+            std::string::npos)
+      << r.output;
+}
+
 TEST(SeriesStream, ABudgetThatCannotHoldTwoStepsIsRefusedNamingTheSettings) {
   const fs::path dir = test::scratchDir("series-budget");
   const test::ProcessResult r = test::runSandstorm(
