@@ -290,12 +290,39 @@ void AppRun::openWalls() {
     walls_.push_back(std::make_unique<RenderWall>(setup, i));
     walls_.back()->sampleFrom(statsWarmup_);
     if (context) {
+      std::unique_ptr<GlContext> uploads = uploadContext(*context, spec, gpu);
       contexts_.push_back(std::make_unique<RenderContext>(
-          std::move(context), std::vector<RenderWall*>{walls_.back().get()}, channel_, barrier_));
+          std::move(context), std::vector<RenderWall*>{walls_.back().get()}, channel_, barrier_,
+          std::move(uploads)));
       if (!spec.window) group.offscreen = contexts_.back().get();
     } else {
       group.offscreen->addWall(walls_.back().get());
     }
+  }
+}
+
+// A second context of `context`'s share group, for its upload thread (a
+// series' steps copied to the GPU beside the walls' work); null, said once,
+// where none can be made: the walls then copy the steps themselves.
+std::unique_ptr<GlContext> AppRun::uploadContext(const GlContext& context, const WallSpec& spec,
+                                                 int gpu) {
+  try {
+    if (spec.window) {
+      GlfwWindow::Options o;
+      o.title = "Sandstorm: uploads for " + spec.name;
+      o.size = {1, 1};
+      o.visible = false;
+      o.decorated = false;
+      o.vsync = false;
+      o.share = static_cast<const GlfwWindow*>(&context);
+      return std::make_unique<GlfwWindow>(*glfw_, o);
+    }
+    return std::make_unique<EglContext>(
+        EglContext::Options{.share = static_cast<const EglContext*>(&context), .device = gpu});
+  } catch (const Error& e) {
+    log::warn("wall '", spec.name, "': no second OpenGL context for uploads (", e.what(),
+              "); its thread copies a series' steps to the GPU itself");
+    return nullptr;
   }
 }
 

@@ -74,6 +74,7 @@ class AppRun {
   void openWindowLibrary();
   std::vector<int> wallGpus() const;
   void openWalls();
+  std::unique_ptr<GlContext> uploadContext(const GlContext& context, const WallSpec& spec, int gpu);
   void openMenu();
   void openLegend();
   void dumpStreamlines(const WallRenderer& wall, const FramePacket& packet);

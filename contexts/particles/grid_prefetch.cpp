@@ -14,6 +14,11 @@ namespace sandstorm {
 
 GridPrefetch::~GridPrefetch() {
   if (writing_.valid()) writing_.wait();  // the worker writes into staging_'s mapping
+  // The upload thread copies into grid_; its fence is deleted here, on this context.
+  if (upload_.valid()) try {
+      upload_.get();
+    } catch (const std::exception&) {
+    }
 }
 
 void GridPrefetch::advance(std::shared_ptr<const VectorField> wanted) {
@@ -21,10 +26,12 @@ void GridPrefetch::advance(std::shared_ptr<const VectorField> wanted) {
   try {
     if (writing_.valid() && writing_.wait_for(std::chrono::seconds(0)) == std::future_status::ready)
       written();
-    if (frame_ && !writing_.valid() && copiedLayers_ < layers_) copy(copyBytesPerFrame_);
-    // Another frame wanted: the worker is not stopped midway, and the staging
-    // buffer is rewritten only once the GPU has copied out of it.
-    if (wanted && wanted != frame_ && !writing_.valid()) start(std::move(wanted));
+    if (uploading()) collectUpload(false);
+    if (frame_ && !writing_.valid() && !uploads_ && copiedLayers_ < layers_)
+      copy(copyBytesPerFrame_);
+    // Another frame wanted: the worker and the upload are not stopped midway,
+    // and the staging buffer is rewritten only once the GPU has copied out of it.
+    if (wanted && wanted != frame_ && !writing_.valid() && !uploading()) start(std::move(wanted));
   } catch (const std::exception& e) {
     fail(e.what());
   }
@@ -35,9 +42,13 @@ bool GridPrefetch::takeInto(GpuField& target, const std::shared_ptr<const Vector
   const auto start = std::chrono::steady_clock::now();
   const bool wasWriting = writing_.valid();
   const int left = layers_ - copiedLayers_;
+  const bool byThread = uploads_ && left > 0;
   try {
     if (writing_.valid()) written();
-    copy(std::numeric_limits<std::size_t>::max());
+    if (uploading())
+      collectUpload(true);
+    else
+      copy(std::numeric_limits<std::size_t>::max());
   } catch (const std::exception& e) {
     fail(e.what());
     return false;
@@ -46,7 +57,9 @@ bool GridPrefetch::takeInto(GpuField& target, const std::shared_ptr<const Vector
     log::debug(
         "field: a step uploaded ahead of need taken; its texels written in ", writeMs_, " ms",
         wasWriting ? " (still being written: waited for)" : "", ", ", left, " of ", layers_,
-        " layers left to copy; took ",
+        byThread ? " layers being copied by the upload thread (waited for on the GPU)"
+                 : " layers left to copy",
+        "; took ",
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(),
         " ms");
   std::swap(target, grid_);
@@ -110,6 +123,35 @@ void GridPrefetch::written() {
   writing_.get();  // rethrows what the worker threw
   const Staging& staging = staging_[std::size_t(using_)];
   glFlushMappedNamedBufferRange(staging.buffer.id(), 0, GLsizeiptr(staging.bytes));
+  if (!uploads_ || copiedLayers_ > 0) return;
+  // The whole frame at once, after what this context did before (the
+  // grid's allocation, the flush). The thread reads only grid_'s layout and
+  // the staging buffer's name, which stay until the upload is collected.
+  gl::Sync after = gl::createFence();
+  glFlush();
+  upload_ = uploads_->submit(std::move(after), [this, buffer = &staging.buffer] {
+    grid_.copyLayers(*buffer, 0, 0, layers_);
+  });
+}
+
+void GridPrefetch::collectUpload(bool wait) {
+  Staging& staging = staging_[std::size_t(using_)];
+  if (upload_.valid()) {
+    if (!wait && upload_.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
+    staging.copied = upload_.get();  // the copy's fence; rethrows what the copy threw
+  }
+  const GLsync copied = reinterpret_cast<GLsync>(staging.copied.handle());
+  if (wait) {
+    // This context's commands from now on wait for the copy on the GPU.
+    glWaitSync(copied, 0, GL_TIMEOUT_IGNORED);
+  } else {
+    const GLenum state = glClientWaitSync(copied, 0, 0);
+    if (state != GL_ALREADY_SIGNALED && state != GL_CONDITION_SATISFIED) return;
+  }
+  // Done (or waited for): the grid's readers bind it again each frame, which
+  // makes what another context wrote visible in this one.
+  copiedLayers_ = layers_;
+  grid_.hold(frame_);
 }
 
 void GridPrefetch::copy(std::size_t bytes) {
@@ -142,6 +184,10 @@ void GridPrefetch::fail(const std::string& what) {
   log::warn("field: uploading the next step ahead of need stopped (", what,
             "); each step is uploaded when it comes into use, as with field.upload_ahead = false");
   if (writing_.valid()) writing_.wait();
+  if (upload_.valid()) try {
+      upload_.get();
+    } catch (const std::exception&) {
+    }
   failed_ = true;
   frame_ = nullptr;
   grid_.hold(nullptr);

@@ -3,14 +3,14 @@
 // pays a swap of grids, not an upload of hundreds of megabytes.
 //
 // A worker thread writes the frame's texels into a staging buffer that stays
-// mapped (no GL call off the walls' thread); once it is done, each frame the
-// walls' thread copies at most kCopyBytesPerFrame of them into a GpuField of
-// this one's own. ParticleEnvironment takes that grid when the frame becomes
-// current or next. There are two staging buffers, used in turn: the frame
-// after starts being written the moment one is taken, while the GPU still
-// copies out of the other (a series' step every other frame leaves the
-// worker two frames, not one). Memory beyond the two frames being blended:
-// two frames' texels of host staging (one for a frame beyond half of
+// mapped (no GL call on it); once it is done, the frame is copied into a
+// GpuField of this one's own: by an UploadThread where the walls' context
+// has one, all at once and beside the walls' work on the GPU; otherwise by
+// the walls' thread, at most kCopyBytesPerFrame a frame. ParticleEnvironment takes that grid when
+// the frame becomes current or next. There are two staging buffers, used in turn: the frame after
+// starts being written the moment one is taken, while the GPU still copies out of the other (a
+// series' step every other frame leaves the worker two frames, not one). Memory beyond the two
+// frames being blended: two frames' texels of host staging (one for a frame beyond half of
 // maxStagingBytes) and one grid on the GPU.
 //
 // A hint only: a frame wanted before it is all on the GPU is finished on the
@@ -24,6 +24,7 @@
 #include <string>
 
 #include "contexts/gl/objects.h"
+#include "contexts/gl/upload_thread.h"
 #include "contexts/particles/gpu_field.h"
 #include "core/field/vector_field.h"
 
@@ -31,15 +32,17 @@ namespace sandstorm {
 
 class GridPrefetch {
  public:
-  // `copyBytesPerFrame`: what advance() copies to the GPU at most (a layer
-  // at least); `maxStagingBytes`: the largest frame it stages (a larger one
-  // ends prefetching, said once: its staging would pin that much host memory
-  // on every GPU, beside the steps the series holds; two staging buffers
-  // only where both fit within it).
-  explicit GridPrefetch(GpuField::Storage preferred,
+  // `uploads`: copies the frames (it must outlive this); null: advance()
+  // copies at most `copyBytesPerFrame` (a layer at least) on this thread;
+  // `maxStagingBytes`: the largest frame it stages (a larger one ends
+  // prefetching, said once: its staging would pin that much host memory on
+  // every GPU, beside the steps the series holds; two staging buffers only
+  // where both fit within it).
+  explicit GridPrefetch(GpuField::Storage preferred, UploadThread* uploads = nullptr,
                         std::size_t copyBytesPerFrame = kCopyBytesPerFrame,
                         std::size_t maxStagingBytes = kMaxStagingBytes)
       : grid_(preferred),
+        uploads_(uploads),
         copyBytesPerFrame_(copyBytesPerFrame),
         maxStagingBytes_(maxStagingBytes) {}
   ~GridPrefetch();
@@ -73,8 +76,17 @@ class GridPrefetch {
   void start(std::shared_ptr<const VectorField> field);
   // Copies up to `bytes` of the written layers (all with SIZE_MAX).
   void copy(std::size_t bytes);
-  // Makes the written texels visible to the GPU's copies.
+  // Makes the written texels visible to the GPU's copies; with an upload
+  // thread, hands it the copy.
   void written();
+  // Whether the upload thread's copy of frame_ is under way.
+  bool uploading() const {
+    return uploads_ && frame_ && !writing_.valid() && copiedLayers_ < layers_;
+  }
+  // The upload thread's copy: once the GPU has done it, or (`wait`) now,
+  // this context's later commands waiting for it on the GPU; grid_ then
+  // holds the frame. The staging buffer is busy until the copy's fence.
+  void collectUpload(bool wait);
   // A staging buffer the GPU no longer copies out of (of two, the one not
   // used last first; of one, the first); -1: none.
   int freeStaging(bool two) const;
@@ -89,11 +101,13 @@ class GridPrefetch {
   };
 
   GpuField grid_;
+  UploadThread* uploads_;
   std::size_t copyBytesPerFrame_, maxStagingBytes_;
   std::array<Staging, 2> staging_;
   int using_ = 0;                             // the staging frame_ is written to and copied from
   std::shared_ptr<const VectorField> frame_;  // being prepared or held by grid_
   std::future<void> writing_;
+  std::future<gl::Sync> upload_;  // the upload thread's copy of frame_, until collected
   std::size_t layerBytes_ = 0;
   int layers_ = 0, copiedLayers_ = 0;
   double writeMs_ = 0.0;  // the worker's last writing (read once it is done)

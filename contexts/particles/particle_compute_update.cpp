@@ -44,7 +44,8 @@ int checkedItems(int items) {
 
 }  // namespace
 
-ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity, const GpuTuning& tuning)
+ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity, const GpuTuning& tuning,
+                                             UploadThread* uploads)
     : capacity_(capacity),
       control_(gl::createBuffer()),
       simBlock_(gl::createBuffer()),
@@ -60,7 +61,8 @@ ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity, const GpuTuni
       tile_(256u * std::uint32_t(items_)),
       environment_(tuning.fieldStorage == GpuTuning::FieldStorage::Texture
                        ? GpuField::Storage::Texture
-                       : GpuField::Storage::Buffer) {
+                       : GpuField::Storage::Buffer,
+                   uploads) {
   if (capacity == 0 || capacity > (std::size_t{1} << 31) / kRecord)
     throw Error(concat("ParticleComputeUpdate: capacity ", capacity, " is outside 1..",
                        (1u << 31) / kRecord));

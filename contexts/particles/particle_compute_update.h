@@ -48,7 +48,8 @@ class ParticleComputeUpdate final : public ParticleBackend {
  public:
   // `tuning`: the records an invocation of the update pass advances (a tile is
   // 256 invocations), the scan's patience, where the field's grid is kept.
-  explicit ParticleComputeUpdate(std::size_t capacity, const GpuTuning& tuning = {});
+  explicit ParticleComputeUpdate(std::size_t capacity, const GpuTuning& tuning = {},
+                                 UploadThread* uploads = nullptr);
 
   void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
                 std::shared_ptr<const VectorField> next = nullptr) override;

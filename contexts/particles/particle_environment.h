@@ -36,9 +36,10 @@ class ParticleEnvironment {
  public:
   // `storage`: how the field's grid is kept if it can be (GpuField); the
   // backend's shaders read it as gridStorage() says (FIELD_BUFFER in
-  // shaders/particle_physics.glsl).
-  explicit ParticleEnvironment(GpuField::Storage storage)
-      : fieldGrid_(storage), nextFieldGrid_(storage), prefetch_(storage) {}
+  // shaders/particle_physics.glsl). `uploads`: copies steps ahead of need
+  // (GridPrefetch); null: this thread does.
+  explicit ParticleEnvironment(GpuField::Storage storage, UploadThread* uploads = nullptr)
+      : fieldGrid_(storage), nextFieldGrid_(storage), prefetch_(storage, uploads) {}
 
   // Throws Error when `next` has another grid than `field`. A frame already on
   // the GPU is not uploaded again (a sequence steps A,B -> B,C, or backwards

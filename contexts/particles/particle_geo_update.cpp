@@ -29,14 +29,15 @@ void attach(GLuint vao, GLuint positionLife, GLuint velocityKind, GLintptr first
 
 }  // namespace
 
-ParticleGeoUpdate::ParticleGeoUpdate(std::size_t capacity)
+ParticleGeoUpdate::ParticleGeoUpdate(std::size_t capacity, UploadThread* uploads)
     : capacity_(capacity),
       emptyVao_(gl::createVertexArray()),
       simBlock_(gl::createBuffer()),
       survivorCounts_(gl::createBuffer()),
       dummyTarget_(gl::createFramebuffer()),
       dummyColor_(gl::createRenderbuffer()),
-      emitProgram_(makeProgram("particle_emit.vert", "particle_emit.geom")) {
+      emitProgram_(makeProgram("particle_emit.vert", "particle_emit.geom")),
+      environment_(GpuField::Storage::Texture, uploads) {
   if (capacity == 0 || capacity > (std::size_t{1} << 31) / kRecord)
     throw Error(
         concat("ParticleGeoUpdate: capacity ", capacity, " is outside 1..", (1u << 31) / kRecord));

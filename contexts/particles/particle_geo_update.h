@@ -39,7 +39,7 @@ namespace sandstorm {
 
 class ParticleGeoUpdate final : public ParticleBackend {
  public:
-  explicit ParticleGeoUpdate(std::size_t capacity);
+  explicit ParticleGeoUpdate(std::size_t capacity, UploadThread* uploads = nullptr);
 
   void setField(std::shared_ptr<const VectorField> field, const FieldPlacement& placement,
                 std::shared_ptr<const VectorField> next = nullptr) override;
@@ -99,7 +99,7 @@ class ParticleGeoUpdate final : public ParticleBackend {
   ExpressionPrograms expressionPrograms_;                        // field.mode = expression
   std::unique_ptr<ParticleTrails> trails_;                       // while render.trail_length > 0
 
-  ParticleEnvironment environment_{GpuField::Storage::Texture};
+  ParticleEnvironment environment_;
 
   EmissionBudget budget_;
   std::uint64_t updates_ = 0;

@@ -12,9 +12,10 @@
 namespace sandstorm {
 
 std::unique_ptr<ParticleBackend> makeParticleBackend(const std::string& name, std::size_t capacity,
-                                                     const GpuTuning& tuning) {
-  if (name == "tf-gs") return std::make_unique<ParticleGeoUpdate>(capacity);
-  if (name == "compute") return std::make_unique<ParticleComputeUpdate>(capacity, tuning);
+                                                     const GpuTuning& tuning,
+                                                     UploadThread* uploads) {
+  if (name == "tf-gs") return std::make_unique<ParticleGeoUpdate>(capacity, uploads);
+  if (name == "compute") return std::make_unique<ParticleComputeUpdate>(capacity, tuning, uploads);
   throw Error(concat("unknown particle backend '", name, "'; expected tf-gs or compute"));
 }
 
@@ -24,7 +25,8 @@ namespace {
 std::unique_ptr<ParticleBackend> backendFor(const ParticleSystem::Options& o) {
   if (o.share && o.shareReader >= 0)
     return std::make_unique<SharedParticles>(o.share, o.shareReader);
-  std::unique_ptr<ParticleBackend> own = makeParticleBackend(o.backend, o.capacity, o.tuning);
+  std::unique_ptr<ParticleBackend> own =
+      makeParticleBackend(o.backend, o.capacity, o.tuning, o.uploads);
   if (o.share) return std::make_unique<SharingBackend>(std::move(own), o.share);
   return own;
 }

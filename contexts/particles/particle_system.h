@@ -9,6 +9,7 @@
 #include <memory>
 #include <string>
 
+#include "contexts/gl/upload_thread.h"
 #include "contexts/molecules/molecule_renderer.h"
 #include "contexts/molecules/molecule_update.h"
 #include "contexts/particles/particle_backend.h"
@@ -28,8 +29,10 @@ class SimulationShare;
 class ViewTargets;
 
 // The backend of that name ("tf-gs" or "compute"); throws Error for others.
+// `uploads`: copies a series' steps ahead of need (GridPrefetch); null: the backend's thread.
 std::unique_ptr<ParticleBackend> makeParticleBackend(const std::string& name, std::size_t capacity,
-                                                     const GpuTuning& tuning = {});
+                                                     const GpuTuning& tuning = {},
+                                                     UploadThread* uploads = nullptr);
 
 class ParticleSystem {
  public:
@@ -43,7 +46,8 @@ class ParticleSystem {
     // shareReader = k >= 0 draws the owner's particles as reader k.
     std::shared_ptr<SimulationShare> share;
     int shareReader = -1;
-    GpuTuning tuning;  // how the backend and the splats work ([gpu])
+    GpuTuning tuning;                 // how the backend and the splats work ([gpu])
+    UploadThread* uploads = nullptr;  // copies steps ahead of need; null: this thread does
   };
 
   ParticleSystem(const ParticleState& initial, const Options& options);

@@ -120,6 +120,15 @@ EglContext::EglContext(const Options& options) : device_(options.device) {
                                    EGL_NONE};
   EGLContext share =
       options.share ? static_cast<EGLContext>(options.share->context_) : EGL_NO_CONTEXT;
+  // The thread's current context, if any, is current again afterwards.
+  const struct Current {
+    EGLDisplay display = eglGetCurrentDisplay();
+    EGLSurface draw = eglGetCurrentSurface(EGL_DRAW), read = eglGetCurrentSurface(EGL_READ);
+    EGLContext context = eglGetCurrentContext();
+    void restore() const {
+      if (context != EGL_NO_CONTEXT) eglMakeCurrent(display, draw, read, context);
+    }
+  } before;
   context_ = eglCreateContext(d.display, config, share, contextAttribs);
   if (context_ == EGL_NO_CONTEXT)
     throw Error(concat("EglContext: eglCreateContext for OpenGL 4.5 core failed on ", d.platform,
@@ -131,10 +140,12 @@ EglContext::EglContext(const Options& options) : device_(options.device) {
   } catch (...) {
     releaseCurrent();
     eglDestroyContext(d.display, context_);
+    before.restore();
     throw;
   }
   description_ = d.platform + ": " + glDescription();
   releaseCurrent();  // the thread that renders makes it current
+  before.restore();
 }
 
 EglContext::~EglContext() {

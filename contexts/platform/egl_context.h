@@ -6,7 +6,8 @@
 // Mesa's surfaceless platform (llvmpipe on machines without a GPU: one
 // "GPU"). A context is made on the GPU Options::device names (0: the first).
 // Contexts may share objects with another EglContext of the same GPU. A new
-// context is not current on any thread.
+// context is not current on any thread; the thread that makes it keeps the
+// context it had current.
 #pragma once
 
 #include <memory>

@@ -61,6 +61,7 @@ GlfwWindow::GlfwWindow(const GlfwLibrary& glfw, const Options& o) {
     const GLFWvidmode* mode = glfwGetVideoMode(monitor);
     size = {mode->width, mode->height};
   }
+  GLFWwindow* const before = glfwGetCurrentContext();  // current again afterwards
   window_ = glfwCreateWindow(size.x, size.y, o.title.c_str(), o.fullscreen ? monitor : nullptr,
                              o.share ? o.share->window_ : nullptr);
   if (!window_)
@@ -77,11 +78,12 @@ GlfwWindow::GlfwWindow(const GlfwLibrary& glfw, const Options& o) {
     checkGl45("GlfwWindow '" + o.title + "'");
   } catch (...) {
     glfwDestroyWindow(window_);
+    glfwMakeContextCurrent(before);
     throw;
   }
   glfwSwapInterval(o.vsync ? 1 : 0);
   description_ = "GLFW window '" + o.title + "': " + glDescription();
-  releaseCurrent();
+  glfwMakeContextCurrent(before);
 }
 
 GlfwWindow::~GlfwWindow() {

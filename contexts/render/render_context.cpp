@@ -10,9 +10,11 @@
 namespace sandstorm {
 
 RenderContext::RenderContext(std::unique_ptr<GlContext> context, std::vector<RenderWall*> walls,
-                             FrameChannel& channel, SwapBarrier& barrier)
+                             FrameChannel& channel, SwapBarrier& barrier,
+                             std::unique_ptr<GlContext> uploadContext)
     : context_(std::move(context)), walls_(std::move(walls)), channel_(channel), barrier_(barrier) {
   if (walls_.empty()) throw Error("RenderContext: no wall to draw");
+  if (uploadContext) uploads_ = std::make_unique<UploadThread>(std::move(uploadContext));
 }
 
 RenderContext::~RenderContext() {
@@ -36,7 +38,7 @@ void RenderContext::run() {
   try {
     context_->makeCurrent();
     for (RenderWall* wall : walls_)
-      wall->open();
+      wall->open(uploads_.get());
     log::debug("context of wall '", walls_.front()->name(), "': ", context_->description());
     // Wall-clock time on this thread is for the statistics only; the
     // simulation's time comes from the packets.

@@ -8,6 +8,9 @@
 // so all walls show the same frame and a slow wall slows them all. GL objects
 // are made and released on this thread, with its context current.
 //
+// A context may come with a second one of its share group: an UploadThread
+// then copies its walls' coming series steps to the GPU beside their work.
+//
 // A wall that fails (a lost context, a shader error) records the error on
 // each of the context's walls, the context drops out of the barrier and leaves
 // the channel, so the others never hang; the app sees error() and shuts
@@ -20,6 +23,7 @@
 #include <thread>
 #include <vector>
 
+#include "contexts/gl/upload_thread.h"
 #include "contexts/platform/gl_context.h"
 #include "contexts/render/render_wall.h"
 #include "core/sim/frame_channel.h"
@@ -31,9 +35,11 @@ class RenderContext {
   using SwapBarrier = std::barrier<>;
 
   // `walls`: drawn in this order (a shared simulation's owner first); they
-  // must outlive this. Each wall counts once in `barrier`.
+  // must outlive this. Each wall counts once in `barrier`. `uploadContext`:
+  // shares objects with `context` (null: the walls upload on this thread).
   RenderContext(std::unique_ptr<GlContext> context, std::vector<RenderWall*> walls,
-                FrameChannel& channel, SwapBarrier& barrier);
+                FrameChannel& channel, SwapBarrier& barrier,
+                std::unique_ptr<GlContext> uploadContext = nullptr);
   ~RenderContext();
   RenderContext(const RenderContext&) = delete;
   RenderContext& operator=(const RenderContext&) = delete;
@@ -50,6 +56,7 @@ class RenderContext {
   void run();
 
   std::unique_ptr<GlContext> context_;
+  std::unique_ptr<UploadThread> uploads_;  // ends after the walls' thread
   std::vector<RenderWall*> walls_;
   FrameChannel& channel_;
   SwapBarrier& barrier_;

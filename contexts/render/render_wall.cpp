@@ -38,7 +38,8 @@ const char* RenderWall::renderer() const {
   return rendererName_;
 }
 
-void RenderWall::open() {
+void RenderWall::open(UploadThread* uploads) {
+  setup_.uploads = uploads;
   renderer_ = std::make_unique<WallRenderer>(setup_);
 }
 

@@ -99,7 +99,8 @@ class RenderWall {
     std::optional<gl::FrameStageTimer::Times> gpu;
     std::optional<ParticleMeasurement> measure;
   };
-  void open();
+  // Makes the wall's renderer; `uploads`: the context's upload thread, or null.
+  void open(UploadThread* uploads = nullptr);
   Drawn draw(const FramePacket& packet, glm::ivec2 framebufferSize);
   void record(const FramePacket& packet, const Drawn& drawn, double intervalMs, double waitMs,
               double packetWaitMs);

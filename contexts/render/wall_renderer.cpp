@@ -18,7 +18,8 @@ WallRenderer::WallRenderer(const WallRendererSetup& s)
                                                  .backend = s.backend,
                                                  .share = s.share,
                                                  .shareReader = s.shareReader,
-                                                 .tuning = s.tuning}),
+                                                 .tuning = s.tuning,
+                                                 .uploads = s.uploads}),
       anaglyph_(std::vector<std::string>{"fullscreen.vert", "anaglyph.frag"}),
       emptyVao_(gl::createVertexArray()) {
   if (s.terrain) {

@@ -32,6 +32,7 @@ struct WallRendererSetup {
   GpuTuning tuning;
   float nearPlane = 0.05f;
   float farPlane = 500.0f;
+  UploadThread* uploads = nullptr;  // the context's upload thread, if it has one (RenderContext)
 };
 
 class WallRenderer {
