@@ -290,7 +290,8 @@ void AppRun::openWalls() {
     walls_.push_back(std::make_unique<RenderWall>(setup, i));
     walls_.back()->sampleFrom(statsWarmup_);
     if (context) {
-      std::unique_ptr<GlContext> uploads = uploadContext(*context, spec, gpu);
+      std::unique_ptr<GlContext> uploads =
+          config_.gpu.uploadContext ? uploadContext(*context, spec, gpu) : nullptr;
       contexts_.push_back(std::make_unique<RenderContext>(
           std::move(context), std::vector<RenderWall*>{walls_.back().get()}, channel_, barrier_,
           std::move(uploads)));

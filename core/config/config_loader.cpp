@@ -249,7 +249,7 @@ void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
 void readGpu(const Reader& r, const toml::value& t, GpuTuning& g) {
   r.checkKeys(t, "gpu",
               {"splat", "splat_chunk", "splat_list", "trail_pass", "field_storage", "update_items",
-               "scan_spin"});
+               "scan_spin", "upload_context"});
   g.splat = r.choice<GpuTuning::Splat>(
       t, "splat", "gpu", g.splat,
       {{"tiled", GpuTuning::Splat::Tiled}, {"atomic", GpuTuning::Splat::Atomic}});
@@ -270,6 +270,7 @@ void readGpu(const Reader& r, const toml::value& t, GpuTuning& g) {
   }
   if (r.find(t, "scan_spin"))
     g.scanSpin = std::uint32_t(r.integer(t, "scan_spin", "gpu", 0, 0, 1 << 24));
+  g.uploadContext = r.boolean(t, "upload_context", "gpu", g.uploadContext);
 }
 
 glm::mat3 rotationFromDegrees(const glm::vec3& degrees) {

@@ -34,6 +34,9 @@ struct GpuTuning {
   // status before counting that tile's survivors itself; unset: 64 on a CPU
   // rasterizer (llvmpipe), 2^20 on a GPU.
   std::optional<std::uint32_t> scanSpin;
+  // A series' steps copied to the GPU by a second context of each drawing
+  // context (UploadThread), beside the walls' work; false: by the walls' thread.
+  bool uploadContext = true;
 };
 
 }  // namespace sandstorm

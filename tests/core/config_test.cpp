@@ -227,7 +227,7 @@ TEST(Config, TheFieldsMemoryBudgetIsASizeOrAutomatic) {
 TEST(Config, ReadsAndChecksGpuTuning) {
   const AppConfig c = parseConfig(
       "[gpu]\nsplat = \"atomic\"\nsplat_chunk = 37\nsplat_list = 500\ntrail_pass = \"tiled\"\n"
-      "field_storage = \"texture\"\nupdate_items = 8\nscan_spin = 0\n" +
+      "field_storage = \"texture\"\nupdate_items = 8\nscan_spin = 0\nupload_context = false\n" +
           kWall,
       "test.toml");
   EXPECT_EQ(c.gpu.splat, GpuTuning::Splat::Atomic);
@@ -237,11 +237,15 @@ TEST(Config, ReadsAndChecksGpuTuning) {
   EXPECT_EQ(c.gpu.fieldStorage, GpuTuning::FieldStorage::Texture);
   EXPECT_EQ(c.gpu.updateItems, 8);
   EXPECT_EQ(c.gpu.scanSpin, 0u);
+  EXPECT_FALSE(c.gpu.uploadContext);
   const AppConfig d = parseConfig(kWall, "test.toml");
   EXPECT_EQ(d.gpu.splat, GpuTuning::Splat::Tiled);
   EXPECT_EQ(d.gpu.updateItems, 4);
   EXPECT_EQ(d.gpu.trailPass, GpuTuning::TrailPass::Auto);
   EXPECT_FALSE(d.gpu.scanSpin.has_value());
+  EXPECT_TRUE(d.gpu.uploadContext);
+  EXPECT_ERROR("[gpu]\nupload_context = 1\n" + kWall, "test.toml:2", "gpu.upload_context",
+               "true or false");
   EXPECT_ERROR("[gpu]\nupdate_items = 3\n" + kWall, "test.toml:2", "gpu.update_items",
                "1, 2, 4 or 8");
   EXPECT_ERROR("[gpu]\nfield_storage = \"ssbo\"\n" + kWall, "test.toml:2", "gpu.field_storage",
