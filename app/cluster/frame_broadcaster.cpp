@@ -7,6 +7,7 @@
 #include <thread>
 #include <tuple>
 
+#include "app/field_stream.h"
 #include "core/color/color_grid.h"
 #include "core/sim/frame_packet_codec.h"
 #include "core/util/byte_reader.h"
@@ -52,6 +53,96 @@ void FrameBroadcaster::readSeries(std::shared_ptr<FieldSteps> steps, MPI_Comm bl
   steps_ = std::move(steps);
   blind_ = blind;
   uploadAhead_ = uploadAhead;
+}
+
+void FrameBroadcaster::readWatched(LoadOptions options, bool blind) {
+  watched_ = true;
+  blindToWatched_ = blind;
+  options.gpuRoom = nullptr;  // rank 0 says each step's precision
+  watchedOptions_ = std::move(options);
+}
+
+void FrameBroadcaster::watchedStep(const std::shared_ptr<const VectorField>& grid,
+                                   const std::filesystem::path& file) {
+  if (!watched_ || !grid) return;
+  std::erase_if(watchedFiles_, [](const auto& entry) { return entry.second.grid.expired(); });
+  // A rank reads the file with the configuration's options and rank 0's
+  // precision, without asking its GPUs: the same grid (the hash checks).
+  watchedFiles_[grid.get()] =
+      WatchedFile{grid, file, FileIdentity::of(file), grid->halfPrecision()};
+}
+
+bool FrameBroadcaster::sendAsFile(std::uint64_t hash,
+                                  const std::shared_ptr<const VectorField>& grid) {
+  if (!watched_) return false;
+  const auto it = watchedFiles_.find(grid.get());
+  if (it == watchedFiles_.end() || it->second.grid.lock() != grid) return false;
+  const WatchedFile f = it->second;
+  watchedFiles_.erase(it);
+  ByteWriter w;
+  w.u64(hash);
+  w.str(f.file.string());
+  w.boolean(f.identity.present);
+  w.u64(f.identity.size);
+  w.u64(std::uint64_t(f.identity.modified));
+  w.boolean(f.half);
+  post(Kind::GridFile, w.bytes(), false);
+  if (everyRankRead(true)) return true;
+  if (!saidWatched_)
+    log::warn("cluster: a rank could not read the watched step ", f.file.string(),
+              " itself (its log says why); rank 0 sends such steps over MPI");
+  saidWatched_ = true;
+  return false;
+}
+
+std::shared_ptr<const VectorField> FrameBroadcaster::readWatchedStep(
+    std::span<const std::byte> payload) {
+  ByteReader r(payload, "watched step");  // take() checked the payload's checksum
+  const std::uint64_t hash = r.u64("hash");
+  const std::filesystem::path file = r.str("file", 1 << 16);
+  FileIdentity theirs;
+  theirs.present = r.boolean("present");
+  theirs.size = r.u64("size");
+  theirs.modified = std::int64_t(r.u64("modified"));
+  const bool half = r.boolean("half");
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  std::string why;
+  std::shared_ptr<const VectorField> grid;
+  if (blindToWatched_) {
+    why = "--debug-blind-to-steps";
+  } else if (const FileIdentity mine = FileIdentity::of(file); mine != theirs) {
+    why = concat("it is ", mine.text(), " here but was ", theirs.text(), " when rank 0 read it");
+  } else {
+    try {
+      LoadOptions options = watchedOptions_;
+      options.halfPrecision = half;
+      grid = FieldStream::load(file, options);
+      if (fieldHash(*grid) != hash) {
+        why = "what it holds here differs from what rank 0 read";
+        grid.reset();
+      }
+    } catch (const Error& e) {
+      why = e.what();
+    }
+  }
+  if (grid) {
+    ++stats_.watchedRead;
+    stats_.watchedSeconds += std::chrono::duration<double>(Clock::now() - start).count();
+  } else if (!saidWatched_) {
+    log::warn("rank ", mpi_.rank(), " (", mpi_.host(), ") cannot read the watched step ",
+              file.string(), " itself (", why, "); rank 0 sends it over MPI");
+    saidWatched_ = true;
+  }
+  return grid;
+}
+
+bool FrameBroadcaster::everyRankRead(bool mine) {
+  int read = mine ? 1 : 0, all = 0;
+  MPI_Request request;
+  MPI_Iallreduce(&read, &all, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD, &request);
+  mpi_.wait(request, concat("every rank to read a watched step before frame ", nextFrame_));
+  return all != 0;
 }
 
 void FrameBroadcaster::post(Kind kind, std::span<const std::byte> payload, bool perFrame,
@@ -107,7 +198,7 @@ FrameBroadcaster::Message FrameBroadcaster::take(const std::string& what, bool p
   ByteReader header(slot, concat("rank ", mpi_.rank(), ": message from rank 0"));
   if (header.u32("magic") != kSlotMagic) header.fail("magic", "not a Sandstorm cluster message");
   const std::uint8_t kind = header.u8("kind");
-  if (kind < 1 || kind > 5) header.fail("kind", concat("unknown message kind ", int(kind)));
+  if (kind < 1 || kind > 6) header.fail("kind", concat("unknown message kind ", int(kind)));
   header.raw(3, "spare");
   const std::uint32_t sequence = header.u32("sequence");
   if (sequence != expected)
@@ -165,6 +256,7 @@ void FrameBroadcaster::send(const FramePacket& packet) {
         if (blind_ != MPI_COMM_NULL) afterPacket.emplace_back(hash, grid);
         continue;
       }
+      if (sendAsFile(hash, grid)) continue;
       // The hash leads, so a receiver can check the grid that follows.
       ByteWriter w;
       w.u64(hash);
@@ -266,6 +358,15 @@ std::shared_ptr<const FramePacket> FrameBroadcaster::receive() {
           incoming_[expected] = std::make_shared<const VectorField>(decodeField(encoded));
           log::debug("rank ", mpi_.rank(), ": field grid ", std::hex, expected, std::dec,
                      " arrived (", encoded.size(), " bytes)");
+          continue;
+        }
+        case Kind::GridFile: {
+          // Read here if every rank can; otherwise rank 0 sends the grid next.
+          std::shared_ptr<const VectorField> grid = readWatchedStep(m.payload);
+          if (everyRankRead(grid != nullptr)) {
+            ByteReader r(m.payload, "watched step");
+            incoming_[r.u64("hash")] = std::move(grid);
+          }
           continue;
         }
         case Kind::Sparse: {

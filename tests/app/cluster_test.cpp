@@ -192,6 +192,71 @@ TEST(Cluster, ARankThatCannotSeeTheSeriesGetsItsStepsOverMpi) {
   }
 }
 
+// A watched folder (a running simulation's steps, here all written before
+// the start) on three ranks: each step that joins the field on rank 0, the
+// first included, reaches the others as its file's name, which each reads
+// and checks by hash. Played from its start, 90 frames (1.5 s) use all four
+// steps (0.5 s apart). Every wall of every rank holds the same particles at
+// every frame. `extra`: more arguments; returns mpirun's output.
+std::string runWatched(const std::string& name, const std::string& extra) {
+  const auto dir = test::scratchDir(name);
+  std::filesystem::create_directories(dir / "steps");
+  for (int k = 0; k < 4; ++k) {
+    const std::string step = "step_00" + std::to_string(k) + ".vti";
+    std::filesystem::copy_file(std::filesystem::path(SANDSTORM_SOURCE_DIR) / "data/series" / step,
+                               dir / "steps" / step);
+  }
+  std::ofstream(dir / "watched.toml")
+      << "include = \"" << SANDSTORM_SOURCE_DIR << "/tests/data/identity-cluster.toml\"\n"
+      << "[field]\nsource = \"steps\"\nstep_interval = 0.5\n"
+      << "[field_playback]\nloop = false\n";
+  const MpiRun run = ranks(3, "--config " + (dir / "watched.toml").string() +
+                                  " --frames 90 --cluster-stats --hash-log " +
+                                  (dir / "rank{rank}.txt").string() + " " + extra);
+  EXPECT_EQ(run.exitCode, 0) << run.output;
+  EXPECT_EQ(count(run.output, ") joins the field at frame "), 3) << run.output;
+  // Frame by frame, every wall's count and particle hash.
+  std::map<int, std::set<std::string>> particles;
+  for (int rank = 0; rank < 3; ++rank)
+    for (const auto& [key, line] : hashLines(dir / ("rank" + std::to_string(rank) + ".txt"))) {
+      std::istringstream in(line);
+      std::string frame, wall, live, hash;
+      in >> frame >> wall >> live >> hash;
+      particles[key.first].insert(live + " " + hash);
+    }
+  EXPECT_EQ(particles.size(), 90u);
+  for (const auto& [frame, seen] : particles)
+    EXPECT_EQ(seen.size(), 1u) << "the walls differ at frame " << frame;
+  return run.output;
+}
+
+std::string statsOf(const std::string& output, int rank) {
+  const std::string line = "cluster stats, rank " + std::to_string(rank) + " of 3";
+  const std::size_t at = output.find(line);
+  if (at == std::string::npos) return "";
+  return output.substr(at, output.find('\n', at) - at);
+}
+
+TEST(Cluster, EveryRankReadsAWatchedFoldersStepsItself) {
+  const std::string output = runWatched("cluster-watched", "");
+  EXPECT_TRUE(has(output, "every rank reads the watched folder's new steps itself")) << output;
+  for (int rank : {1, 2}) {
+    const std::string stats = statsOf(output, rank);
+    EXPECT_TRUE(has(stats, "field grids: 0 (")) << stats;
+    EXPECT_TRUE(has(stats, "watched steps read here: 4 (")) << stats;
+  }
+}
+
+// A rank that cannot read a watched step gets it over MPI, as every rank
+// then does, and says so once.
+TEST(Cluster, ARankThatCannotReadAWatchedStepGetsItOverMpi) {
+  const std::string output = runWatched("cluster-watched-blind", "--debug-blind-to-steps");
+  EXPECT_EQ(count(output, "cannot read the watched step"), 1) << output;
+  EXPECT_TRUE(has(output, "rank 0 sends such steps over MPI")) << output;
+  EXPECT_TRUE(has(statsOf(output, 2), "field grids: 4 (")) << statsOf(output, 2);
+  EXPECT_TRUE(has(statsOf(output, 1), "watched steps read here: 4 (")) << statsOf(output, 1);
+}
+
 TEST(Cluster, AHalfPrecisionSeriesTravelsAsHalvesAndDrawsTheSameEverywhere) {
   const std::string output =
       expectSameHashes("tests/data/series-half-cluster.toml", "", 60, "cluster-series-half");
