@@ -646,8 +646,6 @@ void AppRun::streamField() {
 void AppRun::appendFieldStep(double time, const std::string& file,
                              std::shared_ptr<const VectorField> field, std::uint32_t completeAt) {
   const std::uint32_t frame = main_.nextFrame();
-  // In cluster mode the ranks read the step's file too, rather than receive it.
-  if (cluster_) cluster_->watchedStep(field, file);
   try {
     main_.appendFieldFrame(time, std::move(field), file);
   } catch (const Error& e) {

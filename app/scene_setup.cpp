@@ -208,15 +208,6 @@ std::optional<FieldSource> sparseField(const std::filesystem::path& path, const 
 
 }  // namespace
 
-LoadOptions fileLoadOptions(const FieldSpec& spec) {
-  LoadOptions options;
-  options.arrayName = spec.name;
-  options.resolution = spec.resolution;
-  options.memoryBudget = std::size_t(fieldMemoryBudget(spec));
-  options.halfPrecision = spec.halfPrecision;
-  return options;
-}
-
 FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDir) {
   FieldSource out;
   if (spec.source == "analytic") {
@@ -240,7 +231,11 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
       out.update.equation = std::make_shared<FieldEquation>(*equation);
   } else {
     const std::filesystem::path path = resolve(spec.source, baseDir);
-    LoadOptions options = fileLoadOptions(spec);
+    LoadOptions options;
+    options.arrayName = spec.name;
+    options.resolution = spec.resolution;
+    options.memoryBudget = std::size_t(fieldMemoryBudget(spec));
+    options.halfPrecision = spec.halfPrecision;
     if (spec.autoPrecision) options.gpuRoom = gpuRoomForFields;
     std::error_code ec;
     // A folder is watched for steps, unless it is an OpenFOAM case.

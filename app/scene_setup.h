@@ -35,9 +35,6 @@ struct FieldSource {
 // loads a file (VTK, VDB, FGA, VF; a .pvd is a time series). Relative paths
 // resolve against `baseDir`. Throws Error naming the source on failure.
 FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDir);
-// How [field] loads a file (array, resolution, budget, precision), without
-// asking the GPUs (field.precision = "auto").
-LoadOptions fileLoadOptions(const FieldSpec& spec);
 // Hands a field to the main context: static or timeline.
 void useField(class MainContext& main, const FieldSource& source);
 

@@ -59,10 +59,6 @@ class ClusterLink {
   // cluster.field = "read": every rank's field checked against rank 0's by hash.
   // The last step of start-up: from here on waits are bounded by cluster.timeout_s.
   virtual void shareField(const FieldSource& field) = 0;
-  // Rank 0: a watched folder's step joined the field, read from `file`
-  // (cluster.steps = "read": the ranks read it too, instead of receiving it).
-  virtual void watchedStep(const std::shared_ptr<const VectorField>& grid,
-                           const std::string& file) = 0;
   // SIGINT/SIGTERM: waits end soon once this flag is set.
   virtual void watchInterrupt(const std::atomic<bool>* flag) = 0;
 

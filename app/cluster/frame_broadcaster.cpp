@@ -7,7 +7,6 @@
 #include <thread>
 #include <tuple>
 
-#include "app/field_stream.h"
 #include "core/color/color_grid.h"
 #include "core/sim/frame_packet_codec.h"
 #include "core/util/byte_reader.h"
@@ -55,94 +54,9 @@ void FrameBroadcaster::readSeries(std::shared_ptr<FieldSteps> steps, MPI_Comm bl
   uploadAhead_ = uploadAhead;
 }
 
-void FrameBroadcaster::readWatched(LoadOptions options, bool blind) {
-  watched_ = true;
-  blindToWatched_ = blind;
-  options.gpuRoom = nullptr;  // rank 0 says each step's precision
-  watchedOptions_ = std::move(options);
-}
-
-void FrameBroadcaster::watchedStep(const std::shared_ptr<const VectorField>& grid,
-                                   const std::filesystem::path& file) {
-  if (!watched_ || !grid) return;
-  std::erase_if(watchedFiles_, [](const auto& entry) { return entry.second.grid.expired(); });
-  // A rank reads the file with the configuration's options and rank 0's
-  // precision, without asking its GPUs: the same grid (the hash checks).
-  watchedFiles_[grid.get()] =
-      WatchedFile{grid, file, FileIdentity::of(file), grid->halfPrecision()};
-}
-
-bool FrameBroadcaster::sendAsFile(std::uint64_t hash,
-                                  const std::shared_ptr<const VectorField>& grid) {
-  if (!watched_) return false;
-  const auto it = watchedFiles_.find(grid.get());
-  if (it == watchedFiles_.end() || it->second.grid.lock() != grid) return false;
-  const WatchedFile f = it->second;
-  watchedFiles_.erase(it);
-  ByteWriter w;
-  w.u64(hash);
-  w.str(f.file.string());
-  w.boolean(f.identity.present);
-  w.u64(f.identity.size);
-  w.u64(std::uint64_t(f.identity.modified));
-  w.boolean(f.half);
-  post(Kind::GridFile, w.bytes(), false);
-  if (everyRankRead(true)) return true;
-  if (!saidWatched_)
-    log::warn("cluster: a rank could not read the watched step ", f.file.string(),
-              " itself (its log says why); rank 0 sends such steps over MPI");
-  saidWatched_ = true;
-  return false;
-}
-
-std::shared_ptr<const VectorField> FrameBroadcaster::readWatchedStep(
-    std::span<const std::byte> payload) {
-  ByteReader r(payload, "watched step");  // take() checked the payload's checksum
-  const std::uint64_t hash = r.u64("hash");
-  const std::filesystem::path file = r.str("file", 1 << 16);
-  FileIdentity theirs;
-  theirs.present = r.boolean("present");
-  theirs.size = r.u64("size");
-  theirs.modified = std::int64_t(r.u64("modified"));
-  const bool half = r.boolean("half");
-  using Clock = std::chrono::steady_clock;
-  const Clock::time_point start = Clock::now();
-  std::string why;
-  std::shared_ptr<const VectorField> grid;
-  if (blindToWatched_) {
-    why = "--debug-blind-to-steps";
-  } else if (const FileIdentity mine = FileIdentity::of(file); mine != theirs) {
-    why = concat("it is ", mine.text(), " here but was ", theirs.text(), " when rank 0 read it");
-  } else {
-    try {
-      LoadOptions options = watchedOptions_;
-      options.halfPrecision = half;
-      grid = FieldStream::load(file, options);
-      if (fieldHash(*grid) != hash) {
-        why = "what it holds here differs from what rank 0 read";
-        grid.reset();
-      }
-    } catch (const Error& e) {
-      why = e.what();
-    }
-  }
-  if (grid) {
-    ++stats_.watchedRead;
-    stats_.watchedSeconds += std::chrono::duration<double>(Clock::now() - start).count();
-  } else if (!saidWatched_) {
-    log::warn("rank ", mpi_.rank(), " (", mpi_.host(), ") cannot read the watched step ",
-              file.string(), " itself (", why, "); rank 0 sends it over MPI");
-    saidWatched_ = true;
-  }
-  return grid;
-}
-
-bool FrameBroadcaster::everyRankRead(bool mine) {
-  int read = mine ? 1 : 0, all = 0;
-  MPI_Request request;
-  MPI_Iallreduce(&read, &all, 1, MPI_INT, MPI_LAND, MPI_COMM_WORLD, &request);
-  mpi_.wait(request, concat("every rank to read a watched step before frame ", nextFrame_));
-  return all != 0;
+void FrameBroadcaster::announceSteps(std::shared_ptr<FieldSteps> steps, std::size_t known) {
+  announcing_ = std::move(steps);
+  announced_ = known;
 }
 
 void FrameBroadcaster::post(Kind kind, std::span<const std::byte> payload, bool perFrame,
@@ -243,6 +157,13 @@ void FrameBroadcaster::send(const FramePacket& packet) {
   if (packet.fieldUpdate) {
     const std::optional<FieldSeriesRef>& series = packet.fieldUpdate->series;
     const bool bySteps = series_ && series.has_value();
+    // A watched folder's steps that joined since: every reading rank's reader takes their files.
+    for (; bySteps && announcing_ && announced_ < series->steps; ++announced_) {
+      ByteWriter w;
+      w.u32(std::uint32_t(announced_));
+      w.str(announcing_->name(announced_));
+      post(Kind::StepFile, w.bytes(), false);
+    }
     refs.field = bySteps ? stepKey(series->first, series->firstFile)
                          : store_.identify(packet.fieldUpdate->field);
     refs.next = bySteps ? stepKey(series->second, series->secondFile)
@@ -256,7 +177,6 @@ void FrameBroadcaster::send(const FramePacket& packet) {
         if (blind_ != MPI_COMM_NULL) afterPacket.emplace_back(hash, grid);
         continue;
       }
-      if (sendAsFile(hash, grid)) continue;
       // The hash leads, so a receiver can check the grid that follows.
       ByteWriter w;
       w.u64(hash);
@@ -360,13 +280,16 @@ std::shared_ptr<const FramePacket> FrameBroadcaster::receive() {
                      " arrived (", encoded.size(), " bytes)");
           continue;
         }
-        case Kind::GridFile: {
-          // Read here if every rank can; otherwise rank 0 sends the grid next.
-          std::shared_ptr<const VectorField> grid = readWatchedStep(m.payload);
-          if (everyRankRead(grid != nullptr)) {
-            ByteReader r(m.payload, "watched step");
-            incoming_[r.u64("hash")] = std::move(grid);
-          }
+        case Kind::StepFile: {
+          ByteReader r(m.payload, "watched step");  // take() checked the payload's checksum
+          const std::uint32_t step = r.u32("step");
+          const std::string file = r.str("file", 1 << 16);
+          if (!steps_) continue;  // this rank gets the steps from rank 0
+          if (step != steps_->count())
+            throw Error(concat("rank ", mpi_.rank(), ": rank 0 announced step ", step,
+                               " of its watched folder where step ", steps_->count(),
+                               " was expected"));
+          steps_->appendFile(file);
           continue;
         }
         case Kind::Sparse: {

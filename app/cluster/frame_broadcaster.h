@@ -17,17 +17,13 @@
 // ahead as rank 0's playback does; a rank that cannot see them receives the
 // grid after the packet, over a communicator of rank 0 and such ranks only.
 // Stores are keyed by step and file then, so nobody hashes a step's bytes.
-//
-// A watched folder's steps (readWatched): a step rank 0 read from a file
-// travels as the file's name and identity; each rank checks the identity,
-// reads the file itself and checks the grid's hash against rank 0's. If any
-// rank could not, rank 0 sends the grid to all, as before (said once).
+// A watched folder is such a series that grows: each step that joins rank
+// 0's is announced, by its file, before the packet that first counts it, and
+// every reading rank appends that file to its own reader (announceSteps).
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
-#include <filesystem>
-#include <map>
 #include <memory>
 #include <optional>
 #include <span>
@@ -36,10 +32,8 @@
 
 #include "app/cluster/mpi_session.h"
 #include "core/field/field_timeline.h"
-#include "core/io/load_options.h"
 #include "core/sim/field_store.h"
 #include "core/sim/frame_packet.h"
-#include "core/util/file_identity.h"
 
 namespace sandstorm {
 
@@ -57,10 +51,8 @@ class FrameBroadcaster {
     std::uint64_t grids = 0;  // field grids sent or received
     std::uint64_t gridBytes = 0;
     double gridSeconds = 0.0;
-    std::uint64_t stepsRead = 0;    // series steps this rank took from its own reader
-    double stepSeconds = 0.0;       // waiting for them
-    std::uint64_t watchedRead = 0;  // a watched folder's steps this rank read itself
-    double watchedSeconds = 0.0;    // reading and checking them
+    std::uint64_t stepsRead = 0;  // series steps this rank took from its own reader
+    double stepSeconds = 0.0;     // waiting for them
   };
 
   FrameBroadcaster(MpiSession& mpi, std::size_t chunkBytes, std::size_t fieldCache);
@@ -85,14 +77,9 @@ class FrameBroadcaster {
   // `uploadAhead` (field.upload_ahead): packets to this rank's walls carry the
   // step after the pair from its own reader, as rank 0's own walls get it.
   void readSeries(std::shared_ptr<FieldSteps> steps, MPI_Comm blind, bool uploadAhead);
-  // Every rank, before the first frame, when rank 0's field is a watched
-  // folder and cluster.steps = "read": its steps travel as files. `options`:
-  // how this rank loads one (rank 0 tells each step's precision); `blind`:
-  // this rank behaves as one that cannot see the files (a test's fault).
-  void readWatched(LoadOptions options, bool blind = false);
-  // Rank 0: `grid` is a watched step read from `file`; it travels as the file.
-  void watchedStep(const std::shared_ptr<const VectorField>& grid,
-                   const std::filesystem::path& file);
+  // Rank 0, after readSeries, when the series is a watched folder's: the
+  // steps after the first `known` are announced by file as they join `steps`.
+  void announceSteps(std::shared_ptr<FieldSteps> steps, std::size_t known);
 
   const Stats& stats() const { return stats_; }
   // Fault injection for the tests: rank 0 damages the packet of `frame` after checksumming it.
@@ -105,13 +92,7 @@ class FrameBroadcaster {
     Stop = 3,
     Hashes = 4,
     Sparse = 5,
-    GridFile = 6  // a watched step: its hash, file, identity and precision
-  };
-  struct WatchedFile {
-    std::weak_ptr<const VectorField> grid;
-    std::filesystem::path file;
-    FileIdentity identity;  // as rank 0 read it
-    bool half = false;
+    StepFile = 6  // a watched folder's new step: its index and file
   };
   struct Message {
     Kind kind;
@@ -124,13 +105,6 @@ class FrameBroadcaster {
   // A series step's grid on a receiving rank: from its own reader, or from rank 0 over blind_.
   std::shared_ptr<const VectorField> seriesStep(std::uint32_t frame, std::uint32_t step,
                                                 const FileIdentity& file, std::uint64_t key);
-  // Rank 0: `grid` as its file, if it is a watched step; false if it is not, or a rank could not
-  // read it.
-  bool sendAsFile(std::uint64_t hash, const std::shared_ptr<const VectorField>& grid);
-  // The other ranks: reads the step a GridFile message names; null if it cannot (says why once).
-  std::shared_ptr<const VectorField> readWatchedStep(std::span<const std::byte> payload);
-  // Every rank: whether all ranks read the step (a collective, after a GridFile message).
-  bool everyRankRead(bool mine);
   int corruptFrame_ = -1;
 
   MpiSession& mpi_;
@@ -145,12 +119,9 @@ class FrameBroadcaster {
   bool series_ = false;                // readSeries was called
   std::shared_ptr<FieldSteps> steps_;  // this rank's own reader of the series
   bool uploadAhead_ = false;
-  std::optional<FieldSeriesRef> playing_;  // the pair the last series packet named
-  bool watched_ = false;                   // readWatched was called
-  bool blindToWatched_ = false;
-  LoadOptions watchedOptions_;
-  std::map<const VectorField*, WatchedFile> watchedFiles_;  // rank 0: steps not sent yet
-  bool saidWatched_ = false;
+  std::optional<FieldSeriesRef> playing_;   // the pair the last series packet named
+  std::shared_ptr<FieldSteps> announcing_;  // rank 0: a watched folder's steps
+  std::size_t announced_ = 0;               // of them, those the ranks know
   MPI_Comm blind_ = MPI_COMM_NULL;
   std::uint32_t blindSequence_ = 0;  // messages on blind_
   std::uint32_t nextFrame_ = 0;      // for messages: the frame expected next

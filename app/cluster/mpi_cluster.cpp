@@ -251,30 +251,18 @@ void MpiCluster::shareField(const FieldSource& field) {
     ~FrameTimeout() { mpi.setTimeout(seconds); }
   } frameTimeout{mpi_, frameTimeout_};
   if (readSteps_) {
-    // Whether rank 0's field is a streamed series (1) or a watched folder
-    // (2): every rank takes part in sharing it. A watched folder grows on
-    // rank 0, whose packets then name each new step's file for the ranks to read.
-    int kind = !root()                                        ? 0
-               : field.stream                                 ? 2
-               : field.timeline && field.timeline->streamed() ? 1
-                                                              : 0;
+    // Whether rank 0's field is a streamed series, or a watched folder's
+    // (a series that grows on rank 0, its new steps announced to the
+    // others): every rank takes part in sharing it.
+    int series = root() && field.timeline && field.timeline->streamed() ? 1 : 0;
     MPI_Request request;
-    MPI_Ibcast(&kind, 1, MPI_INT, 0, MPI_COMM_WORLD, &request);
+    MPI_Ibcast(&series, 1, MPI_INT, 0, MPI_COMM_WORLD, &request);
     mpi_.wait(request, "rank 0 to say what its field is");
-    if (kind == 1) {
+    if (series) {
       shareSeries(field);
+      if (root() && field.stream)
+        broadcaster_->announceSteps(field.timeline->steps(), field.timeline->size());
       return;
-    }
-    if (kind == 2) {
-      broadcaster_->readWatched(fileLoadOptions(fieldSpec_),
-                                !root() && options_.blindToSteps && rank() == options_.debugRank);
-      // The first step too, where the ranks did not read it (cluster.field = "broadcast").
-      if (root() && field.timeline && field.timeline->steps())
-        broadcaster_->watchedStep(field.update.field, field.timeline->steps()->name(0));
-      if (root())
-        log::info(
-            "cluster: every rank reads the watched folder's new steps itself (a rank that "
-            "cannot gets them over MPI)");
     }
   }
   if (!readField_) return;
@@ -288,11 +276,6 @@ void MpiCluster::shareField(const FieldSource& field) {
   if (broadcaster_->pinLocal(grids) && root())
     log::info("cluster: every rank read the same field (", grids.size(),
               " grid(s)); no grid travels");
-}
-
-void MpiCluster::watchedStep(const std::shared_ptr<const VectorField>& grid,
-                             const std::string& file) {
-  if (root() && broadcaster_) broadcaster_->watchedStep(grid, file);
 }
 
 void MpiCluster::shareSeries(const FieldSource& field) {
@@ -485,8 +468,7 @@ void MpiCluster::finish() {
             ms(s.maxBroadcastSeconds), "); swap barrier ", ms(swapSeconds_ / swaps), "/frame (max ",
             ms(maxSwapSeconds_), "); waiting for own walls ", ms(drawWaitSeconds_ / swaps),
             "/frame; field grids: ", s.grids, " (", s.gridBytes, " B, ", ms(s.gridSeconds),
-            "); series steps read here: ", s.stepsRead, " (waited ", ms(s.stepSeconds),
-            "); watched steps read here: ", s.watchedRead, " (", ms(s.watchedSeconds), ")");
+            "); series steps read here: ", s.stepsRead, " (waited ", ms(s.stepSeconds), ")");
 }
 
 }  // namespace sandstorm

@@ -42,8 +42,6 @@ class MpiCluster final : public ClusterLink {
   bool ready(const std::string& error) override;
   void shareField(const FieldSource& field) override;
   void watchInterrupt(const std::atomic<bool>* flag) override { mpi_.watchInterrupt(flag); }
-  void watchedStep(const std::shared_ptr<const VectorField>& grid,
-                   const std::string& file) override;
   void send(const FramePacket& packet) override;
   void sendStop() override;
   std::shared_ptr<const FramePacket> receive() override;

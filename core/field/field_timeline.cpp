@@ -55,6 +55,10 @@ void FieldSteps::append(const std::filesystem::path&, std::shared_ptr<const Vect
   throw Error("FieldTimeline: this series takes no appended steps");
 }
 
+void FieldSteps::appendFile(const std::filesystem::path&) {
+  throw Error("FieldTimeline: this series takes no appended steps");
+}
+
 void FieldTimeline::append(double time, std::shared_ptr<const VectorField> frame,
                            const std::filesystem::path& file) {
   if (!frame) throw Error("FieldTimeline: a missing frame");

@@ -53,6 +53,12 @@ class FieldSteps {
   // Throws Error, changing nothing, when the steps take no new ones or the
   // frame is on another grid.
   virtual void append(const std::filesystem::path& file, std::shared_ptr<const VectorField> frame);
+  // A new last step not read yet (a cluster rank following rank 0's watched
+  // folder): read from `file` when wanted, and checked then. Throws Error when
+  // the steps take no new ones.
+  virtual void appendFile(const std::filesystem::path& file);
+  // How many steps there are.
+  virtual std::size_t count() const = 0;
 };
 
 // The pair a streamed timeline's playback is at, named so that another

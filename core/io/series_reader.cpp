@@ -118,6 +118,13 @@ void SeriesReader::append(const std::filesystem::path& file,
   changed_.notify_all();
 }
 
+void SeriesReader::appendFile(const std::filesystem::path& file) {
+  const FileIdentity identity = FileIdentity::of(file);
+  std::lock_guard lock(mutex_);
+  sources_.push_back({file, 0});
+  identities_.push_back(identity);
+}
+
 std::shared_ptr<const VectorField> SeriesReader::wait(std::size_t i) {
   std::unique_lock lock(mutex_);
   if (i >= sources_.size())

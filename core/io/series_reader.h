@@ -59,6 +59,8 @@ class SeriesReader final : public FieldSteps {
   std::vector<std::size_t> resident() const override;
   FileIdentity identity(std::size_t i) const override;
   void append(const std::filesystem::path& file, std::shared_ptr<const VectorField> frame) override;
+  void appendFile(const std::filesystem::path& file) override;
+  std::size_t count() const override { return size(); }
 
   Stats stats() const;
   std::size_t size() const;

@@ -193,11 +193,13 @@ TEST(Cluster, ARankThatCannotSeeTheSeriesGetsItsStepsOverMpi) {
 }
 
 // A watched folder (a running simulation's steps, here all written before
-// the start) on three ranks: each step that joins the field on rank 0, the
-// first included, reaches the others as its file's name, which each reads
-// and checks by hash. Played from its start, 90 frames (1.5 s) use all four
-// steps (0.5 s apart). Every wall of every rank holds the same particles at
-// every frame. `extra`: more arguments; returns mpirun's output.
+// the start) on three ranks: a series that grows on rank 0. Each rank opens
+// its first step itself, each step that joins on rank 0 is announced to the
+// others by its file, and every rank's reader reads the steps its playback
+// needs, checked by file against rank 0's, as for a series. Played from its
+// start, 90 frames (1.5 s) use all four steps (0.5 s apart). Every wall of
+// every rank holds the same particles at every frame. `extra`: more
+// arguments; returns mpirun's output.
 std::string runWatched(const std::string& name, const std::string& extra) {
   const auto dir = test::scratchDir(name);
   std::filesystem::create_directories(dir / "steps");
@@ -239,22 +241,22 @@ std::string statsOf(const std::string& output, int rank) {
 
 TEST(Cluster, EveryRankReadsAWatchedFoldersStepsItself) {
   const std::string output = runWatched("cluster-watched", "");
-  EXPECT_TRUE(has(output, "every rank reads the watched folder's new steps itself")) << output;
+  EXPECT_TRUE(has(output, "the series' steps are read from disk by rank(s) 0, 1, 2")) << output;
   for (int rank : {1, 2}) {
     const std::string stats = statsOf(output, rank);
     EXPECT_TRUE(has(stats, "field grids: 0 (")) << stats;
-    EXPECT_TRUE(has(stats, "watched steps read here: 4 (")) << stats;
+    EXPECT_TRUE(has(stats, "series steps read here: 4 (")) << stats;
   }
 }
 
-// A rank that cannot read a watched step gets it over MPI, as every rank
-// then does, and says so once.
-TEST(Cluster, ARankThatCannotReadAWatchedStepGetsItOverMpi) {
+// A rank that cannot see the watched folder gets its steps from rank 0 over
+// MPI, says so once, and draws the same; the others still read them.
+TEST(Cluster, ARankThatCannotSeeAWatchedFolderGetsItsStepsOverMpi) {
   const std::string output = runWatched("cluster-watched-blind", "--debug-blind-to-steps");
-  EXPECT_EQ(count(output, "cannot read the watched step"), 1) << output;
-  EXPECT_TRUE(has(output, "rank 0 sends such steps over MPI")) << output;
+  EXPECT_EQ(count(output, "cannot read the series' steps itself"), 1) << output;
+  EXPECT_TRUE(has(output, "rank 0 sends them over MPI to rank(s) 2")) << output;
   EXPECT_TRUE(has(statsOf(output, 2), "field grids: 4 (")) << statsOf(output, 2);
-  EXPECT_TRUE(has(statsOf(output, 1), "watched steps read here: 4 (")) << statsOf(output, 1);
+  EXPECT_TRUE(has(statsOf(output, 1), "series steps read here: 4 (")) << statsOf(output, 1);
 }
 
 TEST(Cluster, AHalfPrecisionSeriesTravelsAsHalvesAndDrawsTheSameEverywhere) {

@@ -134,6 +134,29 @@ TEST(SeriesReader, AppendedStepsAreHeldWhileWantedAndReadAgainFromTheirFiles) {
   EXPECT_EQ(reader->size(), 8u);
 }
 
+// A cluster rank following rank 0's watched folder: steps appended by file
+// alone are read when wanted, checked against the first step's grid.
+TEST(SeriesReader, StepsAppendedByFileAreReadWhenWanted) {
+  const auto dir = test::scratch();
+  SeriesIndex index = indexSeries(writeSeries(dir, 1, 1), {});
+  auto reader = readerFor(index, 3, 1);
+  for (int n = 1; n < 5; ++n) {
+    writeVti(dir / stepName(n), stepField(n));
+    reader->appendFile(dir / stepName(n));
+    EXPECT_EQ(reader->count(), std::size_t(n + 1));
+    EXPECT_EQ(reader->identity(std::size_t(n)), FileIdentity::of(dir / stepName(n)));
+    EXPECT_EQ(reader->get(std::size_t(n)), nullptr);  // not read until wanted
+  }
+  EXPECT_EQ(reader->stats().stepsRead, 0u);
+  for (int n : {3, 1, 4})
+    expectStep(*reader->wait(std::size_t(n)), n);
+  EXPECT_EQ(reader->stats().stepsRead, 3u);
+  // A step on another grid fails when read, naming its file.
+  writeVti(dir / "other.vti", stepField(5, {5, 3, 2}));
+  reader->appendFile(dir / "other.vti");
+  test::expectError([&] { reader->wait(5); }, {"other.vti", "5x3x2", "4x3x2"});
+}
+
 TEST(SeriesReader, ReadsBackwardsAndAroundALoop) {
   const auto dir = test::scratch();
   SeriesIndex index = indexSeries(writeSeries(dir, 6, 6), {});
