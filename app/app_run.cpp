@@ -322,7 +322,8 @@ std::unique_ptr<GlContext> AppRun::uploadContext(const GlContext& context, const
         EglContext::Options{.share = static_cast<const EglContext*>(&context), .device = gpu});
   } catch (const Error& e) {
     log::warn("wall '", spec.name, "': no second OpenGL context for uploads (", e.what(),
-              "); its thread copies a series' steps to the GPU itself");
+              "); its thread copies a series' steps to the GPU itself, as with "
+              "gpu.upload_context = false");
     return nullptr;
   }
 }

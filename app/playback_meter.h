@@ -1,10 +1,11 @@
-// PlaybackMeter: how fast a time-varying field played over the run's measured
-// frames (after run.stats_warmup), in steps of the series a second of wall
-// time. Each frame the main thread tells it the pair in use; a step counts
-// once it comes into use (the pair's first step moves on: by the shorter way
-// round the series, so playing backwards and looping count too). The wall time runs from the first
-// measured frame's packet to the last one's, so start-up and the closing images are left out, and
-// frames that waited for the disk are in it.
+// PlaybackMeter: how fast a time-varying field played over the run's
+// measured frames (after run.stats_warmup), in steps of the series a second
+// of wall time. Each frame the main thread tells it the pair in use; a step
+// counts once it comes into use (the pair's first step moves on: by the
+// shorter way round the series, so playing backwards and looping count too).
+// The wall time runs from the first measured frame's packet to the last
+// one's, so start-up and the closing images are left out, and frames that
+// waited for the disk are in it.
 #pragma once
 
 #include <chrono>

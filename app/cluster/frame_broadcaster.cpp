@@ -285,9 +285,9 @@ std::shared_ptr<const FramePacket> FrameBroadcaster::receive() {
           const std::uint32_t step = r.u32("step");
           const std::string file = r.str("file", 1 << 16);
           if (!steps_) continue;  // this rank gets the steps from rank 0
-          if (step != steps_->count())
+          if (step != steps_->size())
             throw Error(concat("rank ", mpi_.rank(), ": rank 0 announced step ", step,
-                               " of its watched folder where step ", steps_->count(),
+                               " of its watched folder where step ", steps_->size(),
                                " was expected"));
           steps_->appendFile(file);
           continue;

@@ -14,11 +14,7 @@ namespace sandstorm {
 
 GridPrefetch::~GridPrefetch() {
   if (writing_.valid()) writing_.wait();  // the worker writes into staging_'s mapping
-  // The upload thread copies into grid_; its fence is deleted here, on this context.
-  if (upload_.valid()) try {
-      upload_.get();
-    } catch (const std::exception&) {
-    }
+  dropUpload();
 }
 
 void GridPrefetch::advance(std::shared_ptr<const VectorField> wanted) {
@@ -123,7 +119,7 @@ void GridPrefetch::written() {
   writing_.get();  // rethrows what the worker threw
   const Staging& staging = staging_[std::size_t(using_)];
   glFlushMappedNamedBufferRange(staging.buffer.id(), 0, GLsizeiptr(staging.bytes));
-  if (!uploads_ || copiedLayers_ > 0) return;
+  if (!uploads_) return;
   // The whole frame at once, after what this context did before (the
   // grid's allocation, the flush). The thread reads only grid_'s layout and
   // the staging buffer's name, which stay until the upload is collected.
@@ -152,6 +148,14 @@ void GridPrefetch::collectUpload(bool wait) {
   // makes what another context wrote visible in this one.
   copiedLayers_ = layers_;
   grid_.hold(frame_);
+}
+
+void GridPrefetch::dropUpload() {
+  if (!upload_.valid()) return;
+  try {
+    upload_.get();  // its fence is deleted here, on this context
+  } catch (const std::exception&) {
+  }
 }
 
 void GridPrefetch::copy(std::size_t bytes) {
@@ -184,10 +188,7 @@ void GridPrefetch::fail(const std::string& what) {
   log::warn("field: uploading the next step ahead of need stopped (", what,
             "); each step is uploaded when it comes into use, as with field.upload_ahead = false");
   if (writing_.valid()) writing_.wait();
-  if (upload_.valid()) try {
-      upload_.get();
-    } catch (const std::exception&) {
-    }
+  dropUpload();
   failed_ = true;
   frame_ = nullptr;
   grid_.hold(nullptr);

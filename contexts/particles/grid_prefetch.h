@@ -6,12 +6,14 @@
 // mapped (no GL call on it); once it is done, the frame is copied into a
 // GpuField of this one's own: by an UploadThread where the walls' context
 // has one, all at once and beside the walls' work on the GPU; otherwise by
-// the walls' thread, at most kCopyBytesPerFrame a frame. ParticleEnvironment takes that grid when
-// the frame becomes current or next. There are two staging buffers, used in turn: the frame after
-// starts being written the moment one is taken, while the GPU still copies out of the other (a
-// series' step every other frame leaves the worker two frames, not one). Memory beyond the two
-// frames being blended: two frames' texels of host staging (one for a frame beyond half of
-// maxStagingBytes) and one grid on the GPU.
+// the walls' thread, at most kCopyBytesPerFrame a frame. ParticleEnvironment
+// takes that grid when the frame becomes current or next. There are two
+// staging buffers, used in turn: the frame after starts being written the
+// moment one is taken, while the GPU still copies out of the other (a
+// series' step every other frame leaves the worker two frames, not one).
+// Memory beyond the two frames being blended: two frames' texels of host
+// staging (one for a frame beyond half of maxStagingBytes) and one grid on
+// the GPU.
 //
 // A hint only: a frame wanted before it is all on the GPU is finished on the
 // spot (takeInto()), so what the particles see never depends on the timing.
@@ -87,6 +89,8 @@ class GridPrefetch {
   // this context's later commands waiting for it on the GPU; grid_ then
   // holds the frame. The staging buffer is busy until the copy's fence.
   void collectUpload(bool wait);
+  // Waits for the upload thread's copy, if one is under way, and lets it go.
+  void dropUpload();
   // A staging buffer the GPU no longer copies out of (of two, the one not
   // used last first; of one, the first); -1: none.
   int freeStaging(bool two) const;

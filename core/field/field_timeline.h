@@ -58,7 +58,7 @@ class FieldSteps {
   // the steps take no new ones.
   virtual void appendFile(const std::filesystem::path& file);
   // How many steps there are.
-  virtual std::size_t count() const = 0;
+  virtual std::size_t size() const = 0;
 };
 
 // The pair a streamed timeline's playback is at, named so that another

@@ -60,10 +60,9 @@ class SeriesReader final : public FieldSteps {
   FileIdentity identity(std::size_t i) const override;
   void append(const std::filesystem::path& file, std::shared_ptr<const VectorField> frame) override;
   void appendFile(const std::filesystem::path& file) override;
-  std::size_t count() const override { return size(); }
+  std::size_t size() const override;
 
   Stats stats() const;
-  std::size_t size() const;
 
   // Reads one step and checks its grid against `grid` (or nothing when null).
   // Throws Error naming the file.

@@ -41,7 +41,7 @@ class ScriptedSteps final : public FieldSteps {
   }
   std::string name(std::size_t i) const override { return "step_" + std::to_string(i) + ".vti"; }
   std::size_t capacity() const override { return 4; }
-  std::size_t count() const override { return frames.size(); }
+  std::size_t size() const override { return frames.size(); }
   std::vector<std::size_t> resident() const override { return {arrived.begin(), arrived.end()}; }
   FileIdentity identity(std::size_t i) const override {
     return {true, 1000 + i, std::int64_t(i) * 7};

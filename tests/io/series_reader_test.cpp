@@ -143,7 +143,7 @@ TEST(SeriesReader, StepsAppendedByFileAreReadWhenWanted) {
   for (int n = 1; n < 5; ++n) {
     writeVti(dir / stepName(n), stepField(n));
     reader->appendFile(dir / stepName(n));
-    EXPECT_EQ(reader->count(), std::size_t(n + 1));
+    EXPECT_EQ(reader->size(), std::size_t(n + 1));
     EXPECT_EQ(reader->identity(std::size_t(n)), FileIdentity::of(dir / stepName(n)));
     EXPECT_EQ(reader->get(std::size_t(n)), nullptr);  // not read until wanted
   }
