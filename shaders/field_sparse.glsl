@@ -5,14 +5,6 @@
 // fieldIndexScale 1 / voxel size, sparseIndexMin/Max the active voxels' index
 // box widened to where every corner reads the background.
 //
-// gSparseLeaf remembers the leaf the last sample's cell lay in, by its index
-// in the grid's array of leaves (sim.sparseLeaves); a cell inside it reads its
-// corners there without walking the tree. A particle's samples follow it
-// through a few cells a frame, so most of them skip the walk: the compute
-// update keeps each particle's leaf from one frame to the next. Any value is
-// safe: an index past the array is no leaf, and a leaf is used only when its
-// box (checked against the tree by SparseField) holds the cell.
-//
 // The words lie in two storage buffers (GpuSparseField): those below
 // kSparseSplitWords at binding 14, the rest at 15 (the same buffer when the
 // grid is smaller), so a grid may pass one buffer's limit (2 GiB on NVIDIA)
@@ -46,9 +38,6 @@ vec3 sparseValue(pnanovdb_buf_t buf, pnanovdb_address_t a) {
               pnanovdb_read_float(buf, pnanovdb_address_offset(a, 8u)));
 }
 
-const uint kNoSparseLeaf = 0xffffffffu;
-uint gSparseLeaf = kNoSparseLeaf;
-
 vec3 sparseSample(vec3 p) {
   precise vec3 u = clamp((p - sim.fieldMin.xyz) * sim.fieldIndexScale.xyz, sim.sparseIndexMin.xyz,
                          sim.sparseIndexMax.xyz);
@@ -66,17 +55,6 @@ vec3 sparseSample(vec3 p) {
   // program small.
   pnanovdb_address_t first;
   bool oneLeaf = false;
-  if (gSparseLeaf < sim.sparseLeaves.y) {
-    pnanovdb_address_t leaf;
-    leaf.byte_offset = sim.sparseLeaves.x + gSparseLeaf * sim.sparseLeaves.z;
-    ivec3 d = i0 - (pnanovdb_read_coord(buf, leaf) & ivec3(~7));
-    if (all(greaterThanEqual(d, ivec3(0))) && all(lessThan(d, ivec3(7)))) {
-      first = pnanovdb_address_offset(
-          leaf, PNANOVDB_GRID_TYPE_GET(PNANOVDB_GRID_TYPE_VEC3F, leaf_off_table) +
-                    uint(12 * (64 * d.x + 8 * d.y + d.z)));
-      oneLeaf = true;
-    }
-  }
   vec3 c[8];
   for (int k = 0; k < 8; ++k) {
     pnanovdb_address_t a;
@@ -90,8 +68,6 @@ vec3 sparseSample(vec3 p) {
       if (k == 0) {
         first = a;
         oneLeaf = level == 0u && all(lessThan(i0 & 7, ivec3(7)));
-        if (level == 0u && sim.sparseLeaves.z != 0u)
-          gSparseLeaf = (acc.leaf.address.byte_offset - sim.sparseLeaves.x) / sim.sparseLeaves.z;
       }
     }
     c[k] = sparseValue(buf, a);

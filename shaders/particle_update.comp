@@ -21,12 +21,6 @@ layout(std430, binding = 5) coherent volatile restrict buffer TileStatus { uint 
 // Trails (ParticleTrails): each survivor's input record, so its trail can follow it.
 layout(std430, binding = 6) writeonly restrict buffer TrailSource { uint trailSource[]; };
 
-#ifdef FIELD_SPARSE
-// Each record's remembered leaf of the sparse grid (SparseLeafMemory).
-layout(std430, binding = 9) readonly restrict buffer InLeaf { uint inLeaf[]; };
-layout(std430, binding = 10) writeonly restrict buffer OutLeaf { uint outLeaf[]; };
-#endif
-
 #ifdef OBSTACLE_LIST
 // The survivors not clear of every obstacle (their output records), for
 // obstacle_collide.comp to put out: the only records that pass reads.
@@ -72,9 +66,6 @@ void main() {
   // Record k * 256 + lid of the tile: neighbouring invocations read neighbouring records.
   Particle p[kItems];
   bool alive[kItems];
-#ifdef FIELD_SPARSE
-  uint leaf[kItems];
-#endif
   for (int k = 0; k < kItems; ++k) {
     uint i = tile * kTile + uint(k) * 256u + lid;
     alive[k] = false;
@@ -83,10 +74,6 @@ void main() {
       p[k].velocityKind = inVelocityKind[i];
 #ifdef BARE_UPDATE
       alive[k] = true;  // sandstorm-bench's ceiling: the same data movement and scan, no physics
-#elif defined(FIELD_SPARSE)
-      gSparseLeaf = inLeaf[i];
-      alive[k] = advance(p[k]);
-      leaf[k] = gSparseLeaf;
 #else
       alive[k] = advance(p[k]);
 #endif
@@ -145,9 +132,6 @@ void main() {
       outPositionLife[o] = p[k].positionLife;
       outVelocityKind[o] = p[k].velocityKind;
       if (uTrails) trailSource[o] = tile * kTile + uint(k) * 256u + lid;
-#ifdef FIELD_SPARSE
-      outLeaf[o] = leaf[k];
-#endif
 #ifdef OBSTACLE_LIST
       bool clear = true;
       for (int i = 0; i < sim.obstacleCount.x; ++i)

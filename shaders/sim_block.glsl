@@ -45,7 +45,6 @@ layout(std140, binding = 0) uniform SimBlock {
   ObstacleBlock obstacles[kMaxObstacles];
   vec4 sparseIndexMin;    // a sparse grid's index box, widened (field_sparse.glsl)
   vec4 sparseIndexMax;
-  uvec4 sparseLeaves;     // its leaves: first byte, count (0: none remembered), bytes each
 } sim;
 
 // The field's grid (GpuField), x fastest: FIELD_BUFFER programs (the compute

@@ -206,7 +206,6 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kOutVelocity, out.velocityKind.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kControl, control_.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kTileStatus, tileStatus_.id());
-  if (read == FieldRead::Sparse) sparseLeaves_.bind(current_, capacity_);
   const GLuint zero = 0;
   glClearNamedBufferData(tileStatus_.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
   if (obstacles) {

@@ -38,7 +38,6 @@
 #include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_environment.h"
 #include "contexts/particles/particle_trails.h"
-#include "contexts/particles/sparse_leaf_memory.h"
 #include "contexts/particles/update_control.h"
 #include "core/config/gpu_tuning.h"
 #include "core/sim/emission_budget.h"
@@ -120,7 +119,6 @@ class ParticleComputeUpdate final : public ParticleBackend {
 
   ParticleEnvironment environment_;
   std::unique_ptr<ParticleTrails> trails_;  // while render.trail_length > 0
-  SparseLeafMemory sparseLeaves_;           // while a sparse grid is read
 
   EmissionBudget budget_;
   std::uint64_t updates_ = 0;

@@ -1,6 +1,5 @@
 #include "contexts/particles/sim_block.h"
 
-#include "core/field/sparse_leaf_array.h"
 #include "core/obstacles/obstacle_physics.h"
 #include "core/sim/particle_physics.h"
 
@@ -23,9 +22,6 @@ int fillSimBlock(const SimBlockInputs& in, SimBlock& b) {
     b.fieldIndexScale = glm::vec4(in.sparse->indexScale(), 0.0f);
     b.sparseIndexMin = glm::vec4(glm::vec3(in.sparse->indexMin() - 2), 0.0f);
     b.sparseIndexMax = glm::vec4(glm::vec3(in.sparse->indexMax() + 1), 0.0f);
-    const SparseLeafArray leaves = sparseLeafArray(*in.sparse);
-    if (leaves.begin + leaves.count * leaves.bytes <= 0xffffffffu)
-      b.sparseLeaves = glm::uvec4(leaves.begin, leaves.count, leaves.bytes, 0u);
   }
   const bool masked = (in.field && in.field->hasValidity()) ||
                       (in.nextField && in.nextField->hasValidity()) ||

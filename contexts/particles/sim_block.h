@@ -57,15 +57,12 @@ struct alignas(16) SimBlock {
   // background (FIELD_SPARSE programs; SparseField::sample).
   glm::vec4 sparseIndexMin;
   glm::vec4 sparseIndexMax;
-  // Its array of leaves: first byte, count, bytes each (count 0 where the
-  // array passes 32-bit addresses; field_sparse.glsl's remembered leaf).
-  glm::uvec4 sparseLeaves;
 };
 
 static_assert(sizeof(EmitterBlock) == 80);
 static_assert(sizeof(ObstacleBlock) == 64);
 static_assert(sizeof(SimBlock) ==
-              16 * 16 + 80 * ParticleState::kMaxEmitters + 32 + 64 * kMaxCollisionShapes + 48);
+              16 * 16 + 80 * ParticleState::kMaxEmitters + 32 + 64 * kMaxCollisionShapes + 32);
 
 // Newborn particles per emission slot (one geometry-shader invocation).
 inline constexpr int kEmissionSlotSize = 64;

@@ -143,23 +143,6 @@ SparseField::SparseField(std::vector<std::uint32_t> words, const std::string& so
               "lower node");
   }
 
-  // Each leaf where its box says: the walk to its first voxel ends in it.
-  // (The GPU finds a remembered leaf's voxels by its box: sparse_leaf_array.h.)
-  pnanovdb_readaccessor_t acc;
-  pnanovdb_readaccessor_init(&acc, root);
-  for (std::uint64_t l = 0; l < leaves.count; ++l) {
-    const pnanovdb_leaf_handle_t leaf = {{leaves.begin + l * leaves.size}};
-    pnanovdb_coord_t at = pnanovdb_leaf_get_bbox_min(buf, leaf);
-    at.x &= ~7;
-    at.y &= ~7;
-    at.z &= ~7;
-    pnanovdb_uint32_t level = 0;
-    pnanovdb_readaccessor_get_value_address_and_level(kType, buf, &acc, &at, &level);
-    if (level != 0 || acc.leaf.address.byte_offset != leaf.address.byte_offset)
-      fail(concat("the leaf at byte ", leaf.address.byte_offset, " says it holds voxel ", at.x, " ",
-                  at.y, " ", at.z, ", which the tree puts elsewhere"));
-  }
-
   const pnanovdb_coord_t lo = pnanovdb_root_get_bbox_min(buf, root);
   const pnanovdb_coord_t hi = pnanovdb_root_get_bbox_max(buf, root);
   indexMin_ = glm::ivec3(lo.x, lo.y, lo.z);
