@@ -35,6 +35,11 @@ std::string itemsDefine(int items) {
   return concat("ITEMS ", items);
 }
 
+// A sparse grid's update advances at most this many records an invocation:
+// NanoVDB's walk takes registers, and on an H100 two records ran the update
+// 10% faster than four, eight 45% slower (docs/PERFORMANCE.md).
+constexpr int kSparseItems = 2;
+
 int checkedItems(int items) {
   if (items != 1 && items != 2 && items != 4 && items != 8)
     throw Error(
@@ -58,7 +63,6 @@ ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity, const GpuTuni
                      {itemsDefine(tuning.updateItems), "FIELD_BUFFER"}),
       items_(tuning.updateItems),
       spinLimit_(scanSpinLimit(tuning)),
-      tile_(256u * std::uint32_t(items_)),
       environment_(tuning.fieldStorage == GpuTuning::FieldStorage::Texture
                        ? GpuField::Storage::Texture
                        : GpuField::Storage::Buffer,
@@ -96,7 +100,9 @@ void ParticleComputeUpdate::allocate(BufferSet& set, std::size_t capacity) {
 
 void ParticleComputeUpdate::allocateTiles(std::size_t capacity) {
   tileStatus_ = gl::createBuffer();
-  const std::size_t tiles = (capacity + tile_ - 1) / tile_ + 1;
+  // Enough for the smallest tile any variant takes (a sparse grid's).
+  const std::size_t tile = 256u * std::size_t(std::min(items_, kSparseItems));
+  const std::size_t tiles = (capacity + tile - 1) / tile + 1;
   glNamedBufferStorage(tileStatus_.id(), GLsizeiptr(tiles * sizeof(std::uint32_t)), nullptr, 0);
 }
 
@@ -175,7 +181,8 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
     flow = flow || block.obstacles[i].shapeFlow.y != 0;
   // The update's variant: how it reads the field, and the obstacles' code
   // only where there are obstacles (it costs registers even unused).
-  std::vector<std::string> defines{itemsDefine(items_)};
+  const int items = read == FieldRead::Sparse ? std::min(items_, kSparseItems) : items_;
+  std::vector<std::string> defines{itemsDefine(items)};
   if (readDefine) defines.push_back(readDefine);
   // The flow around the obstacles is the update's; putting particles out of
   // them is a pass of its own (obstacle_collide.comp), below, over the
@@ -220,9 +227,15 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kCollideList, collideList_.id());
   }
 
-  prepareProgram_.use();
-  glProgramUniform1i(prepareProgram_.id(), 0, current_);
-  glProgramUniform1ui(prepareProgram_.id(), 1, born);
+  // The update's dispatch is sized for its records an invocation.
+  if (items != items_ && !narrowPrepare_)
+    narrowPrepare_ =
+        std::make_unique<gl::Program>(std::vector<std::string>{"particle_prepare.comp"},
+                                      std::vector<std::string>{itemsDefine(items)});
+  const gl::Program& prepare = items != items_ ? *narrowPrepare_ : prepareProgram_;
+  prepare.use();
+  glProgramUniform1i(prepare.id(), 0, current_);
+  glProgramUniform1ui(prepare.id(), 1, born);
   glDispatchCompute(1, 1, 1);
 
   if (born > 0) {

@@ -106,6 +106,7 @@ class ParticleComputeUpdate final : public ParticleBackend {
   std::ptrdiff_t collideListBytes_ = 0;
   UpdateCounts counts_;  // the counts updates left, read late
   gl::Program prepareProgram_, emitProgram_, updateProgram_;
+  std::unique_ptr<gl::Program> narrowPrepare_;  // for a sparse grid's fewer records an invocation
   // Programs other than the plain update, by their defines (FIELD_EQUATION,
   // grids too large for a buffer, OBSTACLES), made on first use.
   std::map<std::string, std::unique_ptr<gl::Program>> variants_;
@@ -115,7 +116,6 @@ class ParticleComputeUpdate final : public ParticleBackend {
   ExpressionPrograms expressionPrograms_;  // field.mode = expression
   int items_;                              // records an invocation
   std::uint32_t spinLimit_;
-  std::uint32_t tile_;  // records per tile
 
   ParticleEnvironment environment_;
   std::unique_ptr<ParticleTrails> trails_;  // while render.trail_length > 0
