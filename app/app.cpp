@@ -8,6 +8,7 @@
 #include "app/cluster/cluster_link.h"
 #include "app/movie_recorder.h"
 #include "contexts/platform/software_rasterizer.h"
+#include "core/config/config_sets.h"
 #include "core/sim/attribute_table.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
@@ -32,6 +33,7 @@ void applySets(AppConfig& config, const std::vector<std::string>& sets) {
     if (eq == std::string::npos || eq == 0)
       throw Error(concat("--set '", set, "': expected key=value, e.g. --set emitter.0.rate=50000"));
     const std::string key = set.substr(0, eq);
+    if (isConfigSetting(key)) continue;  // read with the configuration (applyConfigSets)
     const AttributeResult r =
         table.set(config.particles, key, table.parse(key, set.substr(eq + 1)));
     if (!r.warning.empty()) log::warn("--set ", r.warning);

@@ -7,6 +7,7 @@
 #include "app/file_scene.h"
 #include "app/load_with_window.h"
 #include "contexts/platform/gpu_memory.h"
+#include "core/config/config_sets.h"
 #include "core/io/field_loader.h"
 #ifdef SANDSTORM_MPI
 #include "app/cluster/cluster_main.h"
@@ -216,6 +217,7 @@ int main(int argc, char** argv) {
       // The desktop scene unless a configuration was named.
       AppConfig config = loadConfig(
           configOption->count() > 0 ? configPath : defaultConfig("desktop.toml").string());
+      applyConfigSets(config, options.sets);
       FieldSource field =
           loadWithWindow([&] { return fileSceneField(config, fieldFile, arrayName); },
                          opensWindows(config, options));
@@ -226,6 +228,7 @@ int main(int argc, char** argv) {
     if (!arrayName.empty())
       throw Error("--array " + arrayName + ": names an array of a field file; give the file too");
     AppConfig config = loadConfig(configPath);
+    applyConfigSets(config, options.sets);
     // A field read from a file is read here, where a window can show its progress.
     std::optional<FieldSource> field;
     if (config.field.source != "analytic" && opensWindows(config, options))

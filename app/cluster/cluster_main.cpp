@@ -5,6 +5,7 @@
 #include "app/cluster/cluster_bench.h"
 #include "app/cluster/config_fingerprint.h"
 #include "app/cluster/mpi_cluster.h"
+#include "core/config/config_sets.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
 
@@ -31,6 +32,7 @@ int runCluster(const std::filesystem::path& configPath, const AppOptions& option
   std::string fingerprint, error;
   try {
     AppConfig config = loadConfig(configPath);
+    applyConfigSets(config, options.sets);
     fingerprint = configFingerprint(config, options);
     app.emplace(std::move(config), options, &cluster);
   } catch (const std::exception& e) {

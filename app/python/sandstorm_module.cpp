@@ -17,6 +17,7 @@
 #include "app/default_config.h"
 #include "app/file_scene.h"
 #include "app/stepped_run.h"
+#include "core/config/config_sets.h"
 #include "core/io/field_info.h"
 #include "core/io/field_loader.h"
 #include "core/io/field_writer.h"
@@ -189,8 +190,10 @@ class Run {
       if (array)
         throw Error("array= names an array of a field file; " + path + " is a configuration");
       appConfig = loadConfig(path);
+      applyConfigSets(appConfig, options.sets);
     } else {  // a field file, opened as `sandstorm FILE` opens it
       appConfig = loadConfig(config ? *config : defaultConfig("desktop.toml").string());
+      applyConfigSets(appConfig, options.sets);
       field = fileSceneField(appConfig, path, array.value_or(""));
       openFileScene(appConfig, path, *field->update.field);
     }

@@ -12,6 +12,7 @@
 
 #include "core/config/app_config.h"
 #include "core/config/byte_size.h"
+#include "core/config/config_sets.h"
 #include "core/config/pvx_import.h"
 #include "core/sim/attribute_table.h"
 #include "core/tracking/ipv4_address.h"
@@ -27,8 +28,12 @@ class Reader {
 
   std::string at(const toml::value& v) const {
     const toml::source_location loc = v.location();
-    return loc.line() > 0 ? concat(file_, ":", loc.line()) : file_;
+    return loc.line() > 0 && !commandLine() ? concat(file_, ":", loc.line()) : file_;
   }
+
+  // A --set's setting (applyConfigSets): no file whose lines to name, and
+  // files it names are relative to the folder the program started in.
+  bool commandLine() const { return file_.starts_with("--set "); }
 
   [[noreturn]] void fail(const toml::value& v, const std::string& key,
                          const std::string& what) const {
@@ -297,6 +302,7 @@ std::filesystem::path folderOf(const std::string& file) {
 // included scene finds its data wherever it is included from).
 std::string relativeTo(const Reader& r, const std::string& path) {
   if (path.empty() || std::filesystem::path(path).is_absolute()) return path;
+  if (r.commandLine()) return std::filesystem::path(path).lexically_normal().string();
   return (folderOf(r.file()) / path).lexically_normal().string();
 }
 
@@ -933,6 +939,64 @@ AppConfig parseConfig(const std::string& text, const std::filesystem::path& name
 
 AppConfig loadConfig(const std::filesystem::path& path, std::optional<int> monitors) {
   return parseConfig(readFile(path, ""), path, monitors);
+}
+
+namespace {
+
+// The tables whose keys --set may change (the others are attributes' or arrays).
+const std::set<std::string, std::less<>> kSetTables{
+    "run", "gpu", "field", "scene", "head", "navigation", "tracking", "cluster", "menu"};
+
+bool readsAsToml(const std::string& value) {
+  try {
+    std::istringstream in("v = " + value + "\n");
+    toml::parse(in, "--set");
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+// A TOML value for `text`: itself where TOML reads it, an array of values
+// given with commas (0,0,1.7: as attributes take them), else a string of it.
+std::string tomlValue(const std::string& text) {
+  if (readsAsToml(text)) return text;
+  if (text.find(',') != std::string::npos && readsAsToml("[" + text + "]")) return "[" + text + "]";
+  std::string quoted = "\"";
+  for (const char ch : text) {
+    if (ch == '"' || ch == '\\') quoted += '\\';
+    quoted += ch;
+  }
+  return quoted + "\"";
+}
+
+}  // namespace
+
+bool isConfigSetting(std::string_view key) {
+  const std::size_t dot = key.find('.');
+  if (dot == std::string_view::npos || dot == 0 || dot + 1 == key.size() ||
+      !kSetTables.contains(key.substr(0, dot)))
+    return false;
+  const AttributeTable& table = AttributeTable::instance();
+  const std::string name = table.canonical(key);
+  for (const AttributeInfo& info : table.entries())
+    if (info.key == name) return false;
+  return true;
+}
+
+void applyConfigSets(AppConfig& config, const std::vector<std::string>& sets) {
+  for (const std::string& set : sets) {
+    const std::size_t eq = set.find('=');
+    if (eq == std::string::npos || !isConfigSetting(set.substr(0, eq))) continue;
+    const std::string label = "--set " + set;
+    const std::string key = set.substr(0, eq);
+    for (const char ch : key)
+      if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '.')
+        throw Error(concat(label, ": expected a key of letters, digits, '_' and '.'"));
+    // A file of one dotted key, read on top of the configuration.
+    const toml::value root = parseToml(key + " = " + tomlValue(set.substr(eq + 1)) + "\n", label);
+    read(root, label, std::nullopt, config, 0);
+  }
 }
 
 const char* toString(StereoMode mode) {

@@ -26,6 +26,7 @@ TEST(CommandLine, BadArgumentsFailWithAMessage) {
         Case{"--bogus", "bogus"}, Case{"--set render.size", "expected key=value"},
         Case{"--set render.sise=1", "unknown attribute 'render.sise'"},
         Case{"--set sim.integrator=rk3", "euler, rk2, rk4"},
+        Case{"--set gpu.update_items=3", "--set gpu.update_items=3: gpu.update_items: expected"},
         Case{"--dump-particles out.txt", "expected a .vtp"},
         Case{"--walls nowhere", "no wall named 'nowhere'"}}) {
     const auto r = runSandstorm("--config tests/data/identity.toml --frames 1 " + c.args);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "core/config/config_sets.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -521,6 +522,51 @@ TEST(Config, AHeadCanBeGivenByItsEyesAxis) {
   const AppConfig c = parseConfig("[head]\nright = [0.6, 0.8, 0.0]\n" + kWall, "test.toml");
   ASSERT_TRUE(c.head.right);
   EXPECT_EQ(*c.head.right, glm::vec3(0.6f, 0.8f, 0.0f));
+}
+
+// --set for configuration settings: read on top of the file, in order, each
+// checked as the file's keys are, errors naming the --set; attributes left to
+// the attribute table.
+TEST(Config, SetsChangeConfigurationSettingsAsAFileReadLastWould) {
+  EXPECT_TRUE(isConfigSetting("gpu.update_items"));
+  EXPECT_TRUE(isConfigSetting("field.precision"));
+  EXPECT_TRUE(isConfigSetting("head.position"));
+  EXPECT_FALSE(isConfigSetting("field.mode"));  // an attribute
+  EXPECT_FALSE(isConfigSetting("render.size"));
+  EXPECT_FALSE(isConfigSetting("emitter.0.rate"));
+  EXPECT_FALSE(isConfigSetting("wall.0.name"));  // walls are an array
+  EXPECT_FALSE(isConfigSetting("gpu"));
+
+  AppConfig c = parseConfig("[gpu]\nupdate_items = 8\n[run]\nframes = 5\n" + kWall, "test.toml");
+  const float size = c.particles.render.size;
+  applyConfigSets(c, {"gpu.update_items=1", "gpu.update_items=2", "field.precision=half",
+                      "head.position=0.5,0,1.5", "field.source=data/storm.vti", "render.size=0.5",
+                      "field.resolution=[8, 8, 8]"});
+  EXPECT_EQ(c.gpu.updateItems, 2);  // the last one
+  EXPECT_EQ(c.run.frames, 5);       // untouched
+  EXPECT_TRUE(c.field.halfPrecision);
+  EXPECT_EQ(c.head.position, glm::vec3(0.5f, 0.0f, 1.5f));
+  EXPECT_EQ(c.field.source, "data/storm.vti");  // from where the program started
+  EXPECT_EQ(c.field.resolution, glm::ivec3(8));
+  EXPECT_EQ(c.particles.render.size, size);  // an attribute: applySets' (app/)
+
+  const auto refusal = [&](const std::string& set) {
+    AppConfig d = c;
+    try {
+      applyConfigSets(d, {set});
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_EQ(refusal("gpu.update_items=3"),
+            "--set gpu.update_items=3: gpu.update_items: expected 1, 2, 4 or 8");
+  EXPECT_NE(refusal("field.sourc=x").find("--set field.sourc=x: field.sourc: unknown key"),
+            std::string::npos);
+  EXPECT_NE(refusal("gpu.upload_context=maybe").find("gpu.upload_context"), std::string::npos);
+  EXPECT_NE(refusal("head.position=1,2").find("--set head.position=1,2: head.position"),
+            std::string::npos);
+  EXPECT_NE(refusal("gpu.update items=2").find("expected a key of letters"), std::string::npos);
 }
 
 }  // namespace

@@ -158,6 +158,8 @@ def test_bad_arguments_raise_with_sandstorms_message(tmp_path):
         sandstorm.load_field(str(SOURCE / "data" / "tornado.vti"), resolution=(4, 4))
     with pytest.raises(sandstorm.Error, match="cannot read 'big'"):
         sandstorm.Run(CONFIG, set={"render.size": "big"})
+    with pytest.raises(sandstorm.Error, match="--set gpu.update_items=3: gpu.update_items: expected"):
+        sandstorm.Run(CONFIG, set={"gpu.update_items": 3})
     with pytest.raises(sandstorm.Error, match="no wall named 'ceiling'"):
         sandstorm.Run(CONFIG, walls=["ceiling"])
     with pytest.raises(sandstorm.Error, match="unknown extension"):
