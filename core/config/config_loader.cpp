@@ -22,6 +22,9 @@
 namespace sandstorm {
 namespace {
 
+// How a --set's setting is named in its errors (applyConfigSets): "--set key=value".
+constexpr std::string_view kSetLabel = "--set ";
+
 class Reader {
  public:
   explicit Reader(std::string file) : file_(std::move(file)) {}
@@ -33,7 +36,7 @@ class Reader {
 
   // A --set's setting (applyConfigSets): no file whose lines to name, and
   // files it names are relative to the folder the program started in.
-  bool commandLine() const { return file_.starts_with("--set "); }
+  bool commandLine() const { return file_.starts_with(kSetLabel); }
 
   [[noreturn]] void fail(const toml::value& v, const std::string& key,
                          const std::string& what) const {
@@ -962,12 +965,7 @@ bool readsAsToml(const std::string& value) {
 std::string tomlValue(const std::string& text) {
   if (readsAsToml(text)) return text;
   if (text.find(',') != std::string::npos && readsAsToml("[" + text + "]")) return "[" + text + "]";
-  std::string quoted = "\"";
-  for (const char ch : text) {
-    if (ch == '"' || ch == '\\') quoted += '\\';
-    quoted += ch;
-  }
-  return quoted + "\"";
+  return tomlString(text);
 }
 
 }  // namespace
@@ -988,7 +986,7 @@ void applyConfigSets(AppConfig& config, const std::vector<std::string>& sets) {
   for (const std::string& set : sets) {
     const std::size_t eq = set.find('=');
     if (eq == std::string::npos || !isConfigSetting(set.substr(0, eq))) continue;
-    const std::string label = "--set " + set;
+    const std::string label = concat(kSetLabel, set);
     const std::string key = set.substr(0, eq);
     for (const char ch : key)
       if (!std::isalnum(static_cast<unsigned char>(ch)) && ch != '_' && ch != '.')

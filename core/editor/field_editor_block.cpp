@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/sim/attribute_table.h"
+#include "core/util/toml_text.h"
 
 namespace sandstorm {
 namespace {
@@ -27,16 +28,6 @@ std::string ivec(const glm::ivec3& v) {
   return "[" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + "]";
 }
 
-// A TOML basic string.
-std::string quoted(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') out += '\\';
-    out += c;
-  }
-  return out + "\"";
-}
-
 }  // namespace
 
 std::string fieldEditorBlock(const FieldSpec& field, std::span<const FieldPrimitive> primitives) {
@@ -45,7 +36,7 @@ std::string fieldEditorBlock(const FieldSpec& field, std::span<const FieldPrimit
          "# [[primitive]]. Include it from a configuration with walls\n"
          "# (include = \"this file\") or paste it in.\n\n[field]\n";
   if (field.source == "analytic") {
-    out << "source = \"analytic\"\nname = " << quoted(field.name) << "\n";
+    out << "source = \"analytic\"\nname = " << tomlString(field.name) << "\n";
     out << "dims = " << ivec(field.dims) << "\n";
     out << "bounds_min = " << vec(field.bounds.min) << "\nbounds_max = " << vec(field.bounds.max)
         << "\n";
@@ -60,8 +51,8 @@ std::string fieldEditorBlock(const FieldSpec& field, std::span<const FieldPrimit
     }
   } else {
     out << "source = "
-        << quoted(std::filesystem::absolute(field.source).lexically_normal().string()) << "\n";
-    if (!field.name.empty()) out << "name = " << quoted(field.name) << "\n";
+        << tomlString(std::filesystem::absolute(field.source).lexically_normal().string()) << "\n";
+    if (!field.name.empty()) out << "name = " << tomlString(field.name) << "\n";
     if (field.resolution != glm::ivec3(0)) out << "resolution = " << ivec(field.resolution) << "\n";
   }
   out << "offset = " << vec(field.placement.offset) << "\nscale = " << number(field.placement.scale)
@@ -76,7 +67,7 @@ std::string fieldEditorBlock(const FieldSpec& field, std::span<const FieldPrimit
     --used;
   for (std::size_t i = 0; i < used; ++i) {
     const FieldPrimitive& p = primitives[i];
-    out << "\n[[primitive]]\nkind = " << quoted(kinds.at(std::size_t(p.kind)))
+    out << "\n[[primitive]]\nkind = " << tomlString(kinds.at(std::size_t(p.kind)))
         << "\nposition = " << vec(p.position) << "\naxis = " << vec(p.axis)
         << "\nstrength = " << number(p.strength) << "\nradius = " << number(p.radius)
         << "\nenabled = " << (p.enabled ? "true" : "false") << "\n";

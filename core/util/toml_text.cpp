@@ -159,4 +159,13 @@ void checkTomlText(std::string_view text, const std::string& name) {
   Scanner(text, name).run();
 }
 
+std::string tomlString(std::string_view text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
 }  // namespace sandstorm

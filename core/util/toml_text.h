@@ -8,6 +8,7 @@
 //   recursion, and a few thousand levels overflow the stack.
 // Throws Error "name:line: ..." naming the literal and what was expected.
 // Strings and comments are skipped; keys are not values and are not checked.
+// tomlString: text as a TOML basic string ("..." with " and \ escaped).
 #pragma once
 
 #include <string>
@@ -16,5 +17,7 @@
 namespace sandstorm {
 
 void checkTomlText(std::string_view text, const std::string& name);
+
+std::string tomlString(std::string_view text);
 
 }  // namespace sandstorm
