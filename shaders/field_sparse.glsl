@@ -8,7 +8,8 @@
 // The words lie in two storage buffers (GpuSparseField): those below
 // kSparseSplitWords at binding 14, the rest at 15 (the same buffer when the
 // grid is smaller), so a grid may pass one buffer's limit (2 GiB on NVIDIA)
-// up to NanoVDB's 32-bit addressing's 4 GiB.
+// up to NanoVDB's 32-bit addressing's 4 GiB. FIELD_SPARSE_ONE_BUFFER (the
+// particle update, for a grid below the split): every word is in the first.
 
 #ifdef FIELD_SPARSE
 const uint kSparseSplitWords = 0x1FFC0000u;  // 2 GiB less 1 MiB: contexts/particles/gpu_sparse_field.cpp
@@ -23,7 +24,11 @@ struct pnanovdb_buf_t {
 };
 uint pnanovdb_buf_read_uint32(pnanovdb_buf_t buf, uint byte_offset) {
   uint w = byte_offset >> 2u;
+#ifdef FIELD_SPARSE_ONE_BUFFER
+  return sparseLow[w];
+#else
   return w < kSparseSplitWords ? sparseLow[w] : sparseHigh[w - kSparseSplitWords];
+#endif
 }
 uvec2 pnanovdb_buf_read_uint64(pnanovdb_buf_t buf, uint byte_offset) {
   return uvec2(pnanovdb_buf_read_uint32(buf, byte_offset),

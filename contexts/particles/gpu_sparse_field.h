@@ -21,6 +21,9 @@ class GpuSparseField {
   // (GL_MAX_SHADER_STORAGE_BLOCK_SIZE each, 4 GiB in all) or the GPU's memory.
   void show(std::shared_ptr<const SparseField> field);
   const std::shared_ptr<const SparseField>& holds() const { return holds_; }
+  // Whether the words lie in one buffer: programs may then be compiled with
+  // FIELD_SPARSE_ONE_BUFFER, whose reads skip choosing a buffer.
+  bool inOneBuffer() const { return low_ && !high_; }
   void bind() const;
 
  private:

@@ -184,6 +184,10 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   const int items = read == FieldRead::Sparse ? std::min(items_, kSparseItems) : items_;
   std::vector<std::string> defines{itemsDefine(items)};
   if (readDefine) defines.push_back(readDefine);
+  // Every word of a sparse grid below 2 GiB is in the first buffer: its
+  // reads, two dozen a sample, skip the choice of buffer.
+  if (read == FieldRead::Sparse && environment_.sparseInOneBuffer())
+    defines.push_back("FIELD_SPARSE_ONE_BUFFER");
   // The flow around the obstacles is the update's; putting particles out of
   // them is a pass of its own (obstacle_collide.comp), below, over the
   // records the update lists as not clear of an obstacle.

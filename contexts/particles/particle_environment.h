@@ -57,6 +57,9 @@ class ParticleEnvironment {
   // A sparse grid (FieldUpdate::sparse) read in place of the field's grid,
   // whose bounds are its bounds; null: the grid again.
   void setSparse(std::shared_ptr<const SparseField> sparse) { sparse_.show(std::move(sparse)); }
+  // Whether the sparse grid bound by bind() lies in one storage buffer
+  // (GpuSparseField::inOneBuffer).
+  bool sparseInOneBuffer() const { return sparse_.inOneBuffer(); }
   void setTerrain(std::shared_ptr<const HeightMap> terrain);
   // A storage buffer holding the field's grid in GpuField's Buffer layout
   // (vec4: the live flow solver's points, GpuFluidSolver), read in place of
