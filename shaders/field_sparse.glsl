@@ -38,9 +38,20 @@ uvec2 pnanovdb_buf_read_uint64(pnanovdb_buf_t buf, uint byte_offset) {
 #define PNANOVDB_GRID_TYPE_GET(grid_typeIn, nameIn) pnanovdb_grid_type_constants[grid_typeIn].nameIn
 #include "PNanoVDB.h"
 
+// A voxel's three floats: the buffer chosen once for the three words, not
+// for each (the split may fall inside a value: then word by word).
 vec3 sparseValue(pnanovdb_buf_t buf, pnanovdb_address_t a) {
-  return vec3(pnanovdb_read_float(buf, a), pnanovdb_read_float(buf, pnanovdb_address_offset(a, 4u)),
-              pnanovdb_read_float(buf, pnanovdb_address_offset(a, 8u)));
+  uint w = a.byte_offset >> 2u;
+#ifndef FIELD_SPARSE_ONE_BUFFER
+  if (w + 2u >= kSparseSplitWords) {
+    if (w < kSparseSplitWords)
+      return vec3(pnanovdb_read_float(buf, a), pnanovdb_read_float(buf, pnanovdb_address_offset(a, 4u)),
+                  pnanovdb_read_float(buf, pnanovdb_address_offset(a, 8u)));
+    w -= kSparseSplitWords;
+    return uintBitsToFloat(uvec3(sparseHigh[w], sparseHigh[w + 1u], sparseHigh[w + 2u]));
+  }
+#endif
+  return uintBitsToFloat(uvec3(sparseLow[w], sparseLow[w + 1u], sparseLow[w + 2u]));
 }
 
 vec3 sparseSample(vec3 p) {
