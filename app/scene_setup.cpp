@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <future>
 #include <thread>
 
 #include "contexts/platform/gpu_memory.h"
@@ -238,6 +239,13 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
     options.halfPrecision = spec.halfPrecision;
     if (spec.autoPrecision) options.gpuRoom = gpuRoomForFields;
     std::error_code ec;
+    // A large file's question to the GPUs is asked while the file is read:
+    // opening EGL takes NVIDIA's driver a good part of a second, and the
+    // walls' contexts then start on displays already open.
+    std::future<void> asked;
+    if (spec.autoPrecision && !std::filesystem::is_directory(path, ec) &&
+        std::filesystem::file_size(path, ec) >= (std::uintmax_t{64} << 20) && !ec)
+      asked = std::async(std::launch::async, [] { smallestGpuMemory(); });
     // A folder is watched for steps, unless it is an OpenFOAM case.
     if (spec.watch || (std::filesystem::is_directory(path, ec) &&
                        detectFieldFormat(path) != FieldFormat::OpenFoam)) {
