@@ -50,20 +50,9 @@ layout(std140, binding = 0) uniform SimBlock {
 // The field's grid (GpuField), x fastest: FIELD_BUFFER programs (the compute
 // backend) read it from storage buffers of vec4 (xyz, w: valid),
 // FIELD_BUFFER_HALF ones from buffers of four halves a point (the same
-// four, unpacked: exact), FIELD_BUFFER_RGB ones from buffers of three floats
-// a point (every point valid), the others from textures. gridPoint(i) and
+// four, unpacked: exact), the others from textures. gridPoint(i) and
 // gridPointNext(i): point i of the current and the next frame.
-#ifdef FIELD_BUFFER_RGB
-#define FIELD_BUFFER
-layout(std430, binding = 14) readonly restrict buffer FieldGrid { float fieldGrid[]; };
-layout(std430, binding = 15) readonly restrict buffer FieldGridNext { float fieldGridNext[]; };
-vec4 gridPoint(int i) {
-  return vec4(fieldGrid[3 * i], fieldGrid[3 * i + 1], fieldGrid[3 * i + 2], 1.0);
-}
-vec4 gridPointNext(int i) {
-  return vec4(fieldGridNext[3 * i], fieldGridNext[3 * i + 1], fieldGridNext[3 * i + 2], 1.0);
-}
-#elif defined(FIELD_BUFFER_HALF)
+#ifdef FIELD_BUFFER_HALF
 #define FIELD_BUFFER
 layout(std430, binding = 14) readonly restrict buffer FieldGrid { uvec2 fieldGrid[]; };  // x, y | z, valid
 layout(std430, binding = 15) readonly restrict buffer FieldGridNext { uvec2 fieldGridNext[]; };

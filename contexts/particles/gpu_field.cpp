@@ -30,12 +30,9 @@ void GpuField::upload(const VectorField& field) {
 std::size_t GpuField::prepare(const VectorField& field) {
   holds_ = nullptr;
   const bool masked = field.hasValidity(), half = field.halfPrecision();
-  const std::size_t pointBytes = texelBytes(half ? Layout::HalfRgba : Layout::FloatRgba);
-  const Storage storage =
-      preferred_ == Storage::Texture  ? Storage::Texture
-      : fitsBuffer(field, pointBytes) ? (half ? Storage::HalfBuffer : Storage::Buffer)
-      : !half && !masked && fitsBuffer(field, texelBytes(Layout::FloatRgb)) ? Storage::RgbBuffer
-                                                                            : Storage::Texture;
+  const Storage storage = preferred_ == Storage::Texture || !fitsBuffer(field) ? Storage::Texture
+                          : half                                               ? Storage::HalfBuffer
+                                                                               : Storage::Buffer;
   if (storage != storage_) {
     texture_ = {};
     buffer_ = {};
@@ -44,7 +41,6 @@ std::size_t GpuField::prepare(const VectorField& field) {
   // A buffer's point carries the mask (w: 1 valid, 0 not) whether or not there is one.
   const Layout layout = storage_ == Storage::Buffer       ? Layout::FloatRgba
                         : storage_ == Storage::HalfBuffer ? Layout::HalfRgba
-                        : storage_ == Storage::RgbBuffer  ? Layout::FloatRgb
                         : half ? (masked ? Layout::HalfRgba : Layout::HalfRgb)
                                : (masked ? Layout::FloatRgba : Layout::FloatRgb);
   const bool same = dims_ == field.dims() && layout_ == layout;
@@ -202,9 +198,11 @@ void GpuField::stageSlabs(const VectorField& field) {
   }
 }
 
-bool GpuField::fitsBuffer(const VectorField& field, std::size_t pointBytes) {
+bool GpuField::fitsBuffer(const VectorField& field) {
   GLint64 maxBlock = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+  const std::size_t pointBytes =
+      texelBytes(field.halfPrecision() ? Layout::HalfRgba : Layout::FloatRgba);
   return GLint64(field.values().size() * pointBytes) <= maxBlock;
 }
 

@@ -16,14 +16,9 @@
 //     (x, y, z, w: 1 valid, 0 not; the RGBA16F texel's bytes), read as a
 //     uvec2 and unpacked (FIELD_BUFFER_HALF). A series' step goes to it with
 //     a copy between buffers, where a 16-bit texture's upload converts.
-//   RgbBuffer: a float grid without a validity mask whose vec4 would pass
-//     the GPU's storage-buffer limit (GL_MAX_SHADER_STORAGE_BLOCK_SIZE: 2 GiB
-//     on NVIDIA, 128 MiB on llvmpipe) but whose three floats a point fit
-//     (a 512^3 grid: 1.6 GB), as floats x, y, z (FIELD_BUFFER_RGB). Its
-//     upload is a copy between buffers, where an RGB32F texture's runs at
-//     1.5-2 GB/s on NVIDIA (docs/PERFORMANCE.md).
-//   A grid larger than that is kept as a texture instead; storage() says
-//   which. [gpu] field_storage = "texture"
+//   A grid larger than the GPU's storage-buffer limit
+//   (GL_MAX_SHADER_STORAGE_BLOCK_SIZE: 128 MiB on llvmpipe) is kept as a
+//   texture instead; storage() says which. [gpu] field_storage = "texture"
 //   makes every grid take that fallback (tests, comparisons).
 #pragma once
 
@@ -38,9 +33,8 @@ namespace sandstorm {
 
 class GpuField {
  public:
-  // Preferred: Texture or Buffer (a half-precision grid then takes
-  // HalfBuffer, a large one RgbBuffer or Texture).
-  enum class Storage { Texture, Buffer, HalfBuffer, RgbBuffer };
+  // Preferred: Texture or Buffer (a half-precision grid then takes HalfBuffer).
+  enum class Storage { Texture, Buffer, HalfBuffer };
   // Where a field is bound: the current frame or a time-varying field's next.
   enum class Slot { Current, Next };
 
@@ -75,8 +69,7 @@ class GpuField {
   void hold(std::shared_ptr<const VectorField> field) { holds_ = std::move(field); }
 
  private:
-  // Whether the grid fits one storage buffer at `pointBytes` a point.
-  static bool fitsBuffer(const VectorField& field, std::size_t pointBytes);
+  static bool fitsBuffer(const VectorField& field);
   void allocateTexture(const VectorField& field);
   void allocateBuffer(const VectorField& field, std::size_t pointBytes);
   // How the grid's points are laid out for the GPU: float or half, RGB, or

@@ -43,7 +43,6 @@ bool ParticleEnvironment::blendsPair(const ParticleState& state) const {
          !(state.field.mode == FieldMode::Equation && equation_.equation()) &&
          state.field.mode != FieldMode::Expression &&
          fieldGrid_.storage() != GpuField::Storage::Texture &&
-         fieldGrid_.storage() != GpuField::Storage::RgbBuffer &&  // FieldPairBlend writes vec4
          nextFieldGrid_.storage() == fieldGrid_.storage() && fieldGrid_.holds() == field_ &&
          nextFieldGrid_.holds() == nextField_;
 }

@@ -24,13 +24,11 @@ enum class FieldRead { Grid, Equation, Sparse };
 
 // The define a program reading the field so needs: FIELD_EQUATION,
 // FIELD_SPARSE, FIELD_BUFFER (a grid kept as a buffer of vec4),
-// FIELD_BUFFER_HALF (of halves), FIELD_BUFFER_RGB (of three floats a
-// point), or none (a texture).
+// FIELD_BUFFER_HALF (of halves), or none (a texture).
 inline const char* fieldReadDefine(FieldRead read, GpuField::Storage storage) {
   if (read == FieldRead::Equation) return "FIELD_EQUATION";
   if (read == FieldRead::Sparse) return "FIELD_SPARSE";
   if (storage == GpuField::Storage::HalfBuffer) return "FIELD_BUFFER_HALF";
-  if (storage == GpuField::Storage::RgbBuffer) return "FIELD_BUFFER_RGB";
   return storage == GpuField::Storage::Buffer ? "FIELD_BUFFER" : nullptr;
 }
 

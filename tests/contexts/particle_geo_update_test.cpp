@@ -5,10 +5,8 @@
 #include "contexts/particles/particle_geo_update.h"
 #include "contexts/particles/particle_system.h"
 
-#include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <cstdio>
 #include <functional>
 
@@ -353,40 +351,6 @@ TEST_P(ParticleBackendTest, GridsKeptAsTexturesMoveParticlesTheSame) {
   EXPECT_EQ(a.frames, 60u);
   EXPECT_LT(a.maxError, 1e-4f);
   EXPECT_GT(a.peak, 4000u);
-}
-
-TEST_P(ParticleBackendTest, AGridPastTheVec4LimitMovesParticlesTheSameFromThreeFloatsAPoint) {
-  // A float grid whose vec4 would pass the storage-buffer limit but whose
-  // three floats a point fit (GpuField::Storage::RgbBuffer: a 512^3 file on
-  // NVIDIA): the compute backend reads it with FIELD_BUFFER_RGB.
-  if (std::string(GetParam()) != "compute") GTEST_SKIP() << "transform feedback reads textures";
-  GLint64 limit = 0;
-  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &limit);
-  const int side = int(std::cbrt(double(limit) / 16.0)) + 1;
-  if (std::int64_t(side) * side * side * 12 > (std::int64_t(1) << 30))
-    GTEST_SKIP() << "this GPU's storage-buffer limit (" << limit << " bytes) is too large to pass";
-  Scenario s = tornado(MotionModel::Tracer, Integrator::RK4, BoundaryMode::Clamp);
-  VortexParams vp;
-  vp.range = 3.0f;
-  vp.height = 5.0f;
-  s.field = std::make_shared<VectorField>(
-      bake(VortexField(vp), Box{{-3, -3, 0}, {3, 3, 4}}, {side, side, side}));
-  const Agreement a = compare(GetParam(), s, 20, 16384);
-  EXPECT_EQ(a.frames, 20u);
-  EXPECT_LT(a.maxError, 1e-4f);
-  if (test::exactArithmetic()) EXPECT_EQ(a.maxError, 0.0f);
-  EXPECT_GT(a.peak, 1000u);
-  std::printf("a %d^3 grid as three floats a point: max |gpu - cpu| = %g\n", side, a.maxError);
-  // A time-varying pair of such grids: both sampled (no blend into vec4).
-  auto slower = std::make_shared<VectorField>(*s.field);
-  for (glm::vec3& v : slower->values())
-    v *= 0.5f;
-  s.timeline = FieldTimeline({0.0, 0.5}, {s.field, slower});
-  s.state.field.loop = true;
-  const Agreement b = compare(GetParam(), s, 20, 16384);
-  EXPECT_EQ(b.frames, 20u);
-  EXPECT_LT(b.maxError, 1e-4f);
-  if (test::exactArithmetic()) EXPECT_EQ(b.maxError, 0.0f);
 }
 
 // A sparse grid (NanoVDB, read with PNanoVDB.h on both sides): the tornado's
