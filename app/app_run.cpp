@@ -6,6 +6,7 @@
 #include <atomic>
 #include <csignal>
 #include <map>
+#include <thread>
 
 #include "app/cluster/cluster_link.h"
 #include "app/run_stats.h"
@@ -93,7 +94,12 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
       // drew.
       barrier_(std::ptrdiff_t(config.walls.size()) + (cluster ? 1 : 0)) {
   // Every output is tried before anything runs: a bad path stops the start, not the end.
-  if (options_.screenshotDir) checkOutputDirectory(*options_.screenshotDir, "--screenshot");
+  if (options_.screenshotDir) {
+    checkOutputDirectory(*options_.screenshotDir, "--screenshot");
+    images_ = std::make_unique<ImageFiles>(
+        std::clamp<unsigned>(std::thread::hardware_concurrency(), 1,
+                             unsigned(std::max<std::size_t>(1, config.walls.size()))));
+  }
   if (options_.dumpParticles) checkOutputFile(*options_.dumpParticles, "--dump-particles");
   if (options_.dumpStreamlines) checkOutputFile(*options_.dumpStreamlines, "--dump-streamlines");
   if (options_.hashLog) checkOutputFile(*options_.hashLog, "--hash-log");
@@ -439,7 +445,7 @@ void AppRun::hookWalls() {
       if (options_.screenshotDir &&
           (last || (options_.screenshotEvery > 0 && f % options_.screenshotEvery == 0))) {
         const std::string name = last ? wall.wall().name : concat(wall.wall().name, "_", f);
-        writePng(wall.capture(), *options_.screenshotDir / (name + ".png"));
+        images_->write(wall.capture(), *options_.screenshotDir / (name + ".png"));
       }
       if (first && last && options_.dumpParticles) {
         const std::vector<Particle> particles = wall.particles().update().readBack();
@@ -852,6 +858,11 @@ int AppRun::finish() {
     log::info("interrupted: stopped every wall cleanly");
   else if (lastFrame_ < 0 || frames_ <= lastFrame_)
     log::info("a window closed: stopped every wall cleanly");
+  if (images_)
+    for (const std::string& failure : images_->finish()) {
+      log::error(failure);
+      failed_ = true;
+    }
   if (cluster_) cluster_->finish();
   if (movie_ && !movie_->finish()) failed_ = true;
   if (options_.hashLog) hashes_.write(*options_.hashLog);

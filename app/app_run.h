@@ -38,6 +38,7 @@
 #include "core/sim/session_log.h"
 #include "core/sim/state_mirror.h"
 #include "core/util/frame_pacer.h"
+#include "core/util/image_files.h"
 
 namespace sandstorm {
 
@@ -149,6 +150,7 @@ class AppRun {
   std::shared_ptr<const FramePacket> lastPacket_;  // the newest packet made (probe, menu)
   std::optional<std::uint32_t> colorRangeFrom_;    // the measurement last made the colour range
   std::uint32_t nextColorRangeAt_ = 0;
+  std::unique_ptr<ImageFiles> images_;  // --screenshot's PNGs; before walls_: they queue them
   std::vector<std::unique_ptr<RenderWall>> walls_;        // one a wall, by index
   std::vector<std::unique_ptr<RenderContext>> contexts_;  // after walls_: joined first
   HashLog hashes_;
