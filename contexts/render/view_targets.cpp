@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <algorithm>
+#include <vector>
 
 #include "core/util/error.h"
 #include "core/util/image.h"
@@ -96,7 +97,71 @@ Image OutputTarget::readPixels() const {
   return readFramebuffer(fbo_.id(), GL_COLOR_ATTACHMENT0, size_);
 }
 
+namespace {
+
+// The buffers bound to indexed uniform and storage binding points, unbound
+// for a read into the process's memory and bound again after it. At such a
+// read NVIDIA's driver moved every buffer so bound (the particles' too) from
+// video to host memory (GL message 131186): 0.7 GB a wall of 10^7 particles,
+// and seconds, at each screenshot and movie frame (docs/PERFORMANCE.md).
+class BoundBuffersSetAside {
+ public:
+  BoundBuffersSetAside() {
+    for (const Target& t : kTargets) {
+      // The general binding first: binding an index sets it too.
+      GLint general = 0;
+      glGetIntegerv(t.generalBinding, &general);
+      general_.push_back({t.target, 0, GLuint(general), 0, 0});
+      GLint count = 0;
+      glGetIntegerv(t.maxBindings, &count);
+      for (GLuint i = 0; i < GLuint(count); ++i) {
+        GLint id = 0;
+        glGetIntegeri_v(t.binding, i, &id);
+        if (id == 0) continue;
+        Binding b{t.target, i, GLuint(id), 0, 0};
+        glGetInteger64i_v(t.start, i, &b.start);
+        glGetInteger64i_v(t.size, i, &b.size);
+        bindings_.push_back(b);
+        glBindBufferBase(t.target, i, 0);
+      }
+      glBindBuffer(t.target, 0);
+    }
+  }
+  ~BoundBuffersSetAside() {
+    for (const Binding& b : bindings_) {
+      if (b.size > 0)
+        glBindBufferRange(b.target, b.index, b.id, GLintptr(b.start), GLsizeiptr(b.size));
+      else
+        glBindBufferBase(b.target, b.index, b.id);
+    }
+    for (const Binding& b : general_)
+      glBindBuffer(b.target, b.id);
+  }
+  BoundBuffersSetAside(const BoundBuffersSetAside&) = delete;
+  BoundBuffersSetAside& operator=(const BoundBuffersSetAside&) = delete;
+
+ private:
+  struct Target {
+    GLenum target, maxBindings, binding, start, size, generalBinding;
+  };
+  static constexpr Target kTargets[] = {
+      {GL_SHADER_STORAGE_BUFFER, GL_MAX_SHADER_STORAGE_BUFFER_BINDINGS,
+       GL_SHADER_STORAGE_BUFFER_BINDING, GL_SHADER_STORAGE_BUFFER_START,
+       GL_SHADER_STORAGE_BUFFER_SIZE, GL_SHADER_STORAGE_BUFFER_BINDING},
+      {GL_UNIFORM_BUFFER, GL_MAX_UNIFORM_BUFFER_BINDINGS, GL_UNIFORM_BUFFER_BINDING,
+       GL_UNIFORM_BUFFER_START, GL_UNIFORM_BUFFER_SIZE, GL_UNIFORM_BUFFER_BINDING}};
+  struct Binding {
+    GLenum target;
+    GLuint index, id;
+    GLint64 start, size;
+  };
+  std::vector<Binding> bindings_, general_;
+};
+
+}  // namespace
+
 Image readFramebuffer(std::uint32_t framebuffer, std::uint32_t buffer, glm::ivec2 size) {
+  const BoundBuffersSetAside setAside;
   Image image{size.x, size.y,
               std::vector<std::uint8_t>(std::size_t(size.x) * std::size_t(size.y) * 4)};
   std::vector<std::uint8_t> flipped(image.rgba.size());
