@@ -239,8 +239,8 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
     options.halfPrecision = spec.halfPrecision;
     if (spec.autoPrecision) options.gpuRoom = gpuRoomForFields;
     std::error_code ec;
-    // A large file's question to the GPUs is asked while the file is read:
-    // opening EGL takes NVIDIA's driver a good part of a second, and the
+    // A large file's question to the GPUs is asked while the file is read
+    // (a 512^3 file's walls started 0.07-0.27 s sooner on NVIDIA), and the
     // walls' contexts then start on displays already open.
     std::future<void> asked;
     if (spec.autoPrecision && !std::filesystem::is_directory(path, ec) &&
