@@ -18,7 +18,7 @@ namespace sandstorm {
 class HugePageImageReader : public vtkXMLImageDataReader {
  public:
   static HugePageImageReader* New();
-  vtkTypeMacro(HugePageImageReader, vtkXMLImageDataReader);
+  vtkTypeMacro(HugePageImageReader, vtkXMLImageDataReader)
 
  protected:
   HugePageImageReader() = default;

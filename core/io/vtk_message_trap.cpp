@@ -52,10 +52,8 @@ void deliver(const char* text, bool isError) {
 class ForwardingOutputWindow : public vtkOutputWindow {
  public:
   static ForwardingOutputWindow* New();
-  vtkTypeMacro(ForwardingOutputWindow,
-               vtkOutputWindow) void DisplayText(const char* text) override {
-    deliver(text, false);
-  }
+  vtkTypeMacro(ForwardingOutputWindow, vtkOutputWindow)
+  void DisplayText(const char* text) override { deliver(text, false); }
   void DisplayErrorText(const char* text) override { deliver(text, true); }
   void DisplayWarningText(const char* text) override { deliver(text, false); }
   void DisplayGenericWarningText(const char* text) override { deliver(text, false); }

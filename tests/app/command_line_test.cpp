@@ -133,7 +133,9 @@ TEST(CommandLine, OutputsThatCannotBeWrittenAreClearErrors) {
     EXPECT_EQ(r.exitCode, 1) << r.output;
     EXPECT_NE(r.output.find(c.says), std::string::npos) << r.output;
     EXPECT_EQ(r.output.find("unexpected"), std::string::npos) << r.output;
-    if (c.beforeTheRun) EXPECT_EQ(r.output.find("wall 'front':"), std::string::npos) << r.output;
+    if (c.beforeTheRun) {
+      EXPECT_EQ(r.output.find("wall 'front':"), std::string::npos) << r.output;
+    }
   }
 }
 

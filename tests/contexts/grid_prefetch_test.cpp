@@ -115,7 +115,9 @@ TEST_P(GridPrefetchTest, AComingFrameIsCopiedOverSeveralFramesAndHandedOverWhole
       const int frames = advanceUntilReady(prefetch, f);
       ASSERT_GT(frames, 0) << "never ready";
       // (An upload thread copies the frame at once.)
-      if (!uploads()) EXPECT_GE(frames, 5);
+      if (!uploads()) {
+        EXPECT_GE(frames, 5);
+      }
       GpuField target(storage());
       target.upload(*frame(-3.0f));
       ASSERT_TRUE(prefetch.takeInto(target, f));

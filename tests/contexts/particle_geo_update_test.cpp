@@ -307,7 +307,9 @@ TEST_P(ParticleBackendTest, TimeVaryingFieldsBlendTheSameOnBothSides) {
     EXPECT_EQ(a.frames, 90u);
     EXPECT_LT(a.maxError, 1e-4f);
     // With IEEE arithmetic (llvmpipe) the twin is exact, blend included.
-    if (test::exactArithmetic()) EXPECT_EQ(a.maxError, 0.0f);
+    if (test::exactArithmetic()) {
+      EXPECT_EQ(a.maxError, 0.0f);
+    }
     std::printf("time-varying at speed %g: max |gpu - cpu| = %g over %zu frames\n", speed,
                 a.maxError, a.frames);
   }
@@ -337,7 +339,9 @@ TEST_P(ParticleBackendTest, HalfTimeVaryingFieldsBlendTheSameOnBothSides) {
   EXPECT_EQ(a.frames, 90u);
   EXPECT_LT(a.maxError, 1e-4f);
   EXPECT_GT(a.peak, 4000u);
-  if (test::exactArithmetic()) EXPECT_EQ(a.maxError, 0.0f);
+  if (test::exactArithmetic()) {
+    EXPECT_EQ(a.maxError, 0.0f);
+  }
   std::printf("half time-varying: max |gpu - cpu| = %g over %zu frames\n", a.maxError, a.frames);
 }
 

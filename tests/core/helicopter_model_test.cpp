@@ -29,8 +29,9 @@ TEST(HelicopterModel, EveryTriangleFacesOutAndTheBodyLiesInsideTheSolidBoxes) {
       for (const ModelVertex* v : {&a, &b, &c})
         EXPECT_NEAR(glm::length(v->normal), 1.0f, 1e-4f);
       const glm::vec3 face = glm::cross(b.position - a.position, c.position - a.position);
-      if (glm::length(face) > 1e-6f)  // counter-clockwise seen from where the normals point
+      if (glm::length(face) > 1e-6f) {  // counter-clockwise seen from where the normals point
         EXPECT_GT(glm::dot(face, a.normal + b.normal + c.normal), 0.0f) << "triangle " << i / 3;
+      }
     }
     if (part.name != "body" && part.name != "glazing") continue;
     for (const ModelVertex& v : part.triangles) {

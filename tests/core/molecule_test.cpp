@@ -94,8 +94,11 @@ TEST(MoleculeShape, EveryShapeRestsOnItsSpringsAndIsCentred) {
   }
   // The tetrahedron is a dart: an equilateral base of edge 1, the head on its axis.
   const MoleculeShape& dart = moleculeShape(4);
-  for (const MoleculeSpring& k : dart.springs)
-    if (k.a != 0) EXPECT_NEAR(k.rest, 1.0f, 1e-6f);
+  for (const MoleculeSpring& k : dart.springs) {
+    if (k.a != 0) {
+      EXPECT_NEAR(k.rest, 1.0f, 1e-6f);
+    }
+  }
   EXPECT_NEAR(dart.springs[0].rest, dart.springs[1].rest, 1e-6f);
   EXPECT_NEAR(dart.springs[1].rest, dart.springs[2].rest, 1e-6f);
   EXPECT_GT(dart.springs[0].rest, 2.0f);
