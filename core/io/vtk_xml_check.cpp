@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -172,7 +173,7 @@ class Checker {
   Checker(std::filesystem::path path, std::size_t budget)
       : path_(std::move(path)), file_(path_.string()), in_(path_), budget_(budget) {}
 
-  VtkXmlSummary summary() const { return {totalBytes_, declared_, extents_}; }
+  VtkXmlSummary summary() const { return {totalBytes_, declared_, extents_, raw_}; }
 
   void run() {
     if (!in_.ok()) fail(file_ + ": cannot open");
@@ -737,6 +738,9 @@ class Checker {
     }
     payload.finish();
     noteCellList(a, payload, bytes);
+    if (!base64Appended_ && compressor_ == VtkCompressor::None &&
+        bigEndian_ == (std::endian::native == std::endian::big))
+      raw_.push_back({a.offset, at + std::uint64_t(headerSize_), payload.declaredBytes()});
   }
 
   std::filesystem::path path_;
@@ -769,6 +773,7 @@ class Checker {
   std::vector<VtkXmlArray> declared_;
   std::vector<std::array<long long, 6>> extents_;
   std::vector<Array> appendedArrays_;
+  std::vector<VtkXmlRawArray> raw_;
   bool appendedSeen_ = false, base64Appended_ = false;
   std::uint64_t appendedStart_ = 0, appendedEnd_ = 0;
 };

@@ -24,8 +24,9 @@
 // VTK's structured readers leak the arrays they were filling when a payload
 // fails halfway, so a payload VTK would fail on must not reach it.
 // Throws Error naming the file, the piece and array, and the numbers; returns
-// the bytes the arrays take (for a budget over several files) and the arrays
-// declared (to hold a parallel file's pieces to its declarations).
+// the bytes the arrays take (for a budget over several files), the arrays
+// declared (to hold a parallel file's pieces to its declarations) and where
+// the raw appended ones lie.
 #pragma once
 
 #include <array>
@@ -45,10 +46,20 @@ struct VtkXmlArray {
   std::uint64_t components = 1;
 };
 
+// An appended array whose bytes lie in the file as they lie in memory here
+// (raw, uncompressed, this machine's byte order): a reader may copy them
+// straight from the file (HugePageImageReader).
+struct VtkXmlRawArray {
+  std::uint64_t offset = 0;  // its DataArray's `offset` attribute
+  std::uint64_t dataAt = 0;  // where its first byte lies in the file (after the header)
+  std::uint64_t bytes = 0;   // its header's byte count, checked: the file holds them all
+};
+
 struct VtkXmlSummary {
   double bytes = 0.0;                             // all arrays together
   std::vector<VtkXmlArray> arrays;                // every piece's, in file order
   std::vector<std::array<long long, 6>> extents;  // every piece's Extent, where given
+  std::vector<VtkXmlRawArray> raw;                // the appended arrays stored as in memory
 };
 
 VtkXmlSummary checkVtkXml(const std::filesystem::path& path, std::size_t memoryBudget);

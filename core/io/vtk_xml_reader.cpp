@@ -18,6 +18,8 @@
 #include <cstring>
 #include <fstream>
 #include <optional>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "core/field/vector_field.h"
@@ -35,11 +37,14 @@ template <class Reader>
 vtkSmartPointer<vtkDataSet> run(const std::filesystem::path& path, const LoadOptions& options,
                                 const std::string& what) {
   const std::string file = path.string();
-  checkVtkXml(path, options.memoryBudget);  // before VTK allocates what the attributes claim
+  // Before VTK allocates what the attributes claim.
+  VtkXmlSummary checked = checkVtkXml(path, options.memoryBudget);
   VtkMessageTrap trap(path);
   vtkNew<Reader> reader;
   trap.watch(reader);
   reader->SetFileName(file.c_str());
+  if constexpr (std::is_same_v<Reader, HugePageImageReader>)
+    reader->setRawArrays(std::move(checked.raw));
   if (!reader->CanReadFile(file.c_str())) {
     trap.throwIfFailed(concat("reading the ", what));
     throw Error(concat(file, ": VTK's reader does not accept it as a ", what));

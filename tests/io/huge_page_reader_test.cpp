@@ -1,8 +1,9 @@
 // HugePageImageReader (core/io/huge_page_image_reader.h): VTK's .vti reader
-// with its large point arrays advised for transparent huge pages. It must
-// read exactly what vtkXMLImageDataReader reads, and the array's memory must
-// carry the advice (the kernel's smaps says the region may take huge pages)
-// wherever the kernel has them at all.
+// with its large point arrays advised for transparent huge pages, and those
+// the file holds raw copied from it over the cores. It must read exactly
+// what vtkXMLImageDataReader reads, whichever way an array is stored; the
+// array's memory must carry the advice (the kernel's smaps says the region
+// may take huge pages) wherever the kernel has them at all.
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -10,12 +11,15 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <vtkDoubleArray.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkXMLImageDataReader.h>
 #include <vtkXMLImageDataWriter.h>
+
+#include "core/io/vtk_xml_check.h"
 
 #include "core/io/huge_page_image_reader.h"
 #include "tests/io/io_test_util.h"
@@ -44,6 +48,62 @@ vtkSmartPointer<vtkImageData> read(const std::filesystem::path& path) {
   reader->SetFileName(path.c_str());
   reader->Update();
   return reader->GetOutput();
+}
+
+// Ours as the application reads: given the raw arrays checkVtkXml found.
+struct OursRead {
+  vtkSmartPointer<vtkImageData> image;
+  std::size_t rawArrays = 0;
+  std::size_t copied = 0;
+};
+
+OursRead readChecked(const std::filesystem::path& path) {
+  VtkXmlSummary checked = checkVtkXml(path, std::size_t{1} << 32);
+  vtkNew<HugePageImageReader> reader;
+  reader->SetFileName(path.c_str());
+  OursRead r;
+  r.rawArrays = checked.raw.size();
+  reader->setRawArrays(std::move(checked.raw));
+  reader->Update();
+  r.image = reader->GetOutput();
+  r.copied = reader->arraysCopied();
+  return r;
+}
+
+// Every point array of `a` has its namesake in `b`, with the same bytes.
+void expectSameArrays(vtkImageData* a, vtkImageData* b) {
+  ASSERT_TRUE(a && b);
+  ASSERT_EQ(a->GetPointData()->GetNumberOfArrays(), b->GetPointData()->GetNumberOfArrays());
+  for (int i = 0; i < a->GetPointData()->GetNumberOfArrays(); ++i) {
+    vtkDataArray* x = a->GetPointData()->GetArray(i);
+    vtkDataArray* y = b->GetPointData()->GetArray(x->GetName());
+    ASSERT_TRUE(y) << x->GetName();
+    ASSERT_EQ(x->GetDataType(), y->GetDataType());
+    ASSERT_EQ(x->GetNumberOfValues(), y->GetNumberOfValues()) << x->GetName();
+    const std::size_t bytes = std::size_t(x->GetNumberOfValues()) * x->GetDataTypeSize();
+    EXPECT_EQ(std::memcmp(x->GetVoidPointer(0), y->GetVoidPointer(0), bytes), 0) << x->GetName();
+  }
+}
+
+// A 150^3 field of vectors (40.5 MB) and of one double each (27 MB: VTK reads it).
+vtkSmartPointer<vtkImageData> twoArrays() {
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(kSide, kSide, kSide);
+  const vtkIdType n = vtkIdType(kSide) * kSide * kSide;
+  vtkNew<vtkFloatArray> v;
+  v->SetName("velocity");
+  v->SetNumberOfComponents(3);
+  v->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+    v->SetTuple3(i, double(i % 89) - 40.0, double(i % 7) * 0.5, double(i) * 1e-6);
+  image->GetPointData()->SetVectors(v);
+  vtkNew<vtkDoubleArray> t;
+  t->SetName("temperature");
+  t->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i)
+    t->SetValue(i, 300.0 + double(i % 1000) * 1e-3);
+  image->GetPointData()->AddArray(t);
+  return image;
 }
 
 // The value of smaps' `key` for the mapping that holds `address`, or "" if none.
@@ -86,6 +146,52 @@ TEST(HugePageReader, ReadsWhatVtksReaderReads) {
   ours->GetDimensions(dims);
   EXPECT_EQ(dims[0], kSide);
   EXPECT_EQ(dims[2], kSide);
+}
+
+TEST(HugePageReader, RawArraysCopiedOverTheCoresHoldWhatVtkReads) {
+  // Both header widths; the vectors (past 32 MiB) are copied, the doubles
+  // (below it) read by VTK, in the same file.
+  for (const bool wide : {false, true}) {
+    SCOPED_TRACE(wide ? "UInt64 headers" : "UInt32 headers");
+    const auto path = test::scratch() / "two-arrays.vti";
+    const auto image = twoArrays();
+    vtkNew<vtkXMLImageDataWriter> w;
+    w->SetInputData(image);
+    w->SetFileName(path.c_str());
+    w->SetDataModeToAppended();
+    w->EncodeAppendedDataOff();
+    w->SetCompressorTypeToNone();
+    if (wide) w->SetHeaderTypeToUInt64();
+    ASSERT_EQ(w->Write(), 1);
+    const OursRead ours = readChecked(path);
+    EXPECT_EQ(ours.rawArrays, 2u);
+    EXPECT_EQ(ours.copied, 1u) << "the vectors copied, the 27 MB of doubles left to VTK";
+    expectSameArrays(ours.image, read<vtkXMLImageDataReader>(path));
+    expectSameArrays(ours.image, image);
+  }
+}
+
+TEST(HugePageReader, ArraysStoredOtherwiseAreVtksToRead) {
+  // base64 and compressed: nothing lies in the file as in memory.
+  const auto image = twoArrays();
+  for (const bool compressed : {false, true}) {
+    SCOPED_TRACE(compressed ? "raw, compressed" : "base64");
+    const auto path = test::scratch() / "encoded.vti";
+    vtkNew<vtkXMLImageDataWriter> w;
+    w->SetInputData(image);
+    w->SetFileName(path.c_str());
+    w->SetDataModeToAppended();
+    w->SetEncodeAppendedData(!compressed);
+    if (compressed)
+      w->SetCompressorTypeToZLib();
+    else
+      w->SetCompressorTypeToNone();
+    ASSERT_EQ(w->Write(), 1);
+    const OursRead ours = readChecked(path);
+    EXPECT_EQ(ours.rawArrays, 0u);
+    EXPECT_EQ(ours.copied, 0u);
+    expectSameArrays(ours.image, image);
+  }
 }
 
 TEST(HugePageReader, ASmallArrayIsLeftAlone) {
