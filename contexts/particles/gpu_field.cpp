@@ -59,20 +59,19 @@ void GpuField::allocateTexture(const VectorField& field) {
     throw Error(concat("the field's upload: a ", d.x, "x", d.y, "x", d.z,
                        " field exceeds this GPU's 3D ", "texture limit of ", maxSize,
                        " per axis; lower field.resolution"));
-  // RGB32F (texelFetch reads alpha 1: every point valid), or RGBA32F with the
-  // validity mask in alpha when the field has one.
+  // Floats: RGBA32F, the validity mask in alpha (1 without one), the format
+  // a compute pass can write (field_unpack.comp). Halves: RGB16F (texelFetch
+  // reads alpha 1: every point valid), or RGBA16F with the mask in alpha.
   const bool masked = field.hasValidity(), half = field.halfPrecision();
   texture_ = gl::createTexture(GL_TEXTURE_3D);
   glGetError();
-  const GLenum format =
-      half ? (masked ? GL_RGBA16F : GL_RGB16F) : (masked ? GL_RGBA32F : GL_RGB32F);
+  const GLenum format = half ? (masked ? GL_RGBA16F : GL_RGB16F) : GL_RGBA32F;
   glTextureStorage3D(texture_.id(), 1, format, d.x, d.y, d.z);
   if (glGetError() != GL_NO_ERROR) {
     texture_ = {};
     dims_ = glm::ivec3(0);
     throw Error(concat("the field's upload: no GPU memory for a ", d.x, "x", d.y, "x", d.z,
-                       " field (",
-                       double(d.x) * d.y * d.z * (masked ? 16.0 : 12.0) / (half ? 2 : 1),
+                       " field (", double(d.x) * d.y * d.z * (half ? (masked ? 8.0 : 6.0) : 16.0),
                        " bytes); lower field.resolution"));
   }
   glTextureParameteri(texture_.id(), GL_TEXTURE_MIN_FILTER, GL_NEAREST);
@@ -103,6 +102,7 @@ void GpuField::copyLayers(const gl::Buffer& staging, std::size_t offset, int fir
   }
   const bool masked = layout_ == Layout::FloatRgba || layout_ == Layout::HalfRgba;
   const bool half = layout_ == Layout::HalfRgb || layout_ == Layout::HalfRgba;
+  if (!half && unpackLayers(staging, offset, firstLayer, layers)) return;
   glBindBuffer(GL_PIXEL_UNPACK_BUFFER, staging.id());
   glPixelStorei(GL_UNPACK_ALIGNMENT, half ? 2 : 4);
   glTextureSubImage3D(texture_.id(), 0, 0, 0, firstLayer, dims_.x, dims_.y, layers,
@@ -110,6 +110,54 @@ void GpuField::copyLayers(const gl::Buffer& staging, std::size_t offset, int fir
                       reinterpret_cast<const void*>(offset));
   glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
   glBindBuffer(GL_PIXEL_UNPACK_BUFFER, 0);
+}
+
+bool GpuField::unpackLayers(const gl::Buffer& staging, std::size_t offset, int firstLayer,
+                            int layers) {
+  GLint64 maxBlock = 0;
+  GLint align = 1;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+  glGetIntegerv(GL_SHADER_STORAGE_BUFFER_OFFSET_ALIGNMENT, &align);
+  const std::size_t layer = layerBytes(), alignment = std::size_t(std::max(align, 1));
+  // A binding starts at an aligned offset, up to alignment - 1 bytes before the layers.
+  const std::size_t room = std::size_t(std::max<GLint64>(maxBlock, 0));
+  if (room < alignment || (room - alignment) / layer < 1) return false;
+  const int perDispatch =
+      int(std::min<std::size_t>((room - alignment) / layer, std::size_t(layers)));
+  if (!unpack_)
+    unpack_ = std::make_unique<gl::Program>(std::vector<std::string>{"field_unpack.comp"});
+  // The binding used is given back as it was: other passes bind theirs once.
+  GLint previous = 0;
+  GLint64 previousStart = 0, previousSize = 0;
+  glGetIntegeri_v(GL_SHADER_STORAGE_BUFFER_BINDING, 0, &previous);
+  glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_START, 0, &previousStart);
+  glGetInteger64i_v(GL_SHADER_STORAGE_BUFFER_SIZE, 0, &previousSize);
+  const GLuint program = unpack_->id();
+  unpack_->use();
+  glProgramUniform2ui(program, 0, GLuint(dims_.x), GLuint(dims_.y));
+  glProgramUniform1ui(program, 3, layout_ == Layout::FloatRgba ? 4u : 3u);
+  glBindImageTexture(0, texture_.id(), 0, GL_TRUE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  for (int z = 0; z < layers; z += perDispatch) {
+    const int n = std::min(perDispatch, layers - z);
+    const std::size_t at = offset + std::size_t(z) * layer;
+    const std::size_t base = at / alignment * alignment;
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, staging.id(), GLintptr(base),
+                      GLsizeiptr(at - base + std::size_t(n) * layer));
+    const std::size_t points = std::size_t(n) * std::size_t(dims_.x) * std::size_t(dims_.y);
+    glProgramUniform1ui(program, 1, GLuint(firstLayer + z));
+    glProgramUniform1ui(program, 2, GLuint(points));
+    glProgramUniform1ui(program, 4, GLuint((at - base) / sizeof(float)));
+    // Enough workgroups to fill any GPU; each invocation strides over the rest.
+    glDispatchCompute(GLuint(std::clamp<std::size_t>((points + 255) / 256, 1, 8192)), 1, 1);
+  }
+  // Sampled next (here, or in a context that waits for this one's fence).
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  if (previous != 0 && previousSize > 0)
+    glBindBufferRange(GL_SHADER_STORAGE_BUFFER, 0, GLuint(previous), GLintptr(previousStart),
+                      GLsizeiptr(previousSize));
+  else
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, GLuint(previous));
+  return true;
 }
 
 std::size_t GpuField::texelBytes(Layout layout) {

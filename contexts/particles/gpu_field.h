@@ -2,12 +2,15 @@
 // TerrainTexture: a HeightMap as an R32F 2D texture. Shaders read both
 // without the sampler's filter and interpolate themselves
 // (shaders/particle_physics.glsl), so the GPU agrees with the CPU bit for bit.
-//   Texture: an RGB32F 3D texture read with texelFetch (thesis 5.2); the
-//     transform-feedback backend's. A field with a validity mask
-//     (VectorField::setValidity) is RGBA32F, the mask in alpha. A field
-//     rounded to half precision (field.precision = "half") is RGB16F or
-//     RGBA16F: texelFetch returns the very values the CPU twin samples, in
-//     half the memory.
+//   Texture: an RGBA32F 3D texture read with texelFetch (thesis 5.2); the
+//     transform-feedback backend's. Alpha is the validity mask
+//     (VectorField::setValidity), 1 everywhere without one. Its layers are
+//     written by a compute pass from the staging buffer (field_unpack.comp):
+//     NVIDIA's driver unpacked an RGB32F texture from a buffer at 1.3-2.7
+//     GB/s, the first frame's wait for a 512^3 file. A field rounded to half
+//     precision (field.precision = "half") is RGB16F or RGBA16F, unpacked by
+//     the driver: texelFetch returns the very values the CPU twin samples,
+//     in half the memory.
 //   Buffer: a shader storage buffer of vec4 (xyz, w: 1 valid, 0 not), x fastest; what
 //     the compute backend prefers: on an H200 its eight loads a sample made
 //     the update 12% (RK2) to 23% (RK4) faster than eight texelFetch
@@ -26,6 +29,7 @@
 #include <vector>
 
 #include "contexts/gl/objects.h"
+#include "contexts/gl/program.h"
 #include "core/field/height_map.h"
 #include "core/field/vector_field.h"
 
@@ -87,6 +91,12 @@ class GpuField {
   // takes tens of megabytes of host memory, not a second copy of the grid.
   void stageSlabs(const VectorField& field);
   static constexpr std::size_t kSlabBytes = std::size_t{32} << 20;
+  // copyLayers into a float texture: field_unpack.comp over the staged
+  // layers, as many a dispatch as one storage-buffer binding holds; false
+  // where not one layer fits a binding (the driver's unpack then).
+  bool unpackLayers(const gl::Buffer& staging, std::size_t offset, int firstLayer, int layers);
+
+  std::unique_ptr<gl::Program> unpack_;  // field_unpack.comp, made at its first use
 
   Storage preferred_, storage_;
   gl::Texture texture_;

@@ -6,7 +6,7 @@
 namespace sandstorm {
 
 double floatGpuBytes(const VectorField& field, int grids) {
-  return double(field.pointCount()) * (field.hasValidity() ? 16.0 : 12.0) * double(grids);
+  return double(field.pointCount()) * 16.0 * double(grids);
 }
 
 bool chooseHalf(VectorField& field, int grids, const LoadOptions& options, LoadReport& report) {

@@ -3,9 +3,9 @@
 // floats (VectorField::roundToHalf: half the memory and bandwidth, each
 // component within 2^-11 of itself), chosen here and said in the load
 // report. The rule: the grids a GPU holds at once (one for a steady field;
-// kSeriesGrids for a series) at 12 bytes a point, 16 with a validity mask, as
-// GpuField keeps a large grid, against LoadOptions::gpuRoom (the app's share
-// of the smallest GPU).
+// kSeriesGrids for a series) at 16 bytes a point, as GpuField keeps a float
+// grid (a vec4 in a storage buffer, an RGBA32F texel in a texture), against
+// LoadOptions::gpuRoom (the app's share of the smallest GPU).
 #pragma once
 
 #include "core/field/vector_field.h"

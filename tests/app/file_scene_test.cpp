@@ -209,8 +209,8 @@ TEST(FileScene, TheConfigurationsMemoryBudgetHoldsForTheFile) {
 
 // field.precision = "auto" (the default): a field whose floats would not
 // fit the GPU's room for fields (here a GPU of 100 MB, as the hidden
-// --debug-gpu-memory makes the driver's answer: room 75 MB, against the 85 MB
-// a 192^3 grid takes) opens as halves and says so; on a larger GPU, or with
+// --debug-gpu-memory makes the driver's answer: room 75 MB, against the 113 MB
+// a 192^3 grid takes at 16 bytes a point) opens as halves and says so; on a larger GPU, or with
 // field.precision = "float", it stays floats.
 TEST(FileScene, AFieldTooLargeForTheGpuAsFloatsOpensAsHalves) {
   const auto dir = test::scratchDir("file-scene-precision");
@@ -225,7 +225,7 @@ TEST(FileScene, AFieldTooLargeForTheGpuAsFloatsOpensAsHalves) {
   EXPECT_EQ(small.exitCode, 0) << small.output;
   EXPECT_NE(small.output.find(chosen), std::string::npos) << small.output;
   // The floats' bytes, as the message gives them.
-  EXPECT_NE(small.output.find(formatByteSize(12.0 * n * n * n)), std::string::npos) << small.output;
+  EXPECT_NE(small.output.find(formatByteSize(16.0 * n * n * n)), std::string::npos) << small.output;
   const auto large = test::runSandstorm(file + " --debug-gpu-memory 1000000000");
   EXPECT_EQ(large.exitCode, 0) << large.output;
   EXPECT_EQ(large.output.find(chosen), std::string::npos) << large.output;
