@@ -153,16 +153,8 @@ TEST(HugePageReader, RawArraysCopiedOverTheCoresHoldWhatVtkReads) {
   // (below it) read by VTK, in the same file.
   for (const bool wide : {false, true}) {
     SCOPED_TRACE(wide ? "UInt64 headers" : "UInt32 headers");
-    const auto path = test::scratch() / "two-arrays.vti";
     const auto image = twoArrays();
-    vtkNew<vtkXMLImageDataWriter> w;
-    w->SetInputData(image);
-    w->SetFileName(path.c_str());
-    w->SetDataModeToAppended();
-    w->EncodeAppendedDataOff();
-    w->SetCompressorTypeToNone();
-    if (wide) w->SetHeaderTypeToUInt64();
-    ASSERT_EQ(w->Write(), 1);
+    const auto path = test::writeRawVti(image, test::scratch() / "two-arrays.vti", wide);
     const OursRead ours = readChecked(path);
     EXPECT_EQ(ours.rawArrays, 2u);
     EXPECT_EQ(ours.copied, 1u) << "the vectors copied, the 27 MB of doubles left to VTK";

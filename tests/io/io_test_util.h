@@ -42,13 +42,16 @@ inline std::filesystem::path scratch() {
 
 // `image` as a .vti of raw appended data, uncompressed (a series' step as
 // sandstorm-field convert --compression none writes it). Returns `path`.
-inline std::filesystem::path writeRawVti(vtkImageData* image, const std::filesystem::path& path) {
+// Raw appended data, uncompressed; `wideHeaders`: UInt64 byte counts.
+inline std::filesystem::path writeRawVti(vtkImageData* image, const std::filesystem::path& path,
+                                         bool wideHeaders = false) {
   vtkNew<vtkXMLImageDataWriter> w;
   w->SetInputData(image);
   w->SetFileName(path.c_str());
   w->SetDataModeToAppended();
   w->EncodeAppendedDataOff();
   w->SetCompressorTypeToNone();
+  if (wideHeaders) w->SetHeaderTypeToUInt64();
   w->Write();
   return path;
 }
