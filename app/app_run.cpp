@@ -76,13 +76,16 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
       projectRoot_(configDir_.parent_path()),
       lastFrame_(config.run.frames > 0 ? config.run.frames - 1 : -1),
       statsWarmup_(statsWarmup(config.run)),
+      field_(field ? std::move(*field) : FieldSource{}),
       // In cluster mode only rank 0 makes the field (unless every rank reads it): it travels in
       // packets.
-      field_(field                               ? std::move(*field)
-             : !cluster || cluster->makesField() ? makeField(config.field, configDir_)
-                                                 : FieldSource{}),
+      fieldRead_(
+          !field && (!cluster || cluster->makesField())
+              ? std::async(std::launch::async,
+                           [spec = config.field, dir = configDir_] { return makeField(spec, dir); })
+              : std::future<FieldSource>()),
       terrain_(makeTerrain(config.scene, configDir_)),
-      main_(config.particles, field_.update, mainOptions(config)),
+      main_(config.particles, FieldUpdate{}, mainOptions(config)),  // the field: takeField()
       helicopter_(terrain_),
       fluid_(terrain_),
       editor_(config.field),
@@ -113,7 +116,6 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
           "replay it in one process into a movie (--replay FILE --movie FILE --movie-size WxH)");
     movie_ = std::make_unique<MovieRecorder>(*options_.movie, config.walls, config.run);
   }
-  if (field_.timeline) useField(main_, field_);
   if (options_.record) {
     recorder_ = std::make_unique<SessionRecorder>(*options_.record);
     main_.setChangeListener(
@@ -126,19 +128,27 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
     for (const ScheduledChange& s : replay_.changes)
       main_.schedule(s.frame, s.change);
   }
-  if (!cluster_ || cluster_->root()) {
-    helicopter_.update(main_);  // the configured helicopter's field and dust, before packet 0
-    editor_.update(main_);      // the configuration's [[primitive]]s, before packet 0 too
-    // A replayed session holds the paths' moves (they were recorded as changes).
-    if (!options_.replay) obstaclePaths_.start(main_);
-    // A watched field: its steps come from a thread (a replay has them in the session).
-    if (field_.stream && !options_.replay)
-      fieldStream_ = std::make_unique<FieldStream>(field_.stream, field_.streamOptions,
-                                                   [this] { return main_.nextFrame(); });
-    if (TrackingInput::wanted(config.tracking, replay_.tracking))
-      tracking_ =
-          std::make_unique<TrackingInput>(config.tracking, config.navigation, replay_.tracking);
-  }
+  if ((!cluster_ || cluster_->root()) && TrackingInput::wanted(config.tracking, replay_.tracking))
+    tracking_ =
+        std::make_unique<TrackingInput>(config.tracking, config.navigation, replay_.tracking);
+}
+
+AppRun::~AppRun() {
+  channel_.close();
+}
+
+void AppRun::takeField() {
+  if (fieldRead_.valid()) field_ = fieldRead_.get();  // what the read threw, start() throws
+  useField(main_, field_);
+  if (cluster_ && !cluster_->root()) return;
+  helicopter_.update(main_);  // the configured helicopter's field and dust, before packet 0
+  editor_.update(main_);      // the configuration's [[primitive]]s, before packet 0 too
+  // A replayed session holds the paths' moves (they were recorded as changes).
+  if (!options_.replay) obstaclePaths_.start(main_);
+  // A watched field: its steps come from a thread (a replay has them in the session).
+  if (field_.stream && !options_.replay)
+    fieldStream_ = std::make_unique<FieldStream>(field_.stream, field_.streamOptions,
+                                                 [this] { return main_.nextFrame(); });
 }
 
 int AppRun::execute() {
@@ -157,7 +167,18 @@ int AppRun::execute() {
 
 bool AppRun::start() {
   openWindowLibrary();
-  openWalls();
+  // A field read within a moment is taken first: a small file's error comes
+  // before any wall opens. A longer read goes on while the walls open (on
+  // NVIDIA 0.2-0.3 s of contexts, programs and buffers).
+  const bool readAWhile =
+      fieldRead_.valid() &&
+      fieldRead_.wait_for(std::chrono::milliseconds(100)) != std::future_status::ready;
+  if (!readAWhile) takeField();
+  openWalls();  // their threads open them, then wait for packet 0
+  if (readAWhile) {
+    log::debug("the walls open while the field is read");
+    takeField();
+  }
   std::vector<GLFWwindow*> inputWindows;
   for (GlfwWindow* w : windows_)
     inputWindows.push_back(w->handle());
@@ -306,6 +327,9 @@ void AppRun::openWalls() {
       group.offscreen->addWall(walls_.back().get());
     }
   }
+  // The hooks and overlays set later reach the threads with packet 0 (FrameChannel's lock).
+  for (auto& c : contexts_)
+    c->start();
 }
 
 // A second context of `context`'s share group, for its upload thread (a
@@ -465,8 +489,6 @@ void AppRun::hookWalls() {
           },
           options_.movie->menu);
   }
-  for (auto& c : contexts_)
-    c->start();
 }
 
 void AppRun::loadField(const std::string& choice) {

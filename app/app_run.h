@@ -1,15 +1,19 @@
 // AppRun: one run of the application, from the configuration to the exit
-// code. It makes, in order, the main context (field, terrain, recorder and
-// replay, helicopter, head and navigation), the walls (a GL context and a
-// thread each; GLFW windows on this thread, as GLFW requires), the menu, and
-// then feeds the walls one packet a frame until the frame count, a closed
-// window, Ctrl-C or a failed wall stops it. Members are declared so that
-// they go in the reverse order: walls before the menu whose overlay they
-// draw, both before the windows' library.
+// code. It makes, in order, the main context (terrain, recorder and replay,
+// head and navigation), the walls (a GL context and a thread each; GLFW
+// windows on this thread, as GLFW requires), the field, the menu, and then
+// feeds the walls one packet a frame until the frame count, a closed window,
+// Ctrl-C or a failed wall stops it. The configuration's field is read on a
+// thread from the start: a read that takes longer than a moment (a large
+// file) goes on while the walls open their contexts, programs and buffers,
+// and packet 0, which carries the field, waits for both. Members are
+// declared so that they go in the reverse order: walls before the menu whose
+// overlay they draw, both before the windows' library.
 #pragma once
 
 #include <chrono>
 #include <functional>
+#include <future>
 #include <memory>
 #include <vector>
 
@@ -50,6 +54,8 @@ class AppRun {
   // `field`: the configuration's [field], already read; empty: read here.
   AppRun(const AppConfig& config, const AppOptions& options, bool headless, ClusterLink* cluster,
          std::optional<FieldSource> field = std::nullopt);
+  // Walls still opening (a start() that threw) are told to stop before they are joined.
+  ~AppRun();
   // The whole run: start(), frames until the end (or Ctrl-C), stop(). Returns the exit code.
   int execute();
 
@@ -75,6 +81,9 @@ class AppRun {
   void openWindowLibrary();
   std::vector<int> wallGpus() const;
   void openWalls();
+  // The field read into the main context, with what builds on it (the
+  // helicopter's, the editor's primitives, a watched folder's stream).
+  void takeField();
   std::unique_ptr<GlContext> uploadContext(const GlContext& context, const WallSpec& spec, int gpu);
   void openMenu();
   void openLegend();
@@ -117,6 +126,7 @@ class AppRun {
   const std::uint32_t statsWarmup_;
 
   FieldSource field_;
+  std::future<FieldSource> fieldRead_;  // the configuration's field while it is read
   std::shared_ptr<const HeightMap> terrain_;
   MainContext main_;
   std::unique_ptr<SessionRecorder> recorder_;

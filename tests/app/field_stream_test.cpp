@@ -183,11 +183,53 @@ TEST(FieldStream, AnEmptyFolderStopsTheStartAfterWaitingWithAClearMessage) {
   std::string text = test::readBytes(config(dir));
   text.replace(text.find("step_interval = 0.5"), 19, "step_interval = 0.5\nwait_s = 0.3");
   std::ofstream(dir / "stream.toml") << text;
-  const auto r =
-      test::runSandstorm("--config " + (dir / "stream.toml").string() + " --headless --frames 3");
+  const auto r = test::runSandstorm("--config " + (dir / "stream.toml").string() +
+                                    " --headless --frames 3 --log-level debug");
   EXPECT_NE(r.exitCode, 0);
   EXPECT_NE(r.output.find("no complete step came within 0.3 s (field.wait_s)"), std::string::npos)
       << r.output;
+  // The wait outlasted a moment, so the walls opened meanwhile; the error still ends the run.
+  EXPECT_NE(r.output.find("the walls open while the field is read"), std::string::npos) << r.output;
+  EXPECT_EQ(r.output.find("frames begin"), std::string::npos) << r.output;
+}
+
+// A field read while the walls open (the first step comes 0.3 s after the
+// run began to wait for it) moves the particles as one read before they open does.
+TEST(FieldStream, AFieldReadWhileTheWallsOpenDrawsWhatOneReadBeforeDoes) {
+  const fs::path dir = test::scratchDir("field-stream-late");
+  fs::create_directories(dir / "steps");
+  const std::string args =
+      "--config " + config(dir) + " --headless --frames 24 --log-level debug --hash-log ";
+  std::atomic<bool> waiting{false};
+  test::ProcessResult late;
+  std::thread runner([&] {
+    const std::string cmd = std::string("cd '") + SANDSTORM_SOURCE_DIR + "' && '" +
+                            SANDSTORM_BINARY + "' " + args + (dir / "late.txt").string() + " 2>&1";
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return;
+    char buffer[4096];
+    while (std::fgets(buffer, sizeof buffer, pipe)) {
+      late.output += buffer;
+      if (late.output.find("waiting for the first step") != std::string::npos) waiting = true;
+    }
+    const int status = pclose(pipe);
+    late.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    waiting = true;
+  });
+  for (int i = 0; i < 6000 && !waiting; ++i)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  writeVti(dir / "step.vti", wind({1, 0.5f, 0}));
+  fs::rename(dir / "step.vti", dir / "steps" / "step_000.vti");  // complete at once
+  runner.join();
+  ASSERT_EQ(late.exitCode, 0) << late.output;
+  EXPECT_NE(late.output.find("the walls open while the field is read"), std::string::npos)
+      << late.output;
+  const auto ready = test::runSandstorm(args + (dir / "ready.txt").string());
+  ASSERT_EQ(ready.exitCode, 0) << ready.output;
+  const std::vector<std::string> lines = test::readLines(dir / "late.txt");
+  ASSERT_EQ(lines.size(), 24u);
+  EXPECT_EQ(lines, test::readLines(dir / "ready.txt"));
 }
 
 }  // namespace
