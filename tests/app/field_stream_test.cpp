@@ -193,7 +193,7 @@ TEST(FieldStream, AnEmptyFolderStopsTheStartAfterWaitingWithAClearMessage) {
   EXPECT_EQ(r.output.find("frames begin"), std::string::npos) << r.output;
 }
 
-// A field read while the walls open (the first step comes 0.3 s after the
+// A field read while the walls open (the first step comes 0.6 s after the
 // run began to wait for it) moves the particles as one read before they open does.
 TEST(FieldStream, AFieldReadWhileTheWallsOpenDrawsWhatOneReadBeforeDoes) {
   const fs::path dir = test::scratchDir("field-stream-late");
@@ -218,7 +218,7 @@ TEST(FieldStream, AFieldReadWhileTheWallsOpenDrawsWhatOneReadBeforeDoes) {
   });
   for (int i = 0; i < 6000 && !waiting; ++i)
     std::this_thread::sleep_for(std::chrono::milliseconds(10));
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  std::this_thread::sleep_for(std::chrono::milliseconds(600));
   writeVti(dir / "step.vti", wind({1, 0.5f, 0}));
   fs::rename(dir / "step.vti", dir / "steps" / "step_000.vti");  // complete at once
   runner.join();
