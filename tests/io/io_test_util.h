@@ -41,8 +41,8 @@ inline std::filesystem::path scratch() {
 }
 
 // `image` as a .vti of raw appended data, uncompressed (a series' step as
-// sandstorm-field convert --compression none writes it). Returns `path`.
-// Raw appended data, uncompressed; `wideHeaders`: UInt64 byte counts.
+// sandstorm-field convert --compression none writes it); `wideHeaders`:
+// UInt64 byte counts. A failed write fails the test. Returns `path`.
 inline std::filesystem::path writeRawVti(vtkImageData* image, const std::filesystem::path& path,
                                          bool wideHeaders = false) {
   vtkNew<vtkXMLImageDataWriter> w;
@@ -52,7 +52,7 @@ inline std::filesystem::path writeRawVti(vtkImageData* image, const std::filesys
   w->EncodeAppendedDataOff();
   w->SetCompressorTypeToNone();
   if (wideHeaders) w->SetHeaderTypeToUInt64();
-  w->Write();
+  EXPECT_EQ(w->Write(), 1) << "writing " << path;
   return path;
 }
 
