@@ -138,7 +138,13 @@ AppRun::~AppRun() {
 }
 
 void AppRun::takeField() {
-  if (fieldRead_.valid()) field_ = fieldRead_.get();  // what the read threw, start() throws
+  if (fieldRead_.valid()) {
+    // Windows stay answered while the read goes on (their walls show its progress).
+    if (glfw_)
+      while (fieldRead_.wait_for(std::chrono::milliseconds(50)) != std::future_status::ready)
+        GlfwLibrary::pollEvents();
+    field_ = fieldRead_.get();  // what the read threw, start() throws
+  }
   useField(main_, field_);
   if (cluster_ && !cluster_->root()) return;
   helicopter_.update(main_);  // the configured helicopter's field and dust, before packet 0
@@ -177,6 +183,7 @@ bool AppRun::start() {
   openWalls();  // their threads open them, then wait for packet 0
   if (readAWhile) {
     log::debug("the walls open while the field is read");
+    if (!windows_.empty()) log::info("loading: the progress shows on the walls' windows too");
     takeField();
   }
   std::vector<GLFWwindow*> inputWindows;

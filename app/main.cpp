@@ -229,11 +229,8 @@ int main(int argc, char** argv) {
       throw Error("--array " + arrayName + ": names an array of a field file; give the file too");
     AppConfig config = loadConfig(configPath);
     applyConfigSets(config, options.sets);
-    // A field read from a file is read here, where a window can show its progress.
-    std::optional<FieldSource> field;
-    if (config.field.source != "analytic" && opensWindows(config, options))
-      field = loadWithWindow([&] { return makeField(config.field, config.folder); }, true);
-    App app(std::move(config), options, nullptr, std::move(field));
+    // The run reads the field while its walls open; windows show the read's progress.
+    App app(std::move(config), options);
     return app.run();
   } catch (const Error& e) {
     log::error(e.what());

@@ -3,9 +3,14 @@
 #include <chrono>
 #include <optional>
 
+#include <epoxy/gl.h>
+
 #include "contexts/particles/simulation_share.h"
+#include "contexts/ui/progress_bar.h"
+#include "core/cave/wall_views.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
+#include "core/util/progress_board.h"
 
 namespace sandstorm {
 
@@ -40,6 +45,7 @@ void RenderContext::run() {
     for (RenderWall* wall : walls_)
       wall->open(uploads_.get());
     log::debug("context of wall '", walls_.front()->name(), "': ", context_->description());
+    waitForFirstPacket();
     // Wall-clock time on this thread is for the statistics only; the
     // simulation's time comes from the packets.
     std::optional<Clock::time_point> lastSwap;
@@ -88,6 +94,25 @@ void RenderContext::run() {
     }
   }
   finished_ = true;
+}
+
+void RenderContext::waitForFirstPacket() {
+  const glm::ivec2 size = context_->framebufferSize();
+  if (size.x <= 0 || size.y <= 0) return;    // offscreen: take() waits
+  const RenderWall& wall = *walls_.front();  // a window draws one wall
+  std::optional<double> shown;               // between two pieces of work the last share stays up
+  while (!channel_.waitFor(wall.consumer(), std::chrono::milliseconds(50))) {
+    if (const std::optional<ProgressSnapshot> work = ProgressBoard::instance().snapshot())
+      shown = work->fraction();
+    if (!shown) continue;
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
+    glDrawBuffer(GL_BACK);  // both of a quad-buffered window's back buffers
+    for (const glm::ivec4& eye : eyeViewports(wall.setup().wall.stereo, size))
+      drawProgressBar(eye, centredBar(eye, 0.6f), *shown);
+    context_->swapBuffers();
+  }
+  if (shown)
+    log::debug("wall '", wall.name(), "' showed the loading's progress until its first frame");
 }
 
 }  // namespace sandstorm

@@ -11,6 +11,11 @@
 // A context may come with a second one of its share group: an UploadThread
 // then copies its walls' coming series steps to the GPU beside their work.
 //
+// A window's wall that opens before its first packet (the field still being
+// read) shows the read's progress meanwhile: a bar in each eye's view, drawn
+// with clears (contexts/ui/progress_bar.h), so a CAVE's walls show what they
+// wait for.
+//
 // A wall that fails (a lost context, a shader error) records the error on
 // each of the context's walls, the context drops out of the barrier and leaves
 // the channel, so the others never hang; the app sees error() and shuts
@@ -54,6 +59,9 @@ class RenderContext {
 
  private:
   void run();
+  // Until the first packet is there: the progress of the work on the board
+  // (ProgressBoard) in a window, nothing offscreen.
+  void waitForFirstPacket();
 
   std::unique_ptr<GlContext> context_;
   std::unique_ptr<UploadThread> uploads_;  // ends after the walls' thread

@@ -30,6 +30,13 @@ std::shared_ptr<const FramePacket> FrameChannel::take(int consumer) {
   return packet;
 }
 
+bool FrameChannel::waitFor(int consumer, std::chrono::milliseconds timeout) {
+  std::unique_lock lock(mutex_);
+  const std::size_t c = std::size_t(consumer);
+  return changed_.wait_for(lock, timeout,
+                           [&] { return closed_ || next_[c] < first_ + packets_.size(); });
+}
+
 void FrameChannel::trim() {
   // Drop packets every active consumer has taken.
   std::uint64_t slowest = first_ + packets_.size();

@@ -8,6 +8,7 @@
 // A consumer that leaves (its wall failed) stops holding the others back.
 #pragma once
 
+#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
@@ -27,6 +28,10 @@ class FrameChannel {
   bool publish(std::shared_ptr<const FramePacket> packet);
   // The consumer's next packet, or null once closed.
   std::shared_ptr<const FramePacket> take(int consumer);
+  // Waits at most `timeout` for take() to have an answer at once: true when
+  // the consumer's next packet is there or the channel closed. A wall opened
+  // before its first packet shows what it waits for meanwhile.
+  bool waitFor(int consumer, std::chrono::milliseconds timeout);
   void leave(int consumer);
   void close();
   bool closed() const;

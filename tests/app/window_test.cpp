@@ -4,9 +4,12 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <map>
 #include <set>
 #include <sstream>
+
+#include <unistd.h>
 
 #include "core/io/vti_writer.h"
 #include "tests/app/run_process.h"
@@ -37,20 +40,30 @@ std::vector<Line> hashes(const std::filesystem::path& path) {
   return out;
 }
 
+// 256^3 points of a field zlib compresses poorly: about 1.5 s to read here,
+// 10 s to write, so the tests that read it share one file (written once,
+// whole: it appears by a rename).
+std::filesystem::path slowField() {
+  const auto file = std::filesystem::temp_directory_path() / "sandstorm-test-slow-field-v1.vti";
+  if (std::filesystem::exists(file)) return file;
+  const int n = 256;
+  std::vector<glm::vec3> values(std::size_t(n) * n * n);
+  for (std::size_t i = 0; i < values.size(); ++i)
+    values[i] = glm::vec3(std::sin(0.37f * float(i % 977)), std::cos(0.011f * float(i % 6151)),
+                          0.001f * float(i % 4093));
+  const auto part = file.string() + "." + std::to_string(::getpid()) + ".vti";
+  writeVti(part, VectorField(Box{{0, 0, 0}, {4, 4, 4}}, glm::ivec3(n), std::move(values)));
+  std::filesystem::rename(part, file);
+  return file;
+}
+
 // A file that takes a while to read shows its progress in a window before
 // the walls open (the bar and, in the title, the log's line); without
 // windows it is read as before.
 TEST(Windows, AFileTakingAWhileToReadShowsItsProgressInAWindowFirst) {
   if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
   const auto dir = test::scratchDir("loading-window");
-  // 256^3 points of a field zlib compresses poorly: about 1.5 s to read here.
-  const int n = 256;
-  std::vector<glm::vec3> values(std::size_t(n) * n * n);
-  for (std::size_t i = 0; i < values.size(); ++i)
-    values[i] = glm::vec3(std::sin(0.37f * float(i % 977)), std::cos(0.011f * float(i % 6151)),
-                          0.001f * float(i % 4093));
-  writeVti(dir / "big.vti",
-           VectorField(Box{{0, 0, 0}, {4, 4, 4}}, glm::ivec3(n), std::move(values)));
+  std::filesystem::create_symlink(slowField(), dir / "big.vti");
   const std::string args = "'" + (dir / "big.vti").string() +
                            "' --frames 2 --set sim.maximum=1000 --screenshot '" + dir.string() +
                            "'";
@@ -64,6 +77,43 @@ TEST(Windows, AFileTakingAWhileToReadShowsItsProgressInAWindowFirst) {
   const auto headless = runSandstorm(args + " --headless");
   ASSERT_EQ(headless.exitCode, 0) << headless.output;
   EXPECT_EQ(headless.output.find("loading: the progress"), std::string::npos) << headless.output;
+}
+
+// A configuration's field that takes a while to read: the walls' windows
+// open while it is read and show its progress until their first frame.
+// (That a field read while the walls open draws what one read before does:
+// FieldStream.AFieldReadWhileTheWallsOpenDrawsWhatOneReadBeforeDoes.)
+TEST(Windows, TheWallsWindowsOpenWhileTheFieldIsReadAndShowItsProgress) {
+  if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
+  const auto dir = test::scratchDir("loading-walls");
+  std::filesystem::create_symlink(slowField(), dir / "big.vti");
+  {
+    std::ofstream config(dir / "slow.toml");
+    config << "include = \""
+           << (std::filesystem::path(SANDSTORM_SOURCE_DIR) / "tests/data/windows.toml").string()
+           << "\"\n[field]\nsource = \"big.vti\"\n";
+  }
+  const std::string args = "--config '" + (dir / "slow.toml").string() +
+                           "' --frames 6 --set sim.maximum=2000 --log-level debug --hash-log '";
+  const auto shown = runUnderXvfb(args + (dir / "windows.txt").string() + "'");
+  ASSERT_EQ(shown.exitCode, 0) << shown.output;
+  const std::size_t window = shown.output.find("GLFW window 'Sandstorm: front'");
+  const std::size_t overlap = shown.output.find("the walls open while the field is read");
+  const std::size_t loading = shown.output.find("loading: the progress shows on the walls");
+  const std::size_t read = shown.output.find("field: " + (dir / "big.vti").string());
+  ASSERT_NE(window, std::string::npos) << shown.output;
+  ASSERT_NE(overlap, std::string::npos) << shown.output;
+  ASSERT_NE(loading, std::string::npos) << shown.output;
+  ASSERT_NE(read, std::string::npos) << shown.output;
+  EXPECT_LT(window, read);  // the walls opened before the field was read
+  for (const char* wall : {"left", "front", "right", "floor"})
+    EXPECT_NE(shown.output.find(std::string("wall '") + wall +
+                                "' showed the loading's progress until its first frame"),
+              std::string::npos)
+        << wall << "\n"
+        << shown.output;
+  // Every wall drew every frame.
+  EXPECT_EQ(readLines(dir / "windows.txt").size(), 6u * 4u);
 }
 
 TEST(Windows, ASliderInTheMenuChangesEveryWallAtTheSameFrame) {
