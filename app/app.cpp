@@ -108,8 +108,9 @@ App::App(AppConfig config, AppOptions options, ClusterLink* cluster,
 int App::run() {
   if (cluster_) cluster_->localize(config_, options_);  // this rank's walls and outputs
   keepSoftwareRasterizingInDrawingThreads(config_.glContexts());
-  return AppRun(config_, options_, headless_, cluster_, std::exchange(field_, std::nullopt))
-      .execute();
+  AppRun run(config_, options_, headless_, cluster_, std::exchange(field_, std::nullopt));
+  run.setFieldSeeding(std::move(seeding_));
+  return run.execute();
 }
 
 }  // namespace sandstorm

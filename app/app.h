@@ -55,6 +55,8 @@ class App {
   // `field`: the configuration's [field], already read (fileSceneField); empty: the run reads it.
   App(AppConfig config, AppOptions options, ClusterLink* cluster = nullptr,
       std::optional<FieldSource> field = std::nullopt);
+  // Once the run's field is read, before packet 0 (sandstorm FILE framed from its header).
+  void setFieldSeeding(FieldSeeding seeding) { seeding_ = std::move(seeding); }
   // Runs until the frame count is reached, a window closes or Ctrl-C. Returns
   // the process exit code (0, or 1 when a wall failed).
   int run();
@@ -68,6 +70,7 @@ class App {
   ClusterLink* cluster_ = nullptr;
   bool headless_ = false;
   std::optional<FieldSource> field_;  // moves into the run
+  FieldSeeding seeding_;
 };
 
 }  // namespace sandstorm

@@ -147,6 +147,7 @@ void AppRun::takeField() {
   }
   useField(main_, field_);
   if (cluster_ && !cluster_->root()) return;
+  if (seeding_ && !options_.replay) seeding_(main_, field_);  // a session holds its changes
   helicopter_.update(main_);  // the configured helicopter's field and dust, before packet 0
   editor_.update(main_);      // the configuration's [[primitive]]s, before packet 0 too
   // A replayed session holds the paths' moves (they were recorded as changes).

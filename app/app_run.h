@@ -67,6 +67,8 @@ class AppRun {
   // wall's drawing thread, after its picture and overlays are drawn.
   using FrameObserver = std::function<void(std::size_t wall, WallRenderer&, const FramePacket&)>;
   void setFrameObserver(FrameObserver observer) { observer_ = std::move(observer); }
+  // Set before start(): what the main context does with the field once it is read.
+  void setFieldSeeding(FieldSeeding seeding) { seeding_ = std::move(seeding); }
   bool start();
   bool advance();
   int stop();
@@ -126,6 +128,7 @@ class AppRun {
   const std::uint32_t statsWarmup_;
 
   FieldSource field_;
+  FieldSeeding seeding_;
   std::future<FieldSource> fieldRead_;  // the configuration's field while it is read
   std::shared_ptr<const HeightMap> terrain_;
   MainContext main_;

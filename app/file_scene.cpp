@@ -3,6 +3,13 @@
 #include <algorithm>
 #include <cmath>
 
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "core/io/field_format.h"
+#include "core/io/vtk_xml_check.h"
+#include "core/sim/main_context.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
 
@@ -36,11 +43,10 @@ Flow meanFlow(const VectorField& field) {
 // steps a fifth of a cell, lines as long as the diagonal) and its Slice
 // (through the centre): the defaults are the tornado scene's, metres from the
 // origin, which would miss most files' fields. Off until the user turns them on.
-void placeFlowTools(ParticleState& state, const VectorField& field) {
-  const Box box = field.bounds();
+void placeFlowTools(ParticleState& state, const Box& box, glm::ivec3 dims) {
   const glm::vec3 size = box.max - box.min, centre = 0.5f * (box.min + box.max);
   const float diagonal = glm::length(size);
-  const glm::vec3 cells = size / glm::max(glm::vec3(field.dims()) - 1.0f, glm::vec3(1.0f));
+  const glm::vec3 cells = size / glm::max(glm::vec3(dims) - 1.0f, glm::vec3(1.0f));
   float cell = diagonal;
   for (int a = 0; a < 3; ++a)
     if (cells[a] > 0.0f) cell = std::min(cell, cells[a]);
@@ -64,12 +70,9 @@ void placeFlowTools(ParticleState& state, const VectorField& field) {
   state.probe.radius = std::clamp(0.02f * diagonal, 1e-7f, 100.0f);
 }
 
-}  // namespace
-
-Emitter seedingPlane(const VectorField& field, int maximum) {
-  const Box box = field.bounds();
+// The seeding plane across `box` for a field whose mean flow is `flow`.
+Emitter seedingPlane(const Box& box, const Flow& flow, int maximum) {
   const glm::vec3 size = box.max - box.min, centre = 0.5f * (box.min + box.max);
-  const Flow flow = meanFlow(field);
   Emitter e;
   e.shape = EmitterShape::Box;
   e.position = centre;
@@ -100,8 +103,24 @@ Emitter seedingPlane(const VectorField& field, int maximum) {
   return e;
 }
 
+void logSeeding(const std::filesystem::path& file, const Emitter& e) {
+  log::info("file scene: ", file.string(), ": seeding ", e.rate, " particles/s living ", e.lifetime,
+            " s");
+}
+
+}  // namespace
+
+Emitter seedingPlane(const VectorField& field, int maximum) {
+  return seedingPlane(field.bounds(), meanFlow(field), maximum);
+}
+
 FieldSource fileSceneField(AppConfig& config, const std::filesystem::path& file,
                            const std::string& array) {
+  pointAtFile(config, file, array);
+  return makeField(config.field, config.folder);
+}
+
+void pointAtFile(AppConfig& config, const std::filesystem::path& file, const std::string& array) {
   FieldSpec spec;
   spec.source = std::filesystem::absolute(file).string();
   spec.name = array;
@@ -111,12 +130,11 @@ FieldSource fileSceneField(AppConfig& config, const std::filesystem::path& file,
   spec.storage = config.field.storage;
   spec.readAhead = config.field.readAhead;
   config.field = spec;
-  return makeField(config.field, config.folder);
 }
 
-void openFileScene(AppConfig& config, const std::filesystem::path& file, const VectorField& field) {
+void frameFileScene(AppConfig& config, const std::filesystem::path& file, const Box& box,
+                    glm::ivec3 dims) {
   config.scene = SceneSpec{};
-  const Box box = field.bounds();
   const glm::vec3 size = box.max - box.min, centre = 0.5f * (box.min + box.max);
   const float radius = 0.5f * glm::length(size);
   config.scene.groundHeight = box.min.z;  // the ground under the field, not through it
@@ -126,7 +144,8 @@ void openFileScene(AppConfig& config, const std::filesystem::path& file, const V
           glm::vec3(centre.x + 20.0f * radius, centre.y + 20.0f * radius, 1.0f)};
 
   ParticleState& state = config.particles;
-  state.emitters = {seedingPlane(field, state.sim.maximum)};
+  // Until the field's mean flow is known: its horizontal middle plane.
+  state.emitters = {seedingPlane(box, Flow{}, state.sim.maximum)};
   state.sim.motion = MotionModel::Tracer;
   state.sim.boundary = BoundaryMode::Kill;
   state.sim.groundCollision = false;
@@ -172,11 +191,51 @@ void openFileScene(AppConfig& config, const std::filesystem::path& file, const V
   // Particles fade within this of the ground: a hundredth of the field, not
   // the tornado scene's 0.3 m (all of a millimetre-wide field's would fade).
   state.render.softness = std::clamp(0.01f * 2.0f * radius, 0.0f, 10.0f);
-  placeFlowTools(state, field);
+  placeFlowTools(state, box, dims);
   log::info("file scene: ", file.string(), " over [", box.min.x, ",", box.min.y, ",", box.min.z,
-            "]..[", box.max.x, ",", box.max.y, ",", box.max.z, "] m; seeding ",
-            state.emitters[0].rate, " particles/s living ", state.emitters[0].lifetime, " s",
+            "]..[", box.max.x, ",", box.max.y, ",", box.max.z, "] m",
             roomWalls ? concat("; scaled by ", scale, " into the room") : std::string());
+}
+
+void openFileScene(AppConfig& config, const std::filesystem::path& file, const VectorField& field) {
+  frameFileScene(config, file, field.bounds(), field.dims());
+  std::vector<Emitter>& emitters = config.particles.emitters;
+  emitters = {seedingPlane(field, config.particles.sim.maximum)};
+  logSeeding(file, emitters.front());
+}
+
+std::optional<VtkImageFrame> fileSceneFrame(const FieldSpec& spec) {
+  if (detectFieldFormat(spec.source) != FieldFormat::VtkImageData) return std::nullopt;
+  return readVtkImageFrame(spec.source);
+}
+
+FieldSeeding seedFileScene(const std::filesystem::path& file, const VtkImageFrame& frame,
+                           int maximum, const std::vector<std::string>& sets) {
+  // The emitter's settings a --set gave, which stay as given.
+  std::set<std::string> given;
+  for (const std::string& set : sets)
+    given.insert(set.substr(0, set.find('=')));
+  return [file, frame, maximum, given](MainContext& main, const FieldSource& source) {
+    const VectorField* field = source.update.field.get();
+    if (!field) return;  // (a .vti is a grid)
+    if (field->bounds().min != frame.bounds().min || field->bounds().max != frame.bounds().max ||
+        field->dims() != frame.dims())
+      log::warn(file.string(), ": the grid read is not the one its header describes; the walls ",
+                "were framed by the header");
+    const Emitter e = seedingPlane(*field, maximum);
+    const std::pair<const char*, AttributeValue> settings[] = {
+        {"position", e.position}, {"width", e.width},
+        {"depth", e.depth},       {"height", e.height},
+        {"lifetime", e.lifetime}, {"lifetime_variance", e.lifetimeVariance},
+        {"rate", e.rate}};
+    for (const auto& [key, value] : settings) {
+      const std::string name = concat("emitter.0.", key);
+      if (given.count(name)) continue;
+      const AttributeResult r = main.set(name, value);
+      if (!r.warning.empty()) log::warn("file scene: ", name, ": ", r.warning);
+    }
+    logSeeding(file, e);
+  };
 }
 
 }  // namespace sandstorm

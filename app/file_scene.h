@@ -9,17 +9,37 @@
 #pragma once
 
 #include <filesystem>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "app/scene_setup.h"
 #include "core/config/app_config.h"
 #include "core/field/vector_field.h"
+#include "core/io/vtk_image_frame.h"
 
 namespace sandstorm {
 
 // Rewrites `config` (the desktop scene, or the configuration the user gave)
 // around `field`, read from `file` (fileSceneField).
 void openFileScene(AppConfig& config, const std::filesystem::path& file, const VectorField& field);
+
+// The same from a field's bounds and points alone, before it is read: all
+// but the seeding plane, which needs the field's mean flow (seedFileScene);
+// the emitter seeds the horizontal middle plane until then.
+void frameFileScene(AppConfig& config, const std::filesystem::path& file, const Box& box,
+                    glm::ivec3 dims);
+
+// A .vti's bounds and points from its header (readVtkImageFrame); none for
+// other formats, or where the header does not say (the file is read first).
+std::optional<VtkImageFrame> fileSceneFrame(const FieldSpec& spec);
+
+// What a run framed by frameFileScene does once the field is read, before
+// packet 0: emitter 0 moved to the seeding plane of openFileScene by the
+// main context's changes (`maximum`: the particle count it fills the field
+// with), except for the emitter settings a --set in `sets` gave.
+FieldSeeding seedFileScene(const std::filesystem::path& file, const VtkImageFrame& frame,
+                           int maximum, const std::vector<std::string>& sets);
 
 // Points `config`'s [field] at `file` (its array or grid `array`; the
 // configuration's field.memory_budget, precision, storage and read_ahead
@@ -29,6 +49,8 @@ void openFileScene(AppConfig& config, const std::filesystem::path& file, const V
 // starts from the returned source (App's `field`).
 FieldSource fileSceneField(AppConfig& config, const std::filesystem::path& file,
                            const std::string& array);
+// Only the first part: `config`'s [field] pointed at `file`, for the run to read.
+void pointAtFile(AppConfig& config, const std::filesystem::path& file, const std::string& array);
 
 // The emitter the file scene seeds with: exposed for tests.
 Emitter seedingPlane(const VectorField& field, int maximum);

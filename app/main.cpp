@@ -218,9 +218,17 @@ int main(int argc, char** argv) {
       AppConfig config = loadConfig(
           configOption->count() > 0 ? configPath : defaultConfig("desktop.toml").string());
       applyConfigSets(config, options.sets);
-      FieldSource field =
-          loadWithWindow([&] { return fileSceneField(config, fieldFile, arrayName); },
-                         opensWindows(config, options));
+      pointAtFile(config, fieldFile, arrayName);
+      if (const std::optional<VtkImageFrame> frame = fileSceneFrame(config.field)) {
+        // Framed from the file's header: the walls open while the file is read.
+        const int maximum = config.particles.sim.maximum;
+        frameFileScene(config, fieldFile, frame->bounds(), frame->dims());
+        App app(std::move(config), options);
+        app.setFieldSeeding(seedFileScene(fieldFile, *frame, maximum, options.sets));
+        return app.run();
+      }
+      FieldSource field = loadWithWindow([&] { return makeField(config.field, config.folder); },
+                                         opensWindows(config, options));
       openFileScene(config, fieldFile, *field.update.field);
       App app(std::move(config), options, nullptr, std::move(field));
       return app.run();

@@ -4,6 +4,7 @@
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -37,6 +38,11 @@ struct FieldSource {
 FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDir);
 // Hands a field to the main context: static or timeline.
 void useField(class MainContext& main, const FieldSource& source);
+
+// What a run does with its field once read, before packet 0, by the main
+// context's changes (sandstorm FILE's seeding plane, which needs the field's
+// mean flow). A replayed run skips it: its session holds the changes.
+using FieldSeeding = std::function<void(class MainContext& main, const FieldSource& field)>;
 
 // The field files under data/ and the analytic fields, as the menu offers them
 // ("analytic:tornado", "data/tornado.vti", ...).

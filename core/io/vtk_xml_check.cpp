@@ -175,6 +175,24 @@ class Checker {
 
   VtkXmlSummary summary() const { return {totalBytes_, declared_, extents_, raw_}; }
 
+  // The tags up to the ImageData element: its frame, or none.
+  std::optional<VtkImageFrame> imageFrame() {
+    if (!in_.ok()) return std::nullopt;
+    while (const std::optional<Tag> tag = next()) {
+      if (tag->special) continue;
+      if (tag->closing) return std::nullopt;
+      if (tag->name == "VTKFile") {
+        const auto type = tag->attributes.find("type");
+        if (type == tag->attributes.end() || type->second != "ImageData") return std::nullopt;
+        sawFile_ = true;
+        continue;
+      }
+      if (tag->name != "ImageData" || !sawFile_) return std::nullopt;
+      return frameOf(*tag);
+    }
+    return std::nullopt;
+  }
+
   void run() {
     if (!in_.ok()) fail(file_ + ": cannot open");
     std::error_code ec;
@@ -359,6 +377,60 @@ class Checker {
     } else if (t.name == "DataArray") {
       dataArray(t);
     }
+  }
+
+  // Exactly `n` finite numbers, or none.
+  template <std::size_t n>
+  static std::optional<std::array<double, n>> numbers(const std::string& text) {
+    std::array<double, n> out{};
+    const char* p = text.data();
+    const char* end = p + text.size();
+    for (double& v : out) {
+      while (p < end && isSpace(*p))
+        ++p;
+      const auto [q, ec] = std::from_chars(p, end, v);
+      if (ec != std::errc() || !std::isfinite(v)) return std::nullopt;
+      p = q;
+    }
+    while (p < end && isSpace(*p))
+      ++p;
+    if (p != end) return std::nullopt;
+    return out;
+  }
+
+  std::optional<VtkImageFrame> frameOf(const Tag& t) const {
+    const auto attribute = [&](const char* key) -> const std::string* {
+      const auto it = t.attributes.find(key);
+      return it == t.attributes.end() ? nullptr : &it->second;
+    };
+    const std::string* whole = attribute("WholeExtent");
+    if (!whole) return std::nullopt;
+    VtkImageFrame f;
+    f.extent = parseExtent(*whole, "ImageData WholeExtent");
+    for (int a = 0; a < 3; ++a) {
+      const long long points = f.extent[2 * a + 1] - f.extent[2 * a] + 1;
+      if (points < 1 || points > (1LL << 30)) return std::nullopt;
+    }
+    if (const std::string* origin = attribute("Origin")) {
+      const auto o = numbers<3>(*origin);
+      if (!o) return std::nullopt;
+      f.origin = *o;
+    }
+    if (const std::string* spacing = attribute("Spacing")) {
+      const auto s = numbers<3>(*spacing);
+      if (!s) return std::nullopt;
+      f.spacing = *s;
+    }
+    for (int a = 0; a < 3; ++a)
+      if (f.extent[2 * a + 1] > f.extent[2 * a] && !(f.spacing[std::size_t(a)] > 0.0))
+        return std::nullopt;
+    if (const std::string* direction = attribute("Direction")) {
+      const auto d = numbers<9>(*direction);
+      if (!d) return std::nullopt;
+      for (std::size_t i = 0; i < 9; ++i)
+        if ((*d)[i] != (i % 4 == 0 ? 1.0 : 0.0)) return std::nullopt;
+    }
+    return f;
   }
 
   std::array<long long, 6> parseExtent(const std::string& text, const std::string& what) const {
@@ -779,6 +851,14 @@ class Checker {
 };
 
 }  // namespace
+
+std::optional<VtkImageFrame> readVtkImageFrame(const std::filesystem::path& path) {
+  try {
+    return Checker(path, 0).imageFrame();
+  } catch (const Error&) {
+    return std::nullopt;  // the read says what is wrong
+  }
+}
 
 VtkXmlSummary checkVtkXml(const std::filesystem::path& path, std::size_t memoryBudget) {
   Checker checker(path, memoryBudget);

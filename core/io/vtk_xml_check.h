@@ -33,8 +33,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "core/io/vtk_image_frame.h"
 
 namespace sandstorm {
 
@@ -63,5 +66,13 @@ struct VtkXmlSummary {
 };
 
 VtkXmlSummary checkVtkXml(const std::filesystem::path& path, std::size_t memoryBudget);
+
+// The image's frame from the tags before its first Piece, read by the same
+// tokenizer, none of the arrays: none where the file is not VTK ImageData, or
+// its header gives no usable frame (no WholeExtent, an empty or huge extent,
+// a spacing that is not positive and finite, a Direction that is not the
+// identity: only axis-aligned images are read). Never throws: the read that
+// follows says what is wrong with such a file.
+std::optional<VtkImageFrame> readVtkImageFrame(const std::filesystem::path& path);
 
 }  // namespace sandstorm

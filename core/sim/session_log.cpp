@@ -13,15 +13,6 @@
 namespace sandstorm {
 namespace {
 
-// Values print without spaces ("1,2,3", names as encodeName writes them) so
-// a line splits on whitespace.
-std::string compact(const AttributeValue& value) {
-  if (const auto* name = std::get_if<std::string>(&value)) return encodeName(*name);
-  std::string s = toString(value);
-  if (std::holds_alternative<glm::vec3>(value)) std::replace(s.begin(), s.end(), ' ', ',');
-  return s;
-}
-
 void number(std::string& out, float v) {
   char buffer[32];
   const auto [end, ec] = std::to_chars(buffer, buffer + sizeof buffer, v);
@@ -35,6 +26,23 @@ void numbers(std::string& out, std::initializer_list<float> values) {
     number(out, v);
     first = false;
   }
+}
+
+// Values print without spaces ("1,2,3", names as encodeName writes them) so
+// a line splits on whitespace, and floats as the shortest text that reads
+// back as the same float, so a replay sets exactly what was recorded.
+std::string compact(const AttributeValue& value) {
+  if (const auto* name = std::get_if<std::string>(&value)) return encodeName(*name);
+  std::string s;
+  if (const auto* f = std::get_if<float>(&value)) {
+    number(s, *f);
+    return s;
+  }
+  if (const auto* v = std::get_if<glm::vec3>(&value)) {
+    numbers(s, {v->x, v->y, v->z});
+    return s;
+  }
+  return toString(value);
 }
 
 void pose(std::string& out, const TrackedPose& p) {

@@ -11,6 +11,7 @@
 #include "core/field/analytic_field.h"
 #include "core/io/vti_writer.h"
 #include "core/sim/attribute_table.h"
+#include "tests/app/pvti_for.h"
 #include "tests/app/run_process.h"
 #include "tests/io/openfoam_case.h"
 
@@ -172,6 +173,58 @@ TEST(FileScene, AFileOpensFromItsOwnFolder) {
 
 // The file is read once: the scene is framed from the very field the run
 // starts with (a 512^3 file read twice took twice the time to open).
+// A .vti is framed from its header and seeded once read (the walls open
+// meanwhile); the same grid through a parallel image file (.pvti) is framed
+// after its read, as every file was. Both open the same scene: the same
+// particles and state every frame, the same picture, and the emitter
+// setting a --set gave stays as given in both.
+TEST(FileScene, AFileFramedFromItsHeaderOpensAsAFileFramedAfterItsRead) {
+  const auto dir = test::scratchDir("file-scene-header");
+  struct Drift final : AnalyticField {  // a mean flow along y: not the middle plane's seeding
+    glm::vec3 evaluate(const glm::vec3& p) const override {
+      return {0.2f * std::sin(p.z), 1.5f + 0.1f * p.x, 0.05f * p.y};
+    }
+  };
+  writeVti(dir / "drift.vti",
+           bake(Drift(), {{-1.5f, 0.25f, 2.0f}, {0.5f, 3.25f, 3.5f}}, {17, 25, 7}));
+  test::writePvtiFor(dir / "drift.vti", dir / "drift.pvti");
+  const auto open = [&](const std::string& file, const std::string& name) {
+    std::filesystem::create_directories(dir / name);
+    return test::runSandstorm("'" + (dir / file).string() +
+                              "' --headless --frames 24 --set sim.maximum=3000 "
+                              "--set emitter.0.lifetime=0.75 --log-level debug --hash-log '" +
+                              (dir / name / "hashes.txt").string() + "' --screenshot '" +
+                              (dir / name).string() + "'");
+  };
+  const auto framed = open("drift.vti", "header");
+  const auto read = open("drift.pvti", "read");
+  ASSERT_EQ(framed.exitCode, 0) << framed.output;
+  ASSERT_EQ(read.exitCode, 0) << read.output;
+  // The .vti's scene was framed before its field was read, the .pvti's after.
+  const auto before = [](const std::string& out, const std::string& a, const std::string& b) {
+    const std::size_t i = out.find(a), j = out.find(b);
+    return i != std::string::npos && j != std::string::npos && i < j;
+  };
+  EXPECT_TRUE(before(framed.output, "file scene: ", "field: ")) << framed.output;
+  EXPECT_TRUE(before(read.output, "field: ", "file scene: ")) << read.output;
+  EXPECT_NE(framed.output.find("seeding"), std::string::npos) << framed.output;
+  const std::vector<std::string> hashes = test::readLines(dir / "header" / "hashes.txt");
+  ASSERT_EQ(hashes.size(), 24u);
+  EXPECT_EQ(hashes, test::readLines(dir / "read" / "hashes.txt"));
+  const auto bytes = [](const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const std::string picture = bytes(dir / "header" / "desktop.png");
+  EXPECT_FALSE(picture.empty());
+  EXPECT_TRUE(picture == bytes(dir / "read" / "desktop.png")) << "the pictures differ";
+  std::istringstream last(hashes.back());
+  std::string frame, wall;
+  std::size_t particles = 0;
+  last >> frame >> wall >> particles;
+  EXPECT_GT(particles, 100u) << hashes.back();
+}
+
 TEST(FileScene, TheFileIsReadOnce) {
   const auto dir = test::scratchDir("file-scene-once");
   twoArrays(dir);

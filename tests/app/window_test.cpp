@@ -12,6 +12,7 @@
 #include <unistd.h>
 
 #include "core/io/vti_writer.h"
+#include "tests/app/pvti_for.h"
 #include "tests/app/run_process.h"
 
 namespace sandstorm {
@@ -57,26 +58,46 @@ std::filesystem::path slowField() {
   return file;
 }
 
-// A file that takes a while to read shows its progress in a window before
-// the walls open (the bar and, in the title, the log's line); without
-// windows it is read as before.
-TEST(Windows, AFileTakingAWhileToReadShowsItsProgressInAWindowFirst) {
+// `sandstorm FILE` with a file that takes a while to read. A parallel image
+// (.pvti) is read before the walls open, so it shows its progress in a window
+// first (the bar and, in the title, the log's line). A .vti is framed from its
+// header and read while the walls open, whose windows show its bar. Without
+// windows neither says so, and the .vti is read while the walls open.
+TEST(Windows, AFileTakingAWhileToReadShowsItsProgressInAWindowOrOnTheWalls) {
   if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
   const auto dir = test::scratchDir("loading-window");
   std::filesystem::create_symlink(slowField(), dir / "big.vti");
-  const std::string args = "'" + (dir / "big.vti").string() +
-                           "' --frames 2 --set sim.maximum=1000 --screenshot '" + dir.string() +
-                           "'";
-  const auto shown = runUnderXvfb(args);
-  ASSERT_EQ(shown.exitCode, 0) << shown.output;
-  const std::size_t loading = shown.output.find("loading: the progress shows in a window too");
-  const std::size_t walls = shown.output.find("GLFW window 'Sandstorm: desktop'");
-  ASSERT_NE(loading, std::string::npos) << shown.output;
-  ASSERT_NE(walls, std::string::npos) << shown.output;
+  test::writePvtiFor(dir / "big.vti", dir / "big.pvti");
+  const std::string options =
+      " --frames 2 --set sim.maximum=1000 --log-level debug --screenshot '" + dir.string() + "'";
+  const auto first = runUnderXvfb("'" + (dir / "big.pvti").string() + "'" + options);
+  ASSERT_EQ(first.exitCode, 0) << first.output;
+  const std::size_t loading = first.output.find("loading: the progress shows in a window too");
+  const std::size_t walls = first.output.find("GLFW window 'Sandstorm: desktop'");
+  ASSERT_NE(loading, std::string::npos) << first.output;
+  ASSERT_NE(walls, std::string::npos) << first.output;
   EXPECT_LT(loading, walls);
-  const auto headless = runSandstorm(args + " --headless");
+
+  const std::string vti = "'" + (dir / "big.vti").string() + "'" + options;
+  const auto framed = runUnderXvfb(vti);
+  ASSERT_EQ(framed.exitCode, 0) << framed.output;
+  const std::size_t window = framed.output.find("GLFW window 'Sandstorm: desktop'");
+  const std::size_t read = framed.output.find("field: " + (dir / "big.vti").string());
+  ASSERT_NE(window, std::string::npos) << framed.output;
+  ASSERT_NE(read, std::string::npos) << framed.output;
+  EXPECT_LT(window, read);
+  EXPECT_NE(framed.output.find("loading: the progress shows on the walls"), std::string::npos)
+      << framed.output;
+  EXPECT_NE(
+      framed.output.find("wall 'desktop' showed the loading's progress until its first frame"),
+      std::string::npos)
+      << framed.output;
+
+  const auto headless = runSandstorm(vti + " --headless");
   ASSERT_EQ(headless.exitCode, 0) << headless.output;
   EXPECT_EQ(headless.output.find("loading: the progress"), std::string::npos) << headless.output;
+  EXPECT_NE(headless.output.find("the walls open while the field is read"), std::string::npos)
+      << headless.output;
 }
 
 // A configuration's field that takes a while to read: the walls' windows

@@ -34,6 +34,24 @@ TEST(SessionLog, FormatsAndParsesEveryKindOfChange) {
   EXPECT_EQ(parsed[3].change.emitter.rate, 2500.0f);
 }
 
+// A value set by a slider or worked out from a field (sandstorm FILE's
+// seeding plane) is any float: it replays as that float, not as six digits of it.
+TEST(SessionLog, SetValuesReadBackBitForBit) {
+  const float lifetime = 18.5138378f, tiny = 2.38418579e-07f, third = 1.0f / 3.0f;
+  const glm::vec3 position(tiny, -third, 1234.56789f);
+  const std::vector<StateChange> changes = {StateChange::set("emitter.0.lifetime", lifetime),
+                                            StateChange::set("emitter.0.position", position),
+                                            StateChange::set("render.size", third)};
+  std::string text;
+  for (const StateChange& c : changes)
+    text += "0 " + formatChange(c) + "\n";
+  const std::vector<ScheduledChange> parsed = parseSessionLog(text, "log");
+  ASSERT_EQ(parsed.size(), 3u);
+  EXPECT_EQ(std::get<float>(parsed[0].change.value), lifetime) << text;
+  EXPECT_EQ(std::get<glm::vec3>(parsed[1].change.value), position) << text;
+  EXPECT_EQ(std::get<float>(parsed[2].change.value), third) << text;
+}
+
 TEST(SessionLog, BadLinesNameTheirLine) {
   const auto errorOf = [](const std::string& text) {
     try {
