@@ -6,6 +6,10 @@
 // that fills it, and the particles coloured by speed with a legend. The
 // streamline rake (the bounds' diagonal), the slice and the probe (the
 // centre) are placed in the field and sized to it, off until turned on.
+//
+// A .vti is framed from its header (fileSceneFrame, frameFileScene) and read
+// while the walls open; its seeding plane, which needs the mean flow, comes
+// with packet 0 (seedFileScene). Other files are read first (openFileScene).
 #pragma once
 
 #include <filesystem>
