@@ -12,6 +12,7 @@
 #include "core/sim/main_context.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
+#include "core/util/parallel_for.h"
 
 namespace sandstorm {
 namespace {
@@ -22,20 +23,40 @@ struct Flow {
   float meanSpeed = 0.0f;
 };
 
+// Over the cores in blocks of a fixed size, summed in block order: the same
+// sums whatever the machine's cores (one thread took 0.4-0.6 s at 512^3).
 Flow meanFlow(const VectorField& field) {
   const auto values = field.values();
   const auto valid = field.validity();
-  glm::dvec3 sum(0.0);
-  double speed = 0.0;
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < values.size(); ++i) {
-    if (!valid.empty() && valid[i] == 0) continue;
-    sum += glm::dvec3(values[i]);
-    speed += glm::length(values[i]);
-    ++n;
+  constexpr std::size_t kBlock = std::size_t{1} << 20;
+  struct Sums {
+    glm::dvec3 velocity{0.0};
+    double speed = 0.0;
+    std::size_t points = 0;
+  };
+  std::vector<Sums> blocks((values.size() + kBlock - 1) / kBlock);
+  forChunks(
+      blocks.size(),
+      [&](std::size_t first, std::size_t last) {
+        for (std::size_t b = first; b < last; ++b) {
+          Sums& s = blocks[b];
+          for (std::size_t i = b * kBlock; i < std::min(values.size(), (b + 1) * kBlock); ++i) {
+            if (!valid.empty() && valid[i] == 0) continue;
+            s.velocity += glm::dvec3(values[i]);
+            s.speed += glm::length(values[i]);
+            ++s.points;
+          }
+        }
+      },
+      1);
+  Sums all;
+  for (const Sums& s : blocks) {
+    all.velocity += s.velocity;
+    all.speed += s.speed;
+    all.points += s.points;
   }
-  if (n == 0) return {};
-  return {glm::vec3(sum / double(n)), float(speed / double(n))};
+  if (all.points == 0) return {};
+  return {glm::vec3(all.velocity / double(all.points)), float(all.speed / double(all.points))};
 }
 
 // The streamline rake, the slice and the probe where the field is, sized to
