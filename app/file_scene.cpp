@@ -9,6 +9,7 @@
 
 #include "core/io/field_format.h"
 #include "core/io/vtk_xml_check.h"
+#include "core/sim/attribute_table.h"
 #include "core/sim/main_context.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
@@ -232,10 +233,10 @@ std::optional<VtkImageFrame> fileSceneFrame(const FieldSpec& spec) {
 
 FieldSeeding seedFileScene(const std::filesystem::path& file, const VtkImageFrame& frame,
                            int maximum, const std::vector<std::string>& sets) {
-  // The emitter's settings a --set gave, which stay as given.
+  // The emitter's settings a --set gave (by key or alias), which stay as given.
   std::set<std::string> given;
   for (const std::string& set : sets)
-    given.insert(set.substr(0, set.find('=')));
+    given.insert(AttributeTable::instance().canonical(set.substr(0, set.find('='))));
   return [file, frame, maximum, given](MainContext& main, const FieldSource& source) {
     const VectorField* field = source.update.field.get();
     if (!field) return;  // (a .vti is a grid)
