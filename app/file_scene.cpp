@@ -227,7 +227,9 @@ void openFileScene(AppConfig& config, const std::filesystem::path& file, const V
 }
 
 std::optional<VtkImageFrame> fileSceneFrame(const FieldSpec& spec) {
-  if (detectFieldFormat(spec.source) != FieldFormat::VtkImageData) return std::nullopt;
+  const FieldFormat format = detectFieldFormat(spec.source);
+  if (format != FieldFormat::VtkImageData && format != FieldFormat::VtkPImageData)
+    return std::nullopt;
   return readVtkImageFrame(spec.source);
 }
 
@@ -239,7 +241,7 @@ FieldSeeding seedFileScene(const std::filesystem::path& file, const VtkImageFram
     given.insert(AttributeTable::instance().canonical(set.substr(0, set.find('='))));
   return [file, frame, maximum, given](MainContext& main, const FieldSource& source) {
     const VectorField* field = source.update.field.get();
-    if (!field) return;  // (a .vti is a grid)
+    if (!field) return;  // (a .vti or .pvti is a grid)
     if (field->bounds().min != frame.bounds().min || field->bounds().max != frame.bounds().max ||
         field->dims() != frame.dims())
       log::warn(file.string(), ": the grid read is not the one its header describes; the walls ",

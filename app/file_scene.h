@@ -7,9 +7,10 @@
 // streamline rake (the bounds' diagonal), the slice and the probe (the
 // centre) are placed in the field and sized to it, off until turned on.
 //
-// A .vti is framed from its header (fileSceneFrame, frameFileScene) and read
-// while the walls open; its seeding plane, which needs the mean flow, comes
-// with packet 0 (seedFileScene). Other files are read first (openFileScene).
+// A .vti or .pvti is framed from its header (fileSceneFrame, frameFileScene)
+// and read while the walls open; its seeding plane, which needs the mean
+// flow, comes with packet 0 (seedFileScene). Other files are read first
+// (openFileScene).
 #pragma once
 
 #include <filesystem>
@@ -34,8 +35,9 @@ void openFileScene(AppConfig& config, const std::filesystem::path& file, const V
 void frameFileScene(AppConfig& config, const std::filesystem::path& file, const Box& box,
                     glm::ivec3 dims);
 
-// A .vti's bounds and points from its header (readVtkImageFrame); none for
-// other formats, or where the header does not say (the file is read first).
+// A .vti's or .pvti's bounds and points from its header (readVtkImageFrame);
+// none for other formats, or where the header does not say (the file is read
+// first).
 std::optional<VtkImageFrame> fileSceneFrame(const FieldSpec& spec);
 
 // What a run framed by frameFileScene does once the field is read, before

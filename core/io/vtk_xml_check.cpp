@@ -175,19 +175,23 @@ class Checker {
 
   VtkXmlSummary summary() const { return {totalBytes_, declared_, extents_, raw_}; }
 
-  // The tags up to the ImageData element: its frame, or none.
+  // The tags up to the ImageData (or PImageData) element: its frame, or none.
   std::optional<VtkImageFrame> imageFrame() {
     if (!in_.ok()) return std::nullopt;
+    std::string type;
     while (const std::optional<Tag> tag = next()) {
       if (tag->special) continue;
       if (tag->closing) return std::nullopt;
       if (tag->name == "VTKFile") {
-        const auto type = tag->attributes.find("type");
-        if (type == tag->attributes.end() || type->second != "ImageData") return std::nullopt;
+        const auto it = tag->attributes.find("type");
+        if (it == tag->attributes.end() ||
+            (it->second != "ImageData" && it->second != "PImageData"))
+          return std::nullopt;
+        type = it->second;
         sawFile_ = true;
         continue;
       }
-      if (tag->name != "ImageData" || !sawFile_) return std::nullopt;
+      if (!sawFile_ || tag->name != type) return std::nullopt;
       return frameOf(*tag);
     }
     return std::nullopt;

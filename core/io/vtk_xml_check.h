@@ -68,7 +68,8 @@ struct VtkXmlSummary {
 VtkXmlSummary checkVtkXml(const std::filesystem::path& path, std::size_t memoryBudget);
 
 // The image's frame from the tags before its first Piece, read by the same
-// tokenizer, none of the arrays: none where the file is not VTK ImageData, or
+// tokenizer, none of the arrays (nor, for a .pvti, any of its pieces): none
+// where the file is not VTK ImageData or parallel image data (PImageData), or
 // its header gives no usable frame (no WholeExtent, an empty or huge extent,
 // a spacing that is not positive and finite, a Direction that is not the
 // identity: only axis-aligned images are read). Never throws: the read that

@@ -11,8 +11,8 @@
 #include "core/field/analytic_field.h"
 #include "core/io/vti_writer.h"
 #include "core/sim/attribute_table.h"
-#include "tests/app/pvti_for.h"
 #include "tests/app/run_process.h"
+#include "tests/io/index_files.h"
 #include "tests/io/openfoam_case.h"
 
 namespace sandstorm {
@@ -173,11 +173,11 @@ TEST(FileScene, AFileOpensFromItsOwnFolder) {
 
 // The file is read once: the scene is framed from the very field the run
 // starts with (a 512^3 file read twice took twice the time to open).
-// A .vti is framed from its header and seeded once read (the walls open
-// meanwhile); the same grid through a parallel image file (.pvti) is framed
-// after its read, as every file was. Both open the same scene: the same
-// particles and state every frame, the same picture, and the emitter
-// setting a --set gave stays as given in both.
+// A .vti, and a parallel image file (.pvti) of the same grid, are framed from
+// their headers and seeded once read (the walls open meanwhile); a multiblock
+// file (.vtm) of the same grid is framed after its read, as every file was.
+// All three open the same scene: the same particles and state every frame,
+// the same picture, and the emitter setting a --set gave stays as given.
 TEST(FileScene, AFileFramedFromItsHeaderOpensAsAFileFramedAfterItsRead) {
   const auto dir = test::scratchDir("file-scene-header");
   struct Drift final : AnalyticField {  // a mean flow along y: not the middle plane's seeding
@@ -188,6 +188,7 @@ TEST(FileScene, AFileFramedFromItsHeaderOpensAsAFileFramedAfterItsRead) {
   writeVti(dir / "drift.vti",
            bake(Drift(), {{-1.5f, 0.25f, 2.0f}, {0.5f, 3.25f, 3.5f}}, {17, 25, 7}));
   test::writePvtiFor(dir / "drift.vti", dir / "drift.pvti");
+  test::writeVtmFor(dir / "drift.vti", dir / "drift.vtm");
   const auto open = [&](const std::string& file, const std::string& name) {
     std::filesystem::create_directories(dir / name);
     return test::runSandstorm("'" + (dir / file).string() +
@@ -196,28 +197,32 @@ TEST(FileScene, AFileFramedFromItsHeaderOpensAsAFileFramedAfterItsRead) {
                               (dir / name / "hashes.txt").string() + "' --screenshot '" +
                               (dir / name).string() + "'");
   };
-  const auto framed = open("drift.vti", "header");
-  const auto read = open("drift.pvti", "read");
-  ASSERT_EQ(framed.exitCode, 0) << framed.output;
-  ASSERT_EQ(read.exitCode, 0) << read.output;
-  // The .vti's scene was framed before its field was read, the .pvti's after.
-  const auto before = [](const std::string& out, const std::string& a, const std::string& b) {
-    const std::size_t i = out.find(a), j = out.find(b);
-    return i != std::string::npos && j != std::string::npos && i < j;
-  };
-  EXPECT_TRUE(before(framed.output, "file scene: ", "field: ")) << framed.output;
-  EXPECT_TRUE(before(read.output, "field: ", "file scene: ")) << read.output;
-  EXPECT_NE(framed.output.find("seeding"), std::string::npos) << framed.output;
-  const std::vector<std::string> hashes = test::readLines(dir / "header" / "hashes.txt");
-  ASSERT_EQ(hashes.size(), 12u);
-  EXPECT_EQ(hashes, test::readLines(dir / "read" / "hashes.txt"));
   const auto bytes = [](const std::filesystem::path& p) {
     std::ifstream in(p, std::ios::binary);
     return std::string(std::istreambuf_iterator<char>(in), {});
   };
-  const std::string picture = bytes(dir / "header" / "desktop.png");
+  // The scene framed before the field was read, or after.
+  const auto before = [](const std::string& out, const std::string& a, const std::string& b) {
+    const std::size_t i = out.find(a), j = out.find(b);
+    return i != std::string::npos && j != std::string::npos && i < j;
+  };
+  const auto read = open("drift.vtm", "read");
+  ASSERT_EQ(read.exitCode, 0) << read.output;
+  EXPECT_TRUE(before(read.output, "field: ", "file scene: ")) << read.output;
+  const std::vector<std::string> hashes = test::readLines(dir / "read" / "hashes.txt");
+  ASSERT_EQ(hashes.size(), 12u);
+  const std::string picture = bytes(dir / "read" / "desktop.png");
   EXPECT_FALSE(picture.empty());
-  EXPECT_TRUE(picture == bytes(dir / "read" / "desktop.png")) << "the pictures differ";
+  for (const char* file : {"drift.vti", "drift.pvti"}) {
+    SCOPED_TRACE(file);
+    const std::string name = std::string("header-") + (file + 6);
+    const auto framed = open(file, name);
+    ASSERT_EQ(framed.exitCode, 0) << framed.output;
+    EXPECT_TRUE(before(framed.output, "file scene: ", "field: ")) << framed.output;
+    EXPECT_NE(framed.output.find("seeding"), std::string::npos) << framed.output;
+    EXPECT_EQ(test::readLines(dir / name / "hashes.txt"), hashes);
+    EXPECT_TRUE(bytes(dir / name / "desktop.png") == picture) << "the pictures differ";
+  }
   std::istringstream last(hashes.back());
   std::string frame, wall;
   std::size_t particles = 0;

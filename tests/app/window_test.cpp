@@ -12,8 +12,8 @@
 #include <unistd.h>
 
 #include "core/io/vti_writer.h"
-#include "tests/app/pvti_for.h"
 #include "tests/app/run_process.h"
+#include "tests/io/index_files.h"
 
 namespace sandstorm {
 namespace {
@@ -58,8 +58,8 @@ std::filesystem::path slowField() {
   return file;
 }
 
-// `sandstorm FILE` with a file that takes a while to read. A parallel image
-// (.pvti) is read before the walls open, so it shows its progress in a window
+// `sandstorm FILE` with a file that takes a while to read. A multiblock file
+// (.vtm) is read before the walls open, so it shows its progress in a window
 // first (the bar and, in the title, the log's line). A .vti is framed from its
 // header and read while the walls open, whose windows show its bar. Without
 // windows neither says so, and the .vti is read while the walls open.
@@ -67,10 +67,10 @@ TEST(Windows, AFileTakingAWhileToReadShowsItsProgressInAWindowOrOnTheWalls) {
   if (!haveXvfb()) GTEST_SKIP() << "xvfb-run is not installed (scripts/setup installs it)";
   const auto dir = test::scratchDir("loading-window");
   std::filesystem::create_symlink(slowField(), dir / "big.vti");
-  test::writePvtiFor(dir / "big.vti", dir / "big.pvti");
+  test::writeVtmFor(dir / "big.vti", dir / "big.vtm");
   const std::string options =
       " --frames 2 --set sim.maximum=1000 --log-level debug --screenshot '" + dir.string() + "'";
-  const auto first = runUnderXvfb("'" + (dir / "big.pvti").string() + "'" + options);
+  const auto first = runUnderXvfb("'" + (dir / "big.vtm").string() + "'" + options);
   ASSERT_EQ(first.exitCode, 0) << first.output;
   const std::size_t loading = first.output.find("loading: the progress shows in a window too");
   const std::size_t walls = first.output.find("GLFW window 'Sandstorm: desktop'");

@@ -1,8 +1,8 @@
-// readVtkImageFrame: a .vti's bounds and points from its header alone are the
-// ones the field loaded from it gets (sandstorm FILE frames its walls with
-// them while the arrays are read), for any extent, origin and spacing VTK's
-// writer puts there; anything the header does not settle gives none, and the
-// read then says what is wrong.
+// readVtkImageFrame: a .vti's or .pvti's bounds and points from its header
+// alone are the ones the field loaded from it gets (sandstorm FILE frames its
+// walls with them while the arrays are read), for any extent, origin and
+// spacing VTK's writer puts there; anything the header does not settle gives
+// none, and the read then says what is wrong.
 #include "core/io/vtk_xml_check.h"
 
 #include <vtkFloatArray.h>
@@ -13,6 +13,7 @@
 #include <vtkXMLRectilinearGridWriter.h>
 
 #include "core/io/field_loader.h"
+#include "tests/io/index_files.h"
 #include "tests/io/io_test_util.h"
 
 namespace sandstorm {
@@ -56,12 +57,18 @@ TEST(VtkImageFrame, TheHeadersBoundsAndPointsAreTheLoadedFields) {
     SCOPED_TRACE(n);
     const auto path = dir / ("image" + std::to_string(n++) + ".vti");
     test::writeRawVti(image(c.extent, c.origin, c.spacing), path);
-    const std::optional<VtkImageFrame> frame = readVtkImageFrame(path);
-    ASSERT_TRUE(frame);
-    const VectorField field = loadField(path, {});
-    EXPECT_EQ(frame->dims(), field.dims());
-    EXPECT_EQ(frame->bounds().min, field.bounds().min);  // bit for bit
-    EXPECT_EQ(frame->bounds().max, field.bounds().max);
+    // The same grid as the one piece of a parallel image file.
+    const auto pvti = std::filesystem::path(path).replace_extension(".pvti");
+    test::writePvtiFor(path, pvti);
+    for (const auto& file : {path, pvti}) {
+      SCOPED_TRACE(file.filename().string());
+      const std::optional<VtkImageFrame> frame = readVtkImageFrame(file);
+      ASSERT_TRUE(frame);
+      const VectorField field = loadField(file, {});
+      EXPECT_EQ(frame->dims(), field.dims());
+      EXPECT_EQ(frame->bounds().min, field.bounds().min);  // bit for bit
+      EXPECT_EQ(frame->bounds().max, field.bounds().max);
+    }
   }
 }
 
@@ -110,6 +117,23 @@ TEST(VtkImageFrame, WhatTheHeaderDoesNotSettleGivesNone) {
            {"unquoted.vti", "WholeExtent=0"}}) {
     EXPECT_FALSE(readVtkImageFrame(header(name, attributes))) << name;
   }
+  // A parallel image file's header frames it as a .vti's does; its element
+  // must be the one its VTKFile type names.
+  const auto parallel = [&](const std::string& name, const std::string& type,
+                            const std::string& element) {
+    const auto path = dir / name;
+    test::writeText(path, "<VTKFile type=\"" + type + "\" version=\"0.1\">\n<" + element +
+                              " WholeExtent=\"0 2 0 1 0 1\" Origin=\"1 0 0\" Spacing=\"0.5 1 1\">\n"
+                              "<Piece Extent=\"0 2 0 1 0 1\" Source=\"p.vti\"/>\n</" +
+                              element + ">\n</VTKFile>\n");
+    return path;
+  };
+  const auto pvti = parallel("good.pvti", "PImageData", "PImageData");
+  ASSERT_TRUE(readVtkImageFrame(pvti));
+  EXPECT_EQ(readVtkImageFrame(pvti)->bounds().max, glm::vec3(2.0f, 1.0f, 1.0f));
+  EXPECT_FALSE(readVtkImageFrame(parallel("mixed.pvti", "PImageData", "ImageData")));
+  EXPECT_FALSE(readVtkImageFrame(parallel("mixed.vti", "ImageData", "PImageData")));
+  EXPECT_FALSE(readVtkImageFrame(parallel("grid.pvtr", "PRectilinearGrid", "PRectilinearGrid")));
   test::writeText(dir / "text.vti", "not XML at all");
   EXPECT_FALSE(readVtkImageFrame(dir / "text.vti"));
   test::writeText(dir / "cut.vti", "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\"><Image");

@@ -1,6 +1,7 @@
-// A parallel image file (.pvti) of one piece: a .vti's grid read through
-// VTK's parallel reader, which sandstorm FILE reads before its walls open
-// (only a .vti is framed from its header). The same grid, so the same field.
+// Files that name a .vti as their one part, so that they hold its very grid
+// and load as the same field: a parallel image file (.pvti), which
+// `sandstorm FILE` frames from its header as it frames the .vti, and a
+// multiblock file (.vtm), which it reads before its walls open.
 #pragma once
 
 #include <gtest/gtest.h>
@@ -32,6 +33,15 @@ inline void writePvtiFor(const std::filesystem::path& vti, const std::filesystem
          "NumberOfComponents=\"3\"/></PPointData>\n"
       << "<Piece Extent=\"" << extent.str() << "\" Source=\"" << vti.filename().string()
       << "\"/>\n</PImageData>\n</VTKFile>\n";
+}
+
+// Writes `vtm` naming `vti` (beside it) as its one block.
+inline void writeVtmFor(const std::filesystem::path& vti, const std::filesystem::path& vtm) {
+  std::ofstream out(vtm);
+  out << "<?xml version=\"1.0\"?>\n"
+      << "<VTKFile type=\"vtkMultiBlockDataSet\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+      << "<vtkMultiBlockDataSet>\n<DataSet index=\"0\" name=\"grid\" file=\""
+      << vti.filename().string() << "\"/>\n</vtkMultiBlockDataSet>\n</VTKFile>\n";
 }
 
 }  // namespace sandstorm::test
