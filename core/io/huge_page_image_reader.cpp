@@ -38,8 +38,8 @@ std::uint64_t arrayBytes(vtkAbstractArray* array) {
   return std::uint64_t(array->GetDataSize()) * std::uint64_t(array->GetDataTypeSize());
 }
 
-// The whole 2 MiB pages inside the array's memory, advised; smaller arrays
-// (and memory that is not the array's own) are left as they are.
+}  // namespace
+
 void adviseHugePages(vtkAbstractArray* array) {
   if (!array || !array->HasStandardMemoryLayout()) return;
   const std::uintptr_t begin = reinterpret_cast<std::uintptr_t>(array->GetVoidPointer(0));
@@ -52,8 +52,6 @@ void adviseHugePages(vtkAbstractArray* array) {
   madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
 }
 
-}  // namespace
-
 int HugePageImageReader::ReadArrayForPoints(vtkXMLDataElement* da, vtkAbstractArray* outArray) {
   adviseHugePages(outArray);
   const int copied = copyRaw(da, outArray);
@@ -62,6 +60,7 @@ int HugePageImageReader::ReadArrayForPoints(vtkXMLDataElement* da, vtkAbstractAr
 }
 
 int HugePageImageReader::copyRaw(vtkXMLDataElement* da, vtkAbstractArray* outArray) {
+  if (raw_.empty() && rawOf_ && FileName) raw_ = rawOf_(FileName);
   if (raw_.empty() || !FileName || ReadFromInputString || !da || !outArray ||
       !outArray->HasStandardMemoryLayout())
     return 0;

@@ -23,6 +23,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <vector>
 
 #include <vtkXMLImageDataReader.h>
@@ -38,6 +39,11 @@ class HugePageImageReader : public vtkXMLImageDataReader {
 
   // The file's raw appended arrays (VtkXmlSummary::raw of the file it reads).
   void setRawArrays(std::vector<VtkXmlRawArray> raw) { raw_ = std::move(raw); }
+  // Or, for a reader whose file is named later (a .pvti's piece reader,
+  // ParallelImageReader), the raw arrays of the file it is given.
+  void setRawArraysOf(std::function<std::vector<VtkXmlRawArray>(const char* file)> rawOf) {
+    rawOf_ = std::move(rawOf);
+  }
   // Arrays copied over the cores so far (the rest VTK read).
   std::size_t arraysCopied() const { return copied_; }
 
@@ -55,7 +61,13 @@ class HugePageImageReader : public vtkXMLImageDataReader {
   int copyRaw(vtkXMLDataElement* da, vtkAbstractArray* outArray);
 
   std::vector<VtkXmlRawArray> raw_;
+  std::function<std::vector<VtkXmlRawArray>(const char*)> rawOf_;
   std::size_t copied_ = 0;
 };
+
+// Advises the whole 2 MiB pages inside an array's memory of 32 MiB or more
+// for transparent huge pages, before its first byte is written; smaller
+// arrays (and memory that is not the array's own) are left as they are.
+void adviseHugePages(vtkAbstractArray* array);
 
 }  // namespace sandstorm

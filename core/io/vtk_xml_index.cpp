@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cstring>
+#include <functional>
 #include <sstream>
+#include <utility>
 
 #include <vtkCompositeDataSet.h>
 #include <vtkDataObject.h>
@@ -13,13 +15,13 @@
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
 #include <vtkXMLMultiBlockDataReader.h>
-#include <vtkXMLPImageDataReader.h>
 #include <vtkXMLPPolyDataReader.h>
 #include <vtkXMLPRectilinearGridReader.h>
 #include <vtkXMLPStructuredGridReader.h>
 #include <vtkXMLPUnstructuredGridReader.h>
 
 #include "core/field/vector_field.h"
+#include "core/io/parallel_image_reader.h"
 #include "core/io/vtk_blocks.h"
 #include "core/io/vtk_cell_check.h"
 #include "core/io/vtk_message_trap.h"
@@ -261,10 +263,12 @@ void checkWholeExtent(vtkAlgorithm* reader, const std::string& file, const LoadO
 
 template <class Reader>
 vtkSmartPointer<vtkDataObject> read(const fs::path& path, const LoadOptions& options,
-                                    const std::string& what, bool structured) {
+                                    const std::string& what, bool structured,
+                                    const std::function<void(Reader&)>& prepare = {}) {
   const std::string file = path.string();
   VtkMessageTrap trap(path);
   vtkNew<Reader> reader;
+  if (prepare) prepare(*reader);
   trap.watch(reader);
   reader->SetFileName(file.c_str());
   reader->UpdateInformation();
@@ -294,11 +298,13 @@ vtkSmartPointer<vtkDataObject> readVtkXmlIndex(const fs::path& path, FieldFormat
   std::vector<Leaf> files;
   collect(path, format, files);
   double bytes = 0.0;
+  std::vector<std::pair<fs::path, std::vector<VtkXmlRawArray>>> raw;  // each file's raw arrays
   for (const Leaf& f : files) {
-    const VtkXmlSummary summary = checkVtkXml(f.file, options.memoryBudget);
+    VtkXmlSummary summary = checkVtkXml(f.file, options.memoryBudget);
     checkPieceArrays(f.where, f.declared, summary.arrays);
     checkPieceExtent(f, summary);
     bytes += summary.bytes;
+    raw.emplace_back(f.file, std::move(summary.raw));
   }
   if (bytes > 2.0 * double(options.memoryBudget))
     throw Error(concat(file, ": its ", files.size(), " files' arrays need ", bytes,
@@ -307,7 +313,11 @@ vtkSmartPointer<vtkDataObject> readVtkXmlIndex(const fs::path& path, FieldFormat
   vtkSmartPointer<vtkDataObject> out;
   switch (format) {
     case FieldFormat::VtkPImageData:
-      out = read<vtkXMLPImageDataReader>(path, options, "parallel image data", true);
+      out = read<ParallelImageReader>(path, options, "parallel image data", true,
+                                      [&](ParallelImageReader& reader) {
+                                        for (auto& [piece, arrays] : raw)
+                                          reader.addPieceRawArrays(piece, std::move(arrays));
+                                      });
       break;
     case FieldFormat::VtkPRectilinearGrid:
       out = read<vtkXMLPRectilinearGridReader>(path, options, "parallel rectilinear grid", true);
