@@ -6,6 +6,8 @@
 
 #include <sys/stat.h>
 #include <vtkDataArray.h>
+#include <vtkDataObject.h>
+#include <vtkExtentSplitter.h>
 #include <vtkObjectFactory.h>
 
 #include "core/io/huge_page_image_reader.h"
@@ -60,6 +62,25 @@ vtkXMLDataReader* ParallelImageReader::CreatePieceReader() {
     return it == raw_.end() ? std::vector<VtkXmlRawArray>{} : it->second;
   });
   return reader;
+}
+
+void ParallelImageReader::ReadXMLData() {
+  subExtent_ = 0;
+  vtkXMLPImageDataReader::ReadXMLData();
+}
+
+int ParallelImageReader::ReadPieceData() {
+  // VTK's ReadXMLData reads the image's parts in ExtentSplitter's order, one
+  // call each; a piece may give several.
+  const int part = subExtent_++;
+  const int read = vtkXMLPImageDataReader::ReadPieceData();
+  bool later = false;
+  for (int i = part + 1; i < ExtentSplitter->GetNumberOfSubExtents(); ++i)
+    later = later || ExtentSplitter->GetSubExtentSource(i) == Piece;
+  // Its last part copied: the piece's arrays go (those the image was lent live on in it).
+  if (!later && PieceReaders && PieceReaders[Piece])
+    if (vtkDataObject* piece = PieceReaders[Piece]->GetOutputDataObject(0)) piece->ReleaseData();
+  return read;
 }
 
 void ParallelImageReader::CopyArrayForPoints(vtkAbstractArray* in, vtkAbstractArray* out) {

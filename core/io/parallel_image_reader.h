@@ -11,7 +11,10 @@
 //   written by a one-rank run or a tool that names one .vti) lends the image
 //   its arrays: no copy and no second allocation;
 // - any other piece's arrays are copied row by row over the cores, into
-//   arrays advised for huge pages before their first byte is written.
+//   arrays advised for huge pages before their first byte is written, and
+//   the piece's own arrays are released once the last part of the image it
+//   gives is copied (VTK keeps every piece's until the read ends: twice the
+//   grid at the peak).
 // The image holds the same values either way: the rows VTK would copy, from
 // the same pieces (ParallelImageReader.* compares them with VTK's reader).
 // Arrays of another layout or type than the image's keep VTK's own copy.
@@ -46,6 +49,8 @@ class ParallelImageReader : public vtkXMLPImageDataReader {
   ParallelImageReader() = default;
   ~ParallelImageReader() override = default;
   vtkXMLDataReader* CreatePieceReader() override;
+  void ReadXMLData() override;
+  int ReadPieceData() override;
   void CopyArrayForPoints(vtkAbstractArray* in, vtkAbstractArray* out) override;
   void CopyArrayForCells(vtkAbstractArray* in, vtkAbstractArray* out) override;
 
@@ -66,6 +71,7 @@ class ParallelImageReader : public vtkXMLPImageDataReader {
   std::map<std::pair<unsigned long, unsigned long>, std::vector<VtkXmlRawArray>> raw_;
   std::size_t lent_ = 0;
   std::size_t copied_ = 0;
+  int subExtent_ = 0;  // the image's part being read: its index in ExtentSplitter's list
 };
 
 }  // namespace sandstorm

@@ -10,6 +10,11 @@
 #include <optional>
 #include <string>
 
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+
 #include "core/io/field_loader.h"
 #include "core/io/vti_writer.h"
 #include "tests/io/index_files.h"
@@ -101,6 +106,61 @@ TEST(LoadMemory, APieceThatIsTheWholeGridIsHeldOnce) {
       << gridKiB << " KiB";
   EXPECT_TRUE(read.adoptedValues());
   EXPECT_EQ(read.at(5, 7, 11), probe);
+}
+
+// The grid as eight pieces (slabs along z, as eight ranks write it): each
+// piece's array goes once its part is copied into the grid, so the peak is
+// the grid and a piece, not the grid and every piece (VTK's reader: 2x).
+TEST(LoadMemory, AGridInPiecesIsHeldOnceWithAPieceBeside) {
+  if (kSanitized) GTEST_SKIP() << "a sanitized build measures the sanitizer's memory";
+  const fs::path dir = test::scratch();
+  constexpr int kSide = 192, kPieces = 8;
+  const VectorField whole = swirl(kSide);
+  VtkImageFrame frame;
+  frame.extent = {0, kSide - 1, 0, kSide - 1, 0, kSide - 1};
+  for (int a = 0; a < 3; ++a) {
+    frame.origin[std::size_t(a)] = whole.bounds().min[a];
+    frame.spacing[std::size_t(a)] =
+        double(whole.bounds().max[a] - whole.bounds().min[a]) / double(kSide - 1);
+  }
+  std::vector<std::pair<std::array<long long, 6>, fs::path>> pieces;
+  for (int p = 0; p < kPieces; ++p) {
+    const int z0 = p * (kSide - 1) / kPieces, z1 = (p + 1) * (kSide - 1) / kPieces;
+    vtkNew<vtkImageData> im;
+    im->SetExtent(0, kSide - 1, 0, kSide - 1, z0, z1);
+    im->SetOrigin(frame.origin.data());
+    im->SetSpacing(frame.spacing.data());
+    vtkNew<vtkFloatArray> v;
+    v->SetName("velocity");
+    v->SetNumberOfComponents(3);
+    v->SetNumberOfTuples(im->GetNumberOfPoints());
+    vtkIdType n = 0;
+    for (int k = z0; k <= z1; ++k)
+      for (int j = 0; j < kSide; ++j)
+        for (int i = 0; i < kSide; ++i, ++n) {
+          const glm::vec3 w = whole.at(i, j, k);
+          v->SetTuple3(n, w.x, w.y, w.z);
+        }
+    im->GetPointData()->AddArray(v);
+    const fs::path file = dir / ("piece" + std::to_string(p) + ".vti");
+    test::writeRawVti(im, file);
+    pieces.push_back({{0, kSide - 1, 0, kSide - 1, z0, z1}, file});
+  }
+  test::writePvti(dir / "pieces.pvti", frame, pieces);
+  if (!resetPeak()) GTEST_SKIP() << "/proc/self/clear_refs cannot be written here";
+  const std::optional<long> before = statusKiB("VmRSS");
+  const VectorField read = loadField(dir / "pieces.pvti", LoadOptions{});
+  const std::optional<long> peak = statusKiB("VmHWM");
+  ASSERT_TRUE(before && peak);
+  const double gridKiB = double(read.pointCount()) * 12.0 / 1024.0;
+  // The grid, a piece (an eighth) and what reading takes besides.
+  EXPECT_LT(double(*peak - *before), 1.25 * gridKiB)
+      << "peak " << *peak << " KiB over " << *before << " KiB before the load; the grid is "
+      << gridKiB << " KiB";
+  ASSERT_EQ(read.dims(), glm::ivec3(kSide));
+  for (const glm::ivec3 at :
+       {glm::ivec3(5, 7, 11), glm::ivec3(191, 0, 24), glm::ivec3(3, 190, 191)})
+    EXPECT_EQ(read.at(at.x, at.y, at.z), whole.at(at.x, at.y, at.z));
 }
 
 }  // namespace
