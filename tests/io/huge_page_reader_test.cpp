@@ -22,6 +22,7 @@
 #include "core/io/vtk_xml_check.h"
 
 #include "core/io/huge_page_image_reader.h"
+#include "core/io/vtk_message_trap.h"
 #include "tests/io/io_test_util.h"
 
 namespace sandstorm {
@@ -233,6 +234,40 @@ TEST(HugePageReader, TheArraysMemoryIsAdvisedForHugePages) {
     const std::string plain = smapsField(b->GetPointer(b->GetNumberOfValues() / 2), "THPeligible");
     EXPECT_NE(plain.find('0'), std::string::npos) << "THPeligible:" << plain;
   }
+}
+
+}  // namespace
+}  // namespace sandstorm
+
+namespace sandstorm {
+namespace {
+
+// A file cut between its check and its read (a run still writing it, a
+// network file system): the copy over the cores finds its end early and
+// VTK's error names the file and the bytes missing; no crash, no hang, no
+// image claimed whole.
+TEST(HugePageReader, AFileCutAfterItsCheckIsAnErrorNamingIt) {
+  const auto path = writeImage(test::scratch() / "cut.vti");
+  VtkXmlSummary checked = checkVtkXml(path, std::size_t{1} << 32);
+  ASSERT_EQ(checked.raw.size(), 1u);
+  std::filesystem::resize_file(path, checked.raw.front().dataAt + checked.raw.front().bytes / 2);
+  VtkMessageTrap trap(path);
+  vtkNew<HugePageImageReader> reader;
+  trap.watch(reader);
+  reader->SetFileName(path.c_str());
+  reader->setRawArrays(std::move(checked.raw));
+  reader->Update();
+  ASSERT_TRUE(trap.failed());
+  const std::string all = [&] {
+    std::string s;
+    for (const std::string& e : trap.errors())
+      s += e + "\n";
+    return s;
+  }();
+  EXPECT_NE(all.find(path.string()), std::string::npos) << all;
+  EXPECT_NE(all.find("the file ends before them"), std::string::npos) << all;
+  EXPECT_EQ(reader->arraysCopied(), 0u);
+  test::expectError([&] { trap.throwIfFailed("reading the image"); }, {path.string()});
 }
 
 }  // namespace
