@@ -20,7 +20,10 @@ static double now() {
 static void drop() {
   sync();
   FILE* f = fopen("/proc/sys/vm/drop_caches", "w");
-  if (f) { fputs("3", f); fclose(f); }
+  if (f) {
+    fputs("3", f);
+    fclose(f);
+  }
 }
 int main(int argc, char** argv) {
   const char* path = argv[1];
@@ -31,25 +34,37 @@ int main(int argc, char** argv) {
     unsigned long x = 88172645463325252ul;
     FILE* f = fopen(path, "wb");
     for (size_t done = 0; done < total; done += buf.size() * 8) {
-      for (auto& v : buf) { x ^= x << 13; x ^= x >> 7; x ^= x << 17; v = x; }
+      for (auto& v : buf) {
+        x ^= x << 13;
+        x ^= x >> 7;
+        x ^= x << 17;
+        v = x;
+      }
       fwrite(buf.data(), 8, std::min(buf.size(), (total - done) / 8), f);
     }
-    fflush(f); fsync(fileno(f)); fclose(f);
+    fflush(f);
+    fsync(fileno(f));
+    fclose(f);
     return 0;
   }
   int threads = atoi(argv[3]);
   size_t block = size_t(atoi(argv[4])) << 20;
   bool cold = argc > 5 && std::string(argv[5]) == "cold";
   const size_t offset = 4099;  // an unaligned array start, as in a .vti
-  struct stat st; stat(path, &st);
+  struct stat st;
+  stat(path, &st);
   size_t bytes = size_t(st.st_size) - offset;
-  char* dst = static_cast<char*>(mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0));
+  char* dst = static_cast<char*>(
+      mmap(nullptr, bytes, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0));
   madvise(dst, bytes, MADV_HUGEPAGE);
   if (cold) drop();
   double t0 = now();
   bool direct = mode == "direct";
   int fd = open(path, O_RDONLY | (direct ? O_DIRECT : 0));
-  if (fd < 0) { perror("open"); return 1; }
+  if (fd < 0) {
+    perror("open");
+    return 1;
+  }
   if (mode == "seq") posix_fadvise(fd, 0, 0, POSIX_FADV_SEQUENTIAL);
   std::atomic<size_t> next{0};
   std::atomic<bool> failed{false};
@@ -65,7 +80,10 @@ int main(int argc, char** argv) {
         size_t at = begin;
         while (at < end) {
           ssize_t n = pread(fd, dst + at, end - at, off_t(offset + at));
-          if (n <= 0) { failed = true; return; }
+          if (n <= 0) {
+            failed = true;
+            return;
+          }
           at += size_t(n);
         }
       } else {
@@ -75,7 +93,11 @@ int main(int argc, char** argv) {
         size_t want = alignedEnd - alignedBegin, got = 0;
         while (got < want) {
           ssize_t n = pread(fd, bounce + got, want - got, off_t(alignedBegin + got));
-          if (n < 0) { perror("pread direct"); failed = true; return; }
+          if (n < 0) {
+            perror("pread direct");
+            failed = true;
+            return;
+          }
           if (n == 0) break;
           got += size_t(n);
         }
@@ -85,12 +107,16 @@ int main(int argc, char** argv) {
     free(bounce);
   };
   std::vector<std::thread> pool;
-  for (int i = 0; i < threads; ++i) pool.emplace_back(work);
-  for (auto& t : pool) t.join();
+  for (int i = 0; i < threads; ++i)
+    pool.emplace_back(work);
+  for (auto& t : pool)
+    t.join();
   double t1 = now();
   unsigned long sum = 0;
-  for (size_t i = 0; i < bytes; i += 4096) sum += (unsigned char)dst[i];
-  printf("%s threads %d block %zu MiB %s: %.3f s (%.2f GB/s)%s sum %lu\n", mode.c_str(), threads, block >> 20,
-         cold ? "cold" : "warm", t1 - t0, bytes / (t1 - t0) / 1e9, failed ? " FAILED" : "", sum);
+  for (size_t i = 0; i < bytes; i += 4096)
+    sum += (unsigned char)dst[i];
+  printf("%s threads %d block %zu MiB %s: %.3f s (%.2f GB/s)%s sum %lu\n", mode.c_str(), threads,
+         block >> 20, cold ? "cold" : "warm", t1 - t0, bytes / (t1 - t0) / 1e9,
+         failed ? " FAILED" : "", sum);
   return 0;
 }
