@@ -59,10 +59,11 @@ class ParallelImageReader : public vtkXMLPImageDataReader {
   void operator=(const ParallelImageReader&) = delete;
 
  private:
-  // false: not one this reader copies (VTK copies it).
-  // The sub-extent being read (SubExtent) from the piece's part read
+  // Copies the sub-extent being read (SubExtent) from the piece's part read
   // (`inExtent`, its increments and dimensions: points' or cells') into the
-  // image's update extent (its increments and dimensions).
+  // image's update extent (its increments and dimensions), or lends the
+  // piece's array where the part is the whole image. False: not one this
+  // reader copies (VTK copies it).
   bool copy(const int* inExtent, const vtkIdType* inIncrements, const int* inDims,
             const vtkIdType* outIncrements, const int* outDims, const int* subDims,
             vtkAbstractArray* in, vtkAbstractArray* out);
