@@ -4,6 +4,7 @@
 #include <cstring>
 #include <functional>
 #include <sstream>
+#include <string>
 #include <utility>
 
 #include <vtkCompositeDataSet.h>
@@ -340,7 +341,8 @@ vtkSmartPointer<vtkDataObject> readVtkXmlIndex(const fs::path& path, FieldFormat
   for (const VtkBlock& b : vtkBlocks(out))
     checkVtkCells(b.data, b.name.empty() ? file : concat(file, ": ", b.name));
   if (format != FieldFormat::VtkMultiBlock)
-    report.notes.push_back(concat(files.size(), " pieces merged"));
+    report.notes.push_back(files.size() == 1 ? std::string("its one piece read")
+                                             : concat(files.size(), " pieces merged"));
   return out;
 }
 
