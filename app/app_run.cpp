@@ -146,6 +146,15 @@ void AppRun::takeField() {
     field_ = fieldRead_.get();  // what the read threw, start() throws
   }
   useField(main_, field_);
+  // The walls upload it while packet 0 is prepared (a 512^3 grid's upload,
+  // 0.11 s on an H200, beside the seeding's pass over it). Not where packet
+  // 0 brings another: a cluster's, from rank 0's broadcast; the helicopter's
+  // wash or the editor's primitives added to it below.
+  const ParticleState pending = main_.state();
+  const bool replaced = pending.helicopter.enabled ||
+                        std::any_of(pending.primitives.begin(), pending.primitives.end(),
+                                    [](const FieldPrimitive& p) { return p.active(); });
+  if (!cluster_ && !replaced) channel_.offerField(main_.field());
   if (cluster_ && !cluster_->root()) return;
   if (seeding_ && !options_.replay) seeding_(main_, field_);  // a session holds its changes
   helicopter_.update(main_);  // the configured helicopter's field and dust, before packet 0

@@ -112,6 +112,12 @@ void ParticleSystem::advance(const FramePacket& packet) {
   frame_ = packet.frame;
 }
 
+void ParticleSystem::uploadFieldAhead(const FieldUpdate& field) {
+  update_->setField(field.field, field.placement, field.next);
+  update_->setEquation(field.equation);
+  update_->setSparse(field.sparse);
+}
+
 void ParticleSystem::setMoleculeField() {
   molecules_->setField(field_->field, field_->placement, field_->next);
   molecules_->setEquation(field_->equation);

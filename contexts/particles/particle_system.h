@@ -57,6 +57,9 @@ class ParticleSystem {
   void endFrame();
   // Applies the packet (reset, changes, field) and runs this frame's update.
   void advance(const FramePacket& packet);
+  // Before packet 0: uploads the field it is to carry (FrameChannel::offerField)
+  // as advance() would, so that the packet finds it held.
+  void uploadFieldAhead(const FieldUpdate& field);
   // Draws the particles of the view whose scene is in `targets` and composites
   // the result into `destination` at `origin`. The view and render blocks
   // must be bound.

@@ -96,12 +96,27 @@ void RenderContext::run() {
   finished_ = true;
 }
 
+bool RenderContext::uploadOfferedField() {
+  bool any = false;
+  for (RenderWall* wall : walls_)
+    if (const std::shared_ptr<const FieldUpdate> field =
+            channel_.takeOfferedField(wall->consumer())) {
+      wall->uploadFieldAhead(*field);
+      any = true;
+    }
+  return any;
+}
+
 void RenderContext::waitForFirstPacket() {
   const glm::ivec2 size = context_->framebufferSize();
-  if (size.x <= 0 || size.y <= 0) return;    // offscreen: take() waits
+  const bool window = size.x > 0 && size.y > 0;
   const RenderWall& wall = *walls_.front();  // a window draws one wall
   std::optional<double> shown;               // between two pieces of work the last share stays up
-  while (!channel_.waitFor(wall.consumer(), std::chrono::milliseconds(50))) {
+  for (;;) {
+    const bool ready = channel_.waitFor(wall.consumer(), std::chrono::milliseconds(50));
+    if (uploadOfferedField()) continue;
+    if (ready) break;
+    if (!window) continue;
     if (const std::optional<ProgressSnapshot> work = ProgressBoard::instance().snapshot())
       shown = work->fraction();
     if (!shown) continue;

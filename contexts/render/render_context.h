@@ -60,8 +60,11 @@ class RenderContext {
  private:
   void run();
   // Until the first packet is there: the progress of the work on the board
-  // (ProgressBoard) in a window, nothing offscreen.
+  // (ProgressBoard) in a window, nothing offscreen; and the field packet 0
+  // is to carry uploaded as soon as it is offered (FrameChannel::offerField).
   void waitForFirstPacket();
+  // Uploads the offered field into each wall that has not taken it; whether any did.
+  bool uploadOfferedField();
 
   std::unique_ptr<GlContext> context_;
   std::unique_ptr<UploadThread> uploads_;  // ends after the walls' thread

@@ -43,6 +43,15 @@ void RenderWall::open(UploadThread* uploads) {
   renderer_ = std::make_unique<WallRenderer>(setup_);
 }
 
+void RenderWall::uploadFieldAhead(const FieldUpdate& field) {
+  const auto start = std::chrono::steady_clock::now();
+  renderer_->uploadFieldAhead(field);
+  log::debug(
+      "wall '", name(), "': the field uploaded ahead of packet 0 in ",
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count(),
+      " ms");
+}
+
 RenderWall::Drawn RenderWall::draw(const FramePacket& packet, glm::ivec2 framebufferSize) {
   const auto start = std::chrono::steady_clock::now();
   renderer_->frame(packet, framebufferSize);

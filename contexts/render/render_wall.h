@@ -102,6 +102,8 @@ class RenderWall {
   // Makes the wall's renderer; `uploads`: the context's upload thread, or null.
   void open(UploadThread* uploads = nullptr);
   Drawn draw(const FramePacket& packet, glm::ivec2 framebufferSize);
+  // Before packet 0: the field it is to carry, uploaded (FrameChannel::offerField).
+  void uploadFieldAhead(const FieldUpdate& field);
   void record(const FramePacket& packet, const Drawn& drawn, double intervalMs, double waitMs,
               double packetWaitMs);
   void fail(const std::string& message);

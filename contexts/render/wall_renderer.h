@@ -42,6 +42,8 @@ class WallRenderer {
   // Applies the packet, advances the particles and draws the wall. `windowSize`
   // is the default framebuffer's size; (0, 0) draws into the offscreen image.
   void frame(const FramePacket& packet, glm::ivec2 windowSize);
+  // Before packet 0: its field uploaded (ParticleSystem::uploadFieldAhead).
+  void uploadFieldAhead(const FieldUpdate& field) { system_.uploadFieldAhead(field); }
   // The frame is done with the particles (after captures and hash probes).
   void endFrame() { system_.endFrame(); }
   // Draws an overlay (the menu, the legend) over the wall's last frame: laid

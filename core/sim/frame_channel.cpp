@@ -5,12 +5,16 @@
 namespace sandstorm {
 
 FrameChannel::FrameChannel(int consumers, int depth)
-    : next_(std::size_t(consumers), 0), active_(std::size_t(consumers), true), depth_(depth) {}
+    : next_(std::size_t(consumers), 0),
+      active_(std::size_t(consumers), true),
+      offerTaken_(std::size_t(consumers), false),
+      depth_(depth) {}
 
 bool FrameChannel::publish(std::shared_ptr<const FramePacket> packet) {
   std::unique_lock lock(mutex_);
   changed_.wait(lock, [&] { return closed_ || packets_.size() < std::size_t(depth_); });
   if (closed_) return false;
+  offered_.reset();  // a hint before packet 0 only: it would hold the grid for good
   packets_.push_back(std::move(packet));
   changed_.notify_all();
   return true;
@@ -33,8 +37,24 @@ std::shared_ptr<const FramePacket> FrameChannel::take(int consumer) {
 bool FrameChannel::waitFor(int consumer, std::chrono::milliseconds timeout) {
   std::unique_lock lock(mutex_);
   const std::size_t c = std::size_t(consumer);
-  return changed_.wait_for(lock, timeout,
-                           [&] { return closed_ || next_[c] < first_ + packets_.size(); });
+  return changed_.wait_for(lock, timeout, [&] {
+    return closed_ || next_[c] < first_ + packets_.size() || (offered_ && !offerTaken_[c]);
+  });
+}
+
+void FrameChannel::offerField(std::shared_ptr<const FieldUpdate> field) {
+  std::lock_guard lock(mutex_);
+  offered_ = std::move(field);
+  std::fill(offerTaken_.begin(), offerTaken_.end(), false);
+  changed_.notify_all();
+}
+
+std::shared_ptr<const FieldUpdate> FrameChannel::takeOfferedField(int consumer) {
+  std::lock_guard lock(mutex_);
+  const std::size_t c = std::size_t(consumer);
+  if (!offered_ || offerTaken_[c]) return nullptr;
+  offerTaken_[c] = true;
+  return offered_;
 }
 
 void FrameChannel::trim() {

@@ -194,7 +194,8 @@ TEST(FieldStream, AnEmptyFolderStopsTheStartAfterWaitingWithAClearMessage) {
 }
 
 // A field read while the walls open (the first step comes 0.6 s after the
-// run began to wait for it) moves the particles as one read before they open does.
+// run began to wait for it), and so uploaded by them before packet 0, moves
+// the particles as one read before they open does.
 TEST(FieldStream, AFieldReadWhileTheWallsOpenDrawsWhatOneReadBeforeDoes) {
   const fs::path dir = test::scratchDir("field-stream-late");
   fs::create_directories(dir / "steps");
@@ -224,6 +225,9 @@ TEST(FieldStream, AFieldReadWhileTheWallsOpenDrawsWhatOneReadBeforeDoes) {
   runner.join();
   ASSERT_EQ(late.exitCode, 0) << late.output;
   EXPECT_NE(late.output.find("the walls open while the field is read"), std::string::npos)
+      << late.output;
+  // Its walls upload the field before packet 0 comes (FrameChannel::offerField).
+  EXPECT_NE(late.output.find("the field uploaded ahead of packet 0"), std::string::npos)
       << late.output;
   const auto ready = test::runSandstorm(args + (dir / "ready.txt").string());
   ASSERT_EQ(ready.exitCode, 0) << ready.output;
