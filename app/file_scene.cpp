@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/io/field_format.h"
+#include "core/io/vtk_legacy_parser.h"
 #include "core/io/vtk_xml_check.h"
 #include "core/sim/attribute_table.h"
 #include "core/sim/main_context.h"
@@ -227,10 +228,15 @@ void openFileScene(AppConfig& config, const std::filesystem::path& file, const V
 }
 
 std::optional<VtkImageFrame> fileSceneFrame(const FieldSpec& spec) {
-  const FieldFormat format = detectFieldFormat(spec.source);
-  if (format != FieldFormat::VtkImageData && format != FieldFormat::VtkPImageData)
-    return std::nullopt;
-  return readVtkImageFrame(spec.source);
+  switch (detectFieldFormat(spec.source)) {
+    case FieldFormat::VtkImageData:
+    case FieldFormat::VtkPImageData:
+      return readVtkImageFrame(spec.source);
+    case FieldFormat::VtkLegacy:
+      return readVtkLegacyFrame(spec.source);
+    default:
+      return std::nullopt;
+  }
 }
 
 FieldSeeding seedFileScene(const std::filesystem::path& file, const VtkImageFrame& frame,
@@ -241,7 +247,7 @@ FieldSeeding seedFileScene(const std::filesystem::path& file, const VtkImageFram
     given.insert(AttributeTable::instance().canonical(set.substr(0, set.find('='))));
   return [file, frame, maximum, given](MainContext& main, const FieldSource& source) {
     const VectorField* field = source.update.field.get();
-    if (!field) return;  // (a .vti or .pvti is a grid)
+    if (!field) return;  // (a file framed from its header is a grid)
     if (field->bounds().min != frame.bounds().min || field->bounds().max != frame.bounds().max ||
         field->dims() != frame.dims())
       log::warn(file.string(), ": the grid read is not the one its header describes; the walls ",

@@ -7,7 +7,8 @@
 // streamline rake (the bounds' diagonal), the slice and the probe (the
 // centre) are placed in the field and sized to it, off until turned on.
 //
-// A .vti or .pvti is framed from its header (fileSceneFrame, frameFileScene)
+// A .vti, a .pvti or a legacy .vtk of STRUCTURED_POINTS is framed from its
+// header (fileSceneFrame, frameFileScene)
 // and read while the walls open; its seeding plane, which needs the mean
 // flow, comes with packet 0 (seedFileScene). Other files are read first
 // (openFileScene).
@@ -35,7 +36,8 @@ void openFileScene(AppConfig& config, const std::filesystem::path& file, const V
 void frameFileScene(AppConfig& config, const std::filesystem::path& file, const Box& box,
                     glm::ivec3 dims);
 
-// A .vti's or .pvti's bounds and points from its header (readVtkImageFrame);
+// A .vti's or .pvti's bounds and points from its header (readVtkImageFrame),
+// or a legacy .vtk's of STRUCTURED_POINTS (readVtkLegacyFrame);
 // none for other formats, or where the header does not say (the file is read
 // first).
 std::optional<VtkImageFrame> fileSceneFrame(const FieldSpec& spec);

@@ -1,8 +1,8 @@
 // loadWithWindow: long work before the walls open (`sandstorm FILE`'s field
-// in a format whose header does not frame the scene: every one but .vti and
-// .pvti) run where a person can watch it. (A .vti or .pvti, and a
-// configuration's field, are read while the walls open: their windows show
-// its progress, RenderContext.)
+// in a format whose header does not frame the scene: every one but .vti,
+// .pvti and a legacy .vtk of STRUCTURED_POINTS) run where a person can watch
+// it. (Those, and a configuration's field, are read while the walls open:
+// their windows show its progress, RenderContext.)
 // Where the run opens windows the
 // work goes to a thread of its own while the main thread shows its progress
 // (ProgressBoard: what is read, how much, how fast, the time left) in a

@@ -9,6 +9,7 @@
 #include <cstring>
 #include <fstream>
 #include <iterator>
+#include <limits>
 #include <optional>
 
 #include "core/field/vector_field.h"
@@ -64,6 +65,26 @@ class Parser {
  public:
   Parser(std::string text, std::string file, std::size_t budget)
       : text_(std::move(text)), file_(std::move(file)), budget_(budget) {}
+
+  // STRUCTURED_POINTS's frame: the header and the geometry up to the first
+  // POINT_DATA or CELL_DATA, which must lie in the text (a prefix of the
+  // file: a geometry that reaches its end may be cut inside a number).
+  std::optional<VtkImageFrame> frame() {
+    header();
+    if (data_.type != LegacyVtkData::Type::StructuredPoints) return std::nullopt;
+    geometry();
+    skipSpace();
+    if (at_ >= text_.size()) return std::nullopt;
+    VtkImageFrame f;
+    for (std::size_t a = 0; a < 3; ++a) {
+      if (data_.dims[a] > (1LL << 30)) return std::nullopt;
+      f.extent[2 * a] = 0;
+      f.extent[2 * a + 1] = data_.dims[a] - 1;
+      f.origin[a] = data_.origin[a];
+      f.spacing[a] = data_.spacing[a];
+    }
+    return f;
+  }
 
   LegacyVtkData run() {
     header();
@@ -609,6 +630,21 @@ class Parser {
 };
 
 }  // namespace
+
+std::optional<VtkImageFrame> readVtkLegacyFrame(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return std::nullopt;
+  std::string text(kLegacyFrameBytes, '\0');
+  in.read(text.data(), std::streamsize(text.size()));
+  text.resize(std::size_t(in.gcount()));
+  try {
+    // No budget: the header's counts are the read's to judge; the prefix
+    // bounds what this parse holds (every array is checked against the bytes left).
+    return Parser(std::move(text), path.string(), std::numeric_limits<std::size_t>::max()).frame();
+  } catch (const Error&) {
+    return std::nullopt;  // the read says what is wrong
+  }
+}
 
 LegacyVtkData parseVtkLegacy(const std::filesystem::path& path, std::size_t memoryBudget) {
   const std::string file = path.string();

@@ -23,8 +23,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
+
+#include "core/io/vtk_image_frame.h"
 
 namespace sandstorm {
 
@@ -63,5 +66,19 @@ struct LegacyVtkData {
 };
 
 LegacyVtkData parseVtkLegacy(const std::filesystem::path& path, std::size_t memoryBudget);
+
+// The bytes of a file readVtkLegacyFrame reads: a header and its geometry
+// take a few lines (the title at most 256 characters).
+inline constexpr std::size_t kLegacyFrameBytes = 65536;
+
+// A STRUCTURED_POINTS file's frame from its header (DIMENSIONS, ORIGIN and
+// SPACING or ASPECT_RATIO, before its first POINT_DATA or CELL_DATA), parsed
+// as parseVtkLegacy parses it from the file's first kLegacyFrameBytes, no
+// array read: `sandstorm FILE` frames its walls with it while the file is
+// read. None for other datasets, or where the header gives no frame the
+// read would agree with (anything parseVtkLegacy refuses, a geometry that
+// does not end within those bytes). Never throws: the read that follows
+// says what is wrong with such a file.
+std::optional<VtkImageFrame> readVtkLegacyFrame(const std::filesystem::path& path);
 
 }  // namespace sandstorm

@@ -2,8 +2,11 @@
 // on a file of our own with two vector arrays.
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 
 #include "app/file_scene.h"
@@ -173,11 +176,34 @@ TEST(FileScene, AFileOpensFromItsOwnFolder) {
 
 // The file is read once: the scene is framed from the very field the run
 // starts with (a 512^3 file read twice took twice the time to open).
-// A .vti, and a parallel image file (.pvti) of the same grid, are framed from
-// their headers and seeded once read (the walls open meanwhile); a multiblock
-// file (.vtm) of the same grid is framed after its read, as every file was.
-// All three open the same scene: the same particles and state every frame,
-// the same picture, and the emitter setting a --set gave stays as given.
+// `field` as a legacy BINARY .vtk of STRUCTURED_POINTS with `frame`'s origin
+// and spacing (to the last bit): the grid its .vti holds.
+void writeLegacyVtk(const std::filesystem::path& path, const VectorField& field,
+                    const VtkImageFrame& frame) {
+  std::ofstream out(path, std::ios::binary);
+  const glm::ivec3 n = field.dims();
+  out << std::setprecision(17) << "# vtk DataFile Version 3.0\nthe .vti's grid\nBINARY\n"
+      << "DATASET STRUCTURED_POINTS\nDIMENSIONS " << n.x << " " << n.y << " " << n.z << "\nORIGIN "
+      << frame.origin[0] << " " << frame.origin[1] << " " << frame.origin[2] << "\nSPACING "
+      << frame.spacing[0] << " " << frame.spacing[1] << " " << frame.spacing[2] << "\nPOINT_DATA "
+      << n.x * n.y * n.z << "\nVECTORS velocity float\n";
+  for (int k = 0; k < n.z; ++k)
+    for (int j = 0; j < n.y; ++j)
+      for (int i = 0; i < n.x; ++i)
+        for (const float c : {field.at(i, j, k).x, field.at(i, j, k).y, field.at(i, j, k).z}) {
+          const auto bits = std::bit_cast<std::uint32_t>(c);  // big-endian, as the format has it
+          for (int b = 3; b >= 0; --b)
+            out.put(char((bits >> (8 * b)) & 0xffu));
+        }
+  out << "\n";
+}
+
+// A .vti, a parallel image file (.pvti) and a legacy .vtk of the same grid
+// are framed from their headers and seeded once read (the walls open
+// meanwhile); a multiblock file (.vtm) of the same grid is framed after its
+// read, as every file was. All four open the same scene: the same particles
+// and state every frame, the same picture, and the emitter setting a --set
+// gave stays as given.
 TEST(FileScene, AFileFramedFromItsHeaderOpensAsAFileFramedAfterItsRead) {
   const auto dir = test::scratchDir("file-scene-header");
   struct Drift final : AnalyticField {  // a mean flow along y: not the middle plane's seeding
@@ -185,9 +211,10 @@ TEST(FileScene, AFileFramedFromItsHeaderOpensAsAFileFramedAfterItsRead) {
       return {0.2f * std::sin(p.z), 1.5f + 0.1f * p.x, 0.05f * p.y};
     }
   };
-  writeVti(dir / "drift.vti",
-           bake(Drift(), {{-1.5f, 0.25f, 2.0f}, {0.5f, 3.25f, 3.5f}}, {17, 25, 7}));
+  const VectorField drift = bake(Drift(), {{-1.5f, 0.25f, 2.0f}, {0.5f, 3.25f, 3.5f}}, {17, 25, 7});
+  writeVti(dir / "drift.vti", drift);
   test::writePvtiFor(dir / "drift.vti", dir / "drift.pvti");
+  writeLegacyVtk(dir / "drift.vtk", drift, *readVtkImageFrame(dir / "drift.vti"));
   test::writeVtmFor(dir / "drift.vti", dir / "drift.vtm");
   const auto open = [&](const std::string& file, const std::string& name) {
     std::filesystem::create_directories(dir / name);
@@ -213,7 +240,7 @@ TEST(FileScene, AFileFramedFromItsHeaderOpensAsAFileFramedAfterItsRead) {
   ASSERT_EQ(hashes.size(), 12u);
   const std::string picture = bytes(dir / "read" / "desktop.png");
   EXPECT_FALSE(picture.empty());
-  for (const char* file : {"drift.vti", "drift.pvti"}) {
+  for (const char* file : {"drift.vti", "drift.pvti", "drift.vtk"}) {
     SCOPED_TRACE(file);
     const std::string name = std::string("header-") + (file + 6);
     const auto framed = open(file, name);

@@ -7,6 +7,7 @@
 
 #include "core/io/field_loader.h"
 #include "core/io/vdb_reader.h"
+#include "core/io/vtk_legacy_parser.h"
 #include "core/io/vtk_message_trap.h"
 #include "core/io/vtk_xml_check.h"
 #include "core/util/error.h"
@@ -37,11 +38,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     field = loadField(path, options);
   } catch (const Error&) {
   }
-  // A .vti's frame from its header (sandstorm FILE frames its walls with it
-  // while the file is read): never a crash, and where the file loads as the
-  // grid the header describes, exactly that grid's bounds.
-  if (std::string_view(SANDSTORM_FUZZ_EXTENSION) == ".vti") {
-    const std::optional<VtkImageFrame> frame = readVtkImageFrame(path);
+  // A .vti's or legacy .vtk's frame from its header (sandstorm FILE frames
+  // its walls with it while the file is read): never a crash, and where the
+  // file loads as the grid the header describes, exactly that grid's bounds.
+  const std::string_view extension(SANDSTORM_FUZZ_EXTENSION);
+  if (extension == ".vti" || extension == ".vtk") {
+    const std::optional<VtkImageFrame> frame =
+        extension == ".vti" ? readVtkImageFrame(path) : readVtkLegacyFrame(path);
     if (frame && field && field->dims() == frame->dims() &&
         (field->bounds().min != frame->bounds().min || field->bounds().max != frame->bounds().max))
       __builtin_trap();

@@ -19,26 +19,6 @@
 namespace sandstorm {
 namespace {
 
-// An image of the asymmetric field over `extent`, with `origin` and `spacing`.
-vtkNew<vtkImageData> image(const int (&extent)[6], glm::dvec3 origin, glm::dvec3 spacing) {
-  vtkNew<vtkImageData> im;
-  im->SetExtent(extent[0], extent[1], extent[2], extent[3], extent[4], extent[5]);
-  im->SetOrigin(origin.x, origin.y, origin.z);
-  im->SetSpacing(spacing.x, spacing.y, spacing.z);
-  vtkNew<vtkFloatArray> v;
-  v->SetName("velocity");
-  v->SetNumberOfComponents(3);
-  v->SetNumberOfTuples(im->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < im->GetNumberOfPoints(); ++i) {
-    double p[3];
-    im->GetPoint(i, p);
-    const glm::dvec3 a = test::asymmetric({p[0], p[1], p[2]});
-    v->SetTuple3(i, a.x, a.y, a.z);
-  }
-  im->GetPointData()->AddArray(v);
-  return im;
-}
-
 TEST(VtkImageFrame, TheHeadersBoundsAndPointsAreTheLoadedFields) {
   const auto dir = test::scratch();
   struct Case {
@@ -56,7 +36,7 @@ TEST(VtkImageFrame, TheHeadersBoundsAndPointsAreTheLoadedFields) {
   for (const Case& c : cases) {
     SCOPED_TRACE(n);
     const auto path = dir / ("image" + std::to_string(n++) + ".vti");
-    test::writeRawVti(image(c.extent, c.origin, c.spacing), path);
+    test::writeRawVti(test::asymmetricImage(c.extent, c.origin, c.spacing), path);
     // The same grid as the one piece of a parallel image file.
     const auto pvti = std::filesystem::path(path).replace_extension(".pvti");
     test::writePvtiFor(path, pvti);
