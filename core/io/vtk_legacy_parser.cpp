@@ -14,6 +14,7 @@
 
 #include "core/field/vector_field.h"
 #include "core/util/error.h"
+#include "core/util/progress_meter.h"
 
 namespace sandstorm {
 
@@ -63,8 +64,9 @@ int typeSize(const std::string& type) {
 
 class Parser {
  public:
-  Parser(std::string text, std::string file, std::size_t budget)
-      : text_(std::move(text)), file_(std::move(file)), budget_(budget) {}
+  // `meter`, where given, hears of the bytes parsed.
+  Parser(std::string text, std::string file, std::size_t budget, ProgressMeter* meter = nullptr)
+      : text_(std::move(text)), file_(std::move(file)), budget_(budget), meter_(meter) {}
 
   // STRUCTURED_POINTS's frame: the header and the geometry up to the first
   // POINT_DATA or CELL_DATA, which must lie in the text (a prefix of the
@@ -134,12 +136,19 @@ class Parser {
   }
 
   std::string_view token(const std::string& what) {
+    return tokenFor([&] { return what; });
+  }
+
+  // `what()` names what was expected; it is only called to say so (an
+  // array's millions of values each have a name of their own).
+  template <class What>
+  std::string_view tokenFor(const What& what) {
     skipSpace();
     start_ = at_;
-    if (at_ >= text_.size()) fail(concat("the file ends; expected ", what));
+    if (at_ >= text_.size()) fail(concat("the file ends; expected ", what()));
     while (at_ < text_.size() && !isSpace(text_[at_]))
       ++at_;
-    last_ = std::string(text_.data() + start_, std::min<std::size_t>(at_ - start_, 40));
+    last_.assign(text_.data() + start_, std::min<std::size_t>(at_ - start_, 40));
     return std::string_view(text_.data() + start_, at_ - start_);
   }
 
@@ -156,12 +165,25 @@ class Parser {
   }
 
   double number(const std::string& what) {
-    const std::string_view t = token(what);
+    return numberFor([&] { return what; });
+  }
+
+  template <class What>
+  double numberFor(const What& what) {
+    const std::string_view t = tokenFor(what);
     double v = 0.0;
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
     if ((ec != std::errc() && ec != std::errc::result_out_of_range) || end != t.data() + t.size())
-      fail(concat("'", last_, "'; expected ", what, " (a number)"));
+      fail(concat("'", last_, "'; expected ", what(), " (a number)"));
     return v;
+  }
+
+  // The parse's progress: the bytes passed since the last report, once a MiB.
+  void tick() {
+    if (meter_ && at_ - reported_ >= (std::size_t{1} << 20)) {
+      meter_->add(at_ - reported_);
+      reported_ = at_;
+    }
   }
 
   // The rest of the current line must be empty (binary data starts on the next).
@@ -467,8 +489,10 @@ class Parser {
     }
     std::vector<double> out(n);
     if (!binary_) {
-      for (std::size_t i = 0; i < n; ++i)
-        out[i] = number(concat(what, " value ", i + 1, " of ", n));
+      for (std::size_t i = 0; i < n; ++i) {
+        out[i] = numberFor([&] { return concat(what, " value ", i + 1, " of ", n); });
+        tick();
+      }
       return out;
     }
     const auto* p = reinterpret_cast<const unsigned char*>(text_.data() + at_);
@@ -489,6 +513,7 @@ class Parser {
         out[i] = double(word);
     }
     at_ += n * std::size_t(size);
+    tick();
     return out;
   }
 
@@ -622,6 +647,8 @@ class Parser {
   std::string text_;
   std::string file_;
   std::size_t budget_;
+  ProgressMeter* meter_;
+  std::size_t reported_ = 0;
   std::size_t at_ = 0, start_ = 0;
   std::string last_;
   bool binary_ = false;
@@ -661,9 +688,23 @@ LegacyVtkData parseVtkLegacy(const std::filesystem::path& path, std::size_t memo
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(concat(file, ": cannot open the file for reading"));
   std::string text(std::size_t(size), '\0');
-  in.read(text.data(), std::streamsize(text.size()));
-  text.resize(std::size_t(in.gcount()));
-  return Parser(std::move(text), file, memoryBudget).run();
+  {
+    ProgressMeter reading("reading " + path.filename().string(), size, "bytes");
+    constexpr std::size_t kChunk = std::size_t{16} << 20;
+    std::size_t done = 0;
+    while (done < text.size() && in) {
+      in.read(text.data() + done, std::streamsize(std::min(kChunk, text.size() - done)));
+      done += std::size_t(in.gcount());
+      reading.add(std::uint64_t(in.gcount()));
+    }
+    text.resize(done);
+    reading.finish();
+  }
+  // The parse's own meter: ASCII values parse at tens of MB/s, far below a disk's read.
+  ProgressMeter parsing("parsing " + path.filename().string(), text.size(), "bytes");
+  LegacyVtkData data = Parser(std::move(text), file, memoryBudget, &parsing).run();
+  parsing.finish();
+  return data;
 }
 
 }  // namespace sandstorm

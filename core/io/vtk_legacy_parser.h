@@ -16,6 +16,8 @@
 // must be numbers and BINARY values (big-endian) must be all there; a cell
 // list's sizes must add up to its size and every point id name a point.
 // Anything else throws Error "file:line: what was found; what was expected".
+// The file's read and its parse each report to a ProgressMeter (bytes): an
+// ASCII file parses at some 50 MB/s, a large one for seconds.
 // Pure C++: no VTK here (the reader checks the cell types: checkVtkCells).
 #pragma once
 
