@@ -194,8 +194,13 @@ TEST(FieldStream, AnEmptyFolderStopsTheStartAfterWaitingWithAClearMessage) {
 }
 
 // A field read while the walls open (the first step comes 0.6 s after the
-// run began to wait for it), and so uploaded by them before packet 0, moves
-// the particles as one read before they open does.
+// run began to wait for it) moves the particles as one read before they open
+// does. A wall waiting when the field is offered uploads it before packet 0
+// (FrameChannel::offerField); one the main context beats to packet 0 (the
+// offer is dropped then: a 4x4x4 field seeds in no time, and a loaded machine
+// may not wake the wall first) uploads it with packet 0. Either way the
+// particles are the same, and the run says which it was. (That an offered
+// field reaches each waiting wall once: FrameChannel.AnOfferedFieldWakes...)
 TEST(FieldStream, AFieldReadWhileTheWallsOpenDrawsWhatOneReadBeforeDoes) {
   const fs::path dir = test::scratchDir("field-stream-late");
   fs::create_directories(dir / "steps");
@@ -226,9 +231,9 @@ TEST(FieldStream, AFieldReadWhileTheWallsOpenDrawsWhatOneReadBeforeDoes) {
   ASSERT_EQ(late.exitCode, 0) << late.output;
   EXPECT_NE(late.output.find("the walls open while the field is read"), std::string::npos)
       << late.output;
-  // Its walls upload the field before packet 0 comes (FrameChannel::offerField).
-  EXPECT_NE(late.output.find("the field uploaded ahead of packet 0"), std::string::npos)
-      << late.output;
+  const bool ahead = late.output.find("the field uploaded ahead of packet 0") != std::string::npos;
+  std::printf("[ measured ] the field was uploaded %s\n",
+              ahead ? "ahead of packet 0" : "with packet 0");
   const auto ready = test::runSandstorm(args + (dir / "ready.txt").string());
   ASSERT_EQ(ready.exitCode, 0) << ready.output;
   const std::vector<std::string> lines = test::readLines(dir / "late.txt");
