@@ -174,8 +174,6 @@ TEST(FileScene, AFileOpensFromItsOwnFolder) {
   EXPECT_TRUE(std::filesystem::exists(dir / "desktop.png"));
 }
 
-// The file is read once: the scene is framed from the very field the run
-// starts with (a 512^3 file read twice took twice the time to open).
 // `field` as a legacy BINARY .vtk of STRUCTURED_POINTS with `frame`'s origin
 // and spacing (to the last bit): the grid its .vti holds.
 void writeLegacyVtk(const std::filesystem::path& path, const VectorField& field,
@@ -198,6 +196,8 @@ void writeLegacyVtk(const std::filesystem::path& path, const VectorField& field,
   out << "\n";
 }
 
+// The file is read once: the scene is framed from the very field the run
+// starts with (a 512^3 file read twice took twice the time to open).
 // A .vti, a parallel image file (.pvti) and a legacy .vtk of the same grid
 // are framed from their headers and seeded once read (the walls open
 // meanwhile); a multiblock file (.vtm) of the same grid is framed after its

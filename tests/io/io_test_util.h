@@ -15,6 +15,7 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
+#include <vtkStructuredPointsWriter.h>
 #include <vtkXMLImageDataWriter.h>
 #include <glm/glm.hpp>
 
@@ -79,6 +80,20 @@ inline std::filesystem::path writeRawVti(vtkImageData* image, const std::filesys
   if (wideHeaders) w->SetHeaderTypeToUInt64();
   EXPECT_EQ(w->Write(), 1) << "writing " << path;
   return path;
+}
+
+// `image` as a legacy .vtk of STRUCTURED_POINTS, ASCII or BINARY, by VTK's
+// writer. Whether it was written.
+inline bool writeStructuredPoints(vtkImageData* image, const std::filesystem::path& path,
+                                  bool binary) {
+  vtkNew<vtkStructuredPointsWriter> w;
+  w->SetInputData(image);
+  w->SetFileName(path.c_str());
+  if (binary)
+    w->SetFileTypeToBinary();
+  else
+    w->SetFileTypeToASCII();
+  return w->Write() == 1;
 }
 
 inline void writeText(const std::filesystem::path& p, const std::string& text) {

@@ -149,14 +149,7 @@ TEST(VtkFormats, LegacyStructuredPointsAsciiAndBinary) {
   const auto image = makeImage();
   for (bool binary : {false, true}) {
     const auto path = dir / (binary ? "binary.vtk" : "ascii.vtk");
-    vtkNew<vtkStructuredPointsWriter> w;
-    w->SetInputData(image);
-    w->SetFileName(path.c_str());
-    if (binary)
-      w->SetFileTypeToBinary();
-    else
-      w->SetFileTypeToASCII();
-    ASSERT_EQ(w->Write(), 1);
+    ASSERT_TRUE(test::writeStructuredPoints(image, path, binary));
     expectImageGrid(loadField(path));
   }
 }

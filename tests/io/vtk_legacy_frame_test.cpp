@@ -10,9 +10,6 @@
 #include <utility>
 #include <vector>
 
-#include <vtkNew.h>
-#include <vtkStructuredPointsWriter.h>
-
 #include "core/io/field_loader.h"
 #include "tests/io/io_test_util.h"
 
@@ -47,15 +44,9 @@ TEST(VtkLegacyFrame, TheHeadersBoundsAndPointsAreTheLoadedFields) {
     SCOPED_TRACE(n);
     for (const bool binary : {false, true}) {
       const auto path = dir / ("image" + std::to_string(n) + (binary ? "-binary" : "") + ".vtk");
-      vtkNew<vtkStructuredPointsWriter> w;
       const int extent[6] = {0, c.dims.x - 1, 0, c.dims.y - 1, 0, c.dims.z - 1};
-      w->SetInputData(test::asymmetricImage(extent, c.origin, c.spacing));
-      w->SetFileName(path.c_str());
-      if (binary)
-        w->SetFileTypeToBinary();
-      else
-        w->SetFileTypeToASCII();
-      ASSERT_EQ(w->Write(), 1);
+      ASSERT_TRUE(test::writeStructuredPoints(test::asymmetricImage(extent, c.origin, c.spacing),
+                                              path, binary));
       expectFrameIsTheLoadedFields(path);
     }
     ++n;
