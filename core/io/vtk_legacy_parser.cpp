@@ -10,10 +10,12 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
+#include <memory>
 #include <optional>
 
 #include "core/field/vector_field.h"
 #include "core/util/error.h"
+#include "core/util/page_buffer.h"
 #include "core/util/progress_meter.h"
 
 namespace sandstorm {
@@ -64,9 +66,11 @@ int typeSize(const std::string& type) {
 
 class Parser {
  public:
-  // `meter`, where given, hears of the bytes parsed.
-  Parser(std::string text, std::string file, std::size_t budget, ProgressMeter* meter = nullptr)
-      : text_(std::move(text)), file_(std::move(file)), budget_(budget), meter_(meter) {}
+  // `meter`, where given, hears of the bytes parsed; `pages`, where given,
+  // holds `text`, and the parse gives its pages back as it passes them.
+  Parser(std::string_view text, std::string file, std::size_t budget,
+         ProgressMeter* meter = nullptr, PageBuffer* pages = nullptr)
+      : text_(text), file_(std::move(file)), budget_(budget), meter_(meter), pages_(pages) {}
 
   // STRUCTURED_POINTS's frame: the header and the geometry up to the first
   // POINT_DATA or CELL_DATA, which must lie in the text (a prefix of the
@@ -116,8 +120,11 @@ class Parser {
     throw Error(concat(file_, ":", line(), ": ", what));
   }
   long long line() const {
-    return std::count(text_.begin(), text_.begin() + long(start_), '\n') + 1;
+    const std::size_t from = std::min(released(), start_);
+    return releasedLines_ +
+           std::count(text_.begin() + long(from), text_.begin() + long(start_), '\n') + 1;
   }
+  std::size_t released() const { return pages_ ? pages_->released() : 0; }
 
   // A whole line (without its end), from the current position.
   std::string_view readLine() {
@@ -180,10 +187,23 @@ class Parser {
 
   // The parse's progress: the bytes passed since the last report, once a MiB.
   void tick() {
-    if (meter_ && at_ - reported_ >= (std::size_t{1} << 20)) {
-      meter_->add(at_ - reported_);
-      reported_ = at_;
-    }
+    if (at_ - reported_ < (std::size_t{1} << 20)) return;
+    if (meter_) meter_->add(at_ - reported_);
+    reported_ = at_;
+    release();
+  }
+
+  // Gives back the text's pages more than a MiB behind both the position and
+  // the last token's start (the parse steps back a few bytes at most; error
+  // messages count lines up to the token), counting their lines first.
+  void release() {
+    constexpr std::size_t kSlack = std::size_t{1} << 20, kStep = std::size_t{4} << 20;
+    const std::size_t keep = std::min(at_, start_);
+    if (!pages_ || keep < pages_->released() + kSlack + kStep) return;
+    const std::size_t end = PageBuffer::pageFloor(keep - kSlack);
+    releasedLines_ +=
+        std::count(text_.begin() + long(pages_->released()), text_.begin() + long(end), '\n');
+    pages_->releaseBefore(end);
   }
 
   // The rest of the current line must be empty (binary data starts on the next).
@@ -466,8 +486,32 @@ class Parser {
     return "POLYDATA";
   }
 
-  // `count` values of `type`: ASCII numbers, or BINARY big-endian words starting on the next line.
+  // `count` values of `type`: ASCII numbers, or BINARY big-endian words
+  // starting on the next line; as double, or as float (rounded from the
+  // double: the same floats VTK's float arrays took of them before).
   std::vector<double> values(const std::string& type, long long count, const std::string& what) {
+    const std::size_t n = checkValues(type, count, what);
+    std::vector<double> out(n);
+    readValues(out.data(), n, type, what);
+    return out;
+  }
+  // An attribute array: float unless its type is double (`asFloat`: float whatever its type).
+  void arrayValues(LegacyArray& a, const std::string& type, long long count,
+                   const std::string& what, bool asFloat = false) {
+    a.singlePrecision = asFloat || type != "double";
+    const std::size_t n = checkValues(type, count, what);
+    if (a.singlePrecision) {
+      a.floats = std::make_unique_for_overwrite<float[]>(n);
+      a.floatCount = n;
+      readValues(a.floats.get(), n, type, what);
+    } else {
+      a.values.resize(n);
+      readValues(a.values.data(), n, type, what);
+    }
+  }
+  // Checks that `count` values of `type` fit in the budget and in the bytes
+  // left (before anything is allocated for them); returns the count.
+  std::size_t checkValues(const std::string& type, long long count, const std::string& what) {
     const int size = typeSize(type);
     if (size == 0)
       fail(concat(what, ": data type '", last_,
@@ -487,13 +531,18 @@ class Parser {
       fail(concat(what, ": ", n, " values cannot fit in the ", text_.size() - at_,
                   " bytes left; the file is truncated"));
     }
-    std::vector<double> out(n);
+    return n;
+  }
+  // Reads the n values checkValues allowed into `out`.
+  template <class T>
+  void readValues(T* out, std::size_t n, const std::string& type, const std::string& what) {
+    const int size = typeSize(type);
     if (!binary_) {
       for (std::size_t i = 0; i < n; ++i) {
-        out[i] = numberFor([&] { return concat(what, " value ", i + 1, " of ", n); });
+        out[i] = T(numberFor([&] { return concat(what, " value ", i + 1, " of ", n); }));
         tick();
       }
-      return out;
+      return;
     }
     const auto* p = reinterpret_cast<const unsigned char*>(text_.data() + at_);
     const bool isFloat = type == "float" || type == "double";
@@ -504,17 +553,23 @@ class Parser {
       std::uint64_t word = 0;
       for (int b = 0; b < size; ++b)
         word = (word << 8) | p[b];
+      double v;
       if (isFloat)
-        out[i] = size == 4 ? double(std::bit_cast<float>(std::uint32_t(word)))
-                           : std::bit_cast<double>(word);
+        v = size == 4 ? double(std::bit_cast<float>(std::uint32_t(word)))
+                      : std::bit_cast<double>(word);
       else if (isSigned)
-        out[i] = double(std::int64_t(word << (64 - 8 * size)) >> (64 - 8 * size));
+        v = double(std::int64_t(word << (64 - 8 * size)) >> (64 - 8 * size));
       else
-        out[i] = double(word);
+        v = double(word);
+      out[i] = T(v);
+      if ((i & 0xfffff) == 0xfffff) {  // the text behind given back as the array fills
+        at_ += std::size_t{0x100000} * std::size_t(size);
+        start_ = at_;  // a message from here on names the line the parse is at
+        tick();
+      }
     }
-    at_ += n * std::size_t(size);
+    at_ = std::size_t(p - reinterpret_cast<const unsigned char*>(text_.data()));
     tick();
-    return out;
   }
 
   // Skips an array's METADATA block: "METADATA", then lines up to an empty one.
@@ -567,34 +622,31 @@ class Parser {
         }
         if (next != "lookup_table") fail(concat("'", last_, "'; expected LOOKUP_TABLE"));
         token("the lookup table's name");
-        a.singlePrecision = type != "double";
-        a.values = values(type, n * a.components, "SCALARS " + a.name);
+        arrayValues(a, type, n * a.components, "SCALARS " + a.name);
         out.push_back(std::move(a));
       } else if (key == "vectors" || key == "normals") {
         a.name = arrayName(out, "the array's name");
         const std::string type = keyword("the array's type");
         a.components = 3;
-        a.singlePrecision = type != "double";
-        a.values = values(type, n * 3, lower(key) + " " + a.name);
+        arrayValues(a, type, n * 3, lower(key) + " " + a.name);
         out.push_back(std::move(a));
       } else if (key == "tensors" || key == "tensors6") {
         a.name = arrayName(out, "the tensors' name");
         const std::string type = keyword("the tensors' type");
         a.components = key == "tensors" ? 9 : 6;
-        a.singlePrecision = type != "double";
-        a.values = values(type, n * a.components, "TENSORS " + a.name);
+        arrayValues(a, type, n * a.components, "TENSORS " + a.name);
         out.push_back(std::move(a));
       } else if (key == "texture_coordinates") {
         a.name = arrayName(out, "the texture coordinates' name");
         a.components = int(integer("the texture coordinates' dimension", 1, 3));
         const std::string type = keyword("the texture coordinates' type");
-        a.values = values(type, n * a.components, "TEXTURE_COORDINATES " + a.name);
+        arrayValues(a, type, n * a.components, "TEXTURE_COORDINATES " + a.name, true);
         out.push_back(std::move(a));
       } else if (key == "color_scalars") {
         a.name = arrayName(out, "the colour scalars' name");
         a.components = int(integer("the colour scalars' value count", 1, 4));
-        a.values = values(binary_ ? "unsigned_char" : "float", n * a.components,
-                          "COLOR_SCALARS " + a.name);
+        arrayValues(a, binary_ ? "unsigned_char" : "float", n * a.components,
+                    "COLOR_SCALARS " + a.name, true);
         out.push_back(std::move(a));
       } else if (key == "lookup_table") {
         token("the lookup table's name");
@@ -637,17 +689,18 @@ class Parser {
       if (tuples && n != *tuples)
         fail(concat("field array '", a.name, "' has ", n, " tuples; the section has ", *tuples));
       const std::string type = keyword(concat("field array '", a.name, "' type"));
-      a.singlePrecision = type != "double";
-      a.values = values(type, n * a.components, "field array '" + a.name + "'");
+      arrayValues(a, type, n * a.components, "field array '" + a.name + "'");
       metadata();
       if (tuples) out.push_back(std::move(a));
     }
   }
 
-  std::string text_;
+  std::string_view text_;
   std::string file_;
   std::size_t budget_;
   ProgressMeter* meter_;
+  PageBuffer* pages_;
+  long long releasedLines_ = 0;  // the lines of the text given back
   std::size_t reported_ = 0;
   std::size_t at_ = 0, start_ = 0;
   std::string last_;
@@ -667,7 +720,7 @@ std::optional<VtkImageFrame> readVtkLegacyFrame(const std::filesystem::path& pat
   try {
     // No budget: the header's counts are the read's to judge; the prefix
     // bounds what this parse holds (every array is checked against the bytes left).
-    return Parser(std::move(text), path.string(), std::numeric_limits<std::size_t>::max()).frame();
+    return Parser(text, path.string(), std::numeric_limits<std::size_t>::max()).frame();
   } catch (const Error&) {
     return std::nullopt;  // the read says what is wrong
   }
@@ -687,22 +740,22 @@ LegacyVtkData parseVtkLegacy(const std::filesystem::path& path, std::size_t memo
                memoryBudget, " bytes can take"));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(concat(file, ": cannot open the file for reading"));
-  std::string text(std::size_t(size), '\0');
+  PageBuffer text(std::size_t(size), file);
+  std::size_t done = 0;
   {
     ProgressMeter reading("reading " + path.filename().string(), size, "bytes");
     constexpr std::size_t kChunk = std::size_t{16} << 20;
-    std::size_t done = 0;
     while (done < text.size() && in) {
       in.read(text.data() + done, std::streamsize(std::min(kChunk, text.size() - done)));
       done += std::size_t(in.gcount());
       reading.add(std::uint64_t(in.gcount()));
     }
-    text.resize(done);
     reading.finish();
   }
   // The parse's own meter: ASCII values parse at tens of MB/s, far below a disk's read.
-  ProgressMeter parsing("parsing " + path.filename().string(), text.size(), "bytes");
-  LegacyVtkData data = Parser(std::move(text), file, memoryBudget, &parsing).run();
+  ProgressMeter parsing("parsing " + path.filename().string(), done, "bytes");
+  LegacyVtkData data =
+      Parser(text.view().substr(0, done), file, memoryBudget, &parsing, &text).run();
   parsing.finish();
   return data;
 }

@@ -17,7 +17,10 @@
 // list's sizes must add up to its size and every point id name a point.
 // Anything else throws Error "file:line: what was found; what was expected".
 // The file's read and its parse each report to a ProgressMeter (bytes): an
-// ASCII file parses at some 50 MB/s, a large one for seconds.
+// ASCII file parses at some 50 MB/s, a large one for seconds. The text is
+// given back to the system as the parse passes it, and single-precision
+// arrays are kept as float: a BINARY file of floats peaks at about its own
+// size (core/util/page_buffer.h).
 // Pure C++: no VTK here (the reader checks the cell types: checkVtkCells).
 #pragma once
 
@@ -25,6 +28,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -37,8 +41,13 @@ struct LegacyArray {
   std::string name;
   std::string kind;  // "VECTORS", "SCALARS", "NORMALS", "FIELD", ...
   int components = 1;
-  bool singlePrecision = true;  // float data (kept as float); otherwise double
-  std::vector<double> values;   // tuples x components
+  bool singlePrecision = true;  // float data, in `floats`; otherwise double, in `values`
+  // Tuples x components. The floats are an array of their own, so that the
+  // reader can hand them to VTK without a copy.
+  std::unique_ptr<float[]> floats;
+  std::size_t floatCount = 0;
+  std::vector<double> values;
+  std::size_t size() const { return singlePrecision ? floatCount : values.size(); }
 };
 
 // Cells as VTK 9 keeps them: cell c's points are connectivity[offsets[c] ..

@@ -23,21 +23,25 @@
 namespace sandstorm {
 namespace {
 
-vtkSmartPointer<vtkDataArray> toVtk(const LegacyArray& a) {
+// The array as VTK's: the floats handed over (VTK deletes them with
+// delete[]), the doubles copied and given back, so a file's arrays are held
+// once, or twice one at a time.
+vtkSmartPointer<vtkDataArray> toVtk(LegacyArray& a) {
   vtkSmartPointer<vtkDataArray> out;
   if (a.singlePrecision) {
     auto f = vtkSmartPointer<vtkFloatArray>::New();
     f->SetNumberOfComponents(a.components);
-    f->SetNumberOfTuples(vtkIdType(a.values.size() / std::size_t(a.components)));
-    for (std::size_t i = 0; i < a.values.size(); ++i)
-      f->SetValue(vtkIdType(i), float(a.values[i]));
+    if (a.floatCount > 0)
+      f->SetArray(a.floats.release(), vtkIdType(a.floatCount), 0,
+                  vtkAbstractArray::VTK_DATA_ARRAY_DELETE);
+    a.floatCount = 0;
     out = f;
   } else {
     auto d = vtkSmartPointer<vtkDoubleArray>::New();
     d->SetNumberOfComponents(a.components);
     d->SetNumberOfTuples(vtkIdType(a.values.size() / std::size_t(a.components)));
-    for (std::size_t i = 0; i < a.values.size(); ++i)
-      d->SetValue(vtkIdType(i), a.values[i]);
+    std::copy(a.values.begin(), a.values.end(), d->GetPointer(0));
+    std::vector<double>().swap(a.values);
     out = d;
   }
   out->SetName(a.name.c_str());
@@ -47,10 +51,10 @@ vtkSmartPointer<vtkDataArray> toVtk(const LegacyArray& a) {
 // A file's one VECTORS section is its active vectors, as VTK's reader makes
 // it. Several are not: the format has no way to mark one, and VTK's reader
 // would take the first silently, so the loader asks which (--array).
-void attach(vtkDataSetAttributes* to, const std::vector<LegacyArray>& arrays) {
+void attach(vtkDataSetAttributes* to, std::vector<LegacyArray>& arrays) {
   const auto vectors = std::count_if(arrays.begin(), arrays.end(),
                                      [](const LegacyArray& a) { return a.kind == "vectors"; });
-  for (const LegacyArray& a : arrays) {
+  for (LegacyArray& a : arrays) {
     vtkSmartPointer<vtkDataArray> array = toVtk(a);
     if (a.kind == "vectors" && vectors == 1)
       to->SetVectors(array);
