@@ -14,6 +14,7 @@
 #include <optional>
 
 #include "core/field/vector_field.h"
+#include "core/io/ascii_numbers.h"
 #include "core/util/error.h"
 #include "core/util/page_buffer.h"
 #include "core/util/progress_meter.h"
@@ -49,7 +50,7 @@ std::string lower(std::string_view s) {
 }
 
 bool isSpace(char c) {
-  return c == ' ' || c == '\t' || c == '\r' || c == '\n' || c == '\f' || c == '\v';
+  return isAsciiSpace(c);
 }
 
 // The bytes of a legacy type in BINARY data; 0 for types refused.
@@ -63,6 +64,9 @@ int typeSize(const std::string& type) {
     if (type == name) return size;
   return 0;
 }
+
+// ASCII arrays this long are parsed over the cores (parseAsciiNumbers).
+constexpr std::size_t kParallelValues = std::size_t{1} << 16;
 
 class Parser {
  public:
@@ -179,9 +183,7 @@ class Parser {
   double numberFor(const What& what) {
     const std::string_view t = tokenFor(what);
     double v = 0.0;
-    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
-    if ((ec != std::errc() && ec != std::errc::result_out_of_range) || end != t.data() + t.size())
-      fail(concat("'", last_, "'; expected ", what(), " (a number)"));
+    if (!readAsciiNumber(t, v)) fail(concat("'", last_, "'; expected ", what(), " (a number)"));
     return v;
   }
 
@@ -538,7 +540,16 @@ class Parser {
   void readValues(T* out, std::size_t n, const std::string& type, const std::string& what) {
     const int size = typeSize(type);
     if (!binary_) {
-      for (std::size_t i = 0; i < n; ++i) {
+      std::size_t i = 0;
+      if (n >= kParallelValues) {  // over the cores, up to any bad token
+        const AsciiScan scan = parseAsciiNumbers<T>(text_, at_, n, out, [&](std::size_t offset) {
+          at_ = start_ = offset;
+          tick();
+        });
+        i = scan.parsed;
+        at_ = start_ = scan.end;
+      }
+      for (; i < n; ++i) {
         out[i] = T(numberFor([&] { return concat(what, " value ", i + 1, " of ", n); }));
         tick();
       }
