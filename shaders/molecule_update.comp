@@ -63,6 +63,12 @@ vec3 repulsionOf(uint i) {
 #endif
 }
 
+bool survives(uint i) {
+  vec3 x[kMembers], v[kMembers];
+  vec2 life = loadMolecule(i, x, v);
+  return advanceMolecule(x, v, life.x, life.y, repulsionOf(i));
+}
+
 #include "tile_lookback.glsl"
 
 shared uint sTicket;
@@ -77,57 +83,28 @@ void main() {
   if (tile >= tiles) return;  // the whole workgroup: a spare of the 2D dispatch
   uint inCount = ctl.count[uIn];
 
-  // Every value the loop carries starts defined: a compiler may fold
-  // "own ? stepped : undefined" to "stepped", which would keep the last
-  // recounted tile's molecules (NVIDIA's did).
+  uint i = tile * kTile + lid;
   vec3 x[kMembers], v[kMembers];
-  for (int m = 0; m < kMembers; ++m) {
-    x[m] = vec3(0.0);
-    v[m] = vec3(0.0);
-  }
   vec2 life = vec2(0.0);
   bool alive = false;
-  uint before = 0u;
-  uint aggregate = 0u;
-  int j = int(tile) - 1;
-  uint prefix = 0u;
-  // The one place molecules are stepped: this tile's, then any
-  // predecessor's the look-back has to count (tile_lookback.glsl).
-  for (int target = int(tile); target >= 0;) {
-    bool own = target == int(tile);
-    uint i = uint(target) * kTile + lid;
-    vec3 qx[kMembers] = x, qv[kMembers] = v;
-    vec2 qlife = vec2(0.0);
-    bool lives = false;
-    if (i < inCount) {
-      qlife = loadMolecule(i, qx, qv);
-      lives = advanceMolecule(qx, qv, qlife.x, qlife.y, repulsionOf(i));
-    }
-    if (own) {
-      x = qx;
-      v = qv;
-      life = qlife;
-      alive = lives;
-      uint mine = alive ? 1u : 0u;
-      sScan[lid] = mine;
-      barrier();
-      for (uint offset = 1u; offset < 256u; offset <<= 1u) {
-        uint add = lid >= offset ? sScan[lid - offset] : 0u;
-        barrier();
-        sScan[lid] += add;
-        barrier();
-      }
-      before = sScan[lid] - mine;
-      aggregate = sScan[255];
-      barrier();
-      publishAggregate(tile, aggregate);
-    } else {
-      prefix += workgroupSum(lives ? 1u : 0u);
-      --j;
-    }
-    target = lookBackTo(tile, aggregate, j, prefix);
+  if (i < inCount) {
+    life = loadMolecule(i, x, v);
+    alive = advanceMolecule(x, v, life.x, life.y, repulsionOf(i));
   }
+  uint mine = alive ? 1u : 0u;
+  sScan[lid] = mine;
+  barrier();
+  for (uint offset = 1u; offset < 256u; offset <<= 1u) {
+    uint add = lid >= offset ? sScan[lid - offset] : 0u;
+    barrier();
+    sScan[lid] += add;
+    barrier();
+  }
+  uint before = sScan[lid] - mine;
+  uint aggregate = sScan[255];
+  barrier();
 
+  uint prefix = lookBack(tile, aggregate, inCount);
   if (lid == 0u && tile == tiles - 1u) {
     uint live = min(uBorn + prefix + aggregate, uCapacity);
     ctl.count[1 - uIn] = live;
@@ -135,9 +112,9 @@ void main() {
   }
   uint o = uBorn + prefix + before;
   if (alive && o < uCapacity) {
-    for (int m = 0; m < kMembers; ++m) {
-      outPositionLife[moleculeRecord(o, m)] = vec4(x[m], life.x);
-      outVelocityKind[moleculeRecord(o, m)] = vec4(v[m], life.y);
+    for (int j = 0; j < kMembers; ++j) {
+      outPositionLife[moleculeRecord(o, j)] = vec4(x[j], life.x);
+      outVelocityKind[moleculeRecord(o, j)] = vec4(v[j], life.y);
     }
   }
 }

@@ -33,6 +33,18 @@ layout(location = 2) uniform uint uCapacity;
 layout(location = 3) uniform uint uSpinLimit;  // reads of a predecessor's status before counting it here
 layout(location = 4) uniform bool uTrails;     // write trailSource
 
+// Whether input record i survives this update (the look-back's recount).
+bool survives(uint i) {
+#ifdef BARE_UPDATE
+  return true;  // sandstorm-bench's ceiling: the same data movement and scan, no physics
+#else
+  Particle q;
+  q.positionLife = inPositionLife[i];
+  q.velocityKind = inVelocityKind[i];
+  return advance(q);
+#endif
+}
+
 #include "tile_lookback.glsl"
 
 shared uint sTicket;
@@ -41,17 +53,6 @@ shared uvec4 sScan[256];
 #else
 shared uvec2 sScan[256];
 #endif
-
-// Steps input record i (alive: whether it lives through this update).
-bool stepRecord(uint i, out Particle q) {
-  q.positionLife = inPositionLife[i];
-  q.velocityKind = inVelocityKind[i];
-#ifdef BARE_UPDATE
-  return true;  // sandstorm-bench's ceiling: the same data movement and scan, no physics
-#else
-  return advance(q);
-#endif
-}
 
 void main() {
   uint lid = gl_LocalInvocationIndex;
@@ -62,84 +63,62 @@ void main() {
   if (tile >= tiles) return;  // the whole workgroup: a spare of the 2D dispatch
   uint inCount = ctl.count[uIn];
 
-  // Every value the loop carries starts defined: a compiler may fold
-  // "own ? stepped : undefined" to "stepped", which would keep the last
-  // recounted tile's records.
+  // Record k * 256 + lid of the tile: neighbouring invocations read neighbouring records.
   Particle p[kItems];
   bool alive[kItems];
-  uint rowStart[kItems];
   for (int k = 0; k < kItems; ++k) {
-    p[k] = Particle(vec4(0.0), vec4(0.0));
+    uint i = tile * kTile + uint(k) * 256u + lid;
     alive[k] = false;
-    rowStart[k] = 0u;
-  }
-#if ITEMS > 4
-  uvec4 before = uvec4(0u);
+    if (i < inCount) {
+      p[k].positionLife = inPositionLife[i];
+      p[k].velocityKind = inVelocityKind[i];
+#ifdef BARE_UPDATE
+      alive[k] = true;  // sandstorm-bench's ceiling: the same data movement and scan, no physics
 #else
-  uvec2 before = uvec2(0u);
+      alive[k] = advance(p[k]);
 #endif
-  uint aggregate = 0u;
-  int j = int(tile) - 1;
-  uint prefix = 0u;
-  // The one place records are stepped: this tile's, then any predecessor's
-  // the look-back has to count (tile_lookback.glsl).
-  for (int target = int(tile); target >= 0;) {
-    bool own = target == int(tile);
-    uint survivors = 0u;
-    // Record k * 256 + lid of the tile: neighbouring invocations read neighbouring records.
-    for (int k = 0; k < kItems; ++k) {
-      uint i = uint(target) * kTile + uint(k) * 256u + lid;
-      Particle q = p[k];
-      bool lives = i < inCount && stepRecord(i, q);
-      if (own) {
-        p[k] = q;
-        alive[k] = lives;
-      }
-      survivors += lives ? 1u : 0u;
     }
-    if (own) {
-      // Inclusive scan over the invocations of the rows' survivor flags (row
-      // k: records k * 256 .. k * 256 + 255 of the tile), two 16-bit
-      // counters per word (a row has at most 256 survivors). (Four records,
-      // the default, scan two words an invocation; eight, four. On an H200
-      // the narrower scan left the update 20% faster.)
-#if ITEMS > 4
-      uvec4 mine = uvec4(0u);
-#else
-      uvec2 mine = uvec2(0u);
-#endif
-      for (int k = 0; k < kItems; ++k)
-        if (alive[k]) mine[k / 2] += (k % 2 == 0) ? 1u : 0x10000u;
-      sScan[lid] = mine;
-      barrier();
-      for (uint offset = 1u; offset < 256u; offset <<= 1u) {
-#if ITEMS > 4
-        uvec4 add = lid >= offset ? sScan[lid - offset] : uvec4(0u);
-#else
-        uvec2 add = lid >= offset ? sScan[lid - offset] : uvec2(0u);
-#endif
-        barrier();
-        sScan[lid] += add;
-        barrier();
-      }
-      before = sScan[lid] - mine;
-#if ITEMS > 4
-      uvec4 total = sScan[255];
-#else
-      uvec2 total = sScan[255];
-#endif
-      for (int k = 0; k < kItems; ++k) {
-        rowStart[k] = aggregate;
-        aggregate += (total[k / 2] >> (16u * uint(k % 2))) & 0xffffu;
-      }
-      publishAggregate(tile, aggregate);
-    } else {
-      prefix += workgroupSum(survivors);
-      --j;
-    }
-    target = lookBackTo(tile, aggregate, j, prefix);
   }
 
+  // Inclusive scan over the invocations of the rows' survivor flags (row k:
+  // records k * 256 .. k * 256 + 255 of the tile), two 16-bit counters per
+  // word (a row has at most 256 survivors).
+  // (Four records, the default, scan two words an invocation; eight, four.
+  // On an H200 the narrower scan left the update 20% faster.)
+#if ITEMS > 4
+  uvec4 mine = uvec4(0u);
+#else
+  uvec2 mine = uvec2(0u);
+#endif
+  for (int k = 0; k < kItems; ++k)
+    if (alive[k]) mine[k / 2] += (k % 2 == 0) ? 1u : 0x10000u;
+  sScan[lid] = mine;
+  barrier();
+  for (uint offset = 1u; offset < 256u; offset <<= 1u) {
+#if ITEMS > 4
+    uvec4 add = lid >= offset ? sScan[lid - offset] : uvec4(0u);
+#else
+    uvec2 add = lid >= offset ? sScan[lid - offset] : uvec2(0u);
+#endif
+    barrier();
+    sScan[lid] += add;
+    barrier();
+  }
+#if ITEMS > 4
+  uvec4 before = sScan[lid] - mine;
+  uvec4 total = sScan[255];
+#else
+  uvec2 before = sScan[lid] - mine;
+  uvec2 total = sScan[255];
+#endif
+  uint rowStart[kItems];
+  uint aggregate = 0u;
+  for (int k = 0; k < kItems; ++k) {
+    rowStart[k] = aggregate;
+    aggregate += (total[k / 2] >> (16u * uint(k % 2))) & 0xffffu;
+  }
+
+  uint prefix = lookBack(tile, aggregate, inCount);
   if (lid == 0u && tile == tiles - 1u) {
     uint live = min(uBorn + prefix + aggregate, uCapacity);
     ctl.count[1 - uIn] = live;

@@ -6,23 +6,11 @@
 // counts that tile's survivors itself instead (the same rule, so the same
 // count), so the result never depends on how workgroups are scheduled.
 //
-// The includer steps records at one place only: its main loop steps the
-// records of tile `target`, first its own tile, then each predecessor that
-// lookBackTo() hands back for counting. (A second copy of the physics, for
-// the recount, made llvmpipe's compile of these shaders 3-4x slower: it turns
-// a shader with barriers into coroutines, at a cost that grows with the code.)
-//
-//   int j = int(tile) - 1;  // the next predecessor to look at
-//   uint prefix = 0u;       // survivors of tiles j+1 .. tile-1
-//   for (int target = int(tile); target >= 0;) {
-//     ... step tile target's records ...
-//     if (target == int(tile)) { ... scan them ...; publishAggregate(tile, aggregate); }
-//     else { prefix += workgroupSum(survivorsOfMine); --j; }
-//     target = lookBackTo(tile, aggregate, j, prefix);
-//   }
-//
-// The includer declares, before this file, the status buffer `status[]` and
-// the uniform uSpinLimit.
+// The includer declares, before this file: kItems and kTile (records a row
+// and a tile: row k of tile t holds records t * kTile + k * 256 .. + 255),
+// the status buffer `status[]` and the uniform uSpinLimit, and
+// `bool survives(uint record)`: whether input record `record` lives through
+// this update.
 
 const uint kAggregate = 0x40000000u;  // status: this tile's own count is published
 const uint kPrefix = 0x80000000u;     // status: the count of tiles 0..t is published
@@ -31,22 +19,14 @@ const uint kValue = 0x3fffffffu;
 shared uint sStatus;
 shared uint sCount;
 
-// Publishes tile `tile`'s own survivor count (the whole workgroup calls it).
-void publishAggregate(uint tile, uint aggregate) {
-  if (gl_LocalInvocationIndex == 0u)
-    atomicExchange(status[tile], (tile == 0u ? kPrefix : kAggregate) | aggregate);
-}
-
-// Adds the published counts of tiles j, j-1, ... to `prefix`. Returns the
-// first of them that has not published within uSpinLimit reads (j is left at
-// it: the caller counts its survivors, adds them and steps j past it), or -1
-// once `prefix` holds the survivors of tiles 0 .. tile-1; then tile `tile`'s
-// inclusive prefix is published. The whole workgroup calls it, in step: the
-// loop follows shared values.
-int lookBackTo(uint tile, uint aggregate, inout int j, inout uint prefix) {
+// Publishes tile `tile`'s own survivor count `aggregate` and returns the
+// survivors of tiles 0 .. tile-1 (the whole workgroup calls it, in step).
+uint lookBack(uint tile, uint aggregate, uint inCount) {
   uint lid = gl_LocalInvocationIndex;
-  bool complete = false;
-  while (j >= 0 && !complete) {
+  if (lid == 0u) atomicExchange(status[tile], (tile == 0u ? kPrefix : kAggregate) | aggregate);
+  // The loop is uniform: it follows shared values.
+  uint prefix = 0u;
+  for (int j = int(tile) - 1; j >= 0; --j) {
     if (lid == 0u) {
       uint s = 0u;
       for (uint spin = 0u; spin < uSpinLimit && (s & (kAggregate | kPrefix)) == 0u; ++spin)
@@ -56,25 +36,24 @@ int lookBackTo(uint tile, uint aggregate, inout int j, inout uint prefix) {
     barrier();
     uint s = sStatus;
     barrier();  // everyone has read sStatus before it changes
-    // Tile j is slow to publish: it is counted here. Needed where workgroups
-    // need not progress together (llvmpipe, which also ends any shader's
-    // loops after 65535 iterations).
-    if ((s & (kAggregate | kPrefix)) == 0u) return j;
-    prefix += s & kValue;
-    complete = (s & kPrefix) != 0u;
-    --j;
+    if ((s & (kAggregate | kPrefix)) != 0u) {
+      prefix += s & kValue;
+      if ((s & kPrefix) != 0u) break;
+    } else {
+      // Tile j is slow to publish: count its survivors here. Needed where
+      // workgroups need not progress together (llvmpipe, which also ends any
+      // shader's loops after 65535 iterations).
+      if (lid == 0u) sCount = 0u;
+      barrier();
+      for (int k = 0; k < kItems; ++k) {
+        uint i = uint(j) * kTile + uint(k) * 256u + lid;
+        if (i < inCount && survives(i)) atomicAdd(sCount, 1u);
+      }
+      barrier();
+      prefix += sCount;
+      barrier();
+    }
   }
   if (lid == 0u && tile > 0u) atomicExchange(status[tile], kPrefix | (prefix + aggregate));
-  return -1;
-}
-
-// The sum over the workgroup of each invocation's `mine`.
-uint workgroupSum(uint mine) {
-  if (gl_LocalInvocationIndex == 0u) sCount = 0u;
-  barrier();
-  if (mine != 0u) atomicAdd(sCount, mine);
-  barrier();
-  uint sum = sCount;
-  barrier();  // everyone has read sCount before it changes
-  return sum;
+  return prefix;
 }
