@@ -17,14 +17,18 @@
 #include <vtkIdList.h>
 #include <vtkMath.h>
 #include <vtkNew.h>
+#include <vtkPointData.h>
 #include <vtkPointSet.h>
 #include <vtkPoints.h>
 #include <vtkPolyData.h>
+#include <vtkRectilinearGrid.h>
+#include <vtkStructuredGrid.h>
 #include <vtkTypeInt32Array.h>
 #include <vtkTypeInt64Array.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
+#include "core/io/hexahedron_inverse.h"
 #include "core/util/error.h"
 #include "core/util/parallel_for.h"
 #include "core/util/progress_meter.h"
@@ -55,9 +59,19 @@ struct ArrayView {
   }
 };
 
+// How a source's cells are looked at: through VTK's cells, or inline.
+enum class Cells {
+  Any,           // vtkDataSet::GetCell and the cell's EvaluatePosition
+  Unstructured,  // an unstructured grid: its tetrahedra and hexahedra inline
+  Structured,    // a 3D structured grid: hexahedra, their points from (i, j, k)
+  Rectilinear,   // a 3D rectilinear grid: voxels from the axes' coordinates
+};
+
 struct Source {
   vtkDataSet* data = nullptr;
-  bool tetraFastPath = false;  // an unstructured grid: its tetrahedra inline
+  Cells cells = Cells::Any;
+  glm::ivec3 pointDims{0};      // Structured, Rectilinear
+  std::vector<double> axes[3];  // Rectilinear: each axis's coordinates
   vtkUnsignedCharArray* ghosts = nullptr;
   std::vector<ArrayView> arrays;
   std::uint64_t firstCell = 0;  // of all sources' cells together
@@ -85,10 +99,52 @@ bool isGhost(const Source& s, vtkIdType cell) {
   return (g & (vtkDataSetAttributes::DUPLICATECELL | vtkDataSetAttributes::HIDDENCELL)) != 0;
 }
 
+// A structured grid's cell (i, j, k): its corner (i, j, k) and the points
+// after it in vtkStructuredGrid::GetCell's order, bottom face then top.
+// (Fewer than 2^32 cells: 32-bit division, the faster.)
+glm::ivec3 cellIndex(const Source& s, vtkIdType cell) {
+  const auto c = std::uint32_t(cell), nx = std::uint32_t(s.pointDims.x - 1),
+             ny = std::uint32_t(s.pointDims.y - 1);
+  const std::uint32_t row = c / nx;
+  return {int(c - row * nx), int(row % ny), int(row / ny)};
+}
+
+void structuredIds(const Source& s, vtkIdType cell, std::vector<vtkIdType>& ids) {
+  const glm::ivec3 c = cellIndex(s, cell);
+  const vtkIdType row = s.pointDims.x, layer = vtkIdType(s.pointDims.x) * s.pointDims.y;
+  const vtkIdType p = c.x + row * c.y + layer * c.z;
+  ids.assign({p, p + 1, p + 1 + row, p + row, p + layer, p + layer + 1, p + layer + 1 + row,
+              p + layer + row});
+}
+
+// A rectilinear grid's voxel: points in vtkVoxel's order (x fastest, then y,
+// then z), corners from the axes' coordinates.
+bool voxelBounds(const Source& s, vtkIdType cell, Workspace& w, glm::dvec3& lo, glm::dvec3& hi) {
+  const glm::ivec3 c = cellIndex(s, cell);
+  const vtkIdType row = s.pointDims.x, layer = vtkIdType(s.pointDims.x) * s.pointDims.y;
+  const vtkIdType p = c.x + row * c.y + layer * c.z;
+  w.ids.resize(8);
+  w.corners.resize(24);
+  for (int n = 0; n < 8; ++n) {
+    const glm::ivec3 o(n & 1, (n >> 1) & 1, n >> 2);
+    w.ids[std::size_t(n)] = p + o.x + row * o.y + layer * o.z;
+    for (int a = 0; a < 3; ++a)
+      w.corners[std::size_t(3 * n + a)] = s.axes[a][std::size_t(c[a] + o[a])];
+  }
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = std::min(w.corners[std::size_t(a)], w.corners[std::size_t(21 + a)]);
+    hi[a] = std::max(w.corners[std::size_t(a)], w.corners[std::size_t(21 + a)]);
+  }
+  return true;
+}
+
 // The cell's points (ids into w.ids, coordinates into w.corners) and its box.
 // False for a cell without points.
 bool cellBounds(const Source& s, vtkIdType cell, Workspace& w, glm::dvec3& lo, glm::dvec3& hi) {
-  if (s.offsets64) {
+  if (s.cells == Cells::Rectilinear) return voxelBounds(s, cell, w, lo, hi);
+  if (s.cells == Cells::Structured) {
+    structuredIds(s, cell, w.ids);
+  } else if (s.offsets64) {
     w.ids.assign(s.connectivity64 + s.offsets64[cell], s.connectivity64 + s.offsets64[cell + 1]);
   } else if (s.offsets32) {
     w.ids.assign(s.connectivity32 + s.offsets32[cell], s.connectivity32 + s.offsets32[cell + 1]);
@@ -147,6 +203,44 @@ IndexBox indexBox(const UniformGrid& g, const glm::dvec3& lo, const glm::dvec3& 
   return box;
 }
 
+// vtkCell::GetParametricDistance: how far outside the unit cube, at most.
+double parametricDistance(const double p[3]) {
+  double most = 0.0;
+  for (int a = 0; a < 3; ++a)
+    most = std::max(most, p[a] < 0.0 ? -p[a] : (p[a] > 1.0 ? p[a] - 1.0 : 0.0));
+  return most;
+}
+
+// Which cells of `data` are looked at inline; a structured or rectilinear
+// grid's dimensions (and a rectilinear one's coordinates) into `s`. Grids
+// flat along an axis (quads, pixels) and structured grids with blanked
+// points go through VTK's cells.
+Cells inlineCells(vtkDataSet* data, Source& s) {
+  if (vtkUnstructuredGrid::SafeDownCast(data)) return Cells::Unstructured;
+  int d[3] = {0, 0, 0};
+  if (auto* grid = vtkStructuredGrid::SafeDownCast(data)) {
+    grid->GetDimensions(d);
+    if (d[0] < 2 || d[1] < 2 || d[2] < 2 || !grid->GetPoints() ||
+        data->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName()))
+      return Cells::Any;
+    s.pointDims = {d[0], d[1], d[2]};
+    return Cells::Structured;
+  }
+  if (auto* grid = vtkRectilinearGrid::SafeDownCast(data)) {
+    grid->GetDimensions(d);
+    vtkDataArray* axes[3] = {grid->GetXCoordinates(), grid->GetYCoordinates(),
+                             grid->GetZCoordinates()};
+    for (int a = 0; a < 3; ++a)
+      if (d[a] < 2 || !axes[a] || axes[a]->GetNumberOfTuples() != d[a]) return Cells::Any;
+    s.pointDims = {d[0], d[1], d[2]};
+    for (int a = 0; a < 3; ++a)
+      for (vtkIdType i = 0; i < d[a]; ++i)
+        s.axes[a].push_back(axes[a]->GetComponent(i, 0));
+    return Cells::Rectilinear;
+  }
+  return Cells::Any;
+}
+
 class Resampler {
  public:
   Resampler(std::span<const MeshSource> sources, const UniformGrid& grid) : grid_(grid) {
@@ -160,8 +254,8 @@ class Resampler {
         poly->BuildCells();
       if (m.data->GetNumberOfCells() > 0) m.data->GetCell(0, workspace_.cell);
       m.data->ComputeBounds();
+      s.cells = inlineCells(m.data, s);
       if (auto* grid = vtkUnstructuredGrid::SafeDownCast(m.data)) {
-        s.tetraFastPath = true;
         if (vtkCellArray* cells = grid->GetCells(); cells && cells->GetNumberOfCells() > 0) {
           if (cells->IsStorage64Bit()) {
             s.offsets64 = cells->GetOffsetsArray64()->GetPointer(0);
@@ -302,9 +396,21 @@ class Resampler {
     box.lo[axis_] = std::max(box.lo[axis_], slabBegin_[std::size_t(slab)]);
     box.hi[axis_] = std::min(box.hi[axis_], slabBegin_[std::size_t(slab) + 1] - 1);
     if (box.empty()) return;
+    if (s.cells == Cells::Rectilinear) {
+      visitVoxel(s, box, w);
+      return;
+    }
+    if (s.cells == Cells::Structured) {
+      visitHexahedron(s, box, w);
+      return;
+    }
     const int type = s.data->GetCellType(cell);
-    if (s.tetraFastPath && type == VTK_TETRA && w.ids.size() == 4) {
+    if (s.cells == Cells::Unstructured && type == VTK_TETRA && w.ids.size() == 4) {
       visitTetra(s, box, w);
+      return;
+    }
+    if (s.cells == Cells::Unstructured && type == VTK_HEXAHEDRON && w.ids.size() == 8) {
+      visitHexahedron(s, box, w);
       return;
     }
     s.data->GetCell(cell, w.cell);
@@ -358,6 +464,40 @@ class Resampler {
       w.weights[2] = s1;
       w.weights[3] = t;
       write(s, index, float(badness), w.ids.data(), 4, w.weights);
+    });
+  }
+
+  // vtkHexahedron::EvaluatePosition (HexahedronInverse) without building one.
+  void visitHexahedron(const Source& s, const IndexBox& box, Workspace& w) {
+    const HexahedronInverse hexahedron(w.corners.data());
+    double pcoords[3];
+    forEachPoint(box, [&](const double x[3], std::size_t index) {
+      if (hexahedron.locate(x, pcoords, w.weights.data()) != HexahedronInverse::Result::Inside)
+        return;
+      const double badness = parametricDistance(pcoords);
+      if (badness < double(best_[index]))
+        write(s, index, float(badness), w.ids.data(), 8, w.weights);
+    });
+  }
+
+  // vtkVoxel::EvaluatePosition's arithmetic: no tolerance, so a point a voxel
+  // holds lies in it (badness 0), and the first voxel that holds it keeps it.
+  void visitVoxel(const Source& s, const IndexBox& box, Workspace& w) {
+    const double* c = w.corners.data();
+    const double extent[3] = {c[3] - c[0], c[7] - c[1], c[14] - c[2]};
+    forEachPoint(box, [&](const double x[3], std::size_t index) {
+      double p[3];
+      for (int a = 0; a < 3; ++a) {
+        p[a] = (x[a] - c[a]) / extent[a];
+        if (!(p[a] >= 0.0 && p[a] <= 1.0)) return;
+      }
+      if (best_[index] <= 0.0f) return;
+      const double rm = 1.0 - p[0], sm = 1.0 - p[1], tm = 1.0 - p[2];
+      double* wt = w.weights.data();
+      wt[0] = rm * sm * tm, wt[1] = p[0] * sm * tm, wt[2] = rm * p[1] * tm;
+      wt[3] = p[0] * p[1] * tm, wt[4] = rm * sm * p[2], wt[5] = p[0] * sm * p[2];
+      wt[6] = rm * p[1] * p[2], wt[7] = p[0] * p[1] * p[2];
+      write(s, index, 0.0f, w.ids.data(), 8, w.weights);
     });
   }
 

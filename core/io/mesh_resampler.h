@@ -6,10 +6,12 @@
 //
 // A grid point takes the values interpolated in the cell that holds it: the
 // cell's own interpolation weights (VTK's EvaluatePosition; for linear
-// tetrahedra the same arithmetic, inline) applied to the cell's point values
+// tetrahedra and hexahedra, and a 3D structured or rectilinear grid's cells,
+// the same arithmetic inline, without a vtkCell each) applied to the cell's point values
 // in double precision, rounded to float. A point is held by a 3D cell when
-// its parametric coordinates lie within the cell (VTK's tolerance of 0.001 in
-// parametric units), by a 2D or 1D cell within a thousandth of the cell's size
+// its parametric coordinates lie within the cell (within VTK's tolerance for
+// the cell's type: 0.001 in parametric units for a tetrahedron, 1e-6 for a
+// hexahedron, none for a voxel), by a 2D or 1D cell within a thousandth of the cell's size
 // of it. Where several cells hold a point (on a shared face, or within the
 // tolerance of one cell and inside another) the one it lies deepest in wins,
 // and among equals the first (sources in order, cells by id), so the result

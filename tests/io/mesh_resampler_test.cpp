@@ -1,6 +1,7 @@
 // The mesh resampler against VTK's vtkProbeFilter (what ParaView's Resample To
-// Image runs), on jittered meshes of tetrahedra (the resampler's inline path),
-// hexahedra and wedges (VTK's own cells) carrying a curved flow.
+// Image runs), on jittered meshes of tetrahedra and hexahedra (the resampler's
+// inline paths) and wedges (VTK's own cells), a curvilinear structured grid and
+// a stretched rectilinear one (inline too), carrying a curved flow.
 //
 // The two agree on which points lie in the mesh, and on every value to float
 // rounding, but where a point lies within VTK's tolerance (a thousandth of a
@@ -12,10 +13,13 @@
 
 #include <cmath>
 
+#include <vtkDoubleArray.h>
 #include <vtkGenericCell.h>
 #include <vtkImageData.h>
 #include <vtkProbeFilter.h>
+#include <vtkRectilinearGrid.h>
 #include <vtkStaticCellLocator.h>
+#include <vtkStructuredGrid.h>
 
 #include "core/io/mesh_resampler.h"
 #include "tests/io/io_test_util.h"
@@ -77,6 +81,42 @@ vtkSmartPointer<vtkUnstructuredGrid> boxMesh(int n, bool wedges) {
   return mesh;
 }
 
+// n^3 warped hexahedra of a structured grid over about [0, 1]^3.
+vtkSmartPointer<vtkStructuredGrid> curvilinearGrid(int n) {
+  vtkNew<vtkPoints> points;
+  for (int k = 0; k <= n; ++k)
+    for (int j = 0; j <= n; ++j)
+      for (int i = 0; i <= n; ++i) {
+        const double u = double(i) / n, v = double(j) / n, w = double(k) / n;
+        points->InsertNextPoint(u + 0.15 * w + 0.04 * std::sin(6.0 * v), v + 0.05 * u * w,
+                                w * (1.0 + 0.2 * u) + 0.03 * std::sin(5.0 * u + 3.0 * v));
+      }
+  auto grid = vtkSmartPointer<vtkStructuredGrid>::New();
+  grid->SetDimensions(n + 1, n + 1, n + 1);
+  grid->SetPoints(points);
+  addFlow(grid);
+  return grid;
+}
+
+// A rectilinear grid over [0, 1]^3: stretched along x and z, even along y
+// (where its coordinates fall on the resampling grid's points).
+vtkSmartPointer<vtkRectilinearGrid> stretchedGrid(int n) {
+  auto grid = vtkSmartPointer<vtkRectilinearGrid>::New();
+  grid->SetDimensions(n + 1, n + 1, n + 1);
+  vtkNew<vtkDoubleArray> axes[3];
+  for (int i = 0; i <= n; ++i) {
+    const double u = double(i) / n;
+    axes[0]->InsertNextValue(u * u);
+    axes[1]->InsertNextValue(u);
+    axes[2]->InsertNextValue(u + 0.3 * u * (1.0 - u));
+  }
+  grid->SetXCoordinates(axes[0]);
+  grid->SetYCoordinates(axes[1]);
+  grid->SetZCoordinates(axes[2]);
+  addFlow(grid);
+  return grid;
+}
+
 // Every cell that holds x by VTK's rule, with its interpolated flow and how
 // far outside it x lies, parametrically.
 struct Holder {
@@ -102,7 +142,7 @@ std::vector<Holder> holders(vtkDataSet* mesh, const double x[3]) {
   return out;
 }
 
-void compareWithProbe(vtkUnstructuredGrid* mesh, const glm::ivec3& dims) {
+void compareWithProbe(vtkDataSet* mesh, const glm::ivec3& dims) {
   double b[6];
   mesh->GetBounds(b);
   UniformGrid grid;
@@ -174,6 +214,16 @@ TEST(MeshResampler, HexahedraAgreeWithVtkProbeFilter) {
 TEST(MeshResampler, WedgesAgreeWithVtkProbeFilter) {
   test::scratch();
   compareWithProbe(boxMesh(5, true), {26, 26, 26});
+}
+
+TEST(MeshResampler, StructuredGridsAgreeWithVtkProbeFilter) {
+  test::scratch();
+  compareWithProbe(curvilinearGrid(9), {33, 29, 31});
+}
+
+TEST(MeshResampler, RectilinearGridsAgreeWithVtkProbeFilter) {
+  test::scratch();
+  compareWithProbe(stretchedGrid(8), {27, 33, 25});
 }
 
 // The same grid however many threads the machine has and however they are
