@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <mutex>
 #include <optional>
 #include <type_traits>
@@ -18,6 +19,7 @@
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
 #include <vtkMatrix3x3.h>
+#include <vtkPartitionedDataSet.h>
 #include <vtkPointData.h>
 #include <vtkRectilinearGrid.h>
 #include <vtkSmartPointer.h>
@@ -350,7 +352,10 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
   const std::vector<VtkBlock> blocks = vtkBlocks(object);
   if (blocks.empty()) throw Error(concat(file, ": holds no points (no dataset, or empty blocks)"));
   listArrays(blocks, report);
-  const bool composite = vtkDataSet::SafeDownCast(object) == nullptr;
+  // A parallel file's pieces (a partitioned dataset) are one dataset in
+  // parts, not blocks to list.
+  const bool composite = vtkDataSet::SafeDownCast(object) == nullptr &&
+                         vtkPartitionedDataSet::SafeDownCast(object) == nullptr;
   for (const VtkBlock& b : blocks) {
     report.cells += std::uint64_t(b.data->GetNumberOfCells());
     report.points += std::uint64_t(b.data->GetNumberOfPoints());
@@ -395,8 +400,9 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
   }
 
   const bool single = used.size() == 1;
+  // A structured parallel file's pieces: their reader gave the whole grid's.
   if (single) report.sourceDims = nativeDims(used.front().data);
-  const bool structured = single && report.sourceDims != glm::ivec3(0);
+  const bool structured = report.sourceDims != glm::ivec3(0);
   const bool keep = options.resolution == glm::ivec3(0) || options.resolution == report.sourceDims;
   if (auto* image = vtkImageData::SafeDownCast(used.front().data); single && image && keep)
     return copyImage(image, choice.name, path, options.halfPrecision, report);
@@ -472,21 +478,24 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
   }
   report.resampled = true;
 
+  // The resampled vectors become the field's in place (x y z floats, as a
+  // VectorValues holds them): the grid is not held twice.
   const std::size_t points = grid.points();
-  std::vector<glm::vec3> vectors(points);
+  auto resampled = std::make_shared<std::vector<float>>(std::move(sampled.values[0]));
+  auto* vectors = reinterpret_cast<glm::vec3*>(resampled->data());
   std::size_t nonFinite = 0;
   for (std::size_t p = 0; p < points; ++p) {
-    const float* v = &sampled.values[0][3 * p];
-    const glm::vec3 value(v[0], v[1], v[2]);
-    if (!sampled.valid[p]) continue;
-    if (std::isfinite(value.x) && std::isfinite(value.y) && std::isfinite(value.z))
-      vectors[p] = value;
-    else
+    glm::vec3& v = vectors[p];
+    if (!sampled.valid[p]) {
+      v = glm::vec3(0.0f);
+    } else if (!(std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z))) {
+      v = glm::vec3(0.0f);
       ++nonFinite;
+    }
   }
   reportNonFinite(nonFinite, path, choice.name, report);
   Box box{glm::vec3(bounds.min), glm::vec3(bounds.max)};
-  VectorField field(box, dims, std::move(vectors));
+  VectorField field(box, dims, VectorValues::adopt(vectors, points, resampled));
   field.setValidity(std::move(sampled.valid));
   for (std::size_t s = 0; s < scalars.size(); ++s) {
     std::vector<float>& values = sampled.values[s + 1];

@@ -25,8 +25,19 @@ VtkProgress::VtkProgress(vtkAlgorithm* reader, const std::filesystem::path& file
     : VtkProgress(reader, "reading " + file.filename().string(), fileSize(file)) {}
 
 VtkProgress::VtkProgress(vtkAlgorithm* algorithm, const std::string& what, double bytes)
-    : algorithm_(algorithm), bytes_(bytes) {
-  meter_ = std::make_unique<ProgressMeter>(what, std::uint64_t(bytes_), "bytes");
+    : algorithm_(algorithm),
+      owned_(std::make_unique<ProgressMeter>(what, std::uint64_t(bytes), "bytes")),
+      meter_(owned_.get()),
+      bytes_(bytes) {
+  observe();
+}
+
+VtkProgress::VtkProgress(vtkAlgorithm* algorithm, ProgressMeter& shared, double bytes)
+    : algorithm_(algorithm), meter_(&shared), bytes_(bytes) {
+  observe();
+}
+
+void VtkProgress::observe() {
   callback_ = vtkSmartPointer<vtkCallbackCommand>::New();
   callback_->SetClientData(this);
   callback_->SetCallback([](vtkObject*, unsigned long, void* self, void* data) {
@@ -46,7 +57,7 @@ VtkProgress::~VtkProgress() {
 }
 
 void VtkProgress::finish() {
-  meter_->finish();
+  if (owned_) owned_->finish();
 }
 
 }  // namespace sandstorm

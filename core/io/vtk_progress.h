@@ -23,18 +23,24 @@ class VtkProgress {
   VtkProgress(vtkAlgorithm* algorithm, const std::string& what, double bytes);
   // Reading `file`: its size.
   VtkProgress(vtkAlgorithm* reader, const std::filesystem::path& file);
+  // One of several readers at once adding to `shared` (`bytes`: this one's
+  // share); the meter's owner finishes it.
+  VtkProgress(vtkAlgorithm* algorithm, ProgressMeter& shared, double bytes);
   ~VtkProgress();
   VtkProgress(const VtkProgress&) = delete;
   VtkProgress& operator=(const VtkProgress&) = delete;
 
-  // The work is over: the total time, if anything was said.
+  // The work is over: the total time, if anything was said (an owned meter).
   void finish();
 
  private:
+  void observe();
+
   vtkAlgorithm* algorithm_;
   unsigned long tag_ = 0;
   vtkSmartPointer<vtkCallbackCommand> callback_;
-  std::unique_ptr<ProgressMeter> meter_;
+  std::unique_ptr<ProgressMeter> owned_;
+  ProgressMeter* meter_ = nullptr;
   double bytes_ = 0.0, reported_ = 0.0;
 };
 

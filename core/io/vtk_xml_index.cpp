@@ -1,8 +1,10 @@
 #include "core/io/vtk_xml_index.h"
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <functional>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -12,6 +14,7 @@
 #include <vtkDataSet.h>
 #include <vtkInformation.h>
 #include <vtkNew.h>
+#include <vtkPartitionedDataSet.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkXMLDataElement.h>
 #include <vtkXMLDataParser.h>
@@ -27,6 +30,7 @@
 #include "core/io/vtk_cell_check.h"
 #include "core/io/vtk_message_trap.h"
 #include "core/io/vtk_xml_check.h"
+#include "core/io/vtk_xml_pieces.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -203,14 +207,17 @@ fs::path resolve(const fs::path& index, const Entry& e) {
 struct Leaf {
   fs::path file;
   std::string where;                  // "run.pvtu: Piece 2 (run_1.vtu)"
+  std::string name;                   // "Piece 2 (run_1.vtu)"
   std::vector<VtkXmlArray> declared;  // what its parallel index declares
   std::string extent;                 // the Extent the index gives a structured piece
 };
 
 // VTK copies a structured piece into the place its index's Extent gives it,
 // sized by the piece file's own: the two must be one.
-void checkPieceExtent(const Leaf& leaf, const VtkXmlSummary& summary) {
-  if (leaf.extent.empty()) return;
+// Returns the extent; none for a piece without one (unstructured).
+std::optional<std::array<long long, 6>> checkPieceExtent(const Leaf& leaf,
+                                                         const VtkXmlSummary& summary) {
+  if (leaf.extent.empty()) return std::nullopt;
   std::array<long long, 6> e{};
   std::istringstream in(leaf.extent);
   for (long long& v : e)
@@ -221,6 +228,42 @@ void checkPieceExtent(const Leaf& leaf, const VtkXmlSummary& summary) {
     throw Error(concat(leaf.where, ": the index gives it the Extent '", leaf.extent,
                        "', but the file holds ",
                        summary.extents.size() == 1 ? "another" : "not exactly one piece's"));
+  return e;
+}
+
+// The union of the pieces' extents, within the budget (12 bytes a point)
+// before any piece is read: the grid the pieces make together.
+glm::ivec3 wholeDims(const std::string& file, const std::vector<std::array<long long, 6>>& extents,
+                     const LoadOptions& options) {
+  std::array<long long, 6> whole = extents.front();
+  for (const auto& e : extents)
+    for (int a = 0; a < 3; ++a) {
+      whole[2 * a] = std::min(whole[2 * a], e[2 * a]);
+      whole[2 * a + 1] = std::max(whole[2 * a + 1], e[2 * a + 1]);
+    }
+  double points = 1.0;
+  glm::ivec3 dims;
+  for (int a = 0; a < 3; ++a) {
+    const long long n = whole[2 * a + 1] - whole[2 * a] + 1;
+    if (n <= 0 || n > (1ll << 30))
+      throw Error(concat(file, ": its pieces' extents span ", whole[2 * a], "..", whole[2 * a + 1],
+                         " along ", "xyz"[a], "; expected at least one point"));
+    dims[a] = int(n);
+    points *= double(n);
+  }
+  if (points > double(VectorField::kMaxPoints) || points * 12.0 > double(options.memoryBudget))
+    throw Error(concat(file, ": its pieces make a grid of ", points,
+                       " points, beyond the memory budget (field.memory_budget) of ",
+                       options.memoryBudget, " bytes"));
+  return dims;
+}
+
+// A parallel file of several structured or unstructured pieces: read at once
+// (vtk_xml_pieces.h), not merged.
+bool readsPiecesAtOnce(FieldFormat format, std::size_t pieces) {
+  return pieces > 1 &&
+         (format == FieldFormat::VtkPRectilinearGrid || format == FieldFormat::VtkPStructuredGrid ||
+          format == FieldFormat::VtkPUnstructuredGrid || format == FieldFormat::VtkPPolyData);
 }
 
 // The index's files, checked, into `leaves`.
@@ -237,7 +280,7 @@ void collect(const fs::path& path, FieldFormat format, std::vector<Leaf>& leaves
     if (format != FieldFormat::VtkMultiBlock && kind != pieceFormat(format))
       throw Error(concat(where, " is a ", describe(kind), "; the pieces of a ", describe(format),
                          " are each a ", describe(pieceFormat(format))));
-    leaves.push_back({target, where, index.declared, e.extent});
+    leaves.push_back({target, where, concat(e.label, " (", e.name, ")"), index.declared, e.extent});
   }
 }
 
@@ -300,10 +343,11 @@ vtkSmartPointer<vtkDataObject> readVtkXmlIndex(const fs::path& path, FieldFormat
   collect(path, format, files);
   double bytes = 0.0;
   std::vector<std::pair<fs::path, std::vector<VtkXmlRawArray>>> raw;  // each file's raw arrays
+  std::vector<std::array<long long, 6>> extents;
   for (const Leaf& f : files) {
     VtkXmlSummary summary = checkVtkXml(f.file, options.memoryBudget);
     checkPieceArrays(f.where, f.declared, summary.arrays);
-    checkPieceExtent(f, summary);
+    if (const auto e = checkPieceExtent(f, summary)) extents.push_back(*e);
     bytes += summary.bytes;
     raw.emplace_back(f.file, std::move(summary.raw));
   }
@@ -312,6 +356,22 @@ vtkSmartPointer<vtkDataObject> readVtkXmlIndex(const fs::path& path, FieldFormat
                        " bytes together, beyond twice the memory budget (field.memory_budget) of ",
                        options.memoryBudget, " bytes"));
   vtkSmartPointer<vtkDataObject> out;
+  if (readsPiecesAtOnce(format, files.size())) {
+    const bool structured =
+        format == FieldFormat::VtkPRectilinearGrid || format == FieldFormat::VtkPStructuredGrid;
+    if (structured && extents.size() == files.size())
+      report.sourceDims = wholeDims(file, extents, options);
+    std::vector<VtkXmlPiece> pieces;
+    for (const Leaf& f : files)
+      pieces.push_back({f.file, f.where, f.name});
+    out = readVtkXmlPieces(pieces, pieceFormat(format),
+                           concat("reading ", path.filename().string()), options.showProgress);
+    for (const VtkBlock& b : vtkBlocks(out))
+      checkVtkCells(b.data, concat(file, ": ", b.name));
+    report.notes.push_back(
+        concat(files.size(), " pieces read at once and resampled together (not merged)"));
+    return out;
+  }
   switch (format) {
     case FieldFormat::VtkPImageData:
       out = read<ParallelImageReader>(path, options, "parallel image data", true,

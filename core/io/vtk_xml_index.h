@@ -1,7 +1,9 @@
 // readVtkXmlIndex(): the VTK XML files that name other files, read by VTK's
 // own readers: the parallel files (.pvti .pvtr .pvts .pvtu .pvtp: pieces of
-// one dataset, merged into it) and multiblock files (.vtm: blocks of any
-// kind, kept as blocks for extractVectorField to merge).
+// one dataset; a .pvti's merged into one image, the others' read several at
+// once and kept as the partitions of a vtkPartitionedDataSet, vtk_xml_pieces.h)
+// and multiblock files (.vtm: blocks of any kind, kept as blocks for
+// extractVectorField to merge).
 //
 // Before VTK opens a piece or block, the index is parsed (VTK's XML parser)
 // and every file it names is checked:

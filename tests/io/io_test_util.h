@@ -31,6 +31,21 @@ inline glm::dvec3 asymmetric(const glm::dvec3& p) {
   return {p.x + 1.0, 2.0 * p.y - 2.0, 3.0 * p.z + 0.5};
 }
 
+// The asymmetric field at `data`'s points: a float point array "velocity".
+inline void addAsymmetricVelocity(vtkDataSet* data) {
+  vtkNew<vtkFloatArray> v;
+  v->SetName("velocity");
+  v->SetNumberOfComponents(3);
+  v->SetNumberOfTuples(data->GetNumberOfPoints());
+  for (vtkIdType i = 0; i < data->GetNumberOfPoints(); ++i) {
+    double p[3];
+    data->GetPoint(i, p);
+    const glm::dvec3 a = asymmetric({p[0], p[1], p[2]});
+    v->SetTuple3(i, a.x, a.y, a.z);
+  }
+  data->GetPointData()->AddArray(v);
+}
+
 // An image of the asymmetric field as float vectors "velocity" over
 // `extent`, with `origin` and `spacing`.
 inline vtkSmartPointer<vtkImageData> asymmetricImage(const int (&extent)[6], glm::dvec3 origin,
@@ -39,17 +54,8 @@ inline vtkSmartPointer<vtkImageData> asymmetricImage(const int (&extent)[6], glm
   im->SetExtent(extent[0], extent[1], extent[2], extent[3], extent[4], extent[5]);
   im->SetOrigin(origin.x, origin.y, origin.z);
   im->SetSpacing(spacing.x, spacing.y, spacing.z);
-  vtkNew<vtkFloatArray> v;
-  v->SetName("velocity");
-  v->SetNumberOfComponents(3);
-  v->SetNumberOfTuples(im->GetNumberOfPoints());
-  for (vtkIdType i = 0; i < im->GetNumberOfPoints(); ++i) {
-    double p[3];
-    im->GetPoint(i, p);
-    const glm::dvec3 a = asymmetric({p[0], p[1], p[2]});
-    v->SetTuple3(i, a.x, a.y, a.z);
-  }
-  im->GetPointData()->SetVectors(v);
+  addAsymmetricVelocity(im);
+  im->GetPointData()->SetActiveVectors("velocity");
   return im;
 }
 

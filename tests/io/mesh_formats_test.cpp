@@ -7,6 +7,8 @@
 #include <vtkArrayCalculator.h>
 #include <vtkCellArray.h>
 #include <vtkCompositeDataSet.h>
+#include <vtkExtractGrid.h>
+#include <vtkExtractRectilinearGrid.h>
 #include <vtkExtractUnstructuredGridPiece.h>
 #include <vtkImageData.h>
 #include <vtkInformation.h>
@@ -14,11 +16,15 @@
 #include <vtkPolyData.h>
 #include <vtkPolyDataWriter.h>
 #include <vtkRTAnalyticSource.h>
+#include <vtkRectilinearGrid.h>
+#include <vtkStructuredGrid.h>
 #include <vtkUnstructuredGridWriter.h>
 #include <vtkXMLMultiBlockDataWriter.h>
 #include <vtkXMLPImageDataWriter.h>
 #include <vtkXMLPUnstructuredGridWriter.h>
 #include <vtkXMLPolyDataWriter.h>
+#include <vtkXMLRectilinearGridWriter.h>
+#include <vtkXMLStructuredGridWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include "core/io/field_loader.h"
@@ -220,12 +226,103 @@ TEST(MeshFormats, ParallelUnstructuredPiecesWithGhostCellsMergeIntoTheWholeMesh)
   LoadReport report;
   const VectorField f = loadField(path, options, &report);
   const VectorField g = loadField(whole, options);
-  EXPECT_TRUE(hasNote(report, "3 pieces merged"));
+  EXPECT_TRUE(hasNote(report, "3 pieces read at once"));
   EXPECT_GT(report.cells, std::uint64_t(mesh->GetNumberOfCells()));  // the ghosts, twice
   test::expectL(f, asymmetric, kExact);
   ASSERT_EQ(f.pointCount(), g.pointCount());
   for (std::size_t p = 0; p < f.pointCount(); ++p)
     ASSERT_LE(glm::length(f.values()[p] - g.values()[p]), 1e-6f) << "point " << p;
+}
+
+// `grid` (structured or rectilinear, 9 x 8 x 10 points) written whole and as
+// three pieces along z that share a layer of points, with the index a
+// simulation's writer makes: "whole.vts" or "whole.vtr", and "split.pvts" or
+// "split.pvtr".
+template <class Writer, class Extract>
+void writeWholeAndPieces(vtkDataSet* grid, const std::filesystem::path& dir, const std::string& ext,
+                         const std::string& type) {
+  vtkNew<Writer> whole;
+  whole->SetInputData(grid);
+  whole->SetFileName((dir / ("whole." + ext)).c_str());
+  ASSERT_EQ(whole->Write(), 1);
+  std::string index =
+      "<VTKFile type=\"P" + type + "\" version=\"0.1\" byte_order=\"LittleEndian\">\n<P" + type +
+      " WholeExtent=\"0 8 0 7 0 9\" GhostLevel=\"0\">\n<PPointData><PDataArray "
+      "type=\"Float32\" Name=\"velocity\" NumberOfComponents=\"3\"/></PPointData>\n";
+  index += ext == "vts"
+               ? "<PPoints><PDataArray type=\"Float32\" NumberOfComponents=\"3\"/></PPoints>\n"
+               : "<PCoordinates><PDataArray type=\"Float64\"/><PDataArray type=\"Float64\"/>"
+                 "<PDataArray type=\"Float64\"/></PCoordinates>\n";
+  const int layers[4] = {0, 3, 6, 9};
+  for (int p = 0; p < 3; ++p) {
+    vtkNew<Extract> extract;
+    extract->SetInputData(grid);
+    extract->SetVOI(0, 8, 0, 7, layers[p], layers[p + 1]);
+    vtkNew<Writer> w;
+    w->SetInputConnection(extract->GetOutputPort());
+    const std::string name = "split_" + std::to_string(p) + "." + ext;
+    w->SetFileName((dir / name).c_str());
+    ASSERT_EQ(w->Write(), 1);
+    index += "<Piece Extent=\"0 8 0 7 " + std::to_string(layers[p]) + " " +
+             std::to_string(layers[p + 1]) + "\" Source=\"" + name + "\"/>\n";
+  }
+  index += "</P" + type + ">\n</VTKFile>\n";
+  test::writeText(dir / ("split.p" + ext), index);
+}
+
+void expectSameField(const VectorField& f, const VectorField& g) {
+  ASSERT_EQ(f.dims(), g.dims());
+  EXPECT_EQ(f.bounds().min, g.bounds().min);
+  EXPECT_EQ(f.bounds().max, g.bounds().max);
+  EXPECT_EQ(f.invalidCount(), g.invalidCount());
+  for (std::size_t p = 0; p < f.pointCount(); ++p)
+    ASSERT_LE(glm::length(f.values()[p] - g.values()[p]), 1e-6f) << "point " << p;
+}
+
+// A curvilinear and a rectilinear grid in pieces: read several at once and
+// resampled as the pieces they are, they load as VTK's reader of the whole
+// file makes them: the same grid of points (the pieces' whole extent), the
+// same values, the same points outside.
+TEST(MeshFormats, StructuredAndRectilinearPiecesLoadAsTheWholeGrid) {
+  const auto dir = test::scratch();
+  vtkNew<vtkStructuredGrid> curved;
+  curved->SetDimensions(9, 8, 10);
+  vtkNew<vtkPoints> points;
+  for (int k = 0; k < 10; ++k)
+    for (int j = 0; j < 8; ++j)
+      for (int i = 0; i < 9; ++i)
+        points->InsertNextPoint(0.25 * i + 0.05 * k, 0.3 * j + 0.02 * i * std::sin(double(k)),
+                                0.2 * k * (1.0 + 0.03 * j));
+  curved->SetPoints(points);
+  test::addAsymmetricVelocity(curved);
+  writeWholeAndPieces<vtkXMLStructuredGridWriter, vtkExtractGrid>(curved, dir, "vts",
+                                                                  "StructuredGrid");
+  vtkNew<vtkRectilinearGrid> stretched;
+  stretched->SetDimensions(9, 8, 10);
+  vtkNew<vtkDoubleArray> axes[3];
+  for (int a = 0; a < 3; ++a)
+    for (int i = 0; i < (a == 0 ? 9 : a == 1 ? 8 : 10); ++i)
+      axes[a]->InsertNextValue(0.1 * i * i + 0.5 * i + a);
+  stretched->SetXCoordinates(axes[0]);
+  stretched->SetYCoordinates(axes[1]);
+  stretched->SetZCoordinates(axes[2]);
+  test::addAsymmetricVelocity(stretched);
+  writeWholeAndPieces<vtkXMLRectilinearGridWriter, vtkExtractRectilinearGrid>(stretched, dir, "vtr",
+                                                                              "RectilinearGrid");
+  for (const char* ext : {"vts", "vtr"}) {
+    SCOPED_TRACE(ext);
+    LoadReport pieces, whole;
+    const VectorField f = loadField(dir / (std::string("split.p") + ext), {}, &pieces);
+    const VectorField g = loadField(dir / (std::string("whole.") + ext), {}, &whole);
+    EXPECT_TRUE(hasNote(pieces, "3 pieces read at once"));
+    EXPECT_TRUE(pieces.blocks.empty());  // pieces, not blocks
+    EXPECT_EQ(pieces.sourceDims, glm::ivec3(9, 8, 10));
+    expectSameField(f, g);
+    LoadOptions finer;
+    finer.resolution = {17, 15, 19};
+    expectSameField(loadField(dir / (std::string("split.p") + ext), finer),
+                    loadField(dir / (std::string("whole.") + ext), finer));
+  }
 }
 
 // Image data in pieces (VTK's streaming source, pieces by extent).
@@ -274,17 +371,7 @@ TEST(MeshFormats, MultiblockBlocksOfAnyKindMergeIntoOneField) {
   box->SetDimensions(5, 9, 5);
   box->SetOrigin(2.0, 0.0, 0.0);
   box->SetSpacing(0.25, 0.25, 0.25);
-  vtkNew<vtkFloatArray> v;
-  v->SetName("velocity");
-  v->SetNumberOfComponents(3);
-  v->SetNumberOfTuples(box->GetNumberOfPoints());
-  for (vtkIdType p = 0; p < box->GetNumberOfPoints(); ++p) {
-    double x[3];
-    box->GetPoint(p, x);
-    const glm::dvec3 a = asymmetric({x[0], x[1], x[2]});
-    v->SetTuple3(p, a.x, a.y, a.z);
-  }
-  box->GetPointData()->AddArray(v);
+  test::addAsymmetricVelocity(box);
   blocks->SetBlock(1, box);
   blocks->GetMetaData(1u)->Set(vtkCompositeDataSet::NAME(), "inlet");
   vtkNew<vtkImageData> solid;
