@@ -211,17 +211,29 @@ double parametricDistance(const double p[3]) {
   return most;
 }
 
+// Whether a structured grid blanks points (vtkGhostType's hidden bit: the
+// cells around them are empty). Points another piece owns (the duplicate
+// bit, as a parallel file's pieces mark their shared layers) blank nothing.
+bool hidesPoints(vtkStructuredGrid* grid) {
+  vtkDataArray* array = grid->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName());
+  if (!array) return false;
+  auto* ghosts = vtkUnsignedCharArray::SafeDownCast(array);
+  if (!ghosts || ghosts->GetNumberOfTuples() != grid->GetNumberOfPoints()) return true;
+  const unsigned char* g = ghosts->GetPointer(0);
+  return std::any_of(g, g + ghosts->GetNumberOfTuples(),
+                     [](unsigned char v) { return (v & vtkDataSetAttributes::HIDDENPOINT) != 0; });
+}
+
 // Which cells of `data` are looked at inline; a structured or rectilinear
 // grid's dimensions (and a rectilinear one's coordinates) into `s`. Grids
-// flat along an axis (quads, pixels) and structured grids with blanked
+// flat along an axis (quads, pixels) and structured grids with hidden
 // points go through VTK's cells.
 Cells inlineCells(vtkDataSet* data, Source& s) {
   if (vtkUnstructuredGrid::SafeDownCast(data)) return Cells::Unstructured;
   int d[3] = {0, 0, 0};
   if (auto* grid = vtkStructuredGrid::SafeDownCast(data)) {
     grid->GetDimensions(d);
-    if (d[0] < 2 || d[1] < 2 || d[2] < 2 || !grid->GetPoints() ||
-        data->GetPointData()->GetArray(vtkDataSetAttributes::GhostArrayName()))
+    if (d[0] < 2 || d[1] < 2 || d[2] < 2 || !grid->GetPoints() || hidesPoints(grid))
       return Cells::Any;
     s.pointDims = {d[0], d[1], d[2]};
     return Cells::Structured;

@@ -218,7 +218,20 @@ TEST(MeshResampler, WedgesAgreeWithVtkProbeFilter) {
 
 TEST(MeshResampler, StructuredGridsAgreeWithVtkProbeFilter) {
   test::scratch();
-  compareWithProbe(curvilinearGrid(9), {33, 29, 31});
+  const auto grid = curvilinearGrid(9);
+  compareWithProbe(grid, {33, 29, 31});
+  // Points marked as another piece's (a parallel file's shared layer) change
+  // nothing; a hidden point empties the cells around it, as in VTK.
+  vtkNew<vtkUnsignedCharArray> ghosts;
+  ghosts->SetName(vtkDataSetAttributes::GhostArrayName());
+  ghosts->SetNumberOfTuples(grid->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < grid->GetNumberOfPoints(); ++p)
+    ghosts->SetValue(p, p % 10 < 3 ? vtkDataSetAttributes::DUPLICATEPOINT : 0);
+  grid->GetPointData()->AddArray(ghosts);
+  compareWithProbe(grid, {33, 29, 31});
+  ghosts->SetValue(5 + 10 * (5 + 10 * 5), vtkDataSetAttributes::HIDDENPOINT);
+  grid->Modified();
+  compareWithProbe(grid, {33, 29, 31});
 }
 
 TEST(MeshResampler, RectilinearGridsAgreeWithVtkProbeFilter) {
