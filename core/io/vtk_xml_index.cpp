@@ -231,30 +231,26 @@ std::optional<std::array<long long, 6>> checkPieceExtent(const Leaf& leaf,
   return e;
 }
 
-// The union of the pieces' extents, within the budget (12 bytes a point)
-// before any piece is read: the grid the pieces make together.
-glm::ivec3 wholeDims(const std::string& file, const std::vector<std::array<long long, 6>>& extents,
-                     const LoadOptions& options) {
+// The union of the pieces' extents: the grid the pieces make together, and
+// the resampled grid's unless field.resolution names another (the budget is
+// held against that grid, by the extractor, and against the pieces' arrays,
+// above).
+glm::ivec3 wholeDims(const std::string& file,
+                     const std::vector<std::array<long long, 6>>& extents) {
   std::array<long long, 6> whole = extents.front();
   for (const auto& e : extents)
     for (int a = 0; a < 3; ++a) {
       whole[2 * a] = std::min(whole[2 * a], e[2 * a]);
       whole[2 * a + 1] = std::max(whole[2 * a + 1], e[2 * a + 1]);
     }
-  double points = 1.0;
   glm::ivec3 dims;
   for (int a = 0; a < 3; ++a) {
     const long long n = whole[2 * a + 1] - whole[2 * a] + 1;
     if (n <= 0 || n > (1ll << 30))
       throw Error(concat(file, ": its pieces' extents span ", whole[2 * a], "..", whole[2 * a + 1],
-                         " along ", "xyz"[a], "; expected at least one point"));
+                         " along ", "xyz"[a], "; expected 1 to 2^30 points"));
     dims[a] = int(n);
-    points *= double(n);
   }
-  if (points > double(VectorField::kMaxPoints) || points * 12.0 > double(options.memoryBudget))
-    throw Error(concat(file, ": its pieces make a grid of ", points,
-                       " points, beyond the memory budget (field.memory_budget) of ",
-                       options.memoryBudget, " bytes"));
   return dims;
 }
 
@@ -359,8 +355,7 @@ vtkSmartPointer<vtkDataObject> readVtkXmlIndex(const fs::path& path, FieldFormat
   if (readsPiecesAtOnce(format, files.size())) {
     const bool structured =
         format == FieldFormat::VtkPRectilinearGrid || format == FieldFormat::VtkPStructuredGrid;
-    if (structured && extents.size() == files.size())
-      report.sourceDims = wholeDims(file, extents, options);
+    if (structured && extents.size() == files.size()) report.sourceDims = wholeDims(file, extents);
     std::vector<VtkXmlPiece> pieces;
     for (const Leaf& f : files)
       pieces.push_back({f.file, f.where, f.name});
