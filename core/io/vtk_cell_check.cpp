@@ -1,7 +1,6 @@
 #include "core/io/vtk_cell_check.h"
 
 #include <vtkCellArray.h>
-#include <vtkCellArrayIterator.h>
 #include <vtkCellType.h>
 #include <vtkCellTypes.h>
 #include <vtkIdList.h>
@@ -9,6 +8,8 @@
 #include <vtkNew.h>
 #include <vtkPolyData.h>
 #include <vtkSmartPointer.h>
+#include <vtkTypeInt32Array.h>
+#include <vtkTypeInt64Array.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
@@ -95,6 +96,16 @@ int pointsFor(int type, bool& exact) {
   return -1;
 }
 
+// f(offsets, connectivity): the cell array's own storage, 32 or 64 bits, read
+// in place (an iterator or GetCellAtId copies each cell's ids).
+template <class F>
+void withStorage(vtkCellArray* cells, F&& f) {
+  if (cells->IsStorage64Bit())
+    f(cells->GetOffsetsArray64()->GetPointer(0), cells->GetConnectivityArray64()->GetPointer(0));
+  else
+    f(cells->GetOffsetsArray32()->GetPointer(0), cells->GetConnectivityArray32()->GetPointer(0));
+}
+
 // Offsets and point ids of one cell array. `minimum` points a cell needs.
 void checkCellArray(vtkCellArray* cells, vtkIdType points, const std::string& where,
                     const char* what, int minimum) {
@@ -103,20 +114,19 @@ void checkCellArray(vtkCellArray* cells, vtkIdType points, const std::string& wh
   if (!cells->IsValid())
     throw Error(concat(where, ": the offsets of the ", kind,
                        "cells do not run from 0 upwards to the connectivity's length"));
-  vtkSmartPointer<vtkCellArrayIterator> it;
-  it.TakeReference(cells->NewIterator());
-  for (it->GoToFirstCell(); !it->IsDoneWithTraversal(); it->GoToNextCell()) {
-    vtkIdType n = 0;
-    const vtkIdType* ids = nullptr;
-    it->GetCurrentCell(n, ids);
-    if (n < minimum)
-      throw Error(concat(where, ": ", kind, "cell ", it->GetCurrentCellId(), " has ", n,
-                         " points; expected at least ", minimum));
-    for (vtkIdType i = 0; i < n; ++i)
-      if (ids[i] < 0 || ids[i] >= points)
-        throw Error(concat(where, ": ", kind, "cell ", it->GetCurrentCellId(), " names point ",
-                           ids[i], "; the points are 0..", points - 1));
-  }
+  const vtkIdType count = cells->GetNumberOfCells();
+  withStorage(cells, [&](const auto* offsets, const auto* ids) {
+    for (vtkIdType c = 0; c < count; ++c) {
+      const vtkIdType begin = vtkIdType(offsets[c]), n = vtkIdType(offsets[c + 1]) - begin;
+      if (n < minimum)
+        throw Error(concat(where, ": ", kind, "cell ", c, " has ", n, " points; expected at least ",
+                           minimum));
+      for (vtkIdType i = begin; i < begin + n; ++i)
+        if (ids[i] < 0 || vtkIdType(ids[i]) >= points)
+          throw Error(concat(where, ": ", kind, "cell ", c, " names point ", vtkIdType(ids[i]),
+                             "; the points are 0..", points - 1));
+    }
+  });
 }
 
 void checkPolyhedron(vtkUnstructuredGrid* grid, vtkIdType cell, const std::string& where) {
@@ -158,23 +168,23 @@ void checkUnstructured(vtkUnstructuredGrid* grid, const std::string& where) {
     throw Error(concat(where, ": ", count, " cells but ", types ? types->GetNumberOfTuples() : 0,
                        " cell types"));
   checkCellArray(cells, grid->GetNumberOfPoints(), where, "", 0);
-  vtkNew<vtkIdList> ids;
-  for (vtkIdType c = 0; c < count; ++c) {
-    const int type = types->GetValue(c);
-    bool exact = true;
-    const int need = pointsFor(type, exact);
-    if (need < 0)
-      throw Error(concat(where, ": cell ", c, " is of VTK type ", type, " (",
-                         vtkCellTypes::GetClassNameFromTypeId(type),
-                         "), which Sandstorm does not sample in; expected linear or quadratic "
-                         "cells, polygons or polyhedra"));
-    cells->GetCellAtId(c, ids);
-    const vtkIdType n = ids->GetNumberOfIds();
-    if (exact ? n != need : n < need)
-      throw Error(concat(where, ": cell ", c, " (", vtkCellTypes::GetClassNameFromTypeId(type),
-                         ") has ", n, " points; expected ", exact ? "" : "at least ", need));
-    if (type == VTK_POLYHEDRON) checkPolyhedron(grid, c, where);
-  }
+  const unsigned char* type = types->GetPointer(0);
+  withStorage(cells, [&](const auto* offsets, const auto*) {
+    for (vtkIdType c = 0; c < count; ++c) {
+      bool exact = true;
+      const int need = pointsFor(type[c], exact);
+      if (need < 0)
+        throw Error(concat(where, ": cell ", c, " is of VTK type ", int(type[c]), " (",
+                           vtkCellTypes::GetClassNameFromTypeId(type[c]),
+                           "), which Sandstorm does not sample in; expected linear or quadratic "
+                           "cells, polygons or polyhedra"));
+      const vtkIdType n = vtkIdType(offsets[c + 1]) - vtkIdType(offsets[c]);
+      if (exact ? n != need : n < need)
+        throw Error(concat(where, ": cell ", c, " (", vtkCellTypes::GetClassNameFromTypeId(type[c]),
+                           ") has ", n, " points; expected ", exact ? "" : "at least ", need));
+      if (type[c] == VTK_POLYHEDRON) checkPolyhedron(grid, c, where);
+    }
+  });
 }
 
 }  // namespace

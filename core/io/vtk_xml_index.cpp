@@ -361,8 +361,6 @@ vtkSmartPointer<vtkDataObject> readVtkXmlIndex(const fs::path& path, FieldFormat
       pieces.push_back({f.file, f.where, f.name});
     out = readVtkXmlPieces(pieces, pieceFormat(format),
                            concat("reading ", path.filename().string()), options.showProgress);
-    for (const VtkBlock& b : vtkBlocks(out))
-      checkVtkCells(b.data, concat(file, ": ", b.name));
     report.notes.push_back(
         concat(files.size(), " pieces read at once and resampled together (not merged)"));
     return out;

@@ -16,6 +16,7 @@
 #include <vtkXMLStructuredGridReader.h>
 #include <vtkXMLUnstructuredGridReader.h>
 
+#include "core/io/vtk_cell_check.h"
 #include "core/io/vtk_message_trap.h"
 #include "core/io/vtk_progress.h"
 #include "core/util/error.h"
@@ -42,6 +43,7 @@ vtkSmartPointer<vtkDataSet> readWith(const VtkXmlPiece& piece, ProgressMeter* me
   trap.throwIfFailed(concat("reading it as ", piece.where));
   vtkSmartPointer<vtkDataSet> out = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   if (!out) throw Error(concat(piece.where, ": VTK read no dataset from it"));
+  checkVtkCells(out, piece.where);  // here, so that the pieces are checked at once too
   return out;
 }
 

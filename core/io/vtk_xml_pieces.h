@@ -8,9 +8,10 @@
 //
 // The pieces must have been checked first (readVtkXmlIndex: names, kinds,
 // arrays against the index and the memory budget). Each partition carries
-// its file's name (vtkCompositeDataSet::NAME: "Piece 2 (run_2.vtu)"). A
-// piece VTK fails on stops the read with an error naming it; the first such
-// piece in the index's order is the one named. Progress: the pieces' bytes.
+// its file's name (vtkCompositeDataSet::NAME: "Piece 2 (run_2.vtu)"), and
+// its cells are checked (checkVtkCells) on the thread that read it. A piece
+// VTK fails on, or whose cells fail the check, stops the read with an error naming it; the first
+// such piece in the index's order is the one named. Progress: the pieces' bytes.
 #pragma once
 
 #include <filesystem>
