@@ -351,11 +351,13 @@ class Resampler {
   }
 
  private:
+  // The source holding cell `global`: the last whose first cell is at or
+  // before it (a search: a parallel file may have thousands of pieces).
   const Source& sourceOf(std::uint64_t global) const {
-    std::size_t s = sources_.size() - 1;
-    while (sources_[s].firstCell > global)
-      --s;
-    return sources_[s];
+    const auto after =
+        std::upper_bound(sources_.begin(), sources_.end(), global,
+                         [](std::uint64_t g, const Source& s) { return g < s.firstCell; });
+    return *(after - 1);
   }
 
   // Each cell's range of slabs, then the cells of each slab in order.
