@@ -6,11 +6,16 @@
 
 #include <netcdf.h>
 
+#include <vtkCompositeDataSet.h>
+#include <vtkDataObjectTree.h>
+#include <vtkDataObjectTreeIterator.h>
 #include <vtkDataSet.h>
 #include <vtkExodusIIReader.h>
+#include <vtkInformation.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 
+#include "core/io/exodus_spread.h"
 #include "core/io/netcdf_header.h"
 #include "core/io/vtk_blocks.h"
 #include "core/io/vtk_cell_check.h"
@@ -163,9 +168,10 @@ void checkConnectivity(const NetcdfFile& f, const NetcdfHeader& h, const std::st
   }
 }
 
-// What the reader will hold at once, against the budget; and the shape of an
-// Exodus file at all.
-void checkExodusHeader(const NetcdfHeader& h, const std::string& file, const LoadOptions& options) {
+// What the reader will hold at once (the nodes' coordinates, every block's
+// connectivity, one step of the nodal variables), in bytes; and the shape of
+// an Exodus file at all.
+double exodusBytes(const NetcdfHeader& h, const std::string& file) {
   const auto* dims = h.dimension("num_dim");
   const auto* nodes = h.dimension("num_nodes");
   if (!dims || !nodes)
@@ -181,21 +187,15 @@ void checkExodusHeader(const NetcdfHeader& h, const std::string& file, const Loa
     if (v.name.rfind("vals_nod_var", 0) == 0) nodalVariables += 1.0;
   }
   if (const auto* n = h.dimension("num_nod_var")) nodalVariables = double(n->length);
-  bytes += nodalVariables * double(nodes->length) * 8.0;
-  if (bytes > double(options.memoryBudget))
-    throw Error(concat(file, ": its ", nodes->length, " nodes, their connectivity and one step of ",
-                       nodalVariables, " nodal variables need ", bytes,
-                       " bytes, beyond the memory budget (field.memory_budget) of ",
-                       options.memoryBudget, " bytes"));
+  return bytes + nodalVariables * double(nodes->length) * 8.0;
 }
 
-}  // namespace
-
-vtkSmartPointer<vtkDataObject> readExodus(const std::filesystem::path& path,
-                                          const LoadOptions& options, LoadReport& report) {
+// One file, its header already read and held to the budget: its layout, ids
+// and connectivity checked, then VTK's reader at options.timeStep.
+vtkSmartPointer<vtkDataObject> readExodusFile(const std::filesystem::path& path,
+                                              const NetcdfHeader& header,
+                                              const LoadOptions& options, LoadReport& report) {
   const std::string file = path.string();
-  const NetcdfHeader header = readNetcdfHeader(path);
-  checkExodusHeader(header, file, options);
   checkExodusLayout(header, file);
   {
     const NetcdfFile f(file);
@@ -223,9 +223,74 @@ vtkSmartPointer<vtkDataObject> readExodus(const std::filesystem::path& path,
     reader->SetObjectStatus(vtkExodusIIReader::ELEM_BLOCK, i, 1);
   reader->SetAllArrayStatus(vtkExodusIIReader::NODAL, 1);
   reader->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK, 1);
-  vtkSmartPointer<vtkDataObject> out =
-      readAtStep(reader, trap, options, report, file, "Exodus II file");
+  return readAtStep(reader, trap, options, report, file, "Exodus II file");
+}
+
+// A decomposed run's files, rank after rank (the NetCDF library takes one
+// call at a time: netcdf_lock.h), each rank's blocks under a block of its
+// own named after its file, the leaves "rank 2: <block>".
+vtkSmartPointer<vtkDataObject> readRanks(const std::vector<std::filesystem::path>& files,
+                                         const std::vector<NetcdfHeader>& headers,
+                                         const LoadOptions& options, LoadReport& report) {
+  const std::size_t n = files.size();
+  std::vector<vtkSmartPointer<vtkDataObject>> parts(n);
+  std::vector<LoadReport> reports(n);
+  for (std::size_t r = 0; r < n; ++r)
+    parts[r] = readExodusFile(files[r], headers[r], options, reports[r]);
+  for (std::size_t r = 1; r < n; ++r)
+    if (reports[r].times != reports[0].times)
+      throw Error(concat(files[r].string(), ": holds ", reports[r].times.size(),
+                         " time steps, rank 0's file ", files[0].filename().string(), " ",
+                         reports[0].times.size(),
+                         " (or other times); the ranks of one run hold the same steps"));
+  report.times = reports[0].times;
+  auto out = vtkSmartPointer<vtkMultiBlockDataSet>::New();
+  out->SetNumberOfBlocks(unsigned(n));
+  for (std::size_t r = 0; r < n; ++r) {
+    vtkSmartPointer<vtkDataObjectTreeIterator> it;
+    if (auto* tree = vtkDataObjectTree::SafeDownCast(parts[r])) {
+      it.TakeReference(tree->NewTreeIterator());
+      it->VisitOnlyLeavesOn();
+      for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem()) {
+        vtkInformation* info = it->GetCurrentMetaData();
+        const char* name = info->Has(vtkCompositeDataSet::NAME())
+                               ? info->Get(vtkCompositeDataSet::NAME())
+                               : nullptr;
+        info->Set(vtkCompositeDataSet::NAME(),
+                  concat("rank ", r, ": ", name ? name : "block").c_str());
+      }
+    }
+    out->SetBlock(unsigned(r), parts[r]);
+    out->GetMetaData(unsigned(r))
+        ->Set(vtkCompositeDataSet::NAME(), files[r].filename().string().c_str());
+  }
+  report.notes.push_back(concat("a decomposed run: its ", n, " ranks' files (",
+                                files.front().filename().string(), " .. ",
+                                files.back().filename().string(), ") read together"));
   return out;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkDataObject> readExodus(const std::filesystem::path& path,
+                                          const LoadOptions& options, LoadReport& report) {
+  const std::vector<std::filesystem::path> files = exodusRunFiles(path);
+  // Every file's header and what the reader will hold, before any reader runs.
+  std::vector<NetcdfHeader> headers;
+  double bytes = 0.0;
+  for (const std::filesystem::path& f : files) {
+    headers.push_back(readNetcdfHeader(f));
+    bytes += exodusBytes(headers.back(), f.string());
+  }
+  if (bytes > double(options.memoryBudget))
+    throw Error(concat(
+        path.string(), ": ",
+        files.size() == 1 ? std::string("its") : concat("its run's ", files.size(), " files'"),
+        " nodes, their connectivity and one step of the nodal variables need ", bytes,
+        " bytes, beyond the memory budget (field.memory_budget) of ", options.memoryBudget,
+        " bytes"));
+  if (files.size() == 1) return readExodusFile(path, headers.front(), options, report);
+  return readRanks(files, headers, options, report);
 }
 
 }  // namespace sandstorm

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <utility>
 
+#include "core/io/exodus_spread.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -128,6 +129,10 @@ FieldFormat detectFieldFormat(const std::filesystem::path& path) {
 }
 
 FieldFormat formatForExtension(const std::filesystem::path& path) {
+  // One rank's file of a decomposed Exodus run: "out.e.4.0" is an "out.e".
+  if (const std::optional<ExodusSpreadName> spread = parseExodusSpreadName(path);
+      spread && formatForExtension(spread->base) == FieldFormat::ExodusII)
+    return FieldFormat::ExodusII;
   const std::string ext = lower(path.extension().string());
   if (ext == ".vtk") return FieldFormat::VtkLegacy;
   if (ext == ".vti") return FieldFormat::VtkImageData;

@@ -10,6 +10,7 @@
 #include "core/io/fga_reader.h"
 #include "core/io/field_format.h"
 #include "core/io/netcdf_cf_reader.h"
+#include "core/io/netcdf_lock.h"
 #include "core/io/openfoam_reader.h"
 #include "core/io/pvd_file.h"
 #include "core/io/unity_vf_reader.h"
@@ -59,18 +60,26 @@ vtkSmartPointer<vtkDataObject> readVtkData(const std::filesystem::path& path, Fi
     case FieldFormat::VtkPPolyData:
     case FieldFormat::VtkMultiBlock:
       return readVtkXmlIndex(path, format, options, report);
-    case FieldFormat::ExodusII:
+    case FieldFormat::ExodusII: {
+      const auto lock = lockNetcdfLibraries();
       return readExodus(path, options, report);
+    }
     case FieldFormat::OpenFoam:
       return readOpenFoam(path, options, report);
     case FieldFormat::EnSightGold:
       return readEnSight(path, options, report);
-    case FieldFormat::NetCdf:
+    case FieldFormat::NetCdf: {
+      const auto lock = lockNetcdfLibraries();
       return readNetcdfCf(path, options, report);  // may name the flow's components
-    case FieldFormat::VtkHdf:
+    }
+    case FieldFormat::VtkHdf: {
+      const auto lock = lockNetcdfLibraries();
       return readVtkHdf(path, options, report);
-    case FieldFormat::Cgns:
+    }
+    case FieldFormat::Cgns: {
+      const auto lock = lockNetcdfLibraries();
       return readCgns(path, options, report);
+    }
     default:
       return nullptr;
   }

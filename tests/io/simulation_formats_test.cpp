@@ -20,6 +20,7 @@
 #include <vtk_exodusII.h>
 
 #include <cstring>
+#include <thread>
 
 #include <cmath>
 
@@ -48,25 +49,28 @@ glm::dvec3 flowAt(const glm::dvec3& p, double t) {
 
 // Two element blocks of hexahedra over [0, 2] x [0, 1] x [0, 1] (x < 1, x > 1),
 // n cells per metre, nodal vel_x/vel_y/vel_z and an element "pressure" at
-// times 0, 0.5 and 1, written by the Exodus II library.
-void writeExodus(const std::filesystem::path& path, int n) {
+// times 0, 0.5 and 1, written by the Exodus II library. With `rank` 0 or 1:
+// only that block and its nodes, as rank `rank` of a decomposed run writes
+// them (`mode` EX_NETCDF4 for the HDF5-based layout).
+void writeExodus(const std::filesystem::path& path, int n, int rank = -1, int mode = 0) {
   int cpu = 8, io = 8;
-  const int id = ex_create(path.c_str(), EX_CLOBBER, &cpu, &io);
+  const int id = ex_create(path.c_str(), EX_CLOBBER | mode, &cpu, &io);
   ASSERT_GE(id, 0);
-  const int nx = 2 * n + 1, ny = n + 1, nz = n + 1;
-  const int nodes = nx * ny * nz, cells = 2 * n * n * n;
-  ASSERT_EQ(ex_put_init(id, "two blocks", 3, nodes, cells, 2, 0, 0), 0);
+  const int firstBlock = rank < 0 ? 0 : rank, blocks = rank < 0 ? 2 : 1;
+  const int i0 = firstBlock * n, nx = blocks * n + 1, ny = n + 1, nz = n + 1;
+  const int nodes = nx * ny * nz, cells = blocks * n * n * n;
+  ASSERT_EQ(ex_put_init(id, "two blocks", 3, nodes, cells, blocks, 0, 0), 0);
   std::vector<double> x, y, z;
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
-      for (int i = 0; i < nx; ++i) {
+      for (int i = i0; i < i0 + nx; ++i) {
         x.push_back(double(i) / n);
         y.push_back(double(j) / n);
         z.push_back(double(k) / n);
       }
   ASSERT_EQ(ex_put_coord(id, x.data(), y.data(), z.data()), 0);
-  auto node = [&](int i, int j, int k) { return 1 + i + nx * (j + ny * k); };
-  for (int block = 0; block < 2; ++block) {
+  auto node = [&](int i, int j, int k) { return 1 + (i - i0) + nx * (j + ny * k); };
+  for (int block = firstBlock; block < firstBlock + blocks; ++block) {
     const int blockId = 10 + block;
     ASSERT_EQ(ex_put_block(id, EX_ELEM_BLOCK, blockId, "HEX8", n * n * n, 8, 0, 0, 0), 0);
     std::vector<int> connect;
@@ -96,7 +100,7 @@ void writeExodus(const std::filesystem::path& path, int n) {
         v[std::size_t(p)] = flowAt({x[std::size_t(p)], y[std::size_t(p)], z[std::size_t(p)]}, t)[c];
       ASSERT_EQ(ex_put_var(id, step, EX_NODAL, c + 1, 1, nodes, v.data()), 0);
     }
-    for (int block = 0; block < 2; ++block) {
+    for (int block = firstBlock; block < firstBlock + blocks; ++block) {
       const std::vector<double> pressure(std::size_t(n * n * n), 100.0 * (block + 1) + t);
       ASSERT_EQ(ex_put_var(id, step, EX_ELEM_BLOCK, 1, 10 + block, n * n * n, pressure.data()), 0);
     }
@@ -151,6 +155,77 @@ TEST(SimulationFormats, ExodusBlocksMergeAndItsTimeStepsPlay) {
   expectFlow(sequence.frame(1), 0.5, kExact);
   // By default: the hexahedra's size, 0.25 m.
   EXPECT_EQ(loadField(path).dims(), glm::ivec3(9, 5, 5));
+}
+
+// A run on two ranks wrote a file each ("flow.e.2.0", "flow.e.2.1"): either
+// opens the whole run, as the one file of the same mesh does, in both of
+// Exodus's layouts; a rank's file missing is named.
+TEST(SimulationFormats, ADecomposedExodusRunOpensWholeFromAnyRanksFile) {
+  const auto dir = test::scratch();
+  writeExodus(dir / "flow.e", 4);
+  LoadOptions options;
+  options.resolution = {17, 9, 9};
+  const VectorField whole = loadField(dir / "flow.e", options);
+  for (const int mode : {0, EX_NETCDF4}) {
+    SCOPED_TRACE(mode == 0 ? "classic" : "netcdf-4");
+    const std::string base = mode == 0 ? "flow.e" : "flow4.exo";
+    writeExodus(dir / (base + ".2.0"), 4, 0, mode);
+    writeExodus(dir / (base + ".2.1"), 4, 1, mode);
+    for (const char* rank : {".2.0", ".2.1"}) {
+      LoadReport report;
+      const VectorField f = loadField(dir / (base + rank), options, &report);
+      EXPECT_EQ(report.format, "Exodus II file (.e)");
+      EXPECT_EQ(report.cells, std::uint64_t(2 * 64));
+      EXPECT_EQ(report.blocks.size(), 2u);
+      ASSERT_EQ(report.times, (std::vector<double>{0.0, 0.5, 1.0}));
+      ASSERT_EQ(f.dims(), whole.dims());
+      EXPECT_EQ(f.bounds().min, whole.bounds().min);
+      EXPECT_EQ(f.bounds().max, whole.bounds().max);
+      EXPECT_EQ(f.invalidCount(), std::size_t(0));
+      expectFlow(f, 0.0, kExact);
+      for (std::size_t p = 0; p < f.pointCount(); ++p)
+        ASSERT_LE(glm::length(f.values()[p] - whole.values()[p]), 1e-6f) << "point " << p;
+    }
+    LoadOptions last = options;
+    last.timeStep = 2;
+    expectFlow(loadField(dir / (base + ".2.1"), last), 1.0, kExact);
+  }
+  std::filesystem::remove(dir / "flow.e.2.1");
+  test::expectError([&] { loadField(dir / "flow.e.2.0", options); },
+                    {"flow.e.2.0", "rank 1's file flow.e.2.1 is missing"});
+}
+
+// A series' reader threads read an Exodus file's steps at once: the NetCDF
+// library underneath takes one of them at a time (netcdf_lock.h), and every
+// step comes out right.
+TEST(SimulationFormats, ExodusStepsReadOnSeveralThreadsAtOnce) {
+  const auto dir = test::scratch();
+  const auto path = dir / "flow.e";
+  writeExodus(path, 3);
+  std::vector<std::string> errors(8);
+  std::vector<std::thread> threads;
+  for (std::size_t t = 0; t < errors.size(); ++t)
+    threads.emplace_back([&, t] {
+      try {
+        LoadOptions options;
+        options.resolution = {7, 4, 4};
+        options.timeStep = t % 3;
+        const VectorField f = loadField(path, options);
+        const double time = 0.5 * double(t % 3);
+        for (std::size_t p = 0; p < f.pointCount(); ++p) {
+          const glm::dvec3 expected =
+              flowAt(glm::dvec3(f.pointPosition(int(p % 7), int(p / 7 % 4), int(p / 28))), time);
+          if (glm::length(glm::dvec3(f.values()[p]) - expected) > kExact * 2.0)
+            throw Error(concat("step ", t % 3, ": point ", p, " is off"));
+        }
+      } catch (const std::exception& e) {
+        errors[t] = e.what();
+      }
+    });
+  for (std::thread& t : threads)
+    t.join();
+  for (std::size_t t = 0; t < errors.size(); ++t)
+    EXPECT_EQ(errors[t], "") << "thread " << t;
 }
 
 TEST(SimulationFormats, ExodusFilesThatClaimMoreThanTheyHoldAreRefused) {
