@@ -8,6 +8,7 @@
 #include "contexts/platform/gpu_memory.h"
 #include "core/field/analytic_field_factory.h"
 #include "core/field/height_map_io.h"
+#include "core/io/budget_advice.h"
 #include "core/io/field_format.h"
 #include "core/io/field_loader.h"
 #include "core/io/precision_choice.h"
@@ -53,9 +54,8 @@ StreamPlan streamPlan(const std::filesystem::path& path, const VectorField& firs
   if (fit < 2)
     throw Error(concat(path.string(), ": a step of the series takes ", formatByteSize(step),
                        " and playback holds two at once, beyond field.memory_budget (",
-                       formatByteSize(budget),
-                       "); raise field.memory_budget or lower "
-                       "field.resolution"));
+                       formatByteSize(budget), "); raise field.memory_budget to at least ",
+                       budgetValueAtLeast(2.0 * step), " or lower field.resolution"));
   StreamPlan plan;
   plan.capacity = 2 + std::size_t(spec.readAhead);
   if (plan.capacity > fit) {

@@ -10,6 +10,7 @@
 #include <sstream>
 #include <type_traits>
 
+#include "core/io/budget_advice.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -130,7 +131,7 @@ class EnSightFile {
     if (v < 0) fail(concat(what, " is ", v, "; expected a count"));
     if (double(v) * 12.0 > double(budget_))
       fail(concat(what, " ", v, " is beyond the memory budget (field.memory_budget) of ", budget_,
-                  " bytes"));
+                  " bytes", raiseBudget(double(v) * 12.0)));
     return std::uint64_t(v);
   }
 
@@ -225,7 +226,8 @@ std::map<long long, Part> checkGeometry(const fs::path& path, std::size_t budget
       part.nodes = n[0] * n[1] * n[2];
       if (double(n[0]) * double(n[1]) * double(n[2]) * 12.0 > double(budget))
         f.fail(concat(where, ": a block of ", n[0], " x ", n[1], " x ", n[2],
-                      " nodes is beyond the memory budget (field.memory_budget)"));
+                      " nodes is beyond the memory budget (field.memory_budget)",
+                      raiseBudget(double(n[0]) * double(n[1]) * double(n[2]) * 12.0)));
       part.elements["block"] = std::max<std::uint64_t>(n[0], 1) * std::max<std::uint64_t>(n[1], 1) *
                                std::max<std::uint64_t>(n[2], 1);
       if (shape.find("uniform") != std::string::npos)

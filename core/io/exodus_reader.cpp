@@ -15,6 +15,7 @@
 #include <vtkMultiBlockDataSet.h>
 #include <vtkNew.h>
 
+#include "core/io/budget_advice.h"
 #include "core/io/exodus_spread.h"
 #include "core/io/netcdf_header.h"
 #include "core/io/vtk_blocks.h"
@@ -288,7 +289,7 @@ vtkSmartPointer<vtkDataObject> readExodus(const std::filesystem::path& path,
         files.size() == 1 ? std::string("its") : concat("its run's ", files.size(), " files'"),
         " nodes, their connectivity and one step of the nodal variables need ", bytes,
         " bytes, beyond the memory budget (field.memory_budget) of ", options.memoryBudget,
-        " bytes"));
+        " bytes", raiseBudget(bytes)));
   if (files.size() == 1) return readExodusFile(path, headers.front(), options, report);
   return readRanks(files, headers, options, report);
 }

@@ -4,6 +4,7 @@
 #include <vtkDataSet.h>
 #include <vtkSmartPointer.h>
 
+#include "core/io/budget_advice.h"
 #include "core/io/cgns_reader.h"
 #include "core/io/ensight_reader.h"
 #include "core/io/exodus_reader.h"
@@ -37,7 +38,11 @@ void checkResolution(const std::string& file, const LoadOptions& options) {
   if (points > double(VectorField::kMaxPoints) || points * 12.0 > double(options.memoryBudget))
     throw Error(concat(file, ": the requested ", r.x, "x", r.y, "x", r.z, " grid needs ",
                        points * 12.0, " bytes, beyond the memory budget (field.memory_budget) of ",
-                       options.memoryBudget, " bytes; choose a lower field.resolution"));
+                       options.memoryBudget, " bytes; choose a lower field.resolution",
+                       points > double(VectorField::kMaxPoints)
+                           ? std::string()
+                           : concat(", or raise field.memory_budget to at least ",
+                                    budgetValueAtLeast(points * 12.0))));
 }
 
 // The VTK data a VTK-based format's reader makes of the file; null for the

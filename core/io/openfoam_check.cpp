@@ -8,6 +8,7 @@
 #include <map>
 #include <string>
 
+#include "core/io/budget_advice.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -291,7 +292,7 @@ class FoamScanner {
     if (double(count) * 24.0 > double(budget_))
       fail(concat("a list of ", count,
                   " elements, beyond the memory budget (field.memory_budget) of ", budget_,
-                  " bytes"));
+                  " bytes", raiseBudget(double(count) * 24.0)));
     const char open = char(in_.get()), close = open == '(' ? ')' : '}';
     // A binary file writes lists of fixed-size elements as raw bytes; lists
     // of anything else (a boundary's dictionaries) as text.

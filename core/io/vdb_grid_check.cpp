@@ -12,6 +12,7 @@
 #include <blosc.h>
 #include <zlib.h>
 
+#include "core/io/budget_advice.h"
 #include "core/io/file_cursor.h"
 #include "core/io/vdb_file_check.h"
 #include "core/io/vdb_metadata_check.h"
@@ -189,7 +190,8 @@ class GridWalk {
     nodeBytes_ += bytes;
     if (nodeBytes_ > double(budget_))
       fail(concat("its tree's nodes need more than ", nodeBytes_,
-                  " bytes, beyond the memory budget (field.memory_budget) of ", budget_, " bytes"));
+                  " bytes, beyond the memory budget (field.memory_budget) of ", budget_, " bytes",
+                  raiseBudget(nodeBytes_)));
   }
 
   void root() {

@@ -14,6 +14,7 @@
 #include <nanovdb/NanoVDB.h>
 #include <nanovdb/util/OpenToNanoVDB.h>
 
+#include "core/io/budget_advice.h"
 #include "core/io/vdb_file_check.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
@@ -362,7 +363,7 @@ std::optional<SparseField> readSparseVdb(const std::filesystem::path& path,
     throw Error(concat(file, ": grid '", name, "' as a sparse grid (", active,
                        " active voxels) takes ", sparseBytes,
                        " bytes, beyond the memory budget (field.memory_budget) of ",
-                       options.memoryBudget, " bytes; raise field.memory_budget"));
+                       options.memoryBudget, " bytes", raiseBudget(sparseBytes)));
   if (!must && denseEnough(active, box, options)) return std::nullopt;
   report.arrayName = name;
   report.sourceDims = glm::ivec3(extent.x(), extent.y(), extent.z());

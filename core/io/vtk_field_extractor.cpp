@@ -25,6 +25,7 @@
 #include <vtkSmartPointer.h>
 #include <vtkStructuredGrid.h>
 
+#include "core/io/budget_advice.h"
 #include "core/io/mesh_resampler.h"
 #include "core/io/point_cloud_interpolator.h"
 #include "core/io/sampling_grid.h"
@@ -270,7 +271,11 @@ void checkBudget(const glm::ivec3& dims, const std::filesystem::path& path,
     throw Error(concat(
         path.string(), ": a ", dims.x, "x", dims.y, "x", dims.z, " grid needs ", points * perPoint,
         " bytes, beyond the memory budget (field.memory_budget) of ", options.memoryBudget,
-        " bytes; choose a lower resolution (field.resolution, or sandstorm-field --dims)"));
+        " bytes; choose a lower resolution (field.resolution, or sandstorm-field --dims)",
+        points > double(VectorField::kMaxPoints)
+            ? std::string()
+            : concat(", or raise field.memory_budget to at least ",
+                     budgetValueAtLeast(points * perPoint))));
 }
 
 glm::ivec3 nativeDims(vtkDataSet* data) {

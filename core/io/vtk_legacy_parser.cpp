@@ -15,6 +15,7 @@
 
 #include "core/field/vector_field.h"
 #include "core/io/ascii_numbers.h"
+#include "core/io/budget_advice.h"
 #include "core/util/error.h"
 #include "core/util/page_buffer.h"
 #include "core/util/progress_meter.h"
@@ -267,7 +268,7 @@ class Parser {
         const long long n = integer("POINTS count", 0, 1LL << 40);
         if (double(n) * 12.0 > double(budget_))
           fail(concat("POINTS ", n, " exceed the memory budget (field.memory_budget) of ", budget_,
-                      " bytes"));
+                      " bytes", raiseBudget(double(n) * 12.0)));
         const std::string type = keyword("the points' type");
         data_.points = values(type, 3 * n, "POINTS");
       } else if (key == "field") {
@@ -337,7 +338,7 @@ class Parser {
     const long long size = integer(concat(what, " size"), 0, 1LL << 40);
     if (double(n + size) * 8.0 > double(budget_))
       fail(concat(what, " ", n, " ", size, " exceed the memory budget (field.memory_budget) of ",
-                  budget_, " bytes"));
+                  budget_, " bytes", raiseBudget(double(n + size) * 8.0)));
     if (version_ >= 5.0) {
       if (keyword("OFFSETS") != "offsets") fail(concat("'", last_, "'; expected OFFSETS"));
       const std::vector<double> offsets = values(keyword("the offsets' type"), n, "OFFSETS");
@@ -412,7 +413,8 @@ class Parser {
         if (n > double(VectorField::kMaxPoints) || n * 12.0 > double(budget_))
           fail(concat("DIMENSIONS ", data_.dims[0], " ", data_.dims[1], " ", data_.dims[2], " = ",
                       n, " points exceed the memory budget (field.memory_budget) of ", budget_,
-                      " bytes (12 per point, at most ", VectorField::kMaxPoints, " points)"));
+                      " bytes (12 per point, at most ", VectorField::kMaxPoints, " points)",
+                      n > double(VectorField::kMaxPoints) ? std::string() : raiseBudget(n * 12.0)));
         dims = true;
       } else if (key == "field") {
         token("the field data's name");
@@ -501,7 +503,7 @@ class Parser {
   void arrayValues(LegacyArray& a, const std::string& type, long long count,
                    const std::string& what, bool asFloat = false) {
     a.singlePrecision = asFloat || type != "double";
-    const std::size_t n = checkValues(type, count, what);
+    const std::size_t n = checkValues(type, count, what, a.singlePrecision ? 4 : 8);
     if (a.singlePrecision) {
       a.floats = std::make_unique_for_overwrite<float[]>(n);
       a.floatCount = n;
@@ -511,17 +513,20 @@ class Parser {
       readValues(a.values.data(), n, type, what);
     }
   }
-  // Checks that `count` values of `type` fit in the budget and in the bytes
-  // left (before anything is allocated for them); returns the count.
-  std::size_t checkValues(const std::string& type, long long count, const std::string& what) {
+  // Checks that `count` values of `type`, held in `held` bytes each once
+  // read, fit in the budget, and in the bytes left (before anything is
+  // allocated for them); returns the count.
+  std::size_t checkValues(const std::string& type, long long count, const std::string& what,
+                          int held = 8) {
     const int size = typeSize(type);
     if (size == 0)
       fail(concat(what, ": data type '", last_,
                   "' is not a number type Sandstorm reads (unsigned_char .. double; bit and "
                   "string arrays are not supported)"));
-    if (count < 0 || double(count) * 8.0 > double(budget_))
+    if (count < 0 || double(count) * held > double(budget_))
       fail(concat(what, ": ", count, " values exceed the memory budget (field.memory_budget) of ",
-                  budget_, " bytes"));
+                  budget_, " bytes",
+                  count < 0 ? std::string() : raiseBudget(double(count) * held)));
     const std::size_t n = std::size_t(count);
     if (binary_) {
       endOfLine(concat(what, "'s type"));
@@ -748,7 +753,7 @@ LegacyVtkData parseVtkLegacy(const std::filesystem::path& path, std::size_t memo
     throw Error(
         concat(file, ": ", size,
                " bytes, more than a grid within the memory budget (field.memory_budget) of ",
-               memoryBudget, " bytes can take"));
+               memoryBudget, " bytes can take", raiseBudget((double(size) - 65536.0) / 4.0)));
   std::ifstream in(path, std::ios::binary);
   if (!in) throw Error(concat(file, ": cannot open the file for reading"));
   PageBuffer text(std::size_t(size), file);

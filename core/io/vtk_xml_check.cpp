@@ -15,6 +15,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/io/budget_advice.h"
 #include "core/io/vtk_xml_payload.h"
 #include "core/util/error.h"
 
@@ -227,7 +228,8 @@ class Checker {
     checkCellLists();
     if (totalBytes_ > 2.0 * double(budget_))
       fail(concat(file_, ": its arrays need ", totalBytes_, " bytes together, beyond twice the ",
-                  "memory budget (field.memory_budget) of ", budget_, " bytes"));
+                  "memory budget (field.memory_budget) of ", budget_, " bytes",
+                  raiseBudget(totalBytes_ / 2.0)));
     // Points no piece holds would be silent garbage (and VTK's structured
     // readers leak the arrays they were filling when pieces leave gaps).
     if (wholeExtent_ && covered_ && *covered_ != *wholeExtent_)
@@ -465,7 +467,7 @@ class Checker {
       if (double(n) * 12.0 > double(budget_))
         fail(concat(file_, ": Piece ", piece_, " ", key, " ", n,
                     " is beyond what the memory budget (field.memory_budget) of ", budget_,
-                    " bytes holds"));
+                    " bytes holds", raiseBudget(double(n) * 12.0)));
       return n;
     };
     points_ = count("NumberOfPoints");
@@ -553,7 +555,7 @@ class Checker {
     if (bytes > double(budget_))
       fail(concat(a.where, ": ", tuples, " tuples x ", a.components, " components x ", a.size,
                   " bytes = ", bytes, " bytes, beyond the memory budget (field.memory_budget) of ",
-                  budget_, " bytes"));
+                  budget_, " bytes", raiseBudget(bytes)));
     totalBytes_ += bytes;
     a.format = attribute("format");
     if (a.format.empty()) a.format = "ascii";

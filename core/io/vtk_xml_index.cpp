@@ -25,6 +25,7 @@
 #include <vtkXMLPUnstructuredGridReader.h>
 
 #include "core/field/vector_field.h"
+#include "core/io/budget_advice.h"
 #include "core/io/parallel_image_reader.h"
 #include "core/io/vtk_blocks.h"
 #include "core/io/vtk_cell_check.h"
@@ -296,9 +297,11 @@ void checkWholeExtent(vtkAlgorithm* reader, const std::string& file, const LoadO
     points *= double(n);
   }
   if (points > double(VectorField::kMaxPoints) || points * 12.0 > double(options.memoryBudget))
-    throw Error(concat(file, ": WholeExtent holds ", points,
-                       " points, beyond the memory budget (field.memory_budget) of ",
-                       options.memoryBudget, " bytes"));
+    throw Error(concat(
+        file, ": WholeExtent holds ", points,
+        " points, beyond the memory budget (field.memory_budget) of ", options.memoryBudget,
+        " bytes",
+        points > double(VectorField::kMaxPoints) ? std::string() : raiseBudget(points * 12.0)));
 }
 
 template <class Reader>
@@ -350,7 +353,7 @@ vtkSmartPointer<vtkDataObject> readVtkXmlIndex(const fs::path& path, FieldFormat
   if (bytes > 2.0 * double(options.memoryBudget))
     throw Error(concat(file, ": its ", files.size(), " files' arrays need ", bytes,
                        " bytes together, beyond twice the memory budget (field.memory_budget) of ",
-                       options.memoryBudget, " bytes"));
+                       options.memoryBudget, " bytes", raiseBudget(bytes / 2.0)));
   vtkSmartPointer<vtkDataObject> out;
   if (readsPiecesAtOnce(format, files.size())) {
     const bool structured =

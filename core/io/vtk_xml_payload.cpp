@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstring>
 
+#include "core/io/budget_advice.h"
 #include "core/util/error.h"
 #include "core/util/parallel_for.h"
 
@@ -148,7 +149,7 @@ void VtkXmlPayload::headerComplete() {
     if (!needed_ && declared > format_.memoryBudget)
       fail(concat("its ", what, " declares ", declared,
                   " bytes, beyond the memory budget (field.memory_budget) of ",
-                  format_.memoryBudget, " bytes"));
+                  format_.memoryBudget, " bytes", raiseBudget(double(declared))));
   };
   if (format_.compressor == VtkCompressor::None) {
     declared_ = word(0);
@@ -164,7 +165,7 @@ void VtkXmlPayload::headerComplete() {
   if (blockSize_ > format_.memoryBudget)
     fail(concat("compression blocks of ", blockSize_,
                 " bytes, beyond the memory budget (field.memory_budget) of ", format_.memoryBudget,
-                " bytes"));
+                " bytes", raiseBudget(double(blockSize_))));
   if (lastSize_ > blockSize_)
     fail(concat("the last compressed block (", lastSize_, " bytes) is larger than a block (",
                 blockSize_, ")"));
@@ -172,7 +173,7 @@ void VtkXmlPayload::headerComplete() {
   if (blocks_ > 1 && blocks_ - 1 > format_.memoryBudget / blockSize_)
     fail(concat(blocks_, " compressed blocks of ", blockSize_,
                 " bytes, beyond the memory budget (field.memory_budget) of ", format_.memoryBudget,
-                " bytes"));
+                " bytes", raiseBudget(double(blocks_ - 1) * double(blockSize_))));
   declared_ = blocks_ == 0 ? 0 : (blocks_ - 1) * blockSize_ + (lastSize_ ? lastSize_ : blockSize_);
   expect(declared_, "compression header (uncompressed size)");
   state_ = blocks_ == 0 ? State::Done : State::Sizes;

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/field/vector_field.h"
+#include "core/io/budget_advice.h"
 #include "core/io/huge_page_image_reader.h"
 #include "core/io/vtk_cell_check.h"
 #include "core/io/vtk_message_trap.h"
@@ -65,11 +66,12 @@ vtkSmartPointer<vtkDataSet> run(const std::filesystem::path& path, const LoadOpt
     points *= double(n);
   }
   if (points > double(VectorField::kMaxPoints) || points * 12.0 > double(options.memoryBudget))
-    throw Error(concat(file, ": WholeExtent ", extent[0], " ", extent[1], " ", extent[2], " ",
-                       extent[3], " ", extent[4], " ", extent[5], " holds ", points,
-                       " points, beyond the memory budget (field.memory_budget) of ",
-                       options.memoryBudget, " bytes (12 per point, at most ",
-                       VectorField::kMaxPoints, " points)"));
+    throw Error(concat(
+        file, ": WholeExtent ", extent[0], " ", extent[1], " ", extent[2], " ", extent[3], " ",
+        extent[4], " ", extent[5], " holds ", points,
+        " points, beyond the memory budget (field.memory_budget) of ", options.memoryBudget,
+        " bytes (12 per point, at most ", VectorField::kMaxPoints, " points)",
+        points > double(VectorField::kMaxPoints) ? std::string() : raiseBudget(points * 12.0)));
   // The values' count against the extent was held by checkVtkXml (each payload
   // exactly what the piece's extent needs), so VTK reads each array once.
   std::optional<VtkProgress> progress;

@@ -9,6 +9,7 @@
 #include <vtkHDFReader.h>
 #include <vtkNew.h>
 
+#include "core/io/budget_advice.h"
 #include "core/io/vtk_cell_check.h"
 #include "core/io/vtk_message_trap.h"
 #include "core/util/error.h"
@@ -99,7 +100,8 @@ class Layout {
       values *= double(n);
     if (values * 8.0 > budget_)
       fail(concat("dataset ", name, " holds ", values,
-                  " values, beyond the memory budget (field.memory_budget)"));
+                  " values, beyond the memory budget (field.memory_budget)",
+                  raiseBudget(values * 8.0)));
     return dims;
   }
 
