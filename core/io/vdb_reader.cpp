@@ -8,8 +8,8 @@
 
 #include <openvdb/io/File.h>
 #include <openvdb/math/Maps.h>
-#include <openvdb/openvdb.h>
 #include <openvdb/tools/Interpolation.h>
+#include "core/io/openvdb_grids.h"
 
 #include <nanovdb/NanoVDB.h>
 #include <nanovdb/util/OpenToNanoVDB.h>

@@ -2,7 +2,7 @@
 
 #include <openvdb/io/File.h>
 #include <openvdb/math/Maps.h>
-#include <openvdb/openvdb.h>
+#include "core/io/openvdb_grids.h"
 
 #include "core/io/vdb_reader.h"
 #include "core/util/error.h"

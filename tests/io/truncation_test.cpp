@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <openvdb/io/File.h>
-#include <openvdb/openvdb.h>
 #include <vtkDoubleArray.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -18,6 +17,7 @@
 #include <vtkXMLImageDataWriter.h>
 #include <vtkXMLRectilinearGridWriter.h>
 #include <vtkXMLStructuredGridWriter.h>
+#include "core/io/openvdb_grids.h"
 
 #include "core/io/field_loader.h"
 #include "core/io/vdb_writer.h"

@@ -7,7 +7,7 @@
 
 #include <openvdb/io/File.h>
 #include <openvdb/math/Maps.h>
-#include <openvdb/openvdb.h>
+#include "core/io/openvdb_grids.h"
 
 #include "core/io/field_loader.h"
 #include "core/io/field_writer.h"
