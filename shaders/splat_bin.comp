@@ -6,11 +6,18 @@
 // workgroup, not one a particle.
 //   count (uScatter false): adds the histogram to the tiles' counts; what
 //     each add returns is this workgroup's place in the tile's list (groupBase).
+//     It also lists the particles it found in view (their indices, within
+//     the workgroup's range of inView) and how many (inViewCount).
 //   scatter (uScatter true): counts again, from tileStart + groupBase, and
 //     writes each particle's splat record at the slot that gives. Where the
-//     list is full (it holds uListCapacity records, two a particle) the
-//     particle adds its footprint in that tile to the sums itself, with
-//     global atomics: slower, the same integers.
+//     count listed at most half the workgroup's particles it visits only
+//     those: a view sees a few of them, or none (a CAVE's side and back
+//     walls), and reading all of them again cost as much as counting them. Where the list is full (it holds
+//     uListCapacity records, two a particle) the particle adds its footprint
+//     in that tile to the sums itself, with global atomics: slower, the same
+//     integers. The listed order is the order the count's invocations found
+//     them in, which varies, as the slots within a tile's list already did:
+//     the sums are integers, so the image does not depend on it.
 // One program for both, so both passes find exactly the same tiles.
 #include "view_block.glsl"
 #include "render_block.glsl"
@@ -38,12 +45,19 @@ layout(std430, binding = 16) restrict buffer SplatMotion { int motionSums[]; };
 layout(std430, binding = 8) writeonly restrict buffer TileLists { uvec4 tileList[]; };  // splat records
 layout(std430, binding = 9) readonly restrict buffer TileStarts { uint tileStart[]; };
 layout(std430, binding = 10) restrict buffer GroupBase { uint groupBase[]; };  // [group][tile]
+layout(std430, binding = 18) restrict buffer InView { uint inView[]; };            // particle indices
+layout(std430, binding = 19) restrict buffer InViewCount { uint inViewCount[]; };  // [group]
 layout(location = 1) uniform bool uScatter;
 layout(location = 2) uniform uint uListCapacity;
 
 #include "splat_add.glsl"
 
 shared uint sBins[kSplatMaxTiles];
+// The count of the workgroup's particles in view: the histogram's last slot,
+// which a view of fewer tiles never uses (the histogram fills the shared
+// memory llvmpipe allows). A view of all kSplatMaxTiles tiles lists none,
+// and its scatter visits every particle.
+const uint kInViewSlot = kSplatMaxTiles - 1u;
 
 void main() {
   uint lid = gl_LocalInvocationIndex;
@@ -54,9 +68,18 @@ void main() {
   // tile's list (entries of tiles it has no particles in are never used).
   for (uint t = lid; t < tiles; t += kGroup)
     sBins[t] = uScatter ? tileStart[t] + groupBase[group * tiles + t] : 0u;
+  bool listed = tiles <= kInViewSlot;
+  if (listed && lid == 0u) sBins[kInViewSlot] = 0u;
   barrier();
   uint begin = group * args.perGroup, end = min(begin + args.perGroup, args.count);
-  for (uint i = begin + lid; i < end; i += kGroup) {
+  // Where most of the workgroup's particles are in view, reading them in
+  // order beats gathering them through the list (the list's order is
+  // scattered: 0.2 ms more a view at 10^8 on an H200).
+  uint listedCount = uScatter && listed ? inViewCount[group] : 0u;
+  bool fromList = uScatter && listed && listedCount * 2u <= end - begin;
+  uint visits = fromList ? listedCount : end - begin;
+  for (uint k = lid; k < visits; k += kGroup) {
+    uint i = fromList ? inView[begin + k] : begin + k;
     // Counting needs only where the splat is (the positions; the velocities for motion blur).
     vec4 pl = positionLife[i];
     uvec3 where;
@@ -72,6 +95,7 @@ void main() {
     if (!splatCentre(pl.xyz, velocity, where)) continue;
     int level = splatLevelOf(where);
     if (!splatBounds(where, level, s)) continue;
+    if (!uScatter && listed) inView[begin + atomicAdd(sBins[kInViewSlot], 1u)] = i;
     uvec4 record = uvec4(where, uScatter ? splatLook(pl, velocityKind[i]) : 0u);
     ivec2 t0 = s.lo / kSplatTile, t1 = s.hi / kSplatTile;
     uint first = splatTileOffset(size, level), across = uint(splatLevelTiles(size, level).x);
@@ -92,6 +116,7 @@ void main() {
   }
   if (uScatter) return;
   barrier();
+  if (listed && lid == 0u) inViewCount[group] = sBins[kInViewSlot];
   for (uint t = lid; t < tiles; t += kGroup) {
     uint n = sBins[t];
     if (n != 0u) groupBase[group * tiles + t] = atomicAdd(tileCount[t], n);

@@ -62,7 +62,9 @@ enum Binding : GLuint {
   kOccupied = 14,
   kTrailRing = 15,
   kMotionSums = 16,
-  kTrailStaged = 17
+  kTrailStaged = 17,
+  kInView = 18,
+  kInViewCount = 19
 };
 
 // Uniform locations of trail_common.glsl.
@@ -175,7 +177,8 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
   const bool trails = hasTrails(records);
   if (tiled)
     addTiled(p, levelTiles(size, levels), levels,
-             listRecords(particles.capacity(), trails ? records.trailLength : 0));
+             listRecords(particles.capacity(), trails ? records.trailLength : 0),
+             particles.capacity());
   else
     addAtomic(p);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
@@ -426,8 +429,9 @@ std::size_t ParticleSplat::listRecords(std::size_t capacity, int trailLength) co
 }
 
 void ParticleSplat::addTiled(const Programs& p, std::size_t tileCount, int levels,
-                             std::size_t listCapacity) const {
+                             std::size_t listCapacity, std::size_t particles) const {
   bindTiles(tileCount, listCapacity);
+  bindInView(particles);
 
   // The binning dispatch size is the second uvec4 of the prepare pass's output.
   constexpr GLintptr kBinDispatch = 32;
@@ -457,6 +461,16 @@ void ParticleSplat::addTiled(const Programs& p, std::size_t tileCount, int level
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, chunkDispatch_.id());
   glDispatchComputeIndirect(0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, 0);
+}
+
+void ParticleSplat::bindInView(std::size_t particles) const {
+  if (particles > inViewCapacity_) {
+    inView_ = allocate(particles * 4, "the particles in view");
+    inViewCapacity_ = particles;
+  }
+  if (!inViewCount_) inViewCount_ = allocate(kMaxBinGroups * 4, "the counts of particles in view");
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInView, inView_.id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kInViewCount, inViewCount_.id());
 }
 
 void ParticleSplat::bindTiles(std::size_t tileCount, std::size_t listCapacity) const {

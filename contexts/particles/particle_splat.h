@@ -107,10 +107,14 @@ class ParticleSplat {
   // Add every particle's footprint to the sums.
   void addAtomic(const Programs& p) const;
   void addTrails(const ParticleBackend::Records& records, std::size_t capacity) const;
+  // The binning's list of the particles in view (splat_bin.comp), for up to
+  // `particles`, bound.
+  void bindInView(std::size_t particles) const;
   // `tileCount`: of every level's grid; `levels`: how many the view uses;
-  // `listCapacity`: the splat records the lists hold (listRecords).
-  void addTiled(const Programs& p, std::size_t tileCount, int levels,
-                std::size_t listCapacity) const;
+  // `listCapacity`: the splat records the lists hold (listRecords);
+  // `particles`: the backend's capacity.
+  void addTiled(const Programs& p, std::size_t tileCount, int levels, std::size_t listCapacity,
+                std::size_t particles) const;
   // Trails in the tiled variant, after addTiled; `tileCount`: the full-resolution grid's.
   void addTiledTrails(const ParticleBackend::Records& records, std::size_t tileCount) const;
   // The splat records (16 bytes) the lists hold for `capacity` particles and
@@ -146,6 +150,9 @@ class ParticleSplat {
   mutable gl::Buffer tileCounts_, tileStarts_, chunkStarts_, groupBase_,
       tileLists_;  // tiled: the bins
   mutable std::size_t tiles_ = 0, listCapacity_ = 0;
+  // tiled: the particles each binning workgroup found in view, and how many.
+  mutable gl::Buffer inView_, inViewCount_;
+  mutable std::size_t inViewCapacity_ = 0;
   // Trails, made on first use: the atomic variant's passes, the tiled one's.
   mutable std::unique_ptr<gl::Program> trailPrepare_, trails_, trailBin_, trailTile_,
       trailOverScene_;

@@ -203,8 +203,12 @@ TEST_P(ParticleSplatTest, TiledAndAtomicSplatsAddTheSameSumsSoDrawTheSameImage) 
   // Plain, with shadows and motion blur (their own programs), and particles
   // large enough to go to coarser grids (render.splat_detail).
   // Motion blur by the filter adds motion sums of its own (variant 3, with levels).
-  for (int variant : {0, 1, 2, 3}) {
-    ParticleState state = cloud(RenderMode::Splat, variant >= 2 ? 0.9f : 0.25f, true);
+  // Variant 4 moves the cloud mostly out of the view: where at most half of
+  // a binning workgroup's particles are in view, the scatter pass visits
+  // only those the count pass listed.
+  for (int variant : {0, 1, 2, 3, 4}) {
+    ParticleState state =
+        cloud(RenderMode::Splat, variant == 2 || variant == 3 ? 0.9f : 0.25f, true);
     if (variant == 1) {
       state = shaded(state);
       state.render.shutter = 0.2f;
@@ -216,10 +220,12 @@ TEST_P(ParticleSplatTest, TiledAndAtomicSplatsAddTheSameSumsSoDrawTheSameImage) 
       state.emitters[0].velocity = {2.0f, 0.0f, 1.0f};
       state.emitters[0].spread = 1.5f;
     }
+    if (variant == 4) state.emitters[0].position.x = 4.6f;  // the view's edge at 8 m: 3.88 m
     SCOPED_TRACE(variant == 0   ? "plain"
                  : variant == 1 ? "shadows and motion blur"
                  : variant == 2 ? "levels"
-                                : "levels and motion blur by the filter");
+                 : variant == 3 ? "levels and motion blur by the filter"
+                                : "most of the cloud out of view");
     const Image atomic = render(state, GetParam(), 2, GpuTuning{.splat = GpuTuning::Splat::Atomic});
     ParticleState none = state;
     none.emitters[0].rate = 0.0f;
