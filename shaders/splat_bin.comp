@@ -12,12 +12,13 @@
 //     writes each particle's splat record at the slot that gives. Where the
 //     count listed at most half the workgroup's particles it visits only
 //     those: a view sees a few of them, or none (a CAVE's side and back
-//     walls), and reading all of them again cost as much as counting them. Where the list is full (it holds
-//     uListCapacity records, two a particle) the particle adds its footprint
-//     in that tile to the sums itself, with global atomics: slower, the same
-//     integers. The listed order is the order the count's invocations found
-//     them in, which varies, as the slots within a tile's list already did:
-//     the sums are integers, so the image does not depend on it.
+//     walls), and reading all of them again cost as much as counting them.
+//     Where the list is full (it holds uListCapacity records, two a
+//     particle) the particle adds its footprint in that tile to the sums
+//     itself, with global atomics: slower, the same integers. The listed
+//     order is the order the count's invocations found them in, which
+//     varies, as the slots within a tile's list already did: the sums are
+//     integers, so the image does not depend on it.
 // One program for both, so both passes find exactly the same tiles.
 #include "view_block.glsl"
 #include "render_block.glsl"

@@ -20,8 +20,8 @@
 
 #include <openvdb/io/File.h>
 #include <openvdb/math/Maps.h>
-#include "core/io/openvdb_grids.h"
 
+#include "core/io/openvdb_grids.h"
 #include "core/io/vdb_reader.h"
 
 namespace {

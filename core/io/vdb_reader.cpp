@@ -9,12 +9,12 @@
 #include <openvdb/io/File.h>
 #include <openvdb/math/Maps.h>
 #include <openvdb/tools/Interpolation.h>
-#include "core/io/openvdb_grids.h"
 
 #include <nanovdb/NanoVDB.h>
 #include <nanovdb/util/OpenToNanoVDB.h>
 
 #include "core/io/budget_advice.h"
+#include "core/io/openvdb_grids.h"
 #include "core/io/vdb_file_check.h"
 #include "core/util/error.h"
 #include "core/util/log.h"

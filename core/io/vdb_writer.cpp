@@ -2,8 +2,8 @@
 
 #include <openvdb/io/File.h>
 #include <openvdb/math/Maps.h>
-#include "core/io/openvdb_grids.h"
 
+#include "core/io/openvdb_grids.h"
 #include "core/io/vdb_reader.h"
 #include "core/util/error.h"
 

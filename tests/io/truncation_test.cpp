@@ -17,9 +17,9 @@
 #include <vtkXMLImageDataWriter.h>
 #include <vtkXMLRectilinearGridWriter.h>
 #include <vtkXMLStructuredGridWriter.h>
-#include "core/io/openvdb_grids.h"
 
 #include "core/io/field_loader.h"
+#include "core/io/openvdb_grids.h"
 #include "core/io/vdb_writer.h"
 #include "tests/io/io_test_util.h"
 

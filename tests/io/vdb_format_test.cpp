@@ -7,10 +7,10 @@
 
 #include <openvdb/io/File.h>
 #include <openvdb/math/Maps.h>
-#include "core/io/openvdb_grids.h"
 
 #include "core/io/field_loader.h"
 #include "core/io/field_writer.h"
+#include "core/io/openvdb_grids.h"
 #include "core/io/vdb_reader.h"
 #include "core/io/vdb_writer.h"
 #include "tests/io/io_test_util.h"

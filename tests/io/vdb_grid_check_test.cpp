@@ -11,11 +11,11 @@
 
 #include <openvdb/io/File.h>
 #include <openvdb/math/Maps.h>
-#include "core/io/openvdb_grids.h"
 
 #include <random>
 
 #include "core/io/field_loader.h"
+#include "core/io/openvdb_grids.h"
 #include "core/io/vdb_reader.h"
 #include "tests/io/io_test_util.h"
 

@@ -10,8 +10,8 @@
 #include <openvdb/io/File.h>
 #include <openvdb/math/Maps.h>
 #include <openvdb/tools/Interpolation.h>
-#include "core/io/openvdb_grids.h"
 
+#include "core/io/openvdb_grids.h"
 #include "core/io/vdb_reader.h"
 #include "tests/io/io_test_util.h"
 
