@@ -16,7 +16,8 @@ layout(std140, binding = 2) uniform RenderBlock {
   vec4 colorGrid;  // x: blend, y: 1 with a next frame, z: factor, w: 1 with a grid
   vec4 light;      // rgb: the direct light's colour times its strength, w: 1 with shadows
   vec4 haze;       // x: render.scattering (1/m)
-  vec4 splat;      // x: render.splat_detail (px; 0: every splat at full resolution)
+  vec4 splat;      // x: render.splat_detail (px; 0: every splat at full resolution),
+                   // y: render.splat_overlap (0: off)
 } look;
 
 layout(binding = 5) uniform sampler3D uColorGrid;      // R: |curl| (VectorField x)

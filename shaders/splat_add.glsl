@@ -6,7 +6,8 @@
 // a coarser level's tiles it adds to (splat_occupied.glsl).
 #include "splat_occupied.glsl"
 
-void addSplat(Splat s, ivec2 lo, ivec2 hi, int motionShift) {
+// Its footprint alone.
+void addSplatPixels(Splat s, ivec2 lo, ivec2 hi) {
   markSplatTiles(s.level, lo, hi);
   ivec2 size = ivec2(view.viewport.zw);
   uint width = uint(splatLevelSize(size, s.level).x), offset = splatLevelOffset(size, s.level);
@@ -19,8 +20,12 @@ void addSplat(Splat s, ivec2 lo, ivec2 hi, int motionShift) {
       for (uint c = 0u; c < kSplatChannels; ++c) atomicAdd(accum[base + c], v[c]);
     }
   }
+}
+
+// Its motion alone, to each tile of its level it covers, as the tiled pass adds it.
+void addSplatMotion(Splat s, ivec2 lo, ivec2 hi, int motionShift) {
 #ifdef MOTION_FILTER
-  // Its motion to each tile it covers, as the tiled pass adds it.
+  ivec2 size = ivec2(view.viewport.zw);
   ivec4 m;
   int w;
   splatMotionSums(s, motionShift, m, w);
@@ -33,4 +38,9 @@ void addSplat(Splat s, ivec2 lo, ivec2 hi, int motionShift) {
       atomicAdd(motionSums[at + 4u], w);
     }
 #endif
+}
+
+void addSplat(Splat s, ivec2 lo, ivec2 hi, int motionShift) {
+  addSplatPixels(s, lo, hi);
+  addSplatMotion(s, lo, hi, motionShift);
 }

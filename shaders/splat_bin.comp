@@ -15,7 +15,8 @@
 //     walls), and reading all of them again cost as much as counting them.
 //     Where the list is full (it holds uListCapacity records, two a
 //     particle) the particle adds its footprint in that tile to the sums
-//     itself, with global atomics: slower, the same integers. The listed
+//     itself, with global atomics (on the grid the tile's chunks would draw
+//     it on): slower, the same integers. The listed
 //     order is the order the count's invocations found them in, which
 //     varies, as the slots within a tile's list already did: the sums are
 //     integers, so the image does not depend on it.
@@ -52,6 +53,7 @@ layout(location = 1) uniform bool uScatter;
 layout(location = 2) uniform uint uListCapacity;
 
 #include "splat_add.glsl"
+#include "splat_coarsening.glsl"
 
 shared uint sBins[kSplatMaxTiles];
 // The count of the workgroup's particles in view: the histogram's last slot,
@@ -108,10 +110,16 @@ void main() {
         if (slot < uListCapacity) {
           tileList[slot] = record;
         } else {
+          // As the tile's chunks would: its motion on the tile's level, its
+          // footprint on the grid the tile draws on (splatCoarsening).
           ivec2 origin = ivec2(tx, ty) * kSplatTile;
+          uint records = tileStart[tile + 1u] - tileStart[tile];
           unpackSplat(record, level, s);
-          addSplat(s, max(s.lo, origin), min(s.hi, origin + kSplatTile - 1),
-                   splatMotionShift(tileStart[tile + 1u] - tileStart[tile]));
+          addSplatMotion(s, max(s.lo, origin), min(s.hi, origin + kSplatTile - 1), splatMotionShift(records));
+          int coarser = splatCoarsening(tile, level);
+          ivec2 drawOrigin = origin >> coarser;
+          if (unpackSplat(record, level + coarser, s))
+            addSplatPixels(s, max(s.lo, drawOrigin), min(s.hi, drawOrigin + (kSplatTile >> coarser) - 1));
         }
       }
   }

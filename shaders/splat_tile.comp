@@ -7,7 +7,11 @@
 // image): a plain store where the chunk is its tile's only one, a global
 // atomic where a dense tile has several. The same integers as the atomic
 // variant adds, so the same image, with at most six global atomics a pixel
-// and chunk instead of six a pixel and particle.
+// and chunk instead of six a pixel and particle. A dense tile
+// (render.splat_overlap: splatCoarsening) draws its splats on a coarser
+// level's grid instead, into the block of that level's pixels its own pixels
+// lie in: the same sums sampled more coarsely, added with atomics (that
+// level's own tiles add there too).
 #include "view_block.glsl"
 #include "render_block.glsl"
 #include "splat_common.glsl"
@@ -32,6 +36,7 @@ layout(std430, binding = 16) restrict buffer SplatMotion { int motionSums[]; }; 
 #endif
 
 #include "splat_occupied.glsl"
+#include "splat_coarsening.glsl"
 
 const uint kTilePixels = uint(kSplatTile * kSplatTile);
 shared uint sSums[kSplatChannels][kTilePixels];
@@ -49,7 +54,8 @@ void main() {
   uint t = lo;
   uint begin = tileStart[t] + (chunk - chunkStart[t]) * uChunk;
   uint end = min(min(begin + uChunk, tileStart[t + 1u]), uListCapacity);
-  // The only chunk of a tile the scatter pass added nothing to may store its sums.
+  // The only chunk of a tile the scatter pass added nothing to may store its
+  // sums, unless dense tiles of finer levels may add to its pixels.
   bool alone = chunkStart[t + 1u] - chunkStart[t] == 1u && tileStart[t + 1u] <= uListCapacity;
 
   uint lid = gl_LocalInvocationIndex;
@@ -61,26 +67,38 @@ void main() {
   while (level + 1 < uSplatLevels && t >= splatTileOffset(size, level + 1)) ++level;
   uint local = t - splatTileOffset(size, level), across = uint(splatLevelTiles(size, level).x);
   ivec2 origin = ivec2(int(local % across), int(local / across)) * kSplatTile;
+  // Where the splats are drawn: the tile itself, or its block of a coarser
+  // level's pixels (drawSide a side), in the first rows and columns of sSums.
+  int coarser = splatCoarsening(t, level);
+  int drawLevel = level + coarser, drawSide = kSplatTile >> coarser;
+  ivec2 drawOrigin = origin >> coarser;
+  alone = alone && coarser == 0 && (look.splat.y <= 0.0 || level == 0);
   for (uint k = begin + lid; k < end; k += kGroup) {
     Splat s;
-    if (!unpackSplat(tileList[k], level, s)) continue;
-    ivec2 a = max(s.lo, origin), b = min(s.hi, origin + kSplatTile - 1);
+    if (!unpackSplat(tileList[k], drawLevel, s)) continue;
+    ivec2 a = max(s.lo, drawOrigin), b = min(s.hi, drawOrigin + drawSide - 1);
     for (int y = a.y; y <= b.y; ++y) {
       ivec2 row = splatRow(s, y);
       for (int x = max(a.x, row.x); x <= min(b.x, row.y); ++x) {
         uint v[kSplatChannels];
         if (!splatAt(s, ivec2(x, y), v)) continue;
-        uint px = uint((y - origin.y) * kSplatTile + (x - origin.x));
+        uint px = uint((y - drawOrigin.y) * kSplatTile + (x - drawOrigin.x));
         for (uint c = 0u; c < kSplatChannels; ++c) atomicAdd(sSums[c][px], v[c]);
       }
     }
   }
   barrier();
-  if (lid == 0u && level > 0 && end > begin) occupied[t] = 1u;
-  uvec2 levelSize = uvec2(splatLevelSize(size, level));
-  uint offset = splatLevelOffset(size, level);
+  if (lid == 0u && drawLevel > 0 && end > begin) {
+    uint drawAcross = uint(splatLevelTiles(size, drawLevel).x);
+    uvec2 drawTile = uvec2(drawOrigin / kSplatTile);
+    occupied[splatTileOffset(size, drawLevel) + drawTile.y * drawAcross + drawTile.x] = 1u;
+  }
+  uvec2 levelSize = uvec2(splatLevelSize(size, drawLevel));
+  uint offset = splatLevelOffset(size, drawLevel);
   for (uint px = lid; px < kTilePixels; px += kGroup) {
-    uvec2 p = uvec2(origin) + uvec2(px % uint(kSplatTile), px / uint(kSplatTile));
+    uvec2 at = uvec2(px % uint(kSplatTile), px / uint(kSplatTile));
+    if (at.x >= uint(drawSide) || at.y >= uint(drawSide)) continue;
+    uvec2 p = uvec2(drawOrigin) + at;
     if (p.x >= levelSize.x || p.y >= levelSize.y) continue;
     uint base = (offset + p.y * levelSize.x + p.x) * kSplatStride;
     for (uint c = 0u; c < kSplatChannels; ++c) {

@@ -27,7 +27,7 @@ RenderBlock makeRenderBlock(const ParticleState& state, const FieldUpdate* field
   b.params = glm::vec4(s.size, s.softness, s.mode != RenderMode::Points ? 1.0f : 0.0f, s.shutter);
   b.light = glm::vec4(s.lightColor * s.lightStrength, s.shadows ? 1.0f : 0.0f);
   b.haze = glm::vec4(s.scattering, 0.0f, 0.0f, 0.0f);
-  b.splat = glm::vec4(s.splatDetail, 0.0f, 0.0f, 0.0f);
+  b.splat = glm::vec4(s.splatDetail, s.splatOverlap, 0.0f, 0.0f);
   const ColorScale scale = stateColorScale(state, field);
   b.colorScale =
       glm::vec4(float(int(scale.quantity)), scale.low, scale.high, scale.log ? 1.0f : 0.0f);

@@ -39,7 +39,7 @@ struct alignas(16) RenderBlock {
                         // w: 1 with a grid
   glm::vec4 light;      // rgb: the direct light's colour times its strength, w: 1 with shadows
   glm::vec4 haze;       // x: render.scattering (1/m)
-  glm::vec4 splat;      // x: render.splat_detail (px)
+  glm::vec4 splat;      // x: render.splat_detail (px), y: render.splat_overlap
 };
 static_assert(sizeof(RenderBlock) == (5 + ColorMap::kGpuSamples + 11) * 16);
 

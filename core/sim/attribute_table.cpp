@@ -250,6 +250,13 @@ std::vector<AttributeInfo> makeEntries() {
                     "an eighth the resolution, so a particle's cost stops growing with its size "
                     "(0: every splat at full resolution, at most 31 pixels wide)",
                     RENDER(splatDetail)));
+  v.push_back(entry("render.splat_overlap", T::Float, 0, 100000, "",
+                    "Where splats cover each pixel of a 32-pixel tile more than this many times "
+                    "on average, the tile draws them on the next coarser grid (and one more "
+                    "where four times as many): a pixel then shows the mean of so many splats "
+                    "that a coarser grid samples it as well, at a quarter of the cost "
+                    "(0: never; splats only)",
+                    RENDER(splatOverlap)));
   v.push_back(enumEntry("render.order", {"unsorted", "sorted"},
                         "Billboards blend in the particles' order, or sorted back to front in "
                         "each view (a GPU radix sort by depth; splats need no order)",
