@@ -1,18 +1,18 @@
-// How many levels coarser the tiled pass draws a tile's splats
-// (render.splat_overlap, look.splat.y; 0: off). Where splats cover each pixel
-// of the tile and of the eight around it more than that many times on
-// average, one level coarser; where more than four times that, two (only onto
-// levels the view has). A pixel there holds the mean of so many splats that
-// the sums vary slowly, and a coarser grid samples the same sums (the levels'
-// halving is exact) at a quarter of the pixel evaluations a level. The
-// neighbours keep a cloud's silhouette at the tile's own resolution: where
-// the sums are opaque on one side and empty on the other, a coarser grid
-// would draw the edge in steps of its pixels. A splat is taken as a disc 1.5
-// render.splat_detail wide, the middle of the detail to twice that its level
-// draws it at. Needs splat_footprint.glsl and the tiles' list starts as
-// `tileStart` (a tile's records: the next start less its own).
-const int kSplatMaxCoarsening = 2;
-
+// Whether the tiled pass draws a tile's splats one level coarser
+// (render.splat_overlap, look.splat.y; 0: never): where splats cover each
+// pixel of the tile and of the eight around it more than that many times on
+// average, and the view has a coarser level. A pixel there holds the mean of
+// so many splats that the sums vary slowly, and the coarser grid samples the
+// same sums (the levels' halving is exact) at a quarter of the pixel
+// evaluations: the look of render.splat_detail at half its value, inside
+// dense clouds only. The neighbours keep a cloud's silhouette at the tile's
+// own resolution: where the sums are opaque on one side and empty on the
+// other, a coarser grid would draw the edge in steps of its pixels. (Two
+// levels coarser, tried, also lost lines a few pixels wide inside the cloud.)
+// A splat is taken as a disc 1.5 render.splat_detail wide, the middle of the
+// detail to twice that its level draws it at. Needs splat_footprint.glsl and
+// the tiles' list starts as `tileStart` (a tile's records: the next start
+// less its own).
 int splatCoarsening(uint tile, int level) {
   float limit = look.splat.y, width = 1.5 * max(look.splat.x, 1.0);
   if (limit <= 0.0 || level + 1 >= uSplatLevels) return 0;
@@ -28,10 +28,5 @@ int splatCoarsening(uint tile, int level) {
       fewest = min(fewest, tileStart[t + 1u] - tileStart[t]);
     }
   float overlap = float(fewest) * 0.7853982 * width * width / float(kSplatTile * kSplatTile);
-  int coarser = 0;
-  while (coarser < kSplatMaxCoarsening && level + coarser + 1 < uSplatLevels && overlap > limit) {
-    ++coarser;
-    limit *= 4.0;
-  }
-  return coarser;
+  return overlap > limit ? 1 : 0;
 }

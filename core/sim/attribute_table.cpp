@@ -252,10 +252,9 @@ std::vector<AttributeInfo> makeEntries() {
                     RENDER(splatDetail)));
   v.push_back(entry("render.splat_overlap", T::Float, 0, 100000, "",
                     "Where splats cover each pixel of a 32-pixel tile more than this many times "
-                    "on average, the tile draws them on the next coarser grid (and one more "
-                    "where four times as many): a pixel then shows the mean of so many splats "
-                    "that a coarser grid samples it as well, at a quarter of the cost "
-                    "(0: never; splats only)",
+                    "on average, and around it too, the tile draws them on the next coarser "
+                    "grid: a pixel then shows the mean of so many splats that a coarser grid "
+                    "samples it nearly as well, at a quarter of the cost (0: never; splats only)",
                     RENDER(splatOverlap)));
   v.push_back(enumEntry("render.order", {"unsorted", "sorted"},
                         "Billboards blend in the particles' order, or sorted back to front in "

@@ -104,7 +104,8 @@ struct RenderSettings {
   float splatPixels = 64.0f;             // Auto mode: splat particles up to this projected diameter
   float splatDetail = 4.0f;  // px: splats twice this wide go to coarser grids (0: never)
   // Where splats cover a pixel more than this many times on average over its
-  // 32-pixel tile, the tile draws them one grid coarser (0: never).
+  // 32-pixel tile and the eight around it, the tile draws them one grid
+  // coarser (0: never).
   float splatOverlap = 64.0f;
   bool fieldBox = true;  // outline the field's bounds
   // Colour by a quantity (core/color): which, through which map, over which range.

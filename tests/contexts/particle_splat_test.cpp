@@ -207,7 +207,7 @@ TEST_P(ParticleSplatTest, LargeSplatsOnCoarserGridsLookLikeSplatsAtFullResolutio
 // from 3 m, so that it fills the view, its particles about 12 pixels wide,
 // with the limit at 4 splats a pixel (the default is 64; 4000 particles cover
 // a pixel some 10 times), so that tiles with the cloud all around them draw
-// one or two grids coarser, against every splat on its own level. The same
+// one grid coarser, against every splat on its own level. The same
 // sums sampled more coarsely: close to it (what differs is the particles'
 // grain, which this sparse a cloud still shows), not the same; with the limit
 // above the cloud's overlap, the same. Whether the chunks are split or the lists overflow (the
@@ -225,7 +225,7 @@ TEST_P(ParticleSplatTest, DenseTilesOnACoarserGridLookLikeEverySplatOnItsOwnLeve
   const Image coarser = render(state, GetParam(), 2, {}, nullptr, near);
   const Difference d = compare(exact, coarser, empty);
   std::printf(
-      "%s: dense tiles one or two grids coarser against every splat on its own level: mean "
+      "%s: dense tiles one grid coarser against every splat on its own level: mean "
       "%.2f/255, %.2f%% of pixels off by > 16, largest %d; particles cover %.1f%%\n",
       GetParam(), d.mean, 100 * d.over16, d.largest, 100 * d.changed);
   if (const char* dir = std::getenv("SANDSTORM_TEST_IMAGES")) {
