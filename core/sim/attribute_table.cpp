@@ -250,7 +250,7 @@ std::vector<AttributeInfo> makeEntries() {
                     "an eighth the resolution, so a particle's cost stops growing with its size "
                     "(0: every splat at full resolution, at most 31 pixels wide)",
                     RENDER(splatDetail)));
-  v.push_back(entry("render.splat_overlap", T::Float, 0, 100000, "",
+  v.push_back(entry("render.splat_overlap", T::Float, 0, 100000, "splats",
                     "Where splats cover each pixel of a 32-pixel tile more than this many times "
                     "on average, and around it too, the tile draws them on the next coarser "
                     "grid: a pixel then shows the mean of so many splats that a coarser grid "
