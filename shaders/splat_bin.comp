@@ -16,10 +16,10 @@
 //     Where the list is full (it holds uListCapacity records, two a
 //     particle) the particle adds its footprint in that tile to the sums
 //     itself, with global atomics (on the grid the tile's chunks would draw
-//     it on): slower, the same integers. The listed
-//     order is the order the count's invocations found them in, which
-//     varies, as the slots within a tile's list already did: the sums are
-//     integers, so the image does not depend on it.
+//     it on): slower, the same integers. The listed order is the order the
+//     count's invocations found them in, which varies, as the slots within a
+//     tile's list already did: the sums are integers, so the image does not
+//     depend on it.
 // One program for both, so both passes find exactly the same tiles.
 #include "view_block.glsl"
 #include "render_block.glsl"

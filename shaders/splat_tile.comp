@@ -54,10 +54,6 @@ void main() {
   uint t = lo;
   uint begin = tileStart[t] + (chunk - chunkStart[t]) * uChunk;
   uint end = min(min(begin + uChunk, tileStart[t + 1u]), uListCapacity);
-  // The only chunk of a tile the scatter pass added nothing to may store its
-  // sums, unless dense tiles of finer levels may add to its pixels.
-  bool alone = chunkStart[t + 1u] - chunkStart[t] == 1u && tileStart[t + 1u] <= uListCapacity;
-
   uint lid = gl_LocalInvocationIndex;
   for (uint px = lid; px < kTilePixels; px += kGroup)
     for (uint c = 0u; c < kSplatChannels; ++c) sSums[c][px] = 0u;
@@ -72,7 +68,11 @@ void main() {
   int coarser = splatCoarsening(t, level);
   int drawLevel = level + coarser, drawSide = kSplatTile >> coarser;
   ivec2 drawOrigin = origin >> coarser;
-  alone = alone && coarser == 0 && (look.splat.y <= 0.0 || level == 0);
+  // The only chunk of a tile the scatter pass added nothing to may store its
+  // sums, unless they go to a coarser level's pixels, or dense tiles of finer
+  // levels may (render.splat_overlap on): both add with atomics.
+  bool alone = chunkStart[t + 1u] - chunkStart[t] == 1u && tileStart[t + 1u] <= uListCapacity &&
+               coarser == 0 && (look.splat.y <= 0.0 || level == 0);
   for (uint k = begin + lid; k < end; k += kGroup) {
     Splat s;
     if (!unpackSplat(tileList[k], drawLevel, s)) continue;
@@ -88,11 +88,7 @@ void main() {
     }
   }
   barrier();
-  if (lid == 0u && drawLevel > 0 && end > begin) {
-    uint drawAcross = uint(splatLevelTiles(size, drawLevel).x);
-    uvec2 drawTile = uvec2(drawOrigin / kSplatTile);
-    occupied[splatTileOffset(size, drawLevel) + drawTile.y * drawAcross + drawTile.x] = 1u;
-  }
+  if (lid == 0u && end > begin) markSplatTiles(drawLevel, drawOrigin, drawOrigin);
   uvec2 levelSize = uvec2(splatLevelSize(size, drawLevel));
   uint offset = splatLevelOffset(size, drawLevel);
   for (uint px = lid; px < kTilePixels; px += kGroup) {

@@ -207,12 +207,12 @@ TEST_P(ParticleSplatTest, LargeSplatsOnCoarserGridsLookLikeSplatsAtFullResolutio
 // from 3 m, so that it fills the view, its particles about 12 pixels wide,
 // with the limit at 4 splats a pixel (the default is 64; 4000 particles cover
 // a pixel some 10 times), so that tiles with the cloud all around them draw
-// one grid coarser, against every splat on its own level. The same
-// sums sampled more coarsely: close to it (what differs is the particles'
-// grain, which this sparse a cloud still shows), not the same; with the limit
-// above the cloud's overlap, the same. Whether the chunks are split or the lists overflow (the
-// scatter pass then adds a record itself, on the grid the tile draws on),
-// the tiled pass adds the same integers.
+// one grid coarser, against every splat on its own level. The same sums
+// sampled more coarsely: close to it (what differs is the particles' grain,
+// which this sparse a cloud still shows), not the same; with the limit above
+// the cloud's overlap, the same. Whether the chunks are split or the lists
+// overflow (the scatter pass then adds a record itself, on the grid the tile
+// draws on), the tiled pass adds the same integers.
 TEST_P(ParticleSplatTest, DenseTilesOnACoarserGridLookLikeEverySplatOnItsOwnLevel) {
   ParticleState state = cloud(RenderMode::Splat, 0.3f, true);
   state.render.splatOverlap = 0.0f;
