@@ -7,7 +7,9 @@
 #include <utility>
 #include <vector>
 
+#include "core/config/config_sets.h"
 #include "core/io/field_format.h"
+#include "core/io/pvd_file.h"
 #include "core/io/vtk_legacy_parser.h"
 #include "core/io/vtk_xml_check.h"
 #include "core/sim/attribute_table.h"
@@ -138,12 +140,25 @@ Emitter seedingPlane(const VectorField& field, int maximum) {
 }
 
 FieldSource fileSceneField(AppConfig& config, const std::filesystem::path& file,
-                           const std::string& array) {
-  pointAtFile(config, file, array);
+                           const std::string& array, const std::vector<std::string>& sets) {
+  pointAtFile(config, file, array, sets);
   return makeField(config.field, config.folder);
 }
 
-void pointAtFile(AppConfig& config, const std::filesystem::path& file, const std::string& array) {
+void pointAtFile(AppConfig& config, const std::filesystem::path& file, const std::string& array,
+                 const std::vector<std::string>& sets) {
+  const AttributeTable& table = AttributeTable::instance();
+  std::vector<std::string> fieldSets;
+  for (const std::string& set : sets) {
+    const std::string key = table.canonical(set.substr(0, set.find('=')));
+    if (key.starts_with("field.")) fieldSets.push_back(set);
+    if (key == "field.source")
+      throw Error(concat("--set ", set, ": the field file ", file.string(),
+                         " is the run's field.source; give one or the other"));
+    if (key == "field.name" && !array.empty())
+      throw Error(concat("--set ", set, ": --array ", array,
+                         " names the file's array already; give one or the other"));
+  }
   FieldSpec spec;
   spec.source = std::filesystem::absolute(file).string();
   spec.name = array;
@@ -152,7 +167,11 @@ void pointAtFile(AppConfig& config, const std::filesystem::path& file, const std
   spec.autoPrecision = config.field.autoPrecision;
   spec.storage = config.field.storage;
   spec.readAhead = config.field.readAhead;
+  spec.uploadAhead = config.field.uploadAhead;
   config.field = spec;
+  // The run's [field] settings shape the file's field, read after the
+  // configuration's as for any run.
+  applyConfigSets(config, fieldSets);
 }
 
 void frameFileScene(AppConfig& config, const std::filesystem::path& file, const Box& box,
@@ -227,16 +246,42 @@ void openFileScene(AppConfig& config, const std::filesystem::path& file, const V
   logSeeding(file, emitters.front());
 }
 
-std::optional<VtkImageFrame> fileSceneFrame(const FieldSpec& spec) {
-  switch (detectFieldFormat(spec.source)) {
+namespace {
+
+// A file of one grid framed from its header; none for other formats.
+std::optional<VtkImageFrame> headerFrame(const std::filesystem::path& file, FieldFormat format) {
+  switch (format) {
     case FieldFormat::VtkImageData:
     case FieldFormat::VtkPImageData:
-      return readVtkImageFrame(spec.source);
+      return readVtkImageFrame(file);
     case FieldFormat::VtkLegacy:
-      return readVtkLegacyFrame(spec.source);
+      return readVtkLegacyFrame(file);
     default:
       return std::nullopt;
   }
+}
+
+// A .pvd's frame is its first step's (indexSeries: the first step fixes the
+// series' grid). None where the collection or that step cannot be read yet:
+// the series' read says what is wrong.
+std::optional<VtkImageFrame> firstStepFrame(const std::filesystem::path& pvd) {
+  try {
+    const std::filesystem::path first = readPvd(pvd).front().file;
+    return headerFrame(first, detectFieldFormat(first));
+  } catch (const Error&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+std::optional<VtkImageFrame> fileSceneFrame(const FieldSpec& spec) {
+  // A resampled grid is not the header's; a watched series starts from the
+  // first step found complete, not necessarily the first listed.
+  if (spec.resolution != glm::ivec3(0) || spec.watch) return std::nullopt;
+  const FieldFormat format = detectFieldFormat(spec.source);
+  if (format == FieldFormat::VtkCollection) return firstStepFrame(spec.source);
+  return headerFrame(spec.source, format);
 }
 
 FieldSeeding seedFileScene(const std::filesystem::path& file, const VtkImageFrame& frame,

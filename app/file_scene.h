@@ -7,8 +7,8 @@
 // streamline rake (the bounds' diagonal), the slice and the probe (the
 // centre) are placed in the field and sized to it, off until turned on.
 //
-// A .vti, a .pvti or a legacy .vtk of STRUCTURED_POINTS is framed from its
-// header (fileSceneFrame, frameFileScene)
+// A .vti, a .pvti or a legacy .vtk of STRUCTURED_POINTS, and a .pvd series of
+// them, is framed from its (first step's) header (fileSceneFrame, frameFileScene)
 // and read while the walls open; its seeding plane, which needs the mean
 // flow, comes with packet 0 (seedFileScene). Other files are read first
 // (openFileScene).
@@ -37,9 +37,10 @@ void frameFileScene(AppConfig& config, const std::filesystem::path& file, const 
                     glm::ivec3 dims);
 
 // A .vti's or .pvti's bounds and points from its header (readVtkImageFrame),
-// or a legacy .vtk's of STRUCTURED_POINTS (readVtkLegacyFrame);
-// none for other formats, or where the header does not say (the file is read
-// first).
+// or a legacy .vtk's of STRUCTURED_POINTS (readVtkLegacyFrame), or a .pvd's
+// from its first step's, where that is one of these; none for other formats,
+// where the header does not say, where field.resolution resamples the grid
+// or field.watch follows the series (the file is read first).
 std::optional<VtkImageFrame> fileSceneFrame(const FieldSpec& spec);
 
 // What a run framed by frameFileScene does once the field is read, before
@@ -50,15 +51,20 @@ FieldSeeding seedFileScene(const std::filesystem::path& file, const VtkImageFram
                            int maximum, const std::vector<std::string>& sets);
 
 // Points `config`'s [field] at `file` (its array or grid `array`; the
-// configuration's field.memory_budget, precision, storage and read_ahead
-// kept) and reads it as the run reads its [field]: a grid, a series streamed,
-// an OpenVDB grid kept sparse. The file is read once: openFileScene frames
-// `update.field` (a sparse grid's overview, a series' first step) and the run
-// starts from the returned source (App's `field`).
+// configuration's field.memory_budget, precision, storage, read_ahead and
+// upload_ahead kept, then the run's `--set`s of [field] keys applied on top, so that
+// `--set field.resolution=[64,64,64]` or `--set field.watch=true` shape the
+// file's field) and reads it as the run reads its [field]: a grid, a series
+// streamed, an OpenVDB grid kept sparse. The file is read once:
+// openFileScene frames `update.field` (a sparse grid's overview, a series'
+// first step) and the run starts from the returned source (App's `field`).
+// Throws Error for a --set of field.source (the file is the source), or of
+// field.name beside a non-empty `array`.
 FieldSource fileSceneField(AppConfig& config, const std::filesystem::path& file,
-                           const std::string& array);
+                           const std::string& array, const std::vector<std::string>& sets);
 // Only the first part: `config`'s [field] pointed at `file`, for the run to read.
-void pointAtFile(AppConfig& config, const std::filesystem::path& file, const std::string& array);
+void pointAtFile(AppConfig& config, const std::filesystem::path& file, const std::string& array,
+                 const std::vector<std::string>& sets);
 
 // The emitter the file scene seeds with: exposed for tests.
 Emitter seedingPlane(const VectorField& field, int maximum);

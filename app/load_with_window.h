@@ -1,6 +1,7 @@
 // loadWithWindow: long work before the walls open (`sandstorm FILE`'s field
 // in a format whose header does not frame the scene: every one but .vti,
-// .pvti and a legacy .vtk of STRUCTURED_POINTS) run where a person can watch
+// .pvti, a legacy .vtk of STRUCTURED_POINTS and a .pvd series of them) run
+// where a person can watch
 // it. (Those, and a configuration's field, are read while the walls open:
 // their windows show its progress, RenderContext.)
 // Where the run opens windows the

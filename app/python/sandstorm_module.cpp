@@ -194,7 +194,7 @@ class Run {
     } else {  // a field file, opened as `sandstorm FILE` opens it
       appConfig = loadConfig(config ? *config : defaultConfig("desktop.toml").string());
       applyConfigSets(appConfig, options.sets);
-      field = fileSceneField(appConfig, path, array.value_or(""));
+      field = fileSceneField(appConfig, path, array.value_or(""), options.sets);
       openFileScene(appConfig, path, *field->update.field);
     }
     run_ = std::make_unique<SteppedRun>(std::move(appConfig), std::move(options), std::move(field));

@@ -198,12 +198,12 @@ void writeLegacyVtk(const std::filesystem::path& path, const VectorField& field,
 
 // The file is read once: the scene is framed from the very field the run
 // starts with (a 512^3 file read twice took twice the time to open).
-// A .vti, a parallel image file (.pvti) and a legacy .vtk of the same grid
-// are framed from their headers and seeded once read (the walls open
-// meanwhile); a multiblock file (.vtm) of the same grid is framed after its
-// read, as every file was. All four open the same scene: the same particles
-// and state every frame, the same picture, and the emitter setting a --set
-// gave stays as given.
+// A .vti, a parallel image file (.pvti), a legacy .vtk and a series (.pvd)
+// of the same grid are framed from their (first step's) headers and seeded
+// once read (the walls open meanwhile); a multiblock file (.vtm) of the same
+// grid is framed after its read, as every file was. All five open the same
+// scene: the same particles and state every frame, the same picture, and the
+// emitter setting a --set gave stays as given.
 TEST(FileScene, AFileFramedFromItsHeaderOpensAsAFileFramedAfterItsRead) {
   const auto dir = test::scratchDir("file-scene-header");
   struct Drift final : AnalyticField {  // a mean flow along y: not the middle plane's seeding
@@ -216,6 +216,9 @@ TEST(FileScene, AFileFramedFromItsHeaderOpensAsAFileFramedAfterItsRead) {
   test::writePvtiFor(dir / "drift.vti", dir / "drift.pvti");
   writeLegacyVtk(dir / "drift.vtk", drift, *readVtkImageFrame(dir / "drift.vti"));
   test::writeVtmFor(dir / "drift.vti", dir / "drift.vtm");
+  std::ofstream(dir / "drift.pvd") << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\">"
+                                      "<Collection><DataSet timestep=\"0\" file=\"drift.vti\"/>"
+                                      "</Collection></VTKFile>\n";
   const auto open = [&](const std::string& file, const std::string& name) {
     std::filesystem::create_directories(dir / name);
     return test::runSandstorm("'" + (dir / file).string() +
@@ -240,7 +243,7 @@ TEST(FileScene, AFileFramedFromItsHeaderOpensAsAFileFramedAfterItsRead) {
   ASSERT_EQ(hashes.size(), 12u);
   const std::string picture = bytes(dir / "read" / "desktop.png");
   EXPECT_FALSE(picture.empty());
-  for (const char* file : {"drift.vti", "drift.pvti", "drift.vtk"}) {
+  for (const char* file : {"drift.vti", "drift.pvti", "drift.vtk", "drift.pvd"}) {
     SCOPED_TRACE(file);
     const std::string name = std::string("header-") + (file + 6);
     const auto framed = open(file, name);
@@ -290,6 +293,38 @@ TEST(FileScene, TheConfigurationsMemoryBudgetHoldsForTheFile) {
       test::runSandstorm("'" + (dir / "wind.vti").string() +
                          "' --frames 1 --set sim.maximum=1000 --screenshot '" + dir.string() + "'");
   EXPECT_EQ(fits.exitCode, 0) << fits.output;
+}
+
+// The run's --set of [field] keys shape the file's field: a series whose two
+// steps in memory pass the budget is refused naming field.resolution, and
+// that advice, taken on the command line, opens it on the grid asked for. A
+// --set of field.source beside the file is refused. (pointAtFile once
+// dropped every [field] --set but the size settings, so the advice taken
+// failed the same way again.)
+TEST(FileScene, TheRunsFieldSettingsShapeTheFile) {
+  const auto dir = test::scratchDir("file-scene-sets");
+  std::string pvd = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\">\n<Collection>\n";
+  for (int k = 0; k < 3; ++k) {
+    const std::string name = "step" + std::to_string(k) + ".vti";
+    writeVti(dir / name,
+             VectorField(Box{{0, 0, 0}, {1, 1, 1}}, glm::ivec3(64),
+                         std::vector<glm::vec3>(64 * 64 * 64, glm::vec3(1.0f, 0.1f * k, 0.0f))),
+             "velocity", VtiCompression::None);  // 3 MiB of vectors a step
+    pvd += "<DataSet timestep=\"" + std::to_string(k) + "\" file=\"" + name + "\"/>\n";
+  }
+  std::ofstream(dir / "run.pvd") << pvd << "</Collection>\n</VTKFile>\n";
+  const std::string run = "'" + (dir / "run.pvd").string() +
+                          "' --frames 1 --set sim.maximum=1000 --set 'field.memory_budget=5 MiB'";
+  const auto refused = test::runSandstorm(run);
+  ASSERT_EQ(refused.exitCode, 1) << refused.output;
+  EXPECT_NE(refused.output.find("field.resolution"), std::string::npos) << refused.output;
+  const auto coarser = test::runSandstorm(run + " --set 'field.resolution=[24,20,16]' " +
+                                          "--screenshot '" + dir.string() + "'");
+  ASSERT_EQ(coarser.exitCode, 0) << coarser.output;
+  EXPECT_NE(coarser.output.find("24x20x16 over"), std::string::npos) << coarser.output;
+  const auto twice = test::runSandstorm(run + " --set field.source=" + (dir / "run.pvd").string());
+  EXPECT_EQ(twice.exitCode, 1) << twice.output;
+  EXPECT_NE(twice.output.find("give one or the other"), std::string::npos) << twice.output;
 }
 
 // field.precision = "auto" (the default): a field whose floats would not
