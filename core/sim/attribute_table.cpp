@@ -661,6 +661,10 @@ AttributeTable::AttributeTable() : entries_(makeEntries()) {}
 std::string AttributeTable::canonical(std::string_view key) const {
   for (const Alias& a : kAliases)
     if (a.name == key) return std::string(a.target);
+  // A configuration's [field_playback] table holds the field.* playback
+  // attributes: its keys spelt as the file spells them name them too.
+  constexpr std::string_view kPlayback = "field_playback.";
+  if (key.starts_with(kPlayback)) return concat("field.", key.substr(kPlayback.size()));
   return std::string(key);
 }
 

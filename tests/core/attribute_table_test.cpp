@@ -50,6 +50,17 @@ TEST(AttributeTable, SetsAndGetsThroughTheTable) {
   EXPECT_EQ(s.sim.maximum, 5000);
 }
 
+// [field_playback] speed = 3 in a file and --set field_playback.speed=3 on
+// the command line name the same attribute, field.speed.
+TEST(AttributeTable, TheConfigurationsPlaybackTableNamesTheFieldsPlaybackAttributes) {
+  ParticleState s;
+  table().set(s, "field_playback.speed", 3.0f);
+  EXPECT_FLOAT_EQ(s.field.speed, 3.0f);
+  EXPECT_EQ(table().canonical("field_playback.loop"), "field.loop");
+  EXPECT_NE(errorOf([] { table().lookup("field_playback.sped"); }).find("field.speed"),
+            std::string::npos);
+}
+
 TEST(AttributeTable, ClampsOutOfRangeValuesAndSaysSo) {
   ParticleState s;
   const AttributeResult r = table().set(s, "render.opacity_birth", 3.0f);
