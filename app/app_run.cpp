@@ -46,10 +46,11 @@ GlfwWindow::Options windowOptions(const std::string& title, const WindowSpec& w)
 
 // Frames left out of the run statistics: run.stats_warmup, or where the run
 // is no longer than that (a short run asked for its stage times), its first
-// half, with a warning, rather than nothing measured.
+// half, said in the log (not as a warning: `--frames 1` is an ordinary
+// run), rather than nothing measured.
 std::uint32_t statsWarmup(const RunSpec& run) {
   if (run.frames <= 0 || run.frames > run.statsWarmup) return std::uint32_t(run.statsWarmup);
-  log::warn("run.stats_warmup (", run.statsWarmup, ") is not shorter than the run's ", run.frames,
+  log::info("run.stats_warmup (", run.statsWarmup, ") is not shorter than the run's ", run.frames,
             " frames: the statistics leave out its first ", run.frames / 2, " instead");
   return std::uint32_t(run.frames / 2);
 }
