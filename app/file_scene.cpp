@@ -148,10 +148,8 @@ FieldSource fileSceneField(AppConfig& config, const std::filesystem::path& file,
 void pointAtFile(AppConfig& config, const std::filesystem::path& file, const std::string& array,
                  const std::vector<std::string>& sets) {
   const AttributeTable& table = AttributeTable::instance();
-  std::vector<std::string> fieldSets;
   for (const std::string& set : sets) {
     const std::string key = table.canonical(set.substr(0, set.find('=')));
-    if (key.starts_with("field.")) fieldSets.push_back(set);
     if (key == "field.source")
       throw Error(concat("--set ", set, ": the field file ", file.string(),
                          " is the run's field.source; give one or the other"));
@@ -169,9 +167,9 @@ void pointAtFile(AppConfig& config, const std::filesystem::path& file, const std
   spec.readAhead = config.field.readAhead;
   spec.uploadAhead = config.field.uploadAhead;
   config.field = spec;
-  // The run's [field] settings shape the file's field, read after the
-  // configuration's as for any run.
-  applyConfigSets(config, fieldSets);
+  // The run's settings, read after the configuration's as for any run: its
+  // [field] ones shape the file's field (and are checked against it).
+  applyConfigSets(config, sets);
 }
 
 void frameFileScene(AppConfig& config, const std::filesystem::path& file, const Box& box,

@@ -50,16 +50,18 @@ std::optional<VtkImageFrame> fileSceneFrame(const FieldSpec& spec);
 FieldSeeding seedFileScene(const std::filesystem::path& file, const VtkImageFrame& frame,
                            int maximum, const std::vector<std::string>& sets);
 
-// Points `config`'s [field] at `file` (its array or grid `array`; the
+// Points `config` (as loaded, before the run's `--set`s) at `file`: its
+// [field] reads the file's array or grid `array`, keeping the
 // configuration's field.memory_budget, precision, storage, read_ahead and
-// upload_ahead kept, then the run's `--set`s of [field] keys applied on top, so that
-// `--set field.resolution=[64,64,64]` or `--set field.watch=true` shape the
-// file's field) and reads it as the run reads its [field]: a grid, a series
-// streamed, an OpenVDB grid kept sparse. The file is read once:
-// openFileScene frames `update.field` (a sparse grid's overview, a series'
-// first step) and the run starts from the returned source (App's `field`).
+// upload_ahead; then the run's `sets` are applied on top as for any run, so
+// that `--set 'field.resolution=[64,64,64]'` or `--set field.watch=true`
+// shape the file's field and are checked against it. fileSceneField then
+// reads it as the run reads its [field]: a grid, a series streamed, an
+// OpenVDB grid kept sparse. The file is read once: openFileScene frames
+// `update.field` (a sparse grid's overview, a series' first step) and the
+// run starts from the returned source (App's `field`).
 // Throws Error for a --set of field.source (the file is the source), or of
-// field.name beside a non-empty `array`.
+// field.name beside a non-empty `array`, and as applyConfigSets throws.
 FieldSource fileSceneField(AppConfig& config, const std::filesystem::path& file,
                            const std::string& array, const std::vector<std::string>& sets);
 // Only the first part: `config`'s [field] pointed at `file`, for the run to read.

@@ -217,8 +217,7 @@ int main(int argc, char** argv) {
       // The desktop scene unless a configuration was named.
       AppConfig config = loadConfig(
           configOption->count() > 0 ? configPath : defaultConfig("desktop.toml").string());
-      applyConfigSets(config, options.sets);
-      pointAtFile(config, fieldFile, arrayName, options.sets);
+      pointAtFile(config, fieldFile, arrayName, options.sets);  // and applies the --sets
       if (const std::optional<VtkImageFrame> frame = fileSceneFrame(config.field)) {
         // Framed from the file's header: the walls open while the file is read.
         const int maximum = config.particles.sim.maximum;

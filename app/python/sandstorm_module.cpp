@@ -193,7 +193,6 @@ class Run {
       applyConfigSets(appConfig, options.sets);
     } else {  // a field file, opened as `sandstorm FILE` opens it
       appConfig = loadConfig(config ? *config : defaultConfig("desktop.toml").string());
-      applyConfigSets(appConfig, options.sets);
       field = fileSceneField(appConfig, path, array.value_or(""), options.sets);
       openFileScene(appConfig, path, *field->update.field);
     }

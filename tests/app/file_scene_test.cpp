@@ -297,8 +297,8 @@ TEST(FileScene, TheConfigurationsMemoryBudgetHoldsForTheFile) {
 
 // The run's --set of [field] keys shape the file's field: a series whose two
 // steps in memory pass the budget is refused naming field.resolution, and
-// that advice, taken on the command line, opens it on the grid asked for. A
-// --set of field.source beside the file is refused. (pointAtFile once
+// that advice, taken on the command line, opens it on the grid asked for;
+// field.watch follows it. A --set of field.source beside the file is refused. (pointAtFile once
 // dropped every [field] --set but the size settings, so the advice taken
 // failed the same way again.)
 TEST(FileScene, TheRunsFieldSettingsShapeTheFile) {
@@ -322,6 +322,11 @@ TEST(FileScene, TheRunsFieldSettingsShapeTheFile) {
                                           "--screenshot '" + dir.string() + "'");
   ASSERT_EQ(coarser.exitCode, 0) << coarser.output;
   EXPECT_NE(coarser.output.find("24x20x16 over"), std::string::npos) << coarser.output;
+  // field.watch is checked against the file, not the configuration's source.
+  const auto watched =
+      test::runSandstorm(run + " --set 'field.resolution=[24,20,16]' " + "--set field.watch=true");
+  ASSERT_EQ(watched.exitCode, 0) << watched.output;
+  EXPECT_NE(watched.output.find("(watched;"), std::string::npos) << watched.output;
   const auto twice = test::runSandstorm(run + " --set field.source=" + (dir / "run.pvd").string());
   EXPECT_EQ(twice.exitCode, 1) << twice.output;
   EXPECT_NE(twice.output.find("give one or the other"), std::string::npos) << twice.output;
