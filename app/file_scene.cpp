@@ -264,8 +264,9 @@ std::optional<VtkImageFrame> headerFrame(const std::filesystem::path& file, Fiel
 // the series' read says what is wrong.
 std::optional<VtkImageFrame> firstStepFrame(const std::filesystem::path& pvd) {
   try {
-    const std::filesystem::path first = readPvd(pvd).front().file;
-    return headerFrame(first, detectFieldFormat(first));
+    const PvdFrame first = readPvd(pvd).front();
+    if (first.parts.size() > 1) return std::nullopt;  // resampled together: not a header's grid
+    return headerFrame(first.file, detectFieldFormat(first.file));
   } catch (const Error&) {
     return std::nullopt;
   }

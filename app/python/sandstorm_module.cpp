@@ -72,20 +72,21 @@ Field loadFieldFile(const std::string& path, const std::optional<std::string>& a
   }
   LoadReport report;
   std::vector<double> times;
-  std::filesystem::path file = path;
-  if (file.extension() == ".pvd") {  // a series: its steps' times, the step asked for
-    const std::vector<PvdFrame> frames = readPvd(file);
+  std::vector<std::filesystem::path> parts{path};
+  if (std::filesystem::path(path).extension() ==
+      ".pvd") {  // a series: its steps' times, the step asked for
+    const std::vector<PvdFrame> frames = readPvd(path);
     for (const PvdFrame& f : frames)
       times.push_back(f.time);
     if (timeStep >= frames.size())
       throw Error(concat(path, ": time_step ", timeStep, " of a series of ", frames.size()));
-    file = frames[timeStep].file;
+    parts = frames[timeStep].parts;
   } else {
     options.timeStep = timeStep;
   }
   VectorField f = [&] {
     py::gil_scoped_release release;
-    return loadField(file, options, &report);
+    return loadFieldParts(parts, path, options, &report);
   }();
   if (times.empty() && report.times.size() > 1) times = report.times;
   const glm::ivec3 d = f.dims();

@@ -1,7 +1,13 @@
 #include "core/io/field_loader.h"
 
+#include <algorithm>
+
+#include <vtkCompositeDataSet.h>
 #include <vtkDataObject.h>
 #include <vtkDataSet.h>
+#include <vtkInformation.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkNew.h>
 #include <vtkSmartPointer.h>
 
 #include "core/io/budget_advice.h"
@@ -16,6 +22,7 @@
 #include "core/io/pvd_file.h"
 #include "core/io/unity_vf_reader.h"
 #include "core/io/vdb_reader.h"
+#include "core/io/vtk_blocks.h"
 #include "core/io/vtk_field_extractor.h"
 #include "core/io/vtk_legacy_reader.h"
 #include "core/io/vtk_xml_index.h"
@@ -102,7 +109,7 @@ VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
                                     " frames: loaded the first (t = ", frames.front().time, ", ",
                                     frames.front().file.filename().string(), ")"));
       LoadReport inner;
-      VectorField f = loadField(frames.front().file, options, &inner);
+      VectorField f = loadFieldParts(frames.front().parts, path, options, &inner);
       report.available = inner.available;
       report.arrayName = inner.arrayName;
       report.sourceDims = inner.sourceDims;
@@ -123,7 +130,88 @@ VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
   throw Error(concat(path.string(), ": format not recognised; expected ", knownFormats()));
 }
 
+// A library's exceptions as the loaders' errors, naming `file`.
+template <class Read>
+VectorField guarded(const std::string& file, Read&& read) {
+  try {
+    return read();
+  } catch (const Error& e) {
+    const std::string what = e.what();
+    if (what.rfind(file, 0) == 0) throw;
+    throw Error(concat(file, ": ", what));
+  } catch (const std::bad_alloc&) {
+    throw Error(concat(file, ": ran out of memory while loading; lower the resolution ",
+                       "(field.resolution)"));
+  } catch (const std::exception& e) {
+    // A reading library's own exception (VTK's readers throw the standard
+    // library's on some malformed files): the file is refused, the run goes on.
+    throw Error(concat(file, ": the reader failed: ", e.what()));
+  }
+}
+
 }  // namespace
+
+VectorField loadFieldParts(const std::vector<std::filesystem::path>& parts,
+                           const std::filesystem::path& dataset, const LoadOptions& options,
+                           LoadReport* report) {
+  const std::string name = dataset.string();
+  if (parts.empty()) throw Error(concat(name, ": a dataset of no parts"));
+  if (parts.size() == 1) return loadField(parts.front(), options, report);
+  checkResolution(name, options);
+  LoadReport local;
+  LoadReport& r = report ? *report : local;
+  r = LoadReport{};
+  return guarded(name, [&] {
+    const double allowed = 2.0 * double(options.memoryBudget);
+    double held = 0.0;  // bytes the parts read so far take
+    vtkNew<vtkMultiBlockDataSet> blocks;
+    for (std::size_t i = 0; i < parts.size(); ++i) {
+      const std::filesystem::path& part = parts[i];
+      const std::string where = concat(name, ": part ", i, " (", part.string(), ")");
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(part, ec)) throw Error(concat(where, ": no such file"));
+      const FieldFormat format = detectFieldFormat(part);
+      checkExtension(part, format);
+      LoadOptions read = options;  // each part checked against the budget before it is read
+      LoadReport partReport;
+      vtkSmartPointer<vtkDataObject> data;
+      try {
+        data = readVtkData(part, format, read, partReport);
+      } catch (const Error&) {
+        throw;  // names the part's file
+      } catch (const std::bad_alloc&) {
+        throw;
+      } catch (const std::exception& e) {
+        throw Error(concat(where, ": the reader failed: ", e.what()));
+      }
+      if (!data)
+        throw Error(concat(where, " is ", describe(format),
+                           "; a dataset's parts are VTK files (.vti .vtr .vts .vtu .vtp .vtk, "
+                           "parallel .pvt?, .vtm)"));
+      held += 1024.0 * double(data->GetActualMemorySize());
+      if (held > allowed)
+        throw Error(concat(where, ": the parts up to it take ", held,
+                           " bytes, beyond twice the memory budget (field.memory_budget) of ",
+                           options.memoryBudget, " bytes that a dataset's parts may take",
+                           raiseBudget(held / 2.0)));
+      for (const VtkBlock& b : vtkBlocks(data)) {
+        const unsigned at = blocks->GetNumberOfBlocks();
+        blocks->SetBlock(at, b.data);
+        blocks->GetMetaData(at)->Set(vtkCompositeDataSet::NAME(),
+                                     concat("part ", i, " (", part.filename().string(), ")",
+                                            b.name.empty() ? std::string() : ": " + b.name)
+                                         .c_str());
+      }
+    }
+    VectorField field = extractVectorField(blocks, dataset, options, r);
+    r.format = concat(describe(detectFieldFormat(parts.front())), ", ", parts.size(), " parts");
+    r.notes.push_back(concat(parts.size(), " parts read and resampled together"));
+    if (options.halfPrecision && !field.halfPrecision()) field.roundToHalf();
+    log::debug("loaded ", name, " (", r.format, "): ", field.dims().x, "x", field.dims().y, "x",
+               field.dims().z, " points");
+    return field;
+  });
+}
 
 VectorField loadField(const std::filesystem::path& path, const LoadOptions& options,
                       LoadReport* report) {
@@ -144,7 +232,7 @@ VectorField loadField(const std::filesystem::path& path, const LoadOptions& opti
   LoadReport local;
   LoadReport& r = report ? *report : local;
   r = LoadReport{};
-  try {
+  return guarded(file, [&] {
     VectorField field = dispatch(path, format, options, r);
     if (r.format.empty()) r.format = describe(format);
     // A .vti's floats are rounded as they are checked (vtk_field_extractor).
@@ -152,18 +240,7 @@ VectorField loadField(const std::filesystem::path& path, const LoadOptions& opti
     log::debug("loaded ", file, " (", r.format, "): ", field.dims().x, "x", field.dims().y, "x",
                field.dims().z, " points");
     return field;
-  } catch (const Error& e) {
-    const std::string what = e.what();
-    if (what.rfind(file, 0) == 0) throw;
-    throw Error(concat(file, ": ", what));
-  } catch (const std::bad_alloc&) {
-    throw Error(concat(file, ": ran out of memory while loading; lower the resolution ",
-                       "(field.resolution)"));
-  } catch (const std::exception& e) {
-    // A reading library's own exception (VTK's readers throw the standard
-    // library's on some malformed files): the file is refused, the run goes on.
-    throw Error(concat(file, ": the reader failed: ", e.what()));
-  }
+  });
 }
 
 }  // namespace sandstorm

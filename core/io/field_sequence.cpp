@@ -72,7 +72,7 @@ FieldSequence FieldSequence::fromPvd(const std::filesystem::path& pvd, const Loa
   std::vector<VectorField> frames;
   double bytes = 0.0;
   for (const PvdFrame& f : list) {
-    frames.push_back(loadField(f.file, options));
+    frames.push_back(loadFieldParts(f.parts, pvd, options));
     times.push_back(f.time);
     bytes += 12.0 * double(frames.back().pointCount());
     if (bytes > double(options.memoryBudget))
@@ -96,7 +96,7 @@ FieldSequence FieldSequence::fromFile(const std::filesystem::path& path, const L
     if (report) *report = LoadReport{};
     FieldSequence sequence = fromPvd(path, options, playback);
     if (report) {
-      loadField(readPvd(path).front().file, options, report);
+      loadFieldParts(readPvd(path).front().parts, path, options, report);
       for (std::size_t i = 0; i < sequence.size(); ++i)
         report->times.push_back(sequence.time(i));
     }

@@ -141,6 +141,15 @@ std::vector<FieldStreamScanner::Step> FieldStreamScanner::pollPvd(
   std::vector<Step> out;
   for (const PvdFrame& f : frames) {
     if (newestTime_ && !(f.time > *newestTime_)) continue;
+    if (f.parts.size() > 1) {
+      // Never one part shown as if it were the whole step.
+      messages.push_back(concat(source_.string(), ": the step at t = ", f.time, " s has ",
+                                f.parts.size(),
+                                " parts; a watched .pvd follows one file a step: skipped (without "
+                                "field.watch its parts are read together)"));
+      newestTime_ = f.time;
+      continue;
+    }
     if (!fs::exists(f.file, ec)) {
       if (++missing_[f.file] < patience_) break;  // wait for it, in order
       messages.push_back(concat(source_.string(), ": the step at t = ", f.time, " s (",

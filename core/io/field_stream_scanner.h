@@ -15,7 +15,8 @@
 //     has kept its size over two looks (simulations write the entry after
 //     the file, and its file has settled as above). A .pvd being rewritten that does not parse is
 //     looked at again next time; an entry whose file stays missing for `patience` looks is skipped,
-//     with a message.
+//     with a message, and so is a time of several parts (read only unwatched:
+//     loadFieldParts).
 // A step is reported once. Not thread-safe: one owner polls it.
 #pragma once
 

@@ -3,9 +3,12 @@
 //   <VTKFile type="Collection"><Collection>
 //     <DataSet timestep="0.5" part="0" file="step_001.vti"/> ...
 // parsed with VTK's own XML parser. File names are relative to the .pvd's
-// folder. Frames come back sorted by time; a collection that is empty, names
-// no file, repeats a time or has a non-numeric timestep throws Error. Only
-// part 0 is read (several parts per time would be pieces of one dataset).
+// folder. Frames come back sorted by time. A time may have several parts
+// (ParaView writes a part a rank of a parallel run, or a block of a
+// multiblock: part="0", part="1", ..., each its own file, and a group):
+// they are one dataset, the frame's `parts`, in part order. A collection
+// that is empty, names no file, repeats a part of a time (or a time without
+// parts) or has a non-numeric timestep or part throws Error.
 #pragma once
 
 #include <filesystem>
@@ -15,7 +18,8 @@ namespace sandstorm {
 
 struct PvdFrame {
   double time = 0.0;
-  std::filesystem::path file;
+  std::filesystem::path file;                // the first part's (the only one's, mostly)
+  std::vector<std::filesystem::path> parts;  // every part, file first: one dataset
 };
 
 std::vector<PvdFrame> readPvd(const std::filesystem::path& path);

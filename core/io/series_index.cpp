@@ -18,10 +18,10 @@ SeriesIndex indexSeries(const std::filesystem::path& path, const LoadOptions& op
     // readPvd sorts by time and refuses repeated times.
     for (const PvdFrame& f : readPvd(path)) {
       index.times.push_back(f.time);
-      index.sources.push_back({f.file, 0});
+      index.sources.push_back({f.file, 0, f.parts});
     }
     first = LoadReport{};
-    VectorField field = loadField(index.sources.front().file, options, &first);
+    VectorField field = loadFieldParts(index.sources.front().parts, path, options, &first);
     if (chooseHalf(field, index.times.size() > 1 ? kSeriesGrids : 1, options, first))
       index.stepOptions.halfPrecision = true;
     index.first = std::make_shared<const VectorField>(std::move(field));

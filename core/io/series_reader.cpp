@@ -14,6 +14,20 @@ bool contains(const std::vector<std::size_t>& v, std::size_t i) {
   return std::find(v.begin(), v.end(), i) != v.end();
 }
 
+// A step of several parts is the same step where every part is: their sizes
+// summed, the newest modification, present where all are.
+FileIdentity identityOf(const SeriesReader::Source& s) {
+  if (s.parts.size() <= 1) return FileIdentity::of(s.file);
+  FileIdentity out{.present = true};
+  for (const std::filesystem::path& part : s.parts) {
+    const FileIdentity one = FileIdentity::of(part);
+    out.present = out.present && one.present;
+    out.size += one.size;
+    out.modified = std::max(out.modified, one.modified);
+  }
+  return out;
+}
+
 }  // namespace
 
 SeriesReader::SeriesReader(std::vector<Source> sources, LoadOptions options,
@@ -26,7 +40,7 @@ SeriesReader::SeriesReader(std::vector<Source> sources, LoadOptions options,
   if (sources_.empty() || !first_) throw Error("field series: no first step to start from");
   held_[0] = first_;
   for (const Source& s : sources_)
-    identities_.push_back(FileIdentity::of(s.file));
+    identities_.push_back(identityOf(s));
   const unsigned readers = unsigned(std::max(threads, 1));
   const unsigned share = std::max(1u, std::thread::hardware_concurrency() / readers);
   for (unsigned t = 0; t < readers; ++t)
@@ -49,7 +63,9 @@ std::shared_ptr<const VectorField> SeriesReader::read(const Source& source,
   LoadOptions step = options;
   step.timeStep = source.timeStep;
   step.showProgress = false;  // read in the background, as playback needs it
-  auto field = std::make_shared<const VectorField>(loadField(source.file, step));
+  auto field = std::make_shared<const VectorField>(
+      source.parts.size() > 1 ? loadFieldParts(source.parts, source.file, step)
+                              : loadField(source.file, step));
   if (grid && (field->dims() != grid->dims() || field->bounds().min != grid->bounds().min ||
                field->bounds().max != grid->bounds().max))
     throw Error(concat(source.file.string(),
@@ -153,7 +169,10 @@ std::string SeriesReader::name(std::size_t i) const {
   const Source& s = sources_[i];
   // Steps of one file (Exodus, EnSight, ...) are told apart by their index.
   const bool oneFile = sources_.size() > 1 && sources_[0].file == sources_[1].file;
-  return oneFile ? concat(s.file.string(), " (time step ", s.timeStep, ")") : s.file.string();
+  if (oneFile) return concat(s.file.string(), " (time step ", s.timeStep, ")");
+  if (s.parts.size() > 1)
+    return concat(s.file.string(), " and ", s.parts.size() - 1, " more part(s)");
+  return s.file.string();
 }
 
 std::vector<std::size_t> SeriesReader::resident() const {

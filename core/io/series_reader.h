@@ -35,6 +35,9 @@ class SeriesReader final : public FieldSteps {
   struct Source {
     std::filesystem::path file;
     std::size_t timeStep = 0;  // within a file of several (Exodus, EnSight, ...)
+    // A step stored as several files (a .pvd's parts: file and the others),
+    // read together (loadFieldParts); empty or one: `file` alone.
+    std::vector<std::filesystem::path> parts;
   };
   struct Stats {
     std::uint64_t stepsRead = 0;

@@ -1,5 +1,5 @@
 // A VTK XML file that names other files (.pvtu and the other parallel files,
-// .vtm), with one file it names: the input is the index and that file, split
+// .vtm, a .pvd and its parts), with one file it names: the input is the index and that file, split
 // at the first line that reads "#---". The index is written as "input" and
 // the file as "p0" (no extensions: the loader goes by content), so an index
 // that names "p0" reaches the piece and one that names anything else is

@@ -331,6 +331,13 @@ int main(int argc, char** argv) {
         "<Block index=\"1\"><DataSet index=\"0\" file=\"p0\"/></Block>\n"
         "</vtkMultiBlockDataSet>\n</VTKFile>",
         out / "fuzz_field_vtu" / "mode2.vtu");
+  index("pvd",
+        "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\">\n<Collection>\n"
+        "<DataSet timestep=\"0\" group=\"\" part=\"0\" file=\"p0\"/>\n"
+        "<DataSet timestep=\"0.5\" group=\"\" part=\"1\" file=\"p0\"/>\n"
+        "<DataSet timestep=\"0.5\" group=\"\" part=\"0\" file=\"p1\"/>\n"
+        "</Collection>\n</VTKFile>",
+        out / "fuzz_field_vtu" / "mode0.vtu");
 
   // The project's own writers.
   const auto tornado = makeAnalyticField("tornado", {});
