@@ -248,7 +248,18 @@ void copyScalars(vtkPointData* pd, vtkDataArray* mask, vtkIdType points,
   }
 }
 
-void noteOutside(const VectorField& field, const std::filesystem::path& path, LoadReport& report) {
+// A note on how a file was read: at info level for a read a person waits
+// for, at debug level for a series' steps read in the background (each step
+// would say it again).
+void logNote(const LoadOptions& options, const std::string& where, const std::string& note) {
+  if (options.showProgress)
+    log::info(where, ": ", note);
+  else
+    log::debug(where, ": ", note);
+}
+
+void noteOutside(const VectorField& field, const std::filesystem::path& path,
+                 const LoadOptions& options, LoadReport& report) {
   report.outside = field.invalidCount();
   if (report.outside == 0) return;
   const std::string note =
@@ -256,7 +267,7 @@ void noteOutside(const VectorField& field, const std::filesystem::path& path, Lo
              " points lie outside the file's cells: marked outside the field (particles there "
              "follow sim.boundary)");
   report.notes.push_back(note);
-  log::info(path.string(), ": ", note);
+  logNote(options, path.string(), note);
 }
 
 // `perPoint`: bytes a point takes (12 for the vector, 4 per scalar array).
@@ -297,11 +308,13 @@ void reportNonFinite(std::size_t count, const std::filesystem::path& path, const
               "' are NaN or Inf; replaced by zero");
 }
 
-// With `half` (field.precision = "half"), a float array is rounded to halves
-// as it is checked: the field comes back marked half.
+// With options.halfPrecision (field.precision = "half"), a float array is
+// rounded to halves as it is checked: the field comes back marked half.
 VectorField copyImage(vtkImageData* image, const std::string& name,
-                      const std::filesystem::path& path, bool half, LoadReport& report) {
+                      const std::filesystem::path& path, const LoadOptions& options,
+                      LoadReport& report) {
   const std::string file = path.string();
+  const bool half = options.halfPrecision;
   int extent[6];
   image->GetExtent(extent);
   double origin[3], spacing[3];
@@ -345,7 +358,7 @@ VectorField copyImage(vtkImageData* image, const std::string& name,
   if (range) field.rememberRange(*range);  // found in the check, over the same valid points
   if (rounded) field.markRoundedToHalf();
   copyScalars(image->GetPointData(), mask, image->GetNumberOfPoints(), path, field, report);
-  noteOutside(field, path, report);
+  noteOutside(field, path, options, report);
   return field;
 }
 
@@ -401,7 +414,7 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
     const std::string note = concat(without.size(), " of ", blocks.size(), " blocks carry no '",
                                     choice.name, "' and are left out: ", names);
     report.notes.push_back(note);
-    log::info(file, ": ", note);
+    logNote(options, file, note);
   }
 
   const bool single = used.size() == 1;
@@ -410,7 +423,7 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
   const bool structured = report.sourceDims != glm::ivec3(0);
   const bool keep = options.resolution == glm::ivec3(0) || options.resolution == report.sourceDims;
   if (auto* image = vtkImageData::SafeDownCast(used.front().data); single && image && keep)
-    return copyImage(image, choice.name, path, options.halfPrecision, report);
+    return copyImage(image, choice.name, path, options, report);
 
   // The scalar arrays every block carries travel with the vectors.
   std::vector<std::string> scalars;
@@ -437,7 +450,7 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
       std::string note;
       dims = meshResolution(used, bounds, perPoint, options.memoryBudget, note);
       report.notes.push_back(note);
-      log::info(file, ": ", note);
+      logNote(options, file, note);
     }
   }
   checkBudget(dims, path, options, perPoint);
@@ -475,7 +488,7 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
         " m (twice their mean spacing), outside the field where "
         "there are none");
     report.notes.push_back(note);
-    log::info(file, ": ", note);
+    logNote(options, file, note);
     sampled = interpolatePointCloud(sources, grid, radius,
                                     concat("interpolating ", path.filename().string()));
   } else {
@@ -521,7 +534,7 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
     report.nonFinite += bad;
     field.addScalars(scalars[s], std::move(values));
   }
-  noteOutside(field, path, report);
+  noteOutside(field, path, options, report);
   return field;
 }
 
