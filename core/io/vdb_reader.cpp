@@ -75,8 +75,10 @@ bool axisAligned(const openvdb::math::Transform& t) {
          map->isType<openvdb::math::TranslationMap>();
 }
 
+// `sparseFits`: the grid could be kept sparse instead (axis-aligned, not
+// staggered, its own resolution) where the run asked for it dense.
 void checkBudget(const glm::ivec3& dims, const std::string& file, const std::string& grid,
-                 const openvdb::CoordBBox& bbox, const LoadOptions& options) {
+                 const openvdb::CoordBBox& bbox, const LoadOptions& options, bool sparseFits) {
   const double points = double(dims.x) * dims.y * dims.z;
   const double bytes = points * 12.0;
   if (points <= double(VectorField::kMaxPoints) && bytes <= double(options.memoryBudget)) return;
@@ -87,8 +89,12 @@ void checkBudget(const glm::ivec3& dims, const std::string& file, const std::str
       file, ": densifying grid '", grid, "' over its active bounding box (index ", bbox.min(),
       " to ", bbox.max(), ") at ", dims.x, "x", dims.y, "x", dims.z, " points needs ", bytes,
       " bytes, beyond the memory budget (field.memory_budget) of ", options.memoryBudget,
-      " bytes. Lower the resolution (field.resolution, sandstorm-field", " --dims): ", fit.x, " ",
-      fit.y, " ", fit.z, " fits"));
+      " bytes. Lower the resolution (field.resolution = [", fit.x, ", ", fit.y, ", ", fit.z,
+      "] fits; sandstorm-field --dims ", fit.x, " ", fit.y, " ", fit.z, ")",
+      points > double(VectorField::kMaxPoints)
+          ? std::string()
+          : concat(", or raise field.memory_budget to at least ", budgetValueAtLeast(bytes)),
+      sparseFits ? ", or keep it sparse (field.storage = \"sparse\")" : ""));
 }
 
 template <class GridT>
@@ -142,7 +148,9 @@ VectorField densify(const GridT& grid, const std::string& file, const LoadOption
     if (dims[a] <= 0)
       throw Error(concat(file, ": field.resolution along ", "xyz"[a], " is ", dims[a],
                          "; expected a positive point count"));
-  checkBudget(dims, file, grid.getName(), bbox, options);
+  checkBudget(dims, file, grid.getName(), bbox, options,
+              aligned && !staggered && options.resolution == glm::ivec3(0) &&
+                  options.sparse == SparseChoice::Never);
   const bool exact = aligned && !staggered && dims == report.sourceDims;
   report.resampled = !(aligned && dims == report.sourceDims);
 

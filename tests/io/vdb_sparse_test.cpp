@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <random>
+#include <regex>
 
 #include <openvdb/io/File.h>
 #include <openvdb/math/Maps.h>
@@ -155,6 +156,35 @@ TEST(VdbSparse, WhatCannotBeKeptSparseIsRefusedSayingWhy) {
   options.sparse = SparseChoice::Auto;
   EXPECT_FALSE(readSparseVdb(dir / "rotated.vdb", options, report).has_value());
   EXPECT_FALSE(readSparseVdb(dir / "mac.vdb", options, report).has_value());
+}
+
+// A grid asked for dense whose dense copy passes the budget: the error names
+// each way that fits (a coarser field.resolution, a larger budget, keeping
+// it sparse), and taking the resolution or the sparse storage it names opens it.
+TEST(VdbSparse, ADenseCopyOverTheBudgetNamesEachWayThatFits) {
+  const auto dir = test::scratch();
+  write(dir / "balls.vdb", {twoBalls<openvdb::Vec3SGrid>(scaled())});
+  LoadOptions options;                          // dense (SparseChoice::Never)
+  options.memoryBudget = std::size_t(8) << 20;  // the box's dense copy: 340 MB
+  LoadReport report;
+  std::string what;
+  try {
+    readVdb(dir / "balls.vdb", options, report);
+  } catch (const Error& e) {
+    what = e.what();
+  }
+  std::smatch m;
+  ASSERT_TRUE(
+      std::regex_search(what, m, std::regex(R"(field.resolution = \[(\d+), (\d+), (\d+)\])")))
+      << what;
+  EXPECT_NE(what.find("raise field.memory_budget to at least"), std::string::npos) << what;
+  EXPECT_NE(what.find("field.storage = \"sparse\""), std::string::npos) << what;
+  LoadOptions coarser = options;
+  coarser.resolution = {std::stoi(m[1]), std::stoi(m[2]), std::stoi(m[3])};
+  EXPECT_EQ(readVdb(dir / "balls.vdb", coarser, report).dims(), coarser.resolution);
+  LoadOptions sparse = options;
+  sparse.sparse = SparseChoice::Always;
+  EXPECT_TRUE(readSparseVdb(dir / "balls.vdb", sparse, report).has_value());
 }
 
 }  // namespace
