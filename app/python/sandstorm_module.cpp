@@ -73,8 +73,8 @@ Field loadFieldFile(const std::string& path, const std::optional<std::string>& a
   LoadReport report;
   std::vector<double> times;
   std::vector<std::filesystem::path> parts{path};
-  if (std::filesystem::path(path).extension() ==
-      ".pvd") {  // a series: its steps' times, the step asked for
+  // A series: its steps' times, and the step asked for (all its parts).
+  if (std::filesystem::path(path).extension() == ".pvd") {
     const std::vector<PvdFrame> frames = readPvd(path);
     for (const PvdFrame& f : frames)
       times.push_back(f.time);

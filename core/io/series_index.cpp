@@ -15,7 +15,7 @@ SeriesIndex indexSeries(const std::filesystem::path& path, const LoadOptions& op
   SeriesIndex index;
   index.stepOptions = options;
   if (detectFieldFormat(path) == FieldFormat::VtkCollection) {
-    // readPvd sorts by time and refuses repeated times.
+    // readPvd sorts by time, groups a time's parts and refuses repeated times.
     for (const PvdFrame& f : readPvd(path)) {
       index.times.push_back(f.time);
       index.sources.push_back({f.file, 0, f.parts});
