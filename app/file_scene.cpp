@@ -266,7 +266,7 @@ std::optional<VtkImageFrame> firstStepFrame(const std::filesystem::path& pvd) {
   try {
     const PvdFrame first = readPvd(pvd).front();
     if (first.parts.size() > 1) return std::nullopt;  // resampled together: not a header's grid
-    return headerFrame(first.file, detectFieldFormat(first.file));
+    return headerFrame(first.file(), detectFieldFormat(first.file()));
   } catch (const Error&) {
     return std::nullopt;
   }

@@ -107,7 +107,7 @@ VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
       const std::vector<PvdFrame> frames = readPvd(path);
       report.notes.push_back(concat("time series of ", frames.size(),
                                     " frames: loaded the first (t = ", frames.front().time, ", ",
-                                    frames.front().file.filename().string(), ")"));
+                                    frames.front().file().filename().string(), ")"));
       LoadReport inner;
       VectorField f = loadFieldParts(frames.front().parts, path, options, &inner);
       report.available = inner.available;
@@ -132,7 +132,7 @@ VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
 
 // A library's exceptions as the loaders' errors, naming `file`.
 template <class Read>
-VectorField guarded(const std::string& file, Read&& read) {
+auto guarded(const std::string& file, Read&& read) -> decltype(read()) {
   try {
     return read();
   } catch (const Error& e) {
@@ -174,16 +174,8 @@ VectorField loadFieldParts(const std::vector<std::filesystem::path>& parts,
       checkExtension(part, format);
       LoadOptions read = options;  // each part checked against the budget before it is read
       LoadReport partReport;
-      vtkSmartPointer<vtkDataObject> data;
-      try {
-        data = readVtkData(part, format, read, partReport);
-      } catch (const Error&) {
-        throw;  // names the part's file
-      } catch (const std::bad_alloc&) {
-        throw;
-      } catch (const std::exception& e) {
-        throw Error(concat(where, ": the reader failed: ", e.what()));
-      }
+      const vtkSmartPointer<vtkDataObject> data =
+          guarded(part.string(), [&] { return readVtkData(part, format, read, partReport); });
       if (!data)
         throw Error(concat(where, " is ", describe(format),
                            "; a dataset's parts are VTK files (.vti .vtr .vts .vtu .vtp .vtk, "

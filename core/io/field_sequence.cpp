@@ -78,13 +78,13 @@ FieldSequence FieldSequence::fromPvd(const std::filesystem::path& pvd, const Loa
     if (bytes > double(options.memoryBudget))
       throw Error(concat(pvd.string(),
                          ": its frames together exceed the memory budget (field.memory_budget) of ",
-                         options.memoryBudget, " bytes at ", f.file.string(),
+                         options.memoryBudget, " bytes at ", f.file().string(),
                          "; lower the resolution (field.resolution)"));
     if (frames.size() > 1 && (frames.back().dims() != frames.front().dims() ||
                               frames.back().bounds().min != frames.front().bounds().min ||
                               frames.back().bounds().max != frames.front().bounds().max))
-      throw Error(concat(pvd.string(), ": frame ", f.file.string(),
-                         " has other dims or bounds than ", list.front().file.string(),
+      throw Error(concat(pvd.string(), ": frame ", f.file().string(),
+                         " has other dims or bounds than ", list.front().file().string(),
                          "; expected every frame on the same grid"));
   }
   return FieldSequence(std::move(times), std::move(frames), playback);

@@ -150,18 +150,18 @@ std::vector<FieldStreamScanner::Step> FieldStreamScanner::pollPvd(
       newestTime_ = f.time;
       continue;
     }
-    if (!fs::exists(f.file, ec)) {
-      if (++missing_[f.file] < patience_) break;  // wait for it, in order
+    if (!fs::exists(f.file(), ec)) {
+      if (++missing_[f.file()] < patience_) break;  // wait for it, in order
       messages.push_back(concat(source_.string(), ": the step at t = ", f.time, " s (",
-                                f.file.string(), ") stayed missing for ", patience_,
+                                f.file().string(), ") stayed missing for ", patience_,
                                 " looks: skipped"));
-      missing_.erase(f.file);
+      missing_.erase(f.file());
       newestTime_ = f.time;
       continue;
     }
-    missing_.erase(f.file);
-    if (!settled(f.file)) break;
-    out.push_back({f.time, f.file});
+    missing_.erase(f.file());
+    if (!settled(f.file())) break;
+    out.push_back({f.time, f.file()});
     newestTime_ = f.time;
   }
   return out;

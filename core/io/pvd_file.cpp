@@ -92,7 +92,7 @@ std::vector<PvdFrame> readPvd(const std::filesystem::path& path) {
       frames.back().parts.push_back(e.file);
       continue;
     }
-    frames.push_back({e.time, e.file, {e.file}});
+    frames.push_back({e.time, {e.file}});
   }
   return frames;
 }

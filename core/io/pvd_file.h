@@ -18,8 +18,9 @@ namespace sandstorm {
 
 struct PvdFrame {
   double time = 0.0;
-  std::filesystem::path file;                // the first part's (the only one's, mostly)
-  std::vector<std::filesystem::path> parts;  // every part, file first: one dataset
+  std::vector<std::filesystem::path> parts;  // in part order, one dataset: one file, mostly
+
+  const std::filesystem::path& file() const { return parts.front(); }  // the first part's
 };
 
 std::vector<PvdFrame> readPvd(const std::filesystem::path& path);

@@ -18,7 +18,7 @@ SeriesIndex indexSeries(const std::filesystem::path& path, const LoadOptions& op
     // readPvd sorts by time, groups a time's parts and refuses repeated times.
     for (const PvdFrame& f : readPvd(path)) {
       index.times.push_back(f.time);
-      index.sources.push_back({f.file, 0, f.parts});
+      index.sources.push_back({f.file(), 0, f.parts});
     }
     first = LoadReport{};
     VectorField field = loadFieldParts(index.sources.front().parts, path, options, &first);

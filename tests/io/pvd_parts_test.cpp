@@ -87,7 +87,7 @@ TEST(PvdParts, ATimesPartsAreOneFrameInPartOrder) {
   ASSERT_EQ(frames[1].parts.size(), 2u);
   EXPECT_EQ(frames[1].parts[0].filename(), "run_1_0.vti");
   EXPECT_EQ(frames[1].parts[1].filename(), "run_1_1.vtu");
-  EXPECT_EQ(frames[1].file, frames[1].parts[0]);
+  EXPECT_EQ(frames[1].file(), frames[1].parts[0]);
 }
 
 TEST(PvdParts, ATimeOpensWholeAndEveryStepStreamsWhole) {
