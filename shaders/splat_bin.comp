@@ -20,6 +20,13 @@
 //     count's invocations found them in, which varies, as the slots within a
 //     tile's list already did: the sums are integers, so the image does not
 //     depend on it.
+//   A wall's two eyes (uNextList): the first eye's count also lists the
+//     particles that may show in the second eye's view (nextView: the same
+//     test with margins wider than any rounding, so a superset), and the
+//     second eye's count visits only those where they are at most half the
+//     workgroup's range. A CAVE's side walls and floor see a few percent of
+//     the particles: their second eye no longer reads all of them.
+//   Lists are written only up to half the range: a fuller one is never read.
 // One program for both, so both passes find exactly the same tiles.
 #include "view_block.glsl"
 #include "render_block.glsl"
@@ -49,8 +56,26 @@ layout(std430, binding = 9) readonly restrict buffer TileStarts { uint tileStart
 layout(std430, binding = 10) restrict buffer GroupBase { uint groupBase[]; };  // [group][tile]
 layout(std430, binding = 18) restrict buffer InView { uint inView[]; };            // particle indices
 layout(std430, binding = 19) restrict buffer InViewCount { uint inViewCount[]; };  // [group]
+// The wall's next view (the second eye), as view_block.glsl's.
+layout(std140, binding = 7) uniform NextViewBlock {
+  mat4 viewMatrix;
+  mat4 projection;
+  mat4 viewProjection;
+  mat4 inverseViewProjection;
+  vec4 eye;
+  vec4 viewport;
+} nextView;
+// The particles that may show in the next view: a count a workgroup, then
+// their indices within each workgroup's range.
+layout(std430, binding = 20) restrict buffer NextInView {
+  uint nextCount[kSplatMaxBinGroups];
+  uint nextIndex[];
+};
 layout(location = 1) uniform bool uScatter;
 layout(location = 2) uniform uint uListCapacity;
+// 0: no next view; 1 (a count): list the particles that may show in
+// nextView; 2 (a count): visit only the particles the first eye listed.
+layout(location = 3) uniform int uNextList;
 
 #include "splat_add.glsl"
 #include "splat_coarsening.glsl"
@@ -61,6 +86,32 @@ shared uint sBins[kSplatMaxTiles];
 // memory llvmpipe allows). A view of all kSplatMaxTiles tiles lists none,
 // and its scatter visits every particle.
 const uint kInViewSlot = kSplatMaxTiles - 1u;
+// The count of those that may show in the next view (ParticleSplat lists
+// them only for views of fewer tiles).
+const uint kNextSlot = kSplatMaxTiles - 2u;
+
+// Pixels beyond the next view's edges a particle's centre may lie and still
+// be listed: more than a coarser level's rounding of its grid (up to 7
+// pixels at the fourth level), the centre's fixed point and the float
+// rounding between two programs; with MOTION_BLUR, its smear too.
+#ifdef MOTION_BLUR
+const float kNextMargin = 10.0 + kMaxSmear;
+#else
+const float kNextMargin = 10.0;
+#endif
+
+// Whether the particle at `center` may show in the next view: splatCentre
+// and splatBounds's tests with its unclamped radius and a margin, so
+// everything they pass passes this.
+bool mayShowInNext(vec3 center) {
+  vec4 clip = nextView.viewProjection * vec4(center, 1.0);
+  if (!(clip.w > 0.5e-4)) return false;
+  vec2 size = nextView.viewport.zw;
+  vec2 pixel = (clip.xy / clip.w * 0.5 + 0.5) * size;
+  vec2 radius = 0.25 * look.params.x * vec2(nextView.projection[0][0], nextView.projection[1][1]) * size / clip.w;
+  vec2 reach = radius + kNextMargin;
+  return all(greaterThanEqual(pixel + reach, vec2(0.0))) && all(lessThanEqual(pixel - reach, size));
+}
 
 void main() {
   uint lid = gl_LocalInvocationIndex;
@@ -72,19 +123,27 @@ void main() {
   for (uint t = lid; t < tiles; t += kGroup)
     sBins[t] = uScatter ? tileStart[t] + groupBase[group * tiles + t] : 0u;
   bool listed = tiles <= kInViewSlot;
+  bool listNext = !uScatter && uNextList == 1;
   if (listed && lid == 0u) sBins[kInViewSlot] = 0u;
+  if (listNext && lid == 0u) sBins[kNextSlot] = 0u;
   barrier();
   uint begin = group * args.perGroup, end = min(begin + args.perGroup, args.count);
+  uint range = end - begin;
   // Where most of the workgroup's particles are in view, reading them in
   // order beats gathering them through the list (the list's order is
   // scattered: 0.2 ms more a view at 10^8 on an H200).
-  uint listedCount = uScatter && listed ? inViewCount[group] : 0u;
-  bool fromList = uScatter && listed && listedCount * 2u <= end - begin;
-  uint visits = fromList ? listedCount : end - begin;
+  bool nextListed = !uScatter && uNextList == 2;
+  uint listedCount = uScatter && listed ? inViewCount[group] : nextListed ? nextCount[group] : 0u;
+  bool fromList = ((uScatter && listed) || nextListed) && listedCount * 2u <= range;
+  uint visits = fromList ? listedCount : range;
   for (uint k = lid; k < visits; k += kGroup) {
-    uint i = fromList ? inView[begin + k] : begin + k;
+    uint i = fromList ? (nextListed ? nextIndex[begin + k] : inView[begin + k]) : begin + k;
     // Counting needs only where the splat is (the positions; the velocities for motion blur).
     vec4 pl = positionLife[i];
+    if (listNext && mayShowInNext(pl.xyz)) {
+      uint slot = atomicAdd(sBins[kNextSlot], 1u);
+      if (slot * 2u <= range) nextIndex[begin + slot] = i;
+    }
     uvec3 where;
     Splat s;
 #if defined(MOTION_BLUR)
@@ -98,7 +157,10 @@ void main() {
     if (!splatCentre(pl.xyz, velocity, where)) continue;
     int level = splatLevelOf(where);
     if (!splatBounds(where, level, s)) continue;
-    if (!uScatter && listed) inView[begin + atomicAdd(sBins[kInViewSlot], 1u)] = i;
+    if (!uScatter && listed) {
+      uint slot = atomicAdd(sBins[kInViewSlot], 1u);
+      if (slot * 2u <= range) inView[begin + slot] = i;
+    }
     uvec4 record = uvec4(where, uScatter ? splatLook(pl, velocityKind[i]) : 0u);
     ivec2 t0 = s.lo / kSplatTile, t1 = s.hi / kSplatTile;
     uint first = splatTileOffset(size, level), across = uint(splatLevelTiles(size, level).x);
@@ -126,6 +188,7 @@ void main() {
   if (uScatter) return;
   barrier();
   if (listed && lid == 0u) inViewCount[group] = sBins[kInViewSlot];
+  if (listNext && lid == 0u) nextCount[group] = sBins[kNextSlot];
   for (uint t = lid; t < tiles; t += kGroup) {
     uint n = sBins[t];
     if (n != 0u) groupBase[group * tiles + t] = atomicAdd(tileCount[t], n);

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdlib>
+#include <cstring>
 #include <limits>
 #include <string_view>
 
@@ -64,8 +65,17 @@ enum Binding : GLuint {
   kMotionSums = 16,
   kTrailStaged = 17,
   kInView = 18,
-  kInViewCount = 19
+  kInViewCount = 19,
+  kNextInView = 20
 };
+constexpr GLuint kNextViewBlock = 7;  // splat_bin.comp's NextViewBlock
+constexpr GLint kNextListUniform = 3;
+
+bool sameParticles(const ParticleBackend::Records& a, const ParticleBackend::Records& b) {
+  return a.positionLife == b.positionLife && a.velocityKind == b.velocityKind &&
+         a.countBuffer == b.countBuffer && a.countOffset == b.countOffset &&
+         a.countAdd == b.countAdd;
+}
 
 // Uniform locations of trail_common.glsl.
 constexpr GLint kTrailLengthUniform = 16, kTrailHeadUniform = 17;
@@ -97,8 +107,10 @@ ParticleSplat::ParticleSplat(const GpuTuning& tuning)
       prepare_(std::vector<std::string>{"splat_prepare.comp"}),
       clear_(std::vector<std::string>{"splat_clear.comp"}),
       dispatch_(gl::createBuffer()),
-      chunkDispatch_(gl::createBuffer()) {
+      chunkDispatch_(gl::createBuffer()),
+      nextViewBlock_(gl::createBuffer()) {
   glNamedBufferStorage(dispatch_.id(), 64, nullptr, 0);
+  glNamedBufferStorage(nextViewBlock_.id(), sizeof(ViewBlock), nullptr, GL_DYNAMIC_STORAGE_BIT);
   // A storage buffer may hold at most GL_MAX_SHADER_STORAGE_BLOCK_SIZE bytes
   // (2 GB on NVIDIA's driver: 134 million records); the scatter pass adds
   // the records past the lists' end itself.
@@ -138,7 +150,7 @@ const ParticleSplat::Programs& ParticleSplat::programs(SplatLook look) const {
 }
 
 void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& targets,
-                         std::uint32_t sprite, SplatLook look) const {
+                         std::uint32_t sprite, SplatLook look, SplatViews views) const {
   const Programs& p = programs(look);
   const ParticleBackend::Records records = particles.records();
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kPositionLife, records.positionLife);
@@ -175,12 +187,14 @@ void ParticleSplat::draw(const ParticleBackend& particles, const ViewTargets& ta
 
   prepare(records);
   const bool trails = hasTrails(records);
-  if (tiled)
-    addTiled(p, levelTiles(size, levels), levels,
-             listRecords(particles.capacity(), trails ? records.trailLength : 0),
-             particles.capacity());
-  else
+  if (tiled) {
+    const std::size_t tiles = levelTiles(size, levels);
+    addTiled(p, tiles, levels, listRecords(particles.capacity(), trails ? records.trailLength : 0),
+             particles.capacity(), nextList(records, views, size, tiles, particles.capacity()));
+  } else {
+    nextListed_.reset();
     addAtomic(p);
+  }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   if (trails) addTrailSums(records, particles.capacity(), size, tiled);
   // Both variants leave the sums in the buffer; the resolve turns them into
@@ -428,8 +442,35 @@ std::size_t ParticleSplat::listRecords(std::size_t capacity, int trailLength) co
   return std::min(std::max(splats, runs) + 4096, maxListRecords_);
 }
 
+int ParticleSplat::nextList(const ParticleBackend::Records& records, SplatViews views,
+                            glm::ivec2 size, std::size_t tileCount, std::size_t particles) const {
+  // Visit the list where the last draw made it for this very view and these particles.
+  const std::optional<NextListed> listed = std::move(nextListed_);
+  nextListed_.reset();
+  int mode = 0;
+  if (listed && views.view && sameParticles(records, listed->records)) {
+    const ViewBlock block = makeViewBlock(*views.view, size);
+    if (std::memcmp(&block, &listed->view, sizeof block) == 0) mode = 2;
+  }
+  // List for the next view where the histogram has a slot to count them in.
+  if (mode == 0 && views.next && tileCount + 2 <= kMaxTiles) {
+    mode = 1;
+    nextListed_ = NextListed{makeViewBlock(*views.next, size), records};
+    glNamedBufferSubData(nextViewBlock_.id(), 0, sizeof(ViewBlock), &nextListed_->view);
+  }
+  // Both counts declare the list and the block: bound always, sized where used.
+  const std::size_t words = kMaxBinGroups + (mode != 0 ? particles : 1);
+  if (words > nextInViewCapacity_) {
+    nextInView_ = allocate(words * 4, "the particles the next view may show");
+    nextInViewCapacity_ = words;
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kNextInView, nextInView_.id());
+  glBindBufferBase(GL_UNIFORM_BUFFER, kNextViewBlock, nextViewBlock_.id());
+  return mode;
+}
+
 void ParticleSplat::addTiled(const Programs& p, std::size_t tileCount, int levels,
-                             std::size_t listCapacity, std::size_t particles) const {
+                             std::size_t listCapacity, std::size_t particles, int nextList) const {
   bindTiles(tileCount, listCapacity);
   bindInView(particles);
 
@@ -440,6 +481,7 @@ void ParticleSplat::addTiled(const Programs& p, std::size_t tileCount, int level
   glProgramUniform1i(p.bin->id(), kLevelsUniform, levels);
   glProgramUniform1i(p.bin->id(), 1, GL_FALSE);
   glProgramUniform1ui(p.bin->id(), 2, GLuint(listCapacity));
+  glProgramUniform1i(p.bin->id(), kNextListUniform, nextList);
   glDispatchComputeIndirect(kBinDispatch);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 

@@ -55,6 +55,7 @@
 #include "contexts/gl/timestamp_spans.h"
 #include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_motion_filter.h"
+#include "contexts/render/frame_blocks.h"
 #include "core/config/gpu_tuning.h"
 #include "core/util/faster_choice.h"
 
@@ -72,6 +73,18 @@ struct SplatLook {
   bool levels = false;
 };
 
+// The view a draw is for and the one drawn next from the same particles (a
+// wall's second eye), or null: the first view's binning then also lists the
+// particles that may show in the next one, whose binning visits only those
+// (tiled variant). A CAVE's side walls and floor see a few percent of the
+// particles, and their second eye no longer reads all of them. The next
+// draw must describe `next` exactly (the same view block) and come before the
+// particles change (ParticleSplat::particlesChanged), or it reads them all.
+struct SplatViews {
+  const View* view = nullptr;
+  const View* next = nullptr;
+};
+
 class ParticleSplat {
  public:
   // `tuning`: tiled or atomic, the chunk and list sizes (GpuTuning).
@@ -79,7 +92,9 @@ class ParticleSplat {
   // Replaces the view's particle buffers with the splatted particles. `sprite`:
   // ParticleRender's puff texture.
   void draw(const ParticleBackend& particles, const ViewTargets& targets, std::uint32_t sprite,
-            SplatLook look = {}) const;
+            SplatLook look = {}, SplatViews views = {}) const;
+  // The particles moved (an update): a listed next view's list is stale.
+  void particlesChanged() { nextListed_.reset(); }
   // A view that draws billboards: the trails (render.trail_length), by the
   // same passes, blended unlit over the view's scene colour, hidden behind
   // the scene as with splats. With the view and render blocks bound.
@@ -113,8 +128,14 @@ class ParticleSplat {
   // `tileCount`: of every level's grid; `levels`: how many the view uses;
   // `listCapacity`: the splat records the lists hold (listRecords);
   // `particles`: the backend's capacity.
+  // `nextList`: 0, or 1 to list the particles that may show in the view
+  // bound as the next one, or 2 to visit only those (splat_bin.comp).
   void addTiled(const Programs& p, std::size_t tileCount, int levels, std::size_t listCapacity,
-                std::size_t particles) const;
+                std::size_t particles, int nextList) const;
+  // Which of addTiled's nextList this view's binning takes, binding the next
+  // view's block and list where it lists or visits them.
+  int nextList(const ParticleBackend::Records& records, SplatViews views, glm::ivec2 size,
+               std::size_t tileCount, std::size_t particles) const;
   // Trails in the tiled variant, after addTiled; `tileCount`: the full-resolution grid's.
   void addTiledTrails(const ParticleBackend::Records& records, std::size_t tileCount) const;
   // The splat records (16 bytes) the lists hold for `capacity` particles and
@@ -142,7 +163,7 @@ class ParticleSplat {
   mutable gl::Buffer motion_;
   mutable std::size_t motionTiles_ = 0;
   mutable std::unique_ptr<ParticleMotionFilter> filter_;
-  gl::Buffer dispatch_, chunkDispatch_;
+  gl::Buffer dispatch_, chunkDispatch_, nextViewBlock_;
   mutable gl::Buffer accumulation_;  // the sums
   mutable std::size_t pixels_ = 0;
   mutable gl::Buffer occupied_;  // the coarser levels' tiles with splats
@@ -153,6 +174,16 @@ class ParticleSplat {
   // tiled: the particles each binning workgroup found in view, and how many.
   mutable gl::Buffer inView_, inViewCount_;
   mutable std::size_t inViewCapacity_ = 0;
+  // tiled: the particles that may show in the next view (SplatViews), a
+  // count a binning workgroup first; that view's block; and what the list
+  // is for: the view it was made for and the particles it lists.
+  struct NextListed {
+    ViewBlock view;
+    ParticleBackend::Records records;
+  };
+  mutable gl::Buffer nextInView_;
+  mutable std::size_t nextInViewCapacity_ = 0;
+  mutable std::optional<NextListed> nextListed_;
   // Trails, made on first use: the atomic variant's passes, the tiled one's.
   mutable std::unique_ptr<gl::Program> trailPrepare_, trails_, trailBin_, trailTile_,
       trailOverScene_;

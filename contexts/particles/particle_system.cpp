@@ -53,6 +53,7 @@ void ParticleSystem::setTerrain(std::shared_ptr<const HeightMap> terrain) {
 }
 
 void ParticleSystem::advance(const FramePacket& packet) {
+  splat_.particlesChanged();
   fieldBlend_ = packet.fieldBlend;
   if (packet.reset) {
     update_->clear();
@@ -143,7 +144,8 @@ bool ParticleSystem::splats(const View* view, glm::ivec2 size) const {
   return pixels <= r.splatPixels;
 }
 
-void ParticleSystem::renderParticles(const ViewTargets& targets, const View* view) const {
+void ParticleSystem::renderParticles(const ViewTargets& targets, const View* view,
+                                     const View* next) const {
   if (splats(view, targets.size())) {
     const RenderSettings& r = state_.render;
     using Blur = SplatLook::Blur;
@@ -152,7 +154,8 @@ void ParticleSystem::renderParticles(const ViewTargets& targets, const View* vie
                  .blur = r.shutter <= 0.0f             ? Blur::None
                          : r.blur == BlurMethod::Smear ? Blur::Smear
                                                        : Blur::Filter,
-                 .levels = r.splatDetail > 0.0f});
+                 .levels = r.splatDetail > 0.0f},
+                {.view = view, .next = next});
   } else
     render_.draw(*update_, targets, state_.render.mode, state_.render.order);
   if (const MoleculeHandles m = molecules()) {

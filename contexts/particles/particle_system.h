@@ -69,7 +69,9 @@ class ParticleSystem {
               const View* view = nullptr) const;
   // render()'s two halves, for callers that time them apart (sandstorm-bench):
   // the particles into the view's particle buffers, then the lit composite.
-  void renderParticles(const ViewTargets& targets, const View* view = nullptr) const;
+  // `next`: the view drawn next from these particles, or null (SplatViews).
+  void renderParticles(const ViewTargets& targets, const View* view = nullptr,
+                       const View* next = nullptr) const;
   // Whether this view draws splats (render.mode splat, or auto and particles
   // at the field's centre cover at most render.splat_pixels pixels).
   bool splats(const View* view, glm::ivec2 size) const;

@@ -19,14 +19,14 @@ ViewRenderer::ViewRenderer() : viewBlock_(gl::createBuffer()), renderBlock_(gl::
 }
 
 void ViewRenderer::render(const ParticleSystem& particles, const View& view, glm::ivec2 size,
-                          std::uint32_t destination, glm::ivec2 origin,
-                          gl::FrameStageTimer* timer) {
+                          std::uint32_t destination, glm::ivec2 origin, gl::FrameStageTimer* timer,
+                          const View* next) {
   using Stage = gl::FrameStageTimer::Stage;
   if (timer) timer->begin(Stage::Scene);
   drawScene(particles, view, size);
   if (timer) timer->end();
   if (timer) timer->begin(Stage::Particles);
-  particles.renderParticles(targets_, &view);
+  particles.renderParticles(targets_, &view, next);
   if (timer) timer->end();
   if (timer) timer->begin(Stage::Post);
   particles.composite(targets_, destination, origin);

@@ -26,8 +26,11 @@ class ViewRenderer {
 
   SceneRenderer& scene() { return scene_; }
   // `timer` (may be null) measures the scene, particle and post stages.
+  // `next`: the view drawn next from the same particles (a wall's second
+  // eye), or null; its splats' binning then reads fewer (SplatViews).
   void render(const ParticleSystem& particles, const View& view, glm::ivec2 size,
-              std::uint32_t destination, glm::ivec2 origin, gl::FrameStageTimer* timer = nullptr);
+              std::uint32_t destination, glm::ivec2 origin, gl::FrameStageTimer* timer = nullptr,
+              const View* next = nullptr);
   // render()'s first half, for callers that time the stages apart
   // (sandstorm-bench): binds the view and render blocks and draws the scene
   // into targets(); the particle system's passes follow.

@@ -71,11 +71,11 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
     case StereoMode::TopBottom:
       for (std::size_t eye = 0; eye < 2; ++eye)
         viewRenderer_.render(system_, views[eye], viewSize, destination, {eyes[eye].x, eyes[eye].y},
-                             &timer_);
+                             &timer_, eye == 0 ? &views[1] : nullptr);
       break;
     case StereoMode::QuadBuffer:
       glNamedFramebufferDrawBuffer(0, GL_BACK_LEFT);
-      viewRenderer_.render(system_, views[0], size, 0, {0, 0}, &timer_);
+      viewRenderer_.render(system_, views[0], size, 0, {0, 0}, &timer_, &views[1]);
       glNamedFramebufferDrawBuffer(0, GL_BACK_RIGHT);
       viewRenderer_.render(system_, views[1], size, 0, {0, 0}, &timer_);
       glNamedFramebufferDrawBuffer(0, GL_BACK);
@@ -84,7 +84,7 @@ void WallRenderer::drawViews(const FramePacket& packet, std::uint32_t destinatio
       for (int eye = 0; eye < 2; ++eye) {
         eyes_[eye].resize(size);
         viewRenderer_.render(system_, views[std::size_t(eye)], size, eyes_[eye].framebuffer(),
-                             {0, 0}, &timer_);
+                             {0, 0}, &timer_, eye == 0 ? &views[1] : nullptr);
       }
       glBindFramebuffer(GL_FRAMEBUFFER, destination);
       glViewport(0, 0, size.x, size.y);

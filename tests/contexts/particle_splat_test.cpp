@@ -292,6 +292,69 @@ TEST_P(ParticleSplatTest, TiledAndAtomicSplatsAddTheSameSumsSoDrawTheSameImage) 
   }
 }
 
+// A stereo wall's two eyes 6 m apart (each eye's image half as wide, as a side-by-side display
+// stretches it), side by side in one image.
+Image renderEyes(const ParticleState& state, const std::string& backend, const GpuTuning& tuning) {
+  MainContext::Options options;
+  options.fixedDt = 0.25f;
+  options.seed = 3;
+  MainContext main(state, FieldUpdate{}, options);
+  WallSpec wall;
+  wall.name = "test";
+  wall.camera = kCamera;
+  wall.stereo = StereoMode::SideBySide;
+  wall.offscreenSize = {2 * kSize.x, kSize.y};
+  WallRenderer renderer(WallRendererSetup{.wall = wall,
+                                          .initial = state,
+                                          .capacity = 4096,
+                                          .backend = backend,
+                                          .tuning = tuning,
+                                          .nearPlane = 0.1f,
+                                          .farPlane = 100.0f});
+  for (int f = 0; f < 2; ++f) {
+    FramePacket p = main.next();
+    p.viewer.head.eyeSeparation = 6.0f;
+    renderer.frame(p, {0, 0});
+  }
+  return renderer.capture();
+}
+
+// The first eye's binning lists the particles that may show in the second
+// eye's view, and the second eye's visits only those (SplatViews): the
+// cloud lies beyond the first eye's view and a fifth of it in the second's,
+// some splats across that view's edge, so a list made from the first eye's
+// view, or without the splats' reach, leaves particles out of the second.
+TEST_P(ParticleSplatTest, AWallsSecondEyeDrawsWhatItSeesFromTheParticlesTheFirstListed) {
+  for (float size : {0.25f, 0.9f}) {
+    SCOPED_TRACE(size);
+    ParticleState state = cloud(RenderMode::Splat, size, true);
+    state.emitters[0].position.x = 12.0f;  // the eyes see up to 4.8 and 10.8 m to the right at 8 m
+    state.render.splatOverlap = 0.0f;      // the atomic variant draws no tile coarser
+    const Image atomic =
+        renderEyes(state, GetParam(), GpuTuning{.splat = GpuTuning::Splat::Atomic});
+    const Image tiled = renderEyes(state, GetParam(), GpuTuning{});
+    ParticleState none = state;
+    none.emitters[0].rate = 0.0f;
+    const Image empty = renderEyes(none, GetParam(), GpuTuning{});
+    // The second eye (the image's right half) shows the cloud; the first none of it.
+    int first = 0, second = 0;
+    for (int y = 0; y < kSize.y; ++y)
+      for (int x = 0; x < 2 * kSize.x; ++x) {
+        const std::size_t i = std::size_t(y * 2 * kSize.x + x) * 4;
+        const bool differs = atomic.rgba[i] != empty.rgba[i] ||
+                             atomic.rgba[i + 1] != empty.rgba[i + 1] ||
+                             atomic.rgba[i + 2] != empty.rgba[i + 2];
+        (x < kSize.x ? first : second) += differs ? 1 : 0;
+      }
+    if (const char* dir = std::getenv("SANDSTORM_TEST_IMAGES"))
+      writePng(atomic, std::string(dir) + "/eyes-" + GetParam() + "-" +
+                           std::to_string(int(size * 100)) + ".png");
+    EXPECT_EQ(first, 0);
+    EXPECT_GT(second, 100);
+    EXPECT_TRUE(tiled.rgba == atomic.rgba);
+  }
+}
+
 // Trails in the tiled variant's runs of pixels a tile add the same integers
 // as the atomic variant's segments: the cloud turning about the z axis, its
 // trails of 8 positions several pixels a segment, crossing the 32-pixel tiles.
