@@ -113,6 +113,21 @@ bool mayShowInNext(vec3 center) {
   return all(greaterThanEqual(pixel + reach, vec2(0.0))) && all(lessThanEqual(pixel - reach, size));
 }
 
+// Lists particle i in the workgroup's range of inView or nextIndex, counting
+// it in sBins[slot]. Only while the count is at most half the range: a list
+// fuller than that is never read, so once past half the count need only
+// stay past it, and a particle that reads it there saves the atomic (in a
+// view full of particles, every invocation of an SM adding to one word).
+void listParticle(uint slot, uint range, uint i, bool next) {
+  if (sBins[slot] * 2u > range) return;
+  uint at = atomicAdd(sBins[slot], 1u);
+  if (at * 2u > range) return;
+  if (next)
+    nextIndex[gl_WorkGroupID.x * args.perGroup + at] = i;
+  else
+    inView[gl_WorkGroupID.x * args.perGroup + at] = i;
+}
+
 void main() {
   uint lid = gl_LocalInvocationIndex;
   ivec2 size = ivec2(view.viewport.zw);
@@ -140,10 +155,7 @@ void main() {
     uint i = fromList ? (nextListed ? nextIndex[begin + k] : inView[begin + k]) : begin + k;
     // Counting needs only where the splat is (the positions; the velocities for motion blur).
     vec4 pl = positionLife[i];
-    if (listNext && mayShowInNext(pl.xyz)) {
-      uint slot = atomicAdd(sBins[kNextSlot], 1u);
-      if (slot * 2u <= range) nextIndex[begin + slot] = i;
-    }
+    if (listNext && mayShowInNext(pl.xyz)) listParticle(kNextSlot, range, i, true);
     uvec3 where;
     Splat s;
 #if defined(MOTION_BLUR)
@@ -157,10 +169,7 @@ void main() {
     if (!splatCentre(pl.xyz, velocity, where)) continue;
     int level = splatLevelOf(where);
     if (!splatBounds(where, level, s)) continue;
-    if (!uScatter && listed) {
-      uint slot = atomicAdd(sBins[kInViewSlot], 1u);
-      if (slot * 2u <= range) inView[begin + slot] = i;
-    }
+    if (!uScatter && listed) listParticle(kInViewSlot, range, i, false);
     uvec4 record = uvec4(where, uScatter ? splatLook(pl, velocityKind[i]) : 0u);
     ivec2 t0 = s.lo / kSplatTile, t1 = s.hi / kSplatTile;
     uint first = splatTileOffset(size, level), across = uint(splatLevelTiles(size, level).x);
