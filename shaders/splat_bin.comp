@@ -118,8 +118,10 @@ bool mayShowInNext(vec3 center) {
 // fuller than that is never read, so once past half the count need only
 // stay past it, and a particle that reads it there saves the atomic (in a
 // view full of particles, every invocation of an SM adding to one word).
+bool listOpen(uint slot, uint range) { return sBins[slot] * 2u <= range; }
+
 void listParticle(uint slot, uint range, uint i, bool next) {
-  if (sBins[slot] * 2u > range) return;
+  if (!listOpen(slot, range)) return;
   uint at = atomicAdd(sBins[slot], 1u);
   if (at * 2u > range) return;
   if (next)
@@ -155,7 +157,9 @@ void main() {
     uint i = fromList ? (nextListed ? nextIndex[begin + k] : inView[begin + k]) : begin + k;
     // Counting needs only where the splat is (the positions; the velocities for motion blur).
     vec4 pl = positionLife[i];
-    if (listNext && mayShowInNext(pl.xyz)) listParticle(kNextSlot, range, i, true);
+    // (Past half, the test is skipped too: most of a front wall's particles.)
+    if (listNext && listOpen(kNextSlot, range) && mayShowInNext(pl.xyz))
+      listParticle(kNextSlot, range, i, true);
     uvec3 where;
     Splat s;
 #if defined(MOTION_BLUR)
