@@ -50,7 +50,7 @@ MoleculeUpdate::MoleculeUpdate(std::size_t capacity, std::size_t capacityLimit,
       simBlock_(gl::createBuffer()),
       moleculeBlock_(gl::createBuffer()),
       counts_("MoleculeUpdate"),
-      spinLimit_(scanSpinLimit(tuning)),
+      scanWait_(scanWait(tuning)),
       environment_(tuning.fieldStorage == GpuTuning::FieldStorage::Texture
                        ? GpuField::Storage::Texture
                        : GpuField::Storage::Buffer) {
@@ -130,6 +130,7 @@ const gl::Program& MoleculeUpdate::updateProgram(const ParticleState& state, Fie
   if (const char* d = fieldReadDefine(read, environment_.gridStorage())) defines.push_back(d);
   if (obstacles) defines.push_back("OBSTACLES");
   if (repulsion) defines.push_back("REPULSION");
+  if (const char* d = scanWait_.define()) defines.push_back(d);
   if (state.field.mode == FieldMode::Expression) {
     const auto make = [](const std::vector<std::string>& d) {
       return gl::Program(gl::ProgramDesc{{"molecule_update.comp"}, d, {}});
@@ -217,7 +218,7 @@ void MoleculeUpdate::step(const SimStep& step, const ParticleState& state) {
   glProgramUniform1i(update.id(), 0, current_);
   glProgramUniform1ui(update.id(), 1, born);
   glProgramUniform1ui(update.id(), 2, std::uint32_t(capacity_));
-  glProgramUniform1ui(update.id(), 3, spinLimit_);
+  if (!scanWait_.waits) glProgramUniform1ui(update.id(), 3, scanWait_.spins);
   glProgramUniform1ui(update.id(), 5, vertices);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, control_.id());
   glDispatchComputeIndirect(kDispatchOffset);

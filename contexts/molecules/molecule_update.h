@@ -34,6 +34,7 @@
 #include "contexts/molecules/molecule_handles.h"
 #include "contexts/particles/expression_programs.h"
 #include "contexts/particles/particle_environment.h"
+#include "contexts/particles/scan_spin.h"
 #include "contexts/particles/update_control.h"
 #include "core/config/gpu_tuning.h"
 #include "core/sim/emission_budget.h"
@@ -103,7 +104,7 @@ class MoleculeUpdate {
   UpdateCounts counts_;  // the counts updates left, read late
   std::map<std::string, std::unique_ptr<gl::Program>> variants_;
   ExpressionPrograms expressionPrograms_;
-  std::uint32_t spinLimit_;
+  ScanWait scanWait_;  // how the update's tiles wait for a predecessor
   ParticleEnvironment environment_;
   std::unique_ptr<MoleculeGridGpu> grid_;  // while repulsion is on
   EmissionBudget budget_;

@@ -31,6 +31,11 @@ enum Binding : GLuint {
   kCollideList = 8
 };
 
+std::vector<std::string> withScanWait(std::vector<std::string> defines, const ScanWait& wait) {
+  if (const char* d = wait.define()) defines.push_back(d);
+  return defines;
+}
+
 std::string itemsDefine(int items) {
   return concat("ITEMS ", items);
 }
@@ -55,14 +60,14 @@ ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity, const GpuTuni
       control_(gl::createBuffer()),
       simBlock_(gl::createBuffer()),
       counts_("ParticleComputeUpdate"),
+      scanWait_(scanWait(tuning)),
       prepareProgram_(std::vector<std::string>{"particle_prepare.comp"},
                       {itemsDefine(checkedItems(tuning.updateItems))}),
       emitProgram_(std::vector<std::string>{"particle_emit.comp"}),
       // The field's grid is a storage buffer (environment_).
       updateProgram_(std::vector<std::string>{"particle_update.comp"},
-                     {itemsDefine(tuning.updateItems), "FIELD_BUFFER"}),
+                     withScanWait({itemsDefine(tuning.updateItems), "FIELD_BUFFER"}, scanWait_)),
       items_(tuning.updateItems),
-      spinLimit_(scanSpinLimit(tuning)),
       environment_(tuning.fieldStorage == GpuTuning::FieldStorage::Texture
                        ? GpuField::Storage::Texture
                        : GpuField::Storage::Buffer,
@@ -193,6 +198,7 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   // records the update lists as not clear of an obstacle.
   if (flow) defines.push_back("OBSTACLE_FLOW");
   if (obstacles) defines.push_back("OBSTACLE_LIST");
+  defines = withScanWait(std::move(defines), scanWait_);
   const auto make = [](const std::vector<std::string>& d) {
     return gl::Program(gl::ProgramDesc{{"particle_update.comp"}, d, {}});
   };
@@ -259,7 +265,7 @@ void ParticleComputeUpdate::step(const SimStep& step, const ParticleState& state
   glProgramUniform1i(update.id(), 0, current_);
   glProgramUniform1ui(update.id(), 1, born);
   glProgramUniform1ui(update.id(), 2, std::uint32_t(capacity_));
-  glProgramUniform1ui(update.id(), 3, spinLimit_);
+  if (!scanWait_.waits) glProgramUniform1ui(update.id(), 3, scanWait_.spins);
   glProgramUniform1i(update.id(), 4, trails_ ? 1 : 0);
   glBindBuffer(GL_DISPATCH_INDIRECT_BUFFER, control_.id());
   glDispatchComputeIndirect(kDispatchOffset);

@@ -38,6 +38,7 @@
 #include "contexts/particles/particle_backend.h"
 #include "contexts/particles/particle_environment.h"
 #include "contexts/particles/particle_trails.h"
+#include "contexts/particles/scan_spin.h"
 #include "contexts/particles/update_control.h"
 #include "core/config/gpu_tuning.h"
 #include "core/sim/emission_budget.h"
@@ -105,6 +106,7 @@ class ParticleComputeUpdate final : public ParticleBackend {
   gl::Buffer collideList_;  // with obstacles: the records the update found not clear of one
   std::ptrdiff_t collideListBytes_ = 0;
   UpdateCounts counts_;  // the counts updates left, read late
+  ScanWait scanWait_;    // how the update's tiles wait for a predecessor
   gl::Program prepareProgram_, emitProgram_, updateProgram_;
   std::unique_ptr<gl::Program> narrowPrepare_;  // for a sparse grid's fewer records an invocation
   // Programs other than the plain update, by their defines (FIELD_EQUATION,
@@ -115,7 +117,6 @@ class ParticleComputeUpdate final : public ParticleBackend {
       const std::function<gl::Program(const std::vector<std::string>&)>& make);
   ExpressionPrograms expressionPrograms_;  // field.mode = expression
   int items_;                              // records an invocation
-  std::uint32_t spinLimit_;
 
   ParticleEnvironment environment_;
   std::unique_ptr<ParticleTrails> trails_;  // while render.trail_length > 0

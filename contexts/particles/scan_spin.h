@@ -1,9 +1,16 @@
-// How often a tile of an order-keeping compaction (shaders/tile_lookback.glsl)
-// reads a predecessor's status before counting that tile's survivors itself.
-// GPUs run the workgroups of a dispatch side by side, so a predecessor
-// publishes soon; a CPU rasterizer may not (and llvmpipe caps a shader's loop
-// iterations), so there the tile counts for itself at once. [gpu] scan_spin
-// sets it (tests of both paths). Needs a GL context current.
+// How a tile of an order-keeping compaction (shaders/tile_lookback.glsl)
+// waits for a predecessor that has not published its count yet.
+//   NVIDIA's GPUs run a dispatch's started workgroups side by side, so a
+//     predecessor (which took its ticket earlier, so is running) always
+//     publishes: the tile waits for it, and the program has no recount
+//     (LOOKBACK_WAITS), so it holds the physics once, not twice (the H200's
+//     update 1.17x faster with one copy: docs/PERFORMANCE.md).
+//   Elsewhere the tile reads the status `spins` times, then counts that
+//     tile's survivors itself: at once on a CPU rasterizer (llvmpipe, which
+//     need not run workgroups together and caps a shader's loop iterations),
+//     after 2^20 reads on other GPUs, whose scheduling is not known here.
+// [gpu] scan_spin sets the reads (and so the recount: tests of both paths).
+// Needs a GL context current.
 #pragma once
 
 #include <cstdint>
@@ -12,6 +19,14 @@
 
 namespace sandstorm {
 
-std::uint32_t scanSpinLimit(const GpuTuning& tuning);
+struct ScanWait {
+  bool waits = false;        // until the predecessor publishes (LOOKBACK_WAITS)
+  std::uint32_t spins = 64;  // otherwise: reads before recounting (uSpinLimit)
+
+  // The update programs' define, or null.
+  const char* define() const { return waits ? "LOOKBACK_WAITS" : nullptr; }
+};
+
+ScanWait scanWait(const GpuTuning& tuning);
 
 }  // namespace sandstorm
