@@ -31,8 +31,9 @@ struct GpuTuning {
   FieldStorage fieldStorage = FieldStorage::Auto;
   int updateItems = 4;  // records an invocation of the compute update advances: 1, 2, 4, 8
   // How often a tile of the compute update's scan reads a slow predecessor's
-  // status before counting that tile's survivors itself; unset: 64 on a CPU
-  // rasterizer (llvmpipe), 2^20 on a GPU.
+  // status before counting that tile's survivors itself; unset: NVIDIA's
+  // GPUs wait without a limit (contexts/particles/scan_spin.h), 64 on a CPU
+  // rasterizer (llvmpipe), 2^20 on other GPUs.
   std::optional<std::uint32_t> scanSpin;
   // A series' steps copied to the GPU by a second context of each drawing
   // context (UploadThread), beside the walls' work; false: by the walls' thread.
