@@ -442,24 +442,26 @@ std::size_t ParticleSplat::listRecords(std::size_t capacity, int trailLength) co
   return std::min(std::max(splats, runs) + 4096, maxListRecords_);
 }
 
-int ParticleSplat::nextList(const ParticleBackend::Records& records, SplatViews views,
-                            glm::ivec2 size, std::size_t tileCount, std::size_t particles) const {
+ParticleSplat::NextList ParticleSplat::nextList(const ParticleBackend::Records& records,
+                                                SplatViews views, glm::ivec2 size,
+                                                std::size_t tileCount,
+                                                std::size_t particles) const {
   // Visit the list where the last draw made it for this very view and these particles.
   const std::optional<NextListed> listed = std::move(nextListed_);
   nextListed_.reset();
-  int mode = 0;
+  NextList mode = NextList::None;
   if (listed && views.view && sameParticles(records, listed->records)) {
     const ViewBlock block = makeViewBlock(*views.view, size);
-    if (std::memcmp(&block, &listed->view, sizeof block) == 0) mode = 2;
+    if (std::memcmp(&block, &listed->view, sizeof block) == 0) mode = NextList::Visit;
   }
   // List for the next view where the histogram has a slot to count them in.
-  if (mode == 0 && views.next && tileCount + 2 <= kMaxTiles) {
-    mode = 1;
+  if (mode == NextList::None && views.next && tileCount + 2 <= kMaxTiles) {
+    mode = NextList::List;
     nextListed_ = NextListed{makeViewBlock(*views.next, size), records};
     glNamedBufferSubData(nextViewBlock_.id(), 0, sizeof(ViewBlock), &nextListed_->view);
   }
   // Both counts declare the list and the block: bound always, sized where used.
-  const std::size_t words = kMaxBinGroups + (mode != 0 ? particles : 1);
+  const std::size_t words = kMaxBinGroups + (mode != NextList::None ? particles : 1);
   if (words > nextInViewCapacity_) {
     nextInView_ = allocate(words * 4, "the particles the next view may show");
     nextInViewCapacity_ = words;
@@ -470,7 +472,7 @@ int ParticleSplat::nextList(const ParticleBackend::Records& records, SplatViews 
 }
 
 void ParticleSplat::addTiled(const Programs& p, std::size_t tileCount, int levels,
-                             std::size_t listCapacity, std::size_t particles, int nextList) const {
+                             std::size_t listCapacity, std::size_t particles, NextList next) const {
   bindTiles(tileCount, listCapacity);
   bindInView(particles);
 
@@ -481,7 +483,7 @@ void ParticleSplat::addTiled(const Programs& p, std::size_t tileCount, int level
   glProgramUniform1i(p.bin->id(), kLevelsUniform, levels);
   glProgramUniform1i(p.bin->id(), 1, GL_FALSE);
   glProgramUniform1ui(p.bin->id(), 2, GLuint(listCapacity));
-  glProgramUniform1i(p.bin->id(), kNextListUniform, nextList);
+  glProgramUniform1i(p.bin->id(), kNextListUniform, int(next));
   glDispatchComputeIndirect(kBinDispatch);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
 

@@ -128,14 +128,15 @@ class ParticleSplat {
   // `tileCount`: of every level's grid; `levels`: how many the view uses;
   // `listCapacity`: the splat records the lists hold (listRecords);
   // `particles`: the backend's capacity.
-  // `nextList`: 0, or 1 to list the particles that may show in the view
-  // bound as the next one, or 2 to visit only those (splat_bin.comp).
+  // What a view's binning does with the next view's list (splat_bin.comp's
+  // uNextList): nothing, list the particles that may show in the view bound
+  // as the next one, or visit only those the last view listed.
+  enum class NextList : int { None = 0, List = 1, Visit = 2 };
   void addTiled(const Programs& p, std::size_t tileCount, int levels, std::size_t listCapacity,
-                std::size_t particles, int nextList) const;
-  // Which of addTiled's nextList this view's binning takes, binding the next
-  // view's block and list where it lists or visits them.
-  int nextList(const ParticleBackend::Records& records, SplatViews views, glm::ivec2 size,
-               std::size_t tileCount, std::size_t particles) const;
+                std::size_t particles, NextList next) const;
+  // This view's NextList, with the next view's block and the list bound.
+  NextList nextList(const ParticleBackend::Records& records, SplatViews views, glm::ivec2 size,
+                    std::size_t tileCount, std::size_t particles) const;
   // Trails in the tiled variant, after addTiled; `tileCount`: the full-resolution grid's.
   void addTiledTrails(const ParticleBackend::Records& records, std::size_t tileCount) const;
   // The splat records (16 bytes) the lists hold for `capacity` particles and
