@@ -324,12 +324,25 @@ Image renderEyes(const ParticleState& state, const std::string& backend, const G
 // cloud lies beyond the first eye's view and a fifth of it in the second's,
 // some splats across that view's edge, so a list made from the first eye's
 // view, or without the splats' reach, leaves particles out of the second.
+// With motion blur's smears (variant 2) the particles fly away from the
+// second eye's view, their smears reaching back into it further than a
+// still splat's reach.
 TEST_P(ParticleSplatTest, AWallsSecondEyeDrawsWhatItSeesFromTheParticlesTheFirstListed) {
-  for (float size : {0.25f, 0.9f}) {
-    SCOPED_TRACE(size);
-    ParticleState state = cloud(RenderMode::Splat, size, true);
+  for (int variant : {0, 1, 2}) {
+    SCOPED_TRACE(variant == 0 ? "small splats" : variant == 1 ? "large splats" : "smeared splats");
+    ParticleState state = cloud(RenderMode::Splat, variant == 1 ? 0.9f : 0.25f, true);
     state.emitters[0].position.x = 12.0f;  // the eyes see up to 4.8 and 10.8 m to the right at 8 m
     state.render.splatOverlap = 0.0f;      // the atomic variant draws no tile coarser
+    if (variant == 2) {
+      // 2 m a frame: the cloud moves from 11 to 13 m; a smear of 4 m, about 33 pixels.
+      state.emitters[0].position.x = 11.0f;
+      state.emitters[0].velocity = {8.0f, 0.0f, 0.0f};
+      state.emitters[0].spread = 0.0f;
+      state.sim.motion = MotionModel::Force;  // no field, no gravity: they keep their speed
+      state.sim.gravity = glm::vec3(0.0f);
+      state.render.shutter = 0.5f;
+      state.render.blur = BlurMethod::Smear;
+    }
     const Image atomic =
         renderEyes(state, GetParam(), GpuTuning{.splat = GpuTuning::Splat::Atomic});
     const Image tiled = renderEyes(state, GetParam(), GpuTuning{});
@@ -347,8 +360,8 @@ TEST_P(ParticleSplatTest, AWallsSecondEyeDrawsWhatItSeesFromTheParticlesTheFirst
         (x < kSize.x ? first : second) += differs ? 1 : 0;
       }
     if (const char* dir = std::getenv("SANDSTORM_TEST_IMAGES"))
-      writePng(atomic, std::string(dir) + "/eyes-" + GetParam() + "-" +
-                           std::to_string(int(size * 100)) + ".png");
+      writePng(atomic,
+               std::string(dir) + "/eyes-" + GetParam() + "-" + std::to_string(variant) + ".png");
     EXPECT_EQ(first, 0);
     EXPECT_GT(second, 100);
     EXPECT_TRUE(tiled.rgba == atomic.rgba);
