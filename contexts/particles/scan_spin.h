@@ -4,9 +4,9 @@
 //     predecessor (which took its ticket earlier, so is running) always
 //     publishes: the tile waits for it, and the program has no recount
 //     (LOOKBACK_WAITS), so it holds the physics once, not twice (the H200's
-//     update 1.17x faster with one copy: docs/PERFORMANCE.md).
+//     update 1.055x faster at 10^8: docs/PERFORMANCE.md).
 //   Elsewhere the tile reads the status `spins` times, then counts that
-//     tile's survivors itself: at once on a CPU rasterizer (llvmpipe, which
+//     tile's survivors itself: after 64 reads on a CPU rasterizer (llvmpipe, which
 //     need not run workgroups together and caps a shader's loop iterations),
 //     after 2^20 reads on other GPUs, whose scheduling is not known here.
 // [gpu] scan_spin sets the reads (and so the recount: tests of both paths).
