@@ -125,13 +125,13 @@ class ParticleSplat {
   // The binning's list of the particles in view (splat_bin.comp), for up to
   // `particles`, bound.
   void bindInView(std::size_t particles) const;
-  // `tileCount`: of every level's grid; `levels`: how many the view uses;
-  // `listCapacity`: the splat records the lists hold (listRecords);
-  // `particles`: the backend's capacity.
   // What a view's binning does with the next view's list (splat_bin.comp's
   // uNextList): nothing, list the particles that may show in the view bound
   // as the next one, or visit only those the last view listed.
   enum class NextList : int { None = 0, List = 1, Visit = 2 };
+  // `tileCount`: of every level's grid; `levels`: how many the view uses;
+  // `listCapacity`: the splat records the lists hold (listRecords);
+  // `particles`: the backend's capacity; `next`: as nextList() chose.
   void addTiled(const Programs& p, std::size_t tileCount, int levels, std::size_t listCapacity,
                 std::size_t particles, NextList next) const;
   // This view's NextList, with the next view's block and the list bound.
