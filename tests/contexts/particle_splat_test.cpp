@@ -43,7 +43,7 @@ const CameraSpec kCamera{{0.0f, -8.0f, 1.2f}, {0.0f, 0.0f, 0.8f}, 40.0f};
 
 Image render(const ParticleState& state, const std::string& backend, int frames = 2,
              const GpuTuning& tuning = {}, std::shared_ptr<const VectorField> field = nullptr,
-             const CameraSpec& camera = kCamera) {
+             const CameraSpec& camera = kCamera, HeightMap terrain = HeightMap::flat(0.0f)) {
   MainContext::Options options;
   options.fixedDt = 0.25f;
   options.seed = 3;
@@ -55,7 +55,7 @@ Image render(const ParticleState& state, const std::string& backend, int frames 
   WallRenderer renderer(
       WallRendererSetup{.wall = wall,
                         .initial = state,
-                        .terrain = std::make_shared<HeightMap>(HeightMap::flat(0.0f)),
+                        .terrain = std::make_shared<HeightMap>(std::move(terrain)),
                         .capacity = 4096,
                         .backend = backend,
                         .tuning = tuning,
@@ -253,8 +253,10 @@ TEST_P(ParticleSplatTest, TiledAndAtomicSplatsAddTheSameSumsSoDrawTheSameImage) 
   // Motion blur by the filter adds motion sums of its own (variant 3, with levels).
   // Variant 4 moves the cloud mostly out of the view: where at most half of
   // a binning workgroup's particles are in view, the scatter pass visits
-  // only those the count pass listed.
-  for (int variant : {0, 1, 2, 3, 4}) {
+  // only those the count pass listed. Variant 5 cuts the cloud with ground
+  // sloping across the view, so the scene's depth under the splats (which
+  // the tiled pass reads once a pixel) changes along rows as well as columns.
+  for (int variant : {0, 1, 2, 3, 4, 5}) {
     ParticleState state =
         cloud(RenderMode::Splat, variant == 2 || variant == 3 ? 0.9f : 0.25f, true);
     if (variant == 1) {
@@ -274,19 +276,26 @@ TEST_P(ParticleSplatTest, TiledAndAtomicSplatsAddTheSameSumsSoDrawTheSameImage) 
                  : variant == 1 ? "shadows and motion blur"
                  : variant == 2 ? "levels"
                  : variant == 3 ? "levels and motion blur by the filter"
-                                : "most of the cloud out of view");
-    const Image atomic = render(state, GetParam(), 2, GpuTuning{.splat = GpuTuning::Splat::Atomic});
+                 : variant == 4 ? "most of the cloud out of view"
+                                : "ground sloping across the view through the cloud");
+    // Rising 0.4 m a metre to the right (+x) and 0.2 m a metre away (+y).
+    const HeightMap ground = variant == 5 ? HeightMap({-20.0f, -20.0f}, {20.0f, 20.0f}, {2, 2},
+                                                      {-12.0f, 4.0f, -4.0f, 12.0f})
+                                          : HeightMap::flat(0.0f);
+    const auto draw = [&](const ParticleState& s, const GpuTuning& tuning) {
+      return render(s, GetParam(), 2, tuning, nullptr, kCamera, ground);
+    };
+    const Image atomic = draw(state, GpuTuning{.splat = GpuTuning::Splat::Atomic});
     ParticleState none = state;
     none.emitters[0].rate = 0.0f;
-    EXPECT_FALSE(atomic.rgba == render(none, GetParam()).rgba);
+    EXPECT_FALSE(atomic.rgba == draw(none, {}).rgba);
     // The tiled variant, as it runs; with chunks of 37 records (dense tiles
     // split over several workgroups, which add their sums with atomics); with
     // lists that hold 500 records (the scatter pass adds the rest); and both.
     const std::vector<std::pair<std::size_t, std::size_t>> variants{
         {8192, 0}, {37, 0}, {8192, 500}, {37, 500}};
     for (const auto& [chunk, list] : variants) {
-      const Image tiled =
-          render(state, GetParam(), 2, GpuTuning{.splatChunk = chunk, .splatList = list});
+      const Image tiled = draw(state, GpuTuning{.splatChunk = chunk, .splatList = list});
       EXPECT_TRUE(tiled.rgba == atomic.rgba) << "chunk " << chunk << ", list " << list;
     }
   }
