@@ -15,7 +15,7 @@ void addSplatPixels(Splat s, ivec2 lo, ivec2 hi) {
     ivec2 row = splatRow(s, y);
     for (int x = max(lo.x, row.x); x <= min(hi.x, row.y); ++x) {
       uint v[kSplatChannels];
-      if (!splatAt(s, ivec2(x, y), sceneDistanceUnder(ivec2(x, y), s.level), v)) continue;
+      if (!splatAt(s, ivec2(x, y), v)) continue;
       uint base = (offset + uint(y) * width + uint(x)) * kSplatStride;
       for (uint c = 0u; c < kSplatChannels; ++c) atomicAdd(accum[base + c], v[c]);
     }

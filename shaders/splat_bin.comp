@@ -1,6 +1,4 @@
 #version 450 core
-#extension GL_ARB_shader_ballot : enable
-#extension GL_ARB_gpu_shader_int64 : enable
 // ParticleSplat, tiled variant, steps 2 (count) and 4 (scatter): workgroup g
 // takes particles [g * perGroup, (g + 1) * perGroup) and finds the tiles each
 // covers on its level's grid (splat_common.glsl), counting them in a
@@ -29,8 +27,6 @@
 //     workgroup's range. A CAVE's side walls and floor see a few percent of
 //     the particles: their second eye no longer reads all of them.
 //   Lists are written only up to half the range: a fuller one is never read.
-//   Invocations of a subgroup that add to the same bin add together
-//   (subgroup_add.glsl): the particles of a view's few crowded tiles.
 // One program for both, so both passes find exactly the same tiles.
 #include "view_block.glsl"
 #include "render_block.glsl"
@@ -94,8 +90,6 @@ const uint kInViewSlot = kSplatMaxTiles - 1u;
 // them only for views of fewer tiles).
 const uint kNextSlot = kSplatMaxTiles - 2u;
 
-#include "subgroup_add.glsl"
-
 // Pixels beyond the next view's edges a particle's centre may lie and still
 // be listed: more than a coarser level's rounding of its grid (up to 7
 // pixels at the fourth level), the centre's fixed point and the float
@@ -128,7 +122,7 @@ bool listOpen(uint slot, uint range) { return sBins[slot] * 2u <= range; }
 
 void listParticle(uint slot, uint range, uint i, bool next) {
   if (!listOpen(slot, range)) return;
-  uint at = addToBin(slot);
+  uint at = atomicAdd(sBins[slot], 1u);
   if (at * 2u > range) return;
   if (next)
     nextIndex[gl_WorkGroupID.x * args.perGroup + at] = i;
@@ -186,7 +180,7 @@ void main() {
     for (int ty = t0.y; ty <= t1.y; ++ty)
       for (int tx = t0.x; tx <= t1.x; ++tx) {
         uint tile = first + uint(ty) * across + uint(tx);
-        uint slot = addToBin(tile);
+        uint slot = atomicAdd(sBins[tile], 1u);
         if (!uScatter) continue;
         if (slot < uListCapacity) {
           tileList[slot] = record;

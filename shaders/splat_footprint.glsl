@@ -214,17 +214,9 @@ ivec2 splatRow(Splat s, int y) {
   return ivec2(max(s.lo.x, int(ceil(s.pixel.x - halfWidth - 0.5))), min(s.hi.x, int(floor(s.pixel.x + halfWidth - 0.5))));
 }
 
-// The scene's distance at the view pixel under the centre of level pixel p.
-float sceneDistanceUnder(ivec2 p, int level) {
-  ivec2 under = min(p * (1 << level) + ((1 << level) >> 1), ivec2(view.viewport.zw) - 1);
-  return viewDistance(texelFetch(uSceneDepth, under, 0).r);
-}
-
 // What the splat adds to pixel p, as kSplatChannels fixed-point values
-// (splat_common.glsl); false where it adds nothing. sceneDistance:
-// sceneDistanceUnder(p, s.level), read where it is needed (splat_add.glsl)
-// or once a pixel for all of a tile's splats (splat_tile.comp).
-bool splatAt(Splat s, ivec2 p, float sceneDistance, out uint v[kSplatChannels]) {
+// (splat_common.glsl); false where it adds nothing.
+bool splatAt(Splat s, ivec2 p, out uint v[kSplatChannels]) {
   vec2 corner = (vec2(p) + 0.5 - s.pixel) * s.invRadius;
 #ifdef MOTION_BLUR
   float shape;
@@ -241,6 +233,9 @@ bool splatAt(Splat s, ivec2 p, float sceneDistance, out uint v[kSplatChannels]) 
   if (r2 > 1.0) return false;
   float shape = textureLod(uSprite, 0.5 * corner + 0.5, 0.0).r;
 #endif
+  // The scene's depth at the view pixel under the level pixel's centre.
+  ivec2 under = min(p * (1 << s.level) + ((1 << s.level) >> 1), ivec2(view.viewport.zw) - 1);
+  float sceneDistance = viewDistance(texelFetch(uSceneDepth, under, 0).r);
   float fade = clamp((sceneDistance - s.distance) / max(look.params.y, 1e-4), 0.0, 1.0);
   float alpha = s.opacity * shape * fade;
   if (alpha < 1.0 / 512.0) return false;

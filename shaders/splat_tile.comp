@@ -40,10 +40,6 @@ layout(std430, binding = 16) restrict buffer SplatMotion { int motionSums[]; }; 
 
 const uint kTilePixels = uint(kSplatTile * kSplatTile);
 shared uint sSums[kSplatChannels][kTilePixels];
-// The scene's distance under each pixel the splats are drawn to
-// (sceneDistanceUnder): read once for all of the chunk's splats, not once a
-// splat and pixel (a texture read and a division each).
-shared float sScene[kTilePixels];
 
 void main() {
   uint chunk = gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x;
@@ -59,6 +55,9 @@ void main() {
   uint begin = tileStart[t] + (chunk - chunkStart[t]) * uChunk;
   uint end = min(min(begin + uChunk, tileStart[t + 1u]), uListCapacity);
   uint lid = gl_LocalInvocationIndex;
+  for (uint px = lid; px < kTilePixels; px += kGroup)
+    for (uint c = 0u; c < kSplatChannels; ++c) sSums[c][px] = 0u;
+  barrier();
   // The tile's level, and where it lies on that level's grid.
   int level = 0;
   while (level + 1 < uSplatLevels && t >= splatTileOffset(size, level + 1)) ++level;
@@ -69,12 +68,6 @@ void main() {
   int coarser = splatCoarsening(t, level);
   int drawLevel = level + coarser, drawSide = kSplatTile >> coarser;
   ivec2 drawOrigin = origin >> coarser;
-  for (uint px = lid; px < kTilePixels; px += kGroup) {
-    for (uint c = 0u; c < kSplatChannels; ++c) sSums[c][px] = 0u;
-    ivec2 at = ivec2(px % uint(kSplatTile), px / uint(kSplatTile));
-    if (at.x < drawSide && at.y < drawSide) sScene[px] = sceneDistanceUnder(drawOrigin + at, drawLevel);
-  }
-  barrier();
   // The only chunk of a tile the scatter pass added nothing to may store its
   // sums, unless they go to a coarser level's pixels, or dense tiles of finer
   // levels may (render.splat_overlap on): both add with atomics.
@@ -88,8 +81,8 @@ void main() {
       ivec2 row = splatRow(s, y);
       for (int x = max(a.x, row.x); x <= min(b.x, row.y); ++x) {
         uint v[kSplatChannels];
+        if (!splatAt(s, ivec2(x, y), v)) continue;
         uint px = uint((y - drawOrigin.y) * kSplatTile + (x - drawOrigin.x));
-        if (!splatAt(s, ivec2(x, y), sScene[px], v)) continue;
         for (uint c = 0u; c < kSplatChannels; ++c) atomicAdd(sSums[c][px], v[c]);
       }
     }

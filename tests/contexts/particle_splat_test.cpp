@@ -254,8 +254,8 @@ TEST_P(ParticleSplatTest, TiledAndAtomicSplatsAddTheSameSumsSoDrawTheSameImage) 
   // Variant 4 moves the cloud mostly out of the view: where at most half of
   // a binning workgroup's particles are in view, the scatter pass visits
   // only those the count pass listed. Variant 5 cuts the cloud with ground
-  // sloping across the view, so the scene's depth under the splats (which
-  // the tiled pass reads once a pixel) changes along rows as well as columns.
+  // sloping across the view, so the scene's depth under the splats (the
+  // soft depth test's) changes along rows as well as columns.
   for (int variant : {0, 1, 2, 3, 4, 5}) {
     ParticleState state =
         cloud(RenderMode::Splat, variant == 2 || variant == 3 ? 0.9f : 0.25f, true);
