@@ -1,7 +1,6 @@
 #version 450 core
 // ParticleSplat, tiled variant, steps 2 (count) and 4 (scatter): workgroup g
-// takes blocks g, g + G, g + 2 G, ... of kGroup particles (G workgroups;
-// at most perGroup particles each) and finds the tiles each
+// takes particles [g * perGroup, (g + 1) * perGroup) and finds the tiles each
 // covers on its level's grid (splat_common.glsl), counting them in a
 // histogram in shared memory, so a dense tile costs one global atomic a
 // workgroup, not one a particle.
@@ -145,28 +144,17 @@ void main() {
   if (listed && lid == 0u) sBins[kInViewSlot] = 0u;
   if (listNext && lid == 0u) sBins[kNextSlot] = 0u;
   barrier();
-  // The workgroup's particles: every binning workgroup's count-th block of
-  // kGroup, from its own (splat_prepare.comp makes perGroup a whole number
-  // of blocks), not a range of its own: a view shows particles emitted
-  // together, which lie side by side in the buffer, so with ranges the
-  // few workgroups holding a side wall's or the floor's particles did all of
-  // its work while the rest idled. Its lists start at `begin`.
-  uint groups = gl_NumWorkGroups.x, blocks = (args.count + kGroup - 1u) / kGroup;
-  uint ownBlocks = group < blocks ? (blocks - group + groups - 1u) / groups : 0u;
-  uint range = ownBlocks * kGroup;
-  if (ownBlocks != 0u && (blocks - 1u) % groups == group) range -= blocks * kGroup - args.count;
-  uint begin = group * args.perGroup;
+  uint begin = group * args.perGroup, end = min(begin + args.perGroup, args.count);
+  uint range = end - begin;
   // Where most of the workgroup's particles are in view, reading them in
   // order beats gathering them through the list (the list's order is
   // scattered: 0.2 ms more a view at 10^8 on an H200).
   bool nextListed = !uScatter && uNextList == 2;
   uint listedCount = uScatter && listed ? inViewCount[group] : nextListed ? nextCount[group] : 0u;
   bool fromList = ((uScatter && listed) || nextListed) && listedCount * 2u <= range;
-  uint visits = fromList ? listedCount : ownBlocks * kGroup;
+  uint visits = fromList ? listedCount : range;
   for (uint k = lid; k < visits; k += kGroup) {
-    uint i = fromList ? (nextListed ? nextIndex[begin + k] : inView[begin + k])
-                      : ((k / kGroup) * groups + group) * kGroup + lid;
-    if (i >= args.count) continue;  // past the last block's particles
+    uint i = fromList ? (nextListed ? nextIndex[begin + k] : inView[begin + k]) : begin + k;
     // Counting needs only where the splat is (the positions; the velocities for motion blur).
     vec4 pl = positionLife[i];
     // (Past half, the test is skipped too: most of a front wall's particles.)

@@ -2,8 +2,7 @@
 // ParticleSplat, step 1: one invocation turns the backend's live count (on the
 // GPU: ParticleBackend::records()) into the splat passes' dispatch sizes: one
 // invocation a particle (atomic variant), or at most kSplatMaxBinGroups
-// workgroups of at most `perGroup` particles each (the tiled variant's
-// binning; the trails' take ranges of that many).
+// workgroups of `perGroup` particles each (the tiled variant's binning).
 #include "splat_common.glsl"
 
 layout(local_size_x = 1) in;
@@ -25,9 +24,8 @@ void main() {
   args.dispatch = uvec4(min(groups, kGroupsPerRow), (groups + kGroupsPerRow - 1u) / kGroupsPerRow, 1u, 0u);
   args.count = count;
   // Binning workgroups: enough particles each that clearing and flushing a
-  // histogram of every tile is small beside them; whole blocks of 1024 (a
-  // workgroup of splat_bin.comp), which it takes every G-th of.
-  uint perGroup = max(2048u, ((count + kSplatMaxBinGroups - 1u) / kSplatMaxBinGroups + 1023u) / 1024u * 1024u);
+  // histogram of every tile is small beside them.
+  uint perGroup = max(2048u, ((count + kSplatMaxBinGroups - 1u) / kSplatMaxBinGroups + 255u) / 256u * 256u);
   args.binDispatch = uvec4((count + perGroup - 1u) / perGroup, 1u, 1u, 0u);
   args.perGroup = perGroup;
 }

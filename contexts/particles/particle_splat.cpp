@@ -94,15 +94,6 @@ void zero(const gl::Buffer& buffer) {
   glClearNamedBufferData(buffer.id(), GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &value);
 }
 
-// The words of a list of particles in view: a binning workgroup lists at
-// most half of its particles from the start of its share, perGroup words
-// (splat_prepare.comp: at most particles / 1024 rounded up to a whole 1024,
-// or 2048), and the last share may start less than perGroup before the end
-// (splat_bin.comp's workgroups take blocks, not ranges).
-std::size_t listWords(std::size_t particles) {
-  return particles + particles / 1024 + 2048;
-}
-
 }  // namespace
 
 ParticleSplat::ParticleSplat(const GpuTuning& tuning)
@@ -470,7 +461,7 @@ ParticleSplat::NextList ParticleSplat::nextList(const ParticleBackend::Records& 
     glNamedBufferSubData(nextViewBlock_.id(), 0, sizeof(ViewBlock), &nextListed_->view);
   }
   // Both counts declare the list and the block: bound always, sized where used.
-  const std::size_t words = kMaxBinGroups + (mode != NextList::None ? listWords(particles) : 1);
+  const std::size_t words = kMaxBinGroups + (mode != NextList::None ? particles : 1);
   if (words > nextInViewCapacity_) {
     nextInView_ = allocate(words * 4, "the particles the next view may show");
     nextInViewCapacity_ = words;
@@ -518,7 +509,7 @@ void ParticleSplat::addTiled(const Programs& p, std::size_t tileCount, int level
 
 void ParticleSplat::bindInView(std::size_t particles) const {
   if (particles > inViewCapacity_) {
-    inView_ = allocate(listWords(particles) * 4, "the particles in view");
+    inView_ = allocate(particles * 4, "the particles in view");
     inViewCapacity_ = particles;
   }
   if (!inViewCount_) inViewCount_ = allocate(kMaxBinGroups * 4, "the counts of particles in view");
