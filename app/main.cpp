@@ -2,6 +2,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/app.h"
+#include "app/cli_numbers.h"
 #include "app/cluster/cluster_link.h"
 #include "app/default_config.h"
 #include "app/file_scene.h"
@@ -38,11 +39,11 @@ int main(int argc, char** argv) {
                  "three components joined: u,v,w");
   cli.add_option("-n,--frames", frames,
                  "Frames to run, then exit (0: until a window closes, or Ctrl-C)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(wholeNumberCheck(0));
   cli.add_option("--screenshot", screenshotDir, "Write each wall's last frame as DIR/<wall>.png");
   cli.add_option("--screenshot-every", options.screenshotEvery,
                  "Also write DIR/<wall>_<frame>.png every N frames")
-      ->check(CLI::NonNegativeNumber);
+      ->check(wholeNumberCheck(0));
   cli.add_option("--dump-particles", dumpPath,
                  "Write the last frame's particles as VTK PolyData (.vtp)");
   std::string streamlinePath, trailPath;
@@ -110,7 +111,7 @@ int main(int argc, char** argv) {
   cli.add_option("--cluster-bench", clusterOptions.benchFrames,
                  "Cluster mode: N frames of packets and swap barriers only (no walls); use with "
                  "--cluster-stats")
-      ->check(CLI::NonNegativeNumber);
+      ->check(wholeNumberCheck(0));
   // Fault injection for the cluster tests; hidden from --help.
   cli.add_option("--debug-rank", clusterOptions.debugRank)->group("");
   cli.add_option("--debug-die-at-frame", clusterOptions.dieAtFrame)->group("");

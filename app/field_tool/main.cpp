@@ -17,6 +17,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/cli_numbers.h"
 #include "core/config/app_config.h"
 #include "core/field/analytic_field.h"
 #include "core/field/analytic_field_factory.h"
@@ -63,12 +64,12 @@ void addCommon(CLI::App* cmd, Common& c, bool dimsRequired) {
                   "VTK array or VDB grid to read (default: the only vector one)");
   auto* dims = cmd->add_option("--dims", c.dims, "points per axis of the grid made: X Y Z")
                    ->expected(3)
-                   ->check(CLI::PositiveNumber);
+                   ->check(wholeNumberCheck(1));
   if (dimsRequired) dims->required();
   cmd->add_option("--memory-budget", c.budgetMiB,
                   "largest dense grid accepted, MiB (default: half this machine's memory, as "
                   "field.memory_budget = \"auto\")")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumberCheck());
 }
 
 LoadOptions optionsFrom(const Common& c) {
@@ -178,7 +179,7 @@ int main(int argc, char** argv) {
   generateCmd->add_option("--dims", gdims, "grid points per axis: X Y Z")
       ->expected(3)
       ->required()
-      ->check(CLI::PositiveNumber);
+      ->check(wholeNumberCheck(1));
   generateCmd->add_option("--bounds", gbounds, "box in metres: X0 Y0 Z0 X1 Y1 Z1")
       ->expected(6)
       ->required();
@@ -209,7 +210,7 @@ int main(int argc, char** argv) {
   terrainCmd->add_option("OUT", tout, "output file (.pgm)")->required();
   terrainCmd->add_option("--size", tsize, "samples per side")->check(CLI::Range(2, 8193));
   terrainCmd->add_option("--extent", textent, "metres per side (for the dunes' wavelength)")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumberCheck());
   terrainCmd->add_option("--seed", tseed, "noise seed");
 
   try {

@@ -22,8 +22,11 @@ TEST(CommandLine, BadArgumentsFailWithAMessage) {
     std::string args, expected;
   };
   for (const Case& c :
-       {Case{"--frames -3", "--frames"}, Case{"--config nowhere.toml", "nowhere.toml"},
-        Case{"--bogus", "bogus"}, Case{"--set render.size", "expected key=value"},
+       {Case{"--frames -3", "--frames: expected a whole number, 0 or more; got '-3'"},
+        Case{"--frames 3000000000", "--frames: expected at most 2147483647; got '3000000000'"},
+        Case{"--screenshot-every many", "--screenshot-every: expected a whole number, 0 or more"},
+        Case{"--config nowhere.toml", "nowhere.toml"}, Case{"--bogus", "bogus"},
+        Case{"--set render.size", "expected key=value"},
         Case{"--set render.sise=1", "unknown attribute 'render.sise'"},
         Case{"--set sim.integrator=rk3", "euler, rk2, rk4"},
         Case{"--set gpu.update_items=3", "--set gpu.update_items=3: gpu.update_items: expected"},

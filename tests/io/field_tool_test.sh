@@ -43,6 +43,10 @@ expect fail "no derived quantity 'lambda2'.*q_criterion" -- derive "$data/tornad
 expect fail "quantity|required" -- derive "$data/tornado.vti" "$tmp/x.vti"
 expect fail "no such file" -- info "$tmp/missing.vti"
 expect fail "unknown analytic field 'hurricane'.*tornado" -- generate hurricane "$tmp/x.vti" --dims 2 2 2 --bounds 0 0 0 1 1 1
+expect fail "--dims: expected a whole number, 1 or more; got .0." -- generate gravity "$tmp/x.vti" --dims 4 0 4 --bounds 0 0 0 1 1 1
+expect fail "--dims: expected a whole number, 1 or more; got .2.5." -- resample "$data/tornado.vti" "$tmp/x.vti" --dims 2.5 4 4
+expect fail "--memory-budget: expected a number greater than 0; got .-1." -- info "$data/tornado.vti" --memory-budget -1
+expect fail "--extent: expected a number greater than 0; got .inf." -- terrain "$tmp/x.pgm" --extent inf
 expect fail "unknown parameter 'speed'" -- generate wind "$tmp/x.vti" --dims 2 2 2 --bounds 0 0 0 1 1 1 --param speed=3
 expect fail "not a number" -- generate wind "$tmp/x.vti" --dims 2 2 2 --bounds 0 0 0 1 1 1 --param power=fast
 expect fail "dims" -- generate wind "$tmp/x.vti" --dims 0 2 2 --bounds 0 0 0 1 1 1
