@@ -414,6 +414,14 @@ void readScene(const Reader& r, const toml::value& t, SceneSpec& s) {
   r.checkKeys(t, "scene", {"terrain", "ground_height", "terrain_min", "terrain_max", "helicopter"});
   s.terrain = r.string(t, "terrain", "scene", s.terrain);
   if (s.terrain != "flat") s.terrain = relativeTo(r, s.terrain);
+  // Named here, the missing file points at its key's line; read later, it
+  // could not.
+  std::error_code ec;  // a name too long for the system, say: refused as missing, not thrown
+  if (const toml::value* v = r.find(t, "terrain");
+      v && s.terrain != "flat" && !std::filesystem::is_regular_file(s.terrain, ec))
+    r.fail(*v, "scene.terrain",
+           concat("no height map file ", s.terrain,
+                  "; expected \"flat\" or a 16-bit PGM (sandstorm-field terrain makes one)"));
   s.groundHeight = r.real(t, "ground_height", "scene", s.groundHeight);
   s.terrainBounds.min = r.vec<3>(t, "terrain_min", "scene", s.terrainBounds.min);
   s.terrainBounds.max = r.vec<3>(t, "terrain_max", "scene", s.terrainBounds.max);
@@ -772,19 +780,22 @@ std::string readFile(const std::filesystem::path& path, const std::string& from)
   return text.str();
 }
 
+// The files whose includes led to the one being read, outermost first.
+using IncludeChain = std::vector<std::filesystem::path>;
+
 // Reads `root` on top of `c` (the included file's settings, if any).
 void read(const toml::value& root, const std::string& file, std::optional<int> monitors,
-          AppConfig& c, int depth);
+          AppConfig& c, const IncludeChain& chain);
 
 AppConfig readWithIncludes(const toml::value& root, const std::string& file,
-                           std::optional<int> monitors, int depth) {
+                           std::optional<int> monitors) {
   AppConfig c;
-  read(root, file, monitors, c, depth);
+  read(root, file, monitors, c, {});
   return c;
 }
 
 void read(const toml::value& root, const std::string& file, std::optional<int> monitors,
-          AppConfig& c, int depth) {
+          AppConfig& c, const IncludeChain& chain) {
   const Reader r(file);
   r.checkKeys(
       root, "",
@@ -795,12 +806,18 @@ void read(const toml::value& root, const std::string& file, std::optional<int> m
   // include = "scene.toml": that file's settings first, this file's on top.
   if (const toml::value* include = r.find(root, "include")) {
     if (!include->is_string()) r.fail(*include, "include", "expected a file name");
-    if (depth > 4) r.fail(*include, "include", "includes nest too deeply");
     const std::filesystem::path path =
         (folderOf(file) / include->as_string().str).lexically_normal();
-    const toml::value inner =
+    std::error_code ec;
+    IncludeChain inner = chain;
+    inner.push_back(std::filesystem::weakly_canonical(file, ec));
+    if (std::find(inner.begin(), inner.end(), std::filesystem::weakly_canonical(path, ec)) !=
+        inner.end())
+      r.fail(*include, "include", concat(path.string(), " is already being read: includes loop"));
+    if (inner.size() > 5) r.fail(*include, "include", "includes nest more than 5 deep");
+    const toml::value innerRoot =
         parseToml(readFile(path, r.at(*include) + ": include: "), path.string());
-    read(inner, path.string(), monitors, c, depth + 1);
+    read(innerRoot, path.string(), monitors, c, inner);
   }
   const auto section = [&](const char* name) -> const toml::value* {
     const toml::value* v = r.find(root, name);
@@ -930,7 +947,7 @@ int AppConfig::glContexts() const {
 
 AppConfig parseConfig(const std::string& text, const std::filesystem::path& name,
                       std::optional<int> monitors) {
-  AppConfig c = readWithIncludes(parseToml(text, name.string()), name.string(), monitors, 0);
+  AppConfig c = readWithIncludes(parseToml(text, name.string()), name.string(), monitors);
   if (c.walls.empty())
     throw Error(
         concat(name.string(), ": no [[wall]] given; expected at least one wall, window or camera"));
@@ -993,7 +1010,7 @@ void applyConfigSets(AppConfig& config, const std::vector<std::string>& sets) {
         throw Error(concat(label, ": expected a key of letters, digits, '_' and '.'"));
     // A file of one dotted key, read on top of the configuration.
     const toml::value root = parseToml(key + " = " + tomlValue(set.substr(eq + 1)) + "\n", label);
-    read(root, label, std::nullopt, config, 0);
+    read(root, label, std::nullopt, config, {});
   }
 }
 

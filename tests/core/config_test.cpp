@@ -186,6 +186,48 @@ TEST(Config, BadValuesAreRefusedWithTheirLine) {
   EXPECT_ERROR(kWall + kWall, "test.toml:8", "'front' is used twice");
 }
 
+TEST(Config, AMissingTerrainFileIsRefusedWithItsLine) {
+  EXPECT_ERROR("[scene]\nterrain = \"no-such-dunes.pgm\"\n" + kWall, "test.toml:2", "scene.terrain",
+               "no-such-dunes.pgm", "\"flat\" or a 16-bit PGM");
+  EXPECT_ERROR("[scene]\nterrain = \"" SANDSTORM_SOURCE_DIR "/data\"\n" + kWall, "test.toml:2",
+               "scene.terrain");  // a folder
+  EXPECT_EQ(errorOf("[scene]\nterrain = \"flat\"\n" + kWall), "(no error)");
+  EXPECT_EQ(errorOf("[scene]\nterrain = \"" SANDSTORM_SOURCE_DIR "/data/desert.pgm\"\n" + kWall),
+            "(no error)");
+}
+
+// Includes that loop are named as a loop, at the include that closes it;
+// a chain of six includes is refused as too deep, one of five loads.
+TEST(Config, IncludesThatLoopOrNestTooDeeplyAreRefused) {
+  const auto dir = std::filesystem::temp_directory_path() / "sandstorm-config-includes";
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "self.toml") << "include = \"self.toml\"\n";
+  std::ofstream(dir / "a.toml") << "include = \"b.toml\"\n";
+  std::ofstream(dir / "b.toml") << "# b\ninclude = \"a.toml\"\n";
+  for (int i = 1; i <= 6; ++i)
+    std::ofstream(dir / ("deep" + std::to_string(i) + ".toml"))
+        << "include = \"deep" << i + 1 << ".toml\"\n";
+  std::ofstream(dir / "deep7.toml") << kWall;
+  const auto errorOfFile = [](const std::filesystem::path& file) -> std::string {
+    try {
+      loadConfig(file);
+    } catch (const Error& e) {
+      return e.what();
+    }
+    return "(no error)";
+  };
+  const std::string self = errorOfFile(dir / "self.toml");
+  EXPECT_NE(self.find("self.toml:1: include: "), std::string::npos) << self;
+  EXPECT_NE(self.find("includes loop"), std::string::npos) << self;
+  const std::string loop = errorOfFile(dir / "a.toml");
+  EXPECT_NE(loop.find("b.toml:2: include: "), std::string::npos) << loop;
+  EXPECT_NE(loop.find("a.toml is already being read: includes loop"), std::string::npos) << loop;
+  const std::string deep = errorOfFile(dir / "deep1.toml");
+  EXPECT_NE(deep.find("deep6.toml:1: include: includes nest more than 5 deep"), std::string::npos)
+      << deep;
+  EXPECT_EQ(errorOfFile(dir / "deep2.toml"), "(no error)");
+}
+
 TEST(Config, TheFieldsMemoryBudgetIsASizeOrAutomatic) {
   const auto budget = [](const std::string& value) {
     return parseConfig("[field]\nmemory_budget = " + value + "\n" + kWall, "test.toml")
