@@ -238,13 +238,29 @@ std::string knownFormats() {
          "VTKHDF (.vtkhdf .hdf), OpenVDB (.vdb), Unreal (.fga) or Unity (.vf) file";
 }
 
+namespace {
+
+// "a" or "an" before a format's description, as it is read aloud ("an
+// OpenVDB file", "an Unreal FGA", "a Unity volume file").
+std::string withArticle(const std::string& what) {
+  const bool vowel = !what.empty() &&
+                     (std::strchr("AEIOaeio", what[0]) != nullptr || what.rfind("Unreal", 0) == 0);
+  return (vowel ? "an " : "a ") + what;
+}
+
+}  // namespace
+
 void checkExtension(const std::filesystem::path& path, FieldFormat content) {
   const FieldFormat named = formatForExtension(path);
   if (named == FieldFormat::Unknown || named == content) return;
+  std::error_code ec;
+  if (content == FieldFormat::Unknown && std::filesystem::file_size(path, ec) == 0 && !ec)
+    throw Error(concat(path.string(), " is empty: expected ", withArticle(describe(named))));
   if (content == FieldFormat::Unknown)
-    throw Error(concat(path.string(), " is not a ", describe(named),
+    throw Error(concat(path.string(), " is not ", withArticle(describe(named)),
                        ": its first bytes match no format Sandstorm reads"));
-  throw Error(concat(path.string(), " is a ", describe(content), ", not a ", describe(named),
+  throw Error(concat(path.string(), " is ", withArticle(describe(content)), ", not ",
+                     withArticle(describe(named)),
                      " as its extension says; rename it to match its content"));
 }
 

@@ -186,7 +186,14 @@ TEST(BadInput, WrongExtensions) {
   expectError([&] { loadField(vtk); }, {vtk.string(), "is a VTK XML image data file"});
   const auto vdb = dir / "text.vdb";
   test::writeText(vdb, "hello, this is not a volume\n");
-  expectError([&] { loadField(vdb); }, {vdb.string(), "is not a OpenVDB file"});
+  expectError([&] { loadField(vdb); }, {vdb.string(), "is not an OpenVDB file"});
+  const auto empty = dir / "empty.vti";
+  test::writeText(empty, "");
+  expectError([&] { loadField(empty); },
+              {empty.string(), "is empty: expected a VTK XML image data file (.vti)"});
+  const auto exodus = dir / "text.e";
+  test::writeText(exodus, "hello, this is not a mesh\n");
+  expectError([&] { loadField(exodus); }, {exodus.string(), "is not an Exodus II"});
   const auto unknown = dir / "mystery.dat";
   test::writeText(unknown, "\x01\x02\x03 binary junk");
   expectError([&] { loadField(unknown); }, {unknown.string(), "format not recognised"});
