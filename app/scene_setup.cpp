@@ -129,7 +129,10 @@ FieldSource watchedField(const std::filesystem::path& path, const FieldSpec& spe
     if (std::chrono::steady_clock::now() > until)
       throw Error(concat("field source ", path.string(), ": no complete step came within ",
                          spec.waitSeconds, " s (field.wait_s)"));
-    if (!said) log::info("field: waiting for the first step in ", path.string());
+    if (!said)
+      log::info("field: waiting up to ", spec.waitSeconds,
+                " s (field.wait_s) for the first step in ", path.string(),
+                ": a field file a simulation writes there");
     said = true;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }

@@ -216,7 +216,7 @@ TEST(FieldStream, AFieldReadWhileTheWallsOpenDrawsWhatOneReadBeforeDoes) {
     char buffer[4096];
     while (std::fgets(buffer, sizeof buffer, pipe)) {
       late.output += buffer;
-      if (late.output.find("waiting for the first step") != std::string::npos) waiting = true;
+      if (late.output.find("for the first step in") != std::string::npos) waiting = true;
     }
     const int status = pclose(pipe);
     late.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
