@@ -1,8 +1,9 @@
 // Checks for the command lines' numeric options that say what a number must
 // be in words ("a whole number, 0 or more; got '-3'"). CLI11's own
 // NonNegativeNumber and PositiveNumber name a range whose end is the largest
-// double, written out in 309 digits. Header-only: sandstorm, sandstorm-field
-// and the tracker simulator share it.
+// double, written out in 309 digits. Header-only: sandstorm and
+// sandstorm-field share it (the tracker simulator's options have finite
+// ranges, which CLI11 words well enough).
 #pragma once
 
 #include <CLI/CLI.hpp>
