@@ -393,6 +393,22 @@ TEST(FileScene, AFileThatIsNotThereOrNotAFieldIsAClearError) {
   EXPECT_NE(bad.output.find("wind.vti"), std::string::npos) << bad.output;
 }
 
+// A field at rest (a simulation's array of zeros, or the wrong array) opens,
+// and says why nothing moves; a field that moves says nothing of the kind.
+TEST(FileScene, AFieldAtRestOpensWithAWarningThatNothingMoves) {
+  const auto dir = test::scratchDir("file-scene-rest");
+  writeVti(dir / "rest.vti", bake(Uniform({0, 0, 0}), Box{{0, 0, 0}, {2, 1, 1}}, {3, 3, 3}));
+  writeVti(dir / "wind.vti", bake(Uniform({1, 0, 0}), Box{{0, 0, 0}, {2, 1, 1}}, {3, 3, 3}));
+  const std::string args = " --frames 1 --set sim.maximum=1000 --screenshot " + dir.string();
+  const auto rest = test::runSandstorm((dir / "rest.vti").string() + args);
+  ASSERT_EQ(rest.exitCode, 0) << rest.output;
+  for (const char* part : {"[sandstorm warn]", "rest.vti", "velocity is 0 everywhere", "--array"})
+    EXPECT_NE(rest.output.find(part), std::string::npos) << part << " in:\n" << rest.output;
+  const auto wind = test::runSandstorm((dir / "wind.vti").string() + args);
+  ASSERT_EQ(wind.exitCode, 0) << wind.output;
+  EXPECT_EQ(wind.output.find("velocity is 0 everywhere"), std::string::npos) << wind.output;
+}
+
 // An unstructured grid (VTK XML, ascii): hexahedra over a 4 x 2 x 2 m box
 // carrying a wind along x; resampled at its cells' size, it opens as any file.
 std::filesystem::path hexahedra(const std::filesystem::path& dir) {
