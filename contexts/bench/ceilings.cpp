@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "contexts/bench/gpu_stopwatch.h"
+#include "contexts/gl/out_of_memory.h"
 #include "contexts/particles/particle_compute_update.h"
 #include "core/util/error.h"
 
@@ -16,10 +17,9 @@ constexpr GLsizeiptr kRecord = 16;
 
 gl::Buffer recordBuffer(std::size_t records, float fill) {
   gl::Buffer b = gl::createBuffer();
-  glGetError();
+  const gl::OutOfMemoryCheck memory;
   glNamedBufferStorage(b.id(), GLsizeiptr(records) * kRecord, nullptr, 0);
-  if (glGetError() == GL_OUT_OF_MEMORY)
-    throw Error(concat("ceilings: no GPU memory for ", records, " records"));
+  if (memory.failed()) throw Error(concat("ceilings: no GPU memory for ", records, " records"));
   const float value[4] = {fill, fill, fill, 1.0f};
   glClearNamedBufferData(b.id(), GL_RGBA32F, GL_RGBA, GL_FLOAT, value);
   return b;

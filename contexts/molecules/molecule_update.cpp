@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "contexts/gl/out_of_memory.h"
 #include "contexts/molecules/molecule_block.h"
 #include "contexts/particles/record_readback.h"
 #include "contexts/particles/scan_spin.h"
@@ -64,20 +65,20 @@ MoleculeUpdate::MoleculeUpdate(std::size_t capacity, std::size_t capacityLimit,
 void MoleculeUpdate::allocate(std::size_t capacity, int members, bool keep) {
   const std::size_t records = capacity * std::size_t(members);
   if (records > (std::size_t{1} << 31) / kRecord)
-    throw Error(concat("MoleculeUpdate: ", capacity, " molecules of ", members,
+    throw Error(concat(capacity, " molecules of ", members,
                        " particles exceed a buffer's 2 GiB; lower molecules.maximum"));
   const std::size_t count = keep ? liveCount() : 0;
   std::array<BufferSet, 2> grown;
-  glGetError();
+  const gl::OutOfMemoryCheck memory;
   for (BufferSet& set : grown) {
     set.positionLife = gl::createBuffer();
     set.velocityKind = gl::createBuffer();
     glNamedBufferStorage(set.positionLife.id(), GLsizeiptr(records) * kRecord, nullptr, 0);
     glNamedBufferStorage(set.velocityKind.id(), GLsizeiptr(records) * kRecord, nullptr, 0);
   }
-  if (glGetError() == GL_OUT_OF_MEMORY)
-    throw Error(concat("MoleculeUpdate: the GPU has no memory for ", capacity, " molecules of ",
-                       members, " particles; lower molecules.maximum"));
+  if (memory.failed())
+    throw Error(concat("the GPU has no memory for ", capacity, " molecules of ", members,
+                       " particles; lower molecules.maximum"));
   if (count > 0) {
     // Member by member: member j's slice starts at j * capacity.
     const BufferSet& from = sets_[std::size_t(current_)];

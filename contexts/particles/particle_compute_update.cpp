@@ -8,6 +8,7 @@
 #include <numeric>
 #include <string>
 
+#include "contexts/gl/out_of_memory.h"
 #include "contexts/particles/record_readback.h"
 #include "contexts/particles/scan_spin.h"
 #include "contexts/particles/sim_block.h"
@@ -73,8 +74,8 @@ ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity, const GpuTuni
                        : GpuField::Storage::Buffer,
                    uploads) {
   if (capacity == 0 || capacity > (std::size_t{1} << 31) / kRecord)
-    throw Error(concat("ParticleComputeUpdate: capacity ", capacity, " is outside 1..",
-                       (1u << 31) / kRecord));
+    throw Error(concat("a particle capacity of ", capacity, " is outside 1..", (1u << 31) / kRecord,
+                       " (a buffer's 2 GiB); lower sim.maximum"));
   for (BufferSet& set : sets_)
     allocate(set, capacity);
   allocateTiles(capacity);
@@ -86,13 +87,14 @@ ParticleComputeUpdate::ParticleComputeUpdate(std::size_t capacity, const GpuTuni
 void ParticleComputeUpdate::allocate(BufferSet& set, std::size_t capacity) {
   set.positionLife = gl::createBuffer();
   set.velocityKind = gl::createBuffer();
-  glGetError();  // start clean, to tell an allocation failure apart
+  const gl::OutOfMemoryCheck memory;
   glNamedBufferStorage(set.positionLife.id(), GLsizeiptr(capacity) * kRecord, nullptr, 0);
   glNamedBufferStorage(set.velocityKind.id(), GLsizeiptr(capacity) * kRecord, nullptr, 0);
-  if (glGetError() == GL_OUT_OF_MEMORY)
-    throw Error(concat("ParticleComputeUpdate: the GPU has no memory for ", capacity,
-                       " particles (", 2 * capacity * kRecord >> 20,
-                       " MiB per buffer set); lower sim.maximum or run.capacity_limit"));
+  if (memory.failed())
+    throw Error(concat("the GPU has no memory for ", capacity, " particles (",
+                       2 * capacity * kRecord >> 20,
+                       " MiB for each of the update's two copies); lower sim.maximum or "
+                       "run.capacity_limit"));
   set.vao = gl::createVertexArray();
   for (GLuint a = 0; a < 2; ++a) {
     glEnableVertexArrayAttrib(set.vao.id(), a);

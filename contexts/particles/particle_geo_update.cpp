@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include "contexts/gl/out_of_memory.h"
 #include "contexts/particles/record_readback.h"
 #include "contexts/particles/sim_block.h"
 #include "core/sim/emission.h"
@@ -56,13 +57,14 @@ ParticleGeoUpdate::ParticleGeoUpdate(std::size_t capacity, UploadThread* uploads
 void ParticleGeoUpdate::allocate(BufferSet& set, std::size_t capacity) {
   set.positionLife = gl::createBuffer();
   set.velocityKind = gl::createBuffer();
-  glGetError();  // start clean, to tell an allocation failure apart
+  const gl::OutOfMemoryCheck memory;
   glNamedBufferStorage(set.positionLife.id(), GLsizeiptr(capacity) * kRecord, nullptr, 0);
   glNamedBufferStorage(set.velocityKind.id(), GLsizeiptr(capacity) * kRecord, nullptr, 0);
-  if (glGetError() == GL_OUT_OF_MEMORY)
-    throw Error(concat("ParticleGeoUpdate: the GPU has no memory for ", capacity, " particles (",
+  if (memory.failed())
+    throw Error(concat("the GPU has no memory for ", capacity, " particles (",
                        2 * capacity * kRecord >> 20,
-                       " MiB per buffer set); lower sim.maximum or run.capacity_limit"));
+                       " MiB for each of the update's two copies); lower sim.maximum or "
+                       "run.capacity_limit"));
   for (gl::VertexArray* vao : {&set.all, &set.survivors}) {
     *vao = gl::createVertexArray();
     for (GLuint a = 0; a < 2; ++a) {

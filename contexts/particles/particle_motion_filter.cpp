@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include "contexts/gl/out_of_memory.h"
 #include "contexts/render/view_targets.h"
 #include "core/util/error.h"
 
@@ -32,14 +33,14 @@ ParticleMotionFilter::ParticleMotionFilter()
 
 void ParticleMotionFilter::resize(glm::ivec2 size) const {
   if (size == size_) return;
-  glGetError();
+  const gl::OutOfMemoryCheck memory;
   // The filter samples the buffers and the motion field between their texels.
   color_ = texture2D(GL_RGBA16F, size, GL_LINEAR);
   normal_ = texture2D(GL_RGBA16F, size, GL_LINEAR);
   light_ = texture2D(GL_R16F, size, GL_LINEAR);
   cells_ = texture2D(GL_RGBA16F, (size + kCell - 1) / kCell, GL_LINEAR);
   reachTexture_ = texture2D(GL_RG16F, (size + kMotionTile - 1) / kMotionTile, GL_NEAREST);
-  if (glGetError() == GL_OUT_OF_MEMORY)
+  if (memory.failed())
     throw Error(concat("the GPU is out of memory for motion blur's images of ", size.x, "x", size.y,
                        " pixels; set render.shutter = 0 or choose a smaller wall"));
   size_ = size;

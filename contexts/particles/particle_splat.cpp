@@ -8,6 +8,7 @@
 #include <limits>
 #include <string_view>
 
+#include "contexts/gl/out_of_memory.h"
 #include "contexts/particles/particle_backend.h"
 #include "contexts/render/view_targets.h"
 #include "core/util/error.h"
@@ -82,10 +83,11 @@ constexpr GLint kTrailLengthUniform = 16, kTrailHeadUniform = 17;
 
 gl::Buffer allocate(std::size_t bytes, const char* what) {
   gl::Buffer buffer = gl::createBuffer();
-  glGetError();
+  const gl::OutOfMemoryCheck memory;
   glNamedBufferStorage(buffer.id(), GLsizeiptr(bytes), nullptr, 0);
-  if (glGetError() == GL_OUT_OF_MEMORY)
-    throw Error(concat("ParticleSplat: no GPU memory for ", what, " (", bytes, " bytes)"));
+  if (memory.failed())
+    throw Error(concat("the GPU has no memory for ", what, " (", bytes >> 20,
+                       " MiB); lower sim.maximum, or choose a smaller wall"));
   return buffer;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 
+#include "contexts/gl/out_of_memory.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -25,16 +26,17 @@ void ParticleTrails::prepare(std::size_t capacity, int length) {
                          " particles' trails hold more than 2^32 positions; shorten the trails "
                          "or lower sim.maximum"));
     const GLsizeiptr ringBytes = GLsizeiptr(capacity) * length * GLsizeiptr(sizeof(glm::vec4));
-    glGetError();
+    const gl::OutOfMemoryCheck memory;
     source_ = gl::createBuffer();
     glNamedBufferStorage(source_.id(), GLsizeiptr(capacity) * 4, nullptr, 0);
     for (gl::Buffer& ring : rings_) {
       ring = gl::createBuffer();
       glNamedBufferStorage(ring.id(), ringBytes, nullptr, 0);
     }
-    if (glGetError() == GL_OUT_OF_MEMORY)
+    if (memory.failed())
       throw Error(concat("render.trail_length ", length, ": ", capacity, " particles' trails need ",
-                         ringBytes * 2 / (1 << 20), " MiB the GPU does not have"));
+                         ringBytes * 2 / (1 << 20),
+                         " MiB the GPU does not have; shorten the trails or lower sim.maximum"));
     capacity_ = capacity;
     length_ = length;
     fresh_ = true;

@@ -2,6 +2,7 @@
 
 #include <epoxy/gl.h>
 
+#include "contexts/gl/out_of_memory.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
 
@@ -15,6 +16,11 @@ void GLAPIENTRY onDebugMessage(GLenum source, GLenum type, GLuint id, GLenum sev
   // compiler's warnings (a library's shared GLSL, PNanoVDB.h, has many) are
   // for whoever debugs a shader.
   if (source == GL_DEBUG_SOURCE_SHADER_COMPILER) {
+    log::debug("GL (", id, "): ", message);
+    return;
+  }
+  // A checked allocation says what ran out and which setting to lower.
+  if (gl::outOfMemoryIsChecked(message)) {
     log::debug("GL (", id, "): ", message);
     return;
   }

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "contexts/gl/out_of_memory.h"
 #include "core/util/error.h"
 #include "core/util/image.h"
 
@@ -41,8 +42,8 @@ void checkImageSize(glm::ivec2 size) {
 }
 
 // After allocating a size's images: the GPU's memory held them.
-void checkAllocated(glm::ivec2 size, const char* what) {
-  if (glGetError() == GL_OUT_OF_MEMORY)
+void checkAllocated(const gl::OutOfMemoryCheck& memory, glm::ivec2 size, const char* what) {
+  if (memory.failed())
     throw Error(concat("the GPU is out of memory for the ", what, " images of ", size.x, "x",
                        size.y, " pixels; choose a smaller wall or --movie-size"));
 }
@@ -55,13 +56,14 @@ void ViewTargets::resize(glm::ivec2 size) {
     throw Error(concat("ViewTargets: bad size ", size.x, "x", size.y));
   checkImageSize(size);
   size_ = size;
+  const gl::OutOfMemoryCheck memory;
   sceneColor_ = texture2D(GL_RGBA8, size);
   sceneDepth_ = texture2D(GL_R32F, size);
   itemsDepth_ = texture2D(GL_DEPTH_COMPONENT32F, size);
   particleColor_ = texture2D(GL_RGBA16F, size);
   particleNormal_ = texture2D(GL_RGBA16F, size);
   particleLight_ = texture2D(GL_R16F, size);
-  checkAllocated(size, "view's");
+  checkAllocated(memory, size, "view's");
 
   sceneFbo_ = gl::createFramebuffer();
   glNamedFramebufferTexture(sceneFbo_.id(), GL_COLOR_ATTACHMENT0, sceneColor_.id(), 0);
@@ -83,10 +85,11 @@ void OutputTarget::resize(glm::ivec2 size) {
     throw Error(concat("OutputTarget: bad size ", size.x, "x", size.y));
   checkImageSize(size);
   size_ = size;
+  const gl::OutOfMemoryCheck memory;
   color_ = texture2D(GL_RGBA8, size);
   depth_ = gl::createRenderbuffer();
   glNamedRenderbufferStorage(depth_.id(), GL_DEPTH_COMPONENT24, size.x, size.y);
-  checkAllocated(size, "wall's");
+  checkAllocated(memory, size, "wall's");
   fbo_ = gl::createFramebuffer();
   glNamedFramebufferTexture(fbo_.id(), GL_COLOR_ATTACHMENT0, color_.id(), 0);
   glNamedFramebufferRenderbuffer(fbo_.id(), GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth_.id());

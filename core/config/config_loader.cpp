@@ -172,7 +172,14 @@ class Reader {
 // A TOML value as an attribute value; the table then checks type and range.
 AttributeValue attributeValue(const Reader& r, const toml::value& v, const std::string& key) {
   if (v.is_boolean()) return v.as_boolean();
-  if (v.is_integer()) return int(std::clamp<std::int64_t>(v.as_integer(), -2000000000, 2000000000));
+  if (v.is_integer()) {
+    const std::int64_t n = v.as_integer();
+    if (n < -2000000000 || n > 2000000000) {
+      const AttributeInfo& info = AttributeTable::instance().lookup(key);
+      r.fail(v, key, concat(n, " is outside [", info.min, ", ", info.max, "] ", info.unit));
+    }
+    return int(n);
+  }
   if (v.is_floating()) return r.single(v, key);
   if (v.is_string()) return v.as_string().str;
   if (v.is_array()) return r.vec<3>(v, key);

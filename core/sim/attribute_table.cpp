@@ -711,6 +711,23 @@ AttributeValue AttributeTable::parse(std::string_view key, std::string_view text
     return Error(concat("attribute '", key, "': cannot read '", text, "' as ", typeName(info.type),
                         info.type == AttributeType::Enum ? " (" + joined(info.choices) + ")" : ""));
   };
+  // A number too large for its type (1e40, or 10^11 for an integer) is
+  // outside any attribute's range: say so, with the number as written.
+  const auto beyond = [&]() -> Error {
+    double d = 0.0;
+    std::string_view t = text;
+    while (!t.empty() && t.front() == ' ')
+      t.remove_prefix(1);
+    if (!t.empty() && t.front() == '+') t.remove_prefix(1);
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), d);
+    const bool number = (ec == std::errc() || ec == std::errc::result_out_of_range) &&
+                        std::string_view(end, t.data() + t.size()).find_first_not_of(' ') ==
+                            std::string_view::npos &&
+                        end != t.data() && !std::isnan(d);
+    if (!number) return fail();
+    return Error(concat("attribute '", key, "': ", text, " is outside [", info.min, ", ", info.max,
+                        "] ", info.unit));
+  };
   switch (info.type) {
     case AttributeType::Bool:
       if (text == "true" || text == "1" || text == "on") return true;
@@ -718,12 +735,14 @@ AttributeValue AttributeTable::parse(std::string_view key, std::string_view text
       throw fail();
     case AttributeType::Int: {
       float f;
-      if (!parseFloat(text, f) || f != std::floor(f)) throw fail();
-      return int(std::clamp(f, -2e9f, 2e9f));
+      if (!parseFloat(text, f)) throw beyond();
+      if (f != std::floor(f)) throw fail();
+      if (std::abs(f) > 2e9f) throw beyond();
+      return int(f);
     }
     case AttributeType::Float: {
       float f;
-      if (!parseFloat(text, f)) throw fail();
+      if (!parseFloat(text, f)) throw beyond();
       return f;
     }
     case AttributeType::Vec3: {

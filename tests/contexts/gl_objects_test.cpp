@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "contexts/gl/objects.h"
+#include "contexts/gl/out_of_memory.h"
 #include "contexts/gl/program.h"
 #include "core/util/error.h"
 #include "tests/contexts/gl_test.h"
@@ -35,6 +36,31 @@ TEST_F(GlObjectsTest, OneOwnerDeletesEachObjectOnce) {
   t = gl::createTexture(GL_TEXTURE_2D);  // assignment deletes the old one
   EXPECT_FALSE(glIsTexture(tid));
   EXPECT_NE(t.id(), tid);
+}
+
+// The driver's report of an allocation that ran out of memory is an error on
+// the terminal, unless the allocation is checked: then the check's own
+// message (naming the setting to lower) is the one the user reads.
+TEST_F(GlObjectsTest, ACheckedAllocationsOutOfMemoryReportIsNotPrintedAsAnError) {
+  const auto printed = [](const char* message) {
+    testing::internal::CaptureStderr();
+    glDebugMessageInsert(GL_DEBUG_SOURCE_APPLICATION, GL_DEBUG_TYPE_ERROR, 1,
+                         GL_DEBUG_SEVERITY_HIGH, -1, message);
+    return testing::internal::GetCapturedStderr();
+  };
+  const char* outOfMemory = "GL_OUT_OF_MEMORY in glNamedBufferStorage";
+  EXPECT_NE(printed(outOfMemory).find("[sandstorm error] GL (1): GL_OUT_OF_MEMORY"),
+            std::string::npos);
+  {
+    const gl::OutOfMemoryCheck check;
+    EXPECT_EQ(printed(outOfMemory), "");
+    EXPECT_EQ(printed("Out of memory allocating a buffer"), "");
+    // Other errors still show while the check lives.
+    EXPECT_NE(printed("GL_INVALID_VALUE in glNamedBufferStorage").find("[sandstorm error]"),
+              std::string::npos);
+    EXPECT_FALSE(check.failed());
+  }
+  EXPECT_NE(printed(outOfMemory).find("[sandstorm error]"), std::string::npos);
 }
 
 TEST_F(GlObjectsTest, CompileErrorsNameTheFileAndPrintTheLog) {

@@ -119,5 +119,28 @@ TEST(AttributeTable, ParsesText) {
   EXPECT_THROW(table().parse("sim.maximum", "1.5"), Error);
 }
 
+// A number beyond its type (a float's 3.4e38, an integer's 2e9) is refused as
+// outside the attribute's range, quoted as written: not "cannot read" (it is
+// a number), nor reported as the number it was first clamped to.
+TEST(AttributeTable, NumbersBeyondTheirTypeAreOutsideTheRangeAsWritten) {
+  const auto message = [](const char* key, const char* text) {
+    try {
+      table().parse(key, text);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message("sim.maximum", "99999999999"),
+            "attribute 'sim.maximum': 99999999999 is outside [0, 1e+08] particles");
+  EXPECT_EQ(message("render.size", "1e40"),
+            "attribute 'render.size': 1e40 is outside [1e-07, 1000] m");
+  EXPECT_EQ(message("render.size", "-1e400"),
+            "attribute 'render.size': -1e400 is outside [1e-07, 1000] m");
+  EXPECT_NE(message("render.size", "1e40x").find("cannot read '1e40x' as a number"),
+            std::string::npos);
+  EXPECT_NE(message("render.size", "nan").find("cannot read 'nan' as a number"), std::string::npos);
+}
+
 }  // namespace
 }  // namespace sandstorm

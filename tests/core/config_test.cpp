@@ -368,6 +368,9 @@ TEST(Config, IntegersBeyond64BitsAreRefusedNotClamped) {
   // The extremes themselves fit (and are then judged by the key's own range);
   // digits inside strings and comments are not integers.
   EXPECT_ERROR("[sim]\nmaximum = -9223372036854775808\n" + kWall, "sim.maximum");
+  // Beyond an attribute's int, the integer is quoted as written, not as clamped.
+  EXPECT_ERROR("[sim]\nmaximum = 99999999999\n" + kWall, "test.toml:2",
+               "sim.maximum: 99999999999 is outside [0, 1e+08] particles");
   EXPECT_EQ(
       errorOf("# 99999999999999999999\n[run]\nname = \"0b" + std::string(70, '1') + "\"\n" + kWall)
           .find("64 bits"),
