@@ -43,6 +43,20 @@ class Reader {
     throw Error(concat(at(v), ": ", key, ": ", what));
   }
 
+  // fail() at the line of the key in `table` that `key` names (its last part;
+  // of "run.near/far", near or else far), or at the table's where it has none:
+  // a bad value is then named at its own line, not its section's.
+  [[noreturn]] void failKey(const toml::value& table, const std::string& key,
+                            const std::string& what) const {
+    const std::string last = key.substr(key.rfind('.') + 1);
+    for (std::size_t from = 0; from <= last.size();) {
+      const std::size_t to = std::min(last.find('/', from), last.size());
+      if (const toml::value* v = find(table, last.substr(from, to - from))) fail(*v, key, what);
+      from = to + 1;
+    }
+    fail(table, key, what);
+  }
+
   void checkKeys(const toml::value& table, const std::string& path,
                  const std::set<std::string>& known) const {
     for (const auto& [key, value] : table.as_table()) {
@@ -233,10 +247,10 @@ void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
   run.capacityLimit =
       std::size_t(r.integer(t, "capacity_limit", "run", int(run.capacityLimit), 1, 1 << 28));
   if (run.capacityLimit < run.capacity)
-    r.fail(t, "run.capacity_limit", "expected capacity_limit >= capacity");
+    r.failKey(t, "run.capacity_limit", "expected capacity_limit >= capacity");
   run.fixedDt = r.real(t, "fixed_dt", "run", run.fixedDt);
   if (run.fixedDt < 0.0f || run.fixedDt > 1.0f)
-    r.fail(t, "run.fixed_dt", "expected 0 (real clock) to 1 s");
+    r.failKey(t, "run.fixed_dt", "expected 0 (real clock) to 1 s");
   run.frames = r.integer(t, "frames", "run", run.frames, 0, 100000000);
   run.maxFps = r.real(t, "max_fps", "run", float(run.maxFps));
   if (!(run.maxFps >= 0.0 && run.maxFps <= 1000.0))
@@ -246,12 +260,12 @@ void readRun(const Reader& r, const toml::value& t, RunSpec& run) {
                                       {{"tf-gs", "tf-gs"}, {"compute", "compute"}});
   run.sharedSimulation = r.boolean(t, "shared_simulation", "run", run.sharedSimulation);
   if (run.sharedSimulation && run.backend != "compute")
-    r.fail(t, "run.shared_simulation",
-           "needs run.backend = \"compute\" (transform-feedback counts stay in one context)");
+    r.failKey(t, "run.shared_simulation",
+              "needs run.backend = \"compute\" (transform-feedback counts stay in one context)");
   run.nearPlane = r.real(t, "near", "run", run.nearPlane);
   run.farPlane = r.real(t, "far", "run", run.farPlane);
   if (!(run.nearPlane > 0.0f) || !(run.farPlane > run.nearPlane))
-    r.fail(t, "run.near/far", "expected 0 < near < far");
+    r.failKey(t, "run.near/far", "expected 0 < near < far");
   run.statsWarmup = r.integer(t, "stats_warmup", "run", run.statsWarmup, 0, 100000000);
   run.offscreenContexts =
       r.choice<RunSpec::OffscreenContexts>(t, "offscreen_contexts", "run", run.offscreenContexts,
@@ -357,7 +371,7 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   f.bounds.min = r.vec<3>(t, "bounds_min", "field", f.bounds.min);
   f.bounds.max = r.vec<3>(t, "bounds_max", "field", f.bounds.max);
   if (!glm::all(glm::lessThan(f.bounds.min, f.bounds.max)))
-    r.fail(t, "field.bounds_min/bounds_max", "expected bounds_min < bounds_max on every axis");
+    r.failKey(t, "field.bounds_min/bounds_max", "expected bounds_min < bounds_max on every axis");
   if (const toml::value* params = r.find(t, "params")) {
     if (!params->is_table()) r.fail(*params, "field.params", "expected a table of numbers");
     for (const auto& [k, v] : params->as_table())
@@ -365,12 +379,12 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   }
   f.placement.offset = r.vec<3>(t, "offset", "field", f.placement.offset);
   f.placement.scale = r.real(t, "scale", "field", f.placement.scale);
-  if (!(f.placement.scale > 0.0f)) r.fail(t, "field.scale", "expected a positive scale");
+  if (!(f.placement.scale > 0.0f)) r.failKey(t, "field.scale", "expected a positive scale");
   // rotation_deg = [x, y, z]: turns about the room's x, then y, then z axis
   // (e.g. [90, 0, 0] stands a y-up data set up in the z-up room); yaw_deg is
   // the common case, a turn about z alone.
   if (r.find(t, "rotation_deg") && r.find(t, "yaw_deg"))
-    r.fail(t, "field.rotation_deg", "give rotation_deg or yaw_deg, not both");
+    r.failKey(t, "field.rotation_deg", "give rotation_deg or yaw_deg, not both");
   glm::vec3 turns(0.0f, 0.0f, r.real(t, "yaw_deg", "field", 0.0f));
   turns = r.vec<3>(t, "rotation_deg", "field", turns);
   f.placement.rotation = rotationFromDegrees(turns);
@@ -433,7 +447,8 @@ void readScene(const Reader& r, const toml::value& t, SceneSpec& s) {
   s.terrainBounds.min = r.vec<3>(t, "terrain_min", "scene", s.terrainBounds.min);
   s.terrainBounds.max = r.vec<3>(t, "terrain_max", "scene", s.terrainBounds.max);
   if (!glm::all(glm::lessThan(s.terrainBounds.min, s.terrainBounds.max)))
-    r.fail(t, "scene.terrain_min/terrain_max", "expected terrain_min < terrain_max on every axis");
+    r.failKey(t, "scene.terrain_min/terrain_max",
+              "expected terrain_min < terrain_max on every axis");
   s.helicopter = r.boolean(t, "helicopter", "scene", s.helicopter);
 }
 
@@ -456,7 +471,7 @@ void readHead(const Reader& r, const toml::value& t, HeadSpec& h) {
   }
   h.eyeSeparation = r.real(t, "eye_separation", "head", h.eyeSeparation);
   if (h.eyeSeparation < 0.0f || h.eyeSeparation > 0.5f)
-    r.fail(t, "head.eye_separation", "expected 0..0.5 m");
+    r.failKey(t, "head.eye_separation", "expected 0..0.5 m");
   h.loop = r.boolean(t, "loop", "head", h.loop);
   if (const toml::value* path = r.find(t, "path")) {
     if (!path->is_array())
@@ -473,7 +488,7 @@ void readHead(const Reader& r, const toml::value& t, HeadSpec& h) {
     }
   }
   if (h.mode == HeadMode::Scripted && h.path.size() < 2)
-    r.fail(t, "head.path", "a scripted head needs at least two keyframes");
+    r.failKey(t, "head.path", "a scripted head needs at least two keyframes");
 }
 
 // [[primitive]]: the field editor's primitives (primitive.N.*), filling the
@@ -545,13 +560,13 @@ void readNavigation(const Reader& r, const toml::value& t, NavigationSpec& n) {
   n.offset = r.vec<3>(t, "offset", "navigation", n.offset);
   n.yawDegrees = r.real(t, "yaw_deg", "navigation", n.yawDegrees);
   n.scale = r.real(t, "scale", "navigation", n.scale);
-  if (!(n.scale > 0.0f)) r.fail(t, "navigation.scale", "expected a positive scale");
+  if (!(n.scale > 0.0f)) r.failKey(t, "navigation.scale", "expected a positive scale");
   n.flySpeed = r.real(t, "fly_speed", "navigation", n.flySpeed);
   if (!(n.flySpeed >= 0.0f && n.flySpeed <= 1000.0f))
-    r.fail(t, "navigation.fly_speed", "expected 0..1000 m/s");
+    r.failKey(t, "navigation.fly_speed", "expected 0..1000 m/s");
   n.turnSpeedDeg = r.real(t, "turn_speed_deg", "navigation", n.turnSpeedDeg);
   if (!(n.turnSpeedDeg >= 0.0f && n.turnSpeedDeg <= 720.0f))
-    r.fail(t, "navigation.turn_speed_deg", "expected 0..720 degrees/s");
+    r.failKey(t, "navigation.turn_speed_deg", "expected 0..720 degrees/s");
 }
 
 // A direction in a body's own coordinates: three numbers, not all zero.
@@ -617,26 +632,26 @@ void readTracking(const Reader& r, const toml::value& t, TrackingSpec& k) {
   k.rotation = rotationFromDegrees(r.vec<3>(t, "rotation_deg", "tracking", glm::vec3(0.0f)));
   k.staleMs = r.real(t, "stale_ms", "tracking", k.staleMs);
   if (!(k.staleMs >= 1.0f && k.staleMs <= 60000.0f))
-    r.fail(t, "tracking.stale_ms", "expected 1..60000 ms");
+    r.failKey(t, "tracking.stale_ms", "expected 1..60000 ms");
   k.eyeOffset = r.vec<3>(t, "eye_offset", "tracking", k.eyeOffset);
   if (!(glm::length(k.eyeOffset) <= 1.0f))
-    r.fail(t, "tracking.eye_offset", "expected an offset under 1 m (metres, the glasses' axes)");
+    r.failKey(t, "tracking.eye_offset", "expected an offset under 1 m (metres, the glasses' axes)");
   k.headRight = axis(r, t, "head_right", k.headRight);
   k.headUp = axis(r, t, "head_up", k.headUp);
   if (std::abs(glm::dot(k.headRight, k.headUp)) > 1e-3f)
-    r.fail(t, "tracking.head_right/head_up", "expected perpendicular directions");
+    r.failKey(t, "tracking.head_right/head_up", "expected perpendicular directions");
   k.wandForward = axis(r, t, "wand_forward", k.wandForward);
   k.wandUp = axis(r, t, "wand_up", k.wandUp);
   if (std::abs(glm::dot(k.wandForward, k.wandUp)) > 1e-3f)
-    r.fail(t, "tracking.wand_forward/wand_up", "expected perpendicular directions");
+    r.failKey(t, "tracking.wand_forward/wand_up", "expected perpendicular directions");
   k.triggerButton = r.integer(t, "trigger_button", "tracking", k.triggerButton, 0, 31);
   k.grabButton = r.integer(t, "grab_button", "tracking", k.grabButton, 0, 31);
   k.grabRadius = r.real(t, "grab_radius", "tracking", k.grabRadius);
   if (!(k.grabRadius > 0.0f && k.grabRadius <= 10.0f))
-    r.fail(t, "tracking.grab_radius", "expected 0..10 m");
+    r.failKey(t, "tracking.grab_radius", "expected 0..10 m");
   k.rayLength = r.real(t, "ray_length", "tracking", k.rayLength);
   if (!(k.rayLength >= 0.1f && k.rayLength <= 1000.0f))
-    r.fail(t, "tracking.ray_length", "expected 0.1..1000 m");
+    r.failKey(t, "tracking.ray_length", "expected 0.1..1000 m");
 }
 
 WindowSpec readWindow(const Reader& r, const toml::value& window, const std::string& wp,
@@ -698,7 +713,7 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
                        {"left-eye", StereoMode::LeftEye},
                        {"right-eye", StereoMode::RightEye}});
   if (w.stereo == StereoMode::QuadBuffer && !w.window)
-    r.fail(t, path + ".stereo",
+    r.failKey(t, path + ".stereo",
            "quad-buffer stereo needs a window; offscreen walls can use side-by-side");
   w.menu = r.boolean(t, "menu", path, w.menu);
   w.legend = r.boolean(t, "legend", path, w.legend);

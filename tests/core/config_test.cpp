@@ -358,6 +358,21 @@ TEST(Config, WindowSizesBeyondTheirRangeOrInfiniteAreRefused) {
   EXPECT_EQ(ok.walls.at(0).window->position, glm::ivec2(-20, 0));
 }
 
+// A value judged after it is read (against another key, or a range of its
+// own) is named at its own line, not its section's.
+TEST(Config, AValueOutsideItsRangeIsNamedAtItsOwnLine) {
+  EXPECT_ERROR("[head]\nposition = [0, 0, 1.7]\n\neye_separation = -1\n" + kWall,
+               "test.toml:4:", "head.eye_separation", "0..0.5 m");
+  EXPECT_ERROR("[run]\nseed = 1\nnear = 5\nfar = 1\n" + kWall, "test.toml:3:", "run.near/far");
+  EXPECT_ERROR("[run]\nseed = 1\nfar = -1\n" + kWall, "test.toml:3:", "run.near/far");
+  EXPECT_ERROR("[tracking]\nport = 5000\nstale_ms = 0\n" + kWall,
+               "test.toml:3:", "tracking.stale_ms");
+  EXPECT_ERROR(kWall + "offscreen = { size = [64, 64] }\nstereo = \"quad-buffer\"\n",
+               "test.toml:8:", "wall[0].stereo");
+  // Where the key is absent, its section's line.
+  EXPECT_ERROR("[head]\nmode = \"scripted\"\n" + kWall, "test.toml:1:", "head.path");
+}
+
 TEST(Config, IntegersBeyond64BitsAreRefusedNotClamped) {
   const std::string big = "0b1" + std::string(64, '0');  // 2^64
   EXPECT_ERROR("[run]\nseed = " + big + "\n" + kWall, "test.toml:2", "does not fit in 64 bits");
