@@ -42,6 +42,9 @@ TEST_F(GlObjectsTest, OneOwnerDeletesEachObjectOnce) {
 // the terminal, unless the allocation is checked: then the check's own
 // message (naming the setting to lower) is the one the user reads.
 TEST_F(GlObjectsTest, ACheckedAllocationsOutOfMemoryReportIsNotPrintedAsAnError) {
+  // The callback runs before glDebugMessageInsert returns (a driver may
+  // otherwise call it later, from its own thread).
+  glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
   const auto printed = [](const char* message) {
     testing::internal::CaptureStderr();
     glDebugMessageInsert(GL_DEBUG_SOURCE_APPLICATION, GL_DEBUG_TYPE_ERROR, 1,
@@ -61,6 +64,7 @@ TEST_F(GlObjectsTest, ACheckedAllocationsOutOfMemoryReportIsNotPrintedAsAnError)
     EXPECT_FALSE(check.failed());
   }
   EXPECT_NE(printed(outOfMemory).find("[sandstorm error]"), std::string::npos);
+  glDisable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
 }
 
 TEST_F(GlObjectsTest, CompileErrorsNameTheFileAndPrintTheLog) {
