@@ -8,7 +8,9 @@
 //
 // Reads every format loadField() reads; writes .vti and .vdb. Errors go to
 // stderr with exit status 1; bad arguments exit with CLI11's status (non-zero).
+#include <cctype>
 #include <cstdio>
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <sstream>
@@ -28,6 +30,7 @@
 #include "core/io/field_loader.h"
 #include "core/io/field_writer.h"
 #include "core/util/error.h"
+#include "core/util/output_file.h"
 
 namespace sandstorm {
 namespace {
@@ -53,9 +56,6 @@ void addOutput(CLI::App* cmd, Output& o) {
 
 void write(const std::string& out, const VectorField& f, const std::string& array,
            const Output& o) {
-  if (o.option->count() > 0 && formatForExtension(out) != FieldFormat::VtkImageData)
-    throw Error(concat("--compression applies to .vti files; ", out,
-                       " is written as its format compresses"));
   saveField(out, f, array, vtiCompressionNamed(o.compression, "--compression"));
 }
 
@@ -87,7 +87,16 @@ void info(const std::string& file, const Common& c) {
   std::cout << describeField(file, f, report);
 }
 
+// The output's checks, made before the input is read (a large file takes minutes).
+void checkOutput(const std::string& out, const Output& o) {
+  if (o.option->count() > 0 && formatForExtension(out) != FieldFormat::VtkImageData)
+    throw Error(concat("--compression applies to .vti files; ", out,
+                       " is written as its format compresses"));
+  checkFieldOutput(out);
+}
+
 void convert(const std::string& in, const std::string& out, const Common& c, const Output& o) {
+  checkOutput(out, o);
   LoadReport report;
   const VectorField f = loadField(in, optionsFrom(c), &report);
   write(out, f, report.arrayName.empty() ? "velocity" : report.arrayName, o);
@@ -99,6 +108,7 @@ void convert(const std::string& in, const std::string& out, const Common& c, con
 // arrays and writes it with them (and those it had).
 void derive(const std::string& in, const std::string& out, const std::vector<std::string>& names,
             const Common& c, const Output& o) {
+  checkOutput(out, o);
   LoadReport report;
   VectorField f = loadField(in, optionsFrom(c), &report);
   for (const std::string& name : names) {
@@ -225,12 +235,20 @@ int main(int argc, char** argv) {
     if (*resampleCmd) convert(rin, rout, resampleOpts, resampleOut);
     if (*deriveCmd) derive(din, dout, dnames, deriveOpts, deriveOut);
     if (*terrainCmd) {
+      std::string extension = std::filesystem::path(tout).extension().string();
+      for (char& ch : extension)
+        ch = char(std::tolower(static_cast<unsigned char>(ch)));
+      if (extension != ".pgm")
+        throw Error(
+            concat(tout, ": a height map is written as a 16-bit PGM; expected a .pgm file"));
+      checkOutputFile(tout, "writing");
       const HeightMap dunes = duneTerrain({tsize, tsize}, glm::vec2(float(textent)), tseed);
       writeHeightMapPgm(dunes, tout, 0.0f, 1.0f);
       std::cerr << "wrote " << tout << " (" << tsize << "x" << tsize << " dunes over " << textent
                 << " m; heights 0..1, scaled by the config's terrain_min/max)\n";
     }
     if (*generateCmd) {
+      checkOutput(gout, generateOut);
       const auto field = makeAnalyticField(name, parseParams(gparams));
       const Box box{{float(gbounds[0]), float(gbounds[1]), float(gbounds[2])},
                     {float(gbounds[3]), float(gbounds[4]), float(gbounds[5])}};

@@ -63,6 +63,17 @@ expect fail "gzip not in" -- convert "$data/tornado.vti" "$tmp/x.vti" --compress
 expect fail "cannot write '.vtk'" -- convert "$data/tornado.vti" "$tmp/out.vtk"
 expect fail "--dims" -- resample "$data/tornado.vti" "$tmp/out.vti"
 expect fail "subcommand|required" --
+# A bad output is refused before the input is read, never VTK's own dump.
+expect fail "^sandstorm-field: writing $tmp/none/out.vti: the folder $tmp/none does not exist\$" -- convert "$data/tornado.vti" "$tmp/none/out.vti"
+expect fail "^sandstorm-field: writing $tmp/none/out.vdb: the folder" -- convert "$data/tornado.vti" "$tmp/none/out.vdb"
+expect fail "^sandstorm-field: writing $tmp/none/d.vti: the folder" -- derive "$data/tornado.vti" "$tmp/none/d.vti" --quantity speed
+expect fail "^sandstorm-field: writing $tmp/none/g.vti: the folder" -- generate tornado "$tmp/none/g.vti" --dims 4 4 4 --bounds 0 0 0 1 1 1
+expect fail "^sandstorm-field: $tmp: expected a file name ending in .vti" -- convert "$data/tornado.vti" "$tmp"
+expect fail "writing $tmp/none/t.pgm: the folder" -- terrain "$tmp/none/t.pgm"
+rm -f "$tmp/t.txt"
+expect fail "expected a .pgm file" -- terrain "$tmp/t.txt"
+[ -e "$tmp/t.txt" ] && { echo "FAILED: terrain wrote t.txt" >&2; failed=$((failed + 1)); }
+expect fail "^sandstorm-field: writing $tmp/none/out.vti: the folder" -- convert "$tmp/missing.vti" "$tmp/none/out.vti"
 cp "$data/tornado.vti" "$tmp/lying.vdb"
 expect fail "is a VTK XML image data file" -- info "$tmp/lying.vdb"
 
