@@ -10,8 +10,10 @@
 #include "contexts/platform/software_rasterizer.h"
 #include "core/config/config_sets.h"
 #include "core/sim/attribute_table.h"
+#include "core/sim/session_log.h"
 #include "core/util/error.h"
 #include "core/util/log.h"
+#include "core/util/output_file.h"
 
 namespace sandstorm {
 namespace {
@@ -25,6 +27,21 @@ bool haveDisplay() {
 constexpr int kHeadlessFrames = 240;
 
 }  // namespace
+
+void checkRunFiles(const AppOptions& options) {
+  const std::pair<const std::optional<std::filesystem::path>&, const char*> outputs[] = {
+      {options.dumpParticles, "--dump-particles"},
+      {options.dumpStreamlines, "--dump-streamlines"},
+      {options.dumpTrails, "--dump-trails"},
+      {options.hashLog, "--hash-log"},
+      {options.stats, "--stats"},
+      {options.saveField, "--save-field"},
+      {options.bakeField, "--bake-field"},
+      {options.record, "--record"}};
+  for (const auto& [path, option] : outputs)
+    if (path) checkOutputFile(*path, option);
+  if (options.replay) readSession(*options.replay);
+}
 
 void applySets(AppConfig& config, const std::vector<std::string>& sets) {
   const AttributeTable& table = AttributeTable::instance();

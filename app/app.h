@@ -41,6 +41,11 @@ struct AppOptions {
   std::optional<MovieSpec> movie;  // --movie and its options
 };
 
+// Tries every file the run will write (--dump-*, --stats, --record, ...) and
+// reads the session to replay, so that a bad path or file stops the start,
+// before a field is read, not the end. Throws Error naming the option.
+void checkRunFiles(const AppOptions& options);
+
 // Applies --set overrides to the configuration's particle state. Throws Error.
 void applySets(AppConfig& config, const std::vector<std::string>& sets);
 

@@ -104,12 +104,7 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
         std::clamp<unsigned>(std::thread::hardware_concurrency(), 1,
                              unsigned(std::max<std::size_t>(1, config.walls.size()))));
   }
-  if (options_.dumpParticles) checkOutputFile(*options_.dumpParticles, "--dump-particles");
-  if (options_.dumpStreamlines) checkOutputFile(*options_.dumpStreamlines, "--dump-streamlines");
-  if (options_.hashLog) checkOutputFile(*options_.hashLog, "--hash-log");
-  if (options_.stats) checkOutputFile(*options_.stats, "--stats");
-  if (options_.saveField) checkOutputFile(*options_.saveField, "--save-field");
-  if (options_.bakeField) checkOutputFile(*options_.bakeField, "--bake-field");
+  checkRunFiles(options_);
   if (options_.movie) {
     if (cluster_)
       throw Error(

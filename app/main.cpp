@@ -214,6 +214,7 @@ int main(int argc, char** argv) {
   }
 #endif
   try {
+    checkRunFiles(options);
     if (!fieldFile.empty()) {
       // The desktop scene unless a configuration was named.
       AppConfig config = loadConfig(

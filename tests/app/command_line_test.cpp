@@ -126,6 +126,9 @@ TEST(CommandLine, OutputsThatCannotBeWrittenAreClearErrors) {
       {"--dump-particles " + (dir / "missing" / "x.vtp").string(), "folder", true},
       {"--hash-log " + dir.string(), "is a folder; expected a file name", true},
       {"--screenshot /proc/sandstorm-cannot-be-here", "cannot make the folder", true},
+      {"--dump-trails " + (dir / "missing" / "t.vtp").string(), "folder", true},
+      {"--stats " + (dir / "missing" / "s.json").string(), "folder", true},
+      {"--record " + (dir / "missing" / "r.session").string(), "folder", true},
       {"--dump-particles " + (dir / "full.vtp").string(), "writing failed", false},
       {"--screenshot " + (dir / "shots").string(), "No space left on device", false},
       {"--record " + (dir / "full.session").string(), "writing the session log failed", false},
@@ -139,6 +142,15 @@ TEST(CommandLine, OutputsThatCannotBeWrittenAreClearErrors) {
     if (c.beforeTheRun) {
       EXPECT_EQ(r.output.find("wall 'front':"), std::string::npos) << r.output;
     }
+  }
+  // A field file is read only once the outputs and the session to replay are
+  // known to be good (a large one takes minutes).
+  std::ofstream(dir / "bad.session") << "garbage\n";
+  for (const std::string& args : {"--dump-trails " + (dir / "missing" / "t.vtp").string(),
+                                  "--replay " + (dir / "bad.session").string()}) {
+    const auto r = runSandstorm("data/tornado.vti --frames 1 " + args);
+    EXPECT_EQ(r.exitCode, 1) << r.output;
+    EXPECT_EQ(r.output.find("field: "), std::string::npos) << args << " gave:\n" << r.output;
   }
 }
 
