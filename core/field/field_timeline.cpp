@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/field/grid_match.h"
 #include "core/util/error.h"
 
 namespace sandstorm {
@@ -29,11 +30,10 @@ FieldTimeline::FieldTimeline(std::vector<double> times,
   checkTimes(times_);
   for (std::size_t i = 0; i < frames_.size(); ++i) {
     if (!frames_[i]) throw Error(concat("FieldTimeline: frame ", i, " is missing"));
-    const VectorField& f = *frames_[i];
-    if (f.dims() != frames_[0]->dims() || f.bounds().min != frames_[0]->bounds().min ||
-        f.bounds().max != frames_[0]->bounds().max)
-      throw Error(concat("FieldTimeline: frame ", i,
-                         " has another grid than frame 0; frames must share dims and bounds"));
+    if (const std::string difference = gridDifference(*frames_[i], *frames_[0]);
+        !difference.empty())
+      throw Error(
+          concat("step ", i, " has ", difference, "; expected every step on the same grid"));
   }
 }
 
@@ -72,12 +72,9 @@ void FieldTimeline::append(double time, std::shared_ptr<const VectorField> frame
     return;
   }
   const VectorField& first = *frames_[0];
-  if (frame->dims() != first.dims() || frame->bounds().min != first.bounds().min ||
-      frame->bounds().max != first.bounds().max)
-    throw Error(concat("FieldTimeline: the frame at ", time, " s has a ", frame->dims().x, "x",
-                       frame->dims().y, "x", frame->dims().z, " grid over other bounds than the ",
-                       first.dims().x, "x", first.dims().y, "x", first.dims().z,
-                       " of the first; frames must share dims and bounds"));
+  if (const std::string difference = gridDifference(*frame, first); !difference.empty())
+    throw Error(concat("the step at ", time, " s has ", difference,
+                       "; expected every step on the same grid"));
   times_.push_back(time);
   frames_.push_back(std::move(frame));
 }

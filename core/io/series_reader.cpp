@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include "core/field/grid_match.h"
 #include "core/io/field_loader.h"
 #include "core/util/error.h"
 #include "core/util/parallel_for.h"
@@ -66,14 +67,10 @@ std::shared_ptr<const VectorField> SeriesReader::read(const Source& source,
   auto field = std::make_shared<const VectorField>(
       source.parts.size() > 1 ? loadFieldParts(source.parts, source.file, step)
                               : loadField(source.file, step));
-  if (grid && (field->dims() != grid->dims() || field->bounds().min != grid->bounds().min ||
-               field->bounds().max != grid->bounds().max))
+  if (const std::string difference = grid ? gridDifference(*field, *grid) : ""; !difference.empty())
     throw Error(concat(source.file.string(),
                        source.timeStep > 0 ? concat(" (time step ", source.timeStep, ")") : "",
-                       ": a ", field->dims().x, "x", field->dims().y, "x", field->dims().z,
-                       " grid over other bounds than the series' first step's ", grid->dims().x,
-                       "x", grid->dims().y, "x", grid->dims().z,
-                       "; expected every step on the same grid"));
+                       ": ", difference, "; expected every step on the same grid"));
   return field;
 }
 
@@ -113,12 +110,8 @@ std::size_t SeriesReader::size() const {
 void SeriesReader::append(const std::filesystem::path& file,
                           std::shared_ptr<const VectorField> frame) {
   if (!frame) throw Error("field series: a missing step");
-  if (frame->dims() != first_->dims() || frame->bounds().min != first_->bounds().min ||
-      frame->bounds().max != first_->bounds().max)
-    throw Error(concat(file.string(), ": a ", frame->dims().x, "x", frame->dims().y, "x",
-                       frame->dims().z, " grid over other bounds than the series' first step's ",
-                       first_->dims().x, "x", first_->dims().y, "x", first_->dims().z,
-                       "; expected every step on the same grid"));
+  if (const std::string difference = gridDifference(*frame, *first_); !difference.empty())
+    throw Error(concat(file.string(), ": ", difference, "; expected every step on the same grid"));
   const FileIdentity identity = FileIdentity::of(file);
   {
     std::lock_guard lock(mutex_);

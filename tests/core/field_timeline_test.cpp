@@ -48,6 +48,28 @@ TEST(FieldTimeline, RefusesMismatchedFrames) {
   EXPECT_THROW(FieldTimeline({0}, frames(2)), Error);
 }
 
+// A step off the first's grid is named by what differs: its points per axis,
+// or (the same points) its bounds, digits enough to tell them apart.
+TEST(FieldTimeline, AStepOffTheGridSaysWhetherItsPointsOrItsBoundsDiffer) {
+  const auto message = [](std::shared_ptr<const VectorField> step) {
+    FieldTimeline t({0.0, 1.0}, frames(2));
+    try {
+      t.append(2.0, std::move(step));
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(message(std::make_shared<VectorField>(Box{{0, 0, 0}, {1, 1, 1}}, glm::ivec3(3, 2, 2))),
+            "the step at 2 s has a 3x2x2 grid, not the first step's 2x2x2; expected every step "
+            "on the same grid");
+  EXPECT_EQ(
+      message(std::make_shared<VectorField>(Box{{0, 0, 0}, {1, 1, 1.0000001f}}, glm::ivec3(2))),
+      "the step at 2 s has bounds [0,0,0]..[1,1,1.00000012] m, not the first step's "
+      "[0,0,0]..[1,1,1] m; expected every step on the same grid");
+  EXPECT_EQ(message(frames(3)[2]), "no error");
+}
+
 TEST(FieldTimeline, TheMainContextSendsAFrameOnceAndTheWeightEveryFrame) {
   MainContext::Options o;
   o.fixedDt = 0.25f;
