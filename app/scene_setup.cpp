@@ -129,10 +129,18 @@ FieldSource watchedField(const std::filesystem::path& path, const FieldSpec& spe
     if (std::chrono::steady_clock::now() > until)
       throw Error(concat("field source ", path.string(), ": no complete step came within ",
                          spec.waitSeconds, " s (field.wait_s)"));
-    if (!said)
+    if (!said) {
       log::info("field: waiting up to ", spec.waitSeconds,
                 " s (field.wait_s) for the first step in ", path.string(),
                 ": a field file a simulation writes there");
+      // A case folder missing its controlDict looks like a watched folder.
+      std::error_code ec;
+      if (std::filesystem::is_directory(path / "system", ec) ||
+          std::filesystem::is_directory(path / "constant", ec))
+        log::warn("field: ", path.string(),
+                  " has an OpenFOAM case's folders but no system/controlDict, so it is watched "
+                  "for field files rather than read as a case");
+    }
     said = true;
     std::this_thread::sleep_for(std::chrono::milliseconds(20));
   }

@@ -391,6 +391,15 @@ TEST(FileScene, AFileThatIsNotThereOrNotAFieldIsAClearError) {
   const auto bad = test::runSandstorm(path.string() + " --frames 1");
   EXPECT_EQ(bad.exitCode, 1);
   EXPECT_NE(bad.output.find("wind.vti"), std::string::npos) << bad.output;
+  // An OpenFOAM case without its controlDict is watched as a folder: say so.
+  std::filesystem::create_directories(dir / "case" / "system");
+  std::filesystem::create_directories(dir / "case" / "constant");
+  const auto foam =
+      test::runSandstorm((dir / "case").string() + " --frames 1 --set field.wait_s=0.1");
+  EXPECT_EQ(foam.exitCode, 1) << foam.output;
+  for (const char* part :
+       {"[sandstorm warn]", "no system/controlDict", "no complete step", "field.wait_s"})
+    EXPECT_NE(foam.output.find(part), std::string::npos) << part << " in:\n" << foam.output;
 }
 
 // A field at rest (a simulation's array of zeros, or the wrong array) opens,
