@@ -75,10 +75,12 @@ int main(int argc, char** argv) {
   cli.add_option("--movie-size", movieSize,
                  "The movie's size, WIDTHxHEIGHT: its walls are drawn offscreen for it (e.g. a "
                  "recorded session replayed into 3840x2160)");
-  cli.add_option("--movie-fps", movieFps, "The movie's frame rate (default: 1/run.fixed_dt)");
-  cli.add_option("--movie-crf", movieCrf,
-                 "The movie's quality: lower is better and larger; H.264 0-51 (default 13), "
-                 "VP9 0-63 (default 20)");
+  CLI::Option* movieFpsOption =
+      cli.add_option("--movie-fps", movieFps, "The movie's frame rate (default: 1/run.fixed_dt)");
+  CLI::Option* movieCrfOption =
+      cli.add_option("--movie-crf", movieCrf,
+                     "The movie's quality: lower is better and larger; H.264 0-51 (default 13), "
+                     "VP9 0-63 (default 20)");
   cli.add_flag("--movie-menu", movieMenu, "Show the menu panel in the movie");
   cli.add_option("--set", options.sets,
                  "Set an attribute, e.g. --set emitter.0.rate=50000 (repeatable)");
@@ -184,11 +186,11 @@ int main(int argc, char** argv) {
            .wall = movieWall,
            .stereo = movieStereo,
            .size = movieSize.empty() ? std::nullopt : std::optional<std::string>(movieSize),
-           .fps = movieFps != 0.0 ? std::optional<double>(movieFps) : std::nullopt,
-           .crf = movieCrf != -1 ? std::optional<int>(movieCrf) : std::nullopt,
+           .fps = movieFpsOption->count() > 0 ? std::optional<double>(movieFps) : std::nullopt,
+           .crf = movieCrfOption->count() > 0 ? std::optional<int>(movieCrf) : std::nullopt,
            .menu = movieMenu});
-    } else if (!movieWall.empty() || !movieSize.empty() || movieFps != 0.0 || movieCrf != -1 ||
-               movieMenu || movieStereo != "left") {
+    } else if (!movieWall.empty() || !movieSize.empty() || movieFpsOption->count() > 0 ||
+               movieCrfOption->count() > 0 || movieMenu || movieStereo != "left") {
       throw Error(
           "--movie-wall, --movie-stereo, --movie-size, --movie-fps, --movie-crf and "
           "--movie-menu shape a movie: give --movie FILE too");

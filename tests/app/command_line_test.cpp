@@ -31,7 +31,11 @@ TEST(CommandLine, BadArgumentsFailWithAMessage) {
         Case{"--set sim.integrator=rk3", "euler, rk2, rk4"},
         Case{"--set gpu.update_items=3", "--set gpu.update_items=3: gpu.update_items: expected"},
         Case{"--dump-particles out.txt", "expected a .vtp"},
-        Case{"--walls nowhere", "no wall named 'nowhere'"}}) {
+        Case{"--walls nowhere", "no wall named 'nowhere'"},
+        // Values that once meant "not given" are checked as any other.
+        Case{"--movie /tmp/sandstorm-x.mp4 --movie-fps 0", "--movie-fps 0: expected 1 to 240"},
+        Case{"--movie /tmp/sandstorm-x.mp4 --movie-crf -1", "--movie-crf -1: expected 0"},
+        Case{"--movie-crf -1", "give --movie FILE too"}}) {
     const auto r = runSandstorm("--config tests/data/identity.toml --frames 1 " + c.args);
     EXPECT_NE(r.exitCode, 0) << c.args;
     EXPECT_NE(r.output.find(c.expected), std::string::npos) << c.args << " gave:\n" << r.output;
