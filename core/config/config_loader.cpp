@@ -207,7 +207,17 @@ void setAttributes(const Reader& r, const toml::value& table, const std::string&
     const std::string full = prefix + key;
     try {
       const AttributeResult result = attributes.set(state, full, attributeValue(r, value, full));
-      if (!result.warning.empty()) r.fail(value, full, result.warning + " (fix the file)");
+      // A file's value out of range is an error, not clamped as a live edit
+      // is: "-1 is outside [0.01, 1000] m", without the table's key and clamp.
+      if (!result.warning.empty()) {
+        std::string what = result.warning;
+        if (const std::size_t from = what.find("': ");
+            what.starts_with("attribute '") && from != std::string::npos)
+          what.erase(0, from + 3);
+        if (const std::size_t clamp = what.find("; clamped to"); clamp != std::string::npos)
+          what.erase(clamp);
+        r.fail(value, full, what);
+      }
     } catch (const Error& e) {
       const std::string what = e.what();
       if (what.starts_with(r.file())) throw;
@@ -714,7 +724,7 @@ WallSpec readWall(const Reader& r, const toml::value& t, int index, std::optiona
                        {"right-eye", StereoMode::RightEye}});
   if (w.stereo == StereoMode::QuadBuffer && !w.window)
     r.failKey(t, path + ".stereo",
-           "quad-buffer stereo needs a window; offscreen walls can use side-by-side");
+              "quad-buffer stereo needs a window; offscreen walls can use side-by-side");
   w.menu = r.boolean(t, "menu", path, w.menu);
   w.legend = r.boolean(t, "legend", path, w.legend);
   w.rank = r.integer(t, "rank", path, 0, 0, 4095);

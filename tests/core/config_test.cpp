@@ -177,7 +177,9 @@ TEST(Config, UnknownStereoModesAreRefused) {
 
 TEST(Config, BadValuesAreRefusedWithTheirLine) {
   EXPECT_ERROR("[sim]\nmaximum = \"lots\"\n" + kWall, "test.toml:2", "sim.maximum", "integer");
-  EXPECT_ERROR("[render]\nsize = 5000.0\n" + kWall, "test.toml:2", "render.size", "clamped");
+  // An error, so not "clamped": the range, and the key once.
+  EXPECT_EQ(errorOf("[render]\nsize = 5000.0\n" + kWall),
+            "test.toml:2: render.size: 5000 is outside [1e-07, 1000] m");
   EXPECT_ERROR("[field]\ndims = [0, 4, 4]\n" + kWall, "test.toml:2", "field.dims");
   EXPECT_ERROR(kWall + "lower_left = 3\n", "test.toml",
                "already exists");  // TOML refuses redefinition
