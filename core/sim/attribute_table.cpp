@@ -711,20 +711,34 @@ AttributeValue AttributeTable::parse(std::string_view key, std::string_view text
     return Error(concat("attribute '", key, "': cannot read '", text, "' as ", typeName(info.type),
                         info.type == AttributeType::Enum ? " (" + joined(info.choices) + ")" : ""));
   };
-  // A number too large for its type (1e40, or 10^11 for an integer) is
-  // outside any attribute's range: say so, with the number as written.
-  const auto beyond = [&]() -> Error {
-    double d = 0.0;
+  // The text as a double, where it is one: finite, or beyond even a
+  // double's range (out_of_range); whole text, spaces around and a '+' allowed.
+  const auto asDouble = [&](double& d) -> std::errc {
     std::string_view t = text;
     while (!t.empty() && t.front() == ' ')
       t.remove_prefix(1);
+    while (!t.empty() && t.back() == ' ')
+      t.remove_suffix(1);
     if (!t.empty() && t.front() == '+') t.remove_prefix(1);
     const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), d);
-    const bool number = (ec == std::errc() || ec == std::errc::result_out_of_range) &&
-                        std::string_view(end, t.data() + t.size()).find_first_not_of(' ') ==
-                            std::string_view::npos &&
-                        end != t.data() && !std::isnan(d);
-    if (!number) return fail();
+    if (t.empty() || end != t.data() + t.size() || (ec == std::errc() && !std::isfinite(d)))
+      return std::errc::invalid_argument;
+    // Beyond a double's range towards 0 (1e-400, 0.000...1) is 0, not large.
+    if (ec == std::errc::result_out_of_range) {
+      if (t.front() == '-') t.remove_prefix(1);
+      const bool small = t.find("e-") != std::string_view::npos ||
+                         t.find("E-") != std::string_view::npos || t.front() == '.' ||
+                         (t.size() > 1 && t[0] == '0' && t[1] == '.');
+      if (small) {
+        d = 0.0;
+        return std::errc();
+      }
+    }
+    return ec;
+  };
+  // A number too large for its type (1e40, or 10^11 for an integer) is
+  // outside any attribute's range: say so, with the number as written.
+  const auto beyond = [&]() -> Error {
     return Error(concat("attribute '", key, "': ", text, " is outside [", info.min, ", ", info.max,
                         "] ", info.unit));
   };
@@ -734,16 +748,22 @@ AttributeValue AttributeTable::parse(std::string_view key, std::string_view text
       if (text == "false" || text == "0" || text == "off") return false;
       throw fail();
     case AttributeType::Int: {
-      float f;
-      if (!parseFloat(text, f)) throw beyond();
-      if (f != std::floor(f)) throw fail();
-      if (std::abs(f) > 2e9f) throw beyond();
-      return int(f);
+      double d = 0.0;
+      const std::errc ec = asDouble(d);
+      if (ec == std::errc::result_out_of_range) throw beyond();
+      if (ec != std::errc() || d != std::floor(d)) throw fail();
+      if (std::abs(d) > 2e9) throw beyond();
+      return int(d);
     }
     case AttributeType::Float: {
       float f;
-      if (!parseFloat(text, f)) throw beyond();
-      return f;
+      if (parseFloat(text, f)) return f;
+      // Not a float: beyond its range, or closer to 0 than its smallest.
+      double d = 0.0;
+      const std::errc ec = asDouble(d);
+      if (ec == std::errc() && std::abs(d) < 1.0) return float(d);
+      if (ec == std::errc() || ec == std::errc::result_out_of_range) throw beyond();
+      throw fail();
     }
     case AttributeType::Vec3: {
       std::string s(text);

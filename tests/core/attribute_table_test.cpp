@@ -140,6 +140,13 @@ TEST(AttributeTable, NumbersBeyondTheirTypeAreOutsideTheRangeAsWritten) {
   EXPECT_NE(message("render.size", "1e40x").find("cannot read '1e40x' as a number"),
             std::string::npos);
   EXPECT_NE(message("render.size", "nan").find("cannot read 'nan' as a number"), std::string::npos);
+  // Closer to 0 than a float (or a double) holds is 0 (then judged by the range).
+  EXPECT_EQ(std::get<float>(table().parse("render.shutter", "1e-50")), 0.0f);
+  EXPECT_EQ(std::get<float>(table().parse("render.shutter", "-1e-400")), 0.0f);
+  EXPECT_EQ(std::get<int>(table().parse("sim.maximum", "1e-400")), 0);
+  EXPECT_EQ(std::get<int>(table().parse("sim.maximum", " +12e3 ")), 12000);
+  EXPECT_NE(message("sim.maximum", "1e-5").find("cannot read '1e-5' as an integer"),
+            std::string::npos);
 }
 
 }  // namespace
