@@ -618,14 +618,41 @@ const char* typeName(AttributeType t) {
   return "?";
 }
 
-bool parseFloat(std::string_view s, float& out) {
+// A number's text without the spaces around it and a leading '+'.
+std::string_view numberText(std::string_view s) {
   while (!s.empty() && s.front() == ' ')
     s.remove_prefix(1);
   while (!s.empty() && s.back() == ' ')
     s.remove_suffix(1);
   if (!s.empty() && s.front() == '+') s.remove_prefix(1);
+  return s;
+}
+
+bool parseFloat(std::string_view s, float& out) {
+  s = numberText(s);
   const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), out);
   return ec == std::errc() && end == s.data() + s.size() && std::isfinite(out);
+}
+
+// The whole text as a double: errc() for a finite one (closer to 0 than a
+// double holds, 1e-400 or 0.000...1, is 0), result_out_of_range beyond a
+// double's range, invalid_argument for anything else.
+std::errc parseDouble(std::string_view s, double& out) {
+  std::string_view t = numberText(s);
+  const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), out);
+  if (t.empty() || end != t.data() + t.size() || (ec == std::errc() && !std::isfinite(out)))
+    return std::errc::invalid_argument;
+  if (ec == std::errc::result_out_of_range) {
+    if (t.front() == '-') t.remove_prefix(1);
+    const bool small = t.find("e-") != std::string_view::npos ||
+                       t.find("E-") != std::string_view::npos || t.front() == '.' ||
+                       (t.size() > 1 && t[0] == '0' && t[1] == '.');
+    if (small) {
+      out = 0.0;
+      return std::errc();
+    }
+  }
+  return ec;
 }
 
 // Throws unless a per-item key's item exists in the state.
@@ -711,31 +738,6 @@ AttributeValue AttributeTable::parse(std::string_view key, std::string_view text
     return Error(concat("attribute '", key, "': cannot read '", text, "' as ", typeName(info.type),
                         info.type == AttributeType::Enum ? " (" + joined(info.choices) + ")" : ""));
   };
-  // The text as a double, where it is one: finite, or beyond even a
-  // double's range (out_of_range); whole text, spaces around and a '+' allowed.
-  const auto asDouble = [&](double& d) -> std::errc {
-    std::string_view t = text;
-    while (!t.empty() && t.front() == ' ')
-      t.remove_prefix(1);
-    while (!t.empty() && t.back() == ' ')
-      t.remove_suffix(1);
-    if (!t.empty() && t.front() == '+') t.remove_prefix(1);
-    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), d);
-    if (t.empty() || end != t.data() + t.size() || (ec == std::errc() && !std::isfinite(d)))
-      return std::errc::invalid_argument;
-    // Beyond a double's range towards 0 (1e-400, 0.000...1) is 0, not large.
-    if (ec == std::errc::result_out_of_range) {
-      if (t.front() == '-') t.remove_prefix(1);
-      const bool small = t.find("e-") != std::string_view::npos ||
-                         t.find("E-") != std::string_view::npos || t.front() == '.' ||
-                         (t.size() > 1 && t[0] == '0' && t[1] == '.');
-      if (small) {
-        d = 0.0;
-        return std::errc();
-      }
-    }
-    return ec;
-  };
   // A number too large for its type (1e40, or 10^11 for an integer) is
   // outside any attribute's range: say so, with the number as written.
   const auto beyond = [&]() -> Error {
@@ -749,7 +751,7 @@ AttributeValue AttributeTable::parse(std::string_view key, std::string_view text
       throw fail();
     case AttributeType::Int: {
       double d = 0.0;
-      const std::errc ec = asDouble(d);
+      const std::errc ec = parseDouble(text, d);
       if (ec == std::errc::result_out_of_range) throw beyond();
       if (ec != std::errc() || d != std::floor(d)) throw fail();
       if (std::abs(d) > 2e9) throw beyond();
@@ -760,7 +762,7 @@ AttributeValue AttributeTable::parse(std::string_view key, std::string_view text
       if (parseFloat(text, f)) return f;
       // Not a float: beyond its range, or closer to 0 than its smallest.
       double d = 0.0;
-      const std::errc ec = asDouble(d);
+      const std::errc ec = parseDouble(text, d);
       if (ec == std::errc() && std::abs(d) < 1.0) return float(d);
       if (ec == std::errc() || ec == std::errc::result_out_of_range) throw beyond();
       throw fail();
