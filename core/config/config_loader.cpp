@@ -189,8 +189,7 @@ AttributeValue attributeValue(const Reader& r, const toml::value& v, const std::
   if (v.is_integer()) {
     const std::int64_t n = v.as_integer();
     if (n < -2000000000 || n > 2000000000) {
-      const AttributeInfo& info = AttributeTable::instance().lookup(key);
-      r.fail(v, key, concat(n, " is outside [", info.min, ", ", info.max, "] ", info.unit));
+      r.fail(v, key, AttributeTable::instance().lookup(key).outsideRange(std::to_string(n)));
     }
     return int(n);
   }
@@ -206,18 +205,11 @@ void setAttributes(const Reader& r, const toml::value& table, const std::string&
   for (const auto& [key, value] : table.as_table()) {
     const std::string full = prefix + key;
     try {
-      const AttributeResult result = attributes.set(state, full, attributeValue(r, value, full));
-      // A file's value out of range is an error, not clamped as a live edit
-      // is: "-1 is outside [0.01, 1000] m", without the table's key and clamp.
-      if (!result.warning.empty()) {
-        std::string what = result.warning;
-        if (const std::size_t from = what.find("': ");
-            what.starts_with("attribute '") && from != std::string::npos)
-          what.erase(0, from + 3);
-        if (const std::size_t clamp = what.find("; clamped to"); clamp != std::string::npos)
-          what.erase(clamp);
-        r.fail(value, full, what);
-      }
+      const AttributeValue v = attributeValue(r, value, full);
+      // A file's value out of range is an error, not clamped as a live edit is.
+      if (!attributes.validate(full, v).warning.empty())
+        r.fail(value, full, attributes.lookup(full).outsideRange(toString(v)));
+      attributes.set(state, full, v);
     } catch (const Error& e) {
       const std::string what = e.what();
       if (what.starts_with(r.file())) throw;

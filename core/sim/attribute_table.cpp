@@ -741,8 +741,7 @@ AttributeValue AttributeTable::parse(std::string_view key, std::string_view text
   // A number too large for its type (1e40, or 10^11 for an integer) is
   // outside any attribute's range: say so, with the number as written.
   const auto beyond = [&]() -> Error {
-    return Error(concat("attribute '", key, "': ", text, " is outside [", info.min, ", ", info.max,
-                        "] ", info.unit));
+    return Error(concat("attribute '", key, "': ", info.outsideRange(text)));
   };
   switch (info.type) {
     case AttributeType::Bool:
@@ -887,8 +886,8 @@ AttributeResult AttributeTable::validate(std::string_view key, const AttributeVa
       break;
   }
   if (toString(result.applied) != toString(v))
-    result.warning = concat("attribute '", key, "': ", toString(v), " is outside [", info.min, ", ",
-                            info.max, "] ", info.unit, "; clamped to ", toString(result.applied));
+    result.warning = concat("attribute '", key, "': ", info.outsideRange(toString(v)),
+                            "; clamped to ", toString(result.applied));
   return result;
 }
 
@@ -923,6 +922,10 @@ std::string AttributeTable::describe(const ParticleState& state) const {
       out += info.itemKey(int(e)) + "=" + toString(info.get(state, int(e))) + "\n";
   }
   return out;
+}
+
+std::string AttributeInfo::outsideRange(std::string_view value) const {
+  return concat(value, " is outside [", min, ", ", max, "] ", unit);
 }
 
 std::string AttributeInfo::itemKey(int index) const {

@@ -66,6 +66,8 @@ struct AttributeInfo {
   bool perItem() const { return perEmitter() || perObstacle() || perPrimitive(); }
   // The key of item `index`: "emitter.*.rate" -> "emitter.2.rate".
   std::string itemKey(int index) const;
+  // "5000 is outside [1e-07, 1000] m": `value` as written, against the range.
+  std::string outsideRange(std::string_view value) const;
 };
 
 // What set() did: the value it stored and, if it had to clamp, a message saying so.
