@@ -28,7 +28,7 @@ constexpr int kHeadlessFrames = 240;
 
 }  // namespace
 
-void checkRunFiles(const AppOptions& options) {
+void checkRunOutputs(const AppOptions& options) {
   const std::pair<const std::optional<std::filesystem::path>&, const char*> outputs[] = {
       {options.dumpParticles, "--dump-particles"},
       {options.dumpStreamlines, "--dump-streamlines"},
@@ -40,6 +40,10 @@ void checkRunFiles(const AppOptions& options) {
       {options.record, "--record"}};
   for (const auto& [path, option] : outputs)
     if (path) checkOutputFile(*path, option);
+}
+
+void checkRunFiles(const AppOptions& options) {
+  checkRunOutputs(options);
   if (options.replay) readSession(*options.replay);
 }
 

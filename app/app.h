@@ -41,9 +41,11 @@ struct AppOptions {
   std::optional<MovieSpec> movie;  // --movie and its options
 };
 
-// Tries every file the run will write (--dump-*, --stats, --record, ...) and
-// reads the session to replay, so that a bad path or file stops the start,
-// before a field is read, not the end. Throws Error naming the option.
+// Tries every file the run will write (--dump-*, --stats, --record, ...), so
+// that a bad path stops the start, not the end. Throws Error naming the option.
+void checkRunOutputs(const AppOptions& options);
+// checkRunOutputs(), and reads the session to replay: before a field file is
+// read (a large one takes minutes), so a bad path or session stops it first.
 void checkRunFiles(const AppOptions& options);
 
 // Applies --set overrides to the configuration's particle state. Throws Error.

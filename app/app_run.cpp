@@ -104,7 +104,7 @@ AppRun::AppRun(const AppConfig& config, const AppOptions& options, bool headless
         std::clamp<unsigned>(std::thread::hardware_concurrency(), 1,
                              unsigned(std::max<std::size_t>(1, config.walls.size()))));
   }
-  checkRunFiles(options_);
+  checkRunOutputs(options_);  // the session to replay is read below
   if (options_.movie) {
     if (cluster_)
       throw Error(
