@@ -178,6 +178,15 @@ void frameFileScene(AppConfig& config, const std::filesystem::path& file, const 
   const glm::vec3 size = box.max - box.min, centre = 0.5f * (box.min + box.max);
   const float radius = 0.5f * glm::length(size);
   config.scene.groundHeight = box.min.z;  // the ground under the field, not through it
+  // A flat field (a 2D simulation's plane, one point thick) lies on the
+  // ground there: its particles would fade into it (render.softness) and
+  // fight it for depth. The ground goes a tenth of the field's width below.
+  const float width = std::max(size.x, size.y);
+  if (width > 0.0f && size.z <= 1e-3f * width) {
+    config.scene.groundHeight = box.min.z - 0.1f * width;
+    log::info("file scene: ", file.string(), " is flat (", size.z,
+              " m thick): the ground is drawn ", 0.1f * width, " m below it");
+  }
   // The flat ground reaches well past the field, however large and far it is.
   config.scene.terrainBounds =
       Box{glm::vec3(centre.x - 20.0f * radius, centre.y - 20.0f * radius, 0.0f),

@@ -155,8 +155,6 @@ FieldSource fileField(const std::filesystem::path& path, const FieldSpec& spec,
   SeriesIndex index = indexSeries(path, options, &report);
   for (const std::string& note : report.notes)
     log::info(path.string(), ": ", note);
-  if (report.nonFinite > 0)
-    log::warn(path.string(), ": ", report.nonFinite, " NaN or Inf vectors set to zero");
   if (index.times.size() == 1) {
     out.description = concat(path.string(), " (", report.format, ", '", report.arrayName, "')");
     out.update = FieldUpdate{.field = index.first, .placement = spec.placement};

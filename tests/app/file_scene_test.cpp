@@ -143,6 +143,49 @@ TEST(FileScene, AFieldAMillimetreLongGetsItsScale) {
         << key;
 }
 
+// A 2D simulation's plane, one point thick: on the ground its particles
+// would fade into it (render.softness); the ground goes a tenth of its width
+// below. A field with any thickness keeps the ground at its bottom.
+TEST(FileScene, AFlatFieldIsDrawnAboveTheGround) {
+  const VectorField flat = bake(Spin(), Box{{0, 0, 2}, {15, 10, 2}}, {16, 11, 1});
+  AppConfig config;
+  openFileScene(config, "flat.vti", flat);
+  EXPECT_NEAR(config.scene.groundHeight, 2.0f - 1.5f, 1e-5f);
+  EXPECT_GT(2.0f - config.scene.groundHeight, 5.0f * config.particles.render.softness);
+
+  const VectorField thin = bake(Spin(), Box{{0, 0, 2}, {15, 10, 2.5f}}, {16, 11, 2});
+  openFileScene(config, "thin.vti", thin);
+  EXPECT_FLOAT_EQ(config.scene.groundHeight, 2.0f);
+}
+
+// A legacy .vtk of 4^3 points whose first `holes` vectors are NaN.
+std::filesystem::path withHoles(const std::filesystem::path& dir, int holes) {
+  const auto path = dir / "holes.vtk";
+  std::ofstream out(path);
+  out << "# vtk DataFile Version 3.0\nholes\nASCII\nDATASET STRUCTURED_POINTS\n"
+      << "DIMENSIONS 4 4 4\nORIGIN 0 0 0\nSPACING 1 1 1\nPOINT_DATA 64\nVECTORS wind float\n";
+  for (int p = 0; p < 64; ++p)
+    out << (p < holes ? "nan nan nan\n" : "1 0.2 0\n");
+  return path;
+}
+
+// The reader says once how many of which array's vectors it replaced.
+TEST(FileScene, NanVectorsAreReportedOnce) {
+  const auto dir = test::scratchDir("file-scene-holes");
+  const auto run =
+      test::runSandstorm(withHoles(dir, 5).string() +
+                         " --frames 1 --set sim.maximum=1000 --screenshot " + dir.string());
+  ASSERT_EQ(run.exitCode, 0) << run.output;
+  const std::string said = "5 vectors of array 'wind' are NaN or Inf; replaced by zero";
+  const std::size_t first = run.output.find(said);
+  ASSERT_NE(first, std::string::npos) << run.output;
+  std::size_t mentions = 0;
+  for (std::size_t at = run.output.find("NaN"); at != std::string::npos;
+       at = run.output.find("NaN", at + 1))
+    ++mentions;
+  EXPECT_EQ(mentions, 1u) << run.output;
+}
+
 TEST(FileScene, AFileWithSeveralArraysAsksWhichAndOpensTheOneNamed) {
   const auto dir = test::scratchDir("file-scene");
   const std::string file = twoArrays(dir).string();
