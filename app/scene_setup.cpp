@@ -100,7 +100,7 @@ FieldSource watchedField(const std::filesystem::path& path, const FieldSpec& spe
         VectorField loaded = loadField(step.file, options, &report);
         LoadOptions stepOptions = options;
         if (chooseHalf(loaded, kSeriesGrids, options, report)) stepOptions.halfPrecision = true;
-        for (const std::string& note : report.notes)
+        for (const std::string& note : report.notesToLog())
           log::info(path.string(), ": ", note);
         auto field = std::make_shared<const VectorField>(std::move(loaded));
         // Streamed, as a series is: the steps the simulation writes join it
@@ -153,7 +153,7 @@ FieldSource fileField(const std::filesystem::path& path, const FieldSpec& spec,
   FieldSource out;
   LoadReport report;
   SeriesIndex index = indexSeries(path, options, &report);
-  for (const std::string& note : report.notes)
+  for (const std::string& note : report.notesToLog())
     log::info(path.string(), ": ", note);
   if (index.times.size() == 1) {
     out.description = concat(path.string(), " (", report.format, ", '", report.arrayName, "')");
@@ -200,7 +200,7 @@ std::optional<FieldSource> sparseField(const std::filesystem::path& path, const 
   LoadReport report;
   std::optional<SparseField> sparse = readSparseVdb(path, options, report);
   if (!sparse) return std::nullopt;
-  for (const std::string& note : report.notes)
+  for (const std::string& note : report.notesToLog())
     log::info(path.string(), ": ", note);
   FieldSource out;
   auto shared = std::make_shared<const SparseField>(std::move(*sparse));
@@ -233,7 +233,7 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
       options.gpuRoom = gpuRoomForFields;
       LoadReport report;
       chooseHalf(*field, 1, options, report);
-      for (const std::string& note : report.notes)
+      for (const std::string& note : report.notesToLog())
         log::info("field: ", out.description, ": ", note);
     }
     out.update = FieldUpdate{.field = std::move(field), .placement = spec.placement};

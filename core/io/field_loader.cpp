@@ -116,6 +116,8 @@ VectorField dispatch(const std::filesystem::path& path, FieldFormat format,
       report.resampled = inner.resampled;
       report.nonFinite = inner.nonFinite;
       report.notes.insert(report.notes.end(), inner.notes.begin(), inner.notes.end());
+      report.notesLogged.insert(report.notesLogged.end(), inner.notesLogged.begin(),
+                                inner.notesLogged.end());
       return f;
     }
     case FieldFormat::OpenVdb:

@@ -12,6 +12,7 @@
 // grid points lie half a voxel inside the stated box.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
@@ -86,6 +87,18 @@ struct LoadReport {
   std::vector<std::string> blocks;      // a multiblock's blocks: "name: kind, cells, points"
   std::vector<double> times;            // the file's time steps, when it holds several
   std::vector<std::string> notes;       // anything else worth telling the user
+  // Those notes the reader has logged already, where it made them (a mesh's
+  // resampling, blocks left out): a caller that logs the notes skips these.
+  std::vector<std::string> notesLogged;
+
+  // The notes not yet in the log, in order.
+  std::vector<std::string> notesToLog() const {
+    std::vector<std::string> out;
+    for (const std::string& note : notes)
+      if (std::find(notesLogged.begin(), notesLogged.end(), note) == notesLogged.end())
+        out.push_back(note);
+    return out;
+  }
 };
 
 }  // namespace sandstorm

@@ -248,10 +248,14 @@ void copyScalars(vtkPointData* pd, vtkDataArray* mask, vtkIdType points,
   }
 }
 
-// A note on how a file was read: at info level for a read a person waits
-// for, at debug level for a series' steps read in the background (each step
-// would say it again).
-void logNote(const LoadOptions& options, const std::string& where, const std::string& note) {
+// A note on how a file was read, kept in the report and logged: at info
+// level for a read a person waits for, at debug level for a series' steps
+// read in the background (each step would say it again). Marked logged, so
+// the caller that logs the report's notes does not say it twice.
+void noteRead(const LoadOptions& options, const std::string& where, const std::string& note,
+              LoadReport& report) {
+  report.notes.push_back(note);
+  report.notesLogged.push_back(note);
   if (options.showProgress)
     log::info(where, ": ", note);
   else
@@ -266,8 +270,7 @@ void noteOutside(const VectorField& field, const std::filesystem::path& path,
       concat(report.outside, " of ", field.pointCount(),
              " points lie outside the file's cells: marked outside the field (particles there "
              "follow sim.boundary)");
-  report.notes.push_back(note);
-  logNote(options, path.string(), note);
+  noteRead(options, path.string(), note, report);
 }
 
 // `perPoint`: bytes a point takes (12 for the vector, 4 per scalar array).
@@ -413,8 +416,7 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
       names += concat(names.empty() ? "'" : ", '", n, "'");
     const std::string note = concat(without.size(), " of ", blocks.size(), " blocks carry no '",
                                     choice.name, "' and are left out: ", names);
-    report.notes.push_back(note);
-    logNote(options, file, note);
+    noteRead(options, file, note, report);
   }
 
   const bool single = used.size() == 1;
@@ -449,8 +451,7 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
     } else {
       std::string note;
       dims = meshResolution(used, bounds, perPoint, options.memoryBudget, note);
-      report.notes.push_back(note);
-      logNote(options, file, note);
+      noteRead(options, file, note, report);
     }
   }
   checkBudget(dims, path, options, perPoint);
@@ -487,8 +488,7 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
         radius,
         " m (twice their mean spacing), outside the field where "
         "there are none");
-    report.notes.push_back(note);
-    logNote(options, file, note);
+    noteRead(options, file, note, report);
     sampled = interpolatePointCloud(sources, grid, radius,
                                     concat("interpolating ", path.filename().string()));
   } else {

@@ -521,6 +521,10 @@ TEST(FileScene, AnUnstructuredMeshAndAnOpenFoamCaseOpenWithTheirPictures) {
   ASSERT_EQ(run.exitCode, 0) << run.output;
   EXPECT_NE(run.output.find("VTK XML unstructured grid"), std::string::npos) << run.output;
   EXPECT_NE(run.output.find("5x3x3"), std::string::npos) << run.output;  // its cells' size
+  // How it was resampled, said once.
+  const std::size_t said = run.output.find("resampled to 5 x 3 x 3 points");
+  ASSERT_NE(said, std::string::npos) << run.output;
+  EXPECT_EQ(run.output.find("resampled to", said + 1), std::string::npos) << run.output;
   EXPECT_TRUE(std::filesystem::exists(dir / "desktop.png"));
 
   // An OpenFOAM case is a folder: 'sandstorm CASE' opens it, its time folders playing.
