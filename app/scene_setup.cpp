@@ -270,9 +270,11 @@ FieldSource makeField(const FieldSpec& spec, const std::filesystem::path& baseDi
             " over [", f.bounds().min.x, ",", f.bounds().min.y, ",", f.bounds().min.z, "]..[",
             f.bounds().max.x, ",", f.bounds().max.y, ",", f.bounds().max.z, "] m, max speed ",
             f.maxMagnitude(), " m/s");
-  // A field at rest carries nothing: say so, since the picture alone looks
-  // like a bug (particles where they were seeded, the legend at 0).
-  if (f.maxMagnitude() == 0.0f)
+  // A file's field at rest carries nothing: say so, since the picture alone
+  // looks like a bug (particles where they were seeded, the legend at 0). An
+  // analytic one is as the configuration asked ('still': the field editor's
+  // blank canvas).
+  if (f.maxMagnitude() == 0.0f && spec.source != "analytic")
     log::warn("field: ", out.description, ": the velocity is 0 everywhere",
               out.timeline ? " in its first step" : "",
               ", so particles stay where they are seeded; if another array holds the flow, "

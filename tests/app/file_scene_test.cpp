@@ -459,6 +459,12 @@ TEST(FileScene, AFieldAtRestOpensWithAWarningThatNothingMoves) {
   const auto wind = test::runSandstorm((dir / "wind.vti").string() + args);
   ASSERT_EQ(wind.exitCode, 0) << wind.output;
   EXPECT_EQ(wind.output.find("velocity is 0 everywhere"), std::string::npos) << wind.output;
+  // The field editor's blank canvas is at rest as asked: no warning.
+  const auto canvas = test::runSandstorm("--config " + std::string(SANDSTORM_SOURCE_DIR) +
+                                         "/config/field-editor.toml" + args);
+  ASSERT_EQ(canvas.exitCode, 0) << canvas.output;
+  EXPECT_NE(canvas.output.find("analytic 'still'"), std::string::npos) << canvas.output;
+  EXPECT_EQ(canvas.output.find("velocity is 0 everywhere"), std::string::npos) << canvas.output;
 }
 
 // An unstructured grid (VTK XML, ascii): hexahedra over a 4 x 2 x 2 m box
