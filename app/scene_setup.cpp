@@ -84,6 +84,18 @@ std::optional<double> gpuRoomForFields(double floatBytes) {
 // wait_s), as a timeline of one frame, and the scanner to watch for more.
 FieldSource watchedField(const std::filesystem::path& path, const FieldSpec& spec,
                          const LoadOptions& options) {
+  // A folder beside its own .pvd: the steps are timed here by their order,
+  // not by the collection's times, which a user opening the folder expects.
+  std::error_code listing;
+  if (std::filesystem::is_directory(path, listing))
+    for (const auto& entry : std::filesystem::directory_iterator(path, listing))
+      if (entry.path().extension() == ".pvd") {
+        log::warn("field: ", path.string(), " holds the collection ",
+                  entry.path().filename().string(), "; the folder is watched, its files timed ",
+                  spec.stepInterval, " s apart (field.step_interval) in name order; open ",
+                  entry.path().string(), " to play the series at its own times");
+        break;
+      }
   auto scanner =
       std::make_shared<FieldStreamScanner>(path, spec.stepInterval, 50, spec.settleSeconds);
   const auto until = std::chrono::steady_clock::now() +

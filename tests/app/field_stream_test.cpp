@@ -193,6 +193,31 @@ TEST(FieldStream, AnEmptyFolderStopsTheStartAfterWaitingWithAClearMessage) {
   EXPECT_EQ(r.output.find("frames begin"), std::string::npos) << r.output;
 }
 
+// A folder that holds its series' .pvd is watched, its steps timed by their
+// order: the run says so and names the .pvd that plays the series' own times.
+TEST(FieldStream, AFolderBesideItsPvdSaysTheCollectionPlaysItsOwnTimes) {
+  const fs::path dir = test::scratchDir("field-stream-pvd");
+  fs::create_directories(dir / "run");
+  writeVti(dir / "run" / "step_0.vti", wind({1, 0, 0}));
+  writeVti(dir / "run" / "step_1.vti", wind({2, 0, 0}));
+  std::ofstream(dir / "run" / "run.pvd")
+      << "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n"
+         "<DataSet timestep=\"0\" file=\"step_0.vti\"/>\n<DataSet timestep=\"0.25\" "
+         "file=\"step_1.vti\"/>\n</Collection>\n</VTKFile>\n";
+  const auto r =
+      test::runSandstorm((dir / "run").string() + " --headless --frames 1 --set sim.maximum=500");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_NE(r.output.find("holds the collection run.pvd"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("open " + (dir / "run" / "run.pvd").string()), std::string::npos)
+      << r.output;
+  // A folder without one says nothing of the kind.
+  fs::remove(dir / "run" / "run.pvd");
+  const auto plain =
+      test::runSandstorm((dir / "run").string() + " --headless --frames 1 --set sim.maximum=500");
+  ASSERT_EQ(plain.exitCode, 0) << plain.output;
+  EXPECT_EQ(plain.output.find("holds the collection"), std::string::npos) << plain.output;
+}
+
 // A field read while the walls open (the first step comes 0.6 s after the
 // run began to wait for it) moves the particles as one read before they open
 // does. A wall waiting when the field is offered uploads it before packet 0
