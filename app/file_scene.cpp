@@ -182,7 +182,8 @@ void frameFileScene(AppConfig& config, const std::filesystem::path& file, const 
   // ground there: its particles would fade into it (render.softness) and
   // fight it for depth. The ground goes a tenth of the field's width below.
   const float width = std::max(size.x, size.y);
-  if (width > 0.0f && size.z <= 1e-3f * width) {
+  const bool flat = width > 0.0f && size.z <= 1e-3f * width;
+  if (flat) {
     config.scene.groundHeight = box.min.z - 0.1f * width;
     log::info("file scene: ", file.string(), " is flat (", size.z,
               " m thick): the ground is drawn ", 0.1f * width, " m below it");
@@ -230,11 +231,13 @@ void frameFileScene(AppConfig& config, const std::filesystem::path& file, const 
     config.run.nearPlane = roomWalls ? std::min(config.run.nearPlane, cameraNear) : cameraNear;
   float scale = 1.0f;
   if (roomWalls) {
-    // Into the room: the field's largest side 2.4 m, its centre 1.5 m up in the middle.
+    // Into the room: the field's largest side 2.4 m, its centre 1.5 m up in
+    // the middle; a flat field at a table's height, 1 m up, so that a user
+    // standing in the room looks down onto it rather than along it.
     scale = 2.4f / std::max({size.x, size.y, size.z});
     config.navigation.scale = scale;
     config.navigation.yawDegrees = 0.0f;
-    config.navigation.offset = glm::vec3(0.0f, 0.0f, 1.5f) - scale * centre;
+    config.navigation.offset = glm::vec3(0.0f, 0.0f, flat ? 1.0f : 1.5f) - scale * centre;
   }
   state.render.size = std::clamp(0.004f * 2.0f * radius, 1e-7f, 1000.0f);
   // Particles fade within this of the ground: a hundredth of the field, not

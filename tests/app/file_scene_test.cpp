@@ -156,6 +156,19 @@ TEST(FileScene, AFlatFieldIsDrawnAboveTheGround) {
   const VectorField thin = bake(Spin(), Box{{0, 0, 2}, {15, 10, 2.5f}}, {16, 11, 2});
   openFileScene(config, "thin.vti", thin);
   EXPECT_FLOAT_EQ(config.scene.groundHeight, 2.0f);
+
+  // In a CAVE the flat field lies 1 m up, below the eyes, a volume's centre 1.5 m.
+  AppConfig cave;
+  cave.walls.push_back(WallSpec{.name = "front"});
+  openFileScene(cave, "flat.vti", flat);
+  const auto roomHeight = [&](float z) {
+    return cave.navigation.offset.z + cave.navigation.scale * z;
+  };
+  EXPECT_NEAR(cave.navigation.scale, 2.4f / 15.0f, 1e-6f);
+  EXPECT_NEAR(roomHeight(2.0f), 1.0f, 1e-5f);
+  EXPECT_LT(roomHeight(cave.scene.groundHeight), roomHeight(2.0f));
+  openFileScene(cave, "thin.vti", thin);
+  EXPECT_NEAR(roomHeight(2.25f), 1.5f, 1e-5f);
 }
 
 // A legacy .vtk of 4^3 points whose first `holes` vectors are NaN.
