@@ -45,8 +45,9 @@ class ParticleBackend {
   // The live flow solver's grid on this GPU (a storage buffer in GpuField's
   // layout, the field's dims and bounds) read in place of the field's; 0:
   // the field again. False where this backend cannot read one (the field's
-  // grid kept as a texture: transform feedback, or too large a grid).
-  virtual bool setFieldBuffer(std::uint32_t) { return false; }
+  // grid kept as a texture: transform feedback, or too large a grid); going
+  // back to the field (0) every backend can.
+  virtual bool setFieldBuffer(std::uint32_t buffer) { return buffer == 0; }
   // Whether step() blends a time-varying field's pair point by point into
   // one grid before sampling it (ParticleComputeUpdate, where the grids are
   // buffers: FieldPairBlend) rather than sampling both and blending the

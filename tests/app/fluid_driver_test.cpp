@@ -89,5 +89,16 @@ TEST(FluidDriver, AutoPicksTheCpuUnderSoftwareOpenGlAndTheGpuElse) {
   EXPECT_TRUE(found) << "expected '" << expected << "' in the session\n" << r.output;
 }
 
+// The transform-feedback backend cannot read the GPU solver's grid; with the
+// solver off it has nothing to refuse, so a run says nothing of it (it said
+// "solver.device = gpu: ..." every frame).
+TEST(FluidDriver, ATransformFeedbackRunWithTheSolverOffSaysNothingOfIt) {
+  const auto r = test::runSandstorm(
+      "--config config/desktop.toml --headless --frames 4 --set run.backend=tf-gs "
+      "--set sim.maximum=1000");
+  ASSERT_EQ(r.exitCode, 0) << r.output;
+  EXPECT_EQ(r.output.find("solver.device = gpu"), std::string::npos) << r.output;
+}
+
 }  // namespace
 }  // namespace sandstorm
