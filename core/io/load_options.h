@@ -48,6 +48,11 @@ struct LoadOptions {
   // (mesh_resampler.h), VDB grids through OpenVDB's samplers, engine formats
   // trilinearly.
   glm::ivec3 resolution{0};
+  // With `resolution`, the box a mesh (VTK data resampled: not an image read
+  // as it is) is resampled over; unset: the mesh's own bounds. A series'
+  // steps of a mesh that moves or grows are sampled straight onto the first
+  // step's grid (core/io/series_index.h).
+  std::optional<Box> samplingBox;
   // Largest dense grid accepted, in bytes (12 per point). Checked before
   // anything large is allocated; above it loading fails saying how to fit.
   std::size_t memoryBudget = std::size_t{2} << 30;

@@ -7,6 +7,19 @@
 #include "core/util/error.h"
 
 namespace sandstorm {
+namespace {
+
+// A mesh's steps sampled straight onto the first step's grid, its points and
+// its box, even where a later step's cells move or grow: one interpolation,
+// not one onto the step's own grid and another onto the first's
+// (SeriesReader resamples a step whose grid still differs, such as an image's).
+void pinMeshSteps(SeriesIndex& index, const LoadReport& first) {
+  if (!first.resampled) return;
+  index.stepOptions.resolution = index.first->dims();
+  index.stepOptions.samplingBox = index.first->bounds();
+}
+
+}  // namespace
 
 SeriesIndex indexSeries(const std::filesystem::path& path, const LoadOptions& options,
                         LoadReport* report) {
@@ -26,6 +39,7 @@ SeriesIndex indexSeries(const std::filesystem::path& path, const LoadOptions& op
       index.stepOptions.halfPrecision = true;
     index.first = std::make_shared<const VectorField>(std::move(field));
     first.times = index.times;
+    pinMeshSteps(index, first);
     return index;
   }
   VectorField field = loadField(path, options, &first);
@@ -46,6 +60,7 @@ SeriesIndex indexSeries(const std::filesystem::path& path, const LoadOptions& op
   }
   // Every step on the grid the first one chose (a mesh's steps resample onto it).
   index.stepOptions.resolution = index.first->dims();
+  pinMeshSteps(index, first);
   return index;
 }
 

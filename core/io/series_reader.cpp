@@ -5,7 +5,9 @@
 
 #include "core/field/grid_match.h"
 #include "core/io/field_loader.h"
+#include "core/io/grid_resample.h"
 #include "core/util/error.h"
+#include "core/util/log.h"
 #include "core/util/parallel_for.h"
 
 namespace sandstorm {
@@ -27,6 +29,24 @@ FileIdentity identityOf(const SeriesReader::Source& s) {
     out.modified = std::max(out.modified, one.modified);
   }
   return out;
+}
+
+// A step on another grid than the first's, resampled onto it; what was
+// done, for the log.
+std::shared_ptr<const VectorField> ontoFirstGrid(std::shared_ptr<const VectorField> field,
+                                                 const VectorField* grid, const std::string& name,
+                                                 std::string* note) {
+  if (!grid) return field;
+  const std::string difference = gridDifference(*field, *grid);
+  if (difference.empty()) return field;
+  std::size_t outside = 0;
+  auto onto = std::make_shared<const VectorField>(resampleOnto(*field, *grid, &outside));
+  if (note)
+    *note = concat(name, ": ", difference, "; resampled onto the first step's grid",
+                   outside > 0 ? concat(", ", outside, " of its ", onto->pointCount(),
+                                        " points outside this step (marked outside the field)")
+                               : std::string());
+  return onto;
 }
 
 }  // namespace
@@ -60,18 +80,26 @@ SeriesReader::~SeriesReader() {
 
 std::shared_ptr<const VectorField> SeriesReader::read(const Source& source,
                                                       const LoadOptions& options,
-                                                      const VectorField* grid) {
+                                                      const VectorField* grid, std::string* note) {
   LoadOptions step = options;
   step.timeStep = source.timeStep;
   step.showProgress = false;  // read in the background, as playback needs it
   auto field = std::make_shared<const VectorField>(
       source.parts.size() > 1 ? loadFieldParts(source.parts, source.file, step)
                               : loadField(source.file, step));
-  if (const std::string difference = grid ? gridDifference(*field, *grid) : ""; !difference.empty())
-    throw Error(concat(source.file.string(),
-                       source.timeStep > 0 ? concat(" (time step ", source.timeStep, ")") : "",
-                       ": ", difference, "; expected every step on the same grid"));
-  return field;
+  const std::string name =
+      concat(source.file.string(),
+             source.timeStep > 0 ? concat(" (time step ", source.timeStep, ")") : "");
+  return ontoFirstGrid(std::move(field), grid, name, note);
+}
+
+void SeriesReader::noteResampled(const std::string& note) {
+  if (note.empty()) return;
+  // Once at info (a moving mesh resamples every step: the rest at debug).
+  if (!saidResampled_.exchange(true))
+    log::info("field series: ", note, " (later steps on other grids are resampled alike)");
+  else
+    log::debug("field series: ", note);
 }
 
 void SeriesReader::want(const std::vector<std::size_t>& order) {
@@ -110,8 +138,9 @@ std::size_t SeriesReader::size() const {
 void SeriesReader::append(const std::filesystem::path& file,
                           std::shared_ptr<const VectorField> frame) {
   if (!frame) throw Error("field series: a missing step");
-  if (const std::string difference = gridDifference(*frame, *first_); !difference.empty())
-    throw Error(concat(file.string(), ": ", difference, "; expected every step on the same grid"));
+  std::string note;
+  frame = ontoFirstGrid(std::move(frame), first_.get(), file.string(), &note);
+  noteResampled(note);
   const FileIdentity identity = FileIdentity::of(file);
   {
     std::lock_guard lock(mutex_);
@@ -204,9 +233,10 @@ void SeriesReader::run(unsigned cores) {
     lock.unlock();
     const auto start = std::chrono::steady_clock::now();
     std::shared_ptr<const VectorField> field;
-    std::string error;
+    std::string error, note;
     try {
-      field = read(source, options_, first_.get());
+      field = read(source, options_, first_.get(), &note);
+      noteResampled(note);
     } catch (const Error& e) {
       error = e.what();
     } catch (const std::bad_alloc&) {

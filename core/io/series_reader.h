@@ -10,12 +10,15 @@
 // A watched folder's series grows (append): a step the simulation wrote is
 // held while playback wants it and read again from its file when wanted later.
 //
-// Every step must have the first step's dims and bounds: one that does not,
-// or does not read (missing, truncated, malformed), fails with its file named
-// and is not tried again. Counts bytes and time spent reading, for the log's
-// read rate.
+// Every step is held on the first step's grid (dims and bounds: playback
+// blends neighbouring steps point by point): one on another grid (a moving
+// or growing mesh, another resolution) is resampled onto it
+// (resampleOnto), said in the log. A step that does not read (missing,
+// truncated, malformed) fails with its file named and is not tried again.
+// Counts bytes and time spent reading, for the log's read rate.
 #pragma once
 
+#include <atomic>
 #include <condition_variable>
 #include <cstdint>
 #include <filesystem>
@@ -67,12 +70,15 @@ class SeriesReader final : public FieldSteps {
 
   Stats stats() const;
 
-  // Reads one step and checks its grid against `grid` (or nothing when null).
-  // Throws Error naming the file.
+  // Reads one step, resampled onto `grid` where its grid differs (not when
+  // null); `note` then says so, naming the file. Throws Error naming the file.
   static std::shared_ptr<const VectorField> read(const Source& source, const LoadOptions& options,
-                                                 const VectorField* grid);
+                                                 const VectorField* grid,
+                                                 std::string* note = nullptr);
 
  private:
+  // Logs a step's resampling onto the first grid: the first at info, the rest at debug.
+  void noteResampled(const std::string& note);
   // A reader thread's loop; `cores`: the threads each of its passes over a step may use.
   void run(unsigned cores);
   // The first wanted step neither in memory, being read nor failed; false if none.
@@ -92,6 +98,7 @@ class SeriesReader final : public FieldSteps {
   std::vector<std::size_t> reading_;
   Stats stats_;
   bool stop_ = false;
+  std::atomic<bool> saidResampled_{false};
   std::vector<std::thread> threads_;
 };
 

@@ -443,7 +443,14 @@ VectorField extractVectorField(vtkDataObject* object, const std::filesystem::pat
     if (everywhere) scalars.emplace_back(a->GetName());
   }
   const double perPoint = 13.0 + 4.0 * double(scalars.size());
-  const SamplingBounds bounds = boundsOf(used);
+  // A series' step onto its first step's box (options.samplingBox), else its
+  // own; its own where the two are the same floats (a mesh that did not move
+  // samples at exactly the points its first step did).
+  SamplingBounds bounds = boundsOf(used);
+  if (const std::optional<Box>& box = options.samplingBox;
+      box && options.resolution != glm::ivec3(0) &&
+      (glm::vec3(bounds.min) != box->min || glm::vec3(bounds.max) != box->max))
+    bounds = SamplingBounds{glm::dvec3(box->min), glm::dvec3(box->max)};
   glm::ivec3 dims = options.resolution;
   if (dims == glm::ivec3(0)) {
     if (structured) {
