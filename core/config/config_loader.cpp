@@ -17,6 +17,7 @@
 #include "core/sim/attribute_table.h"
 #include "core/tracking/ipv4_address.h"
 #include "core/util/error.h"
+#include "core/util/nearest_name.h"
 #include "core/util/toml_text.h"
 
 namespace sandstorm {
@@ -64,7 +65,10 @@ class Reader {
       std::string list;
       for (const std::string& k : known)
         list += (list.empty() ? "" : ", ") + k;
-      fail(value, path.empty() ? key : path + "." + key, "unknown key; expected one of: " + list);
+      const std::string meant =
+          didYouMean(key, std::vector<std::string>(known.begin(), known.end()));
+      fail(value, path.empty() ? key : path + "." + key,
+           "unknown key" + meant + "; expected one of: " + list);
     }
   }
 

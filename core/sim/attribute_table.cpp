@@ -7,6 +7,7 @@
 
 #include "core/expr/field_expression.h"
 #include "core/util/error.h"
+#include "core/util/nearest_name.h"
 
 namespace sandstorm {
 namespace {
@@ -722,21 +723,32 @@ const AttributeInfo& AttributeTable::lookup(std::string_view rawKey, int* emitte
       return info;
     }
   }
-  // Suggest keys that share the section, so a typo is easy to fix.
-  std::vector<std::string> close;
+  // The key a typo most likely meant, then the keys that share the section.
+  std::vector<std::string> all, close;
   const std::string section = pattern.substr(0, pattern.rfind('.') + 1);
-  for (const AttributeInfo& info : entries_)
+  for (const AttributeInfo& info : entries_) {
+    all.push_back(info.key);
     if (!section.empty() && info.key.starts_with(section)) close.push_back(info.key);
+  }
+  std::string meant;
+  if (std::optional<std::string> nearest = nearestName(pattern, all)) {
+    // An emitter's (obstacle's, primitive's) key with the index typed.
+    if (const std::size_t star = nearest->find(".*."); star != std::string::npos)
+      nearest->replace(star, 3, concat(".", index, "."));
+    meant = concat(" (did you mean '", *nearest, "'?)");
+  }
   throw Error(
-      concat("unknown attribute '", rawKey, "'",
+      concat("unknown attribute '", rawKey, "'", meant,
              close.empty() ? std::string("") : "; known in this section: " + joined(close)));
 }
 
 AttributeValue AttributeTable::parse(std::string_view key, std::string_view text) const {
   const AttributeInfo& info = lookup(key);
   const auto fail = [&]() -> Error {
-    return Error(concat("attribute '", key, "': cannot read '", text, "' as ", typeName(info.type),
-                        info.type == AttributeType::Enum ? " (" + joined(info.choices) + ")" : ""));
+    const bool choice = info.type == AttributeType::Enum;
+    return Error(concat("attribute '", key, "': cannot read '", text, "'",
+                        choice ? didYouMean(text, info.choices) : "", " as ", typeName(info.type),
+                        choice ? " (" + joined(info.choices) + ")" : ""));
   };
   // A number too large for its type (1e40, or 10^11 for an integer) is
   // outside any attribute's range: say so, with the number as written.

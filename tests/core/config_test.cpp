@@ -86,7 +86,7 @@ window = { size = [640, 480], monitor = 0 }
 
 TEST(Config, UnknownKeysAreRefused) {
   EXPECT_ERROR("[run]\nsed = 4\n" + kWall, "test.toml:2", "run.sed", "unknown key");
-  EXPECT_ERROR("[runn]\n" + kWall, "test.toml:1", "runn", "unknown key");
+  EXPECT_ERROR("[runn]\n" + kWall, "test.toml:1", "runn", "unknown key (did you mean 'run'?)");
   EXPECT_ERROR(kWall + "colour = 3\n", "test.toml:7", "wall[0].colour", "unknown key");
   EXPECT_ERROR("[sim]\nmaximun = 4\n" + kWall, "test.toml:2", "sim.maximun", "sim.maximum");
 }
