@@ -3,6 +3,7 @@
 
 #include "app/app.h"
 #include "app/cli_numbers.h"
+#include "app/cli_unknown_option.h"
 #include "app/cluster/cluster_link.h"
 #include "app/default_config.h"
 #include "app/file_scene.h"
@@ -125,6 +126,10 @@ int main(int argc, char** argv) {
   cli.add_option("--debug-gpu-memory", pretendedGpuMemory)->group("");
   cli.add_option("--log-level", logLevel, "error, warn, info or debug")
       ->check(CLI::IsMember({"error", "warn", "info", "debug"}));
+  if (const std::string unknown = unknownOption(cli, argc, argv); !unknown.empty()) {
+    log::error(unknown);
+    return 2;
+  }
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -25,7 +25,11 @@ TEST(CommandLine, BadArgumentsFailWithAMessage) {
        {Case{"--frames -3", "--frames: expected a whole number, 0 or more; got '-3'"},
         Case{"--frames 3000000000", "--frames: expected at most 2147483647; got '3000000000'"},
         Case{"--screenshot-every many", "--screenshot-every: expected a whole number, 0 or more"},
-        Case{"--config nowhere.toml", "nowhere.toml"}, Case{"--bogus", "bogus"},
+        Case{"--config nowhere.toml", "nowhere.toml"}, Case{"--bogus", "unknown option '--bogus'"},
+        // A mistyped option is named, with the one meant, not read as the field file.
+        Case{"--screnshot 3", "unknown option '--screnshot' (did you mean '--screenshot'?)"},
+        Case{"--frames=2 --movie-fsp=30",
+             "unknown option '--movie-fsp' (did you mean '--movie-fps'?)"},
         Case{"--set render.size", "expected key=value"},
         Case{"--set render.sise=1", "unknown attribute 'render.sise'"},
         Case{"--set sim.integrator=rk3", "euler, rk2, rk4"},
