@@ -7,6 +7,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
@@ -14,22 +15,30 @@
 
 namespace sandstorm {
 
-// "" when every --option in argv is one of `cli`'s (or --help); else, e.g.,
+// "" when every --option in argv is one of `cli`'s or its subcommands' (or
+// --help); else, e.g.,
 // "unknown option '--frmaes' (did you mean '--frames'?); --help lists the options".
 inline std::string unknownOption(const CLI::App& cli, int argc, const char* const* argv) {
+  // Every long name, and those offered as guesses (hidden options are not).
+  std::vector<std::string> all{"--help"}, offered{"--help"};
+  const auto collect = [&](const CLI::App& app) {
+    for (const CLI::Option* option : app.get_options())
+      for (const std::string& longName : option->get_lnames()) {
+        all.push_back("--" + longName);
+        if (!option->get_group().empty()) offered.push_back("--" + longName);
+      }
+  };
+  collect(cli);
+  for (const CLI::App* sub : cli.get_subcommands([](const CLI::App*) { return true; }))
+    collect(*sub);
   for (int i = 1; i < argc; ++i) {
     const std::string token = argv[i];
     if (token == "--") break;  // what follows is not options
     if (token.size() <= 2 || !token.starts_with("--")) continue;
     const std::string name = token.substr(0, token.find('='));
-    if (name == "--help" || cli.get_option_no_throw(name) != nullptr) continue;
-    std::vector<std::string> known{"--help"};
-    for (const CLI::Option* option : cli.get_options()) {
-      if (option->get_group().empty()) continue;  // hidden: not offered
-      for (const std::string& longName : option->get_lnames())
-        known.push_back("--" + longName);
-    }
-    return "unknown option '" + name + "'" + didYouMean(name, known) + "; --help lists the options";
+    if (std::find(all.begin(), all.end(), name) != all.end()) continue;
+    return "unknown option '" + name + "'" + didYouMean(name, offered) +
+           "; --help lists the options";
   }
   return {};
 }

@@ -20,6 +20,7 @@
 #include <CLI/CLI.hpp>
 
 #include "app/cli_numbers.h"
+#include "app/cli_unknown_option.h"
 #include "core/config/app_config.h"
 #include "core/field/analytic_field.h"
 #include "core/field/analytic_field_factory.h"
@@ -223,6 +224,10 @@ int main(int argc, char** argv) {
       ->check(positiveNumberCheck());
   terrainCmd->add_option("--seed", tseed, "noise seed");
 
+  if (const std::string unknown = unknownOption(app, argc, argv); !unknown.empty()) {
+    std::cerr << "sandstorm-field: " << unknown << "\n";
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -42,6 +42,7 @@ expect fail "already has an array 'divergence'" -- derive "$data/tornado.vti" "$
 expect fail "no derived quantity 'lambda2'.*q_criterion" -- derive "$data/tornado.vti" "$tmp/x.vti" --quantity lambda2
 expect fail "quantity|required" -- derive "$data/tornado.vti" "$tmp/x.vti"
 expect fail "no such file" -- info "$tmp/missing.vti"
+expect fail "unknown option '--dimz' \\(did you mean '--dims'\\?\\)" -- resample "$data/tornado.vti" "$tmp/x.vti" --dimz 4 4 4
 expect fail "unknown analytic field 'hurricane'.*tornado" -- generate hurricane "$tmp/x.vti" --dims 2 2 2 --bounds 0 0 0 1 1 1
 expect fail "--dims: expected a whole number, 1 or more; got .0." -- generate gravity "$tmp/x.vti" --dims 4 0 4 --bounds 0 0 0 1 1 1
 expect fail "--dims: expected a whole number, 1 or more; got .2.5." -- resample "$data/tornado.vti" "$tmp/x.vti" --dims 2.5 4 4
