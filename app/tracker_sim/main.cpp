@@ -19,6 +19,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "app/cli_unknown_option.h"
 #include "app/tracker_sim/malformed_datagrams.h"
 #include "core/tracking/dtrack_writer.h"
 #include "core/tracking/tracker_script.h"
@@ -65,6 +66,10 @@ int main(int argc, char** argv) {
   cli.add_option("--seed", seed, "Seed of the dropouts, jitter and malformed datagrams");
   cli.add_option("--first-frame", firstFrame, "The first frame counter (fr) sent");
   cli.add_flag("--print", print, "Write the datagrams to stdout as well");
+  if (const std::string unknown = unknownOption(cli, argc, argv); !unknown.empty()) {
+    log::error(unknown);
+    return 2;
+  }
   try {
     cli.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
