@@ -114,11 +114,13 @@ vtkAbstractArray* findArray(vtkDataSet* data, const std::string& name, bool& cel
                      arrayInventory(blocks)));
 }
 
-// The chosen name checked in every block: a 3-component numeric array where
-// it is present. True when some block has it.
+// The chosen name checked in every block: a numeric array of 3 components
+// where it is present, or of 2 (a 2D simulation's: `planar` then) in every
+// block that has it. True when some block has it.
 bool checkNamed(const std::vector<VtkBlock>& blocks, const std::string& name,
-                const std::string& file) {
+                const std::string& file, bool* planar = nullptr) {
   bool found = false;
+  int components = 0;
   for (const VtkBlock& b : blocks) {
     bool cell = false;
     vtkAbstractArray* a = findArray(b.data, name, cell);
@@ -126,14 +128,45 @@ bool checkNamed(const std::vector<VtkBlock>& blocks, const std::string& name,
     if (!isNumeric(a))
       throw Error(concat(file, ": array '", name, "' is not numeric; expected a 3-component ",
                          "vector array. Arrays present: ", arrayInventory(blocks)));
-    if (a->GetNumberOfComponents() != 3)
-      throw Error(concat(file, ": array '", name, "' has ", a->GetNumberOfComponents(),
-                         " component(s); expected a 3-component vector array, or three "
-                         "components joined (--array u,v,w). Arrays present: ",
+    const int n = a->GetNumberOfComponents();
+    if (n != 3 && !(n == 2 && planar))
+      throw Error(concat(file, ": array '", name, "' has ", n,
+                         " component(s); expected a 3-component vector array (or a "
+                         "2-component one, read as x and y), or three components joined "
+                         "(--array u,v,w). Arrays present: ",
                          arrayInventory(blocks)));
+    if (components != 0 && n != components)
+      throw Error(concat(file, ": array '", name, "' has ", components,
+                         " components in one block and ", n, " in another; expected the same"));
+    components = n;
     found = true;
   }
+  if (planar) *planar = components == 2;
   return found;
+}
+
+// A two-component array as three, z 0 (float, or double if it is).
+vtkSmartPointer<vtkDataArray> planarVectors(vtkDataArray* xy) {
+  vtkSmartPointer<vtkDataArray> out;
+  if (xy->GetDataType() == VTK_DOUBLE)
+    out = vtkSmartPointer<vtkDoubleArray>::New();
+  else
+    out = vtkSmartPointer<vtkFloatArray>::New();
+  out->SetName(xy->GetName());
+  out->SetNumberOfComponents(3);
+  const vtkIdType n = xy->GetNumberOfTuples();
+  out->SetNumberOfTuples(n);
+  for (vtkIdType i = 0; i < n; ++i) {
+    out->SetComponent(i, 0, xy->GetComponent(i, 0));
+    out->SetComponent(i, 1, xy->GetComponent(i, 1));
+    out->SetComponent(i, 2, 0.0);
+  }
+  return out;
+}
+
+std::string planarNote(const std::string& name) {
+  return concat("vector array '", name,
+                "' has two components (a 2D simulation's): read as (x, y, 0)");
 }
 
 bool checkComponents(const std::vector<VtkBlock>& blocks, const std::vector<std::string>& parts,
@@ -262,9 +295,11 @@ VectorChoice chooseVectorArray(const std::vector<VtkBlock>& blocks,
   if (!asked.empty()) {
     choice.name = asked;
     // VTK's Exodus reader names the vector it joins from vel_x, vel_y, vel_z "vel_".
-    if (!checkNamed(blocks, asked, file) && !checkNamed(blocks, choice.name = asked + "_", file))
+    if (!checkNamed(blocks, asked, file, &choice.planar) &&
+        !checkNamed(blocks, choice.name = asked + "_", file))
       throw Error(
           concat(file, ": no array named '", asked, "'; arrays present: ", arrayInventory(blocks)));
+    if (choice.planar) report.notes.push_back(planarNote(choice.name));
     return choice;
   }
   // The active vectors, where a block marks them.
@@ -311,6 +346,21 @@ VectorChoice chooseVectorArray(const std::vector<VtkBlock>& blocks,
       all += concat(all.empty() ? "" : "; ", set[0], ",", set[1], ",", set[2]);
     ask(file, concat("no vector array, and several sets of components (", all, ")"), blocks);
   }
+  // A 2D simulation's velocity: the one two-component array.
+  std::vector<std::string> pointPlanar, cellPlanar;
+  for (const VtkBlock& b : blocks) {
+    addUnique(pointPlanar, arraysWith(b.data->GetPointData(), 2));
+    addUnique(cellPlanar, arraysWith(b.data->GetCellData(), 2));
+  }
+  const std::vector<std::string>& planar = pointPlanar.empty() ? cellPlanar : pointPlanar;
+  if (planar.size() == 1) {
+    choice.name = planar.front();
+    checkNamed(blocks, choice.name, file, &choice.planar);
+    report.notes.push_back(planarNote(choice.name));
+    return choice;
+  }
+  if (planar.size() > 1)
+    ask(file, "no 3-component (vector) array, and several of 2 components", blocks);
   ask(file, "no 3-component (vector) array", blocks);
 }
 
@@ -329,8 +379,17 @@ vtkSmartPointer<vtkDataSet> pointVectors(const VtkBlock& block, const VectorChoi
     data->ShallowCopy(block.data);
     (cellData ? static_cast<vtkFieldData*>(data->GetCellData()) : data->GetPointData())
         ->AddArray(joined);
-  } else if (!findArray(block.data, choice.name, cellData)) {
+  } else if (vtkAbstractArray* found = findArray(block.data, choice.name, cellData); !found) {
     return nullptr;
+  } else if (choice.planar) {
+    // The two components as three, in place of the array in a copy of the block.
+    vtkSmartPointer<vtkDataArray> three = planarVectors(vtkDataArray::SafeDownCast(found));
+    data.TakeReference(block.data->NewInstance());
+    data->ShallowCopy(block.data);
+    vtkFieldData* fd =
+        cellData ? static_cast<vtkFieldData*>(data->GetCellData()) : data->GetPointData();
+    fd->RemoveArray(choice.name.c_str());
+    fd->AddArray(three);
   }
   if (cellData) {
     note(concat("array '", choice.name, "' is cell data: moved to the points"));

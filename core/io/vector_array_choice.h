@@ -8,7 +8,9 @@
 // - else the point data's active vectors;
 // - else the only 3-component array (point data first, then cell data);
 // - else the only set of components named alike: u/v/w, or a common stem
-//   ending in x/y/z (vel_x, vel_y, vel_z; U_X, U_Y, U_Z; vx, vy, vz), joined.
+//   ending in x/y/z (vel_x, vel_y, vel_z; U_X, U_Y, U_Z; vx, vy, vz), joined;
+// - else the only 2-component array (a 2D simulation's velocity), read as
+//   (x, y, 0) with a note; a named array may have 2 components too.
 // Anything else throws Error naming the file and listing the arrays present
 // (each with its components, cell data marked) and how to choose
 // (--array NAME, or the configuration's field.name). Blocks without the chosen
@@ -34,6 +36,8 @@ namespace sandstorm {
 struct VectorChoice {
   std::string name;                     // the field's array name
   std::vector<std::string> components;  // three one-component arrays joined, or empty
+  // A two-component array (a 2D simulation's velocity), read as (x, y, 0).
+  bool planar = false;
 };
 
 VectorChoice chooseVectorArray(const std::vector<VtkBlock>& blocks,

@@ -2,6 +2,8 @@
 // orientation; fields we write read back identically through VTK's readers.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <fstream>
 #include <limits>
@@ -441,6 +443,62 @@ TEST(VtkFormats, ArraysAreChosenByNameAndListedWhenWrong) {
                      "'cellvel' (3 components, cell data)"});
   o.arrayName = "cellvel";  // cell data, moved to the points by VTK
   EXPECT_NEAR(glm::length(loadField(path, o).at(2, 0, 1) - glm::vec3(4.0f)), 0.0f, 1e-6f);
+}
+
+// A 2D simulation's velocity, two components: read as (x, y, 0), found by
+// itself where it is the only such array, or named; in cell data it moves to
+// the points. Two of them are asked for.
+TEST(VtkFormats, ATwoComponentVelocityIsReadAsXAndYWithZZero) {
+  const auto dir = test::scratch();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(3, 4, 1);
+  vtkNew<vtkFloatArray> uv;
+  uv->SetName("U");
+  uv->SetNumberOfComponents(2);
+  uv->SetNumberOfTuples(12);
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 3; ++i)
+      uv->SetTuple2(i + 3 * j, double(i), 2.0 * j);
+  image->GetPointData()->AddArray(uv);
+  const auto path = dir / "plane.vti";
+  ASSERT_TRUE(writeWithVtk(image, path));
+  LoadReport report;
+  const VectorField f = loadField(path, {}, &report);
+  ASSERT_EQ(f.dims(), glm::ivec3(3, 4, 1));
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 3; ++i)
+      EXPECT_EQ(f.at(i, j, 0), glm::vec3(float(i), 2.0f * j, 0.0f)) << i << " " << j;
+  EXPECT_EQ(report.arrayName, "U");
+  EXPECT_TRUE(std::any_of(report.notes.begin(), report.notes.end(), [](const std::string& n) {
+    return n.find("'U' has two components") != std::string::npos;
+  }));
+  LoadOptions named;
+  named.arrayName = "U";
+  EXPECT_EQ(loadField(path, named).at(2, 3, 0), glm::vec3(2.0f, 6.0f, 0.0f));
+
+  // In cell data: the mean of the cells around each point, as any cell array.
+  auto cells = vtkSmartPointer<vtkImageData>::New();
+  cells->SetDimensions(3, 3, 1);
+  vtkNew<vtkFloatArray> cellUv;
+  cellUv->SetName("Uc");
+  cellUv->SetNumberOfComponents(2);
+  cellUv->SetNumberOfTuples(4);
+  cellUv->Fill(3.0f);
+  cells->GetCellData()->AddArray(cellUv);
+  const auto cellPath = dir / "cells.vti";
+  ASSERT_TRUE(writeWithVtk(cells, cellPath));
+  EXPECT_EQ(loadField(cellPath).at(1, 1, 0), glm::vec3(3.0f, 3.0f, 0.0f));
+
+  // Two of them: which?
+  vtkNew<vtkFloatArray> other;
+  other->DeepCopy(uv);
+  other->SetName("V");
+  image->GetPointData()->AddArray(other);
+  const auto two = dir / "two.vti";
+  ASSERT_TRUE(writeWithVtk(image, two));
+  test::expectError([&] { loadField(two); },
+                    {two.string(), "several of 2 components", "'U' (2 components)",
+                     "'V' (2 components)", "--array"});
 }
 
 // A legacy file cannot mark one of several VECTORS sections active (VTK's
