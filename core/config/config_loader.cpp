@@ -346,7 +346,8 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
   f.source = r.string(t, "source", "field", f.source);
   if (f.source != "analytic") f.source = relativeTo(r, f.source);
   // A file's array or grid is chosen by name; without one, the file's only (or active) vector one.
-  // Three one-component arrays joined into a vector: name = ["u", "v", "w"].
+  // Three one-component arrays joined into a vector: name = ["u", "v", "w"]
+  // (two: a 2D simulation's, z 0).
   const toml::value* name = r.find(t, "name");
   if (name && name->is_array()) {
     const auto& parts = name->as_array();
@@ -354,11 +355,13 @@ void readField(const Reader& r, const toml::value& t, FieldSpec& f) {
     for (const toml::value& part : parts) {
       if (!part.is_string() || part.as_string().str.empty() ||
           part.as_string().str.find(',') != std::string::npos)
-        r.fail(*name, "field.name", "expected three array names, e.g. [\"u\", \"v\", \"w\"]");
+        r.fail(*name, "field.name",
+               "expected three array names, e.g. [\"u\", \"v\", \"w\"], or two (z 0)");
       f.name += (f.name.empty() ? "" : ",") + part.as_string().str;
     }
-    if (parts.size() != 3)
-      r.fail(*name, "field.name", "expected three array names, e.g. [\"u\", \"v\", \"w\"]");
+    if (parts.size() != 3 && parts.size() != 2)
+      r.fail(*name, "field.name",
+             "expected three array names, e.g. [\"u\", \"v\", \"w\"], or two (z 0)");
   } else {
     f.name = r.string(t, "name", "field", f.source == "analytic" ? f.name : std::string());
   }

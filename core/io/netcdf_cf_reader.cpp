@@ -75,6 +75,8 @@ std::string flowArrays(const NetcdfHeader& h, const std::string& asked) {
       up = v.name;
   }
   if (!east.empty() && !north.empty() && !up.empty()) return concat(east, ",", north, ",", up);
+  // Horizontal flow alone (a surface's wind or current): z 0.
+  if (!east.empty() && !north.empty()) return concat(east, ",", north);
   return {};
 }
 

@@ -82,8 +82,9 @@ std::vector<std::vector<std::string>> componentSets(const std::vector<std::strin
 
 std::string joinedName(const std::vector<std::string>& parts) {
   std::string stem = parts[0].substr(0, parts[0].size() - 1);
-  const bool alike = parts[1].substr(0, parts[1].size() - 1) == stem &&
-                     parts[2].substr(0, parts[2].size() - 1) == stem;
+  bool alike = true;
+  for (std::size_t i = 1; i < parts.size(); ++i)
+    alike = alike && parts[i].substr(0, parts[i].size() - 1) == stem;
   while (!stem.empty() && (stem.back() == '_' || stem.back() == '-' || stem.back() == '.'))
     stem.pop_back();
   return alike && !stem.empty() ? stem : "velocity";
@@ -181,27 +182,30 @@ bool checkComponents(const std::vector<VtkBlock>& blocks, const std::vector<std:
       ++present;
       if (!isNumeric(a) || a->GetNumberOfComponents() != 1)
         throw Error(concat(file, ": array '", part, "' has ", a->GetNumberOfComponents(),
-                           " components; a vector joined from components needs three "
+                           " components; a vector joined from components needs "
                            "one-component arrays. Arrays present: ",
                            arrayInventory(blocks)));
     }
-    if (present == 3) found = true;
+    if (present == int(parts.size())) found = true;
   }
   return found;
 }
 
 vtkSmartPointer<vtkDataArray> joinComponents(vtkDataSet* data, const VectorChoice& choice,
                                              bool& cellData) {
-  vtkDataArray* parts[3];
-  bool cell[3];
+  // Two components (a 2D simulation's u, v): z is 0.
+  const int given = int(choice.components.size());
+  vtkDataArray* parts[3] = {nullptr, nullptr, nullptr};
+  bool cell[3] = {false, false, false};
   bool isDouble = false;
-  for (int c = 0; c < 3; ++c) {
+  for (int c = 0; c < given; ++c) {
     parts[c] =
         vtkDataArray::SafeDownCast(findArray(data, choice.components[std::size_t(c)], cell[c]));
     if (!parts[c]) return nullptr;
     isDouble = isDouble || parts[c]->GetDataType() == VTK_DOUBLE;
   }
-  if (cell[0] != cell[1] || cell[0] != cell[2]) return nullptr;
+  for (int c = 1; c < given; ++c)
+    if (cell[c] != cell[0]) return nullptr;
   cellData = cell[0];
   vtkSmartPointer<vtkDataArray> out;
   if (isDouble)
@@ -211,11 +215,12 @@ vtkSmartPointer<vtkDataArray> joinComponents(vtkDataSet* data, const VectorChoic
   out->SetName(choice.name.c_str());
   out->SetNumberOfComponents(3);
   const vtkIdType n = parts[0]->GetNumberOfTuples();
-  if (parts[1]->GetNumberOfTuples() != n || parts[2]->GetNumberOfTuples() != n) return nullptr;
+  for (int c = 1; c < given; ++c)
+    if (parts[c]->GetNumberOfTuples() != n) return nullptr;
   out->SetNumberOfTuples(n);
   for (vtkIdType i = 0; i < n; ++i)
     for (int c = 0; c < 3; ++c)
-      out->SetComponent(i, c, parts[c]->GetComponent(i, 0));
+      out->SetComponent(i, c, c < given ? parts[c]->GetComponent(i, 0) : 0.0);
   return out;
 }
 
@@ -278,18 +283,19 @@ VectorChoice chooseVectorArray(const std::vector<VtkBlock>& blocks,
   const std::string& asked = options.arrayName;
   if (asked.find(',') != std::string::npos) {
     choice.components = splitComponents(asked);
-    if (choice.components.size() != 3 ||
+    if ((choice.components.size() != 3 && choice.components.size() != 2) ||
         std::any_of(choice.components.begin(), choice.components.end(),
                     [](const std::string& s) { return s.empty(); }))
       throw Error(concat(file, ": array '", asked,
                          "': expected one array's name, or three components' names separated "
-                         "by commas (u,v,w)"));
+                         "by commas (u,v,w), or two (u,v: z 0)"));
     if (!checkComponents(blocks, choice.components, file))
       throw Error(concat(file, ": no block has all of the arrays ", quotedList(choice.components),
                          "; arrays present: ", arrayInventory(blocks)));
     choice.name = joinedName(choice.components);
     report.notes.push_back(concat("vector '", choice.name, "' joined from the components ",
-                                  quotedList(choice.components)));
+                                  quotedList(choice.components),
+                                  choice.components.size() == 2 ? ", z 0" : ""));
     return choice;
   }
   if (!asked.empty()) {
@@ -361,6 +367,18 @@ VectorChoice chooseVectorArray(const std::vector<VtkBlock>& blocks,
   }
   if (planar.size() > 1)
     ask(file, "no 3-component (vector) array, and several of 2 components", blocks);
+  // A 2D simulation's u and v as one-component arrays, with no w.
+  for (const std::vector<std::string>* scalars : {&pointScalars, &cellScalars})
+    for (const auto& [u, v] : {std::pair<std::string, std::string>{"u", "v"}, {"U", "V"}})
+      if (std::find(scalars->begin(), scalars->end(), u) != scalars->end() &&
+          std::find(scalars->begin(), scalars->end(), v) != scalars->end()) {
+        choice.components = {u, v};
+        choice.name = joinedName(choice.components);
+        report.notes.push_back(concat(
+            "no vector array: '", choice.name, "' joined from the components ",
+            quotedList(choice.components), ", z 0 (a 2D simulation's); --array chooses others"));
+        return choice;
+      }
   ask(file, "no 3-component (vector) array", blocks);
 }
 

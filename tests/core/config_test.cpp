@@ -92,11 +92,14 @@ TEST(Config, UnknownKeysAreRefused) {
 }
 
 // A file's vector as three one-component arrays: field.name = ["u", "v", "w"].
-TEST(Config, AFieldsComponentsAreNamedAsThreeArrays) {
+TEST(Config, AFieldsComponentsAreNamedAsThreeArraysOrTwo) {
   const AppConfig c = parseConfig(
       "[field]\nsource = \"flow.nc\"\nname = [\"u\", \"v\", \"w\"]\n" + kWall, "test.toml");
   EXPECT_EQ(c.field.name, "u,v,w");
-  EXPECT_ERROR("[field]\nsource = \"flow.nc\"\nname = [\"u\", \"v\"]\n" + kWall, "test.toml:3",
+  const AppConfig planar =
+      parseConfig("[field]\nsource = \"flow.nc\"\nname = [\"u\", \"v\"]\n" + kWall, "test.toml");
+  EXPECT_EQ(planar.field.name, "u,v");  // z 0
+  EXPECT_ERROR("[field]\nsource = \"flow.nc\"\nname = [\"u\"]\n" + kWall, "test.toml:3",
                "field.name", "three array names");
   EXPECT_ERROR("[field]\nsource = \"flow.nc\"\nname = [\"u\", 2, \"w\"]\n" + kWall, "field.name",
                "three array names");

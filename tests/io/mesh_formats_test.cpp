@@ -445,7 +445,14 @@ TEST(MeshFormats, ComponentsAreJoinedIntoAVector) {
   EXPECT_NEAR(at.x, a.z, kExact);
   EXPECT_NEAR(at.z, a.x, kExact);
 
-  options.arrayName = "u,v";
+  options.arrayName = "u,v";  // two: a 2D simulation's, z 0
+  const VectorField planar = loadField(path, options);
+  const glm::vec3 uv = planar.at(2, 3, 1);
+  const glm::dvec3 b = asymmetric(glm::dvec3(planar.pointPosition(2, 3, 1)));
+  EXPECT_NEAR(uv.x, b.x, kExact);
+  EXPECT_NEAR(uv.y, b.y, kExact);
+  EXPECT_EQ(uv.z, 0.0f);
+  options.arrayName = "u,v,w,q";
   test::expectError([&] { loadField(path, options); }, {path.string(), "three components"});
   {  // one component at the cells, two at the points: nothing to join
     auto split = vtkSmartPointer<vtkUnstructuredGrid>::New();

@@ -488,7 +488,9 @@ TEST(SimulationFormats, EnSightGoldAscii) {
 // A NetCDF CF file as a weather model writes one, through the NetCDF
 // library: u, v, w (by their CF standard names ua, va, wa, or named u, v, w)
 // on longitude, latitude (running north to south) and height, two times.
-void writeNetcdf(const std::filesystem::path& path, bool standardNames, const char* levelUnits) {
+// `components` 2: u and v alone, a horizontal flow.
+void writeNetcdf(const std::filesystem::path& path, bool standardNames, const char* levelUnits,
+                 int components = 3) {
   int id = -1;
   ASSERT_EQ(nc_create(path.c_str(), NC_CLOBBER, &id), NC_NOERR);
   int time, lev, lat, lon;
@@ -511,7 +513,7 @@ void writeNetcdf(const std::filesystem::path& path, bool standardNames, const ch
   const char* names[3] = {"u", "v", "w"};
   const char* standard[3] = {"eastward_wind", "northward_wind", "upward_air_velocity"};
   int flow[3];
-  for (int c = 0; c < 3; ++c) {
+  for (int c = 0; c < components; ++c) {
     const std::string name = standardNames ? std::string(names[c]) + "a" : names[c];
     ASSERT_EQ(nc_def_var(id, name.c_str(), NC_FLOAT, 4, dims, &flow[c]), NC_NOERR);
     if (standardNames)
@@ -529,7 +531,7 @@ void writeNetcdf(const std::filesystem::path& path, bool standardNames, const ch
     const double t = double(step);
     const std::size_t one = 1;
     nc_put_vara_double(id, vt, &step, &one, &t);
-    for (int c = 0; c < 3; ++c) {
+    for (int c = 0; c < components; ++c) {
       std::vector<float> values;
       for (double z : levs)
         for (double la : lats)
@@ -570,6 +572,22 @@ TEST(SimulationFormats, NetcdfCfOnLongitudeLatitudeAndHeightInMetres) {
     LoadOptions later;
     later.timeStep = 1;
     EXPECT_NEAR(loadField(path, later).at(2, 1, 1).x, netcdfFlow(10.2, 44.25, 100.0, 1.0).x, 1e-4);
+  }
+  // A horizontal flow alone, u and v (or by their standard names): z 0.
+  for (const bool standardNames : {false, true}) {
+    SCOPED_TRACE(standardNames ? "ua, va by standard_name" : "u, v");
+    const auto path = dir / (standardNames ? "cf2.nc" : "uv.nc");
+    writeNetcdf(path, standardNames, "m", 2);
+    const VectorField f = loadField(path);
+    ASSERT_EQ(f.dims(), glm::ivec3(6, 5, 3));
+    for (int k = 0; k < 3; ++k)
+      for (int j = 0; j < 5; ++j)
+        for (int i = 0; i < 6; ++i) {
+          glm::dvec3 expected = netcdfFlow(10.0 + 0.1 * i, 44.0 + 0.25 * j, 100.0 * k, 0.0);
+          expected.z = 0.0;
+          ASSERT_LE(glm::length(glm::dvec3(f.at(i, j, k)) - expected), 1e-4)
+              << i << " " << j << " " << k;
+        }
   }
   // A vertical axis in pressure: kept, and said.
   const auto pressure = dir / "pressure.nc";

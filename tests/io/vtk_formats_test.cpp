@@ -499,6 +499,24 @@ TEST(VtkFormats, ATwoComponentVelocityIsReadAsXAndYWithZZero) {
   test::expectError([&] { loadField(two); },
                     {two.string(), "several of 2 components", "'U' (2 components)",
                      "'V' (2 components)", "--array"});
+
+  // u and v as arrays of one component each, no w: joined, z 0.
+  auto scalars = vtkSmartPointer<vtkImageData>::New();
+  scalars->SetDimensions(3, 4, 1);
+  for (const char* name : {"u", "v"}) {
+    vtkNew<vtkFloatArray> a;
+    a->SetName(name);
+    a->SetNumberOfTuples(12);
+    a->Fill(name[0] == 'u' ? 1.5f : -0.5f);
+    scalars->GetPointData()->AddArray(a);
+  }
+  const auto uvPath = dir / "uv.vti";
+  ASSERT_TRUE(writeWithVtk(scalars, uvPath));
+  LoadReport joined;
+  EXPECT_EQ(loadField(uvPath, {}, &joined).at(1, 2, 0), glm::vec3(1.5f, -0.5f, 0.0f));
+  EXPECT_TRUE(std::any_of(joined.notes.begin(), joined.notes.end(), [](const std::string& n) {
+    return n.find("joined from the components 'u', 'v', z 0") != std::string::npos;
+  }));
 }
 
 // A legacy file cannot mark one of several VECTORS sections active (VTK's
