@@ -31,7 +31,7 @@ bool inside(const Box& box, const glm::vec3& p) {
 
 }  // namespace
 
-VectorField resampleOnto(const VectorField& step, const VectorField& grid, std::size_t* outside) {
+VectorField resampleOnto(const VectorField& step, const VectorField& grid) {
   const glm::ivec3 d = grid.dims();
   VectorField out(grid.bounds(), d);
   std::vector<std::uint8_t> valid(out.pointCount(), 1);
@@ -57,7 +57,6 @@ VectorField resampleOnto(const VectorField& step, const VectorField& grid, std::
             }
       },
       std::max<std::size_t>(1, (std::size_t{1} << 16) / std::max<std::size_t>(layer, 1)));
-  if (outside) *outside = std::size_t(std::count(valid.begin(), valid.end(), std::uint8_t{0}));
   out.setValidity(std::move(valid));
   for (std::size_t s = 0; s < scalars.size(); ++s)
     out.addScalars(step.scalars()[s].name, std::move(scalars[s]));

@@ -8,11 +8,8 @@
 //     the step's bounds, or whose cell in the step has a corner outside the
 //     field, is marked outside (particles there follow sim.boundary); the
 //     step's scalar arrays are sampled alike; the result is halves where
-//     `grid` is (the series' field.precision). `outside`, if given, gets
-//     the count of points marked outside.
+//     `grid` is (the series' field.precision).
 #pragma once
-
-#include <cstddef>
 
 #include "core/field/vector_field.h"
 
@@ -20,7 +17,6 @@ namespace sandstorm {
 
 VectorField resampleField(const VectorField& field, const glm::ivec3& dims);
 
-VectorField resampleOnto(const VectorField& step, const VectorField& grid,
-                         std::size_t* outside = nullptr);
+VectorField resampleOnto(const VectorField& step, const VectorField& grid);
 
 }  // namespace sandstorm

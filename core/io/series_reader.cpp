@@ -39,8 +39,8 @@ std::shared_ptr<const VectorField> ontoFirstGrid(std::shared_ptr<const VectorFie
   if (!grid) return field;
   const std::string difference = gridDifference(*field, *grid);
   if (difference.empty()) return field;
-  std::size_t outside = 0;
-  auto onto = std::make_shared<const VectorField>(resampleOnto(*field, *grid, &outside));
+  auto onto = std::make_shared<const VectorField>(resampleOnto(*field, *grid));
+  const std::size_t outside = onto->invalidCount();
   if (note)
     *note = concat(name, ": ", difference, "; resampled onto the first step's grid",
                    outside > 0 ? concat(", ", outside, " of its ", onto->pointCount(),

@@ -146,17 +146,23 @@ bool checkNamed(const std::vector<VtkBlock>& blocks, const std::string& name,
   return found;
 }
 
-// A two-component array as three, z 0 (float, or double if it is).
-vtkSmartPointer<vtkDataArray> planarVectors(vtkDataArray* xy) {
+// A vector array of `n` tuples to fill: doubles where the source is, else floats.
+vtkSmartPointer<vtkDataArray> newVectors(const char* name, bool isDouble, vtkIdType n) {
   vtkSmartPointer<vtkDataArray> out;
-  if (xy->GetDataType() == VTK_DOUBLE)
+  if (isDouble)
     out = vtkSmartPointer<vtkDoubleArray>::New();
   else
     out = vtkSmartPointer<vtkFloatArray>::New();
-  out->SetName(xy->GetName());
+  out->SetName(name);
   out->SetNumberOfComponents(3);
-  const vtkIdType n = xy->GetNumberOfTuples();
   out->SetNumberOfTuples(n);
+  return out;
+}
+
+// A two-component array as three, z 0.
+vtkSmartPointer<vtkDataArray> planarVectors(vtkDataArray* xy) {
+  const vtkIdType n = xy->GetNumberOfTuples();
+  vtkSmartPointer<vtkDataArray> out = newVectors(xy->GetName(), xy->GetDataType() == VTK_DOUBLE, n);
   for (vtkIdType i = 0; i < n; ++i) {
     out->SetComponent(i, 0, xy->GetComponent(i, 0));
     out->SetComponent(i, 1, xy->GetComponent(i, 1));
@@ -207,17 +213,10 @@ vtkSmartPointer<vtkDataArray> joinComponents(vtkDataSet* data, const VectorChoic
   for (int c = 1; c < given; ++c)
     if (cell[c] != cell[0]) return nullptr;
   cellData = cell[0];
-  vtkSmartPointer<vtkDataArray> out;
-  if (isDouble)
-    out = vtkSmartPointer<vtkDoubleArray>::New();
-  else
-    out = vtkSmartPointer<vtkFloatArray>::New();
-  out->SetName(choice.name.c_str());
-  out->SetNumberOfComponents(3);
   const vtkIdType n = parts[0]->GetNumberOfTuples();
   for (int c = 1; c < given; ++c)
     if (parts[c]->GetNumberOfTuples() != n) return nullptr;
-  out->SetNumberOfTuples(n);
+  vtkSmartPointer<vtkDataArray> out = newVectors(choice.name.c_str(), isDouble, n);
   for (vtkIdType i = 0; i < n; ++i)
     for (int c = 0; c < 3; ++c)
       out->SetComponent(i, c, c < given ? parts[c]->GetComponent(i, 0) : 0.0);

@@ -723,22 +723,16 @@ const AttributeInfo& AttributeTable::lookup(std::string_view rawKey, int* emitte
       return info;
     }
   }
-  // The key a typo most likely meant, then the keys that share the section.
-  std::vector<std::string> all, close;
+  // The key a typo most likely meant (an emitter's, obstacle's or
+  // primitive's with the index typed), then the keys that share the section.
+  std::vector<std::string> meant, close;
   const std::string section = pattern.substr(0, pattern.rfind('.') + 1);
   for (const AttributeInfo& info : entries_) {
-    all.push_back(info.key);
+    meant.push_back(info.itemKey(index));
     if (!section.empty() && info.key.starts_with(section)) close.push_back(info.key);
   }
-  std::string meant;
-  if (std::optional<std::string> nearest = nearestName(pattern, all)) {
-    // An emitter's (obstacle's, primitive's) key with the index typed.
-    if (const std::size_t star = nearest->find(".*."); star != std::string::npos)
-      nearest->replace(star, 3, concat(".", index, "."));
-    meant = concat(" (did you mean '", *nearest, "'?)");
-  }
   throw Error(
-      concat("unknown attribute '", rawKey, "'", meant,
+      concat("unknown attribute '", rawKey, "'", didYouMean(key, meant),
              close.empty() ? std::string("") : "; known in this section: " + joined(close)));
 }
 
