@@ -22,6 +22,25 @@ std::string errorOf(const std::function<void()>& f) {
   return "";
 }
 
+TEST(AttributeTable, AMistypedKeyOrChoiceIsAnsweredWithTheNameMeant) {
+  EXPECT_NE(errorOf([&] {
+              table().lookup("render.sise");
+            }).find("unknown attribute 'render.sise' (did you mean 'render.size'?)"),
+            std::string::npos);
+  // An emitter's key keeps the emitter typed.
+  EXPECT_NE(
+      errorOf([&] { table().lookup("emitter.3.rat"); }).find("(did you mean 'emitter.3.rate'?)"),
+      std::string::npos)
+      << errorOf([&] { table().lookup("emitter.3.rat"); });
+  EXPECT_NE(errorOf([&] {
+              table().parse("render.color_by", "spead");
+            }).find("cannot read 'spead' (did you mean 'speed'?) as one of the listed choices"),
+            std::string::npos)
+      << errorOf([&] { table().parse("render.color_by", "spead"); });
+  EXPECT_EQ(errorOf([&] { table().parse("render.color_by", "temperature"); }).find("did you mean"),
+            std::string::npos);
+}
+
 TEST(AttributeTable, EveryEntryIsDocumentedAndItsDefaultIsInRange) {
   std::set<std::string> keys;
   for (const AttributeInfo& info : table().entries()) {

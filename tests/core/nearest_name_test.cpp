@@ -1,12 +1,9 @@
 // nearestName: the name a typo meant, by Damerau-Levenshtein distance worked
-// out by hand; and the errors that offer it (an attribute's key or choice,
-// a configuration's key).
+// out by hand. The errors that offer it: attribute_table_test.cpp (a key or
+// choice), config_test.cpp (a configuration's key).
 #include "core/util/nearest_name.h"
 
 #include <gtest/gtest.h>
-
-#include "core/sim/attribute_table.h"
-#include "core/util/error.h"
 
 namespace sandstorm {
 namespace {
@@ -34,35 +31,6 @@ TEST(NearestName, OffersTheOneNearestWithinAThirdOfTheWord) {
   EXPECT_EQ(didYouMean("zzz", names), "");
   EXPECT_EQ(nearestName(std::string(65, 'a'), {std::string(64, 'a')}), std::nullopt);  // too long
   EXPECT_EQ(nearestName(std::string(63, 'a'), {std::string(64, 'a')}), std::string(64, 'a'));
-}
-
-std::string errorOf(const std::function<void()>& f) {
-  try {
-    f();
-  } catch (const Error& e) {
-    return e.what();
-  }
-  return "(no error)";
-}
-
-TEST(NearestName, AnAttributesKeyOrChoiceMistypedIsNamed) {
-  const AttributeTable& table = AttributeTable::instance();
-  EXPECT_NE(errorOf([&] {
-              table.lookup("render.sise");
-            }).find("unknown attribute 'render.sise' (did you mean 'render.size'?)"),
-            std::string::npos);
-  // An emitter's key keeps the emitter typed.
-  EXPECT_NE(
-      errorOf([&] { table.lookup("emitter.3.rat"); }).find("(did you mean 'emitter.3.rate'?)"),
-      std::string::npos)
-      << errorOf([&] { table.lookup("emitter.3.rat"); });
-  EXPECT_NE(errorOf([&] {
-              table.parse("render.color_by", "spead");
-            }).find("cannot read 'spead' (did you mean 'speed'?) as one of the listed choices"),
-            std::string::npos)
-      << errorOf([&] { table.parse("render.color_by", "spead"); });
-  EXPECT_EQ(errorOf([&] { table.parse("render.color_by", "temperature"); }).find("did you mean"),
-            std::string::npos);
 }
 
 }  // namespace

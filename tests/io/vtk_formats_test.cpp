@@ -401,29 +401,30 @@ bool writeWithVtk(vtkImageData* image, const std::filesystem::path& path) {
   return w->Write() == 1;
 }
 
+// A float array of `tuples` x `components`, every value `value`.
+vtkSmartPointer<vtkFloatArray> filledArray(const char* name, int components, vtkIdType tuples,
+                                           float value) {
+  auto a = vtkSmartPointer<vtkFloatArray>::New();
+  a->SetName(name);
+  a->SetNumberOfComponents(components);
+  a->SetNumberOfTuples(tuples);
+  a->Fill(value);
+  return a;
+}
+
 // 3x3x3 image data with addArrays' arrays and a second vector array, "wind" (2, 2, 2).
 vtkSmartPointer<vtkImageData> imageWithWind() {
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetDimensions(3, 3, 3);
   addArrays(image);
-  vtkNew<vtkFloatArray> wind;
-  wind->SetName("wind");
-  wind->SetNumberOfComponents(3);
-  wind->SetNumberOfTuples(27);
-  wind->Fill(2.0f);
-  image->GetPointData()->AddArray(wind);
+  image->GetPointData()->AddArray(filledArray("wind", 3, 27, 2.0f));
   return image;
 }
 
 TEST(VtkFormats, ArraysAreChosenByNameAndListedWhenWrong) {
   const auto dir = test::scratch();
   vtkSmartPointer<vtkImageData> image = imageWithWind();
-  vtkNew<vtkFloatArray> cellVel;
-  cellVel->SetName("cellvel");
-  cellVel->SetNumberOfComponents(3);
-  cellVel->SetNumberOfTuples(8);
-  cellVel->Fill(4.0f);
-  image->GetCellData()->AddArray(cellVel);
+  image->GetCellData()->AddArray(filledArray("cellvel", 3, 8, 4.0f));
   image->GetPointData()->SetActiveVectors(nullptr);
   const auto path = dir / "arrays.vti";
   ASSERT_TRUE(writeWithVtk(image, path));
@@ -479,12 +480,7 @@ TEST(VtkFormats, ATwoComponentVelocityIsReadAsXAndYWithZZero) {
   // In cell data: the mean of the cells around each point, as any cell array.
   auto cells = vtkSmartPointer<vtkImageData>::New();
   cells->SetDimensions(3, 3, 1);
-  vtkNew<vtkFloatArray> cellUv;
-  cellUv->SetName("Uc");
-  cellUv->SetNumberOfComponents(2);
-  cellUv->SetNumberOfTuples(4);
-  cellUv->Fill(3.0f);
-  cells->GetCellData()->AddArray(cellUv);
+  cells->GetCellData()->AddArray(filledArray("Uc", 2, 4, 3.0f));
   const auto cellPath = dir / "cells.vti";
   ASSERT_TRUE(writeWithVtk(cells, cellPath));
   EXPECT_EQ(loadField(cellPath).at(1, 1, 0), glm::vec3(3.0f, 3.0f, 0.0f));
@@ -503,13 +499,8 @@ TEST(VtkFormats, ATwoComponentVelocityIsReadAsXAndYWithZZero) {
   // u and v as arrays of one component each, no w: joined, z 0.
   auto scalars = vtkSmartPointer<vtkImageData>::New();
   scalars->SetDimensions(3, 4, 1);
-  for (const char* name : {"u", "v"}) {
-    vtkNew<vtkFloatArray> a;
-    a->SetName(name);
-    a->SetNumberOfTuples(12);
-    a->Fill(name[0] == 'u' ? 1.5f : -0.5f);
-    scalars->GetPointData()->AddArray(a);
-  }
+  scalars->GetPointData()->AddArray(filledArray("u", 1, 12, 1.5f));
+  scalars->GetPointData()->AddArray(filledArray("v", 1, 12, -0.5f));
   const auto uvPath = dir / "uv.vti";
   ASSERT_TRUE(writeWithVtk(scalars, uvPath));
   LoadReport joined;
