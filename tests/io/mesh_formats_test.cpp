@@ -411,6 +411,35 @@ TEST(MeshFormats, MultiblockBlocksOfAnyKindMergeIntoOneField) {
       }
 }
 
+// A 2D velocity named in a multiblock must have the same components in every
+// block that carries it: two in one block and three in another is refused,
+// naming both counts, rather than read as planar in one part only.
+TEST(MeshFormats, AVectorOfTwoComponentsInOneBlockAndThreeInAnotherIsRefused) {
+  const auto dir = test::scratch();
+  vtkNew<vtkMultiBlockDataSet> blocks;
+  for (unsigned b = 0; b < 2; ++b) {
+    vtkNew<vtkImageData> image;
+    image->SetDimensions(2, 2, 2);
+    image->SetOrigin(2.0 * b, 0.0, 0.0);
+    vtkNew<vtkFloatArray> u;
+    u->SetName("U");
+    u->SetNumberOfComponents(b == 0 ? 2 : 3);
+    u->SetNumberOfTuples(8);
+    u->Fill(1.0f);
+    image->GetPointData()->AddArray(u);
+    blocks->SetBlock(b, image);
+  }
+  const auto path = dir / "mixed.vtm";
+  vtkNew<vtkXMLMultiBlockDataWriter> w;
+  w->SetInputData(blocks);
+  w->SetFileName(path.c_str());
+  ASSERT_EQ(w->Write(), 1);
+  LoadOptions named;
+  named.arrayName = "U";
+  test::expectError([&] { loadField(path, named); },
+                    {path.string(), "'U' has 2 components in one block and 3 in another"});
+}
+
 // Three one-component arrays (what many codes write) joined into a vector.
 TEST(MeshFormats, ComponentsAreJoinedIntoAVector) {
   const auto dir = test::scratch();
